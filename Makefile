@@ -1,0 +1,220 @@
+# iskra — GNU make build.
+#
+#   make            libraries, the iskra tool, examples, tests, benchmarks
+#   make test       install missing Debian packages, build, run every test
+#   make test SANITIZE=1   the same under AddressSanitizer + UBSan (build-san/)
+#   make run        install missing packages, then run the main demo
+#   make bench      run the benchmarks (ratios measured in one run)
+#   make install PREFIX=/usr/local DESTDIR=   headers, libraries, iskra.pc, iskra
+#
+# Sources are discovered, not listed: every src/**/*.c goes into libiskra
+# except src/io/sdl_*.c (libiskra-sdl); every examples/*.c, tests/test_*.c and
+# bench/*.c is its own program.  Adding a file needs no Makefile edit.
+
+PREFIX  ?= /usr/local
+DESTDIR ?=
+VERSION := 0.1.0
+
+CC      ?= cc
+ifeq ($(origin CC),default)
+CC := gcc
+endif
+
+ifeq ($(SANITIZE),1)
+BUILD   ?= build-san
+SANFLAGS := -fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer
+OPT     ?= -O1 -g
+else
+BUILD   ?= build
+SANFLAGS :=
+OPT     ?= -O3 -g
+endif
+
+# Warnings are errors in CI (CI=true is set by the CI runner) or on request.
+ifneq ($(CI),)
+WERROR ?= 1
+endif
+ifeq ($(WERROR),1)
+WFLAGS := -Werror
+endif
+
+# -ffp-contract=off: no fused multiply-add, so the same source gives the same
+# bits everywhere (the thesis trajectories are reproduced bit for bit).
+# Never -ffast-math.
+CSTD    := -std=c11 -D_POSIX_C_SOURCE=200809L
+CFLAGS_BASE := $(CSTD) $(OPT) -Wall -Wextra -Wpedantic -ffp-contract=off -fno-math-errno \
+               -fPIC $(WFLAGS) $(SANFLAGS) -Iinclude -Isrc
+CFLAGS  ?=
+ALL_CFLAGS = $(CFLAGS_BASE) $(CFLAGS)
+LDFLAGS ?=
+
+PKG_PNG  = $(shell pkg-config --cflags --libs libpng 2>/dev/null || echo -lpng)
+PKG_SDL_CFLAGS = $(shell pkg-config --cflags sdl2 2>/dev/null)
+PKG_SDL_LIBS   = $(shell pkg-config --libs sdl2 2>/dev/null || echo -lSDL2)
+PKG_INIH = $(shell pkg-config --cflags --libs inih 2>/dev/null || echo -linih)
+PKG_CRIT = $(shell pkg-config --cflags --libs criterion 2>/dev/null || echo -lcriterion)
+
+LIB_SRC  := $(filter-out src/io/sdl_%.c,$(wildcard src/*/*.c))
+SDL_SRC  := $(wildcard src/io/sdl_*.c)
+TOOL_SRC := $(wildcard tools/iskra/*.c)
+EX_SRC   := $(wildcard examples/*.c)
+TEST_SRC := $(wildcard tests/test_*.c)
+TEST_SUPPORT_SRC := $(filter-out $(TEST_SRC),$(wildcard tests/*.c))
+BENCH_SRC := $(wildcard bench/*.c)
+
+LIB_OBJ  := $(LIB_SRC:%.c=$(BUILD)/obj/%.o)
+SDL_OBJ  := $(SDL_SRC:%.c=$(BUILD)/obj/%.o)
+TOOL_OBJ := $(TOOL_SRC:%.c=$(BUILD)/obj/%.o)
+TEST_SUPPORT_OBJ := $(TEST_SUPPORT_SRC:%.c=$(BUILD)/obj/%.o)
+
+LIBA     := $(BUILD)/lib/libiskra.a
+LIBSO    := $(BUILD)/lib/libiskra.so
+SDLA     := $(BUILD)/lib/libiskra-sdl.a
+SDLSO    := $(BUILD)/lib/libiskra-sdl.so
+TOOL     := $(BUILD)/bin/iskra
+EXAMPLES := $(EX_SRC:examples/%.c=$(BUILD)/examples/%)
+TESTS    := $(TEST_SRC:tests/%.c=$(BUILD)/tests/%)
+BENCHES  := $(BENCH_SRC:bench/%.c=$(BUILD)/bench/%)
+
+LIBS_CORE = $(PKG_PNG) -lm
+
+# Quiet by default; `make V=1` shows full command lines.
+ifeq ($(V),1)
+Q :=
+say = @true
+else
+Q := @
+say = @printf '  %-6s %s\n' $(1) $(2)
+endif
+LIBS_SDL  = $(PKG_SDL_LIBS)
+
+.PHONY: all lib examples tests benches test test-run run bench install uninstall clean deps help fuzz
+.DEFAULT_GOAL := all
+
+all: lib $(TOOL) examples tests benches
+
+lib: $(LIBA) $(LIBSO) $(SDLA) $(SDLSO)
+examples: $(EXAMPLES)
+tests: $(TESTS)
+benches: $(BENCHES)
+
+# ---- objects -------------------------------------------------------------
+$(BUILD)/obj/src/io/sdl_%.o: src/io/sdl_%.c
+	@mkdir -p $(dir $@)
+	$(call say,CC,$<)
+	$(Q)$(CC) $(ALL_CFLAGS) $(PKG_SDL_CFLAGS) -MMD -MP -c $< -o $@
+
+$(BUILD)/obj/%.o: %.c
+	@mkdir -p $(dir $@)
+	$(call say,CC,$<)
+	$(Q)$(CC) $(ALL_CFLAGS) $(PKG_SDL_CFLAGS) -MMD -MP -c $< -o $@
+
+# ---- libraries -----------------------------------------------------------
+$(LIBA): $(LIB_OBJ)
+	@mkdir -p $(dir $@)
+	$(call say,AR,$@)
+	$(Q)rm -f $@ && ar rcs $@ $^
+
+$(LIBSO): $(LIB_OBJ)
+	@mkdir -p $(dir $@)
+	$(call say,LD,$@)
+	$(Q)$(CC) -shared $(SANFLAGS) -Wl,-soname,libiskra.so.0 -o $@ $^ $(LDFLAGS) $(LIBS_CORE)
+
+$(SDLA): $(SDL_OBJ)
+	@mkdir -p $(dir $@)
+	$(call say,AR,$@)
+	$(Q)rm -f $@ && ar rcs $@ $^
+
+$(SDLSO): $(SDL_OBJ) $(LIBSO)
+	@mkdir -p $(dir $@)
+	$(call say,LD,$@)
+	$(Q)$(CC) -shared $(SANFLAGS) -Wl,-soname,libiskra-sdl.so.0 -o $@ $(SDL_OBJ) $(LDFLAGS) -L$(BUILD)/lib -liskra $(LIBS_SDL) $(LIBS_CORE)
+
+# ---- programs (statically linked against our own libraries) ----------------
+$(TOOL): $(TOOL_OBJ) $(SDLA) $(LIBA)
+	@mkdir -p $(dir $@)
+	$(call say,LD,$@)
+	$(Q)$(CC) $(ALL_CFLAGS) -o $@ $(TOOL_OBJ) $(SDLA) $(LIBA) $(LDFLAGS) $(PKG_INIH) $(LIBS_SDL) $(LIBS_CORE)
+
+$(BUILD)/examples/%: $(BUILD)/obj/examples/%.o $(SDLA) $(LIBA)
+	@mkdir -p $(dir $@)
+	$(call say,LD,$@)
+	$(Q)$(CC) $(ALL_CFLAGS) -o $@ $< $(SDLA) $(LIBA) $(LDFLAGS) $(LIBS_SDL) $(LIBS_CORE)
+
+$(BUILD)/tests/%: $(BUILD)/obj/tests/%.o $(TEST_SUPPORT_OBJ) $(SDLA) $(LIBA)
+	@mkdir -p $(dir $@)
+	$(call say,LD,$@)
+	$(Q)$(CC) $(ALL_CFLAGS) -o $@ $< $(TEST_SUPPORT_OBJ) $(SDLA) $(LIBA) $(LDFLAGS) $(PKG_CRIT) $(PKG_INIH) $(LIBS_SDL) $(LIBS_CORE)
+
+$(BUILD)/bench/%: $(BUILD)/obj/bench/%.o $(LIBA)
+	@mkdir -p $(dir $@)
+	$(call say,LD,$@)
+	$(Q)$(CC) $(ALL_CFLAGS) -o $@ $< $(LIBA) $(LDFLAGS) $(LIBS_CORE)
+
+# The example list, generated so tests can run every example.
+$(BUILD)/gen/examples.txt: FORCE
+	@mkdir -p $(dir $@)
+	@printf '%s\n' $(EX_SRC:examples/%.c=%) > $@.tmp
+	@cmp -s $@.tmp $@ || mv $@.tmp $@; rm -f $@.tmp
+FORCE:
+
+# ---- test / run / bench ----------------------------------------------------
+# `make test` first makes sure the Debian packages are there, then builds and
+# runs in a sub-make (so the package check finishes before pkg-config is read).
+test: deps
+	@$(MAKE) --no-print-directory test-run
+
+test-run: all $(BUILD)/gen/examples.txt
+	@BUILD=$(BUILD) sh tests/run_all.sh
+
+run: deps
+	@$(MAKE) --no-print-directory all
+	@BUILD=$(BUILD) sh tools/run_demo.sh
+
+bench: deps
+	@$(MAKE) --no-print-directory benches
+	@set -e; for b in $(BENCHES); do echo "== $$b"; $$b; done
+
+# ---- dependencies (Debian) -------------------------------------------------
+DEB_PKGS := build-essential pkg-config libpng-dev libsdl2-dev libcriterion-dev libinih-dev
+deps:
+	@sh tools/deps.sh $(DEB_PKGS)
+
+# ---- install ---------------------------------------------------------------
+LIBDIR ?= $(PREFIX)/lib
+INCDIR ?= $(PREFIX)/include
+BINDIR ?= $(PREFIX)/bin
+PCDIR  ?= $(LIBDIR)/pkgconfig
+
+install: lib $(TOOL)
+	install -d $(DESTDIR)$(INCDIR)/iskra $(DESTDIR)$(LIBDIR) $(DESTDIR)$(BINDIR) $(DESTDIR)$(PCDIR)
+	install -m 644 include/iskra.h $(DESTDIR)$(INCDIR)/iskra.h
+	install -m 644 include/iskra/*.h $(DESTDIR)$(INCDIR)/iskra/
+	install -m 644 $(LIBA) $(SDLA) $(DESTDIR)$(LIBDIR)/
+	install -m 755 $(LIBSO) $(DESTDIR)$(LIBDIR)/libiskra.so.$(VERSION)
+	ln -sf libiskra.so.$(VERSION) $(DESTDIR)$(LIBDIR)/libiskra.so.0
+	ln -sf libiskra.so.0 $(DESTDIR)$(LIBDIR)/libiskra.so
+	install -m 755 $(SDLSO) $(DESTDIR)$(LIBDIR)/libiskra-sdl.so.$(VERSION)
+	ln -sf libiskra-sdl.so.$(VERSION) $(DESTDIR)$(LIBDIR)/libiskra-sdl.so.0
+	ln -sf libiskra-sdl.so.0 $(DESTDIR)$(LIBDIR)/libiskra-sdl.so
+	install -m 755 $(TOOL) $(DESTDIR)$(BINDIR)/iskra
+	sed -e 's|@PREFIX@|$(PREFIX)|g' -e 's|@LIBDIR@|$(LIBDIR)|g' -e 's|@INCDIR@|$(INCDIR)|g' \
+	    -e 's|@VERSION@|$(VERSION)|g' iskra.pc.in > $(DESTDIR)$(PCDIR)/iskra.pc
+	sed -e 's|@PREFIX@|$(PREFIX)|g' -e 's|@LIBDIR@|$(LIBDIR)|g' -e 's|@INCDIR@|$(INCDIR)|g' \
+	    -e 's|@VERSION@|$(VERSION)|g' iskra-sdl.pc.in > $(DESTDIR)$(PCDIR)/iskra-sdl.pc
+
+uninstall:
+	rm -f $(DESTDIR)$(INCDIR)/iskra.h
+	rm -rf $(DESTDIR)$(INCDIR)/iskra
+	rm -f $(DESTDIR)$(LIBDIR)/libiskra.a $(DESTDIR)$(LIBDIR)/libiskra-sdl.a
+	rm -f $(DESTDIR)$(LIBDIR)/libiskra.so* $(DESTDIR)$(LIBDIR)/libiskra-sdl.so*
+	rm -f $(DESTDIR)$(PCDIR)/iskra.pc $(DESTDIR)$(PCDIR)/iskra-sdl.pc
+	rm -f $(DESTDIR)$(BINDIR)/iskra
+
+clean:
+	rm -rf build build-san out
+
+help:
+	@sed -n '1,12p' Makefile
+
+-include $(shell find $(BUILD)/obj -name '*.d' 2>/dev/null)

@@ -1,0 +1,84 @@
+/* iskra/canvas.h — the RGBA8 pixel buffer every drawing call writes into.
+ *
+ * Memory layout: bytes R,G,B,A per pixel, rows `stride` bytes apart, top row
+ * first — the layout of PNG and of SDL_PIXELFORMAT_RGBA32, so a canvas can be
+ * written or uploaded without conversion.
+ *
+ *     isk_canvas c;
+ *     if (isk_canvas_init(&c, 600, 600) != ISK_OK) return 1;   // owns memory
+ *     isk_canvas_fill(&c, ISK_BLACK);
+ *     ...draw...
+ *     isk_canvas_free(&c);
+ *
+ * isk_canvas_wrap() draws into memory the caller owns (olive.c style);
+ * isk_canvas_view() makes a clipped sub-rectangle sharing the parent's pixels.
+ * Colours are straight (non-premultiplied) RGBA.  Blend modes are documented
+ * in iskra/blend.h.
+ */
+#ifndef ISKRA_CANVAS_H
+#define ISKRA_CANVAS_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#include "iskra/status.h"
+
+/* Largest accepted width or height. */
+#define ISK_CANVAS_MAX_DIM 16384
+
+typedef struct isk_color {
+    uint8_t r, g, b, a;
+} isk_color;
+
+static inline isk_color isk_rgba(uint8_t r, uint8_t g, uint8_t b, uint8_t a)
+{
+    isk_color c = {r, g, b, a};
+    return c;
+}
+
+#define ISK_BLACK       ((isk_color){0, 0, 0, 255})
+#define ISK_WHITE       ((isk_color){255, 255, 255, 255})
+#define ISK_TRANSPARENT ((isk_color){0, 0, 0, 0})
+#define ISK_YELLOW      ((isk_color){255, 255, 0, 255})
+#define ISK_RED         ((isk_color){255, 0, 0, 255})
+#define ISK_GREEN       ((isk_color){0, 128, 0, 255})  /* CSS "green" */
+#define ISK_BLUE        ((isk_color){0, 0, 255, 255})
+
+typedef struct isk_canvas {
+    uint8_t *pixels;   /* top-left pixel; R,G,B,A bytes */
+    int width;
+    int height;
+    size_t stride;     /* bytes from one row to the next (>= 4*width) */
+    int owns_pixels;   /* 1 when isk_canvas_free must release `pixels` */
+} isk_canvas;
+
+/* Allocates a width x height canvas, all bytes 0 (transparent black). */
+isk_status isk_canvas_init(isk_canvas *c, int width, int height);
+
+/* Wraps caller memory; stride in bytes must be >= 4*width.  Never freed by us. */
+isk_status isk_canvas_wrap(isk_canvas *c, void *pixels, int width, int height, size_t stride);
+
+/* A view of the rectangle (x, y, w, h) of `parent`, clipped to the parent.
+ * The view shares the parent's pixels and must not outlive it.  A rectangle
+ * that lies wholly outside gives a 0x0 view (drawing into it does nothing). */
+isk_status isk_canvas_view(isk_canvas *view, const isk_canvas *parent, int x, int y, int w, int h);
+
+/* Releases owned pixels (safe on wrapped canvases, views and zeroed structs). */
+void isk_canvas_free(isk_canvas *c);
+
+/* Sets every pixel to `color` (no blending). */
+void isk_canvas_fill(isk_canvas *c, isk_color color);
+
+/* Address of pixel (x, y); the caller guarantees 0 <= x < width, 0 <= y < height. */
+static inline uint8_t *isk_canvas_at(const isk_canvas *c, int x, int y)
+{
+    return c->pixels + (size_t)y * c->stride + (size_t)x * 4u;
+}
+
+/* Reads pixel (x, y); out-of-range coordinates give ISK_TRANSPARENT. */
+isk_color isk_canvas_get(const isk_canvas *c, int x, int y);
+
+/* 1 when both canvases have equal size and identical pixel bytes. */
+int isk_canvas_equal(const isk_canvas *a, const isk_canvas *b);
+
+#endif

@@ -1,0 +1,112 @@
+/* Canvas memory: owned, wrapped and view canvases. */
+#include "iskra/canvas.h"
+
+#include <stdlib.h>
+#include <string.h>
+
+static int valid_dims(int width, int height)
+{
+    return width > 0 && height > 0 && width <= ISK_CANVAS_MAX_DIM && height <= ISK_CANVAS_MAX_DIM;
+}
+
+isk_status isk_canvas_init(isk_canvas *c, int width, int height)
+{
+    if (!c)
+        return ISK_ERR_NULL;
+    memset(c, 0, sizeof *c);
+    if (!valid_dims(width, height))
+        return ISK_ERR_SIZE;
+    size_t stride = (size_t)width * 4u;
+    uint8_t *p = calloc((size_t)height, stride);
+    if (!p)
+        return ISK_ERR_NOMEM;
+    c->pixels = p;
+    c->width = width;
+    c->height = height;
+    c->stride = stride;
+    c->owns_pixels = 1;
+    return ISK_OK;
+}
+
+isk_status isk_canvas_wrap(isk_canvas *c, void *pixels, int width, int height, size_t stride)
+{
+    if (!c || !pixels)
+        return ISK_ERR_NULL;
+    if (!valid_dims(width, height) || stride < (size_t)width * 4u)
+        return ISK_ERR_SIZE;
+    c->pixels = pixels;
+    c->width = width;
+    c->height = height;
+    c->stride = stride;
+    c->owns_pixels = 0;
+    return ISK_OK;
+}
+
+isk_status isk_canvas_view(isk_canvas *view, const isk_canvas *parent, int x, int y, int w, int h)
+{
+    if (!view || !parent)
+        return ISK_ERR_NULL;
+    if (w < 0 || h < 0)
+        return ISK_ERR_SIZE;
+    /* Clip in 64 bits: x + w may overflow int. */
+    long long x0 = x, y0 = y, x1 = (long long)x + w, y1 = (long long)y + h;
+    if (x0 < 0) x0 = 0;
+    if (y0 < 0) y0 = 0;
+    if (x1 > parent->width) x1 = parent->width;
+    if (y1 > parent->height) y1 = parent->height;
+    view->stride = parent->stride;
+    view->owns_pixels = 0;
+    if (x0 >= x1 || y0 >= y1 || !parent->pixels) {
+        view->pixels = parent->pixels;
+        view->width = 0;
+        view->height = 0;
+        return ISK_OK;
+    }
+    view->pixels = parent->pixels + (size_t)y0 * parent->stride + (size_t)x0 * 4u;
+    view->width = (int)(x1 - x0);
+    view->height = (int)(y1 - y0);
+    return ISK_OK;
+}
+
+void isk_canvas_free(isk_canvas *c)
+{
+    if (!c)
+        return;
+    if (c->owns_pixels)
+        free(c->pixels);
+    memset(c, 0, sizeof *c);
+}
+
+void isk_canvas_fill(isk_canvas *c, isk_color color)
+{
+    if (!c || !c->pixels)
+        return;
+    for (int y = 0; y < c->height; y++) {
+        uint8_t *row = c->pixels + (size_t)y * c->stride;
+        for (int x = 0; x < c->width; x++) {
+            row[4 * x + 0] = color.r;
+            row[4 * x + 1] = color.g;
+            row[4 * x + 2] = color.b;
+            row[4 * x + 3] = color.a;
+        }
+    }
+}
+
+isk_color isk_canvas_get(const isk_canvas *c, int x, int y)
+{
+    if (!c || !c->pixels || x < 0 || y < 0 || x >= c->width || y >= c->height)
+        return ISK_TRANSPARENT;
+    const uint8_t *p = isk_canvas_at(c, x, y);
+    return isk_rgba(p[0], p[1], p[2], p[3]);
+}
+
+int isk_canvas_equal(const isk_canvas *a, const isk_canvas *b)
+{
+    if (!a || !b || a->width != b->width || a->height != b->height)
+        return 0;
+    for (int y = 0; y < a->height; y++)
+        if (memcmp(a->pixels + (size_t)y * a->stride, b->pixels + (size_t)y * b->stride,
+                   (size_t)a->width * 4u) != 0)
+            return 0;
+    return 1;
+}

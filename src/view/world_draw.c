@@ -1,0 +1,59 @@
+/* Drawing in world units: the thesis's piksel, puniKrug and tekst, plus a
+ * world-space polyline.  One call does the transform, so examples never
+ * repeat the screen arithmetic. */
+#include <stdlib.h>
+
+#include "iskra/draw.h"
+#include "iskra/text.h"
+#include "iskra/view.h"
+
+void isk_world_dot(isk_canvas *c, const isk_view *v, double x, double y, isk_color color, isk_blend mode)
+{
+    double X, Y;
+    isk_view_to_screen(v, x, y, &X, &Y);
+    isk_draw_dot(c, X, Y, color, mode);
+}
+
+void isk_world_disc(isk_canvas *c, const isk_view *v, double x, double y, double r, isk_color color,
+                    isk_blend mode)
+{
+    double X, Y;
+    isk_view_to_screen(v, x, y, &X, &Y);
+    double R = v->sx * r;
+    if (R < 0) R = -R;
+    isk_fill_circle_aa(c, X, Y, R, color, mode);
+}
+
+void isk_world_text(isk_canvas *c, const isk_view *v, double x, double y, const char *s, int scale,
+                    isk_color color, isk_blend mode)
+{
+    double X, Y;
+    isk_view_to_screen(v, x, y, &X, &Y);
+    /* Clamp before converting: an out-of-range double->int cast is undefined. */
+    const double lim = 1e9;
+    if (!(X > -lim)) X = -lim;
+    if (!(X < lim)) X = lim;
+    if (!(Y > -lim)) Y = -lim;
+    if (!(Y < lim)) Y = lim;
+    if (scale < 1)
+        return;
+    /* Baseline at Y: the 7 rows above the descender row sit above it. */
+    int top = (int)Y - 7 * scale;
+    isk_draw_text(c, (int)X, top, s, scale, color, mode);
+}
+
+void isk_world_polyline(isk_canvas *c, const isk_view *v, const double *xy, int n, int closed,
+                        isk_color color, isk_blend mode)
+{
+    if (!xy || n < 2)
+        return;
+    double stack[64];
+    double *s = n <= 32 ? stack : malloc(sizeof(double) * 2 * (size_t)n);
+    if (!s)
+        return;
+    for (int i = 0; i < n; i++)
+        isk_view_to_screen(v, xy[2 * i], xy[2 * i + 1], &s[2 * i], &s[2 * i + 1]);
+    isk_stroke_polyline(c, s, n, closed, color, mode);
+    if (s != stack)
+        free(s);
+}

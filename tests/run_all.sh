@@ -1,0 +1,42 @@
+#!/bin/sh
+# Runs every test binary in $BUILD/tests from the repository root and prints
+# one closing line "N passed, N failed" (tests counted across binaries).
+# Set ISKRA_TEST_FILTER to a Criterion --filter pattern to run a subset.
+set -u
+BUILD=${BUILD:-build}
+export ISKRA_BUILD="$BUILD"
+# SDL under the test suite never needs a real display.
+export SDL_VIDEODRIVER=${SDL_VIDEODRIVER:-dummy}
+export SDL_AUDIODRIVER=${SDL_AUDIODRIVER:-dummy}
+if [ -f tests/lsan.supp ]; then
+    export LSAN_OPTIONS="suppressions=$(pwd)/tests/lsan.supp:print_suppressions=0"
+fi
+export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
+passed=0; failed=0; bad_bins=""
+log=$(mktemp); trap 'rm -f "$log"' EXIT
+for t in "$BUILD"/tests/test_*; do
+    [ -x "$t" ] || continue
+    name=$(basename "$t")
+    if [ -n "${ISKRA_TEST_FILTER:-}" ]; then
+        "$t" --filter="$ISKRA_TEST_FILTER" >"$log" 2>&1; rc=$?
+    else
+        "$t" >"$log" 2>&1; rc=$?
+    fi
+    syn=$(grep -a "Synthesis:" "$log" | tail -n 1)
+    # [====] Synthesis: Tested: 12 | Passing: 12 | Failing: 0 | Crashing: 0
+    tested=$(echo "$syn" | sed -n 's/.*Tested: \([0-9]*\).*/\1/p')
+    passing=$(echo "$syn" | sed -n 's/.*Passing: \([0-9]*\).*/\1/p')
+    tested=${tested:-0}; passing=${passing:-0}
+    fails=$((tested - passing))
+    if [ "$rc" -ne 0 ] && [ "$fails" -eq 0 ]; then fails=1; fi
+    passed=$((passed + passing)); failed=$((failed + fails))
+    if [ "$fails" -ne 0 ]; then
+        bad_bins="$bad_bins $name"
+        echo "---- $name (exit $rc) ----"; cat "$log"
+    else
+        echo "ok   $name: $passing tests"
+    fi
+done
+[ -n "$bad_bins" ] && echo "failing binaries:$bad_bins"
+echo "$passed passed, $failed failed"
+[ "$failed" -eq 0 ]

@@ -1,0 +1,73 @@
+/* Canvas creation, wrapping, views and validation. */
+#include <criterion/criterion.h>
+#include <string.h>
+
+#include "iskra/canvas.h"
+
+Test(canvas, init_is_transparent_and_validates)
+{
+    isk_canvas c;
+    cr_assert_eq(isk_canvas_init(&c, 3, 2), ISK_OK);
+    cr_assert_eq(c.stride, 12u);
+    for (int i = 0; i < 24; i++)
+        cr_assert_eq(c.pixels[i], 0);
+    isk_canvas_free(&c);
+    cr_assert_null(c.pixels);
+    isk_canvas_free(&c); /* twice is harmless */
+    cr_assert_eq(isk_canvas_init(&c, 0, 5), ISK_ERR_SIZE);
+    cr_assert_eq(isk_canvas_init(&c, 5, -1), ISK_ERR_SIZE);
+    cr_assert_eq(isk_canvas_init(&c, ISK_CANVAS_MAX_DIM + 1, 1), ISK_ERR_SIZE);
+    cr_assert_eq(isk_canvas_init(NULL, 5, 5), ISK_ERR_NULL);
+}
+
+Test(canvas, wrap_uses_caller_memory_and_stride)
+{
+    uint8_t mem[4 * 10 * 3 + 8];
+    memset(mem, 0xAB, sizeof mem);
+    isk_canvas c;
+    cr_assert_eq(isk_canvas_wrap(&c, mem, 3, 3, 40), ISK_OK);
+    isk_canvas_fill(&c, ISK_RED);
+    cr_assert_eq(mem[40], 255);      /* row 1, pixel 0, R */
+    cr_assert_eq(mem[12], 0xAB);     /* padding after row 0 untouched */
+    isk_canvas_free(&c);              /* does not free caller memory */
+    cr_assert_eq(isk_canvas_wrap(&c, mem, 3, 3, 11), ISK_ERR_SIZE);
+    cr_assert_eq(isk_canvas_wrap(&c, NULL, 3, 3, 12), ISK_ERR_NULL);
+}
+
+Test(canvas, views_clip_and_share_pixels)
+{
+    isk_canvas c, v;
+    cr_assert_eq(isk_canvas_init(&c, 10, 10), ISK_OK);
+    cr_assert_eq(isk_canvas_view(&v, &c, 8, -2, 5, 5), ISK_OK);
+    cr_assert_eq(v.width, 2);
+    cr_assert_eq(v.height, 3);
+    isk_canvas_fill(&v, ISK_WHITE);
+    cr_assert_eq(isk_canvas_get(&c, 8, 0).r, 255);
+    cr_assert_eq(isk_canvas_get(&c, 9, 2).r, 255);
+    cr_assert_eq(isk_canvas_get(&c, 7, 0).r, 0);
+    cr_assert_eq(isk_canvas_get(&c, 8, 3).r, 0);
+    /* Entirely outside, or with overflowing extents: an empty view. */
+    cr_assert_eq(isk_canvas_view(&v, &c, 20, 20, 5, 5), ISK_OK);
+    cr_assert_eq(v.width, 0);
+    cr_assert_eq(isk_canvas_view(&v, &c, 2147483647, 0, 2147483647, 5), ISK_OK);
+    cr_assert_eq(v.width, 0);
+    cr_assert_eq(isk_canvas_view(&v, &c, -2147483647 - 1, 0, 2147483647, 5), ISK_OK);
+    cr_assert_eq(v.width, 0);
+    cr_assert_eq(isk_canvas_view(&v, &c, 0, 0, -1, 5), ISK_ERR_SIZE);
+    isk_canvas_fill(&v, ISK_WHITE); /* no-op on empty views */
+    cr_assert_eq(isk_canvas_get(&c, -1, 0).a, 0);
+    cr_assert_eq(isk_canvas_get(&c, 0, 10).a, 0);
+    isk_canvas_free(&c);
+}
+
+Test(canvas, equal)
+{
+    isk_canvas a, b;
+    cr_assert_eq(isk_canvas_init(&a, 4, 4), ISK_OK);
+    cr_assert_eq(isk_canvas_init(&b, 4, 4), ISK_OK);
+    cr_assert(isk_canvas_equal(&a, &b));
+    isk_canvas_at(&b, 3, 3)[3] = 1;
+    cr_assert(!isk_canvas_equal(&a, &b));
+    isk_canvas_free(&a);
+    isk_canvas_free(&b);
+}

@@ -1,0 +1,17 @@
+/* Sub-commands of the `iskra` tool.  Each takes (argc, argv) with argv[0] =
+ * the command name and returns the process exit status:
+ * 0 success, 1 runtime failure, 2 usage error. */
+#ifndef ISKRA_TOOL_CMD_H
+#define ISKRA_TOOL_CMD_H
+
+#define ISKRA_TOOL_VERSION "0.1.0"
+
+typedef struct isk_command {
+    const char *name;
+    const char *summary;
+    int (*run)(int argc, char **argv);
+} isk_command;
+
+int cmd_compare(int argc, char **argv);
+
+#endif

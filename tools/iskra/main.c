@@ -1,0 +1,39 @@
+/* The `iskra` command line: dispatches to one sub-command per file. */
+#include <stdio.h>
+#include <string.h>
+
+#include "cmd.h"
+
+static const isk_command commands[] = {
+    {"compare", "compare two PNG images pixel by pixel", cmd_compare},
+};
+
+static void usage(FILE *f)
+{
+    fprintf(f, "usage: iskra COMMAND [ARGS]   (iskra COMMAND --help for details)\n\ncommands:\n");
+    for (size_t i = 0; i < sizeof commands / sizeof commands[0]; i++)
+        fprintf(f, "  %-10s %s\n", commands[i].name, commands[i].summary);
+    fprintf(f, "\n  --version  print the version\n  --help     this text\n");
+}
+
+int main(int argc, char **argv)
+{
+    if (argc < 2) {
+        usage(stderr);
+        return 2;
+    }
+    if (!strcmp(argv[1], "--help") || !strcmp(argv[1], "-h") || !strcmp(argv[1], "help")) {
+        usage(stdout);
+        return 0;
+    }
+    if (!strcmp(argv[1], "--version")) {
+        printf("iskra %s\n", ISKRA_TOOL_VERSION);
+        return 0;
+    }
+    for (size_t i = 0; i < sizeof commands / sizeof commands[0]; i++)
+        if (!strcmp(argv[1], commands[i].name))
+            return commands[i].run(argc - 1, argv + 1);
+    fprintf(stderr, "iskra: unknown command '%s'\n", argv[1]);
+    usage(stderr);
+    return 2;
+}
