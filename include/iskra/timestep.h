@@ -1,0 +1,48 @@
+/* iskra/timestep.h — a fixed simulation step driven by a variable frame clock.
+ *
+ * Interactive programs get frames at whatever rate the display allows, but
+ * the simulation must advance in equal steps of dt so that it is the same
+ * simulation as an offline render ("Fix Your Timestep!").  The accumulator
+ * collects real time and hands out whole steps; when the machine cannot keep
+ * up it drops time instead of queueing ever more steps (no spiral of death).
+ *
+ *     isk_timestep ts;
+ *     isk_timestep_init(&ts, 1.0 / 60.0, 5);       // dt, at most 5 steps/frame
+ *     ...each frame:
+ *     int n = isk_timestep_advance(&ts, frame_seconds);
+ *     for (int i = 0; i < n; i++) step(dt);
+ *
+ * Plain data, no clock inside: the caller measures real time, so tests can
+ * drive it with any sequence of frame times.
+ */
+#ifndef ISKRA_TIMESTEP_H
+#define ISKRA_TIMESTEP_H
+
+#include "iskra/status.h"
+
+typedef struct isk_timestep {
+    double dt;          /* simulation step, seconds (> 0) */
+    double accumulated; /* real time not yet simulated, 0 <= accumulated < dt after advance */
+    int max_steps;      /* most steps handed out per frame (>= 1) */
+    double dropped;     /* total real time discarded because of max_steps */
+    long long steps;    /* total steps handed out */
+} isk_timestep;
+
+/* Errors: ISK_ERR_NULL, ISK_ERR_NAN (dt not finite), ISK_ERR_RANGE (dt <= 0,
+ * max_steps < 1). */
+isk_status isk_timestep_init(isk_timestep *ts, double dt, int max_steps);
+
+/* Adds frame_seconds of real time (negative or non-finite counts as 0) and
+ * returns how many steps of dt to run now, at most max_steps.  When more are
+ * due, the excess is dropped (counted in `dropped`) and the remainder kept
+ * below one dt, so a stall is followed by normal frames, not a catch-up. */
+int isk_timestep_advance(isk_timestep *ts, double frame_seconds);
+
+/* Fraction of a step accumulated but not simulated, in [0, 1): for
+ * interpolating what is drawn between two simulation states. */
+double isk_timestep_alpha(const isk_timestep *ts);
+
+/* Forgets accumulated time (after a pause or a reset). */
+void isk_timestep_reset(isk_timestep *ts);
+
+#endif

@@ -1,0 +1,173 @@
+/* INI reading with line numbers on top of libinih (see ini_read.h). */
+#include "ini_read.h"
+
+#include <errno.h>
+#include <ini.h>
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+typedef struct reader {
+    const char *text; /* remaining input */
+    const char *name;
+    int line;         /* number of the line last handed to libinih */
+    int too_long;     /* line number of an over-long line, 0 if none */
+    isk_ini_key_fn fn;
+    void *user;
+    isk_error *err;
+    int failed;       /* the callback reported an error */
+} reader;
+
+int isk_ini_error(isk_error *err, const char *name, int line, const char *fmt, ...)
+{
+    if (err) {
+        char msg[400];
+        va_list ap;
+        va_start(ap, fmt);
+        vsnprintf(msg, sizeof msg, fmt, ap);
+        va_end(ap);
+        isk_error_set(err, ISK_ERR_FORMAT, "%s:%d: %s", name, line, msg);
+    }
+    return 1;
+}
+
+/* libinih's ini_reader: like fgets, one line per call. */
+static char *read_line(char *buf, int size, void *stream)
+{
+    reader *r = stream;
+    if (r->too_long || r->failed || !*r->text)
+        return NULL;
+    const char *nl = strchr(r->text, '\n');
+    size_t len = nl ? (size_t)(nl - r->text) : strlen(r->text);
+    r->line++;
+    if (len > (size_t)size - 2 || len > ISK_INI_MAX_LINE) {
+        r->too_long = r->line;
+        return NULL;
+    }
+    memcpy(buf, r->text, len);
+    buf[len] = '\n';
+    buf[len + 1] = 0;
+    r->text += len + (nl ? 1 : 0);
+    return buf;
+}
+
+static int on_pair(void *user, const char *section, const char *key, const char *value)
+{
+    reader *r = user;
+    if (r->failed)
+        return 0;
+    if (r->fn(r->user, section, key, value, r->line, r->err)) {
+        r->failed = 1;
+        return 0;
+    }
+    return 1;
+}
+
+isk_status isk_ini_parse_string(const char *text, const char *name, isk_ini_key_fn fn, void *user,
+                                isk_error *err)
+{
+    if (!text || !fn)
+        return isk_error_set(err, ISK_ERR_NULL, "scene: NULL text or callback");
+    if (!name)
+        name = "<string>";
+    reader r = {text, name, 0, 0, fn, user, err, 0};
+    int rc = ini_parse_stream(read_line, &r, on_pair, &r);
+    if (r.failed)
+        return err ? err->status : ISK_ERR_FORMAT;
+    if (r.too_long) {
+        isk_ini_error(err, name, r.too_long, "line too long (at most %d characters)", ISK_INI_MAX_LINE);
+        return ISK_ERR_FORMAT;
+    }
+    if (rc > 0) {
+        isk_ini_error(err, name, rc,
+                      "cannot parse this line: expected [section], key = value, or a ; comment");
+        return ISK_ERR_FORMAT;
+    }
+    if (rc < 0) {
+        isk_error_set(err, ISK_ERR_NOMEM, "%s: out of memory while parsing", name);
+        return ISK_ERR_NOMEM;
+    }
+    return ISK_OK;
+}
+
+isk_status isk_ini_parse_file(const char *path, isk_ini_key_fn fn, void *user, isk_error *err)
+{
+    if (!path)
+        return isk_error_set(err, ISK_ERR_NULL, "scene: NULL path");
+    FILE *f = fopen(path, "rb");
+    if (!f)
+        return isk_error_set(err, ISK_ERR_IO, "%s: %s", path, strerror(errno));
+    char *buf = malloc(ISK_INI_MAX_BYTES + 1);
+    if (!buf) {
+        fclose(f);
+        return isk_error_set(err, ISK_ERR_NOMEM, "%s: out of memory", path);
+    }
+    size_t n = fread(buf, 1, ISK_INI_MAX_BYTES + 1, f);
+    int read_error = ferror(f);
+    fclose(f);
+    if (read_error) {
+        free(buf);
+        return isk_error_set(err, ISK_ERR_IO, "%s: read error", path);
+    }
+    if (n > ISK_INI_MAX_BYTES) {
+        free(buf);
+        return isk_error_set(err, ISK_ERR_SIZE, "%s: file larger than %u bytes", path, ISK_INI_MAX_BYTES);
+    }
+    if (memchr(buf, 0, n)) {
+        /* A NUL byte would silently end the text early: refuse binary input. */
+        size_t at = (size_t)((char *)memchr(buf, 0, n) - buf);
+        int line = 1;
+        for (size_t i = 0; i < at; i++)
+            line += buf[i] == '\n';
+        free(buf);
+        isk_ini_error(err, path, line, "contains a NUL byte (not a text file?)");
+        return ISK_ERR_FORMAT;
+    }
+    buf[n] = 0;
+    isk_status s = isk_ini_parse_string(buf, path, fn, user, err);
+    free(buf);
+    return s;
+}
+
+static size_t edit_distance(const char *a, const char *b)
+{
+    size_t la = strlen(a), lb = strlen(b);
+    if (la > 64 || lb > 64)
+        return (size_t)-1;
+    size_t row[65];
+    for (size_t j = 0; j <= lb; j++)
+        row[j] = j;
+    for (size_t i = 1; i <= la; i++) {
+        size_t diag = row[0];
+        row[0] = i;
+        for (size_t j = 1; j <= lb; j++) {
+            size_t up = row[j];
+            size_t cost = a[i - 1] == b[j - 1] ? 0 : 1;
+            size_t best = diag + cost;
+            if (up + 1 < best) best = up + 1;
+            if (row[j - 1] + 1 < best) best = row[j - 1] + 1;
+            row[j] = best;
+            diag = up;
+        }
+    }
+    return row[lb];
+}
+
+const char *isk_ini_suggest(const char *word, const char *const *candidates, size_t n)
+{
+    if (!word)
+        return NULL;
+    size_t len = strlen(word);
+    size_t limit = len / 3 > 1 ? len / 3 : 1;
+    const char *best = NULL;
+    size_t best_d = (size_t)-1;
+    for (size_t i = 0; i < n; i++) {
+        size_t d = edit_distance(word, candidates[i]);
+        if (d < best_d) {
+            best_d = d;
+            best = candidates[i];
+        }
+    }
+    return best_d <= limit ? best : NULL;
+}

@@ -1,0 +1,49 @@
+/* src/scene/ini_read.h — INI reading with line numbers (internal).
+ *
+ * libinih does the parsing; Debian builds it without INI_HANDLER_LINENO, so
+ * we feed it through our own line reader that counts lines and refuses lines
+ * longer than libinih's buffer (which it would otherwise split silently into
+ * two bogus lines).  Every callback gets the line its key was on; the first
+ * error stops the parse and is reported as "FILE:LINE: message".
+ *
+ *     static int on_key(void *u, const char *sec, const char *key,
+ *                       const char *val, int line, isk_error *err) { ... }
+ *     isk_ini_parse_file("scene.ini", on_key, &state, &err);
+ *
+ * A callback returns 0 on success; non-zero stops parsing (it has filled
+ * *err, normally through isk_ini_error()).
+ */
+#ifndef ISKRA_SCENE_INI_READ_H
+#define ISKRA_SCENE_INI_READ_H
+
+#include <stddef.h>
+
+#include "iskra/status.h"
+
+/* Longest accepted line, in bytes without the newline (libinih's limit - 1). */
+#define ISK_INI_MAX_LINE 199
+/* Largest accepted input, so a scene can never make us read without bound. */
+#define ISK_INI_MAX_BYTES (4u * 1024u * 1024u)
+
+typedef int (*isk_ini_key_fn)(void *user, const char *section, const char *key, const char *value,
+                              int line, isk_error *err);
+
+/* `text` is NUL-terminated; `name` is used in messages (a path or "<string>"). */
+isk_status isk_ini_parse_string(const char *text, const char *name, isk_ini_key_fn fn, void *user,
+                                isk_error *err);
+/* Reads the whole file (at most ISK_INI_MAX_BYTES) and parses it. */
+isk_status isk_ini_parse_file(const char *path, isk_ini_key_fn fn, void *user, isk_error *err);
+
+/* Formats "NAME:LINE: message" into err with ISK_ERR_FORMAT; returns 1 so a
+ * callback can `return isk_ini_error(...)`. */
+int isk_ini_error(isk_error *err, const char *name, int line, const char *fmt, ...)
+#if defined(__GNUC__)
+    __attribute__((format(printf, 4, 5)))
+#endif
+    ;
+
+/* The candidate closest to `word` by edit distance if it is close enough to
+ * be a likely misspelling (distance <= max(1, len/3)), else NULL. */
+const char *isk_ini_suggest(const char *word, const char *const *candidates, size_t n);
+
+#endif
