@@ -6,35 +6,67 @@
  *
  * Any coordinate is accepted: huge values (±1e300), ±Inf and NaN are clipped
  * or ignored, never undefined behaviour.  A primitive whose geometry contains
- * a NaN draws nothing.  Nothing here allocates or fails, so nothing returns a
- * status: bad geometry simply draws nothing.
+ * a NaN or an infinity (including an infinite radius) draws nothing.  Lines
+ * and triangles reaching beyond 2^24 px from the canvas are first clipped to
+ * that guard box in double (exact results are guaranteed only inside it).
+ * Nothing here allocates or fails, so nothing returns a status: bad geometry
+ * simply draws nothing.
  *
  *     isk_fill_circle(&c, 300, 300, 40, ISK_YELLOW, ISK_BLEND_OVER);
  *     isk_stroke_line(&c, 175, 300, 325, 300, ISK_BLACK, ISK_BLEND_OVER);
  *     isk_draw_dot(&c, 180.4, 420.7, ISK_YELLOW, ISK_BLEND_OVER);
  *
  * Aliased (1-pixel) primitives:
- *   isk_draw_pixel, isk_fill_rect    integer pixel coordinates
+ *   isk_draw_pixel, isk_fill_rect    integer pixel coordinates (64-bit bounds
+ *                                    maths, INT_MIN/INT_MAX are fine); a
+ *                                    negative w or h extends left / up, as
+ *                                    canvas fillRect(); 0 draws nothing
  *   isk_draw_line                    Bresenham between the pixels containing
- *                                    the two end points (both ends drawn)
- *   isk_draw_triangle                three isk_draw_line edges
+ *                                    the two end points (both ends drawn, each
+ *                                    pixel once).  Walking the major axis from
+ *                                    the end with the smaller major coordinate,
+ *                                    step i lights minor offset i*db/da rounded
+ *                                    half up, so line(A,B) == line(B,A)
+ *   isk_draw_triangle                three isk_draw_line edges, each without
+ *                                    the pixel of its end vertex, so every
+ *                                    vertex pixel is blended once
  *   isk_fill_triangle                pixels whose centre is inside; centres
  *                                    exactly on an edge follow the top-left rule
- *                                    (shared edges are drawn once)
+ *                                    (shared edges are drawn once); either
+ *                                    winding; zero area draws nothing
  *   isk_fill_circle                  pixels whose centre is strictly inside:
  *                                    (i+0.5-cx)^2 + (j+0.5-cy)^2 < r^2
+ *                                    (in double; hypot() beyond r = 2^26)
  * Anti-aliased primitives (coverage = exact area, or 16x16 supersampling
- * where stated, then blended with alpha scaled by coverage):
+ * where stated, then blended with alpha scaled by coverage).  An area a in
+ * [0, 1] becomes the byte floor(255*a + 0.5):
  *   isk_draw_dot           a 1x1 square whose top-left corner is (x, y),
  *                          spread over up to 2x2 pixels by exact area: how the
- *                          thesis's browser drew every particle (fillRect)
+ *                          thesis's browser drew every particle (fillRect).
+ *                          The four bytes sum to exactly 255: see
+ *                          isk_dot_weights
  *   isk_stroke_line        a width-1 line like HTML canvas stroke(): the
  *                          rectangle of half-width 0.5 around the segment,
- *                          butt caps, coverage by exact area
+ *                          butt caps, coverage by exact area; a zero-length
+ *                          line draws nothing.  Same as a 2-point polyline
  *   isk_stroke_polyline    a width-1 path with miter joins (limit 10, as
- *                          canvas) and butt caps, drawn as one shape so joins
- *                          are not painted twice
- *   isk_fill_circle_aa     a disc, coverage by exact area
+ *                          canvas: ratio 1/sin(angle/2) > 10 gives a bevel)
+ *                          and butt caps, drawn as one shape so joins and
+ *                          self-overlaps are not painted twice.  Coverage is
+ *                          the exact area of the union (inclusion–exclusion
+ *                          of the <= 3 convex pieces at a pixel); pixels
+ *                          touched by 4+ pieces (very short segments) use 16x16
+ *                          supersampling, round(hits*255/256).  Repeated
+ *                          points are skipped.  Cost O(touched pixels * n)
+ *   isk_fill_circle_aa     a disc, coverage by exact area (analytic; beyond
+ *                          r = 2^16 the edge inside a pixel is taken as its
+ *                          tangent, < 1e-5 px off)
+ *
+ * Note on the thesis's figure 1: the browser (Skia) draws width-1 strokes as
+ * anti-aliased hairlines (coverage 255 split between the two pixels across
+ * the line on each major-axis step, no joins), not as exact-area rectangles,
+ * so its diagonal lines are thinner than isk_stroke_line's.  Horizontal and
+ * vertical lines agree (two half-intensity rows for integer coordinates).
  */
 #ifndef ISKRA_DRAW_H
 #define ISKRA_DRAW_H
@@ -65,7 +97,12 @@ void isk_fill_circle_aa(isk_canvas *c, double cx, double cy, double r, isk_color
 /* Coverage of the coverage dot at (x, y) for the 2x2 block of pixels whose
  * top-left is (floor(x), floor(y)): w[0] top-left, w[1] top-right,
  * w[2] bottom-left, w[3] bottom-right, each 0..255, summing to exactly 255.
- * Returns 0 (and zero weights) when x or y is not finite. */
+ * Rule: with fx = x - floor(x), fy = y - floor(y), the exact areas times 255
+ * a = 255(1-fx)(1-fy), 255fx(1-fy), 255(1-fx)fy, 255fx*fy are floored, and
+ * the units still missing from 255 go one each to the largest fractional
+ * parts, ties to the lower index.  Integer (x, y) gives {255, 0, 0, 0};
+ * (x+0.5, y) gives {128, 127, 0, 0}; (x+0.5, y+0.5) gives {64, 64, 64, 63}.
+ * Returns 0 (and zero weights) when x or y is not finite, else 1. */
 int isk_dot_weights(double x, double y, uint8_t w[4]);
 
 #endif

@@ -7,6 +7,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 isk_status isk_png_write(const isk_canvas *c, const char *path, isk_error *err)
@@ -32,6 +33,10 @@ isk_status isk_png_write(const isk_canvas *c, const char *path, isk_error *err)
         free(tmp);
         return s;
     }
+    /* mkstemp creates the file 0600; give the result the permissions of the
+     * file it replaces, or the usual 0644 for a new one. */
+    struct stat st;
+    fchmod(fd, stat(path, &st) == 0 ? (st.st_mode & 07777) : 0644);
     FILE *f = fdopen(fd, "wb");
     if (!f) {
         isk_status s = isk_error_set(err, ISK_ERR_IO, "%s: %s", path, strerror(errno));
