@@ -6,6 +6,14 @@
  *   iskra/canvas.h   RGBA8 buffers         iskra/blend.h   blend modes
  *   iskra/draw.h     primitives            iskra/text.h    bitmap font
  *   iskra/view.h     world <-> screen      iskra/png.h     PNG files
+ *   iskra/vec2.h     2D vector (Vektor2D)  iskra/particles.h  SoA particle store
+ *   iskra/forces.h   gravity, drag, Coulomb potentials
+ *   iskra/integrate.h  integrators         iskra/bounds.h  walls / bounce
+ *   iskra/explode.h  emitters              iskra/system.h  stepped system
+ *   iskra/teach.h    the thesis's classes, one particle at a time
+ *   iskra/sinlut.h   sine lookup table     iskra/gradient.h  baked colour/scalar ramps
+ *   iskra/sprite.h   baked round sprites   iskra/deflector.h  bouncing segments
+ *   iskra/shape.h    spawn shapes, velocity generators
  * The SDL2 window lives in a separate library: #include "iskra/sdl.h" and
  * link libiskra-sdl (pkg-config iskra-sdl).
  */
@@ -20,5 +28,18 @@
 #include "iskra/text.h"
 #include "iskra/view.h"
 #include "iskra/png.h"
+#include "iskra/vec2.h"
+#include "iskra/particles.h"
+#include "iskra/forces.h"
+#include "iskra/integrate.h"
+#include "iskra/bounds.h"
+#include "iskra/explode.h"
+#include "iskra/system.h"
+#include "iskra/teach.h"
+#include "iskra/sinlut.h"
+#include "iskra/gradient.h"
+#include "iskra/sprite.h"
+#include "iskra/deflector.h"
+#include "iskra/shape.h"
 
 #endif

@@ -1,0 +1,85 @@
+/* iskra/bounds.h — walls that keep particles in the view: the thesis's
+ * zarobi, and a physically sound reflection.
+ *
+ * Each side (top, right, bottom, left) is switched on or off.  Walls sit
+ * `margin` inside the view: left = xmin+margin, right = xmax-margin,
+ * bottom = ymin+margin, top = ymax-margin (each computed once, in double).
+ *
+ * ISK_BOUNCE_THESIS — Cestica.zarobi exactly (catalogue §1.4), margin 0.1
+ * (the particle's "diameter").  Per particle, in this order, each check
+ * independent and strict:
+ *     1. left   and x < left   -> vx = -vx
+ *     2. right  and x > right  -> vx = -vx
+ *     3. bottom and y < bottom -> vy = -vy
+ *     4. top    and y > top    -> vy = -vy
+ *     5. bottom and y < bottom -> y = bottom      (only the floor clamps)
+ *   Restitution 1, unconditional flip: a particle still beyond a left/right/top
+ *   wall next step flips again (it can jitter or stay out, as in the thesis).
+ *
+ * ISK_BOUNCE_REFLECT — sound: a particle beyond a wall is reflected about it
+ * with restitution c in [0, 1]: position x' = wall + c*(wall - x) (the
+ * overshoot mirrored and scaled by c, i.e. what it would have travelled after
+ * the hit at the reflected speed c*|v|), velocity v' = -c*v but only if v
+ * points outward (an inward-moving particle is never turned around, so it
+ * never sticks).  If the mirrored point is beyond the opposite wall (huge
+ * speed) it is reflected again, up to 16 times, then clamped onto the wall
+ * as a safety net (also turns a NaN position into the wall).  After the stage
+ * every particle is inside [left, right] x [bottom, top] for the enabled sides.
+ *
+ * The bounce is its own stage so callers choose the order: the thesis's
+ * examples draw BEFORE zarobi, its simulator AFTER (isk_system has
+ * bounce_in_step; isk_system_bounce() runs the stage alone).
+ *
+ *     isk_bounds b;
+ *     isk_bounds_thesis(&b, -10, 10, -10, 10, ISK_SIDE_BOTTOM);   // floor only
+ *     isk_bounds_apply(&b, &store, 0, store.count);
+ *     isk_bounds_reflect(&b, 0, 10, 0, 10, ISK_SIDE_ALL, 0.0, 0.5);  // margin 0, c = 0.5
+ */
+#ifndef ISKRA_BOUNDS_H
+#define ISKRA_BOUNDS_H
+
+#include <stddef.h>
+
+#include "iskra/particles.h"
+#include "iskra/status.h"
+
+enum {
+    ISK_SIDE_TOP = 1u << 0,
+    ISK_SIDE_RIGHT = 1u << 1,
+    ISK_SIDE_BOTTOM = 1u << 2,
+    ISK_SIDE_LEFT = 1u << 3,
+    ISK_SIDE_ALL = 15u
+};
+
+typedef enum isk_bounce_mode { ISK_BOUNCE_THESIS = 0, ISK_BOUNCE_REFLECT = 1 } isk_bounce_mode;
+
+#define ISK_BOUNCE_MAX_REFLECTIONS 16
+
+typedef struct isk_bounds {
+    isk_bounce_mode mode;
+    unsigned sides;             /* ISK_SIDE_* bits */
+    double xmin, xmax, ymin, ymax;
+    double margin;              /* thesis: 0.1 */
+    double restitution;         /* reflect mode only, [0, 1] */
+} isk_bounds;
+
+/* The thesis's zarobi with margin 0.1 on the view xmin..ymax.  Errors:
+ * ISK_ERR_NULL, ISK_ERR_NAN, ISK_ERR_RANGE (min >= max, unknown side bits). */
+isk_status isk_bounds_thesis(isk_bounds *b, double xmin, double xmax, double ymin, double ymax,
+                             unsigned sides);
+
+/* Sound reflection.  Errors: ISK_ERR_NULL, ISK_ERR_NAN, ISK_ERR_RANGE
+ * (restitution outside [0,1], margin < 0, walls not strictly ordered). */
+isk_status isk_bounds_reflect(isk_bounds *b, double xmin, double xmax, double ymin, double ymax,
+                              unsigned sides, double margin, double restitution);
+
+/* Validates a hand-filled isk_bounds (same rules as the constructors). */
+isk_status isk_bounds_validate(const isk_bounds *b);
+
+/* The bounce stage on particles [begin, end) (clamped to the store). */
+void isk_bounds_apply(const isk_bounds *b, isk_particles *p, size_t begin, size_t end);
+
+/* The same on raw arrays of n particles. */
+void isk_bounds_apply_arrays(const isk_bounds *b, size_t n, double *x, double *y, double *vx, double *vy);
+
+#endif

@@ -1,0 +1,191 @@
+/* Bounce stages: the thesis's zarobi and a sound reflection. */
+#include "iskra/bounds.h"
+
+#include <math.h>
+
+#include "sim/kernels.h"
+
+isk_status isk_bounds_validate(const isk_bounds *b)
+{
+    if (!b)
+        return ISK_ERR_NULL;
+    if (!isfinite(b->xmin) || !isfinite(b->xmax) || !isfinite(b->ymin) || !isfinite(b->ymax) ||
+        !isfinite(b->margin) || !isfinite(b->restitution))
+        return ISK_ERR_NAN;
+    if (b->sides & ~(unsigned)ISK_SIDE_ALL)
+        return ISK_ERR_RANGE;
+    if (!(b->xmin < b->xmax) || !(b->ymin < b->ymax))
+        return ISK_ERR_RANGE;
+    if (b->mode == ISK_BOUNCE_THESIS)
+        return ISK_OK; /* the thesis accepts any margin */
+    if (b->mode != ISK_BOUNCE_REFLECT)
+        return ISK_ERR_RANGE;
+    if (!(b->restitution >= 0.0 && b->restitution <= 1.0) || b->margin < 0.0)
+        return ISK_ERR_RANGE;
+    if (!(b->xmin + b->margin < b->xmax - b->margin) || !(b->ymin + b->margin < b->ymax - b->margin))
+        return ISK_ERR_RANGE;
+    return ISK_OK;
+}
+
+isk_status isk_bounds_thesis(isk_bounds *b, double xmin, double xmax, double ymin, double ymax,
+                             unsigned sides)
+{
+    if (!b)
+        return ISK_ERR_NULL;
+    isk_bounds t = {ISK_BOUNCE_THESIS, sides, xmin, xmax, ymin, ymax, 0.1, 1.0};
+    isk_status s = isk_bounds_validate(&t);
+    if (s == ISK_OK)
+        *b = t;
+    return s;
+}
+
+isk_status isk_bounds_reflect(isk_bounds *b, double xmin, double xmax, double ymin, double ymax,
+                              unsigned sides, double margin, double restitution)
+{
+    if (!b)
+        return ISK_ERR_NULL;
+    isk_bounds t = {ISK_BOUNCE_REFLECT, sides, xmin, xmax, ymin, ymax, margin, restitution};
+    isk_status s = isk_bounds_validate(&t);
+    if (s == ISK_OK)
+        *b = t;
+    return s;
+}
+
+/* ---- thesis: one loop per enabled side (no per-particle side test) ---- */
+
+static void flip_below(size_t n, const double *restrict pos, double *restrict v, double wall)
+{
+    for (size_t i = 0; i < n; i++)
+        v[i] = isk_k_flip_below(pos[i], wall, v[i]);
+}
+
+static void flip_above(size_t n, const double *restrict pos, double *restrict v, double wall)
+{
+    for (size_t i = 0; i < n; i++)
+        v[i] = isk_k_flip_above(pos[i], wall, v[i]);
+}
+
+/* Floor: steps 3 and 5 fused (step 4, the top, only reads y, which step 5
+ * has not yet changed, and both flips negate vy, so they commute). */
+static void floor_flip_clamp(size_t n, double *restrict y, double *restrict vy, double wall)
+{
+    for (size_t i = 0; i < n; i++) {
+        double p = y[i], u = vy[i];
+        double nu = isk_k_flip_below(p, wall, u), np = isk_k_clamp_below(p, wall);
+        vy[i] = nu; /* loads, selects, then stores: vectorizes */
+        y[i] = np;
+    }
+}
+
+static void thesis_apply(const isk_bounds *b, size_t n, double *x, double *y, double *vx, double *vy)
+{
+    double left = b->xmin + b->margin, right = b->xmax - b->margin;
+    double bottom = b->ymin + b->margin, top = b->ymax - b->margin;
+    if (b->sides & ISK_SIDE_LEFT)
+        flip_below(n, x, vx, left);
+    if (b->sides & ISK_SIDE_RIGHT)
+        flip_above(n, x, vx, right);
+    if (b->sides & ISK_SIDE_TOP)
+        flip_above(n, y, vy, top);
+    if (b->sides & ISK_SIDE_BOTTOM)
+        floor_flip_clamp(n, y, vy, bottom);
+}
+
+/* ---- sound reflection ---- */
+
+/* One pass per axis and chunk: candidates first into small stack buffers
+ * (arithmetic only), then the selects; both loops vectorize (see kernels.h
+ * for why it is split).  A disabled wall is at -inf/+inf: never crossed. */
+enum { CHUNK = 256 };
+
+static void reflect_pass(size_t n, double *restrict pos, double *restrict v, double lo, double hi,
+                         double c)
+{
+    double ml[CHUNK], mh[CHUNK], rv[CHUNK];
+    for (size_t o = 0; o < n; o += CHUNK) {
+        size_t m = n - o < CHUNK ? n - o : CHUNK;
+        double *restrict p = pos + o, *restrict u = v + o;
+        for (size_t i = 0; i < m; i++) {
+            ml[i] = isk_k_mirror_lo(p[i], lo, c);
+            mh[i] = isk_k_mirror_hi(p[i], hi, c);
+            rv[i] = isk_k_rebound(u[i], c);
+        }
+        for (size_t i = 0; i < m; i++) {
+            isk_k_select_box(&p[i], &u[i], lo, hi, ml[i], mh[i], rv[i]);
+        }
+    }
+}
+
+/* Rare path: a particle still outside after one reflection per wall. */
+static void settle_axis(size_t n, double *restrict pos, double *restrict v, double lo, double hi,
+                        double c)
+{
+    for (size_t i = 0; i < n; i++) {
+        double p = pos[i];
+        if (islessequal(p, hi) & isgreaterequal(p, lo)) /* inside; NaN falls through */
+            continue;
+        double u = v[i];
+        for (int k = 0; k < ISK_BOUNCE_MAX_REFLECTIONS && !(p >= lo && p <= hi); k++) {
+            if (p < lo)
+                isk_k_reflect_lo(&p, &u, lo, c);
+            else if (p > hi)
+                isk_k_reflect_hi(&p, &u, hi, c);
+            else
+                break; /* NaN: handled by the clamp below */
+        }
+        if (!(p >= lo)) { /* also catches NaN */
+            p = lo;
+            if (!(u >= 0.0))
+                u = u < 0.0 ? -c * u : 0.0;
+        } else if (p > hi) {
+            p = hi;
+            if (u > 0.0)
+                u = -c * u;
+        }
+        pos[i] = p;
+        v[i] = u;
+    }
+}
+
+static void reflect_axis(size_t n, double *pos, double *v, int lo_on, int hi_on, double lo, double hi,
+                         double c)
+{
+    if (!lo_on && !hi_on)
+        return;
+    lo = lo_on ? lo : -INFINITY;
+    hi = hi_on ? hi : INFINITY;
+    reflect_pass(n, pos, v, lo, hi, c);
+    settle_axis(n, pos, v, lo, hi, c);
+}
+
+static void reflect_apply(const isk_bounds *b, size_t n, double *x, double *y, double *vx, double *vy)
+{
+    double left = b->xmin + b->margin, right = b->xmax - b->margin;
+    double bottom = b->ymin + b->margin, top = b->ymax - b->margin;
+    double c = b->restitution;
+    reflect_axis(n, x, vx, (b->sides & ISK_SIDE_LEFT) != 0, (b->sides & ISK_SIDE_RIGHT) != 0, left,
+                 right, c);
+    reflect_axis(n, y, vy, (b->sides & ISK_SIDE_BOTTOM) != 0, (b->sides & ISK_SIDE_TOP) != 0, bottom,
+                 top, c);
+}
+
+void isk_bounds_apply_arrays(const isk_bounds *b, size_t n, double *x, double *y, double *vx, double *vy)
+{
+    if (!b || !x || !y || !vx || !vy || b->sides == 0)
+        return;
+    if (b->mode == ISK_BOUNCE_THESIS)
+        thesis_apply(b, n, x, y, vx, vy);
+    else
+        reflect_apply(b, n, x, y, vx, vy);
+}
+
+void isk_bounds_apply(const isk_bounds *b, isk_particles *p, size_t begin, size_t end)
+{
+    if (!b || !p)
+        return;
+    if (end > p->count)
+        end = p->count;
+    if (begin >= end)
+        return;
+    isk_bounds_apply_arrays(b, end - begin, p->x + begin, p->y + begin, p->vx + begin, p->vy + begin);
+}

@@ -1,0 +1,156 @@
+/* src/sim/kernels.h — per-particle update rules, internal.
+ *
+ * Every rule the thesis applies to one particle lives here once, as a static
+ * inline function on plain doubles.  The store stages (forces.c, integrate.c,
+ * bounds.c) call them inside their tight loops over the SoA arrays, and the
+ * teaching API (teach.c) calls the very same functions on one particle; so a
+ * single-particle example and a million-particle system give identical bits.
+ *
+ * Nothing here branches on scene-level choices except through arguments that
+ * are compile-time constants at the call sites (the callers specialise the
+ * loop and switch outside it); the remaining ?: are data selects the
+ * vectorizer turns into blends.
+ */
+#ifndef ISKRA_SIM_KERNELS_H
+#define ISKRA_SIM_KERNELS_H
+
+#include <math.h>
+
+/* MaterijalnaTocka.pomakni(dt, F): semi-implicit (symplectic) Euler exactly as
+ * the thesis code: c = dt/m first, v += c*F per component (product first,
+ * dodajCputaV), then r += dt*v with the NEW velocity. */
+static inline void isk_k_semi_euler(double *x, double *y, double *vx, double *vy, double m,
+                                    double fx, double fy, double dt)
+{
+    double c = dt / m;
+    double nvx = *vx + c * fx;
+    double nvy = *vy + c * fy;
+    *vx = nvx;
+    *vy = nvy;
+    *x = *x + dt * nvx;
+    *y = *y + dt * nvy;
+}
+
+/* Explicit (forward) Euler as the thesis TEXT derives it:
+ * r(t+dt) = r + dt*v(t), v(t+dt) = v + (dt/m)*F. */
+static inline void isk_k_euler(double *x, double *y, double *vx, double *vy, double m, double fx,
+                               double fy, double dt)
+{
+    double c = dt / m;
+    double ovx = *vx, ovy = *vy;
+    *x = *x + dt * ovx;
+    *y = *y + dt * ovy;
+    *vx = ovx + c * fx;
+    *vy = ovy + c * fy;
+}
+
+/* SilaTeza(g).F: (0, m*(-g)), added to the y accumulator. */
+static inline double isk_k_gravity_fy(double m, double g) { return m * (-g); }
+
+/* Otpor(b).F: (-b*vx, -b*vy). */
+static inline double isk_k_drag(double v, double b) { return (-b) * v; }
+
+/* CoulombovPotencijal.F for one particle, the thesis's operations in order:
+ *   n = r_pot - r;  n.x *= xm;  d = |r_pot - r| (Euclidean, unaffected by xm)
+ *   d' = (min > d) ? min : d            (min <= 0 never triggers: "off";
+ *                                        isgreater is the quiet '>', same result)
+ *   mult = s / d'^P   with s = enabled*(Q*k) precomputed by the caller
+ *   F = n * mult
+ * pw_kind is a compile-time constant at every call site: 2 -> d'*d' (exactly
+ * V8's d**2), 1 -> d', 0 -> pow(d', P).  With sound != 0 a zero denominator
+ * (the particle exactly on a potential without min distance, or d'^P
+ * underflowing) gives zero force instead of the thesis's 0*inf = NaN. */
+static inline void isk_k_coulomb(double cx, double cy, double x, double y, double s, double xm,
+                                 double minv, double P, int pw_kind, int sound, double *fx,
+                                 double *fy)
+{
+    double dx = cx - x, dy = cy - y;
+    double d = sqrt(dx * dx + dy * dy);
+    double nx = dx * xm;
+    double dd = isgreater(minv, d) ? minv : d;
+    double pw = pw_kind == 2 ? dd * dd : (pw_kind == 1 ? dd : pow(dd, P));
+    /* sound: a zero (or NaN) denominator becomes +inf, so mult = s/inf = 0;
+     * selecting the operand rather than the quotient keeps the division
+     * unconditional, which the vectorizer needs. */
+    double den = sound ? (isgreater(pw, 0.0) ? pw : INFINITY) : pw;
+    double mult = s / den;
+    *fx = nx * mult;
+    *fy = dy * mult;
+}
+
+/* The distance the max-distance switch tests (same operations as above). */
+static inline double isk_k_coulomb_dist(double cx, double cy, double x, double y)
+{
+    double dx = cx - x, dy = cy - y;
+    return sqrt(dx * dx + dy * dy);
+}
+
+/* Thesis zarobi pieces: an unconditional sign flip when strictly beyond a
+ * wall, and the floor's position clamp.  isless/isgreater are the quiet
+ * forms of < and > (same result, NaN compares false either way); being
+ * non-trapping they let gcc turn the selects into vector blends under the
+ * default -ftrapping-math, where a plain < keeps a branch. */
+static inline double isk_k_flip_below(double pos, double wall, double v) { return isless(pos, wall) ? -v : v; }
+static inline double isk_k_flip_above(double pos, double wall, double v) { return isgreater(pos, wall) ? -v : v; }
+static inline double isk_k_clamp_below(double pos, double wall) { return isless(pos, wall) ? wall : pos; }
+
+/* Sound reflection about a wall, split in two so loops vectorize: the
+ * candidates (pure arithmetic, computed for every particle), then the
+ * selects.  Low wall (the particle is below `wall`): the overshoot is
+ * mirrored and scaled by the restitution c, exactly what a particle moving at
+ * the reflected speed c*|v| would have travelled after the hit; the velocity
+ * is reflected (and scaled) only if it points outward, so a particle already
+ * moving back inside is never turned around (no sticking). */
+static inline double isk_k_mirror_lo(double pos, double wall, double c) { return wall + c * (wall - pos); }
+static inline double isk_k_mirror_hi(double pos, double wall, double c) { return wall - c * (pos - wall); }
+static inline double isk_k_rebound(double v, double c) { return -c * v; }
+
+static inline void isk_k_select_lo(double *pos, double *v, double wall, double mirrored, double rebound)
+{
+    double p = *pos, u = *v;
+    double nu = isless(u, 0.0) ? rebound : u;
+    double rv = isless(p, wall) ? nu : u;
+    double rp = isless(p, wall) ? mirrored : p;
+    *v = rv; /* compute everything, then store: gcc if-converts only then */
+    *pos = rp;
+}
+
+static inline void isk_k_select_hi(double *pos, double *v, double wall, double mirrored, double rebound)
+{
+    double p = *pos, u = *v;
+    double nu = isgreater(u, 0.0) ? rebound : u;
+    double rv = isgreater(p, wall) ? nu : u;
+    double rp = isgreater(p, wall) ? mirrored : p;
+    *v = rv;
+    *pos = rp;
+}
+
+/* Both walls of an axis at once (lo < hi, so at most one applies to the
+ * incoming position; a mirrored point beyond the other wall is left for the
+ * caller's next pass). */
+static inline void isk_k_select_box(double *pos, double *v, double lo, double hi, double mirrored_lo,
+                                    double mirrored_hi, double rebound)
+{
+    double p = *pos, u = *v;
+    double nul = isless(u, 0.0) ? rebound : u;
+    double nuh = isgreater(u, 0.0) ? rebound : u;
+    double rp = isgreater(p, hi) ? mirrored_hi : p;
+    double ru = isgreater(p, hi) ? nuh : u;
+    rp = isless(p, lo) ? mirrored_lo : rp;
+    ru = isless(p, lo) ? nul : ru;
+    *v = ru;
+    *pos = rp;
+}
+
+/* Both halves at once, for scalar code. */
+static inline void isk_k_reflect_lo(double *pos, double *v, double wall, double c)
+{
+    isk_k_select_lo(pos, v, wall, isk_k_mirror_lo(*pos, wall, c), isk_k_rebound(*v, c));
+}
+
+static inline void isk_k_reflect_hi(double *pos, double *v, double wall, double c)
+{
+    isk_k_select_hi(pos, v, wall, isk_k_mirror_hi(*pos, wall, c), isk_k_rebound(*v, c));
+}
+
+#endif

@@ -1,0 +1,101 @@
+/* Particle store: growth, O(1) removal, stable cull, iteration order, checks. */
+#include <criterion/criterion.h>
+#include <math.h>
+#include <stdint.h>
+
+#include "iskra/particles.h"
+
+Test(sim_store, grows_from_empty_and_keeps_insertion_order)
+{
+    isk_particles p;
+    cr_assert_eq(isk_particles_init(&p, 0, 0), ISK_OK);
+    for (int i = 0; i < 5000; i++) {
+        size_t idx = 99;
+        cr_assert_eq(isk_particles_add(&p, i, -i, 2.0 * i, 0.5, 1.0 + i, &idx), ISK_OK);
+        cr_assert_eq(idx, (size_t)i);
+    }
+    cr_assert_eq(p.count, 5000);
+    cr_assert_geq(p.capacity, 5000);
+    cr_assert_eq((uintptr_t)p.x % 64, 0);
+    cr_assert_eq((uintptr_t)p.vy % 64, 0);
+    for (int i = 0; i < 5000; i++) {
+        cr_assert_eq(p.x[i], (double)i);
+        cr_assert_eq(p.y[i], (double)-i);
+        cr_assert_eq(p.vx[i], 2.0 * i);
+        cr_assert_eq(p.m[i], 1.0 + i);
+        cr_assert_eq(p.age[i], 0.0);
+        cr_assert(isinf(p.life[i]));
+    }
+    cr_assert_null(p.color);
+    cr_assert_null(p.size);
+    isk_particles_free(&p);
+}
+
+Test(sim_store, optional_arrays_only_when_asked)
+{
+    isk_particles p;
+    cr_assert_eq(isk_particles_init(&p, 3, ISK_PARTICLES_COLOR | ISK_PARTICLES_SIZE), ISK_OK);
+    cr_assert_eq(isk_particles_add(&p, 0, 0, 0, 0, 1, NULL), ISK_OK);
+    cr_assert_not_null(p.color);
+    cr_assert_not_null(p.size);
+    cr_assert_eq(p.size[0], 0.1);
+    cr_assert_eq(p.color[0].r, 255);
+    cr_assert_eq(p.color[0].g, 255);
+    cr_assert_eq(p.color[0].b, 0);
+    isk_particles_free(&p);
+    cr_assert_eq(isk_particles_init(&p, 3, 1u << 7), ISK_ERR_SIZE);
+    isk_particles_free(&p);
+}
+
+Test(sim_store, remove_is_swap_with_last)
+{
+    isk_particles p;
+    isk_particles_init(&p, 0, 0);
+    for (int i = 0; i < 5; i++)
+        isk_particles_add(&p, i, 0, 0, 0, 1, NULL);
+    isk_particles_remove(&p, 1); /* 0 4 2 3 */
+    cr_assert_eq(p.count, 4);
+    double want[] = {0, 4, 2, 3};
+    for (int i = 0; i < 4; i++)
+        cr_assert_eq(p.x[i], want[i]);
+    isk_particles_remove(&p, 3); /* last: 0 4 2 */
+    cr_assert_eq(p.count, 3);
+    cr_assert_eq(p.x[2], 2.0);
+    isk_particles_remove(&p, 17); /* out of range: no-op */
+    cr_assert_eq(p.count, 3);
+    isk_particles_free(&p);
+}
+
+Test(sim_store, cull_is_stable)
+{
+    isk_particles p;
+    isk_particles_init(&p, 0, 0);
+    for (int i = 0; i < 10; i++) {
+        isk_particles_add(&p, i, 0, 0, 0, 1, NULL);
+        p.life[i] = (i % 3 == 0) ? 1.0 : INFINITY;
+    }
+    isk_particles_age(&p, 0, p.count, 1.0);
+    cr_assert_eq(isk_particles_cull(&p), 4); /* 0 3 6 9 die */
+    double want[] = {1, 2, 4, 5, 7, 8};
+    cr_assert_eq(p.count, 6);
+    for (int i = 0; i < 6; i++)
+        cr_assert_eq(p.x[i], want[i]);
+    isk_particles_free(&p);
+}
+
+Test(sim_store, validates_inputs_without_partial_state)
+{
+    isk_particles p;
+    cr_assert_eq(isk_particles_init(NULL, 0, 0), ISK_ERR_NULL);
+    cr_assert_eq(isk_particles_init(&p, ISK_PARTICLES_MAX + 1, 0), ISK_ERR_SIZE);
+    isk_particles_free(&p);
+    isk_particles_init(&p, 0, 0);
+    cr_assert_eq(isk_particles_add(&p, NAN, 0, 0, 0, 1, NULL), ISK_ERR_NAN);
+    cr_assert_eq(isk_particles_add(&p, 0, 0, INFINITY, 0, 1, NULL), ISK_ERR_NAN);
+    cr_assert_eq(isk_particles_add(&p, 0, 0, 0, 0, 0.0, NULL), ISK_ERR_RANGE);
+    cr_assert_eq(isk_particles_add(&p, 0, 0, 0, 0, -1.0, NULL), ISK_ERR_RANGE);
+    cr_assert_eq(isk_particles_add(NULL, 0, 0, 0, 0, 1, NULL), ISK_ERR_NULL);
+    cr_assert_eq(p.count, 0);
+    cr_assert_eq(isk_particles_reserve(&p, ISK_PARTICLES_MAX + 1), ISK_ERR_SIZE);
+    isk_particles_free(&p);
+}
