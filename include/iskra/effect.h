@@ -1,0 +1,334 @@
+/* iskra/effect.h — a whole particle effect: named forces, deflectors, walls
+ * and emitters, compiled into one list of stages per emitter, stepped and
+ * drawn frame by frame.
+ *
+ * This is what a scene file becomes (iskra/scene.h parses INI into an
+ * isk_effect_def) and what C programs can fill directly.  The definition is
+ * plain data; isk_effect_create() validates it (clear messages naming the
+ * emitter and field) and compiles it:
+ *
+ *     isk_effect_def d;
+ *     isk_effect_def_init(&d);                  // defaults: 600x600, view -10..10, dt 1/60
+ *     int g = isk_effect_def_add_force(&d, "gravity", ISK_FORCE_GRAVITY);
+ *     d.forces[g].g = 9.81;
+ *     isk_emitter_def *e = isk_effect_def_add_emitter(&d, "sparks");
+ *     e->source = ISK_SOURCE_EXPLOSION; e->explosion = ISK_EXPLOSION_GAUSS; e->count = 1000;
+ *     isk_emitter_use_force(e, g);
+ *     isk_effect *fx;  isk_error err;
+ *     if (isk_effect_create(&fx, &d, &err) != ISK_OK) { puts(err.message); ... }
+ *     isk_effect_def_free(&d);                  // the effect keeps its own copy
+ *     for (int i = 0; i < 100; i++) isk_effect_step(fx);
+ *     isk_effect_render(fx, &canvas);
+ *     isk_effect_destroy(fx);
+ *
+ * Only the effects a scene calls for are simulated.  Each emitter's stage list
+ * holds exactly what that emitter needs, in this order:
+ *     spawn (stream/bursts/scheduled batches) -> remember positions (only
+ *     with deflectors) -> forces it references + integrator (blocked) ->
+ *     slowing -> oscillation -> walls -> deflectors -> ageing/culling
+ * and its draw list: colour/alpha/size over life (only with gradients) ->
+ * draw.  A force no emitter references, a zero-strength force, a disabled
+ * potential, or a potential switched off by its maximum distance is not in
+ * any list (the last is dropped when it switches off), so it costs nothing
+ * and changes nothing.  isk_effect_describe() prints the lists.
+ *
+ * Determinism: every emitter owns an isk_rng seeded from (seed, emitter
+ * index), so adding a force or an unrelated emitter after it never changes
+ * its particles.  Same definition + same steps = byte-identical canvas.
+ */
+#ifndef ISKRA_EFFECT_H
+#define ISKRA_EFFECT_H
+
+#include <stddef.h>
+#include <stdint.h>
+#include <stdio.h>
+
+#include "iskra/blend.h"
+#include "iskra/bounds.h"
+#include "iskra/canvas.h"
+#include "iskra/deflector.h"
+#include "iskra/forces.h"
+#include "iskra/gradient.h"
+#include "iskra/integrate.h"
+#include "iskra/sprite.h"
+#include "iskra/status.h"
+#include "iskra/system.h"
+#include "iskra/vec2.h"
+#include "iskra/view.h"
+
+#define ISK_NAME_MAX 32
+#define ISK_EFFECT_MAX_FORCES 64
+#define ISK_EFFECT_MAX_DEFLECTORS 256
+#define ISK_EFFECT_MAX_EMITTERS 64
+#define ISK_EFFECT_MAX_DRAWINGS 64
+#define ISK_EFFECT_MAX_PARTICLES 4000000u /* per emitter, a sanity bound */
+
+/* ---- forces ------------------------------------------------------------ */
+
+typedef enum isk_force_kind {
+    ISK_FORCE_GRAVITY = 0, /* F = (0, m*(-g*gravity_mult))   (thesis SilaTeza) */
+    ISK_FORCE_DRAG,        /* F = -b*v                          (thesis Otpor) */
+    ISK_FORCE_WIND,        /* a constant acceleration: F = m*accel (fire thesis's wind) */
+    ISK_FORCE_POTENTIAL,   /* the thesis's Coulomb potential (iskra/forces.h) */
+    ISK_FORCE_KIND_COUNT
+} isk_force_kind;
+
+typedef struct isk_force_def {
+    char name[ISK_NAME_MAX];
+    isk_force_kind kind;
+    double g;              /* GRAVITY: g >= 0 */
+    double b;              /* DRAG: b >= 0 */
+    isk_vec2 accel;        /* WIND */
+    isk_potential pot;     /* POTENTIAL (id assigned at create: 1, 2, ... in list order) */
+    int draw;              /* POTENTIAL: draw as a disc of radius 0.1 with its id while on */
+    int line;              /* where it was defined (scene files), 0 if unknown */
+} isk_force_def;
+
+/* ---- emitters ---------------------------------------------------------- */
+
+typedef enum isk_source_kind {
+    ISK_SOURCE_PARTICLE = 0, /* one particle: pos, vel, mass (figures 9-14) */
+    ISK_SOURCE_EXPLOSION,    /* an isk_explosion of `count` at `pos` at time `start` */
+    ISK_SOURCE_LAYER,        /* the stationary layer: `count` at rest in `rect` */
+    ISK_SOURCE_STREAM,       /* continuous emission: shape, velocity, rate, bursts */
+    ISK_SOURCE_KIND_COUNT
+} isk_source_kind;
+
+/* Where a stream emitter places new particles (relative to `pos`). */
+typedef enum isk_spawn_shape {
+    ISK_SPAWN_POINT = 0,
+    ISK_SPAWN_DISC,        /* radius a, area-uniform */
+    ISK_SPAWN_CIRCLE,      /* outline of radius a */
+    ISK_SPAWN_RING,        /* a <= r <= b, area-uniform */
+    ISK_SPAWN_SEGMENT,     /* from pos to pos + (a, b) */
+    ISK_SPAWN_RECT,        /* half-extents a, b */
+    ISK_SPAWN_ELLIPSE,     /* semi-axes a, b, area-uniform (faithful: particle-engine method) */
+    ISK_SPAWN_COUNT
+} isk_spawn_shape;
+
+/* How a stream emitter picks initial velocities. */
+typedef enum isk_launch_kind {
+    ISK_LAUNCH_CONSTANT = 0,  /* vel */
+    ISK_LAUNCH_DISC,          /* uniform in a disc of radius speed_max around vel */
+    ISK_LAUNCH_DIRECTION,     /* direction angle, speed in [speed_min, speed_max] */
+    ISK_LAUNCH_CONE,          /* angle +- spread/2, speed in [speed_min, speed_max] */
+    ISK_LAUNCH_COUNT
+} isk_launch_kind;
+
+typedef enum isk_rate_mode {
+    ISK_RATE_ACCUMULATE = 0, /* fractional carry: exactly rate*t particles over time t */
+    ISK_RATE_THESIS          /* fire thesis: (unsigned)(dt*rate + 0.5) per frame, no carry */
+} isk_rate_mode;
+
+typedef enum isk_birth_mode {
+    ISK_BIRTH_BACKDATE = 0,  /* born at the true time, advanced by its age (particle-engine thesis) */
+    ISK_BIRTH_THESIS_JITTER, /* fire thesis: random whole-ms pre-advance, force and position only */
+    ISK_BIRTH_FRAME          /* all born at the end of the frame (shows banding) */
+} isk_birth_mode;
+
+typedef enum isk_draw_mode {
+    ISK_DRAW_DOT = 0,    /* the coverage dot: 1x1 px, top-left at the point (the thesis browser) */
+    ISK_DRAW_PIXEL,      /* the single pixel containing the point */
+    ISK_DRAW_DISC,       /* anti-aliased disc of world radius size/2 */
+    ISK_DRAW_SPRITE,     /* a baked sprite (iskra/sprite.h) of world size `size` */
+    ISK_DRAW_NONE,       /* simulated, not drawn */
+    ISK_DRAW_COUNT
+} isk_draw_mode;
+
+/* Over-life ramps: piecewise-linear in normalised age t = age/life, stops as
+ * in iskra/gradient.h (baked once into tables at create). */
+typedef struct isk_color_ramp {
+    int n;                                         /* 0 = off (constant colour) */
+    isk_color_stop stops[ISK_GRADIENT_MAX_STOPS];  /* t strictly increasing in [0, 1] */
+} isk_color_ramp;
+
+typedef struct isk_scalar_ramp {
+    int n;                                         /* 0 = off */
+    isk_scalar_stop stops[ISK_GRADIENT_MAX_STOPS];
+} isk_scalar_ramp;
+
+typedef struct isk_emitter_def {
+    char name[ISK_NAME_MAX];
+    int line;
+
+    /* source */
+    isk_source_kind source;
+    isk_vec2 pos;              /* PARTICLE position; EXPLOSION centre; STREAM origin */
+    isk_vec2 vel;              /* PARTICLE velocity; STREAM constant/disc-centre velocity */
+    double mass;               /* PARTICLE, LAYER and STREAM mass (min); default 1 */
+    double mass_range;         /* STREAM: mass = mass + U*mass_range */
+    isk_explosion explosion;   /* EXPLOSION kind */
+    size_t count;              /* EXPLOSION, LAYER count (required); STREAM burst size (0: none) */
+    size_t limit;              /* largest accepted count (0: the thesis's 10,000) */
+    isk_kick_target kick;      /* COULOMB kicks: all particles of this emitter, or only new */
+    double start;              /* EXPLOSION / burst time, seconds */
+    double rect[4];            /* LAYER xmin, xmax, ymin, ymax */
+    isk_spawn_shape shape;     /* STREAM */
+    double shape_a, shape_b;   /* STREAM shape parameters (see isk_spawn_shape) */
+    double shape_angle;        /* STREAM shape rotation, radians */
+    int shape_faithful;        /* ELLIPSE: the particle-engine thesis's non-uniform sampler */
+    isk_launch_kind velocity;
+    double angle, spread;      /* DIRECTION/CONE, radians */
+    double speed_min, speed_max;
+    double rate;               /* STREAM particles per second (0: bursts only) */
+    isk_rate_mode rate_mode;
+    isk_birth_mode birth;
+    double burst_every;        /* STREAM: a burst of `count` every this many s (0: once at start) */
+    double life, life_range;   /* lifetime = life + U*life_range; INFINITY = immortal */
+    size_t capacity;           /* pool size: spawns beyond it are dropped and counted */
+
+    /* motion */
+    int forces[ISK_EFFECT_MAX_FORCES]; /* indices into isk_effect_def.forces */
+    int nforces;
+    int deflectors[ISK_EFFECT_MAX_DEFLECTORS];
+    int ndeflectors;
+    int bounded;               /* 1: the effect's walls apply */
+    int draw_before_bounce;    /* 1: the thesis examples' order (draw, then walls) */
+    double gravity_mult;       /* scales GRAVITY forces (default 1) */
+    double weight;             /* buoyancy: an upward acceleration (fire thesis's weight) */
+    double slowing;            /* damping per second: v *= max(0, 1 - slowing*dt) (never flips) */
+    double osc_omega_min, osc_omega_max; /* oscillation angular speed range, rad/s (0,0 = off) */
+    double osc_amp_min, osc_amp_max;     /* initial amplitude range, world units */
+    double osc_decay;          /* amplitude *= max(0, 1 - decay*dt) */
+    int osc_faithful;          /* 1: also add the offset change to vx (the thesis code) */
+    int osc_use_table;         /* 1: sine lookup table (iskra/sinlut.h), 0: libm sin */
+    isk_integrator integrator; /* default: the effect's */
+    int substeps;              /* default: the effect's */
+
+    /* drawing */
+    isk_draw_mode draw;
+    isk_sprite_kind sprite;
+    double size;               /* DISC/SPRITE diameter in world units */
+    isk_color color;           /* default yellow */
+    isk_blend blend;           /* default over */
+    isk_color_ramp color_over_life;
+    isk_scalar_ramp alpha_over_life;  /* multiplies colour alpha */
+    isk_scalar_ramp size_over_life;   /* multiplies size */
+    int order;                 /* draw order key (ties: definition order) */
+} isk_emitter_def;
+
+/* Static drawings (the triangles of figures 1-8, labels): drawn each frame
+ * before the particles. */
+typedef enum isk_drawing_kind { ISK_DRAWING_POLYLINE = 0, ISK_DRAWING_DISC, ISK_DRAWING_TEXT } isk_drawing_kind;
+
+typedef struct isk_drawing_def {
+    char name[ISK_NAME_MAX];
+    int line;
+    isk_drawing_kind kind;
+    int pixels;                /* 1: coordinates are canvas pixels, not world units */
+    double *points;            /* POLYLINE: x0,y0,x1,y1,... (owned) */
+    int npoints;
+    int closed;
+    double x, y, r;            /* DISC centre and radius; TEXT position */
+    char text[128];
+    int scale;                 /* TEXT scale */
+    isk_color color;
+    isk_blend blend;
+} isk_drawing_def;
+
+typedef enum isk_view_def_kind { ISK_VIEWDEF_WINDOW = 0, ISK_VIEWDEF_CAMERA } isk_view_def_kind;
+
+typedef struct isk_effect_def {
+    int width, height;         /* canvas, default 600x600 */
+    isk_color background;      /* default opaque black */
+    int clear;                 /* 1: clear every frame (default); 0: trails accumulate */
+    isk_view_def_kind view_kind;
+    double xmin, xmax, ymin, ymax;    /* WINDOW */
+    double zoom, tx, ty;              /* CAMERA */
+    double dt;                 /* seconds per frame (default 1/60) */
+    int substeps;              /* default 1 */
+    double speed_divisor;      /* the thesis slider's f (default 1) */
+    isk_integrator integrator; /* default semi-implicit Euler */
+    uint64_t seed;
+    isk_fidelity centre;       /* behaviour exactly on a potential without min distance */
+    isk_fidelity fidelity;     /* THESIS: the thesis code's arithmetic everywhere (gravity as
+                                  m*(-g) then dt/m, no constant-acceleration fast path) */
+
+    isk_force_def *forces;     int nforces;
+    isk_deflector *deflectors; int ndeflectors;
+    char (*deflector_names)[ISK_NAME_MAX];
+    isk_bounds bounds;         /* sides == 0: no walls */
+    isk_emitter_def *emitters; int nemitters;
+    isk_drawing_def *drawings;   int ndrawings;
+
+    /* What a click does in `iskra play`: an explosion at the clicked point. */
+    int click_enabled;
+    isk_explosion click_explosion;
+    size_t click_count;
+    int click_emitter;         /* the emitter whose store receives it (-1: first) */
+    int click_auto;            /* 1: perform the click once at create, at (click_x, click_y) */
+    double click_x, click_y;   /* (the thesis's simulator scenes start with a click) */
+    long frames;               /* scene files: the frame `iskra render` shows by default (0) */
+} isk_effect_def;
+
+/* Defaults as documented on each field; no forces, emitters or drawings. */
+void isk_effect_def_init(isk_effect_def *d);
+/* Frees the arrays (and drawing points); the struct can be init'ed again. */
+void isk_effect_def_free(isk_effect_def *d);
+/* Appends an item with defaults; return its index, or -1 (too many / no memory). */
+int isk_effect_def_add_force(isk_effect_def *d, const char *name, isk_force_kind kind);
+int isk_effect_def_add_deflector(isk_effect_def *d, const char *name, isk_deflector seg);
+isk_emitter_def *isk_effect_def_add_emitter(isk_effect_def *d, const char *name);
+isk_drawing_def *isk_effect_def_add_drawing(isk_effect_def *d, const char *name, isk_drawing_kind kind);
+/* Index of the named force / deflector / emitter, or -1. */
+int isk_effect_def_find_force(const isk_effect_def *d, const char *name);
+int isk_effect_def_find_deflector(const isk_effect_def *d, const char *name);
+int isk_effect_def_find_emitter(const isk_effect_def *d, const char *name);
+/* Adds a reference (no duplicates); ISK_ERR_RANGE for a bad index. */
+isk_status isk_emitter_use_force(isk_emitter_def *e, int force);
+isk_status isk_emitter_use_deflector(isk_emitter_def *e, int deflector);
+
+/* ---- the runnable effect -------------------------------------------------- */
+
+typedef struct isk_effect isk_effect;
+
+/* Validates and compiles.  Errors name the item: "emitter 'smoke': life must
+ * be > 0" (with "line N" when the def came from a file).  ISK_ERR_NULL,
+ * ISK_ERR_RANGE, ISK_ERR_NAN, ISK_ERR_SIZE, ISK_ERR_NOMEM. */
+isk_status isk_effect_create(isk_effect **out, const isk_effect_def *def, isk_error *err);
+void isk_effect_destroy(isk_effect *e);
+
+/* Back to the state right after create (same seed: same run again). */
+isk_status isk_effect_reset(isk_effect *e);
+
+/* One frame of dt (in substeps).  ISK_ERR_NOMEM if a spawn could not grow a store. */
+isk_status isk_effect_step(isk_effect *e);
+
+/* Draws the current state.  With def.clear (the default) the canvas is
+ * filled with the background first; with clear == 0 (trails, as the
+ * thesis's static trajectory figures) it draws over what is there, so the
+ * caller renders after every step.  The canvas must be width x height
+ * (ISK_ERR_SIZE otherwise). */
+isk_status isk_effect_render(isk_effect *e, isk_canvas *c);
+
+/* The image of frame `frames` from the current state, whatever def.clear
+ * says: with clear, `frames` steps then one render; with trails, the canvas
+ * is filled with the background and every one of the `frames` steps is
+ * followed by a render (so frame 0 of a trail scene is the empty
+ * background, as in the thesis, which draws after each move). */
+isk_status isk_effect_run(isk_effect *e, isk_canvas *c, long frames);
+
+/* One step followed by a render that keeps trails (used by `iskra play` and
+ * by sequence rendering): equivalent to isk_effect_step + isk_effect_render. */
+isk_status isk_effect_step_render(isk_effect *e, isk_canvas *c);
+
+/* The click action at world point (x, y). */
+isk_status isk_effect_click(isk_effect *e, double x, double y);
+
+/* Runtime overrides (validated): substeps >= 1; dt > 0. */
+isk_status isk_effect_set_substeps(isk_effect *e, int substeps);
+
+/* The compiled stage lists, one line per stage, per emitter. */
+void isk_effect_describe(const isk_effect *e, FILE *out);
+
+/* Read-only views for overlays and tests. */
+size_t isk_effect_particle_count(const isk_effect *e);
+double isk_effect_time(const isk_effect *e);
+long isk_effect_frame(const isk_effect *e);
+const isk_view *isk_effect_view(const isk_effect *e);
+const isk_effect_def *isk_effect_definition(const isk_effect *e);
+int isk_effect_emitter_count(const isk_effect *e);
+const isk_particles *isk_effect_particles(const isk_effect *e, int emitter);
+size_t isk_effect_dropped(const isk_effect *e, int emitter); /* spawns lost to a full pool */
+
+#endif

@@ -1,0 +1,184 @@
+/* Drawing an effect: static drawings, then each emitter in draw order, then
+ * the potentials (as the thesis simulator draws them).  Over-life ramps are
+ * baked once per emitter at create and read per particle. */
+#include <math.h>
+#include <stdlib.h>
+
+#include "effect_internal.h"
+#include "iskra/draw.h"
+#include "iskra/text.h"
+
+isk_status fx_bake_ramps(fx_group *g, isk_error *err)
+{
+    const isk_emitter_def *em = g->def;
+    isk_status s = ISK_OK;
+    if (em->color_over_life.n) {
+        s = isk_color_gradient_bake(&g->color_ramp, em->color_over_life.stops, em->color_over_life.n,
+                                    ISK_GRADIENT_DEFAULT_RES);
+        g->has_color_ramp = s == ISK_OK;
+    }
+    if (s == ISK_OK && em->alpha_over_life.n) {
+        s = isk_scalar_gradient_bake(&g->alpha_ramp, em->alpha_over_life.stops, em->alpha_over_life.n,
+                                     ISK_GRADIENT_DEFAULT_RES);
+        g->has_alpha_ramp = s == ISK_OK;
+    }
+    if (s == ISK_OK && em->size_over_life.n) {
+        s = isk_scalar_gradient_bake(&g->size_ramp, em->size_over_life.stops, em->size_over_life.n,
+                                     ISK_GRADIENT_DEFAULT_RES);
+        g->has_size_ramp = s == ISK_OK;
+    }
+    if (s != ISK_OK)
+        return isk_error_set(err, s, "emitter '%s': cannot bake its over-life ramps: %s", em->name,
+                             isk_status_str(s));
+    return ISK_OK;
+}
+
+void fx_free_ramps(fx_group *g)
+{
+    if (g->has_color_ramp)
+        isk_color_gradient_free(&g->color_ramp);
+    if (g->has_alpha_ramp)
+        isk_scalar_gradient_free(&g->alpha_ramp);
+    if (g->has_size_ramp)
+        isk_scalar_gradient_free(&g->size_ramp);
+    g->has_color_ramp = g->has_alpha_ramp = g->has_size_ramp = 0;
+}
+
+static void draw_drawing(isk_canvas *c, const isk_view *v, const isk_drawing_def *s)
+{
+    switch (s->kind) {
+    case ISK_DRAWING_POLYLINE:
+        if (s->pixels)
+            isk_stroke_polyline(c, s->points, s->npoints, s->closed, s->color, s->blend);
+        else
+            isk_world_polyline(c, v, s->points, s->npoints, s->closed, s->color, s->blend);
+        break;
+    case ISK_DRAWING_DISC:
+        if (s->pixels)
+            isk_fill_circle_aa(c, s->x, s->y, s->r, s->color, s->blend);
+        else
+            isk_world_disc(c, v, s->x, s->y, s->r, s->color, s->blend);
+        break;
+    case ISK_DRAWING_TEXT:
+        if (s->pixels) {
+            double x = s->x, y = s->y;
+            if (!(x > -1e9)) x = -1e9;
+            if (!(x < 1e9)) x = 1e9;
+            if (!(y > -1e9)) y = -1e9;
+            if (!(y < 1e9)) y = 1e9;
+            isk_draw_text(c, (int)x, (int)y, s->text, s->scale, s->color, s->blend);
+        } else {
+            isk_world_text(c, v, s->x, s->y, s->text, s->scale, s->color, s->blend);
+        }
+        break;
+    }
+}
+
+/* The colour, alpha and size multiplier of particle i. */
+static inline isk_color particle_color(const fx_group *g, const isk_particles *p, size_t i, double t,
+                                       double *size_mult)
+{
+    isk_color col = p->color ? p->color[i] : g->def->color;
+    if (g->has_color_ramp)
+        col = isk_color_gradient_at(&g->color_ramp, t);
+    if (g->has_alpha_ramp) {
+        double a = col.a * isk_scalar_gradient_at(&g->alpha_ramp, t);
+        col.a = (uint8_t)(a >= 255.0 ? 255 : (a > 0 ? (int)(a + 0.5) : 0));
+    }
+    *size_mult = g->has_size_ramp ? isk_scalar_gradient_at(&g->size_ramp, t) : 1.0;
+    return col;
+}
+
+static void draw_group(isk_effect *e, isk_canvas *c, fx_group *g)
+{
+    const isk_emitter_def *em = g->def;
+    const isk_view *v = &e->view;
+    isk_particles *p = &g->store;
+    const size_t n = p->count;
+    const int varies = g->has_color_ramp || g->has_alpha_ramp || g->has_size_ramp || p->color;
+    const double scale = fabs(v->sx);
+    switch (em->draw) {
+    case ISK_DRAW_NONE:
+        return;
+    case ISK_DRAW_DOT:
+        if (!varies) {
+            for (size_t i = 0; i < n; i++) {
+                double X, Y;
+                isk_view_to_screen(v, p->x[i], p->y[i], &X, &Y);
+                isk_draw_dot(c, X, Y, em->color, em->blend);
+            }
+            return;
+        }
+        break;
+    default:
+        break;
+    }
+    const isk_sprite *spr = NULL;
+    int last_px = -1;
+    isk_color last_col = {0, 0, 0, 0};
+    for (size_t i = 0; i < n; i++) {
+        double X, Y, mult = 1.0;
+        isk_view_to_screen(v, p->x[i], p->y[i], &X, &Y);
+        double t = isfinite(p->life[i]) && p->life[i] > 0 ? p->age[i] / p->life[i] : 0.0;
+        isk_color col = varies ? particle_color(g, p, i, t, &mult) : em->color;
+        switch (em->draw) {
+        case ISK_DRAW_DOT:
+            isk_draw_dot(c, X, Y, col, em->blend);
+            break;
+        case ISK_DRAW_PIXEL:
+            if (X >= 0 && Y >= 0 && X < c->width && Y < c->height)
+                isk_draw_pixel(c, (int)X, (int)Y, col, em->blend);
+            break;
+        case ISK_DRAW_DISC:
+            isk_fill_circle_aa(c, X, Y, 0.5 * em->size * mult * scale, col, em->blend);
+            break;
+        case ISK_DRAW_SPRITE: {
+            double d = em->size * mult * scale;
+            int px = d >= ISK_SPRITE_MAX_SIZE ? ISK_SPRITE_MAX_SIZE : (d >= 1.0 ? (int)(d + 0.5) : 1);
+            if (!(d > 0))
+                break;
+            if (!spr || px != last_px || col.r != last_col.r || col.g != last_col.g || col.b != last_col.b ||
+                col.a != last_col.a) {
+                if (isk_sprite_cache_get(e->sprites, em->sprite, px, col, &spr) != ISK_OK) {
+                    /* A full cache (thousands of colours): start over rather than stop drawing. */
+                    isk_sprite_cache_clear(e->sprites);
+                    if (isk_sprite_cache_get(e->sprites, em->sprite, px, col, &spr) != ISK_OK) {
+                        spr = NULL;
+                        break;
+                    }
+                }
+                last_px = px;
+                last_col = col;
+            }
+            isk_draw_sprite(c, spr, X, Y, em->blend);
+            break;
+        }
+        default:
+            break;
+        }
+    }
+}
+
+isk_status fx_render(isk_effect *e, isk_canvas *c)
+{
+    const isk_effect_def *d = &e->def;
+    if (d->clear)
+        isk_canvas_fill(c, d->background);
+    for (int i = 0; i < d->ndrawings; i++)
+        draw_drawing(c, &e->view, &d->drawings[i]);
+    for (int k = 0; k < e->ngroups; k++)
+        draw_group(e, c, &e->groups[e->draw_order[k]]);
+    /* The thesis simulator's potentials: a disc of radius 0.1 (blue attracts,
+     * red repels), then the id in white at (x - 0.04, y - 0.06). */
+    for (size_t k = 0; k < e->npots; k++) {
+        const isk_potential *pot = &e->pots[k];
+        if (!pot->enabled || !d->forces[e->pot_force[k]].draw)
+            continue;
+        isk_color col = pot->charge >= 0 ? ISK_BLUE : ISK_RED;
+        isk_world_disc(c, &e->view, pot->r.x, pot->r.y, 0.1, col, ISK_BLEND_OVER);
+        char id[16];
+        snprintf(id, sizeof id, "%d", pot->id);
+        isk_world_text(c, &e->view, pot->r.x - 0.04, pot->r.y - 0.06, id, 1, ISK_WHITE, ISK_BLEND_OVER);
+    }
+    return ISK_OK;
+}
