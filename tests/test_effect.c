@@ -35,6 +35,7 @@ static void fig13_def(isk_effect_def *d)
     e->vel = isk_vec2_make(1, -2);
     e->bounded = 1;
     e->draw_before_bounce = 1;
+    e->draw = ISK_DRAW_DOT_BROWSER; /* as the teaching API's particle */
     isk_emitter_use_force(e, g);
     isk_emitter_use_force(e, b);
 }

@@ -727,3 +727,54 @@ Test(stroke, huge_coordinates_still_draw_the_visible_part)
     isk_fill_circle(&c, 5, 5, INFINITY, ISK_WHITE, ISK_BLEND_REPLACE);
     isk_canvas_free(&c);
 }
+
+/* The browser's dot rule (faithful mode): Skia's fillRect coverage. */
+Test(dot, browser_rule_values)
+{
+    int ix, iy;
+    uint8_t w[4];
+    cr_assert(isk_dot_weights_browser(180.0, 420.0, &ix, &iy, w));
+    cr_assert(ix == 180 && iy == 420 && w[0] == 255 && w[1] == 0 && w[2] == 0 && w[3] == 0);
+    /* Half a pixel right: two columns of 128/256 on a whole row (255). */
+    cr_assert(isk_dot_weights_browser(10.5, 3.0, &ix, &iy, w));
+    cr_assert(ix == 10 && w[0] == 127 && w[1] == 127 && w[2] == 0 && w[3] == 0);
+    /* A sliver thinner than 1/512 px snaps away: no second column at all. */
+    cr_assert(isk_dot_weights_browser(10.001, 3.0, &ix, &iy, w));
+    cr_assert(ix == 10 && w[0] == 255 && w[1] == 0);
+    /* Just below an integer snaps up to it (the cell moves). */
+    cr_assert(isk_dot_weights_browser(10.999, 3.0, &ix, &iy, w));
+    cr_assert(ix == 11 && w[0] == 255);
+    /* Coverage is on Skia's 1/256 scale: two partial rows of a whole column
+     * sum to 256; truncating row x column products loses a little. */
+    isk_rng r;
+    isk_rng_seed(&r, 5);
+    for (int i = 0; i < 100000; i++) {
+        double x = isk_rng_range(&r, -5, 600), y = isk_rng_range(&r, -5, 600);
+        cr_assert(isk_dot_weights_browser(x, y, &ix, &iy, w));
+        int sum = w[0] + w[1] + w[2] + w[3];
+        cr_assert(sum <= 256 && sum >= 250, "sum %d at (%.17g, %.17g)", sum, x, y);
+    }
+    cr_assert(!isk_dot_weights_browser(NAN, 1, &ix, &iy, w));
+    cr_assert(!isk_dot_weights_browser(1e300, 1, &ix, &iy, w));
+    cr_assert(!isk_dot_weights_browser(1, -INFINITY, &ix, &iy, w));
+}
+
+Test(dot, browser_dot_draws_its_weights_and_clips)
+{
+    isk_canvas c;
+    cr_assert_eq(isk_canvas_init(&c, 8, 8), ISK_OK);
+    isk_canvas_fill(&c, ISK_BLACK);
+    isk_draw_dot_browser(&c, 2.5, 3.25, ISK_YELLOW, ISK_BLEND_OVER);
+    int ix, iy;
+    uint8_t w[4];
+    isk_dot_weights_browser(2.5, 3.25, &ix, &iy, w);
+    cr_assert_eq(isk_canvas_get(&c, 2, 3).r, w[0]);
+    cr_assert_eq(isk_canvas_get(&c, 3, 3).r, w[1]);
+    cr_assert_eq(isk_canvas_get(&c, 2, 4).r, w[2]);
+    cr_assert_eq(isk_canvas_get(&c, 3, 4).r, w[3]);
+    isk_draw_dot_browser(&c, -1.5, 7.5, ISK_YELLOW, ISK_BLEND_OVER); /* partly outside */
+    isk_draw_dot_browser(&c, NAN, 2, ISK_YELLOW, ISK_BLEND_OVER);
+    isk_draw_dot_browser(&c, 1e300, -1e300, ISK_YELLOW, ISK_BLEND_OVER);
+    cr_assert_eq(isk_canvas_get(&c, 0, 7).r, 0);
+    isk_canvas_free(&c);
+}

@@ -105,4 +105,15 @@ void isk_fill_circle_aa(isk_canvas *c, double cx, double cy, double r, isk_color
  * Returns 0 (and zero weights) when x or y is not finite, else 1. */
 int isk_dot_weights(double x, double y, uint8_t w[4]);
 
+/* The thesis browser's own rule for the same square (faithful mode): Skia's
+ * anti-aliased fillRect snaps the edges to 1/256 px and multiplies row and
+ * column coverage with truncation, so slivers under 1/256 px add nothing; the
+ * four weights sum to 250..256 (Skia's scale is 1/256, truncated).  With it the thesis's
+ * trajectory figures are reproduced pixel for pixel (lit pixels exactly);
+ * the exact-area isk_draw_dot is the sound default.
+ * isk_dot_weights_browser returns 0 for non-finite or huge coordinates;
+ * otherwise *ix, *iy receive the top-left pixel of the 2x2 block. */
+void isk_draw_dot_browser(isk_canvas *c, double x, double y, isk_color color, isk_blend mode);
+int isk_dot_weights_browser(double x, double y, int *ix, int *iy, uint8_t w[4]);
+
 #endif

@@ -132,6 +132,7 @@ typedef enum isk_draw_mode {
     ISK_DRAW_DISC,       /* anti-aliased disc of world radius size/2 */
     ISK_DRAW_SPRITE,     /* a baked sprite (iskra/sprite.h) of world size `size` */
     ISK_DRAW_NONE,       /* simulated, not drawn */
+    ISK_DRAW_DOT_BROWSER, /* the dot by the thesis browser's rule (isk_draw_dot_browser): faithful */
     ISK_DRAW_COUNT
 } isk_draw_mode;
 
@@ -187,6 +188,11 @@ typedef struct isk_emitter_def {
     double gravity_mult;       /* scales GRAVITY forces (default 1) */
     double weight;             /* buoyancy: an upward acceleration (fire thesis's weight) */
     double slowing;            /* damping per second: v *= max(0, 1 - slowing*dt) (never flips) */
+    int slow_faithful;         /* 1: the fire thesis's order v += a*dt; v *= slow; p += v*dt (the
+                                  slowed velocity moves the particle; drifts at a(1-k*dt)/k).
+                                  0 (default): p moves with the unslowed velocity, slowing after,
+                                  which drifts at exactly a/k at any dt.  Needs the semi-implicit
+                                  Euler fast path (no drag or potential forces) */
     double osc_omega_min, osc_omega_max; /* oscillation angular speed range, rad/s (0,0 = off) */
     double osc_amp_min, osc_amp_max;     /* initial amplitude range, world units */
     double osc_decay;          /* amplitude *= max(0, 1 - decay*dt) */

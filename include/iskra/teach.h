@@ -56,7 +56,7 @@ typedef struct isk_particle {
 /* new Cestica(0.1, new MaterijalnaTocka(m, r, v)) — yellow. */
 void isk_particle_init(isk_particle *c, double m, isk_vec2 r, isk_vec2 v);
 
-/* iscrtaj: isk_world_dot (1x1 px coverage square, top-left at the transformed
+/* iscrtaj: isk_world_dot_browser (1x1 px square, top-left at the transformed
  * point), source-over. */
 void isk_particle_draw(const isk_particle *c, isk_canvas *canvas, const isk_view *view);
 

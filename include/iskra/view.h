@@ -55,6 +55,10 @@ void isk_view_to_world(const isk_view *v, double sx, double sy, double *x, doubl
 
 /* The thesis's `piksel`: a coverage dot (isk_draw_dot) at the transformed point. */
 void isk_world_dot(isk_canvas *c, const isk_view *v, double x, double y, isk_color color, isk_blend mode);
+/* The same dot by the thesis browser's rule (isk_draw_dot_browser): what
+ * the faithful thesis figures use. */
+void isk_world_dot_browser(isk_canvas *c, const isk_view *v, double x, double y, isk_color color,
+                           isk_blend mode);
 /* The thesis's `puniKrug`: an anti-aliased disc at the transformed centre with
  * radius |sx|*r pixels (x scale only, as the thesis). */
 void isk_world_disc(isk_canvas *c, const isk_view *v, double x, double y, double r,

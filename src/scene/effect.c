@@ -133,6 +133,19 @@ static int check_emitter(checker *ck, const isk_effect_def *d, const isk_emitter
                     "oscillation ranges must be finite with min <= max, amplitude and decay >= 0");
     if ((int)e->integrator != -1 && (unsigned)e->integrator >= ISK_INTEGRATOR_COUNT)
         return fail(ck, ISK_ERR_RANGE, "emitter", n, L, "unknown integrator");
+    if (e->slow_faithful && e->slowing > 0) {
+        /* The thesis order is a fused constant-acceleration kernel. */
+        int ok = ((int)e->integrator == -1 ? d->integrator : e->integrator) == ISK_INTEGRATE_SEMI_EULER &&
+                 d->fidelity == ISK_FIDELITY_SOUND;
+        for (int i = 0; ok && i < e->nforces; i++) {
+            const isk_force_def *f = &d->forces[e->forces[i]];
+            ok = !(f->kind == ISK_FORCE_DRAG && f->b != 0) && f->kind != ISK_FORCE_POTENTIAL;
+        }
+        if (!ok)
+            return fail(ck, ISK_ERR_RANGE, "emitter", n, L,
+                        "the thesis slowing order needs the semi-implicit Euler integrator, sound fidelity "
+                        "and only gravity/wind forces");
+    }
     if (e->substeps < 0 || e->substeps > 10000)
         return fail(ck, ISK_ERR_RANGE, "emitter", n, L, "substeps must be 1..10000 (0 inherits)");
     if ((unsigned)e->draw >= ISK_DRAW_COUNT)
@@ -295,7 +308,10 @@ static isk_status compile_group(isk_effect *e, fx_group *g)
         /* Constant acceleration: gravity folds into it (a = -g), no mass needed. */
         g->ay = ay - gsum;
         g->ax = ax;
-        if (g->ax != 0 || g->ay != 0)
+        if (em->slow_faithful && em->slowing > 0)
+            add_stage(g, FX_STAGE_DRIFT_SLOW, "drift     thesis order: v += (%g, %g)*dt; v *= max(0, 1 - %g*dt); "
+                      "p += v*dt", g->ax, g->ay, em->slowing);
+        else if (g->ax != 0 || g->ay != 0)
             add_stage(g, FX_STAGE_DRIFT, "drift     semi-euler, constant acceleration (%g, %g)", g->ax, g->ay);
         else
             add_stage(g, FX_STAGE_DRIFT, "drift     semi-euler, no forces");
@@ -303,7 +319,7 @@ static isk_status compile_group(isk_effect *e, fx_group *g)
         add_stage(g, FX_STAGE_MOTION, "integrate %s, forces: %s", isk_integrator_name(g->integrator),
                   any_force ? forces_txt : "none");
     }
-    if (em->slowing > 0)
+    if (em->slowing > 0 && !g->has_stage[FX_STAGE_DRIFT_SLOW])
         add_stage(g, FX_STAGE_SLOW, "slow      v *= max(0, 1 - %g*dt)", em->slowing);
     if (g->has_osc)
         add_stage(g, FX_STAGE_OSCILLATE, "oscillate x, omega %g..%g rad/s, amplitude %g..%g, decay %g/s%s%s",
@@ -649,6 +665,24 @@ static void stage_slow(size_t n, double *restrict vx, double *restrict vy, doubl
     }
 }
 
+static void stage_drift_slow(size_t n, double *restrict x, double *restrict y, double *restrict vx,
+                             double *restrict vy, double ax, double ay, double slowing, double h)
+{
+    /* The fire thesis's Emitter::Advance: v -= F*dt; v *= slow; p += v*dt
+     * (F in its sign is -a), slow clamped at 0. */
+    const double dvx = ax * h, dvy = ay * h;
+    double f = 1.0 - slowing * h;
+    if (!(f > 0.0))
+        f = 0.0;
+    for (size_t i = 0; i < n; i++) {
+        double nvx = (vx[i] + dvx) * f, nvy = (vy[i] + dvy) * f;
+        vx[i] = nvx;
+        vy[i] = nvy;
+        x[i] = x[i] + h * nvx;
+        y[i] = y[i] + h * nvy;
+    }
+}
+
 static void stage_oscillate(isk_effect *e, fx_group *g, size_t o, size_t n, double *x, double *vx, double h)
 {
     const isk_emitter_def *em = g->def;
@@ -701,6 +735,9 @@ void fx_run_stages(isk_effect *e, fx_group *g, size_t begin, size_t end, double 
                 break;
             case FX_STAGE_DRIFT:
                 stage_drift(m, x, y, vx, vy, g->ax, g->ay, h);
+                break;
+            case FX_STAGE_DRIFT_SLOW:
+                stage_drift_slow(m, x, y, vx, vy, g->ax, g->ay, g->slow_per_s, h);
                 break;
             case FX_STAGE_MOTION:
                 isk_integrate_block(g->integrator, &g->forces, &e->scratch, m, x, y, vx, vy, p->m + o, h);
@@ -910,7 +947,7 @@ void isk_effect_describe(const isk_effect *e, FILE *out)
         const fx_group *g = &e->groups[gi];
         const isk_emitter_def *em = g->def;
         static const char *src[] = {"particle", "explosion", "layer", "stream"};
-        static const char *draw[] = {"dot", "pixel", "disc", "sprite", "none"};
+        static const char *draw[] = {"dot", "pixel", "disc", "sprite", "none", "browser dot"};
         fprintf(out, "emitter %s (%s, %zu particles, %d substep%s of %s):\n", em->name, src[em->source],
                 g->store.count, g->substeps, g->substeps == 1 ? "" : "s", isk_integrator_name(g->integrator));
         for (int si = 0; si < g->nstages; si++)

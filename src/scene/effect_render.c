@@ -110,12 +110,30 @@ static void draw_group(isk_effect *e, isk_canvas *c, fx_group *g)
             return;
         }
         break;
+    case ISK_DRAW_DOT_BROWSER:
+        if (!varies) {
+            for (size_t i = 0; i < n; i++) {
+                double X, Y;
+                isk_view_to_screen(v, p->x[i], p->y[i], &X, &Y);
+                isk_draw_dot_browser(c, X, Y, em->color, em->blend);
+            }
+            return;
+        }
+        break;
     default:
         break;
     }
+    /* Sprites: with a constant colour, one sprite baked in that colour
+     * (its blend table makes drawing cheapest); when the colour or alpha
+     * varies per particle (ramps), one mask per size baked in white and
+     * drawn tinted (isk_draw_sprite_tinted), so a ramp of a thousand colours
+     * bakes nothing more.  Both give isk_blend_pixel_cov's bytes exactly.
+     * A size ramp gives each particle its own whole-pixel size (one cached
+     * mask per size). */
+    const int tinted = g->has_color_ramp || g->has_alpha_ramp || p->color;
+    const isk_color bake_col = tinted ? ISK_WHITE : em->color;
     const isk_sprite *spr = NULL;
     int last_px = -1;
-    isk_color last_col = {0, 0, 0, 0};
     for (size_t i = 0; i < n; i++) {
         double X, Y, mult = 1.0;
         isk_view_to_screen(v, p->x[i], p->y[i], &X, &Y);
@@ -134,23 +152,24 @@ static void draw_group(isk_effect *e, isk_canvas *c, fx_group *g)
             break;
         case ISK_DRAW_SPRITE: {
             double d = em->size * mult * scale;
-            int px = d >= ISK_SPRITE_MAX_SIZE ? ISK_SPRITE_MAX_SIZE : (d >= 1.0 ? (int)(d + 0.5) : 1);
             if (!(d > 0))
                 break;
-            if (!spr || px != last_px || col.r != last_col.r || col.g != last_col.g || col.b != last_col.b ||
-                col.a != last_col.a) {
-                if (isk_sprite_cache_get(e->sprites, em->sprite, px, col, &spr) != ISK_OK) {
-                    /* A full cache (thousands of colours): start over rather than stop drawing. */
+            int px = d >= ISK_SPRITE_MAX_SIZE ? ISK_SPRITE_MAX_SIZE : (d >= 1.0 ? (int)(d + 0.5) : 1);
+            if (!spr || px != last_px) {
+                if (isk_sprite_cache_get(e->sprites, em->sprite, px, bake_col, &spr) != ISK_OK) {
+                    /* A full cache: start over rather than stop drawing. */
                     isk_sprite_cache_clear(e->sprites);
-                    if (isk_sprite_cache_get(e->sprites, em->sprite, px, col, &spr) != ISK_OK) {
+                    if (isk_sprite_cache_get(e->sprites, em->sprite, px, bake_col, &spr) != ISK_OK) {
                         spr = NULL;
                         break;
                     }
                 }
                 last_px = px;
-                last_col = col;
             }
-            isk_draw_sprite(c, spr, X, Y, em->blend);
+            if (tinted)
+                isk_draw_sprite_tinted(c, spr, X, Y, col, em->blend);
+            else
+                isk_draw_sprite(c, spr, X, Y, em->blend);
             break;
         }
         default:

@@ -39,7 +39,7 @@ void isk_particle_init(isk_particle *c, double m, isk_vec2 r, isk_vec2 v)
 
 void isk_particle_draw(const isk_particle *c, isk_canvas *canvas, const isk_view *view)
 {
-    isk_world_dot(canvas, view, c->mp.r.x, c->mp.r.y, c->color, ISK_BLEND_OVER);
+    isk_world_dot_browser(canvas, view, c->mp.r.x, c->mp.r.y, c->color, ISK_BLEND_OVER);
 }
 
 void isk_particle_zarobi_box(isk_particle *c, double xmin, double xmax, double ymin, double ymax,

@@ -14,6 +14,14 @@ void isk_world_dot(isk_canvas *c, const isk_view *v, double x, double y, isk_col
     isk_draw_dot(c, X, Y, color, mode);
 }
 
+void isk_world_dot_browser(isk_canvas *c, const isk_view *v, double x, double y, isk_color color,
+                           isk_blend mode)
+{
+    double X, Y;
+    isk_view_to_screen(v, x, y, &X, &Y);
+    isk_draw_dot_browser(c, X, Y, color, mode);
+}
+
 void isk_world_disc(isk_canvas *c, const isk_view *v, double x, double y, double r, isk_color color,
                     isk_blend mode)
 {
