@@ -76,7 +76,7 @@ EXAMPLES := $(EX_SRC:examples/%.c=$(BUILD)/examples/%)
 TESTS    := $(TEST_SRC:tests/%.c=$(BUILD)/tests/%)
 BENCHES  := $(BENCH_SRC:bench/%.c=$(BUILD)/bench/%)
 
-LIBS_CORE = $(PKG_PNG) -lm
+LIBS_CORE = $(PKG_PNG) $(PKG_INIH) -lm
 
 # Quiet by default; `make V=1` shows full command lines.
 ifeq ($(V),1)
@@ -157,6 +157,17 @@ $(BUILD)/gen/examples.txt: FORCE
 	@printf '%s\n' $(EX_SRC:examples/%.c=%) > $@.tmp
 	@cmp -s $@.tmp $@ || mv $@.tmp $@; rm -f $@.tmp
 FORCE:
+
+# ---- built-in scenes --------------------------------------------------------
+# scenes/*.ini are embedded into libiskra (isk_scene_builtin_*, `iskra list`):
+# the generated header changes only when a scene does, and then the object,
+# the libraries and the iskra tool are rebuilt.
+SCENE_FILES := $(wildcard scenes/*.ini)
+$(BUILD)/gen/scenes_gen.h: tools/embed_scenes.sh $(SCENE_FILES) FORCE
+	@mkdir -p $(dir $@)
+	$(Q)sh tools/embed_scenes.sh $@ $(SCENE_FILES)
+$(BUILD)/obj/src/scene/scene_builtin.o: $(BUILD)/gen/scenes_gen.h
+$(BUILD)/obj/src/scene/scene_builtin.o: ALL_CFLAGS += -I$(BUILD)/gen
 
 # ---- test / run / bench ----------------------------------------------------
 # `make test` first makes sure the Debian packages are there, then builds and

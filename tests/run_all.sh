@@ -37,6 +37,16 @@ for t in "$BUILD"/tests/test_*; do
         echo "ok   $name: $passing tests"
     fi
 done
+# The install check (make install + a pkg-config build) runs once, on the
+# normal build only: a sanitized libiskra would need sanitized users.
+if [ "$BUILD" = build ] && [ -z "${ISKRA_TEST_FILTER:-}" ]; then
+    if sh tests/install_check.sh >"$log" 2>&1; then
+        passed=$((passed + 1)); echo "ok   install_check"
+    else
+        failed=$((failed + 1)); bad_bins="$bad_bins install_check"
+        echo "---- install_check ----"; cat "$log"
+    fi
+fi
 [ -n "$bad_bins" ] && echo "failing binaries:$bad_bins"
 echo "$passed passed, $failed failed"
 [ "$failed" -eq 0 ]
