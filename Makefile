@@ -186,6 +186,40 @@ bench: deps
 	@$(MAKE) --no-print-directory benches
 	@set -e; for b in $(BENCHES); do echo "== $$b"; $$b; done
 
+# ---- fuzzing (clang + libFuzzer) -------------------------------------------
+# `make fuzz [FUZZ_TIME=600]`: the scene parser and runtime under libFuzzer
+# with ASan+UBSan, seeded with scenes/*.ini (the corpus grows in
+# $(BUILD)/fuzz/corpus); crashers are written to tests/fuzz/regressions/.
+FUZZ_TIME ?= 600
+FUZZ_CC   ?= clang
+FUZZ_DEPS := clang libclang-rt-14-dev
+FUZZ_BIN  := $(BUILD)/fuzz/fuzz_scene
+FUZZ_CFLAGS := $(CSTD) -g -O1 -ffp-contract=off -fno-math-errno -Iinclude -Isrc -I$(BUILD)/gen \
+               -fsanitize=fuzzer,address,undefined -fno-sanitize-recover=undefined
+
+.PHONY: fuzz-deps fuzz-run
+fuzz-deps:
+	@sh tools/deps.sh $(FUZZ_DEPS)
+
+fuzz: fuzz-deps
+	@$(MAKE) --no-print-directory fuzz-run
+
+$(FUZZ_BIN): tests/fuzz/fuzz_scene.c $(LIB_SRC) $(BUILD)/gen/scenes_gen.h
+	@mkdir -p $(dir $@)
+	$(call say,FUZZCC,$@)
+	$(Q)$(FUZZ_CC) $(FUZZ_CFLAGS) -o $@ tests/fuzz/fuzz_scene.c $(LIB_SRC) $(PKG_PNG) $(PKG_INIH) -lm
+
+fuzz-run: $(FUZZ_BIN)
+	@mkdir -p $(BUILD)/fuzz/corpus tests/fuzz/regressions
+	@cp scenes/*.ini $(BUILD)/fuzz/corpus/
+	@echo "fuzz: running for $(FUZZ_TIME) s (crashers go to tests/fuzz/regressions/)"
+	@set +e; $(FUZZ_BIN) -max_total_time=$(FUZZ_TIME) -max_len=8192 -timeout=10 -rss_limit_mb=2048 \
+	    -print_final_stats=1 -artifact_prefix=tests/fuzz/regressions/ $(BUILD)/fuzz/corpus \
+	    > $(BUILD)/fuzz/log 2>&1; rc=$$?; \
+	grep -E '^(Done|==[0-9]+==ERROR|SUMMARY)|Test unit written|^INFO: Seed' $(BUILD)/fuzz/log; \
+	echo "fuzz: $$(sed -n 's/^stat::number_of_executed_units: *//p' $(BUILD)/fuzz/log) executions," \
+	     "exit status $$rc (full log: $(BUILD)/fuzz/log)"; exit $$rc
+
 # ---- dependencies (Debian) -------------------------------------------------
 DEB_PKGS := build-essential pkg-config libpng-dev libsdl2-dev libcriterion-dev libinih-dev
 deps:

@@ -1,15 +1,36 @@
 #!/bin/sh
-# `make run`: renders every example into out/ and says where.  (With a
-# display, the scene player takes over once `iskra play` exists.)
-set -eu
+# `make run`: the main demo.  With a display (DISPLAY or WAYLAND_DISPLAY set
+# and a window that opens) it plays the campfire scene in a window; otherwise
+# it renders it to out/SCENE.png plus a short sequence in out/SCENE/
+# and says where.  Uses the best scene available: the campfire, else the
+# first built-in scene.
+set -u
 BUILD=${BUILD:-build}
-mkdir -p out
-n=0
-for e in "$BUILD"/examples/*; do
-    [ -x "$e" ] || continue
-    name=$(basename "$e")
-    "$e" --png "out/$name.png"
-    n=$((n + 1))
+ISKRA="$BUILD/bin/iskra"
+if [ ! -x "$ISKRA" ]; then
+    echo "run_demo: $ISKRA is missing (run make first)" >&2
+    exit 1
+fi
+scene=""
+for s in campfire fire_campfire; do
+    if "$ISKRA" list | grep -qx "$s"; then scene=$s; break; fi
 done
-echo "iskra: rendered $n example images into $(pwd)/out/"
-ls out/*.png | sed 's/^/  /'
+if [ -z "$scene" ]; then
+    scene=$("$ISKRA" list | grep -x 'fig16_regular' || "$ISKRA" list | head -n 1)
+fi
+if [ -z "$scene" ]; then
+    echo "run_demo: no built-in scene" >&2
+    exit 1
+fi
+if [ -n "${DISPLAY:-}${WAYLAND_DISPLAY:-}" ]; then
+    echo "iskra: playing '$scene' (space pause, R reset, +/- substeps, F12 screenshot, H overlay, Esc quit)"
+    if "$ISKRA" play "$scene"; then
+        exit 0
+    fi
+    echo "iskra: no window could be opened; rendering instead" >&2
+fi
+mkdir -p out
+"$ISKRA" render "$scene" --out "out/$scene.png" || exit 1
+"$ISKRA" render "$scene" --frames 60 --every 6 --out-dir "out/$scene" || exit 1
+echo "iskra: rendered the '$scene' scene to $(pwd)/out/$scene.png"
+echo "       and frames 0..60 (every 6th) to $(pwd)/out/$scene/"

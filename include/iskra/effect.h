@@ -264,6 +264,8 @@ typedef struct isk_effect_def {
     int click_emitter;         /* the emitter whose store receives it (-1: first) */
     int click_auto;            /* 1: perform the click once at create, at (click_x, click_y) */
     double click_x, click_y;   /* (the thesis's simulator scenes start with a click) */
+    long click_after;          /* the automatic click comes after this many frames (0: at
+                                  create); the thesis's scenes run one frame, then pause */
     long frames;               /* scene files: the frame `iskra render` shows by default (0) */
 } isk_effect_def;
 

@@ -52,6 +52,7 @@ typedef struct isk_particles {
     unsigned flags;
     isk_color default_color; /* given to new particles when color != NULL (yellow) */
     double default_size;     /* given to new particles when size != NULL (0.1) */
+    void *block;             /* the one allocation holding every array (internal) */
 } isk_particles;
 
 /* Empty store with room for `capacity` particles (0 is fine).  Errors:

@@ -98,6 +98,15 @@ double isk_sprite_alpha(isk_sprite_kind kind, double d, int size);
 /* Draws the sprite centred at (cx, cy) (see the snapping rule above). */
 void isk_draw_sprite(isk_canvas *c, const isk_sprite *s, double cx, double cy, isk_blend mode);
 
+/* Draws the sprite's mask in another colour: every covered pixel gets
+ * isk_blend_pixel_cov(dst, color, mask, mode), byte for byte, whatever
+ * colour the sprite was baked with.  So one baked mask per (kind, size)
+ * serves every colour of an over-life colour ramp (no bake per colour).
+ * With the sprite's own colour it gives exactly what isk_draw_sprite gives.
+ * Placement and clipping as isk_draw_sprite. */
+void isk_draw_sprite_tinted(isk_canvas *c, const isk_sprite *s, double cx, double cy, isk_color color,
+                            isk_blend mode);
+
 typedef struct isk_sprite_cache isk_sprite_cache;
 
 /* capacity: most sprites held at once, 1..ISK_SPRITE_CACHE_MAX. */

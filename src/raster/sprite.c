@@ -128,24 +128,80 @@ static inline uint8_t sat_add(uint32_t a, uint32_t b)
     return (uint8_t)(s > 255u ? 255u : s);
 }
 
-void isk_draw_sprite(isk_canvas *c, const isk_sprite *s, double cx, double cy, isk_blend mode)
+/* Where the sprite lands: mask phase, origin and the clipped row/column
+ * ranges.  0 when nothing is visible (or the input is NaN/Inf/huge). */
+typedef struct placement {
+    int p, x0, y0, jb, je, ib, ie;
+} placement;
+
+static int place(const isk_canvas *c, const isk_sprite *s, double cx, double cy, isk_blend mode, placement *pl)
 {
     if (!c || !c->pixels || !s || !s->mask[0])
-        return;
+        return 0;
     if (mode != ISK_BLEND_REPLACE && mode != ISK_BLEND_OVER && mode != ISK_BLEND_ADD)
-        return;
+        return 0;
     int S = s->size;
     double tx = twice_snapped(cx) - S, ty = twice_snapped(cy) - S; /* 2 * mask origin */
     double ox = floor(0.5 * tx), oy = floor(0.5 * ty);
     /* Rejects NaN, Inf and anything off-canvas before converting to int. */
     if (!(ox > -S && ox < c->width && oy > -S && oy < c->height))
+        return 0;
+    pl->x0 = (int)ox;
+    pl->y0 = (int)oy;
+    pl->p = (tx - 2.0 * ox != 0.0) + 2 * (ty - 2.0 * oy != 0.0);
+    pl->jb = pl->y0 < 0 ? -pl->y0 : 0;
+    pl->je = c->height - pl->y0 < S ? c->height - pl->y0 : S;
+    pl->ib = pl->x0 < 0 ? -pl->x0 : 0;
+    pl->ie = c->width - pl->x0 < S ? c->width - pl->x0 : S;
+    return 1;
+}
+
+void isk_draw_sprite_tinted(isk_canvas *c, const isk_sprite *s, double cx, double cy, isk_color color,
+                            isk_blend mode)
+{
+    placement pl;
+    if (!place(c, s, cx, cy, mode, &pl))
         return;
-    int x0 = (int)ox, y0 = (int)oy;
-    int p = (tx - 2.0 * ox != 0.0) + 2 * (ty - 2.0 * oy != 0.0);
-    const uint8_t *mask = s->mask[p];
-    const uint16_t *span = s->span[p];
-    int jb = y0 < 0 ? -y0 : 0, je = c->height - y0 < S ? c->height - y0 : S;
-    int ib = x0 < 0 ? -x0 : 0, ie = c->width - x0 < S ? c->width - x0 : S;
+    const int S = s->size;
+    const uint8_t *mask = s->mask[pl.p];
+    const uint16_t *span = s->span[pl.p];
+    const uint32_t ca = color.a;
+    for (int j = pl.jb; j < pl.je; j++) {
+        int b = span[2 * j] > pl.ib ? span[2 * j] : pl.ib;
+        int e = span[2 * j + 1] < pl.ie ? span[2 * j + 1] : pl.ie;
+        const uint8_t *mrow = mask + (size_t)j * (size_t)S;
+        uint8_t *d = isk_canvas_at(c, pl.x0 + b, pl.y0 + j);
+        if (mode == ISK_BLEND_ADD) {
+            /* isk_blend_pixel_cov's arithmetic, inlined: a' = div255(a*m),
+             * then dst += div255(c*a') per channel, saturating. */
+            for (int i = b; i < e; i++, d += 4) {
+                uint32_t m = mrow[i];
+                if (!m)
+                    continue;
+                uint32_t a = isk_div255(ca * m);
+                d[0] = sat_add(d[0], isk_div255((uint32_t)color.r * a));
+                d[1] = sat_add(d[1], isk_div255((uint32_t)color.g * a));
+                d[2] = sat_add(d[2], isk_div255((uint32_t)color.b * a));
+                d[3] = sat_add(d[3], a);
+            }
+        } else {
+            for (int i = b; i < e; i++, d += 4)
+                if (mrow[i])
+                    isk_blend_pixel_cov(d, color, mrow[i], mode);
+        }
+    }
+}
+
+void isk_draw_sprite(isk_canvas *c, const isk_sprite *s, double cx, double cy, isk_blend mode)
+{
+    placement pl;
+    if (!place(c, s, cx, cy, mode, &pl))
+        return;
+    int S = s->size;
+    int x0 = pl.x0, y0 = pl.y0;
+    const uint8_t *mask = s->mask[pl.p];
+    const uint16_t *span = s->span[pl.p];
+    int jb = pl.jb, je = pl.je, ib = pl.ib, ie = pl.ie;
     for (int j = jb; j < je; j++) {
         int b = span[2 * j] > ib ? span[2 * j] : ib;
         int e = span[2 * j + 1] < ie ? span[2 * j + 1] : ie;

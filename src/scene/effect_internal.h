@@ -19,6 +19,7 @@ typedef enum fx_stage_kind {
     FX_STAGE_RELEASE = 0,   /* scheduled multi-Coulomb batches / timed explosions */
     FX_STAGE_REMEMBER,      /* keep positions before moving (deflectors need the path) */
     FX_STAGE_DRIFT,         /* fast path: constant acceleration + semi-implicit Euler, no mass */
+    FX_STAGE_DRIFT_SLOW,    /* the same with the fire thesis's slowing before the position step */
     FX_STAGE_MOTION,        /* forces + integrator (isk_integrate_block) */
     FX_STAGE_SLOW,          /* v *= max(0, 1 - slowing*h) */
     FX_STAGE_OSCILLATE,     /* horizontal flame oscillation */

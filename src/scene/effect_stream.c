@@ -97,7 +97,7 @@ void fx_stream_reset(fx_group *g, double time)
  * applies only the external force). */
 static void constant_accel(const fx_group *g, double *ax, double *ay)
 {
-    if (g->has_stage[FX_STAGE_DRIFT]) {
+    if (g->has_stage[FX_STAGE_DRIFT] || g->has_stage[FX_STAGE_DRIFT_SLOW]) {
         *ax = g->ax;
         *ay = g->ay;
     } else {

@@ -10,26 +10,54 @@
 
 enum { ALIGN = 64 };
 
-static void *alloc_array(size_t n, size_t elem)
+/* All arrays live in one block, each 64-byte aligned and each shifted by a
+ * further 17 cache lines from the previous one.  Separate large allocations
+ * come back 8 MiB (+4 KiB) apart, all at the same offset within their
+ * 2 MiB regions; the stage loops then stream x[i], y[i], vx[i], vy[i] from
+ * addresses that collide in DRAM banks and cache sets, which measured 1.8x
+ * slower than the same loop over staggered arrays (bench_pipeline). */
+enum { STAGGER = 17 * ALIGN };
+
+static size_t round_up(size_t bytes)
 {
-    size_t bytes = n * elem;
-    bytes = (bytes + ALIGN - 1) / ALIGN * ALIGN;
-    if (bytes == 0)
-        bytes = ALIGN;
-    return aligned_alloc(ALIGN, bytes);
+    return (bytes + ALIGN - 1) / ALIGN * ALIGN;
 }
 
 static void free_arrays(isk_particles *p)
 {
-    free(p->x);
-    free(p->y);
-    free(p->vx);
-    free(p->vy);
-    free(p->m);
-    free(p->age);
-    free(p->life);
-    free(p->size);
-    free(p->color);
+    free(p->block);
+    p->block = NULL;
+}
+
+/* Lays the arrays of `cap` particles out in one block (NULL on failure). */
+static void *alloc_arrays(isk_particles *n, size_t cap, unsigned flags)
+{
+    double **d[7] = {&n->x, &n->y, &n->vx, &n->vy, &n->m, &n->age, &n->life};
+    size_t dbytes = round_up(cap * sizeof(double));
+    size_t cbytes = round_up(cap * sizeof(isk_color));
+    size_t total = 7 * (dbytes + STAGGER);
+    if (flags & ISK_PARTICLES_SIZE)
+        total += dbytes + STAGGER;
+    if (flags & ISK_PARTICLES_COLOR)
+        total += cbytes + STAGGER;
+    unsigned char *block = aligned_alloc(ALIGN, round_up(total + ALIGN));
+    if (!block)
+        return NULL;
+    size_t off = 0;
+    for (int k = 0; k < 7; k++) {
+        *d[k] = (double *)(void *)(block + off);
+        off += dbytes + STAGGER;
+    }
+    n->size = NULL;
+    n->color = NULL;
+    if (flags & ISK_PARTICLES_SIZE) {
+        n->size = (double *)(void *)(block + off);
+        off += dbytes + STAGGER;
+    }
+    if (flags & ISK_PARTICLES_COLOR)
+        n->color = (isk_color *)(void *)(block + off);
+    n->block = block;
+    return block;
 }
 
 isk_status isk_particles_init(isk_particles *p, size_t capacity, unsigned flags)
@@ -75,20 +103,8 @@ isk_status isk_particles_reserve(isk_particles *p, size_t capacity)
 
     /* Allocate everything first: on failure the store is untouched. */
     isk_particles n = *p;
-    n.x = alloc_array(cap, sizeof(double));
-    n.y = alloc_array(cap, sizeof(double));
-    n.vx = alloc_array(cap, sizeof(double));
-    n.vy = alloc_array(cap, sizeof(double));
-    n.m = alloc_array(cap, sizeof(double));
-    n.age = alloc_array(cap, sizeof(double));
-    n.life = alloc_array(cap, sizeof(double));
-    n.size = (p->flags & ISK_PARTICLES_SIZE) ? alloc_array(cap, sizeof(double)) : NULL;
-    n.color = (p->flags & ISK_PARTICLES_COLOR) ? alloc_array(cap, sizeof(isk_color)) : NULL;
-    if (!n.x || !n.y || !n.vx || !n.vy || !n.m || !n.age || !n.life ||
-        (!n.size && (p->flags & ISK_PARTICLES_SIZE)) || (!n.color && (p->flags & ISK_PARTICLES_COLOR))) {
-        free_arrays(&n);
+    if (!alloc_arrays(&n, cap, p->flags))
         return ISK_ERR_NOMEM;
-    }
     size_t c = p->count;
     if (c) {
         memcpy(n.x, p->x, c * sizeof(double));

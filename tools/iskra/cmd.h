@@ -13,5 +13,9 @@ typedef struct isk_command {
 } isk_command;
 
 int cmd_compare(int argc, char **argv);
+int cmd_list(int argc, char **argv);
+int cmd_describe(int argc, char **argv);
+int cmd_render(int argc, char **argv);
+int cmd_play(int argc, char **argv);
 
 #endif

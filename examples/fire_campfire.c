@@ -1,0 +1,367 @@
+/* A campfire: fire + sparks + smoke from stacked emitters (fire thesis
+ * figure 5.5, "fire, sparks and smoke", with iskra's extensions).
+ *
+ * Four stream emitters in one effect, drawn in this order:
+ *
+ *   smoke   overpaint soft sprites, grey, growing and fading out; weight 2.4
+ *           against gravity 1.0 (the fire thesis's buoyancy: weight > gravity,
+ *           so it rises), slowed, swaying; drawn first, behind the flames
+ *   flame   additive radial-gradient sprites (the thesis's glowing mode),
+ *           colour over life yellow -> orange -> red -> transparent, shrinking,
+ *           rising by buoyancy with a horizontal flame oscillation
+ *   core    the same, smaller, hotter and shorter-lived: the white-yellow heart
+ *   sparks  small additive sprites thrown up under gravity 3, bouncing off
+ *           the ground and the two logs (deflector segments, restitution 0.35)
+ *
+ * The logs, the ground and the glow under the fire are drawn by this program
+ * before the effect.  --wind X adds a sideways acceleration X (world units
+ * per s^2) to flames, smoke and sparks (the fire thesis's wind).
+ *
+ * Options: --png PATH, --window (animates), --seed N, --frames N (default
+ * 180: three seconds at 60 steps/s, the fire well developed), --wind X,
+ * --strip PATH (a PNG strip of the first second: 6 panels at t = 1/6 .. 1 s,
+ * half size, side by side).  Same seed and frame: the same bytes.
+ */
+#include <math.h>
+
+#include "example.h"
+#include "iskra/effect.h"
+
+#define W 480
+#define H 400
+#define PI 3.14159265358979323846
+
+typedef struct campfire {
+    isk_effect *fx;
+    isk_sprite glow;
+} campfire;
+
+static isk_status build(isk_effect **out, uint64_t seed, double wind)
+{
+    isk_effect_def d;
+    isk_effect_def_init(&d);
+    d.width = W;
+    d.height = H;
+    d.xmin = -3.0;
+    d.xmax = 3.0;
+    d.ymin = -0.5;
+    d.ymax = 4.5;
+    d.dt = 1.0 / 60.0;
+    d.seed = seed;
+    d.clear = 0; /* the program paints the background and the logs first */
+
+    int grav = isk_effect_def_add_force(&d, "gravity", ISK_FORCE_GRAVITY);
+    d.forces[grav].g = 1.0;
+    int wf = isk_effect_def_add_force(&d, "wind", ISK_FORCE_WIND);
+    d.forces[wf].accel = isk_vec2_make(wind, 0);
+    int ground = isk_effect_def_add_deflector(&d, "ground", isk_deflector_segment(-3.2, 0.0, 3.2, 0.0));
+    int log1 = isk_effect_def_add_deflector(&d, "log1", isk_deflector_segment(-1.1, 0.12, 0.9, 0.42));
+    int log2 = isk_effect_def_add_deflector(&d, "log2", isk_deflector_segment(1.1, 0.12, -0.9, 0.42));
+    for (int k = 0; k < d.ndeflectors; k++)
+        d.deflectors[k].restitution = 0.35;
+
+    /* Smoke: rises because its weight (2.4) beats gravity (1.0). */
+    isk_emitter_def *e = isk_effect_def_add_emitter(&d, "smoke");
+    e->source = ISK_SOURCE_STREAM;
+    e->pos = isk_vec2_make(0.0, 1.7);
+    e->shape = ISK_SPAWN_ELLIPSE;
+    e->shape_a = 0.3;
+    e->shape_b = 0.15;
+    e->velocity = ISK_LAUNCH_CONE;
+    e->angle = PI / 2;
+    e->spread = 0.6;
+    e->speed_min = 0.2;
+    e->speed_max = 0.5;
+    e->weight = 2.4;
+    e->slowing = 0.6;
+    e->rate = 18;
+    e->life = 3.0;
+    e->life_range = 1.5;
+    e->capacity = 200;
+    e->osc_omega_min = -1.6; /* both signs: half sway left first */
+    e->osc_omega_max = 1.6;
+    e->osc_amp_min = 0.1;
+    e->osc_amp_max = 0.3;
+    e->draw = ISK_DRAW_SPRITE;
+    e->sprite = ISK_SPRITE_SMOOTH;
+    e->size = 0.9;
+    e->color = isk_rgba(120, 112, 108, 255);
+    e->color_over_life.n = 2;
+    e->color_over_life.stops[0] = (isk_color_stop){0.0, isk_rgba(150, 120, 100, 255)};
+    e->color_over_life.stops[1] = (isk_color_stop){1.0, isk_rgba(70, 70, 75, 255)};
+    e->alpha_over_life.n = 3;
+    e->alpha_over_life.stops[0] = (isk_scalar_stop){0.0, 0.0};
+    e->alpha_over_life.stops[1] = (isk_scalar_stop){0.2, 0.32};
+    e->alpha_over_life.stops[2] = (isk_scalar_stop){1.0, 0.0};
+    e->size_over_life.n = 2;
+    e->size_over_life.stops[0] = (isk_scalar_stop){0.0, 0.6};
+    e->size_over_life.stops[1] = (isk_scalar_stop){1.0, 2.4};
+    e->blend = ISK_BLEND_OVER;
+    e->order = 0;
+    isk_emitter_use_force(e, grav);
+    isk_emitter_use_force(e, wf);
+
+    /* Flame: additive gradient sprites with a colour ramp. */
+    e = isk_effect_def_add_emitter(&d, "flame");
+    e->source = ISK_SOURCE_STREAM;
+    e->pos = isk_vec2_make(0.0, 0.3);
+    e->shape = ISK_SPAWN_ELLIPSE;
+    e->shape_a = 0.42;
+    e->shape_b = 0.08;
+    e->velocity = ISK_LAUNCH_CONE;
+    e->angle = PI / 2;
+    e->spread = 0.35;
+    e->speed_min = 1.2;
+    e->speed_max = 2.2;
+    e->weight = 3.5;   /* hot gas: buoyancy, no gravity */
+    e->slowing = 0.9;
+    e->rate = 420;
+    e->life = 0.4;
+    e->life_range = 0.8;
+    e->capacity = 600;
+    e->osc_omega_min = -9.0;
+    e->osc_omega_max = 9.0;
+    e->osc_amp_min = 0.08;
+    e->osc_amp_max = 0.22;
+    e->osc_decay = 0.3;
+    e->draw = ISK_DRAW_SPRITE;
+    e->sprite = ISK_SPRITE_LINEAR;
+    e->size = 0.5;
+    e->color_over_life.n = 4;
+    e->color_over_life.stops[0] = (isk_color_stop){0.0, isk_rgba(255, 220, 110, 60)};
+    e->color_over_life.stops[1] = (isk_color_stop){0.3, isk_rgba(255, 140, 30, 60)};
+    e->color_over_life.stops[2] = (isk_color_stop){0.65, isk_rgba(220, 50, 10, 45)};
+    e->color_over_life.stops[3] = (isk_color_stop){1.0, isk_rgba(90, 0, 0, 0)};
+    e->size_over_life.n = 2;
+    e->size_over_life.stops[0] = (isk_scalar_stop){0.0, 1.0};
+    e->size_over_life.stops[1] = (isk_scalar_stop){1.0, 0.3};
+    e->blend = ISK_BLEND_ADD;
+    e->order = 1;
+    isk_emitter_use_force(e, wf);
+
+    /* Core: the hot heart of the flame. */
+    e = isk_effect_def_add_emitter(&d, "core");
+    e->source = ISK_SOURCE_STREAM;
+    e->pos = isk_vec2_make(0.0, 0.3);
+    e->shape = ISK_SPAWN_ELLIPSE;
+    e->shape_a = 0.35;
+    e->shape_b = 0.08;
+    e->velocity = ISK_LAUNCH_CONE;
+    e->angle = PI / 2;
+    e->spread = 0.25;
+    e->speed_min = 0.8;
+    e->speed_max = 1.3;
+    e->weight = 2.0;
+    e->slowing = 0.8;
+    e->rate = 70;
+    e->life = 0.3;
+    e->life_range = 0.35;
+    e->capacity = 300;
+    e->osc_omega_min = -14.0;
+    e->osc_omega_max = 14.0;
+    e->osc_amp_min = 0.02;
+    e->osc_amp_max = 0.06;
+    e->draw = ISK_DRAW_SPRITE;
+    e->sprite = ISK_SPRITE_LINEAR;
+    e->size = 0.32;
+    e->color_over_life.n = 3;
+    e->color_over_life.stops[0] = (isk_color_stop){0.0, isk_rgba(255, 250, 210, 70)};
+    e->color_over_life.stops[1] = (isk_color_stop){0.5, isk_rgba(255, 200, 80, 60)};
+    e->color_over_life.stops[2] = (isk_color_stop){1.0, isk_rgba(255, 110, 20, 0)};
+    e->size_over_life.n = 2;
+    e->size_over_life.stops[0] = (isk_scalar_stop){0.0, 1.0};
+    e->size_over_life.stops[1] = (isk_scalar_stop){1.0, 0.5};
+    e->blend = ISK_BLEND_ADD;
+    e->order = 2;
+    isk_emitter_use_force(e, wf);
+
+    /* Sparks: thrown up, pulled down by gravity 3, bouncing off the logs and
+     * the ground. */
+    e = isk_effect_def_add_emitter(&d, "sparks");
+    e->source = ISK_SOURCE_STREAM;
+    e->pos = isk_vec2_make(0.0, 0.55);
+    e->shape = ISK_SPAWN_DISC;
+    e->shape_a = 0.3;
+    e->velocity = ISK_LAUNCH_CONE;
+    e->angle = PI / 2;
+    e->spread = 1.1;
+    e->speed_min = 1.8;
+    e->speed_max = 3.6;
+    e->gravity_mult = 3.0;
+    e->slowing = 0.25;
+    e->rate = 22;
+    e->life = 1.0;
+    e->life_range = 1.6;
+    e->capacity = 200;
+    e->osc_omega_min = -9.0;
+    e->osc_omega_max = 9.0;
+    e->osc_amp_min = 0.02;
+    e->osc_amp_max = 0.08;
+    e->draw = ISK_DRAW_SPRITE;
+    e->sprite = ISK_SPRITE_LINEAR;
+    e->size = 0.09;
+    e->color_over_life.n = 3;
+    e->color_over_life.stops[0] = (isk_color_stop){0.0, isk_rgba(255, 245, 200, 255)};
+    e->color_over_life.stops[1] = (isk_color_stop){0.5, isk_rgba(255, 170, 50, 255)};
+    e->color_over_life.stops[2] = (isk_color_stop){1.0, isk_rgba(220, 50, 0, 0)};
+    e->blend = ISK_BLEND_ADD;
+    e->order = 3;
+    isk_emitter_use_force(e, grav);
+    isk_emitter_use_force(e, wf);
+    isk_emitter_use_deflector(e, ground);
+    isk_emitter_use_deflector(e, log1);
+    isk_emitter_use_deflector(e, log2);
+
+    isk_error err;
+    isk_status s = isk_effect_create(out, &d, &err);
+    if (s != ISK_OK)
+        fprintf(stderr, "fire_campfire: %s\n", err.message);
+    isk_effect_def_free(&d);
+    return s;
+}
+
+/* A log: a thick segment as two filled triangles, with a darker end cap. */
+static void log_quad(isk_canvas *c, const isk_view *v, double x0, double y0, double x1, double y1, double r,
+                     isk_color col)
+{
+    double dx = x1 - x0, dy = y1 - y0, L = hypot(dx, dy);
+    double nx = -dy / L * r, ny = dx / L * r;
+    double P[4][2];
+    isk_view_to_screen(v, x0 + nx, y0 + ny, &P[0][0], &P[0][1]);
+    isk_view_to_screen(v, x1 + nx, y1 + ny, &P[1][0], &P[1][1]);
+    isk_view_to_screen(v, x1 - nx, y1 - ny, &P[2][0], &P[2][1]);
+    isk_view_to_screen(v, x0 - nx, y0 - ny, &P[3][0], &P[3][1]);
+    isk_fill_triangle(c, P[0][0], P[0][1], P[1][0], P[1][1], P[2][0], P[2][1], col, ISK_BLEND_OVER);
+    isk_fill_triangle(c, P[0][0], P[0][1], P[2][0], P[2][1], P[3][0], P[3][1], col, ISK_BLEND_OVER);
+    double ex, ey;
+    for (int k = 0; k < 2; k++) {
+        isk_view_to_screen(v, k ? x1 : x0, k ? y1 : y0, &ex, &ey);
+        isk_fill_circle_aa(c, ex, ey, r * fabs(v->sx), isk_rgba(90, 60, 40, 255), ISK_BLEND_OVER);
+        isk_fill_circle_aa(c, ex, ey, 0.55 * r * fabs(v->sx), isk_rgba(60, 38, 25, 255), ISK_BLEND_OVER);
+    }
+}
+
+/* Background, ground, glow and logs; then the effect. */
+static void draw(campfire *cf, isk_canvas *c)
+{
+    const isk_view *v = isk_effect_view(cf->fx);
+    isk_canvas_fill(c, isk_rgba(10, 10, 22, 255));
+    double gx, gy;
+    isk_view_to_screen(v, 0, 0, &gx, &gy);
+    isk_fill_rect(c, 0, (int)gy, c->width, c->height - (int)gy, isk_rgba(24, 18, 14, 255), ISK_BLEND_OVER);
+    isk_draw_sprite_tinted(c, &cf->glow, gx, gy - 20, isk_rgba(255, 110, 30, 90), ISK_BLEND_ADD);
+    log_quad(c, v, -1.1, 0.12, 0.9, 0.42, 0.12, isk_rgba(70, 45, 30, 255));
+    log_quad(c, v, 1.1, 0.12, -0.9, 0.42, 0.12, isk_rgba(82, 54, 36, 255));
+    isk_effect_render(cf->fx, c);
+}
+
+static void frame(void *state, isk_canvas *c)
+{
+    campfire *cf = state;
+    isk_effect_step(cf->fx);
+    draw(cf, c);
+}
+
+/* 2x2 box filter, rounded: (a+b+c+d+2)/4 per channel. */
+static void half_size(const isk_canvas *src, isk_canvas *dst)
+{
+    for (int y = 0; y < dst->height; y++)
+        for (int x = 0; x < dst->width; x++) {
+            uint8_t *o = isk_canvas_at(dst, x, y);
+            for (int k = 0; k < 4; k++) {
+                unsigned s = isk_canvas_at(src, 2 * x, 2 * y)[k] + isk_canvas_at(src, 2 * x + 1, 2 * y)[k] +
+                             isk_canvas_at(src, 2 * x, 2 * y + 1)[k] + isk_canvas_at(src, 2 * x + 1, 2 * y + 1)[k];
+                o[k] = (uint8_t)((s + 2) / 4);
+            }
+        }
+}
+
+#define STRIP_PANELS 6
+#define STRIP_GAP 4
+
+static int strip(campfire *cf, const char *path, isk_canvas *c)
+{
+    isk_canvas out, panel;
+    const int pw = W / 2, ph = H / 2;
+    if (isk_canvas_init(&out, STRIP_PANELS * pw + (STRIP_PANELS - 1) * STRIP_GAP, ph) != ISK_OK)
+        return 1;
+    isk_canvas_fill(&out, isk_rgba(60, 60, 60, 255));
+    long f = 0;
+    for (int k = 1; k <= STRIP_PANELS; k++) {
+        long target = 60L * k / STRIP_PANELS; /* frames 10, 20, ..., 60 */
+        while (f < target) {
+            isk_effect_step(cf->fx);
+            f++;
+        }
+        draw(cf, c);
+        isk_canvas_view(&panel, &out, (k - 1) * (pw + STRIP_GAP), 0, pw, ph);
+        half_size(c, &panel);
+        char label[32];
+        snprintf(label, sizeof label, "t=%.2fs", (double)f / 60.0);
+        isk_draw_text(&panel, 4, 4, label, 1, isk_rgba(200, 200, 200, 255), ISK_BLEND_OVER);
+    }
+    isk_error err;
+    int rc = 0;
+    if (isk_png_write(&out, path, &err) != ISK_OK) {
+        fprintf(stderr, "fire_campfire: %s\n", err.message);
+        rc = 1;
+    }
+    isk_canvas_free(&out);
+    return rc;
+}
+
+int main(int argc, char **argv)
+{
+    /* Our own options first; the rest go to the shared parser. */
+    double wind = 0.0;
+    const char *strip_path = NULL;
+    int other_output = 0;
+    char *rest[64];
+    int nrest = 0;
+    for (int i = 0; i < argc && nrest < 64; i++) {
+        if (i > 0 && !strcmp(argv[i], "--wind") && i + 1 < argc) {
+            char *end;
+            wind = strtod(argv[i + 1], &end);
+            if (*end || !isfinite(wind) || fabs(wind) > 100) {
+                fprintf(stderr, "fire_campfire: --wind expects a number in [-100, 100], got '%s'\n", argv[i + 1]);
+                return 2;
+            }
+            i++;
+        } else if (i > 0 && !strcmp(argv[i], "--strip") && i + 1 < argc) {
+            strip_path = argv[++i];
+        } else {
+            if (i > 0 && (!strcmp(argv[i], "--png") || !strcmp(argv[i], "--window")))
+                other_output = 1;
+            rest[nrest++] = argv[i];
+        }
+    }
+    example_opts o = {.seed = 1, .frames = 180};
+    if (strip_path && !other_output) {
+        /* Only the strip: parse for --seed (and errors), without the default output. */
+        rest[nrest++] = "--png";
+        rest[nrest++] = "/dev/null";
+    }
+    example_parse(nrest, rest, &o, EX_SEED | EX_FRAMES, "fire_campfire",
+                  "a campfire: additive flames, bouncing sparks, rising smoke [--wind X] [--strip PATH]");
+
+    campfire cf;
+    isk_canvas c;
+    if (build(&cf.fx, o.seed, wind) != ISK_OK)
+        return 1;
+    if (isk_sprite_init(&cf.glow, ISK_SPRITE_SMOOTH, 256, ISK_WHITE) != ISK_OK ||
+        isk_canvas_init(&c, W, H) != ISK_OK)
+        return 1;
+    int rc = 0;
+    if (strip_path) {
+        rc = strip(&cf, strip_path, &c);
+        isk_effect_reset(cf.fx);
+    }
+    if (!rc && !(strip_path && !other_output)) {
+        draw(&cf, &c);
+        rc = example_animate(&c, &o, &cf, frame);
+    }
+    isk_canvas_free(&c);
+    isk_sprite_free(&cf.glow);
+    isk_effect_destroy(cf.fx);
+    return rc;
+}

@@ -1,0 +1,86 @@
+/* iskra/presets.h — ready-made stream emitters: fire, smoke, sparks,
+ * fountain, snow and explosion.
+ *
+ * Each function appends one emitter to an effect definition (and, when it
+ * needs gravity, one GRAVITY force named "<name>_gravity" that only this
+ * emitter uses, created or updated), fills every field the effect needs and
+ * returns the emitter's index, or -1 (NULL definition, non-finite position,
+ * scale not a finite number > 0, or no room for another emitter/force).
+ * Adjust the returned emitter freely afterwards:
+ *
+ *     isk_effect_def d;
+ *     isk_effect_def_init(&d);
+ *     int f = isk_preset_fire(&d, NULL, isk_vec2_make(0, -6), 3.0);
+ *     int s = isk_preset_smoke(&d, NULL, isk_vec2_make(0, -4), 3.0);
+ *     d.emitters[s].order = -1;           // smoke behind the flame
+ *     isk_effect *fx; isk_error err;
+ *     isk_effect_create(&fx, &d, &err);
+ *
+ * Units.  The numbers start from cocos2d-x's built-in presets
+ * (CCParticleExamples.cpp: ParticleFire, ParticleSmoke, ParticleFireworks,
+ * ParticleSnow, ParticleExplosion), which are in points (screen pixels of a
+ * 480x320 design) and seconds.  Here lengths, speeds and accelerations are
+ * multiplied by scale/100: `scale` is the number of world units per 100
+ * cocos2d points, so scale = 1 makes the cocos fire 0.8 units wide and about
+ * 1.8 high, and the cocos screen 4.8 x 3.2 units.  Times (life, rates) are
+ * kept.  `pos` is the emitter's centre (snow: the middle of the line it
+ * falls from).  `name` NULL gives the preset's own name ("fire", ...).
+ *
+ * What cocos2d has and iskra's emitters do not (yet), and what was done:
+ * per-particle size and colour variance (the mean is used), start -> end
+ * size (constant sizes in every cocos preset used here anyway), radial and
+ * tangential acceleration (snow's +-1 jitter is replaced by a gentle
+ * oscillation), textures (iskra's radial-gradient sprites instead), and a
+ * duration (the explosion's 0.1 s of emission is one burst).  cocos2d
+ * colour ramps are two stops, start -> end; presets add what reads better
+ * where noted (an alpha fade on smoke).  Rates and pool sizes are cocos's:
+ * rate = total/life, capacity = total, so a full pool drops spawns (counted
+ * by isk_effect_dropped) exactly where cocos2d stops emitting.
+ *
+ * Presets use the sound modes (fractional rate accumulator, back-dated
+ * births, the runtime's slowing order); switch the emitter's rate_mode,
+ * birth, osc_faithful, slow_faithful for the fire thesis's behaviour.
+ * docs/fire.md has the table of every number.
+ */
+#ifndef ISKRA_PRESETS_H
+#define ISKRA_PRESETS_H
+
+#include "iskra/effect.h"
+
+/* cocos2d ParticleFire: additive, orange (194, 64, 31) fading to black over
+ * life 3 +- 0.25 s, 250 particles at 83.3/s from a 0.8 x 0.4 rectangle,
+ * speed 0.6 +- 0.2 straight up +- 10 degrees, size 0.54, no gravity.  (Times
+ * scale/100 for lengths, as above.) */
+int isk_preset_fire(isk_effect_def *d, const char *name, isk_vec2 pos, double scale);
+
+/* cocos2d ParticleSmoke: overpaint, grey (204) darkening to black over life
+ * 4 +- 1 s, 200 particles at 50/s from a 0.4-wide line, speed 0.25 +- 0.1 up
+ * +- 5 degrees, size 0.6; plus an alpha fade 0.5 -> 0 (cocos2d's smoke
+ * texture is translucent; iskra's sprites are not). */
+int isk_preset_smoke(isk_effect_def *d, const char *name, isk_vec2 pos, double scale);
+
+/* Sparks (no cocos2d preset; modelled on ParticleFireworks with hot
+ * colours): additive, white-yellow -> orange -> dark red fading out over
+ * life 1 +- 0.4 s, 60/s from a disc of radius 0.15, speed 1.5..3 up +- 35
+ * degrees, gravity 3, size 0.1, capacity 200. */
+int isk_preset_sparks(isk_effect_def *d, const char *name, isk_vec2 pos, double scale);
+
+/* cocos2d ParticleFireworks (a fountain): 1500 particles at 428.6/s from a
+ * point, speed 1.8 +- 0.5 up +- 20 degrees, gravity 0.9, life 3.5 +- 1 s,
+ * size 0.08, overpaint; cocos2d's random grey-to-white colours (0.5 +- 0.5)
+ * become a water blue fading to 20 % alpha (cocos2d's end alpha 0.2). */
+int isk_preset_fountain(isk_effect_def *d, const char *name, isk_vec2 pos, double scale);
+
+/* cocos2d ParticleSnow: 700 particles at 10/s from a line 4.8 wide (the
+ * cocos screen), speed 0.05 +- 0.01 down +- 5 degrees, gravity 0.01, life
+ * 45 +- 15 s, size 0.1, white fading to transparent, overpaint; a slow
+ * sideways sway (amplitude 0.05..0.15, 0.5..1.5 rad/s) stands in for
+ * cocos2d's +-1 radial/tangential jitter. */
+int isk_preset_snow(isk_effect_def *d, const char *name, isk_vec2 pos, double scale);
+
+/* cocos2d ParticleExplosion: one burst of 700 at t = 0 in every direction,
+ * speed 0.7 +- 0.4, life 5 +- 2 s, size 0.15, red (178, 25, 51) fading to
+ * a transparent grey (128), overpaint, no gravity. */
+int isk_preset_explosion(isk_effect_def *d, const char *name, isk_vec2 pos, double scale);
+
+#endif

@@ -1,0 +1,61 @@
+/* iskra/scene.h — scene files: INI text that becomes an isk_effect_def.
+ *
+ * A scene file describes a whole effect (canvas, view, time step, forces,
+ * walls, deflectors, emitters, static drawings, the click action) in a
+ * hand-writable INI format; docs/scene-format.md documents every section and
+ * key with its units, default and valid range.  Parsing fills an
+ * isk_effect_def (iskra/effect.h); isk_effect_create() then validates and
+ * compiles it:
+ *
+ *     isk_effect_def d;
+ *     isk_error err;
+ *     if (isk_scene_load(&d, "scenes/fig12_gravity.ini", &err) != ISK_OK) {
+ *         fprintf(stderr, "%s\n", err.message);  // "scenes/x.ini:12: [emitter smoke] rate: ..."
+ *         return 2;
+ *     }
+ *     isk_effect *fx;
+ *     isk_status s = isk_effect_create(&fx, &d, &err);
+ *     isk_effect_def_free(&d);
+ *
+ * Errors are "NAME:LINE: message" (NAME is the path, the built-in scene's
+ * name or the name passed to isk_scene_load_string), naming the section and
+ * key and what was expected, with a did-you-mean for misspelt sections, keys,
+ * enum values and references.  Unknown sections and keys, duplicate keys and
+ * sections, and references to undefined forces/deflectors/emitters are
+ * errors.  Input is bounded: ISK_INI_MAX_BYTES of text, lines of at most 199
+ * characters, and counts capped by the ISK_EFFECT_MAX_* limits of effect.h.
+ *
+ * On success *out holds the definition (free with isk_effect_def_free).  On
+ * failure *out is an initialised, empty definition (freeing it is harmless)
+ * and err->status is ISK_ERR_FORMAT (bad scene), ISK_ERR_IO (cannot read the
+ * file), ISK_ERR_SIZE (file too large) or ISK_ERR_NOMEM.
+ *
+ * Built-in scenes are the shipped scenes/ *.ini files, embedded into the
+ * library at build time; they are looked up by name (file name without
+ * ".ini", e.g. "fig12_gravity").
+ */
+#ifndef ISKRA_SCENE_H
+#define ISKRA_SCENE_H
+
+#include "iskra/effect.h"
+#include "iskra/status.h"
+
+/* Parses a scene file. */
+isk_status isk_scene_load_file(isk_effect_def *out, const char *path, isk_error *err);
+
+/* Parses NUL-terminated scene text; `name` (may be NULL: "<string>") is used
+ * in error messages. */
+isk_status isk_scene_load_string(isk_effect_def *out, const char *text, const char *name,
+                                 isk_error *err);
+
+/* A file path if such a file exists, otherwise a built-in scene's name.
+ * Neither: ISK_ERR_IO with "NAME: no such file or built-in scene". */
+isk_status isk_scene_load(isk_effect_def *out, const char *name_or_path, isk_error *err);
+
+/* The built-in scenes, sorted by name: count, name (NULL when out of range)
+ * and scene text (NULL when out of range or unknown). */
+int isk_scene_builtin_count(void);
+const char *isk_scene_builtin_name(int i);
+const char *isk_scene_builtin_text(const char *name);
+
+#endif

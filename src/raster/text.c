@@ -1,0 +1,127 @@
+/* src/raster/text.c — measuring and drawing strings in the built-in font.
+ *
+ * Layout (see iskra/text.h): every byte except '\n' advances the pen by one
+ * ISK_FONT_CELL_W x ISK_FONT_CELL_H cell (times scale); the glyph's 5x8 box
+ * sits at the cell's top-left and the last column and row of the cell are
+ * spacing.  '\n' moves the pen to the start x of the next line.
+ *
+ *     int w = isk_text_width("FPS: 60", 2), h = isk_text_height("FPS: 60", 2);
+ *     isk_draw_text(&c, 15, 30, "FPS: 60", 2, ISK_WHITE, ISK_BLEND_OVER);
+ *
+ * All position arithmetic is done in 64 bits and the pen stops as soon as it
+ * leaves the canvas to the right or below, so any int x, y and scale (up to
+ * INT_MAX) is safe: the pen never runs further than one cell past the canvas.
+ * Each canvas pixel is blended at most once per call (cells never overlap),
+ * so translucent colours give an even tint.
+ */
+#include "iskra/text.h"
+
+#include <limits.h>
+#include <stddef.h>
+#include <stdint.h>
+
+/* n * unit, saturated at INT_MAX (unit > 0). */
+static int saturated_product(unsigned long long n, long long unit)
+{
+    if (n == 0u)
+        return 0;
+    if (n > (unsigned long long)(INT_MAX / unit))
+        return INT_MAX;
+    return (int)((long long)n * unit);
+}
+
+int isk_text_width(const char *s, int scale)
+{
+    if (!s || scale < 1)
+        return 0;
+    unsigned long long widest = 0, cur = 0;
+    for (; *s; s++) {
+        if (*s == '\n') {
+            cur = 0;
+        } else if (++cur > widest) {
+            widest = cur;
+        }
+    }
+    return saturated_product(widest, (long long)ISK_FONT_CELL_W * scale);
+}
+
+int isk_text_height(const char *s, int scale)
+{
+    if (!s || scale < 1 || !*s)
+        return 0;
+    unsigned long long lines = 1;
+    for (; *s; s++)
+        if (*s == '\n')
+            lines++;
+    return saturated_product(lines, (long long)ISK_FONT_CELL_H * scale);
+}
+
+/* Blends the rectangle [x0, x0+w) x [y0, y0+h), clipped to the canvas. */
+static void fill_block(isk_canvas *c, long long x0, long long y0, long long w, long long h,
+                       isk_color color, isk_blend mode)
+{
+    long long x1 = x0 + w, y1 = y0 + h;
+    if (x0 < 0) x0 = 0;
+    if (y0 < 0) y0 = 0;
+    if (x1 > c->width) x1 = c->width;
+    if (y1 > c->height) y1 = c->height;
+    for (long long y = y0; y < y1; y++) {
+        uint8_t *p = isk_canvas_at(c, (int)x0, (int)y);
+        for (long long x = x0; x < x1; x++, p += 4)
+            isk_blend_pixel(p, color, mode);
+    }
+}
+
+/* Draws one glyph whose box has its top-left at (x, y). */
+static void draw_glyph(isk_canvas *c, long long x, long long y, const uint8_t *rows,
+                       long long scale, isk_color color, isk_blend mode)
+{
+    for (int r = 0; r < ISK_FONT_GLYPH_H; r++) {
+        long long py = y + r * scale;
+        if (py >= c->height || py + scale <= 0 || rows[r] == 0u)
+            continue;
+        for (int col = 0; col < ISK_FONT_GLYPH_W; col++) {
+            if (!(rows[r] & (0x10u >> col)))
+                continue;
+            /* Merge a horizontal run of ink into one block: fewer clip
+             * computations at large scales, same pixels. */
+            int end = col + 1;
+            while (end < ISK_FONT_GLYPH_W && (rows[r] & (0x10u >> end)))
+                end++;
+            fill_block(c, x + col * scale, py, (end - col) * scale, scale, color, mode);
+            col = end;
+        }
+    }
+}
+
+void isk_draw_text(isk_canvas *c, int x, int y, const char *s, int scale,
+                   isk_color color, isk_blend mode)
+{
+    if (!c || !c->pixels || c->width <= 0 || c->height <= 0 || !s || scale < 1)
+        return;
+    if (!isk_blend_name(mode))
+        return; /* unknown mode: draw nothing rather than guess */
+    const long long k = scale;
+    const long long cell_w = ISK_FONT_CELL_W * k, cell_h = ISK_FONT_CELL_H * k;
+    long long pen_x = x, pen_y = y;
+    while (*s) {
+        if (pen_y >= c->height)
+            return; /* this and every later line is below the canvas */
+        int line_visible = pen_y + cell_h > 0;
+        for (; *s && *s != '\n'; s++) {
+            /* Past the right edge: skip the rest of the line unread. */
+            if (!line_visible || pen_x >= c->width)
+                continue;
+            if (pen_x + cell_w > 0) {
+                unsigned char ch = (unsigned char)*s;
+                draw_glyph(c, pen_x, pen_y, isk_font_glyph(ch), k, color, mode);
+            }
+            pen_x += cell_w;
+        }
+        if (*s == '\n') {
+            s++;
+            pen_x = x;
+            pen_y += cell_h;
+        }
+    }
+}

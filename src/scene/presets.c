@@ -1,0 +1,222 @@
+/* Ready-made emitters (iskra/presets.h): cocos2d-x's preset numbers in
+ * world units.  Every number is documented in the header and docs/fire.md. */
+#include "iskra/presets.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+
+#define DEG (3.14159265358979323846 / 180.0)
+
+/* The common part: a stream emitter with sprites; NULL on bad input. */
+static isk_emitter_def *start(isk_effect_def *d, const char *name, const char *dflt, isk_vec2 pos, double scale,
+                              int *index)
+{
+    if (!d || !isfinite(pos.x) || !isfinite(pos.y) || !isfinite(scale) || !(scale > 0))
+        return NULL;
+    isk_emitter_def *e = isk_effect_def_add_emitter(d, name ? name : dflt);
+    if (!e)
+        return NULL;
+    *index = d->nemitters - 1;
+    e->source = ISK_SOURCE_STREAM;
+    e->pos = pos;
+    e->draw = ISK_DRAW_SPRITE;
+    e->sprite = ISK_SPRITE_LINEAR;
+    e->velocity = ISK_LAUNCH_CONE;
+    return e;
+}
+
+/* Adds (or updates) the emitter's own gravity force "<name>_gravity". */
+static int own_gravity(isk_effect_def *d, int index, double g)
+{
+    char fname[ISK_NAME_MAX];
+    snprintf(fname, sizeof fname, "%.22s_gravity", d->emitters[index].name);
+    int f = isk_effect_def_find_force(d, fname);
+    if (f < 0)
+        f = isk_effect_def_add_force(d, fname, ISK_FORCE_GRAVITY);
+    if (f < 0)
+        return 0;
+    d->forces[f].g = g;
+    return isk_emitter_use_force(&d->emitters[index], f) == ISK_OK;
+}
+
+/* Removes the emitter just added (when its force could not be added). */
+static int undo(isk_effect_def *d)
+{
+    d->nemitters--;
+    return -1;
+}
+
+static void ramp2(isk_color_ramp *r, isk_color a, isk_color b)
+{
+    r->n = 2;
+    r->stops[0].t = 0.0;
+    r->stops[0].color = a;
+    r->stops[1].t = 1.0;
+    r->stops[1].color = b;
+}
+
+int isk_preset_fire(isk_effect_def *d, const char *name, isk_vec2 pos, double scale)
+{
+    int i;
+    isk_emitter_def *e = start(d, name, "fire", pos, scale, &i);
+    if (!e)
+        return -1;
+    const double u = scale / 100.0; /* world units per cocos2d point */
+    e->shape = ISK_SPAWN_RECT;      /* posVar (40, 20) */
+    e->shape_a = 40 * u;
+    e->shape_b = 20 * u;
+    e->angle = 90 * DEG;            /* 90 +- 10 degrees */
+    e->spread = 20 * DEG;
+    e->speed_min = 40 * u;          /* 60 +- 20 */
+    e->speed_max = 80 * u;
+    e->life = 2.75;                 /* 3 +- 0.25 s */
+    e->life_range = 0.5;
+    e->capacity = 250;              /* totalParticles */
+    e->rate = 250.0 / 3.0;          /* total / life */
+    e->size = 54 * u;               /* 54 (+-10) */
+    e->color = isk_rgba(194, 64, 31, 255);  /* (0.76, 0.25, 0.12, 1) */
+    ramp2(&e->color_over_life, e->color, isk_rgba(0, 0, 0, 255));
+    e->blend = ISK_BLEND_ADD;
+    return i;
+}
+
+int isk_preset_smoke(isk_effect_def *d, const char *name, isk_vec2 pos, double scale)
+{
+    int i;
+    isk_emitter_def *e = start(d, name, "smoke", pos, scale, &i);
+    if (!e)
+        return -1;
+    const double u = scale / 100.0;
+    e->shape = ISK_SPAWN_RECT;      /* posVar (20, 0) */
+    e->shape_a = 20 * u;
+    e->shape_b = 0;
+    e->angle = 90 * DEG;            /* 90 +- 5 */
+    e->spread = 10 * DEG;
+    e->speed_min = 15 * u;          /* 25 +- 10 */
+    e->speed_max = 35 * u;
+    e->life = 3.0;                  /* 4 +- 1 */
+    e->life_range = 2.0;
+    e->capacity = 200;
+    e->rate = 200.0 / 4.0;
+    e->size = 60 * u;
+    e->sprite = ISK_SPRITE_SMOOTH;
+    e->color = isk_rgba(204, 204, 204, 255); /* 0.8 grey -> black */
+    ramp2(&e->color_over_life, e->color, isk_rgba(0, 0, 0, 255));
+    e->alpha_over_life.n = 2;       /* ours: cocos2d's texture is translucent */
+    e->alpha_over_life.stops[0] = (isk_scalar_stop){0.0, 0.5};
+    e->alpha_over_life.stops[1] = (isk_scalar_stop){1.0, 0.0};
+    e->blend = ISK_BLEND_OVER;
+    return i;
+}
+
+int isk_preset_sparks(isk_effect_def *d, const char *name, isk_vec2 pos, double scale)
+{
+    int i;
+    isk_emitter_def *e = start(d, name, "sparks", pos, scale, &i);
+    if (!e)
+        return -1;
+    const double u = scale / 100.0;
+    e->shape = ISK_SPAWN_DISC;
+    e->shape_a = 15 * u;
+    e->angle = 90 * DEG;
+    e->spread = 70 * DEG;
+    e->speed_min = 150 * u;
+    e->speed_max = 300 * u;
+    e->life = 0.6;
+    e->life_range = 0.8;
+    e->capacity = 200;
+    e->rate = 60;
+    e->size = 10 * u;
+    e->color = isk_rgba(255, 240, 190, 255);
+    e->color_over_life.n = 3;
+    e->color_over_life.stops[0] = (isk_color_stop){0.0, isk_rgba(255, 240, 190, 255)};
+    e->color_over_life.stops[1] = (isk_color_stop){0.4, isk_rgba(255, 150, 40, 255)};
+    e->color_over_life.stops[2] = (isk_color_stop){1.0, isk_rgba(180, 30, 0, 0)};
+    e->blend = ISK_BLEND_ADD;
+    if (!own_gravity(d, i, 300 * u))
+        return undo(d);
+    return i;
+}
+
+int isk_preset_fountain(isk_effect_def *d, const char *name, isk_vec2 pos, double scale)
+{
+    int i;
+    isk_emitter_def *e = start(d, name, "fountain", pos, scale, &i);
+    if (!e)
+        return -1;
+    const double u = scale / 100.0;
+    e->shape = ISK_SPAWN_POINT;
+    e->angle = 90 * DEG;            /* 90 +- 20 */
+    e->spread = 40 * DEG;
+    e->speed_min = 130 * u;         /* 180 +- 50 */
+    e->speed_max = 230 * u;
+    e->life = 2.5;                  /* 3.5 +- 1 */
+    e->life_range = 2.0;
+    e->capacity = 1500;
+    e->rate = 1500.0 / 3.5;
+    e->size = 8 * u;                /* 8 +- 2 */
+    e->color = isk_rgba(140, 200, 255, 255);
+    ramp2(&e->color_over_life, e->color, isk_rgba(40, 90, 200, 51)); /* end alpha 0.2 */
+    e->blend = ISK_BLEND_OVER;
+    if (!own_gravity(d, i, 90 * u))
+        return undo(d);
+    return i;
+}
+
+int isk_preset_snow(isk_effect_def *d, const char *name, isk_vec2 pos, double scale)
+{
+    int i;
+    isk_emitter_def *e = start(d, name, "snow", pos, scale, &i);
+    if (!e)
+        return -1;
+    const double u = scale / 100.0;
+    e->shape = ISK_SPAWN_RECT;      /* posVar (w/2, 0) of a 480-point screen */
+    e->shape_a = 240 * u;
+    e->shape_b = 0;
+    e->angle = -90 * DEG;           /* -90 +- 5 */
+    e->spread = 10 * DEG;
+    e->speed_min = 4 * u;           /* 5 +- 1 */
+    e->speed_max = 6 * u;
+    e->life = 30;                   /* 45 +- 15 */
+    e->life_range = 30;
+    e->capacity = 700;
+    e->rate = 10;
+    e->size = 10 * u;               /* 10 +- 5 */
+    e->sprite = ISK_SPRITE_SMOOTH;
+    e->color = ISK_WHITE;
+    ramp2(&e->color_over_life, ISK_WHITE, isk_rgba(255, 255, 255, 0));
+    e->osc_omega_min = 0.5;         /* ours: a sway instead of the radial/tangential jitter */
+    e->osc_omega_max = 1.5;
+    e->osc_amp_min = 5 * u;
+    e->osc_amp_max = 15 * u;
+    e->blend = ISK_BLEND_OVER;
+    if (!own_gravity(d, i, 1 * u))
+        return undo(d);
+    return i;
+}
+
+int isk_preset_explosion(isk_effect_def *d, const char *name, isk_vec2 pos, double scale)
+{
+    int i;
+    isk_emitter_def *e = start(d, name, "explosion", pos, scale, &i);
+    if (!e)
+        return -1;
+    const double u = scale / 100.0;
+    e->shape = ISK_SPAWN_POINT;
+    e->angle = 90 * DEG;            /* 90 +- 360: every direction */
+    e->spread = 360 * DEG;
+    e->speed_min = 30 * u;          /* 70 +- 40 */
+    e->speed_max = 110 * u;
+    e->life = 3;                    /* 5 +- 2 */
+    e->life_range = 4;
+    e->capacity = 700;
+    e->count = 700;                 /* duration 0.1 s at total/duration: one burst */
+    e->start = 0;
+    e->rate = 0;
+    e->size = 15 * u;               /* 15 +- 10 */
+    e->color = isk_rgba(178, 25, 51, 255);
+    ramp2(&e->color_over_life, e->color, isk_rgba(128, 128, 128, 0));
+    e->blend = ISK_BLEND_OVER;
+    return i;
+}

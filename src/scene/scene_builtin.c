@@ -1,0 +1,63 @@
+/* Built-in scenes (the shipped scenes/ *.ini, embedded at build time by
+ * tools/embed_scenes.sh into $(BUILD)/gen/scenes_gen.h) and isk_scene_load. */
+#include <errno.h>
+#include <stdio.h>
+#include <string.h>
+#include <sys/stat.h>
+
+#include "iskra/scene.h"
+#include "scene/ini_read.h"
+#include "scenes_gen.h"
+
+#define NBUILTIN ((int)(sizeof builtin_scenes / sizeof builtin_scenes[0]) - 1)
+
+int isk_scene_builtin_count(void)
+{
+    return NBUILTIN;
+}
+
+const char *isk_scene_builtin_name(int i)
+{
+    return i >= 0 && i < NBUILTIN ? builtin_scenes[i].name : NULL;
+}
+
+const char *isk_scene_builtin_text(const char *name)
+{
+    for (int i = 0; name && i < NBUILTIN; i++)
+        if (!strcmp(builtin_scenes[i].name, name))
+            return builtin_scenes[i].text;
+    return NULL;
+}
+
+isk_status isk_scene_load(isk_effect_def *out, const char *name_or_path, isk_error *err)
+{
+    if (!out)
+        return isk_error_set(err, ISK_ERR_NULL, "scene: NULL definition");
+    if (!name_or_path) {
+        isk_effect_def_init(out);
+        return isk_error_set(err, ISK_ERR_NULL, "scene: NULL name");
+    }
+    struct stat st;
+    if (stat(name_or_path, &st) == 0)
+        return isk_scene_load_file(out, name_or_path, err);
+    const char *text = isk_scene_builtin_text(name_or_path);
+    if (text) {
+        char label[ISK_NAME_MAX + 16];
+        snprintf(label, sizeof label, "scenes/%s.ini", name_or_path);
+        return isk_scene_load_string(out, text, label, err);
+    }
+    isk_effect_def_init(out);
+    /* A path-looking name is a missing file; otherwise suggest a built-in. */
+    if (strchr(name_or_path, '/') || strstr(name_or_path, ".ini"))
+        return isk_error_set(err, ISK_ERR_IO, "%s: %s", name_or_path, strerror(ENOENT));
+    const char *names[256];
+    int n = 0;
+    for (int i = 0; i < NBUILTIN && n < 256; i++)
+        names[n++] = builtin_scenes[i].name;
+    const char *s = isk_ini_suggest(name_or_path, names, (size_t)n);
+    if (s)
+        return isk_error_set(err, ISK_ERR_IO, "%s: no such file or built-in scene; did you mean %s?",
+                             name_or_path, s);
+    return isk_error_set(err, ISK_ERR_IO, "%s: no such file or built-in scene (`iskra list` shows them)",
+                         name_or_path);
+}

@@ -1,0 +1,220 @@
+/* Value syntax of scene files (see scene_values.h). */
+#include "scene_values.h"
+
+#include <ctype.h>
+#include <errno.h>
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+/* Length of a strict decimal number at the start of s, 0 if there is none. */
+static size_t decimal_len(const char *s)
+{
+    size_t i = 0, digits = 0;
+    if (s[i] == '+' || s[i] == '-')
+        i++;
+    while (isdigit((unsigned char)s[i]))
+        i++, digits++;
+    if (s[i] == '.') {
+        i++;
+        while (isdigit((unsigned char)s[i]))
+            i++, digits++;
+    }
+    if (!digits)
+        return 0;
+    if (s[i] == 'e' || s[i] == 'E') {
+        size_t j = i + 1, ed = 0;
+        if (s[j] == '+' || s[j] == '-')
+            j++;
+        while (isdigit((unsigned char)s[j]))
+            j++, ed++;
+        if (!ed)
+            return 0; /* "1e" is not a number */
+        i = j;
+    }
+    return i;
+}
+
+static int decimal(const char *s, size_t len, double *out)
+{
+    char buf[SCV_ITEM_MAX];
+    if (len >= sizeof buf)
+        return 0;
+    memcpy(buf, s, len);
+    buf[len] = 0;
+    char *end;
+    errno = 0;
+    double v = strtod(buf, &end);
+    if (end != buf + len || !isfinite(v))
+        return 0;
+    *out = v;
+    return 1;
+}
+
+int scv_number(const char *s, double *out)
+{
+    if (!s)
+        return 0;
+    size_t n = decimal_len(s);
+    if (!n)
+        return 0;
+    double a;
+    if (!decimal(s, n, &a))
+        return 0;
+    if (s[n] == 0) {
+        *out = a;
+        return 1;
+    }
+    /* a fraction "a/b", optional blanks around the slash */
+    const char *p = s + n;
+    while (*p == ' ' || *p == '\t')
+        p++;
+    if (*p != '/')
+        return 0;
+    p++;
+    while (*p == ' ' || *p == '\t')
+        p++;
+    size_t m = decimal_len(p);
+    double b;
+    if (!m || p[m] != 0 || !decimal(p, m, &b) || b == 0.0)
+        return 0;
+    double q = a / b;
+    if (!isfinite(q))
+        return 0;
+    *out = q;
+    return 1;
+}
+
+int scv_u64(const char *s, uint64_t *out)
+{
+    if (!s || !*s)
+        return 0;
+    uint64_t v = 0;
+    for (const char *p = s; *p; p++) {
+        if (!isdigit((unsigned char)*p))
+            return 0;
+        unsigned d = (unsigned)(*p - '0');
+        if (v > (UINT64_MAX - d) / 10u)
+            return 0;
+        v = v * 10u + d;
+    }
+    *out = v;
+    return 1;
+}
+
+int scv_lookup(const char *s, const char *const *names, int n)
+{
+    for (int i = 0; i < n; i++) {
+        const char *a = s, *b = names[i];
+        while (*a && *b && tolower((unsigned char)*a) == tolower((unsigned char)*b))
+            a++, b++;
+        if (!*a && !*b)
+            return i;
+    }
+    return -1;
+}
+
+int scv_bool(const char *s, int *out)
+{
+    static const char *const names[] = {"false", "true", "no", "yes", "off", "on", "0", "1"};
+    int i = scv_lookup(s, names, 8);
+    if (i < 0)
+        return 0;
+    *out = i & 1;
+    return 1;
+}
+
+/* CSS colour names (a useful subset; the values are CSS's). */
+static const struct {
+    const char *name;
+    uint8_t r, g, b, a;
+} colors[] = {
+    {"black", 0, 0, 0, 255},         {"white", 255, 255, 255, 255},  {"red", 255, 0, 0, 255},
+    {"green", 0, 128, 0, 255},       {"lime", 0, 255, 0, 255},       {"blue", 0, 0, 255, 255},
+    {"yellow", 255, 255, 0, 255},    {"orange", 255, 165, 0, 255},   {"cyan", 0, 255, 255, 255},
+    {"aqua", 0, 255, 255, 255},      {"magenta", 255, 0, 255, 255},  {"fuchsia", 255, 0, 255, 255},
+    {"gray", 128, 128, 128, 255},    {"grey", 128, 128, 128, 255},   {"silver", 192, 192, 192, 255},
+    {"maroon", 128, 0, 0, 255},      {"navy", 0, 0, 128, 255},       {"olive", 128, 128, 0, 255},
+    {"purple", 128, 0, 128, 255},    {"teal", 0, 128, 128, 255},     {"brown", 165, 42, 42, 255},
+    {"pink", 255, 192, 203, 255},    {"gold", 255, 215, 0, 255},     {"orangered", 255, 69, 0, 255},
+    {"darkred", 139, 0, 0, 255},     {"skyblue", 135, 206, 235, 255}, {"darkgray", 169, 169, 169, 255},
+    {"lightgray", 211, 211, 211, 255}, {"transparent", 0, 0, 0, 0},
+};
+#define NCOLORS ((int)(sizeof colors / sizeof colors[0]))
+
+const char *const scv_color_names[] = {
+    "black", "white", "red",     "green",   "lime",    "blue",   "yellow",   "orange",
+    "cyan",  "aqua",  "magenta", "fuchsia", "gray",    "grey",   "silver",   "maroon",
+    "navy",  "olive", "purple",  "teal",    "brown",   "pink",   "gold",     "orangered",
+    "darkred", "skyblue", "darkgray", "lightgray", "transparent",
+};
+const int scv_color_count = NCOLORS;
+
+static int hexval(char c)
+{
+    if (c >= '0' && c <= '9')
+        return c - '0';
+    c = (char)tolower((unsigned char)c);
+    if (c >= 'a' && c <= 'f')
+        return c - 'a' + 10;
+    return -1;
+}
+
+int scv_color(const char *s, isk_color *out)
+{
+    if (!s)
+        return 0;
+    if (s[0] == '#') {
+        size_t n = strlen(s + 1);
+        if (n != 6 && n != 8)
+            return 0;
+        uint8_t ch[4] = {0, 0, 0, 255};
+        for (size_t i = 0; i < n; i += 2) {
+            int hi = hexval(s[1 + i]), lo = hexval(s[2 + i]);
+            if (hi < 0 || lo < 0)
+                return 0;
+            ch[i / 2] = (uint8_t)(hi * 16 + lo);
+        }
+        *out = isk_rgba(ch[0], ch[1], ch[2], ch[3]);
+        return 1;
+    }
+    int i = scv_lookup(s, scv_color_names, NCOLORS);
+    if (i < 0)
+        return 0;
+    *out = isk_rgba(colors[i].r, colors[i].g, colors[i].b, colors[i].a);
+    return 1;
+}
+
+static char *trim(char *s)
+{
+    while (*s == ' ' || *s == '\t')
+        s++;
+    size_t n = strlen(s);
+    while (n && (s[n - 1] == ' ' || s[n - 1] == '\t' || s[n - 1] == '\r'))
+        s[--n] = 0;
+    return s;
+}
+
+int scv_split(const char *s, char *buf, size_t bufsize, char sep, char **items, int max, int *n)
+{
+    *n = 0;
+    size_t len = strlen(s);
+    if (len + 1 > bufsize)
+        return 0;
+    memcpy(buf, s, len + 1);
+    if (!*trim(buf))
+        return 1;
+    char *p = buf;
+    for (;;) {
+        char *c = strchr(p, sep);
+        if (c)
+            *c = 0;
+        char *item = trim(p);
+        if (!*item || *n >= max)
+            return 0;
+        items[(*n)++] = item;
+        if (!c)
+            return 1;
+        p = c + 1;
+    }
+}

@@ -1,0 +1,279 @@
+/* The iskra command: list, describe, render, play; exit statuses 0/1/2,
+ * --help everywhere, nothing written on a scene error or a bad option. */
+#include <criterion/criterion.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include "iskra/png.h"
+
+#define OUT "out/test_scene_cli"
+
+static const char *bin(void)
+{
+    static char path[256];
+    const char *b = getenv("ISKRA_BUILD");
+    snprintf(path, sizeof path, "%s/bin/iskra", b && *b ? b : "build");
+    return path;
+}
+
+/* Runs `iskra ARGS` (stdout/stderr to files under OUT); returns the exit status. */
+static int run(const char *args)
+{
+    char cmd[2048];
+    snprintf(cmd, sizeof cmd, "SDL_VIDEODRIVER=dummy %s %s >%s/stdout.txt 2>%s/stderr.txt", bin(), args, OUT, OUT);
+    int rc = system(cmd);
+    cr_assert(WIFEXITED(rc), "%s did not exit normally", cmd);
+    return WEXITSTATUS(rc);
+}
+
+static char *slurp(const char *name)
+{
+    char path[256];
+    snprintf(path, sizeof path, "%s/%s", OUT, name);
+    FILE *f = fopen(path, "rb");
+    cr_assert_not_null(f, "%s", path);
+    static char buf[65536];
+    size_t n = fread(buf, 1, sizeof buf - 1, f);
+    buf[n] = 0;
+    fclose(f);
+    return buf;
+}
+
+static int exists(const char *path)
+{
+    struct stat st;
+    return stat(path, &st) == 0;
+}
+
+static void setup(void)
+{
+    cr_assert_eq(system("rm -rf " OUT " && mkdir -p " OUT), 0);
+}
+
+TestSuite(scene_cli, .init = setup);
+
+Test(scene_cli, list_names_every_builtin)
+{
+    cr_assert_eq(run("list"), 0);
+    char *out = slurp("stdout.txt");
+    cr_assert_not_null(strstr(out, "fig12_gravity\n"));
+    cr_assert_not_null(strstr(out, "fig16_regular\n"));
+    cr_assert_eq(run("list extra"), 2);
+}
+
+Test(scene_cli, help_everywhere)
+{
+    const char *cmds[] = {"list", "describe", "render", "play", "compare"};
+    for (int i = 0; i < 5; i++) {
+        char a[64];
+        snprintf(a, sizeof a, "%s --help", cmds[i]);
+        cr_assert_eq(run(a), 0, "%s", a);
+        cr_assert_not_null(strstr(slurp("stdout.txt"), "usage: iskra"), "%s", a);
+    }
+    cr_assert_eq(run("--help"), 0);
+    cr_assert_eq(run(""), 2);
+    cr_assert_eq(run("frobnicate"), 2);
+}
+
+Test(scene_cli, describe_prints_the_pipeline)
+{
+    cr_assert_eq(run("describe fig13_drag_gravity"), 0);
+    char *out = slurp("stdout.txt");
+    cr_assert_not_null(strstr(out, "emitter particle"), "%s", out);
+    cr_assert_not_null(strstr(out, "walls"), "%s", out);
+    cr_assert_eq(run("describe"), 2);
+    cr_assert_eq(run("describe no_such_scene"), 2);
+    cr_assert_eq(run("describe fig12_gravity --bogus"), 2);
+}
+
+Test(scene_cli, render_one_frame_equals_the_example)
+{
+    cr_assert_eq(run("render scenes/fig12_gravity.ini --out " OUT "/f12.png"), 0, "%s", slurp("stderr.txt"));
+    cr_assert_str_eq(slurp("stderr.txt"), "", "silent when stderr is not a terminal");
+    isk_canvas a, b;
+    cr_assert_eq(isk_png_read(&a, OUT "/f12.png", NULL), ISK_OK);
+    cr_assert_eq(isk_png_read(&b, "refimg/fig12_gravity.png", NULL), ISK_OK);
+    cr_assert_eq(a.width, b.width);
+    cr_assert_eq(memcmp(a.pixels, b.pixels, (size_t)a.width * a.height * 4), 0);
+    isk_canvas_free(&a);
+    isk_canvas_free(&b);
+}
+
+Test(scene_cli, render_sequence)
+{
+    cr_assert_eq(run("render fig16_regular --frames 5 --every 2 --out-dir " OUT "/seq/deep"), 0, "%s",
+                 slurp("stderr.txt"));
+    cr_assert(exists(OUT "/seq/deep/frame_000000.png"));
+    cr_assert(exists(OUT "/seq/deep/frame_000002.png"));
+    cr_assert(exists(OUT "/seq/deep/frame_000004.png"));
+    cr_assert_not(exists(OUT "/seq/deep/frame_000001.png"));
+    cr_assert_not(exists(OUT "/seq/deep/frame_000005.png"));
+    /* the last sequence frame equals a single render of that frame */
+    cr_assert_eq(run("render fig16_regular --frames 4 --out " OUT "/f4.png"), 0);
+    isk_canvas a, b;
+    cr_assert_eq(isk_png_read(&a, OUT "/f4.png", NULL), ISK_OK);
+    cr_assert_eq(isk_png_read(&b, OUT "/seq/deep/frame_000004.png", NULL), ISK_OK);
+    cr_assert_eq(memcmp(a.pixels, b.pixels, (size_t)a.width * a.height * 4), 0);
+    isk_canvas_free(&a);
+    isk_canvas_free(&b);
+    /* a trail scene's sequence ends with the same image as a single render */
+    cr_assert_eq(run("render fig10_trajectory --frames 30 --every 10 --out-dir " OUT "/trail --out " OUT "/t30.png"),
+                 0);
+    cr_assert_eq(isk_png_read(&a, OUT "/t30.png", NULL), ISK_OK);
+    cr_assert_eq(isk_png_read(&b, OUT "/trail/frame_000030.png", NULL), ISK_OK);
+    cr_assert_eq(memcmp(a.pixels, b.pixels, (size_t)a.width * a.height * 4), 0);
+    isk_canvas_free(&a);
+    isk_canvas_free(&b);
+}
+
+Test(scene_cli, overrides)
+{
+    cr_assert_eq(run("render fig18_gauss --frames 10 --size 300x200 --seed 3 --dt 0.002 --substeps 2 --out " OUT
+                     "/o.png"),
+                 0, "%s", slurp("stderr.txt"));
+    isk_canvas a, b;
+    cr_assert_eq(isk_png_read(&a, OUT "/o.png", NULL), ISK_OK);
+    cr_assert_eq(a.width, 300);
+    cr_assert_eq(a.height, 200);
+    /* another seed, another picture */
+    cr_assert_eq(run("render fig18_gauss --frames 10 --size=300x200 --seed=4 --dt 0.002 --substeps 2 --out " OUT
+                     "/p.png"),
+                 0);
+    cr_assert_eq(isk_png_read(&b, OUT "/p.png", NULL), ISK_OK);
+    cr_assert_neq(memcmp(a.pixels, b.pixels, (size_t)a.width * a.height * 4), 0);
+    isk_canvas_free(&a);
+    isk_canvas_free(&b);
+}
+
+Test(scene_cli, usage_errors_write_nothing)
+{
+    const char *bad[] = {
+        "render fig12_gravity --size 0x5 --out " OUT "/x.png",
+        "render fig12_gravity --size 600 --out " OUT "/x.png",
+        "render fig12_gravity --seed -1 --out " OUT "/x.png",
+        "render fig12_gravity --seed abc --out " OUT "/x.png",
+        "render fig12_gravity --dt nan --out " OUT "/x.png",
+        "render fig12_gravity --dt 0 --out " OUT "/x.png",
+        "render fig12_gravity --substeps 0 --out " OUT "/x.png",
+        "render fig12_gravity --frames -1 --out " OUT "/x.png",
+        "render fig12_gravity --frames 1.5 --out " OUT "/x.png",
+        "render fig12_gravity --wat --out " OUT "/x.png",
+        "render fig12_gravity",
+        "render --out " OUT "/x.png",
+        "render fig12_gravity fig10_trajectory --out " OUT "/x.png",
+        "render fig12_gravity --every 2 --out " OUT "/x.png",
+        "render fig12_gravity --out",
+        "render fig12_gravity --every 0 --out-dir " OUT "/xdir",
+    };
+    for (size_t i = 0; i < sizeof bad / sizeof bad[0]; i++) {
+        cr_assert_eq(run(bad[i]), 2, "%s", bad[i]);
+        cr_assert_neq(slurp("stderr.txt")[0], 0, "no message for: %s", bad[i]);
+        cr_assert_not(exists(OUT "/x.png"), "%s wrote a file", bad[i]);
+        cr_assert_not(exists(OUT "/xdir"), "%s made a directory", bad[i]);
+    }
+}
+
+Test(scene_cli, scene_errors_exit_2_with_file_line_and_write_nothing)
+{
+    cr_assert_eq(run("render tests/data/bad_scenes/misspelt_key.ini --out " OUT "/x.png --out-dir " OUT "/xdir"), 2);
+    cr_assert_str_eq(slurp("stderr.txt"),
+                     "tests/data/bad_scenes/misspelt_key.ini:7: [emitter smoke] unknown key 'rat'; did you mean 'rate'?\n");
+    cr_assert_not(exists(OUT "/x.png"));
+    cr_assert_not(exists(OUT "/xdir"));
+    cr_assert_eq(run("render tests/data/bad_scenes/runtime_invalid.ini --out " OUT "/x.png"), 2);
+    cr_assert_str_eq(slurp("stderr.txt"),
+                     "tests/data/bad_scenes/runtime_invalid.ini:3: emitter 'sparks': count must be 1..10000 (raise "
+                     "limit for more)\n");
+    cr_assert_not(exists(OUT "/x.png"));
+    cr_assert_eq(run("render no_such_scene.ini --out " OUT "/x.png"), 2);
+    cr_assert_not(exists(OUT "/x.png"));
+}
+
+/* Every broken scene under tests/data/bad_scenes/ fails with exactly the
+ * message quoted in docs/scene-format.md. */
+Test(scene_cli, bad_scene_messages)
+{
+    static const struct {
+        const char *file, *msg;
+    } cases[] = {
+        {"misspelt_key", "tests/data/bad_scenes/misspelt_key.ini:7: [emitter smoke] unknown key 'rat'; did you mean 'rate'?"},
+        {"bad_number", "tests/data/bad_scenes/bad_number.ini:3: [emitter smoke] rate: expected a number between 0 and "
+                       "100000000, got \"fast\""},
+        {"unknown_section", "tests/data/bad_scenes/unknown_section.ini:4: unknown section [emiter sparks]; did you "
+                            "mean [emitter sparks]?"},
+        {"undefined_force", "tests/data/bad_scenes/undefined_force.ini:7: [emitter sparks] forces: no force named "
+                            "'gravty'; did you mean 'gravity'?"},
+        {"duplicate_key", "tests/data/bad_scenes/duplicate_key.ini:4: [scene] width: given twice (first at line 2)"},
+        {"bad_enum", "tests/data/bad_scenes/bad_enum.ini:3: [emitter sparks] explosion: expected ring, uniform, "
+                     "gauss, coulomb or multi-coulomb, got \"gaus\"; did you mean \"gauss\"?"},
+        {"nan_value", "tests/data/bad_scenes/nan_value.ini:2: [force drag] b: expected a number >= 0, got \"nan\""},
+        {"wrong_count", "tests/data/bad_scenes/wrong_count.ini:2: [emitter p] position: expected 2 numbers \"x, y\", "
+                        "got \"1, 2, 3\""},
+        {"bad_color", "tests/data/bad_scenes/bad_color.ini:2: [scene] background: expected a colour (#rrggbb, "
+                      "#rrggbbaa or a name such as yellow), got \"yelow\"; did you mean \"yellow\"?"},
+        {"wrong_kind_key", "tests/data/bad_scenes/wrong_kind_key.ini:3: [force air] g: only for kind = gravity (this "
+                           "force has kind = drag)"},
+        {"runtime_invalid", "tests/data/bad_scenes/runtime_invalid.ini:3: emitter 'sparks': count must be 1..10000 "
+                            "(raise limit for more)"},
+    };
+    for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
+        char a[256], want[512];
+        snprintf(a, sizeof a, "describe tests/data/bad_scenes/%s.ini", cases[i].file);
+        cr_assert_eq(run(a), 2, "%s", a);
+        snprintf(want, sizeof want, "%s\n", cases[i].msg);
+        cr_expect_str_eq(slurp("stderr.txt"), want, "%s", cases[i].file);
+    }
+}
+
+Test(scene_cli, write_failure_is_exit_1)
+{
+    cr_assert_eq(run("render fig09_stationary_particle --out " OUT "/no/such/dir/x.png"), 1);
+    cr_assert_neq(slurp("stderr.txt")[0], 0);
+    /* --out-dir under a regular file cannot be created */
+    FILE *f = fopen(OUT "/plainfile", "w");
+    cr_assert_not_null(f);
+    fclose(f);
+    cr_assert_eq(run("render fig09_stationary_particle --out-dir " OUT "/plainfile/sub"), 1);
+}
+
+Test(scene_cli, play_under_the_dummy_driver)
+{
+    int rc = run("play fig16_regular --frames 5");
+    char *err = slurp("stderr.txt");
+    if (rc == 1 && strstr(err, "window"))
+        cr_skip("no SDL video available: %s", err);
+    cr_assert_eq(rc, 0, "%s", err);
+    /* scripted input: substeps up and down, pause twice, reset, overlay off
+     * and on, a click (the scene has a [click]), a screenshot */
+    char cmd[2048], cwd[512];
+    cr_assert_not_null(getcwd(cwd, sizeof cwd));
+    snprintf(cmd, sizeof cmd,
+             "cd " OUT " && SDL_VIDEODRIVER=dummy %s/%s play %s/scenes/fig26_mushroom_one_potential.ini --frames 6 "
+             "--script '+ + kp+ - kp- = space space r h h click:300,300 f12' >stdout.txt 2>stderr.txt",
+             bin()[0] == '/' ? "" : cwd, bin(), cwd);
+    rc = system(cmd);
+    cr_assert(WIFEXITED(rc) && WEXITSTATUS(rc) == 0, "%s\n%s", cmd, slurp("stderr.txt"));
+    cr_assert_not_null(strstr(slurp("stderr.txt"), "saved iskra-fig26_mushroom_one_potential-"), "%s",
+                       slurp("stderr.txt"));
+    cr_assert_eq(run("play fig16_regular --frames 2 --script 'jump'"), 2);
+    cr_assert_eq(run("play"), 2);
+    cr_assert_eq(run("play fig16_regular --frames x"), 2);
+    cr_assert_eq(run("play tests/data/bad_scenes/bad_enum.ini --frames 1"), 2);
+}
+
+/* The tests share out/test_scene_cli/ (the commands take fixed paths), so
+ * they run one at a time. */
+int main(int argc, char *argv[])
+{
+    struct criterion_test_set *tests = criterion_initialize();
+    criterion_options.jobs = 1;
+    int result = 0;
+    if (criterion_handle_args(argc, argv, true))
+        result = !criterion_run_all_tests(tests);
+    criterion_finalize(tests);
+    return result;
+}

@@ -1,0 +1,182 @@
+/* Shared scene options for the iskra commands (see scene_args.h). */
+#include "scene_args.h"
+
+#include <errno.h>
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "iskra/scene.h"
+
+int arg_value(const char *cmd, int argc, char **argv, int *i, const char *name, const char **value)
+{
+    const char *a = argv[*i];
+    size_t n = strlen(name);
+    if (strncmp(a, name, n) != 0)
+        return 0;
+    if (a[n] == '=') {
+        *value = a + n + 1;
+        return 1;
+    }
+    if (a[n] != 0)
+        return 0;
+    if (*i + 1 >= argc) {
+        fprintf(stderr, "iskra %s: %s needs a value\n", cmd, name);
+        return -1;
+    }
+    *value = argv[++*i];
+    return 1;
+}
+
+int arg_long(const char *cmd, const char *opt, const char *s, long lo, long hi, long *out)
+{
+    char *end;
+    errno = 0;
+    long v = strtol(s, &end, 10);
+    if (!*s || *end || errno || v < lo || v > hi || s[0] == '+' || s[0] == ' ') {
+        fprintf(stderr, "iskra %s: %s: expected a whole number between %ld and %ld, got \"%s\"\n", cmd, opt, lo,
+                hi, s);
+        return 0;
+    }
+    *out = v;
+    return 1;
+}
+
+int arg_double_pos(const char *cmd, const char *opt, const char *s, double *out)
+{
+    char *end;
+    errno = 0;
+    double v = strtod(s, &end);
+    if (!*s || *end || !isfinite(v) || !(v > 0) || v > 1000) {
+        fprintf(stderr, "iskra %s: %s: expected a number > 0 and <= 1000, got \"%s\"\n", cmd, opt, s);
+        return 0;
+    }
+    *out = v;
+    return 1;
+}
+
+static int parse_u64(const char *s, uint64_t *out)
+{
+    if (!*s)
+        return 0;
+    uint64_t v = 0;
+    for (const char *p = s; *p; p++) {
+        if (*p < '0' || *p > '9')
+            return 0;
+        unsigned d = (unsigned)(*p - '0');
+        if (v > (UINT64_MAX - d) / 10u)
+            return 0;
+        v = v * 10u + d;
+    }
+    *out = v;
+    return 1;
+}
+
+int scene_args_take(scene_args *a, int argc, char **argv, int *i)
+{
+    const char *v;
+    int r;
+    long n;
+    if ((r = arg_value(a->cmd, argc, argv, i, "--seed", &v)) != 0) {
+        if (r < 0)
+            return -1;
+        if (!parse_u64(v, &a->seed)) {
+            fprintf(stderr, "iskra %s: --seed: expected a whole number between 0 and 18446744073709551615, got \"%s\"\n",
+                    a->cmd, v);
+            return -1;
+        }
+        a->have_seed = 1;
+        return 1;
+    }
+    if ((r = arg_value(a->cmd, argc, argv, i, "--size", &v)) != 0) {
+        if (r < 0)
+            return -1;
+        char *end;
+        errno = 0;
+        long w = strtol(v, &end, 10), h = 0;
+        int ok = end != v && (*end == 'x' || *end == 'X') && !errno && v[0] != '+' && v[0] != '-';
+        if (ok) {
+            const char *hs = end + 1;
+            h = strtol(hs, &end, 10);
+            ok = end != hs && !*end && !errno && hs[0] != '+' && hs[0] != '-';
+        }
+        if (!ok || w < 1 || h < 1 || w > ISK_CANVAS_MAX_DIM || h > ISK_CANVAS_MAX_DIM) {
+            fprintf(stderr, "iskra %s: --size: expected WIDTHxHEIGHT, each 1..%d (e.g. 800x600), got \"%s\"\n",
+                    a->cmd, ISK_CANVAS_MAX_DIM, v);
+            return -1;
+        }
+        a->width = (int)w;
+        a->height = (int)h;
+        return 1;
+    }
+    if ((r = arg_value(a->cmd, argc, argv, i, "--dt", &v)) != 0) {
+        if (r < 0 || !arg_double_pos(a->cmd, "--dt", v, &a->dt))
+            return -1;
+        return 1;
+    }
+    if ((r = arg_value(a->cmd, argc, argv, i, "--substeps", &v)) != 0) {
+        if (r < 0 || !arg_long(a->cmd, "--substeps", v, 1, 1000, &n))
+            return -1;
+        a->substeps = (int)n;
+        return 1;
+    }
+    const char *s = argv[*i];
+    if (s[0] == '-' && s[1]) {
+        fprintf(stderr, "iskra %s: unknown option '%s' (iskra %s --help)\n", a->cmd, s, a->cmd);
+        return -1;
+    }
+    if (a->scene) {
+        fprintf(stderr, "iskra %s: one scene only (got '%s' and '%s')\n", a->cmd, a->scene, s);
+        return -1;
+    }
+    a->scene = s;
+    return 1;
+}
+
+void scene_args_help(FILE *f)
+{
+    fprintf(f, "  SCENE            a scene file (.ini) or a built-in scene name (iskra list)\n"
+               "  --seed N         random seed, 0..2^64-1 (default: the scene's)\n"
+               "  --size WxH       canvas size in pixels, e.g. 800x600 (default: the scene's)\n"
+               "  --dt SECONDS     time step per frame, > 0 (default: the scene's)\n"
+               "  --substeps N     substeps per frame, 1..1000 (default: the scene's)\n");
+}
+
+int scene_args_open(const scene_args *a, isk_effect_def *def, isk_effect **fx)
+{
+    isk_error err;
+    if (!a->scene) {
+        fprintf(stderr, "iskra %s: which scene? (iskra %s --help)\n", a->cmd, a->cmd);
+        isk_effect_def_init(def);
+        return 2;
+    }
+    isk_status s = isk_scene_load(def, a->scene, &err);
+    if (s != ISK_OK) {
+        fprintf(stderr, "%s\n", err.message);
+        return s == ISK_ERR_NOMEM ? 1 : 2;
+    }
+    if (a->have_seed)
+        def->seed = a->seed;
+    if (a->width) {
+        def->width = a->width;
+        def->height = a->height;
+    }
+    if (a->dt > 0)
+        def->dt = a->dt;
+    if (a->substeps)
+        def->substeps = a->substeps;
+    s = isk_effect_create(fx, def, &err);
+    if (s != ISK_OK) {
+        /* "emitter 'x' (line 12): why" -> "FILE:12: emitter 'x': why", like the parser's */
+        const char *lp = strstr(err.message, " (line ");
+        int line = 0, used = 0;
+        if (lp && sscanf(lp, " (line %d)%n", &line, &used) == 1 && used > 0 && line > 0)
+            fprintf(stderr, "%s:%d: %.*s%s\n", a->scene, line, (int)(lp - err.message), err.message, lp + used);
+        else
+            fprintf(stderr, "%s: %s\n", a->scene, err.message);
+        isk_effect_def_free(def);
+        isk_effect_def_init(def);
+        return s == ISK_ERR_NOMEM ? 1 : 2;
+    }
+    return 0;
+}
