@@ -13,8 +13,9 @@
  *   sparks  small additive sprites thrown up under gravity 3, bouncing off
  *           the ground and the two logs (deflector segments, restitution 0.35)
  *
- * The logs, the ground and the glow under the fire are drawn by this program
- * before the effect.  --wind X adds a sideways acceleration X (world units
+ * The ground, the glow under the fire and the two logs are drawings of the
+ * effect (filled polygons, discs and a sprite), drawn before the emitters, so
+ * scenes/fire_campfire.ini can say exactly the same.  --wind X adds a sideways acceleration X (world units
  * per s^2) to flames, smoke and sparks (the fire thesis's wind).
  *
  * Options: --png PATH, --window (animates), --seed N, --frames N (default
@@ -33,8 +34,32 @@
 
 typedef struct campfire {
     isk_effect *fx;
-    isk_sprite glow;
 } campfire;
+
+/* A log: a thick segment as a filled quadrilateral with round, darker ends. */
+static void add_log(isk_effect_def *d, double x0, double y0, double x1, double y1, double r, isk_color col)
+{
+    double dx = x1 - x0, dy = y1 - y0, L = hypot(dx, dy);
+    double nx = -dy / L * r, ny = dx / L * r;
+    isk_drawing_def *q = isk_effect_def_add_drawing(d, "log", ISK_DRAWING_POLYGON);
+    double pts[8] = {x0 + nx, y0 + ny, x1 + nx, y1 + ny, x1 - nx, y1 - ny, x0 - nx, y0 - ny};
+    q->points = malloc(sizeof pts);
+    if (q->points)
+        memcpy(q->points, pts, sizeof pts);
+    q->npoints = 4;
+    q->color = col;
+    for (int k = 0; k < 2; k++) {
+        isk_drawing_def *end = isk_effect_def_add_drawing(d, "log end", ISK_DRAWING_DISC);
+        end->x = k ? x1 : x0;
+        end->y = k ? y1 : y0;
+        end->r = r;
+        end->color = isk_rgba(90, 60, 40, 255);
+        isk_drawing_def *core = isk_effect_def_add_drawing(d, "log core", ISK_DRAWING_DISC);
+        *core = *end;
+        core->r = 0.55 * r;
+        core->color = isk_rgba(60, 38, 25, 255);
+    }
+}
 
 static isk_status build(isk_effect **out, uint64_t seed, double wind)
 {
@@ -48,7 +73,25 @@ static isk_status build(isk_effect **out, uint64_t seed, double wind)
     d.ymax = 4.5;
     d.dt = 1.0 / 60.0;
     d.seed = seed;
-    d.clear = 0; /* the program paints the background and the logs first */
+    d.background = isk_rgba(10, 10, 22, 255);
+
+    /* The scenery, drawn every frame before the particles. */
+    isk_drawing_def *soil = isk_effect_def_add_drawing(&d, "ground", ISK_DRAWING_POLYGON);
+    const double gpts[8] = {-3.0, -0.5, 3.0, -0.5, 3.0, 0.0, -3.0, 0.0};
+    soil->points = malloc(sizeof gpts);
+    if (soil->points)
+        memcpy(soil->points, gpts, sizeof gpts);
+    soil->npoints = 4;
+    soil->color = isk_rgba(24, 18, 14, 255);
+    isk_drawing_def *glow = isk_effect_def_add_drawing(&d, "glow", ISK_DRAWING_SPRITE);
+    glow->sprite = ISK_SPRITE_SMOOTH;
+    glow->size = 3.2; /* 256 px */
+    glow->x = 0.0;
+    glow->y = 0.25;
+    glow->color = isk_rgba(255, 110, 30, 90);
+    glow->blend = ISK_BLEND_ADD;
+    add_log(&d, -1.1, 0.12, 0.9, 0.42, 0.12, isk_rgba(70, 45, 30, 255));
+    add_log(&d, 1.1, 0.12, -0.9, 0.42, 0.12, isk_rgba(82, 54, 36, 255));
 
     int grav = isk_effect_def_add_force(&d, "gravity", ISK_FORCE_GRAVITY);
     d.forces[grav].g = 1.0;
@@ -220,38 +263,8 @@ static isk_status build(isk_effect **out, uint64_t seed, double wind)
     return s;
 }
 
-/* A log: a thick segment as two filled triangles, with a darker end cap. */
-static void log_quad(isk_canvas *c, const isk_view *v, double x0, double y0, double x1, double y1, double r,
-                     isk_color col)
-{
-    double dx = x1 - x0, dy = y1 - y0, L = hypot(dx, dy);
-    double nx = -dy / L * r, ny = dx / L * r;
-    double P[4][2];
-    isk_view_to_screen(v, x0 + nx, y0 + ny, &P[0][0], &P[0][1]);
-    isk_view_to_screen(v, x1 + nx, y1 + ny, &P[1][0], &P[1][1]);
-    isk_view_to_screen(v, x1 - nx, y1 - ny, &P[2][0], &P[2][1]);
-    isk_view_to_screen(v, x0 - nx, y0 - ny, &P[3][0], &P[3][1]);
-    isk_fill_triangle(c, P[0][0], P[0][1], P[1][0], P[1][1], P[2][0], P[2][1], col, ISK_BLEND_OVER);
-    isk_fill_triangle(c, P[0][0], P[0][1], P[2][0], P[2][1], P[3][0], P[3][1], col, ISK_BLEND_OVER);
-    double ex, ey;
-    for (int k = 0; k < 2; k++) {
-        isk_view_to_screen(v, k ? x1 : x0, k ? y1 : y0, &ex, &ey);
-        isk_fill_circle_aa(c, ex, ey, r * fabs(v->sx), isk_rgba(90, 60, 40, 255), ISK_BLEND_OVER);
-        isk_fill_circle_aa(c, ex, ey, 0.55 * r * fabs(v->sx), isk_rgba(60, 38, 25, 255), ISK_BLEND_OVER);
-    }
-}
-
-/* Background, ground, glow and logs; then the effect. */
 static void draw(campfire *cf, isk_canvas *c)
 {
-    const isk_view *v = isk_effect_view(cf->fx);
-    isk_canvas_fill(c, isk_rgba(10, 10, 22, 255));
-    double gx, gy;
-    isk_view_to_screen(v, 0, 0, &gx, &gy);
-    isk_fill_rect(c, 0, (int)gy, c->width, c->height - (int)gy, isk_rgba(24, 18, 14, 255), ISK_BLEND_OVER);
-    isk_draw_sprite_tinted(c, &cf->glow, gx, gy - 20, isk_rgba(255, 110, 30, 90), ISK_BLEND_ADD);
-    log_quad(c, v, -1.1, 0.12, 0.9, 0.42, 0.12, isk_rgba(70, 45, 30, 255));
-    log_quad(c, v, 1.1, 0.12, -0.9, 0.42, 0.12, isk_rgba(82, 54, 36, 255));
     isk_effect_render(cf->fx, c);
 }
 
@@ -348,8 +361,7 @@ int main(int argc, char **argv)
     isk_canvas c;
     if (build(&cf.fx, o.seed, wind) != ISK_OK)
         return 1;
-    if (isk_sprite_init(&cf.glow, ISK_SPRITE_SMOOTH, 256, ISK_WHITE) != ISK_OK ||
-        isk_canvas_init(&c, W, H) != ISK_OK)
+    if (isk_canvas_init(&c, W, H) != ISK_OK)
         return 1;
     int rc = 0;
     if (strip_path) {
@@ -361,7 +373,6 @@ int main(int argc, char **argv)
         rc = example_animate(&c, &o, &cf, frame);
     }
     isk_canvas_free(&c);
-    isk_sprite_free(&cf.glow);
     isk_effect_destroy(cf.fx);
     return rc;
 }

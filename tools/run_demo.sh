@@ -2,8 +2,7 @@
 # `make run`: the main demo.  With a display (DISPLAY or WAYLAND_DISPLAY set
 # and a window that opens) it plays the campfire scene in a window; otherwise
 # it renders it to out/SCENE.png plus a short sequence in out/SCENE/
-# and says where.  Uses the best scene available: the campfire, else the
-# first built-in scene.
+# and says where.
 set -u
 BUILD=${BUILD:-build}
 ISKRA="$BUILD/bin/iskra"
@@ -11,17 +10,7 @@ if [ ! -x "$ISKRA" ]; then
     echo "run_demo: $ISKRA is missing (run make first)" >&2
     exit 1
 fi
-scene=""
-for s in campfire fire_campfire; do
-    if "$ISKRA" list | grep -qx "$s"; then scene=$s; break; fi
-done
-if [ -z "$scene" ]; then
-    scene=$("$ISKRA" list | grep -x 'fig16_regular' || "$ISKRA" list | head -n 1)
-fi
-if [ -z "$scene" ]; then
-    echo "run_demo: no built-in scene" >&2
-    exit 1
-fi
+scene=fire_campfire
 if [ -n "${DISPLAY:-}${WAYLAND_DISPLAY:-}" ]; then
     echo "iskra: playing '$scene' (space pause, R reset, +/- substeps, F12 screenshot, H overlay, Esc quit)"
     if "$ISKRA" play "$scene"; then

@@ -215,7 +215,14 @@ typedef struct isk_emitter_def {
 
 /* Static drawings (the triangles of figures 1-8, labels): drawn each frame
  * before the particles. */
-typedef enum isk_drawing_kind { ISK_DRAWING_POLYLINE = 0, ISK_DRAWING_DISC, ISK_DRAWING_TEXT } isk_drawing_kind;
+typedef enum isk_drawing_kind {
+    ISK_DRAWING_POLYLINE = 0, /* anti-aliased width-1 path through `points` */
+    ISK_DRAWING_DISC,         /* anti-aliased disc at (x, y), radius r */
+    ISK_DRAWING_TEXT,         /* bitmap-font text, baseline-left at (x, y) */
+    ISK_DRAWING_POLYGON,      /* filled convex polygon (a fan of isk_fill_triangle) */
+    ISK_DRAWING_SPRITE,       /* a sprite of kind `sprite`, diameter `size`, centred at (x, y) */
+    ISK_DRAWING_KIND_COUNT
+} isk_drawing_kind;
 
 typedef struct isk_drawing_def {
     char name[ISK_NAME_MAX];
@@ -230,6 +237,8 @@ typedef struct isk_drawing_def {
     int scale;                 /* TEXT scale */
     isk_color color;
     isk_blend blend;
+    isk_sprite_kind sprite;    /* SPRITE */
+    double size;               /* SPRITE diameter (world units, or pixels with `pixels`) */
 } isk_drawing_def;
 
 typedef enum isk_view_def_kind { ISK_VIEWDEF_WINDOW = 0, ISK_VIEWDEF_CAMERA } isk_view_def_kind;

@@ -206,10 +206,21 @@ static int check_def(checker *ck, const isk_effect_def *d)
             return 0;
     for (int i = 0; i < d->ndrawings; i++) {
         const isk_drawing_def *s = &d->drawings[i];
-        if ((unsigned)s->kind > ISK_DRAWING_TEXT || (unsigned)s->blend > ISK_BLEND_ADD)
+        if ((unsigned)s->kind >= ISK_DRAWING_KIND_COUNT || (unsigned)s->blend > ISK_BLEND_ADD)
             return fail(ck, ISK_ERR_RANGE, "drawing", s->name, s->line, "unknown kind or blend");
         if (s->kind == ISK_DRAWING_POLYLINE && (!s->points || s->npoints < 2 || s->npoints > 100000))
             return fail(ck, ISK_ERR_RANGE, "drawing", s->name, s->line, "a polyline needs 2..100000 points");
+        if (s->kind == ISK_DRAWING_POLYGON && (!s->points || s->npoints < 3 || s->npoints > 100000))
+            return fail(ck, ISK_ERR_RANGE, "drawing", s->name, s->line, "a polygon needs 3..100000 points");
+        if ((s->kind == ISK_DRAWING_POLYLINE || s->kind == ISK_DRAWING_POLYGON))
+            for (int k = 0; k < 2 * s->npoints; k++)
+                if (!FIN(s->points[k]))
+                    return fail(ck, ISK_ERR_NAN, "drawing", s->name, s->line, "points must be finite");
+        if (!FIN(s->x) || !FIN(s->y) || !FIN(s->r))
+            return fail(ck, ISK_ERR_NAN, "drawing", s->name, s->line, "position and radius must be finite");
+        if (s->kind == ISK_DRAWING_SPRITE &&
+            ((unsigned)s->sprite > ISK_SPRITE_SMOOTH || !FIN(s->size) || !(s->size > 0)))
+            return fail(ck, ISK_ERR_RANGE, "drawing", s->name, s->line, "a sprite needs a kind and a size > 0");
         if (s->kind == ISK_DRAWING_TEXT && (s->scale < 1 || s->scale > 64))
             return fail(ck, ISK_ERR_RANGE, "drawing", s->name, s->line, "text scale must be 1..64");
     }

@@ -131,6 +131,8 @@ isk_drawing_def *isk_effect_def_add_drawing(isk_effect_def *d, const char *name,
     set_name(s->name, name);
     s->kind = kind;
     s->scale = 1;
+    s->sprite = ISK_SPRITE_LINEAR;
+    s->size = 1.0;
     s->color = ISK_WHITE;
     s->blend = ISK_BLEND_OVER;
     return s;

@@ -44,9 +44,38 @@ void fx_free_ramps(fx_group *g)
     g->has_color_ramp = g->has_alpha_ramp = g->has_size_ramp = 0;
 }
 
-static void draw_drawing(isk_canvas *c, const isk_view *v, const isk_drawing_def *s)
+static void draw_drawing(isk_effect *e, isk_canvas *c, const isk_view *v, const isk_drawing_def *s)
 {
     switch (s->kind) {
+    case ISK_DRAWING_POLYGON: {
+        /* A fan from the first point; in world units each point goes
+         * through the view first. */
+        double x0 = s->points[0], y0 = s->points[1];
+        if (!s->pixels)
+            isk_view_to_screen(v, x0, y0, &x0, &y0);
+        for (int k = 1; k + 1 < s->npoints; k++) {
+            double x1 = s->points[2 * k], y1 = s->points[2 * k + 1];
+            double x2 = s->points[2 * k + 2], y2 = s->points[2 * k + 3];
+            if (!s->pixels) {
+                isk_view_to_screen(v, x1, y1, &x1, &y1);
+                isk_view_to_screen(v, x2, y2, &x2, &y2);
+            }
+            isk_fill_triangle(c, x0, y0, x1, y1, x2, y2, s->color, s->blend);
+        }
+        break;
+    }
+    case ISK_DRAWING_SPRITE: {
+        double X = s->x, Y = s->y, d = s->size;
+        if (!s->pixels) {
+            isk_view_to_screen(v, s->x, s->y, &X, &Y);
+            d = s->size * fabs(v->sx);
+        }
+        int px = d >= ISK_SPRITE_MAX_SIZE ? ISK_SPRITE_MAX_SIZE : (d >= 1.0 ? (int)(d + 0.5) : 1);
+        const isk_sprite *spr;
+        if (isk_sprite_cache_get(e->sprites, s->sprite, px, s->color, &spr) == ISK_OK)
+            isk_draw_sprite(c, spr, X, Y, s->blend);
+        break;
+    }
     case ISK_DRAWING_POLYLINE:
         if (s->pixels)
             isk_stroke_polyline(c, s->points, s->npoints, s->closed, s->color, s->blend);
@@ -70,6 +99,8 @@ static void draw_drawing(isk_canvas *c, const isk_view *v, const isk_drawing_def
         } else {
             isk_world_text(c, v, s->x, s->y, s->text, s->scale, s->color, s->blend);
         }
+        break;
+    case ISK_DRAWING_KIND_COUNT:
         break;
     }
 }
@@ -184,7 +215,7 @@ isk_status fx_render(isk_effect *e, isk_canvas *c)
     if (d->clear)
         isk_canvas_fill(c, d->background);
     for (int i = 0; i < d->ndrawings; i++)
-        draw_drawing(c, &e->view, &d->drawings[i]);
+        draw_drawing(e, c, &e->view, &d->drawings[i]);
     for (int k = 0; k < e->ngroups; k++)
         draw_group(e, c, &e->groups[e->draw_order[k]]);
     /* The thesis simulator's potentials: a disc of radius 0.1 (blue attracts,

@@ -116,9 +116,11 @@ static const sk_key emitter_keys[] = {
 static const sk_key drawing_keys[] = {
     {"kind", K_DRAW_KIND, 0},
     {"units", K_DRAW_UNITS, 0},
-    {"points", K_DRAW_POINTS, BIT(ISK_DRAWING_POLYLINE)},
+    {"points", K_DRAW_POINTS, BIT(ISK_DRAWING_POLYLINE) | BIT(ISK_DRAWING_POLYGON)},
     {"closed", K_DRAW_CLOSED, BIT(ISK_DRAWING_POLYLINE)},
-    {"position", K_DRAW_POSITION, BIT(ISK_DRAWING_DISC) | BIT(ISK_DRAWING_TEXT)},
+    {"position", K_DRAW_POSITION, BIT(ISK_DRAWING_DISC) | BIT(ISK_DRAWING_TEXT) | BIT(ISK_DRAWING_SPRITE)},
+    {"sprite", K_DRAW_SPRITE, BIT(ISK_DRAWING_SPRITE)},
+    {"size", K_DRAW_SIZE, BIT(ISK_DRAWING_SPRITE)},
     {"radius", K_DRAW_RADIUS, BIT(ISK_DRAWING_DISC)},
     {"text", K_DRAW_TEXT, BIT(ISK_DRAWING_TEXT)},
     {"scale", K_DRAW_SCALE, BIT(ISK_DRAWING_TEXT)},
@@ -163,5 +165,5 @@ const char *const sk_birth_names[] = {"backdate", "thesis-jitter", "frame", NULL
 const char *const sk_draw_names[] = {"dot", "pixel", "disc", "sprite", "none", "dot-browser", NULL};
 const char *const sk_sprite_names[] = {"disc", "linear", "smooth", NULL};
 const char *const sk_blend_names[] = {"replace", "over", "add", NULL};
-const char *const sk_drawing_names[] = {"polyline", "disc", "text", NULL};
+const char *const sk_drawing_names[] = {"polyline", "disc", "text", "polygon", "sprite", NULL};
 const char *const sk_units_names[] = {"world", "pixels", NULL};

@@ -283,8 +283,29 @@ static int get_vec(parser *P, int line, const char *key, const char *v, isk_vec2
 }
 
 /* A number of degrees, returned in radians. */
+/* Degrees ("90"), or radians with a suffix ("0.6 rad"): a radian value from
+ * a C program then arrives bit for bit, where degrees would be rounded twice. */
 static int get_angle(parser *P, int line, const char *key, const char *v, range r, double *out)
 {
+    size_t n = strlen(v);
+    if (n > 3 && !strcmp(v + n - 3, "rad")) {
+        char buf[64];
+        size_t m = n - 3;
+        while (m > 0 && (v[m - 1] == ' ' || v[m - 1] == '\t'))
+            m--;
+        if (m == 0 || m >= sizeof buf)
+            return key_fail(P, line, key, "expected an angle in degrees or \"N rad\", got \"%s\"", v);
+        memcpy(buf, v, m);
+        buf[m] = 0;
+        double rad;
+        range rr = r;
+        rr.lo = r.lo * (PI / 180.0);
+        rr.hi = r.hi * (PI / 180.0);
+        if (get_real(P, line, key, buf, rr, &rad))
+            return 1;
+        *out = rad;
+        return 0;
+    }
     double deg = 0;
     if (get_real(P, line, key, v, r, &deg))
         return 1;
@@ -292,17 +313,23 @@ static int get_angle(parser *P, int line, const char *key, const char *v, range 
     return 0;
 }
 
-/* "min, max" with 0 <= min <= max */
-static int get_min_max(parser *P, int line, const char *key, const char *v, double *lo, double *hi)
+/* "min, max" with 0 <= min <= max (any sign when `signed_ok`) */
+static int get_min_max_r(parser *P, int line, const char *key, const char *v, int signed_ok, double *lo,
+                         double *hi)
 {
     double mm[2] = {0, 0};
-    if (get_numbers(P, line, key, v, 2, "min, max", R_GE(0), mm))
+    if (get_numbers(P, line, key, v, 2, "min, max", signed_ok ? R_ANY : R_GE(0), mm))
         return 1;
     if (mm[0] > mm[1])
         return key_fail(P, line, key, "min (%.15g) is greater than max (%.15g)", mm[0], mm[1]);
     *lo = mm[0];
     *hi = mm[1];
     return 0;
+}
+
+static int get_min_max(parser *P, int line, const char *key, const char *v, double *lo, double *hi)
+{
+    return get_min_max_r(P, line, key, v, 0, lo, hi);
 }
 
 /* "t:value, t:value, ..." — colour (is_color) or scalar stops in range r. */
@@ -776,7 +803,8 @@ static int set_emitter(parser *P, section *s, int id, const char *k, const char 
     case K_EM_GRAVITY_MULT: return get_real(P, ln, k, v, R_ANY, &e->gravity_mult);
     case K_EM_WEIGHT: return get_real(P, ln, k, v, R_ANY, &e->weight);
     case K_EM_SLOWING: return get_real(P, ln, k, v, R_GE(0), &e->slowing);
-    case K_EM_OSC_OMEGA: return get_min_max(P, ln, k, v, &e->osc_omega_min, &e->osc_omega_max);
+    case K_EM_OSC_OMEGA: /* negative: the flame sways the other way first */
+        return get_min_max_r(P, ln, k, v, 1, &e->osc_omega_min, &e->osc_omega_max);
     case K_EM_OSC_AMPLITUDE: return get_min_max(P, ln, k, v, &e->osc_amp_min, &e->osc_amp_max);
     case K_EM_OSC_DECAY: return get_real(P, ln, k, v, R_GE(0), &e->osc_decay);
     case K_EM_OSC_FAITHFUL: return get_bool(P, ln, k, v, &e->osc_faithful);
@@ -876,6 +904,11 @@ static int set_drawing(parser *P, section *s, int id, const char *k, const char 
         if (get_enum(P, ln, k, v, sk_blend_names, &i)) return 1;
         g->blend = (isk_blend)i;
         return 0;
+    case K_DRAW_SPRITE:
+        if (get_enum(P, ln, k, v, sk_sprite_names, &i)) return 1;
+        g->sprite = (isk_sprite_kind)i;
+        return 0;
+    case K_DRAW_SIZE: return get_real(P, ln, k, v, R_GT_LE(0, 1e9), &g->size);
     }
     return 0;
 }
@@ -1129,7 +1162,7 @@ static int finish_section(parser *P, int si)
     case SK_DRAWING: {
         isk_drawing_def *g = &d->drawings[s->index];
         if (!SEEN(s, K_DRAW_KIND)) {
-            int k = scv_lookup(s->name, sk_drawing_names, 3);
+            int k = scv_lookup(s->name, sk_drawing_names, ISK_DRAWING_KIND_COUNT);
             if (k < 0 && SEEN(s, K_DRAW_POINTS))
                 k = ISK_DRAWING_POLYLINE;
             else if (k < 0 && SEEN(s, K_DRAW_RADIUS))
@@ -1137,17 +1170,19 @@ static int finish_section(parser *P, int si)
             else if (k < 0 && SEEN(s, K_DRAW_TEXT))
                 k = ISK_DRAWING_TEXT;
             if (k < 0)
-                return key_fail(P, s->line, NULL, "needs kind = polyline, disc or text");
+                return key_fail(P, s->line, NULL, "needs kind = polyline, polygon, disc, sprite or text");
             g->kind = (isk_drawing_kind)k;
         }
         if (check_kinds(P, s, g->kind, "kind", sk_drawing_names, "drawing"))
             return 1;
-        if (g->kind == ISK_DRAWING_POLYLINE)
+        if (g->kind == ISK_DRAWING_POLYLINE || g->kind == ISK_DRAWING_POLYGON)
             return require(P, s, K_DRAW_POINTS, "points", "x0, y0, x1, y1, ...");
         if (require(P, s, K_DRAW_POSITION, "position", "x, y"))
             return 1;
         if (g->kind == ISK_DRAWING_DISC)
             return require(P, s, K_DRAW_RADIUS, "radius", "the disc's radius");
+        if (g->kind == ISK_DRAWING_SPRITE)
+            return require(P, s, K_DRAW_SIZE, "size", "the sprite's diameter");
         return require(P, s, K_DRAW_TEXT, "text", "what to write");
     }
     case SK_CLICK:
