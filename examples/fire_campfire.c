@@ -49,15 +49,17 @@ static void add_log(isk_effect_def *d, double x0, double y0, double x1, double y
     q->npoints = 4;
     q->color = col;
     for (int k = 0; k < 2; k++) {
-        isk_drawing_def *end = isk_effect_def_add_drawing(d, "log end", ISK_DRAWING_DISC);
-        end->x = k ? x1 : x0;
-        end->y = k ? y1 : y0;
-        end->r = r;
-        end->color = isk_rgba(90, 60, 40, 255);
-        isk_drawing_def *core = isk_effect_def_add_drawing(d, "log core", ISK_DRAWING_DISC);
-        *core = *end;
-        core->r = 0.55 * r;
-        core->color = isk_rgba(60, 38, 25, 255);
+        /* An end disc and its darker core.  (Each add may move the array, so
+         * a pointer from one add is never used after the next.) */
+        const double rr[2] = {r, 0.55 * r};
+        const isk_color cc[2] = {isk_rgba(90, 60, 40, 255), isk_rgba(60, 38, 25, 255)};
+        for (int j = 0; j < 2; j++) {
+            isk_drawing_def *disc = isk_effect_def_add_drawing(d, j ? "log core" : "log end", ISK_DRAWING_DISC);
+            disc->x = k ? x1 : x0;
+            disc->y = k ? y1 : y0;
+            disc->r = rr[j];
+            disc->color = cc[j];
+        }
     }
 }
 

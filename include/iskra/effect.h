@@ -282,7 +282,10 @@ typedef struct isk_effect_def {
 void isk_effect_def_init(isk_effect_def *d);
 /* Frees the arrays (and drawing points); the struct can be init'ed again. */
 void isk_effect_def_free(isk_effect_def *d);
-/* Appends an item with defaults; return its index, or -1 (too many / no memory). */
+/* Appends an item with defaults; return its index, or -1 / NULL (too many, no
+ * memory).  The arrays grow by realloc: a pointer returned by one add is
+ * invalid after the next add of the same kind (keep indices, or finish the
+ * item first). */
 int isk_effect_def_add_force(isk_effect_def *d, const char *name, isk_force_kind kind);
 int isk_effect_def_add_deflector(isk_effect_def *d, const char *name, isk_deflector seg);
 isk_emitter_def *isk_effect_def_add_emitter(isk_effect_def *d, const char *name);

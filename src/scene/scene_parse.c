@@ -479,7 +479,9 @@ static int open_header(parser *P, const header *h)
     section s;
     memset(&s, 0, sizeof s);
     s.type = (sk_section)t;
-    snprintf(s.name, sizeof s.name, "%s", name);
+    size_t nlen = strnlen(name, sizeof s.name - 1); /* names were checked shorter already */
+    memcpy(s.name, name, nlen);
+    s.name[nlen] = 0;
     s.line = h->line;
     s.index = -1;
     isk_effect_def *d = P->d;
