@@ -14,6 +14,8 @@
  *   iskra/sinlut.h   sine lookup table     iskra/gradient.h  baked colour/scalar ramps
  *   iskra/sprite.h   baked round sprites   iskra/deflector.h  bouncing segments
  *   iskra/shape.h    spawn shapes, velocity generators
+ *   iskra/timestep.h fixed-step accumulator  iskra/effect.h  whole effects (stage lists)
+ *   iskra/scene.h    INI scene files      iskra/presets.h  fire, smoke, sparks, ...
  * The SDL2 window lives in a separate library: #include "iskra/sdl.h" and
  * link libiskra-sdl (pkg-config iskra-sdl).
  */
@@ -41,5 +43,9 @@
 #include "iskra/sprite.h"
 #include "iskra/deflector.h"
 #include "iskra/shape.h"
+#include "iskra/timestep.h"
+#include "iskra/effect.h"
+#include "iskra/scene.h"
+#include "iskra/presets.h"
 
 #endif
