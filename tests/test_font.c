@@ -1,0 +1,132 @@
+/* The built-in bitmap font: metrics, glyph sanity, clipping, reference images. */
+#include <criterion/criterion.h>
+#include <limits.h>
+#include <string.h>
+
+#include "iskra/text.h"
+#include "refimg.h"
+
+Test(font, metrics)
+{
+    cr_assert_eq(isk_text_width("", 1), 0);
+    cr_assert_eq(isk_text_height("", 1), 0);
+    cr_assert_eq(isk_text_width(NULL, 1), 0);
+    cr_assert_eq(isk_text_height(NULL, 3), 0);
+    /* A cell is 6 x 9 at scale 1, trailing spacing included. */
+    cr_assert_eq(isk_text_width("A", 1), 6);
+    cr_assert_eq(isk_text_height("A", 1), 9);
+    cr_assert_eq(isk_text_width("A", 3), 18);
+    cr_assert_eq(isk_text_height("A", 3), 27);
+    cr_assert_eq(isk_text_width("FPS: 60", 2), 7 * 12);
+    /* Multi-line: the widest line, and one cell height per line. */
+    cr_assert_eq(isk_text_width("ab\nabcd\nc", 1), 24);
+    cr_assert_eq(isk_text_height("ab\nabcd\nc", 1), 27);
+    cr_assert_eq(isk_text_height("x\n", 1), 18);
+    cr_assert_eq(isk_text_width("x", 0), 0);
+    /* Absurd sizes saturate instead of overflowing. */
+    cr_assert_eq(isk_text_width("abc", INT_MAX), INT_MAX);
+    cr_assert_eq(isk_text_height("abc", INT_MAX / 2), INT_MAX);
+}
+
+static int glyph_pixels(const uint8_t *g)
+{
+    int n = 0;
+    for (int r = 0; r < ISK_FONT_GLYPH_H; r++)
+        for (int b = 0; b < 8; b++)
+            n += (g[r] >> b) & 1;
+    return n;
+}
+
+Test(font, glyphs_fit_their_box_and_differ)
+{
+    cr_assert_eq(glyph_pixels(isk_font_glyph(' ')), 0);
+    for (int ch = 33; ch <= 126; ch++) {
+        const uint8_t *g = isk_font_glyph((unsigned char)ch);
+        cr_assert_gt(glyph_pixels(g), 0, "glyph %d is empty", ch);
+        for (int r = 0; r < ISK_FONT_GLYPH_H; r++)
+            cr_assert_eq(g[r] & ~0x1Fu, 0, "glyph %d row %d outside the 5-pixel box", ch, r);
+        for (int other = 33; other < ch; other++)
+            cr_assert(memcmp(g, isk_font_glyph((unsigned char)other), ISK_FONT_GLYPH_H) != 0,
+                      "glyphs %d and %d are identical", ch, other);
+    }
+    /* Bytes outside 32..126 share the box glyph. */
+    const uint8_t *box = isk_font_glyph(127);
+    cr_assert_gt(glyph_pixels(box), 0);
+    cr_assert(memcmp(box, isk_font_glyph(200), ISK_FONT_GLYPH_H) == 0);
+    cr_assert(memcmp(box, isk_font_glyph(1), ISK_FONT_GLYPH_H) == 0);
+}
+
+Test(font, text_stays_inside_its_measured_box)
+{
+    isk_canvas c;
+    cr_assert_eq(isk_canvas_init(&c, 200, 80), ISK_OK);
+    isk_canvas_fill(&c, ISK_BLACK);
+    const char *s = "Hello, iskra!\nline 2 {}|~";
+    int x = 13, y = 7, scale = 2;
+    isk_draw_text(&c, x, y, s, scale, ISK_WHITE, ISK_BLEND_OVER);
+    int w = isk_text_width(s, scale), h = isk_text_height(s, scale), lit = 0;
+    for (int py = 0; py < c.height; py++)
+        for (int px = 0; px < c.width; px++)
+            if (isk_canvas_get(&c, px, py).r) {
+                lit++;
+                cr_assert(px >= x && px < x + w && py >= y && py < y + h, "pixel (%d,%d) outside", px, py);
+            }
+    cr_assert_gt(lit, 100);
+    isk_canvas_free(&c);
+}
+
+Test(font, clipping_with_extreme_coordinates)
+{
+    uint8_t mem[40 * 4 * 30];
+    memset(mem, 0xAB, sizeof mem);
+    isk_canvas big, c;
+    cr_assert_eq(isk_canvas_wrap(&big, mem, 40, 30, 40 * 4), ISK_OK);
+    cr_assert_eq(isk_canvas_view(&c, &big, 5, 5, 30, 20), ISK_OK);
+    const int xs[] = {INT_MIN, -1000, -7, 0, 25, 29, 1000, INT_MAX};
+    const int scales[] = {1, 3, 1000, INT_MAX};
+    for (size_t i = 0; i < sizeof xs / sizeof xs[0]; i++)
+        for (size_t j = 0; j < sizeof xs / sizeof xs[0]; j++)
+            for (size_t k = 0; k < sizeof scales / sizeof scales[0]; k++)
+                isk_draw_text(&c, xs[i], xs[j], "W@#\n%&", scales[k], ISK_RED, ISK_BLEND_ADD);
+    isk_draw_text(&c, 0, 0, NULL, 1, ISK_RED, ISK_BLEND_OVER);
+    isk_draw_text(&c, 0, 0, "x", 0, ISK_RED, ISK_BLEND_OVER);
+    /* Nothing outside the view changed. */
+    for (int y = 0; y < 30; y++)
+        for (int x = 0; x < 40; x++) {
+            int inside = x >= 5 && x < 35 && y >= 5 && y < 25;
+            if (!inside)
+                cr_assert_eq(mem[(y * 40 + x) * 4], 0xAB, "(%d,%d) touched", x, y);
+        }
+}
+
+Test(refimg, text_font_table)
+{
+    isk_canvas c;
+    cr_assert_eq(isk_canvas_init(&c, 400, 130), ISK_OK);
+    isk_canvas_fill(&c, ISK_BLACK);
+    char line[33];
+    for (int row = 0; row < 3; row++) {
+        int n = 0;
+        for (int ch = 32 + 32 * row; ch < 32 + 32 * (row + 1) && ch < 127; ch++)
+            line[n++] = (char)ch;
+        line[n] = 0;
+        isk_draw_text(&c, 4, 4 + 11 * row, line, 1, ISK_WHITE, ISK_BLEND_OVER);
+        isk_draw_text(&c, 4, 40 + 22 * row, line, 2, ISK_WHITE, ISK_BLEND_OVER);
+    }
+    cr_assert(refimg_check("text_font_table", &c));
+    isk_canvas_free(&c);
+}
+
+Test(refimg, text_scales)
+{
+    isk_canvas c;
+    cr_assert_eq(isk_canvas_init(&c, 520, 110), ISK_OK);
+    isk_canvas_fill(&c, isk_rgba(20, 40, 90, 255));
+    int y = 4;
+    for (int s = 1; s <= 4; s++) {
+        isk_draw_text(&c, 4, y, "iskra 0.1 (O0 Il1 5S)", s, isk_rgba(255, 220, 0, 200), ISK_BLEND_OVER);
+        y += isk_text_height("x", s) + 2;
+    }
+    cr_assert(refimg_check("text_scales", &c));
+    isk_canvas_free(&c);
+}
