@@ -89,6 +89,9 @@ endif
 LIBS_SDL  = $(PKG_SDL_LIBS)
 
 .PHONY: all lib examples tests benches test test-run run bench install uninstall clean deps help fuzz
+# Objects are intermediate files of the program rules; keep them (no
+# deletion noise, no rebuilds).
+.SECONDARY:
 .DEFAULT_GOAL := all
 
 all: lib $(TOOL) examples tests benches
