@@ -91,8 +91,9 @@ isk_status isk_ini_parse_string(const char *text, const char *name, isk_ini_key_
     return ISK_OK;
 }
 
-isk_status isk_ini_parse_file(const char *path, isk_ini_key_fn fn, void *user, isk_error *err)
+isk_status isk_ini_read_file(const char *path, char **text, isk_error *err)
 {
+    *text = NULL;
     if (!path)
         return isk_error_set(err, ISK_ERR_NULL, "scene: NULL path");
     FILE *f = fopen(path, "rb");
@@ -108,25 +109,35 @@ isk_status isk_ini_parse_file(const char *path, isk_ini_key_fn fn, void *user, i
     fclose(f);
     if (read_error) {
         free(buf);
-        return isk_error_set(err, ISK_ERR_IO, "%s: read error", path);
+        return isk_error_set(err, ISK_ERR_IO, "%s: read error (is it a directory?)", path);
     }
     if (n > ISK_INI_MAX_BYTES) {
         free(buf);
         return isk_error_set(err, ISK_ERR_SIZE, "%s: file larger than %u bytes", path, ISK_INI_MAX_BYTES);
     }
-    if (memchr(buf, 0, n)) {
+    const char *nul = memchr(buf, 0, n);
+    if (nul) {
         /* A NUL byte would silently end the text early: refuse binary input. */
-        size_t at = (size_t)((char *)memchr(buf, 0, n) - buf);
         int line = 1;
-        for (size_t i = 0; i < at; i++)
-            line += buf[i] == '\n';
+        for (const char *q = buf; q < nul; q++)
+            line += *q == '\n';
         free(buf);
         isk_ini_error(err, path, line, "contains a NUL byte (not a text file?)");
         return ISK_ERR_FORMAT;
     }
     buf[n] = 0;
-    isk_status s = isk_ini_parse_string(buf, path, fn, user, err);
-    free(buf);
+    *text = buf;
+    return ISK_OK;
+}
+
+isk_status isk_ini_parse_file(const char *path, isk_ini_key_fn fn, void *user, isk_error *err)
+{
+    char *text;
+    isk_status s = isk_ini_read_file(path, &text, err);
+    if (s != ISK_OK)
+        return s;
+    s = isk_ini_parse_string(text, path, fn, user, err);
+    free(text);
     return s;
 }
 

@@ -31,7 +31,10 @@ typedef int (*isk_ini_key_fn)(void *user, const char *section, const char *key, 
 /* `text` is NUL-terminated; `name` is used in messages (a path or "<string>"). */
 isk_status isk_ini_parse_string(const char *text, const char *name, isk_ini_key_fn fn, void *user,
                                 isk_error *err);
-/* Reads the whole file (at most ISK_INI_MAX_BYTES) and parses it. */
+/* Reads a whole text file (at most ISK_INI_MAX_BYTES, no NUL bytes) into a
+ * malloc'd NUL-terminated string for the caller to free. */
+isk_status isk_ini_read_file(const char *path, char **text, isk_error *err);
+/* Reads the whole file (as isk_ini_read_file) and parses it. */
 isk_status isk_ini_parse_file(const char *path, isk_ini_key_fn fn, void *user, isk_error *err);
 
 /* Formats "NAME:LINE: message" into err with ISK_ERR_FORMAT; returns 1 so a

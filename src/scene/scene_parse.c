@@ -1390,37 +1390,10 @@ isk_status isk_scene_load_file(isk_effect_def *out, const char *path, isk_error 
     if (!out)
         return isk_error_set(err, ISK_ERR_NULL, "scene: NULL definition");
     isk_effect_def_init(out);
-    if (!path)
-        return isk_error_set(err, ISK_ERR_NULL, "scene: NULL path");
-    FILE *f = fopen(path, "rb");
-    if (!f)
-        return isk_error_set(err, ISK_ERR_IO, "%s: %s", path, strerror(errno));
-    char *buf = malloc(ISK_INI_MAX_BYTES + 1);
-    if (!buf) {
-        fclose(f);
-        return isk_error_set(err, ISK_ERR_NOMEM, "%s: out of memory", path);
-    }
-    size_t n = fread(buf, 1, ISK_INI_MAX_BYTES + 1, f);
-    int bad = ferror(f);
-    fclose(f);
-    if (bad) {
-        free(buf);
-        return isk_error_set(err, ISK_ERR_IO, "%s: read error (is it a directory?)", path);
-    }
-    if (n > ISK_INI_MAX_BYTES) {
-        free(buf);
-        return isk_error_set(err, ISK_ERR_SIZE, "%s: file larger than %u bytes", path, ISK_INI_MAX_BYTES);
-    }
-    const char *nul = memchr(buf, 0, n);
-    if (nul) {
-        int line = 1;
-        for (const char *q = buf; q < nul; q++)
-            line += *q == '\n';
-        free(buf);
-        isk_ini_error(err, path, line, "contains a NUL byte (not a text file?)");
-        return ISK_ERR_FORMAT;
-    }
-    buf[n] = 0;
+    char *buf;
+    isk_status rs = isk_ini_read_file(path, &buf, err);
+    if (rs != ISK_OK)
+        return rs;
     isk_status s = isk_scene_load_string(out, buf, path, err);
     free(buf);
     return s;
