@@ -40,7 +40,7 @@ endif
 
 # -ffp-contract=off: no fused multiply-add, so the same source gives the same
 # bits everywhere (the thesis trajectories are reproduced bit for bit).
-# Never -ffast-math.
+# Never fast-math (it reassociates and breaks bit-exactness).
 CSTD    := -std=c11 -D_POSIX_C_SOURCE=200809L
 CFLAGS_BASE := $(CSTD) $(OPT) -Wall -Wextra -Wpedantic -ffp-contract=off -fno-math-errno \
                -fPIC $(WFLAGS) $(SANFLAGS) -Iinclude -Isrc
