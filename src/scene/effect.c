@@ -564,8 +564,6 @@ static isk_status build(isk_effect *e, isk_error *err)
     return ISK_OK;
 }
 
-static int cmp_order(const void *a, const void *b, void *ctx);
-
 isk_status isk_effect_create(isk_effect **out, const isk_effect_def *def, isk_error *err)
 {
     if (!out || !def)
@@ -610,19 +608,12 @@ isk_status isk_effect_create(isk_effect **out, const isk_effect_def *def, isk_er
         }
         e->draw_order[j] = i;
     }
-    (void)cmp_order;
     if ((s = build(e, err)) != ISK_OK) {
         isk_effect_destroy(e);
         return s;
     }
     *out = e;
     return ISK_OK;
-}
-
-static int cmp_order(const void *a, const void *b, void *ctx)
-{
-    (void)a; (void)b; (void)ctx;
-    return 0;
 }
 
 void isk_effect_destroy(isk_effect *e)
