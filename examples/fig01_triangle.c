@@ -20,7 +20,7 @@ int main(int argc, char **argv)
     isk_canvas_fill(&c, ISK_WHITE);
 
     const double path[] = {250, 200, 175, 300, 325, 300, 250, 200};
-    isk_stroke_polyline(&c, path, 4, 0, ISK_BLACK, ISK_BLEND_OVER);
+    isk_stroke_polyline_hairline(&c, path, 4, 0, ISK_BLACK, ISK_BLEND_OVER);
 
     int rc = example_show(&c, &o);
     isk_canvas_free(&c);

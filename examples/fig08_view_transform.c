@@ -28,7 +28,7 @@ int main(int argc, char **argv)
             path[2 * k] = local[k % 3][0] + shift[t][0];
             path[2 * k + 1] = local[k % 3][1] + shift[t][1];
         }
-        isk_world_polyline(&c, &v, path, 4, 0, ISK_GREEN, ISK_BLEND_OVER);
+        isk_world_polyline_hairline(&c, &v, path, 4, 0, ISK_GREEN, ISK_BLEND_OVER);
     }
 
     int rc = example_show(&c, &o);

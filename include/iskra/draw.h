@@ -94,6 +94,17 @@ void isk_stroke_polyline(isk_canvas *c, const double *xy, int n, int closed,
                          isk_color color, isk_blend mode);
 void isk_fill_circle_aa(isk_canvas *c, double cx, double cy, double r, isk_color color, isk_blend mode);
 
+/* Anti-aliased hairlines, the browser's canvas stroke() at width 1 (faithful
+ * mode): Chrome's Skia draws strokes no wider than a pixel as hairlines,
+ * one pixel of coverage per step along the major axis split between the two
+ * pixels nearest the line's centre (a diagonal stays 2 px wide; the
+ * exact-area isk_stroke_line spreads it over 3).  Each polyline segment is
+ * drawn on its own: no joins, no caps.  The rule is in src/raster/hairline.c. */
+void isk_stroke_hairline(isk_canvas *c, double x0, double y0, double x1, double y1, isk_color color,
+                         isk_blend mode);
+void isk_stroke_polyline_hairline(isk_canvas *c, const double *xy, int n, int closed, isk_color color,
+                                  isk_blend mode);
+
 /* Coverage of the coverage dot at (x, y) for the 2x2 block of pixels whose
  * top-left is (floor(x), floor(y)): w[0] top-left, w[1] top-right,
  * w[2] bottom-left, w[3] bottom-right, each 0..255, summing to exactly 255.

@@ -239,6 +239,7 @@ typedef struct isk_drawing_def {
     isk_blend blend;
     isk_sprite_kind sprite;    /* SPRITE */
     double size;               /* SPRITE diameter (world units, or pixels with `pixels`) */
+    int hairline;              /* POLYLINE: the browser's hairline (isk_stroke_polyline_hairline) */
 } isk_drawing_def;
 
 typedef enum isk_view_def_kind { ISK_VIEWDEF_WINDOW = 0, ISK_VIEWDEF_CAMERA } isk_view_def_kind;

@@ -70,5 +70,8 @@ void isk_world_text(isk_canvas *c, const isk_view *v, double x, double y, const 
 /* Anti-aliased width-1 path through world points (xy = x0,y0,x1,y1,...). */
 void isk_world_polyline(isk_canvas *c, const isk_view *v, const double *xy, int n, int closed,
                         isk_color color, isk_blend mode);
+/* The same path as the browser's hairlines (isk_stroke_polyline_hairline). */
+void isk_world_polyline_hairline(isk_canvas *c, const isk_view *v, const double *xy, int n, int closed,
+                                 isk_color color, isk_blend mode);
 
 #endif

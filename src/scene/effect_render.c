@@ -77,8 +77,12 @@ static void draw_drawing(isk_effect *e, isk_canvas *c, const isk_view *v, const 
         break;
     }
     case ISK_DRAWING_POLYLINE:
-        if (s->pixels)
+        if (s->pixels && s->hairline)
+            isk_stroke_polyline_hairline(c, s->points, s->npoints, s->closed, s->color, s->blend);
+        else if (s->pixels)
             isk_stroke_polyline(c, s->points, s->npoints, s->closed, s->color, s->blend);
+        else if (s->hairline)
+            isk_world_polyline_hairline(c, v, s->points, s->npoints, s->closed, s->color, s->blend);
         else
             isk_world_polyline(c, v, s->points, s->npoints, s->closed, s->color, s->blend);
         break;

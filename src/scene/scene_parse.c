@@ -882,6 +882,7 @@ static int set_drawing(parser *P, section *s, int id, const char *k, const char 
         return 0;
     }
     case K_DRAW_CLOSED: return get_bool(P, ln, k, v, &g->closed);
+    case K_DRAW_HAIRLINE: return get_bool(P, ln, k, v, &g->hairline);
     case K_DRAW_POSITION: {
         isk_vec2 p;
         if (get_vec(P, ln, k, v, &p)) return 1;

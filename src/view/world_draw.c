@@ -50,8 +50,9 @@ void isk_world_text(isk_canvas *c, const isk_view *v, double x, double y, const 
     isk_draw_text(c, (int)X, top, s, scale, color, mode);
 }
 
-void isk_world_polyline(isk_canvas *c, const isk_view *v, const double *xy, int n, int closed,
-                        isk_color color, isk_blend mode)
+/* Transforms the points (on the stack when few) and strokes them. */
+static void world_path(isk_canvas *c, const isk_view *v, const double *xy, int n, int closed, isk_color color,
+                       isk_blend mode, int hairline)
 {
     if (!xy || n < 2)
         return;
@@ -61,7 +62,22 @@ void isk_world_polyline(isk_canvas *c, const isk_view *v, const double *xy, int 
         return;
     for (int i = 0; i < n; i++)
         isk_view_to_screen(v, xy[2 * i], xy[2 * i + 1], &s[2 * i], &s[2 * i + 1]);
-    isk_stroke_polyline(c, s, n, closed, color, mode);
+    if (hairline)
+        isk_stroke_polyline_hairline(c, s, n, closed, color, mode);
+    else
+        isk_stroke_polyline(c, s, n, closed, color, mode);
     if (s != stack)
         free(s);
+}
+
+void isk_world_polyline(isk_canvas *c, const isk_view *v, const double *xy, int n, int closed,
+                        isk_color color, isk_blend mode)
+{
+    world_path(c, v, xy, n, closed, color, mode, 0);
+}
+
+void isk_world_polyline_hairline(isk_canvas *c, const isk_view *v, const double *xy, int n, int closed,
+                                 isk_color color, isk_blend mode)
+{
+    world_path(c, v, xy, n, closed, color, mode, 1);
 }
