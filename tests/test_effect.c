@@ -322,3 +322,38 @@ Test(effect, validation_messages_name_the_item)
     cr_assert_eq(isk_effect_create(NULL, &d, &err), ISK_ERR_NULL);
     isk_effect_def_free(&d);
 }
+
+Test(effect, oscillation_random_phase_starts_without_a_jump)
+{
+    isk_effect_def d;
+    isk_effect_def_init(&d);
+    d.dt = 0.001;
+    isk_emitter_def *e = isk_effect_def_add_emitter(&d, "flame");
+    e->source = ISK_SOURCE_LAYER;
+    e->rect[0] = 0; e->rect[1] = 0; e->rect[2] = 0; e->rect[3] = 0; /* all at the origin, at rest */
+    e->count = 2000;
+    e->osc_omega_min = 6;
+    e->osc_omega_max = 6;
+    e->osc_amp_min = 0.5;
+    e->osc_amp_max = 0.5;
+    e->osc_use_table = 0;
+    for (int random = 0; random < 2; random++) {
+        e->osc_random_phase = random;
+        isk_effect *fx = make(&d);
+        isk_effect_step(fx);
+        const isk_particles *p = isk_effect_particles(fx, 0);
+        int left = 0, right = 0;
+        for (size_t i = 0; i < p->count; i++) {
+            /* One step moves by A*(sin(ph + w*dt) - sin(ph)) <= A*w*dt = 0.003. */
+            cr_assert_leq(fabs(p->x[i]), 0.5 * 6 * 0.001 + 1e-12, "particle %zu jumped to %g", i, p->x[i]);
+            left += p->x[i] < 0;
+            right += p->x[i] > 0;
+        }
+        if (random)
+            cr_assert(left > 800 && right > 800, "sway directions %d left, %d right", left, right);
+        else
+            cr_assert(left == 0 && right == 2000, "phase 0: all sway right first (%d, %d)", left, right);
+        isk_effect_destroy(fx);
+    }
+    isk_effect_def_free(&d);
+}

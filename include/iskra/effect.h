@@ -198,6 +198,8 @@ typedef struct isk_emitter_def {
     double osc_decay;          /* amplitude *= max(0, 1 - decay*dt) */
     int osc_faithful;          /* 1: also add the offset change to vx (the thesis code) */
     int osc_use_table;         /* 1: sine lookup table (iskra/sinlut.h), 0: libm sin */
+    int osc_random_phase;      /* 1: each particle starts at a random phase (offset preset to
+                                  A*sin(phase), so no jump); 0: phase 0 (the thesis, presumably) */
     isk_integrator integrator; /* default: the effect's */
     int substeps;              /* default: the effect's */
 

@@ -373,13 +373,20 @@ isk_status fx_group_sync(fx_group *g)
     return ISK_OK;
 }
 
-void fx_group_init_osc(fx_group *g, size_t i)
+void fx_group_init_osc(isk_effect *e, fx_group *g, size_t i)
 {
     const isk_emitter_def *em = g->def;
     g->osc_omega[i] = isk_rng_range(&g->rng, em->osc_omega_min, em->osc_omega_max);
     g->osc_amp[i] = isk_rng_range(&g->rng, em->osc_amp_min, em->osc_amp_max);
     g->osc_phase[i] = 0.0;
     g->osc_off[i] = 0.0;
+    if (em->osc_random_phase) {
+        /* The offset starts where the sine is, so the first step moves the
+         * particle by the change only (the same sine as the stage). */
+        double ph = isk_rng_range(&g->rng, 0.0, 6.283185307179586);
+        g->osc_phase[i] = ph;
+        g->osc_off[i] = g->osc_amp[i] * (em->osc_use_table ? isk_sinlut_floor(&e->sin_table, ph) : sin(ph));
+    }
 }
 
 size_t fx_group_cull(fx_group *g)
@@ -446,7 +453,7 @@ static isk_status fire_explosion(isk_effect *e, fx_group *g, isk_explosion kind,
         }
     s = fx_group_sync(g);
     for (size_t i = before; s == ISK_OK && g->has_osc && i < p->count; i++)
-        fx_group_init_osc(g, i);
+        fx_group_init_osc(e, g, i);
     return s;
 }
 
@@ -463,7 +470,7 @@ static isk_status populate(isk_effect *e, fx_group *g)
             p->life[0] = em->life;
             s = fx_group_sync(g);
             if (s == ISK_OK && g->has_osc)
-                fx_group_init_osc(g, 0);
+                fx_group_init_osc(e, g, 0);
         }
         break;
     case ISK_SOURCE_LAYER: {
@@ -475,7 +482,7 @@ static isk_status populate(isk_effect *e, fx_group *g)
             p->m[i] = em->mass;
             p->life[i] = em->life;
             if (g->has_osc)
-                fx_group_init_osc(g, i);
+                fx_group_init_osc(e, g, i);
         }
         break;
     }
@@ -836,7 +843,7 @@ static isk_status release_due(isk_effect *e, fx_group *g)
         for (size_t i = before; i < g->store.count; i++) {
             g->store.life[i] = em->life;
             if (g->has_osc)
-                fx_group_init_osc(g, i);
+                fx_group_init_osc(e, g, i);
         }
     }
     return ISK_OK;

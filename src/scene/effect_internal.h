@@ -114,8 +114,9 @@ void fx_free_ramps(fx_group *g);
 void fx_run_stages(isk_effect *e, fx_group *g, size_t begin, size_t end, double h);
 /* Grows the oscillation arrays to the store's capacity (call after adding). */
 isk_status fx_group_sync(fx_group *g);
-/* Initial oscillation state of particle i (draws omega, then amplitude). */
-void fx_group_init_osc(fx_group *g, size_t i);
+/* Initial oscillation state of particle i (draws omega, then amplitude,
+ * then with osc_random_phase the phase). */
+void fx_group_init_osc(isk_effect *e, fx_group *g, size_t i);
 /* Removes particles with age >= life from the store and the parallel
  * arrays, keeping the order of the others. */
 size_t fx_group_cull(fx_group *g);

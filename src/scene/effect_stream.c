@@ -12,8 +12,8 @@
  * Random draws per new particle, in this order: position (the shape's
  * draws, iskra/shape.h), velocity (the generator's), mass (one uniform, only
  * with a mass range), life (one, only with a life range), oscillation
- * (omega then amplitude, only with oscillation), jitter (one, only in the
- * thesis jitter mode). */
+ * (omega then amplitude, then the phase with osc_random_phase; only with
+ * oscillation), jitter (one, only in the thesis jitter mode). */
 #include <math.h>
 
 #include "effect_internal.h"
@@ -133,7 +133,7 @@ static isk_status birth(isk_effect *e, fx_group *g, double age, fx_advance_fn ad
     if ((st = fx_group_sync(g)) != ISK_OK)
         return st;
     if (g->has_osc)
-        fx_group_init_osc(g, i);
+        fx_group_init_osc(e, g, i);
     switch (em->birth) {
     case ISK_BIRTH_BACKDATE:
         advance(e, g, i, age);

@@ -12,7 +12,7 @@ static const sk_key scene_keys[] = {
     {"dt", K_SCENE_DT, 0},                 {"substeps", K_SCENE_SUBSTEPS, 0},
     {"integrator", K_SCENE_INTEGRATOR, 0}, {"seed", K_SCENE_SEED, 0},
     {"speed_divisor", K_SCENE_SPEED_DIVISOR, 0}, {"centre", K_SCENE_CENTRE, 0},
-    {"frames", K_SCENE_FRAMES, 0},
+    {"frames", K_SCENE_FRAMES, 0},         {"fidelity", K_SCENE_FIDELITY, 0},
 };
 
 /* view "kinds": window (0), camera (1) */
@@ -100,6 +100,8 @@ static const sk_key emitter_keys[] = {
     {"osc_decay", K_EM_OSC_DECAY, 0},
     {"osc_faithful", K_EM_OSC_FAITHFUL, 0},
     {"osc_table", K_EM_OSC_TABLE, 0},
+    {"osc_random_phase", K_EM_OSC_RANDOM_PHASE, 0},
+    {"slow_faithful", K_EM_SLOW_FAITHFUL, 0},
     {"integrator", K_EM_INTEGRATOR, 0},
     {"substeps", K_EM_SUBSTEPS, 0},
     {"draw", K_EM_DRAW, 0},

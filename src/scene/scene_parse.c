@@ -583,6 +583,10 @@ static int set_scene(parser *P, int id, const char *k, const char *v, int ln)
         if (get_enum(P, ln, k, v, sk_fidelity_names, &i)) return 1;
         d->centre = (isk_fidelity)i;
         return 0;
+    case K_SCENE_FIDELITY:
+        if (get_enum(P, ln, k, v, sk_fidelity_names, &i)) return 1;
+        d->fidelity = (isk_fidelity)i;
+        return 0;
     case K_SCENE_FRAMES:
         if (get_int(P, ln, k, v, 0, MAX_FRAMES, &x)) return 1;
         d->frames = (long)x;
@@ -811,6 +815,8 @@ static int set_emitter(parser *P, section *s, int id, const char *k, const char 
     case K_EM_OSC_DECAY: return get_real(P, ln, k, v, R_GE(0), &e->osc_decay);
     case K_EM_OSC_FAITHFUL: return get_bool(P, ln, k, v, &e->osc_faithful);
     case K_EM_OSC_TABLE: return get_bool(P, ln, k, v, &e->osc_use_table);
+    case K_EM_OSC_RANDOM_PHASE: return get_bool(P, ln, k, v, &e->osc_random_phase);
+    case K_EM_SLOW_FAITHFUL: return get_bool(P, ln, k, v, &e->slow_faithful);
     case K_EM_INTEGRATOR:
         if (get_enum(P, ln, k, v, sk_integrator_names, &i)) return 1;
         e->integrator = (isk_integrator)i;
