@@ -15,6 +15,25 @@
  * The frame callback gets the events of this frame and the real time since
  * the previous frame, draws into the canvas and returns 0 to go on, non-zero
  * to stop.
+ *
+ * Behaviour worth knowing:
+ *   - Keys: printable keys give their lower-case ASCII whatever the Shift
+ *     state (so '=' and '+' / '-' keys give '=', '+', '-' as the layout
+ *     reports them); Escape, Space, Return (also keypad Enter), F1..F12, the
+ *     arrows and keypad +/- have ISK_KEY_* codes; anything else is
+ *     ISK_KEY_UNKNOWN.  Auto-repeat arrives as further KEY_DOWN events.
+ *   - Mouse: x, y are canvas pixels.  The window is resizable; the canvas is
+ *     scaled to fit with its aspect ratio kept (black bars), and positions
+ *     are mapped back to canvas pixels, so they can lie outside
+ *     0..width-1 / 0..height-1 when the pointer is over a bar.  Buttons
+ *     other than left/middle/right are not reported.
+ *   - Wheel: +1 / -1 per notch, in the physical direction even with
+ *     "natural scrolling"; horizontal scrolling is not reported.
+ *   - All windows share SDL's one event queue: with two windows open, poll
+ *     either of them (closing a window's close button gives ISK_EVENT_QUIT).
+ *   - SDL is initialised on open and shut down when the last window closes
+ *     (SDL's own subsystem reference count; no global state of ours).
+ *   - Nothing prints; failures fill the isk_error with SDL's message.
  */
 #ifndef ISKRA_SDL_H
 #define ISKRA_SDL_H
@@ -54,10 +73,17 @@ typedef struct isk_event {
     int wheel;        /* WHEEL: +1 away from the user, -1 towards */
 } isk_event;
 
-/* Opens a window of the given size (the canvas size shown 1:1). */
+/* Opens a window of the given size (the canvas size shown 1:1).  Sizes
+ * outside 1..ISK_CANVAS_MAX_DIM give ISK_ERR_SIZE, a window-system failure
+ * ISK_ERR_DISPLAY (with SDL's message in err). */
 isk_status isk_window_open(isk_window **w, const char *title, int width, int height, isk_error *err);
 
-/* Uploads the canvas and shows it.  The canvas must match the window size. */
+/* Resizes the window on screen (e.g. a 2x zoom); the canvas keeps the size
+ * given to isk_window_open and is scaled to fit. */
+isk_status isk_window_set_size(isk_window *w, int width, int height);
+
+/* Uploads the canvas and shows it.  The canvas must match the window's
+ * canvas size (ISK_ERR_SIZE otherwise); any stride is fine. */
 isk_status isk_window_present(isk_window *w, const isk_canvas *c, isk_error *err);
 
 /* Next pending event: returns 1 and fills *ev, or 0 when none is left. */
@@ -67,12 +93,22 @@ typedef int (*isk_frame_fn)(void *user, isk_canvas *canvas, double dt_seconds,
                             const isk_event *events, int nevents);
 
 /* Runs frames until the callback returns non-zero, the window is closed
- * (ISK_EVENT_QUIT or Escape), or max_frames frames ran (0 = no limit).
- * Presents the canvas after every callback. */
+ * (ISK_EVENT_QUIT or Escape: the loop ends before a callback sees them), or
+ * max_frames frames ran (0 = no limit, negative = ISK_ERR_RANGE).
+ * Each frame: gathers pending events (at most 64; when more are waiting the
+ * oldest mouse motions are dropped first, and keys and clicks that still do
+ * not fit wait for the next frame), calls the callback with dt = real seconds
+ * since the previous frame's start, presents the canvas, then sleeps so an
+ * idle loop runs at about 60 frames per second at most.  A canvas of the
+ * wrong size gives ISK_ERR_SIZE before any callback. */
 isk_status isk_window_run(isk_window *w, isk_canvas *canvas, isk_frame_fn frame, void *user,
                           long max_frames, isk_error *err);
 
-/* Injects an event as if it came from the user (for tests and scripting). */
+/* Injects an event as if it came from the user (for tests and scripting):
+ * pushes the equivalent SDL event, so it travels through the same queue and
+ * translation as real input.  Mouse x, y are canvas pixels and arrive
+ * unchanged however the window is scaled.  Buttons outside 1..3, wheel values
+ * other than +1/-1 and unknown types give ISK_ERR_RANGE. */
 isk_status isk_window_push_event(isk_window *w, const isk_event *ev);
 
 void isk_window_close(isk_window *w);

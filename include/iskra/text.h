@@ -23,11 +23,25 @@
 #define ISK_FONT_GLYPH_W 5
 #define ISK_FONT_GLYPH_H 8
 
-/* Width in pixels of the widest line of `s` (0 for empty or NULL). */
+/* Metrics count whole cells, spacing included: every byte other than '\n'
+ * (box-drawn ones too) is one cell of ISK_FONT_CELL_W x ISK_FONT_CELL_H
+ * pixels times scale, so text drawn at x + isk_text_width(...) keeps the
+ * normal one-column gap, and all ink lies inside the box
+ * [x, x + width) x [y, y + height) (the last column and row of it are the
+ * spacing of the last cells, never inked).
+ *
+ * Width: characters in the widest line times ISK_FONT_CELL_W * scale.
+ * Height: lines times ISK_FONT_CELL_H * scale, where a non-empty string has
+ * one line plus one per '\n' (so "a\n" is two lines, the second empty).
+ * NULL, "" or scale < 1 give 0; results too large for an int give INT_MAX. */
 int isk_text_width(const char *s, int scale);
-/* Height in pixels of `s`: number of lines times cell height. */
 int isk_text_height(const char *s, int scale);
 
+/* Draws `s` with the top-left of its first cell at (x, y): each set font
+ * pixel becomes a scale x scale block blended with `mode`, every canvas
+ * pixel at most once per call (so translucent text is even).  Any int x, y
+ * and scale are safe (64-bit layout arithmetic, clipped to the canvas);
+ * NULL canvas or string, scale < 1 or an unknown blend mode draw nothing. */
 void isk_draw_text(isk_canvas *c, int x, int y, const char *s, int scale,
                    isk_color color, isk_blend mode);
 
