@@ -46,33 +46,15 @@ static int update_mode(void)
 
 int refimg_diff(const isk_canvas *a, const isk_canvas *b, long *pixels_differing, int *max_channel_diff)
 {
-    long npix = 0;
-    int maxd = 0;
-    if (pixels_differing) *pixels_differing = 0;
-    if (max_channel_diff) *max_channel_diff = 0;
-    if (a->width != b->width || a->height != b->height)
-        return 0;
-    for (int y = 0; y < a->height; y++) {
-        for (int x = 0; x < a->width; x++) {
-            const uint8_t *p = isk_canvas_at(a, x, y), *q = isk_canvas_at(b, x, y);
-            int diff = 0;
-            for (int k = 0; k < 4; k++) {
-                int d = abs((int)p[k] - (int)q[k]);
-                if (d > diff) diff = d;
-            }
-            if (diff) {
-                npix++;
-                if (diff > maxd) maxd = diff;
-            }
-        }
-    }
-    if (pixels_differing) *pixels_differing = npix;
-    if (max_channel_diff) *max_channel_diff = maxd;
-    return 1;
+    isk_canvas_diff d;
+    int same_size = isk_canvas_compare(a, b, &d, NULL);
+    if (pixels_differing) *pixels_differing = d.differing;
+    if (max_channel_diff) *max_channel_diff = d.max_channel;
+    return same_size;
 }
 
-/* Diff image: differing pixels magenta, others a dimmed opaque copy. Sized to
- * the larger of the two so size mismatches are visible too. */
+/* Diff image (iskra/canvas.h's isk_canvas_compare), sized to the larger of
+ * the two so size mismatches are visible too. */
 static void write_diff(const char *name, const isk_canvas *actual, const isk_canvas *ref)
 {
     int w = actual->width > ref->width ? actual->width : ref->width;
@@ -80,20 +62,7 @@ static void write_diff(const char *name, const isk_canvas *actual, const isk_can
     isk_canvas d;
     if (isk_canvas_init(&d, w, h) != ISK_OK)
         return;
-    for (int y = 0; y < h; y++) {
-        for (int x = 0; x < w; x++) {
-            isk_color a = isk_canvas_get(actual, x, y), r = isk_canvas_get(ref, x, y);
-            int same = x < actual->width && y < actual->height && x < ref->width && y < ref->height &&
-                       a.r == r.r && a.g == r.g && a.b == r.b && a.a == r.a;
-            uint8_t *p = isk_canvas_at(&d, x, y);
-            if (same) {
-                p[0] = (uint8_t)(a.r / 3); p[1] = (uint8_t)(a.g / 3); p[2] = (uint8_t)(a.b / 3);
-            } else {
-                p[0] = 255; p[1] = 0; p[2] = 255;
-            }
-            p[3] = 255;
-        }
-    }
+    isk_canvas_compare(actual, ref, NULL, &d);
     char path[512];
     snprintf(path, sizeof path, OUT_DIR "/%s.diff.png", name);
     isk_png_write(&d, path, NULL);

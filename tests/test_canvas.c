@@ -71,3 +71,37 @@ Test(canvas, equal)
     isk_canvas_free(&a);
     isk_canvas_free(&b);
 }
+
+Test(canvas, compare_counts_and_marks_differences)
+{
+    isk_canvas a, b, img;
+    cr_assert_eq(isk_canvas_init(&a, 4, 3), ISK_OK);
+    cr_assert_eq(isk_canvas_init(&b, 4, 3), ISK_OK);
+    isk_canvas_fill(&a, isk_rgba(90, 90, 90, 255));
+    isk_canvas_fill(&b, isk_rgba(90, 90, 90, 255));
+    isk_canvas_at(&b, 1, 2)[1] = 100; /* +10 in G */
+    isk_canvas_at(&b, 3, 0)[3] = 250; /* -5 in A */
+    isk_canvas_diff d;
+    cr_assert_eq(isk_canvas_init(&img, 4, 3), ISK_OK);
+    cr_assert(isk_canvas_compare(&a, &b, &d, &img));
+    cr_assert_eq(d.pixels, 12);
+    cr_assert_eq(d.differing, 2);
+    cr_assert_eq(d.max_channel, 10);
+    cr_assert_float_eq(d.mean_abs, 15.0 / 48.0, 1e-12);
+    cr_assert_eq(isk_canvas_get(&img, 1, 2).g, 0);   /* magenta */
+    cr_assert_eq(isk_canvas_get(&img, 1, 2).r, 255);
+    cr_assert_eq(isk_canvas_get(&img, 0, 0).r, 30);  /* dimmed copy */
+    isk_canvas_free(&img);
+    /* Different sizes: 0, and the diff image covers both. */
+    isk_canvas c;
+    cr_assert_eq(isk_canvas_init(&c, 5, 2), ISK_OK);
+    cr_assert_eq(isk_canvas_init(&img, 5, 3), ISK_OK);
+    cr_assert(!isk_canvas_compare(&a, &c, &d, &img));
+    cr_assert_eq(d.differing, 0);
+    cr_assert_eq(isk_canvas_get(&img, 4, 2).r, 255);
+    cr_assert(isk_canvas_compare(&a, &a, NULL, NULL));
+    isk_canvas_free(&img);
+    isk_canvas_free(&a);
+    isk_canvas_free(&b);
+    isk_canvas_free(&c);
+}

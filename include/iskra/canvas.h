@@ -81,4 +81,20 @@ isk_color isk_canvas_get(const isk_canvas *c, int x, int y);
 /* 1 when both canvases have equal size and identical pixel bytes. */
 int isk_canvas_equal(const isk_canvas *a, const isk_canvas *b);
 
+/* How two canvases differ, over all four channels. */
+typedef struct isk_canvas_diff {
+    long pixels;        /* pixels compared (width x height) */
+    long differing;     /* pixels with any channel different */
+    int max_channel;    /* largest difference in one channel, 0..255 */
+    double mean_abs;    /* mean absolute difference per channel */
+} isk_canvas_diff;
+
+/* Compares a with b pixel by pixel; returns 1 and fills *d (may be NULL)
+ * when the sizes match, 0 (and a zeroed *d) when they do not.  If
+ * diff_image is not NULL it must be max(width) x max(height) of the two:
+ * it receives differing pixels (and pixels outside either canvas) in
+ * opaque magenta and the others as a dimmed opaque copy of a, the
+ * picture tests write next to a failing comparison. */
+int isk_canvas_compare(const isk_canvas *a, const isk_canvas *b, isk_canvas_diff *d, isk_canvas *diff_image);
+
 #endif

@@ -110,3 +110,50 @@ int isk_canvas_equal(const isk_canvas *a, const isk_canvas *b)
             return 0;
     return 1;
 }
+
+int isk_canvas_compare(const isk_canvas *a, const isk_canvas *b, isk_canvas_diff *d, isk_canvas *diff_image)
+{
+    isk_canvas_diff r = {0, 0, 0, 0.0};
+    if (!a || !b) {
+        if (d) *d = r;
+        return 0;
+    }
+    int same_size = a->width == b->width && a->height == b->height;
+    double sum = 0.0;
+    int w = a->width > b->width ? a->width : b->width, h = a->height > b->height ? a->height : b->height;
+    if (diff_image && (diff_image->width != w || diff_image->height != h))
+        diff_image = NULL;
+    for (int y = 0; y < h; y++) {
+        for (int x = 0; x < w; x++) {
+            int inside = x < a->width && y < a->height && x < b->width && y < b->height;
+            int m = 0;
+            if (inside) {
+                const uint8_t *p = isk_canvas_at(a, x, y), *q = isk_canvas_at(b, x, y);
+                for (int k = 0; k < 4; k++) {
+                    int dd = p[k] > q[k] ? p[k] - q[k] : q[k] - p[k];
+                    sum += dd;
+                    if (dd > m) m = dd;
+                }
+                r.differing += m != 0;
+                if (m > r.max_channel) r.max_channel = m;
+            }
+            if (diff_image) {
+                uint8_t *o = isk_canvas_at(diff_image, x, y);
+                isk_color c = isk_canvas_get(a, x, y);
+                int mark = !inside || m;
+                o[0] = mark ? 255 : (uint8_t)(c.r / 3);
+                o[1] = mark ? 0 : (uint8_t)(c.g / 3);
+                o[2] = mark ? 255 : (uint8_t)(c.b / 3);
+                o[3] = 255;
+            }
+        }
+    }
+    if (!same_size) {
+        if (d) *d = (isk_canvas_diff){0, 0, 0, 0.0};
+        return 0;
+    }
+    r.pixels = (long)a->width * a->height;
+    r.mean_abs = r.pixels ? sum / (4.0 * (double)r.pixels) : 0.0;
+    if (d) *d = r;
+    return 1;
+}

@@ -58,46 +58,32 @@ int cmd_compare(int argc, char **argv)
         return 1;
     }
     int rc = 0;
-    if (a.width != b.width || a.height != b.height) {
+    isk_canvas_diff d;
+    isk_canvas img = {0};
+    if (diff) {
+        int w = a.width > b.width ? a.width : b.width, h = a.height > b.height ? a.height : b.height;
+        if (isk_canvas_init(&img, w, h) != ISK_OK) {
+            fprintf(stderr, "iskra compare: out of memory for the diff image\n");
+            diff = NULL;
+            rc = 1;
+        }
+    }
+    if (!isk_canvas_compare(&a, &b, &d, diff ? &img : NULL)) {
         printf("size differs: %dx%d vs %dx%d\n", a.width, a.height, b.width, b.height);
         rc = 1;
     } else {
-        long npix = 0;
-        int maxd = 0;
-        double sum = 0;
-        isk_canvas d = {0};
-        if (diff && isk_canvas_init(&d, a.width, a.height) != ISK_OK)
-            diff = NULL;
-        for (int y = 0; y < a.height; y++)
-            for (int x = 0; x < a.width; x++) {
-                const uint8_t *p = isk_canvas_at(&a, x, y), *q = isk_canvas_at(&b, x, y);
-                int m = 0;
-                for (int k = 0; k < 4; k++) {
-                    int dd = abs((int)p[k] - (int)q[k]);
-                    sum += dd;
-                    if (dd > m) m = dd;
-                }
-                if (m) npix++;
-                if (m > maxd) maxd = m;
-                if (diff) {
-                    uint8_t *o = isk_canvas_at(&d, x, y);
-                    o[0] = m ? 255 : p[0] / 3;
-                    o[1] = m ? 0 : p[1] / 3;
-                    o[2] = m ? 255 : p[2] / 3;
-                    o[3] = 255;
-                }
-            }
         printf("%ld of %ld pixels differ, max channel difference %d, mean absolute difference %.4f\n",
-               npix, (long)a.width * a.height, maxd, sum / (4.0 * a.width * a.height));
-        if (diff) {
-            if (isk_png_write(&d, diff, &err) != ISK_OK) {
-                fprintf(stderr, "iskra compare: %s\n", err.message);
-                rc = 1;
-            }
-            isk_canvas_free(&d);
-        }
-        if (npix)
+               d.differing, d.pixels, d.max_channel, d.mean_abs);
+        if (d.differing)
             rc = 1;
+    }
+    if (diff) {
+        isk_error err;
+        if (isk_png_write(&img, diff, &err) != ISK_OK) {
+            fprintf(stderr, "iskra compare: %s\n", err.message);
+            rc = 1;
+        }
+        isk_canvas_free(&img);
     }
     isk_canvas_free(&a);
     isk_canvas_free(&b);

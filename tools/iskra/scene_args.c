@@ -1,5 +1,6 @@
 /* Shared scene options for the iskra commands (see scene_args.h). */
 #include "scene_args.h"
+#include "scene/scene_values.h"
 
 #include <errno.h>
 #include <math.h>
@@ -55,23 +56,6 @@ int arg_double_pos(const char *cmd, const char *opt, const char *s, double *out)
     return 1;
 }
 
-static int parse_u64(const char *s, uint64_t *out)
-{
-    if (!*s)
-        return 0;
-    uint64_t v = 0;
-    for (const char *p = s; *p; p++) {
-        if (*p < '0' || *p > '9')
-            return 0;
-        unsigned d = (unsigned)(*p - '0');
-        if (v > (UINT64_MAX - d) / 10u)
-            return 0;
-        v = v * 10u + d;
-    }
-    *out = v;
-    return 1;
-}
-
 int scene_args_take(scene_args *a, int argc, char **argv, int *i)
 {
     const char *v;
@@ -80,7 +64,7 @@ int scene_args_take(scene_args *a, int argc, char **argv, int *i)
     if ((r = arg_value(a->cmd, argc, argv, i, "--seed", &v)) != 0) {
         if (r < 0)
             return -1;
-        if (!parse_u64(v, &a->seed)) {
+        if (!scv_u64(v, &a->seed)) {
             fprintf(stderr, "iskra %s: --seed: expected a whole number between 0 and 18446744073709551615, got \"%s\"\n",
                     a->cmd, v);
             return -1;
