@@ -357,3 +357,30 @@ Test(effect, oscillation_random_phase_starts_without_a_jump)
     }
     isk_effect_def_free(&d);
 }
+
+Test(effect, every_dot_rule_draws_with_a_colour_ramp)
+{
+    /* The same particles with and without a (constant) colour ramp give the
+     * same picture, for both dot rules: the per-particle colour path must
+     * draw what the constant-colour path draws. */
+    const isk_draw_mode modes[2] = {ISK_DRAW_DOT, ISK_DRAW_DOT_BROWSER};
+    for (int k = 0; k < 2; k++) {
+        isk_canvas a, b;
+        for (int ramp = 0; ramp < 2; ramp++) {
+            isk_effect_def d;
+            gauss_def(&d, 0, 1.0);
+            d.emitters[0].draw = modes[k];
+            d.emitters[0].life = 100;
+            if (ramp) {
+                d.emitters[0].color_over_life.n = 2;
+                d.emitters[0].color_over_life.stops[0] = (isk_color_stop){0.0, ISK_YELLOW};
+                d.emitters[0].color_over_life.stops[1] = (isk_color_stop){1.0, ISK_YELLOW};
+            }
+            render_frames(&d, 50, ramp ? &b : &a, NULL, 0);
+            isk_effect_def_free(&d);
+        }
+        cr_assert(isk_canvas_equal(&a, &b), "draw mode %d", (int)modes[k]);
+        isk_canvas_free(&a);
+        isk_canvas_free(&b);
+    }
+}

@@ -132,31 +132,18 @@ static void draw_group(isk_effect *e, isk_canvas *c, fx_group *g)
     const size_t n = p->count;
     const int varies = g->has_color_ramp || g->has_alpha_ramp || g->has_size_ramp || p->color;
     const double scale = fabs(v->sx);
-    switch (em->draw) {
-    case ISK_DRAW_NONE:
+    if (em->draw == ISK_DRAW_NONE)
         return;
-    case ISK_DRAW_DOT:
-        if (!varies) {
-            for (size_t i = 0; i < n; i++) {
-                double X, Y;
-                isk_view_to_screen(v, p->x[i], p->y[i], &X, &Y);
-                isk_draw_dot(c, X, Y, em->color, em->blend);
-            }
-            return;
+    /* The two dot rules differ only in the function that spreads the dot. */
+    void (*const dot)(isk_canvas *, double, double, isk_color, isk_blend) =
+        em->draw == ISK_DRAW_DOT_BROWSER ? isk_draw_dot_browser : isk_draw_dot;
+    if ((em->draw == ISK_DRAW_DOT || em->draw == ISK_DRAW_DOT_BROWSER) && !varies) {
+        for (size_t i = 0; i < n; i++) {
+            double X, Y;
+            isk_view_to_screen(v, p->x[i], p->y[i], &X, &Y);
+            dot(c, X, Y, em->color, em->blend);
         }
-        break;
-    case ISK_DRAW_DOT_BROWSER:
-        if (!varies) {
-            for (size_t i = 0; i < n; i++) {
-                double X, Y;
-                isk_view_to_screen(v, p->x[i], p->y[i], &X, &Y);
-                isk_draw_dot_browser(c, X, Y, em->color, em->blend);
-            }
-            return;
-        }
-        break;
-    default:
-        break;
+        return;
     }
     /* Sprites: with a constant colour, one sprite baked in that colour
      * (its blend table makes drawing cheapest); when the colour or alpha
@@ -176,7 +163,8 @@ static void draw_group(isk_effect *e, isk_canvas *c, fx_group *g)
         isk_color col = varies ? particle_color(g, p, i, t, &mult) : em->color;
         switch (em->draw) {
         case ISK_DRAW_DOT:
-            isk_draw_dot(c, X, Y, col, em->blend);
+        case ISK_DRAW_DOT_BROWSER:
+            dot(c, X, Y, col, em->blend);
             break;
         case ISK_DRAW_PIXEL:
             if (X >= 0 && Y >= 0 && X < c->width && Y < c->height)
