@@ -384,3 +384,33 @@ Test(effect, every_dot_rule_draws_with_a_colour_ramp)
         isk_canvas_free(&b);
     }
 }
+
+Test(effect, every_source_honours_the_life_range)
+{
+    const isk_source_kind sources[2] = {ISK_SOURCE_LAYER, ISK_SOURCE_EXPLOSION};
+    for (int k = 0; k < 2; k++) {
+        isk_effect_def d;
+        isk_effect_def_init(&d);
+        isk_emitter_def *e = isk_effect_def_add_emitter(&d, "src");
+        e->source = sources[k];
+        e->explosion = ISK_EXPLOSION_MULTI_COULOMB; /* batches: the scheduled path */
+        e->rect[1] = 1;
+        e->rect[3] = 1;
+        e->count = 500;
+        e->life = 2.0;
+        e->life_range = 1.0;
+        isk_effect *fx = make(&d);
+        for (int i = 0; i < 10; i++)
+            isk_effect_step(fx);
+        const isk_particles *p = isk_effect_particles(fx, 0);
+        cr_assert_eq(p->count, 500u);
+        double lo = 10, hi = 0;
+        for (size_t i = 0; i < p->count; i++) {
+            lo = fmin(lo, p->life[i]);
+            hi = fmax(hi, p->life[i]);
+        }
+        cr_assert(lo >= 2.0 && hi < 3.0 && hi - lo > 0.9, "source %d: lives %g..%g", k, lo, hi);
+        isk_effect_destroy(fx);
+        isk_effect_def_free(&d);
+    }
+}

@@ -420,6 +420,25 @@ static uint64_t group_seed(uint64_t seed, int index)
     return seed + (uint64_t)index * 0x9E3779B97F4A7C15ull;
 }
 
+/* New particles [from, count) take the emitter's lifetime, life + U*range
+ * (one uniform each, only with a finite life and a range), then their
+ * oscillation state (omega, amplitude, ...); the parallel arrays grow first.
+ * Every source's particles go through here. */
+static isk_status adopt(isk_effect *e, fx_group *g, size_t from)
+{
+    const isk_emitter_def *em = g->def;
+    isk_particles *p = &g->store;
+    isk_status s = fx_group_sync(g);
+    if (s != ISK_OK)
+        return s;
+    const int ranged = isfinite(em->life) && em->life_range > 0;
+    for (size_t i = from; i < p->count; i++)
+        p->life[i] = em->life + (ranged ? em->life_range * isk_rng_uniform(&g->rng) : 0.0);
+    for (size_t i = from; g->has_osc && i < p->count; i++)
+        fx_group_init_osc(e, g, i);
+    return ISK_OK;
+}
+
 static isk_status fire_explosion(isk_effect *e, fx_group *g, isk_explosion kind, double cx, double cy, size_t count,
                                  isk_kick_target kick)
 {
@@ -428,7 +447,6 @@ static isk_status fire_explosion(isk_effect *e, fx_group *g, isk_explosion kind,
     isk_particles *p = &g->store;
     size_t before = p->count;
     isk_status s;
-    (void)e;
     switch (kind) {
     case ISK_EXPLOSION_RING: s = isk_explode_ring(p, cx, cy, count, limit); break;
     case ISK_EXPLOSION_UNIFORM: s = isk_explode_uniform(p, &g->rng, cx, cy, count, limit); break;
@@ -445,16 +463,7 @@ static isk_status fire_explosion(isk_effect *e, fx_group *g, isk_explosion kind,
         break;
     default: return ISK_ERR_RANGE;
     }
-    if (s != ISK_OK)
-        return s;
-    if (isfinite(em->life) || g->has_osc)
-        for (size_t i = before; i < p->count; i++) {
-            p->life[i] = em->life + (em->life_range > 0 ? em->life_range * isk_rng_uniform(&g->rng) : 0);
-        }
-    s = fx_group_sync(g);
-    for (size_t i = before; s == ISK_OK && g->has_osc && i < p->count; i++)
-        fx_group_init_osc(e, g, i);
-    return s;
+    return s != ISK_OK ? s : adopt(e, g, before);
 }
 
 /* Everything that exists at time 0. */
@@ -466,24 +475,16 @@ static isk_status populate(isk_effect *e, fx_group *g)
     switch (em->source) {
     case ISK_SOURCE_PARTICLE:
         s = isk_particles_add(p, em->pos.x, em->pos.y, em->vel.x, em->vel.y, em->mass, NULL);
-        if (s == ISK_OK) {
-            p->life[0] = em->life;
-            s = fx_group_sync(g);
-            if (s == ISK_OK && g->has_osc)
-                fx_group_init_osc(e, g, 0);
-        }
+        if (s == ISK_OK)
+            s = adopt(e, g, 0);
         break;
     case ISK_SOURCE_LAYER: {
         size_t limit = em->limit ? em->limit : ISK_EXPLODE_THESIS_LIMIT;
         s = isk_explode_layer(p, &g->rng, em->rect[0], em->rect[1], em->rect[2], em->rect[3], em->count, limit);
-        if (s == ISK_OK)
-            s = fx_group_sync(g);
-        for (size_t i = 0; s == ISK_OK && i < p->count; i++) {
+        for (size_t i = 0; s == ISK_OK && i < p->count; i++)
             p->m[i] = em->mass;
-            p->life[i] = em->life;
-            if (g->has_osc)
-                fx_group_init_osc(e, g, i);
-        }
+        if (s == ISK_OK)
+            s = adopt(e, g, 0);
         break;
     }
     case ISK_SOURCE_EXPLOSION:
@@ -836,15 +837,8 @@ static isk_status release_due(isk_effect *e, fx_group *g)
     if (g->mc_active && !isk_multi_coulomb_done(&g->mc)) {
         size_t before = g->store.count;
         isk_status s = isk_multi_coulomb_release(&g->mc, &g->store, &g->rng, NULL);
-        if (s != ISK_OK)
+        if (s != ISK_OK || (s = adopt(e, g, before)) != ISK_OK)
             return s;
-        if ((s = fx_group_sync(g)) != ISK_OK)
-            return s;
-        for (size_t i = before; i < g->store.count; i++) {
-            g->store.life[i] = em->life;
-            if (g->has_osc)
-                fx_group_init_osc(e, g, i);
-        }
     }
     return ISK_OK;
 }
