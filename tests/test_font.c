@@ -4,6 +4,8 @@
 #include <string.h>
 
 #include "iskra/text.h"
+#include "iskra/view.h"
+#include <math.h>
 #include "refimg.h"
 
 Test(font, metrics)
@@ -128,5 +130,20 @@ Test(refimg, text_scales)
         y += isk_text_height("x", s) + 2;
     }
     cr_assert(refimg_check("text_scales", &c));
+    isk_canvas_free(&c);
+}
+
+Test(font, world_text_with_absurd_positions_and_scales)
+{
+    isk_canvas c;
+    isk_view v;
+    cr_assert_eq(isk_canvas_init(&c, 32, 32), ISK_OK);
+    cr_assert_eq(isk_view_window(&v, 32, 32, -1, 1, -1, 1), ISK_OK);
+    const double pos[] = {0, -1e300, 1e300, NAN, INFINITY, -INFINITY};
+    const int scales[] = {1, 1000, INT_MAX};
+    for (int i = 0; i < 6; i++)
+        for (int k = 0; k < 3; k++)
+            isk_world_text(&c, &v, pos[i], pos[(i + 2) % 6], "Ab", scales[k], ISK_WHITE, ISK_BLEND_OVER);
+    isk_world_text(&c, &v, 0, 0, "Ab", 0, ISK_WHITE, ISK_BLEND_OVER);
     isk_canvas_free(&c);
 }

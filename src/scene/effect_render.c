@@ -7,6 +7,7 @@
 #include "effect_internal.h"
 #include "iskra/draw.h"
 #include "iskra/text.h"
+#include "raster/clip.h"
 
 isk_status fx_bake_ramps(fx_group *g, isk_error *err)
 {
@@ -94,12 +95,8 @@ static void draw_drawing(isk_effect *e, isk_canvas *c, const isk_view *v, const 
         break;
     case ISK_DRAWING_TEXT:
         if (s->pixels) {
-            double x = s->x, y = s->y;
-            if (!(x > -1e9)) x = -1e9;
-            if (!(x < 1e9)) x = 1e9;
-            if (!(y > -1e9)) y = -1e9;
-            if (!(y < 1e9)) y = 1e9;
-            isk_draw_text(c, (int)x, (int)y, s->text, s->scale, s->color, s->blend);
+            isk_draw_text(c, isk__floor_clamp(s->x, -1000000000, 1000000000),
+                          isk__floor_clamp(s->y, -1000000000, 1000000000), s->text, s->scale, s->color, s->blend);
         } else {
             isk_world_text(c, v, s->x, s->y, s->text, s->scale, s->color, s->blend);
         }

@@ -1,11 +1,13 @@
 /* Drawing in world units: the thesis's piksel, puniKrug and tekst, plus a
  * world-space polyline.  One call does the transform, so examples never
  * repeat the screen arithmetic. */
+#include <limits.h>
 #include <stdlib.h>
 
 #include "iskra/draw.h"
 #include "iskra/text.h"
 #include "iskra/view.h"
+#include "raster/clip.h"
 
 void isk_world_dot(isk_canvas *c, const isk_view *v, double x, double y, isk_color color, isk_blend mode)
 {
@@ -36,18 +38,16 @@ void isk_world_text(isk_canvas *c, const isk_view *v, double x, double y, const 
                     isk_color color, isk_blend mode)
 {
     double X, Y;
-    isk_view_to_screen(v, x, y, &X, &Y);
-    /* Clamp before converting: an out-of-range double->int cast is undefined. */
-    const double lim = 1e9;
-    if (!(X > -lim)) X = -lim;
-    if (!(X < lim)) X = lim;
-    if (!(Y > -lim)) Y = -lim;
-    if (!(Y < lim)) Y = lim;
     if (scale < 1)
         return;
-    /* Baseline at Y: the 7 rows above the descender row sit above it. */
-    int top = (int)Y - 7 * scale;
-    isk_draw_text(c, (int)X, top, s, scale, color, mode);
+    isk_view_to_screen(v, x, y, &X, &Y);
+    /* Baseline at Y: the 7 rows above the descender row sit above it.  Far
+     * positions are clamped (no undefined float->int conversion, no int
+     * overflow); text out there is off the canvas either way. */
+    long long top = (long long)isk__floor_clamp(Y, -1000000000, 1000000000) - 7LL * scale;
+    if (top < INT_MIN)
+        top = INT_MIN;
+    isk_draw_text(c, isk__floor_clamp(X, -1000000000, 1000000000), (int)top, s, scale, color, mode);
 }
 
 /* Transforms the points (on the stack when few) and strokes them. */
