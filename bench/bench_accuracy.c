@@ -24,22 +24,10 @@
 #include <string.h>
 #include <time.h>
 
+#include "bench_util.h"
 #include "iskra/integrate.h"
 #include "iskra/particles.h"
 #include "iskra/sinlut.h"
-
-static double now(void)
-{
-    struct timespec ts;
-    clock_gettime(CLOCK_MONOTONIC, &ts);
-    return ts.tv_sec + ts.tv_nsec * 1e-9;
-}
-
-static int cmp_d(const void *a, const void *b)
-{
-    double x = *(const double *)a, y = *(const double *)b;
-    return (x > y) - (x < y);
-}
 
 enum { NP = 10000 };
 static const double G = 9.81, B = 0.8, M = 1.0, T = 2.0;
@@ -93,10 +81,10 @@ static void run(isk_integrator method, long steps, int reps, double *err, double
             isk_particles_add(&p, spring ? 1 : 0, 0, vx, vy, M, NULL);
         }
         double dt = T / (double)steps;
-        double t0 = now();
+        double t0 = bench_now();
         for (long k = 0; k < steps; k++)
             isk_integrate_range(method, &f, s, &p, 0, p.count, dt);
-        times[r] = now() - t0;
+        times[r] = bench_now() - t0;
         if (r == reps - 1) {
             double worst = 0;
             for (size_t i = 0; i < NP; i++) {
@@ -110,8 +98,7 @@ static void run(isk_integrator method, long steps, int reps, double *err, double
         }
         isk_particles_free(&p);
     }
-    qsort(times, (size_t)reps, sizeof times[0], cmp_d);
-    *sec_per = times[reps / 2] / ((double)NP * (double)steps);
+    *sec_per = bench_median(times, reps) / ((double)NP * (double)steps);
     free(s);
 }
 
@@ -178,10 +165,10 @@ int main(void)
     double *th = malloc(NS * sizeof *th), *out = malloc(NS * sizeof *out);
     for (int i = 0; i < NS; i++)
         th[i] = -1e4 + 2e4 * (double)((uint64_t)i * 2654435761u % NS) / NS;
-    double t0 = now(), sink = 0;
+    double t0 = bench_now(), sink = 0;
     for (int i = 0; i < NS; i++)
         out[i] = sin(th[i]);
-    double t_libm = now() - t0;
+    double t_libm = bench_now() - t0;
     for (int i = 0; i < NS; i++)
         sink += out[i];
     printf("  %-16s %10s %8.2f ns\n", "libm sin", "(reference)", t_libm / NS * 1e9);
@@ -192,14 +179,14 @@ int main(void)
         isk_sinlut_init(&lut, sizes[si]);
         for (int mode = 0; mode < 3; mode++) {
             double worst = 0;
-            t0 = now();
+            t0 = bench_now();
             if (mode == 0)
                 for (int i = 0; i < NS; i++) out[i] = isk_sinlut_floor(&lut, th[i]);
             else if (mode == 1)
                 for (int i = 0; i < NS; i++) out[i] = isk_sinlut_round(&lut, th[i]);
             else
                 for (int i = 0; i < NS; i++) out[i] = isk_sinlut_lerp(&lut, th[i]);
-            double t = now() - t0;
+            double t = bench_now() - t0;
             for (int i = 0; i < NS; i++) {
                 double e = fabs(out[i] - sin(th[i]));
                 if (e > worst) worst = e;

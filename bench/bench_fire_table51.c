@@ -20,23 +20,11 @@
 #include <stdlib.h>
 #include <time.h>
 
+#include "bench_util.h"
 #include "iskra/effect.h"
 
 #define REPS 7
 #define PI 3.14159265358979323846
-
-static double now(void)
-{
-    struct timespec ts;
-    clock_gettime(CLOCK_MONOTONIC, &ts);
-    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
-}
-
-static int cmp_double(const void *a, const void *b)
-{
-    double x = *(const double *)a, y = *(const double *)b;
-    return (x > y) - (x < y);
-}
 
 static isk_effect *fire(size_t n, int table)
 {
@@ -87,10 +75,10 @@ static isk_effect *fire(size_t n, int table)
 /* Seconds per step, timing `k` steps. */
 static double time_steps(isk_effect *fx, int k)
 {
-    double t0 = now();
+    double t0 = bench_now();
     for (int i = 0; i < k; i++)
         isk_effect_step(fx);
-    return (now() - t0) / k;
+    return (bench_now() - t0) / k;
 }
 
 int main(void)
@@ -111,10 +99,8 @@ int main(void)
             ta[r] = time_steps(a, k);
             tb[r] = time_steps(b, k);
         }
-        qsort(ta, REPS, sizeof ta[0], cmp_double);
-        qsort(tb, REPS, sizeof tb[0], cmp_double);
-        ours_sin[s] = ta[REPS / 2] * 1e3;
-        ours_lut[s] = tb[REPS / 2] * 1e3;
+        ours_sin[s] = bench_median(ta, REPS) * 1e3;
+        ours_lut[s] = bench_median(tb, REPS) * 1e3;
         isk_effect_destroy(a);
         isk_effect_destroy(b);
     }

@@ -11,18 +11,12 @@
 #include <stdlib.h>
 #include <time.h>
 
+#include "bench_util.h"
 #include "iskra/system.h"
 
 enum { N_BIG = 1000000, N_SMALL = 16384 };
 static size_t N = N_BIG;
 static const double DT = 1.0 / 600, G = 9.81, DRAG = 0.47;
-
-static double now(void)
-{
-    struct timespec ts;
-    clock_gettime(CLOCK_MONOTONIC, &ts);
-    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
-}
 
 /* ---- the baseline: the thesis's objects as C structs ---- */
 typedef struct vek { double x, y; } vek;
@@ -71,12 +65,12 @@ static double bench_aos(void)
     }
     double best = 0;
     for (int rep = 0; rep < 3; rep++) {
-        double t0 = now(), t;
+        double t0 = bench_now(), t;
         long steps = 0;
         do {
             aos_step(c, N, DT);
             steps++;
-        } while ((t = now() - t0) < 0.4);
+        } while ((t = bench_now() - t0) < 0.4);
         double rate = (double)steps * (double)N / t;
         if (rate > best)
             best = rate;
@@ -110,12 +104,12 @@ static double bench_system(isk_integrator method, isk_bounce_mode mode)
     }
     double best = 0;
     for (int rep = 0; rep < 3; rep++) {
-        double t0 = now(), t;
+        double t0 = bench_now(), t;
         long steps = 0;
         do {
             isk_system_step(&s, DT);
             steps++;
-        } while ((t = now() - t0) < 0.4);
+        } while ((t = bench_now() - t0) < 0.4);
         double rate = (double)steps * (double)N / t;
         if (rate > best)
             best = rate;

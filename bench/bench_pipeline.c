@@ -26,31 +26,13 @@
 #include <string.h>
 #include <time.h>
 
+#include "bench_util.h"
 #include "iskra/effect.h"
 #include "iskra/scene.h"
 
 #define N 1000000
 #define STEPS 20
 #define ROUNDS 9
-
-static double now(void)
-{
-    struct timespec ts;
-    clock_gettime(CLOCK_MONOTONIC, &ts);
-    return (double)ts.tv_sec + (double)ts.tv_nsec * 1e-9;
-}
-
-static int cmp(const void *a, const void *b)
-{
-    double x = *(const double *)a, y = *(const double *)b;
-    return (x > y) - (x < y);
-}
-
-static double median(double *v, int n)
-{
-    qsort(v, (size_t)n, sizeof *v, cmp);
-    return v[n / 2];
-}
 
 static const char *BASE = "[scene]\ndt = 1/60\nseed = 1\n"
                           "[force gravity]\ng = 9.81\n"
@@ -88,13 +70,13 @@ static void hand_loop(soa *s, size_t n, double g, double dt)
 
 static double time_effect(isk_effect *fx)
 {
-    double t0 = now();
+    double t0 = bench_now();
     for (int s = 0; s < STEPS; s++)
         if (isk_effect_step(fx) != ISK_OK) {
             fprintf(stderr, "bench_pipeline: step failed\n");
             exit(1);
         }
-    return now() - t0;
+    return bench_now() - t0;
 }
 
 #define NV 4 /* scene, + unreferenced, + disabled, hand loop on an identical store */
@@ -117,10 +99,10 @@ static double time_variant(int v, double dt)
     if (v == 3) {
         isk_particles *p = (isk_particles *)isk_effect_particles(fx, 0);
         soa s = {p->x, p->y, p->vx, p->vy};
-        double t0 = now();
+        double t0 = bench_now();
         for (int k = 0; k < STEPS; k++)
             hand_loop(&s, p->count, 9.81, dt);
-        t = now() - t0;
+        t = bench_now() - t0;
     } else {
         t = time_effect(fx);
     }
@@ -157,10 +139,10 @@ int main(void)
                !memcmp(h.vy, pa->vy, n * sizeof(double));
     double tm[ROUNDS];
     for (int r = 0; r < ROUNDS; r++) {
-        double t0 = now();
+        double t0 = bench_now();
         for (int k = 0; k < STEPS; k++)
             hand_loop(&h, n, 9.81, dt);
-        tm[r] = now() - t0;
+        tm[r] = bench_now() - t0;
     }
     isk_effect_destroy(a);
     free(h.x);
@@ -177,8 +159,8 @@ int main(void)
             int v = (k + r) % NV;
             t[v][r] = time_variant(v, dt);
         }
-    double ma = median(t[0], ROUNDS), mb = median(t[1], ROUNDS), mc = median(t[2], ROUNDS),
-           mh = median(t[3], ROUNDS), mm = median(tm, ROUNDS);
+    double ma = bench_median(t[0], ROUNDS), mb = bench_median(t[1], ROUNDS), mc = bench_median(t[2], ROUNDS),
+           mh = bench_median(t[3], ROUNDS), mm = bench_median(tm, ROUNDS);
     const double per = 1e9 / ((double)n * STEPS);
     printf("\n%zu particles, %d steps per timing, median of %d rounds (each variant created afresh per round)\n",
            n, STEPS, ROUNDS);
