@@ -106,7 +106,13 @@ static void constant_accel(const fx_group *g, double *ax, double *ay)
     }
 }
 
-static isk_status birth(isk_effect *e, fx_group *g, double age, fx_advance_fn advance)
+/* Where and how fast new particles start: built once per spawn call. */
+typedef struct launcher {
+    isk_shape shape;
+    isk_velgen velocity;
+} launcher;
+
+static isk_status birth(isk_effect *e, fx_group *g, const launcher *l, double age, fx_advance_fn advance)
 {
     const isk_emitter_def *em = g->def;
     isk_particles *p = &g->store;
@@ -114,11 +120,9 @@ static isk_status birth(isk_effect *e, fx_group *g, double age, fx_advance_fn ad
         g->dropped++;
         return ISK_OK;
     }
-    isk_shape s = shape_of(em);
-    isk_velgen v = velgen_of(em);
     double x, y, vx, vy;
-    isk_shape_sample(&s, &g->rng, &x, &y);
-    isk_velgen_sample(&v, &g->rng, &vx, &vy);
+    isk_shape_sample(&l->shape, &g->rng, &x, &y);
+    isk_velgen_sample(&l->velocity, &g->rng, &vx, &vy);
     if (em->velocity == ISK_LAUNCH_DISC) {
         vx += em->vel.x;
         vy += em->vel.y;
@@ -166,6 +170,7 @@ isk_status fx_stream_spawn(isk_effect *e, fx_group *g, double t0, double h, fx_a
     /* A birth due within a nanosecond of the step's end belongs to this step:
      * 30 steps of 1/30 s and 144 of 1/144 s must agree on "t = 1 s". */
     const double t1_tol = t1 + 1e-9 * (t1 > 1.0 ? t1 : 1.0);
+    const launcher l = {shape_of(em), velgen_of(em)};
     isk_status s;
 
     /* Bursts first: they are scheduled events. */
@@ -175,7 +180,7 @@ isk_status fx_stream_spawn(isk_effect *e, fx_group *g, double t0, double h, fx_a
         for (size_t k = 0; k < em->count; k++) {
             if (isfinite(em->life) && age >= em->life + em->life_range)
                 break; /* dead on arrival: the whole burst */
-            if ((s = birth(e, g, em->birth == ISK_BIRTH_THESIS_JITTER ? h : age, advance)) != ISK_OK)
+            if ((s = birth(e, g, &l, em->birth == ISK_BIRTH_THESIS_JITTER ? h : age, advance)) != ISK_OK)
                 return s;
         }
         g->next_burst = em->burst_every > 0 ? g->next_burst + em->burst_every : INFINITY;
@@ -187,7 +192,7 @@ isk_status fx_stream_spawn(isk_effect *e, fx_group *g, double t0, double h, fx_a
          * at 60 frames/s a rate of 20/s gives 0.833 -> nothing, ever. */
         unsigned k = (unsigned)(h * em->rate + 0.5);
         for (unsigned j = 0; j < k; j++)
-            if ((s = birth(e, g, em->birth == ISK_BIRTH_THESIS_JITTER ? h : 0.0, advance)) != ISK_OK)
+            if ((s = birth(e, g, &l, em->birth == ISK_BIRTH_THESIS_JITTER ? h : 0.0, advance)) != ISK_OK)
                 return s;
         return ISK_OK;
     }
@@ -203,7 +208,7 @@ isk_status fx_stream_spawn(isk_effect *e, fx_group *g, double t0, double h, fx_a
         if (isfinite(em->life) && age >= em->life + em->life_range)
             continue; /* would be dead already: never created */
         double a = em->birth == ISK_BIRTH_BACKDATE ? age : (em->birth == ISK_BIRTH_THESIS_JITTER ? h : 0.0);
-        if ((s = birth(e, g, a, advance)) != ISK_OK)
+        if ((s = birth(e, g, &l, a, advance)) != ISK_OK)
             return s;
     }
     return ISK_OK;
