@@ -44,15 +44,6 @@ static int update_mode(void)
     return u && *u && strcmp(u, "0") != 0;
 }
 
-int refimg_diff(const isk_canvas *a, const isk_canvas *b, long *pixels_differing, int *max_channel_diff)
-{
-    isk_canvas_diff d;
-    int same_size = isk_canvas_compare(a, b, &d, NULL);
-    if (pixels_differing) *pixels_differing = d.differing;
-    if (max_channel_diff) *max_channel_diff = d.max_channel;
-    return same_size;
-}
-
 /* Diff image (iskra/canvas.h's isk_canvas_compare), sized to the larger of
  * the two so size mismatches are visible too. */
 static void write_diff(const char *name, const isk_canvas *actual, const isk_canvas *ref)
@@ -97,9 +88,10 @@ static int check(const char *name, const isk_canvas *c, int tol, long max_pixels
                 name, err.message, act_path, name);
         return 0;
     }
-    long npix;
-    int maxd;
-    int same_size = refimg_diff(c, &ref, &npix, &maxd);
+    isk_canvas_diff diff;
+    int same_size = isk_canvas_compare(c, &ref, &diff, NULL);
+    long npix = diff.differing;
+    int maxd = diff.max_channel;
     int pass = same_size && (npix == 0 || (maxd <= tol && npix <= max_pixels));
     if (!pass) {
         mkdirs(OUT_DIR);

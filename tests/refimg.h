@@ -33,11 +33,6 @@ int refimg_check(const char *name, const isk_canvas *c);
 int refimg_check_tol(const char *name, const isk_canvas *c, int max_channel_diff, long max_pixels,
                      const char *reason);
 
-/* Compares two canvases; fills the number of differing pixels and the
- * largest per-channel difference (either pointer may be NULL). Returns 1 when
- * sizes match. */
-int refimg_diff(const isk_canvas *a, const isk_canvas *b, long *pixels_differing, int *max_channel_diff);
-
 /* Path of the build directory (ISKRA_BUILD, default "build"), for tests that
  * run built programs. */
 const char *refimg_build_dir(void);

@@ -49,13 +49,6 @@ static char *describe_text(const char *text)
     return buf;
 }
 
-static int same_pixels(const isk_canvas *a, const isk_canvas *b)
-{
-    long px = 0;
-    int mx = 0;
-    return refimg_diff(a, b, &px, &mx) && px == 0;
-}
-
 Test(scene_render, every_scene_matches_its_example)
 {
     int checked = 0;
@@ -75,22 +68,19 @@ Test(scene_render, every_scene_matches_its_example)
         cr_assert_eq(isk_scene_load(&d, name, &err), ISK_OK, "%s", err.message);
         isk_canvas c;
         render_def(&d, -1, &c);
-        long px = 0;
-        int mx = 0;
-        cr_assert(refimg_diff(&c, &ref, &px, &mx), "%s: size %dx%d, reference %dx%d", name, c.width, c.height,
-                  ref.width, ref.height);
-        {
-            if (px) {
-                char out[256];
-                (void)system("mkdir -p out/refimg");
-                snprintf(out, sizeof out, "out/refimg/scene_%s.actual.png", name);
-                isk_png_write(&c, out, NULL);
-            }
-            cr_expect_eq(px, 0, "scenes/%s.ini: %ld pixels differ from refimg/%s.png (max channel difference "
-                                "%d); the scene's image is in out/refimg/scene_%s.actual.png",
-                         name, px, name, mx, name);
-            checked++;
+        isk_canvas_diff diff;
+        cr_assert(isk_canvas_compare(&c, &ref, &diff, NULL), "%s: size %dx%d, reference %dx%d", name, c.width,
+                  c.height, ref.width, ref.height);
+        if (diff.differing) {
+            char out[256];
+            (void)system("mkdir -p out/refimg");
+            snprintf(out, sizeof out, "out/refimg/scene_%s.actual.png", name);
+            isk_png_write(&c, out, NULL);
         }
+        cr_expect_eq(diff.differing, 0, "scenes/%s.ini: %ld pixels differ from refimg/%s.png (max channel "
+                                        "difference %d); the scene's image is in out/refimg/scene_%s.actual.png",
+                     name, diff.differing, name, diff.max_channel, name);
+        checked++;
         isk_canvas_free(&c);
         isk_canvas_free(&ref);
         isk_effect_def_free(&d);
@@ -124,10 +114,10 @@ Test(scene_render, fig14_scene_is_a_frame_of_its_example)
              refimg_build_dir(), frames);
     cr_assert_eq(system(cmd), 0, "%s failed", cmd);
     cr_assert_eq(isk_png_read(&ex, "out/scenes/fig14_frame.png", &err), ISK_OK, "%s", err.message);
-    long px = 0;
-    int mx = 0;
-    cr_assert(refimg_diff(&c, &ex, &px, &mx));
-    cr_assert_eq(px, 0, "scenes/fig14_animation_strip.ini frame %ld: %ld pixels differ from the example", frames, px);
+    isk_canvas_diff diff;
+    cr_assert(isk_canvas_compare(&c, &ex, &diff, NULL));
+    cr_assert_eq(diff.differing, 0, "scenes/fig14_animation_strip.ini frame %ld: %ld pixels differ from the example",
+                 frames, diff.differing);
     isk_canvas_free(&c);
     isk_canvas_free(&ex);
     isk_effect_def_free(&d);
@@ -141,7 +131,7 @@ Test(scene_pipeline, unreferenced_force_changes_nothing)
     isk_canvas a, b;
     render_text(plain, 40, &a);
     render_text(extra, 40, &b);
-    cr_assert(same_pixels(&a, &b), "an unreferenced force changed the image");
+    cr_assert(isk_canvas_equal(&a, &b), "an unreferenced force changed the image");
     char *da = describe_text(plain), *db = describe_text(extra);
     cr_assert_str_eq(da, db, "describe lists an unreferenced force");
     cr_assert_null(strstr(db, "coulomb"));
@@ -164,7 +154,7 @@ Test(scene_pipeline, zero_strength_stage_changes_no_pixel)
     isk_canvas a, b;
     render_text(plain, 40, &a);
     render_text(zero, 40, &b);
-    cr_assert(same_pixels(&a, &b), "a zero-strength force changed the image");
+    cr_assert(isk_canvas_equal(&a, &b), "a zero-strength force changed the image");
     char *dz = describe_text(zero);
     cr_assert_null(strstr(dz, "drag"), "zero drag listed:\n%s", dz);
     cr_assert_null(strstr(dz, "potential"), "zero potential listed:\n%s", dz);
@@ -186,7 +176,7 @@ Test(scene_pipeline, disabled_potential_not_described)
     isk_canvas a, b;
     render_text(BASE, 40, &a);
     render_text(text, 40, &b);
-    cr_assert(same_pixels(&a, &b), "a disabled potential changed the image");
+    cr_assert(isk_canvas_equal(&a, &b), "a disabled potential changed the image");
     isk_canvas_free(&a);
     isk_canvas_free(&b);
 }
