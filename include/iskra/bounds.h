@@ -22,9 +22,14 @@
  * the hit at the reflected speed c*|v|), velocity v' = -c*v but only if v
  * points outward (an inward-moving particle is never turned around, so it
  * never sticks).  If the mirrored point is beyond the opposite wall (huge
- * speed) it is reflected again, up to 16 times, then clamped onto the wall
- * as a safety net (also turns a NaN position into the wall).  After the stage
- * every particle is inside [left, right] x [bottom, top] for the enabled sides.
+ * speed) it is reflected again, one reflection at a time up to 16 times;
+ * beyond that (10^6 units per step in a box of 10 needs 10^5) the rest of the
+ * path between the two walls is folded in closed form, with the same result
+ * the reflections would give (exact fmod fold for c = 1, a geometric series
+ * for c < 1), so a fast particle lands where it should instead of sitting on
+ * a wall.  A NaN or infinite position or velocity is clamped onto the wall
+ * as a last safety net.  After the stage every particle is inside
+ * [left, right] x [bottom, top] for the enabled sides.
  *
  * The bounce is its own stage so callers choose the order: the thesis's
  * examples draw BEFORE zarobi, its simulator AFTER (isk_system has

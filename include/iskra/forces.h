@@ -44,10 +44,22 @@
  *
  * Exactly at the centre (d == 0): with a min distance the force is 0 (n = 0).
  * Without one, the thesis computes 0*(kQ/0) = NaN; that is what
- * ISK_FIDELITY_THESIS reproduces.  ISK_FIDELITY_SOUND (the default, 0) gives
- * zero force whenever d'^P == 0 (exact centre, or d^P underflowing), so no
- * NaN is ever produced; near the centre without a min distance the force is
- * still as large as the law says (use min_dist to soften it).
+ * ISK_FIDELITY_THESIS reproduces (and close to the centre it overflows to
+ * +-Inf just as the thesis would).  ISK_FIDELITY_SOUND (the default, 0)
+ * never produces NaN or Inf:
+ *   - exactly at the centre (n = 0) the force is (0, 0): the law has no
+ *     direction there, and a symmetric field pulls equally every way;
+ *   - wherever the law's force is not representable or has a component
+ *     beyond ISK_FORCE_LIMIT (1e150) in magnitude (d^P underflowing, e.g.
+ *     d = 1e-150 with P = 9, or simply a huge force near the centre), it
+ *     SATURATES: same direction n, larger component exactly +-1e150.
+ *   - a particle whose offset from the potential is not finite (an Inf or
+ *     NaN position) feels no force from it.
+ * Forces below the limit are bit-identical to the thesis's.  1e150 is far
+ * beyond any physical scene, and small enough that F^2, v^2 and v*dt sums
+ * stay finite, so a saturated kick never turns into Inf downstream.  Near
+ * the centre without a min distance the force is still as large as the law
+ * says up to the limit (use min_dist to soften it).
  *
  * Motion: a potential moves by `vel * param` (the thesis's pomak(param) =
  * (0, 20*param) is vel = (0, 20)) or, when `motion` is set, by the vector the
@@ -62,6 +74,10 @@
 #include "iskra/vec2.h"
 
 #define ISK_DIST_OFF (-1.0)
+
+/* Largest force component the sound centre rule lets a potential produce
+ * (see the top: saturation). */
+#define ISK_FORCE_LIMIT 1e150
 
 typedef enum isk_fidelity {
     ISK_FIDELITY_SOUND = 0,  /* physically sound, never NaN (default) */
@@ -132,9 +148,10 @@ void isk_force_potential(isk_potential *pot, size_t n, const double *x, const do
 /* The whole force pipeline in the documented order: fx, fy receive
  * (gravity + drag) + P_sum; px, py are scratch of n doubles (unused when
  * there are no potentials).  with_drag = 0 leaves the drag out (the exact
- * drag integrator handles it analytically). */
-void isk_forces_eval(isk_forces *f, size_t n, const double *x, const double *y, const double *vx,
-                     const double *vy, const double *m, double *fx, double *fy, double *px,
-                     double *py, int with_drag);
+ * drag integrator handles it analytically).  The drag stage first flushes
+ * velocity components below ISK_FLUSH_TINY to zero (iskra/integrate.h:
+ * why), which is why vx, vy are not const. */
+void isk_forces_eval(isk_forces *f, size_t n, const double *x, const double *y, double *vx, double *vy,
+                     const double *m, double *fx, double *fy, double *px, double *py, int with_drag);
 
 #endif

@@ -27,6 +27,18 @@
  *                             Stable and monotone for every b*dt/m >= 0.
  *                             Not vectorized (expm1 is a libm call).
  *
+ * Decaying speeds and subnormal numbers: linear drag shrinks a velocity by
+ * a factor each step, so without gravity it sinks through the subnormal
+ * range (below 2.2e-308), where this machine's floating-point unit is about
+ * 100x slower, and round-to-nearest then keeps it there for good (at 5e-322,
+ * v*(1 - b*dt/m) rounds back to v).  So every stage whose only effect is to
+ * make a speed decay flushes components below ISK_FLUSH_TINY (1e-200) to
+ * exactly zero: the drag stage (before it computes -b*v), the exact-drag
+ * update, the effect runtime's slowing and its oscillation-amplitude decay.
+ * 1e-200 is hundreds of orders below any visible motion and far enough above
+ * the subnormal range that v*dt, b*v and dt/m*F stay normal for any sane dt
+ * and b.  bench/bench_long_run.c measures the effect (10^7 steps).
+ *
  * Forces come from an isk_forces (iskra/forces.h).  Verlet and RK4 evaluate
  * them at intermediate states; a potential's sticky max-distance switch can
  * then trip at an intermediate state (documented, deterministic).
@@ -56,6 +68,9 @@ typedef enum isk_integrator {
 } isk_integrator;
 
 #define ISK_SIM_BLOCK 256
+
+/* Decaying speeds are flushed to 0 below this (see the top). */
+#define ISK_FLUSH_TINY 1e-200
 
 /* Per-block working arrays (force accumulators, potential sum, RK4 copies). */
 typedef struct isk_scratch {

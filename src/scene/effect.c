@@ -12,6 +12,7 @@
 #include <string.h>
 
 #include "effect_internal.h"
+#include "sim/kernels.h"
 
 /* ---- validation ----------------------------------------------------------- */
 
@@ -685,8 +686,8 @@ static void stage_slow(size_t n, double *restrict vx, double *restrict vy, doubl
     if (!(f > 0.0))
         f = 0.0;
     for (size_t i = 0; i < n; i++) {
-        vx[i] *= f;
-        vy[i] *= f;
+        vx[i] = isk_k_flush(vx[i] * f);
+        vy[i] = isk_k_flush(vy[i] * f);
     }
 }
 
@@ -700,7 +701,7 @@ static void stage_drift_slow(size_t n, double *restrict x, double *restrict y, d
     if (!(f > 0.0))
         f = 0.0;
     for (size_t i = 0; i < n; i++) {
-        double nvx = (vx[i] + dvx) * f, nvy = (vy[i] + dvy) * f;
+        double nvx = isk_k_flush((vx[i] + dvx) * f), nvy = isk_k_flush((vy[i] + dvy) * f);
         vx[i] = nvx;
         vy[i] = nvy;
         x[i] = x[i] + h * nvx;
@@ -721,26 +722,26 @@ static void stage_oscillate(isk_effect *e, fx_group *g, size_t o, size_t n, doub
             ph[i] += om[i] * h;
             double s = amp[i] * isk_sinlut_floor(&e->sin_table, ph[i]);
             double dx = s - off[i];
-            x[i] += dx; vx[i] += dx; off[i] = s; amp[i] *= decay;
+            x[i] += dx; vx[i] += dx; off[i] = s; amp[i] = isk_k_flush(amp[i] * decay);
         }
     } else if (em->osc_use_table) {
         for (size_t i = 0; i < n; i++) {
             ph[i] += om[i] * h;
             double s = amp[i] * isk_sinlut_floor(&e->sin_table, ph[i]);
-            x[i] += s - off[i]; off[i] = s; amp[i] *= decay;
+            x[i] += s - off[i]; off[i] = s; amp[i] = isk_k_flush(amp[i] * decay);
         }
     } else if (em->osc_faithful) {
         for (size_t i = 0; i < n; i++) {
             ph[i] += om[i] * h;
             double s = amp[i] * sin(ph[i]);
             double dx = s - off[i];
-            x[i] += dx; vx[i] += dx; off[i] = s; amp[i] *= decay;
+            x[i] += dx; vx[i] += dx; off[i] = s; amp[i] = isk_k_flush(amp[i] * decay);
         }
     } else {
         for (size_t i = 0; i < n; i++) {
             ph[i] += om[i] * h;
             double s = amp[i] * sin(ph[i]);
-            x[i] += s - off[i]; off[i] = s; amp[i] *= decay;
+            x[i] += s - off[i]; off[i] = s; amp[i] = isk_k_flush(amp[i] * decay);
         }
     }
 }

@@ -117,6 +117,46 @@ static void reflect_pass(size_t n, double *restrict pos, double *restrict v, dou
 }
 
 /* Rare path: a particle still outside after one reflection per wall. */
+/* Where a particle still outside after ISK_BOUNCE_MAX_REFLECTIONS
+ * reflections ends up, in closed form (only between two walls, W = hi - lo
+ * > 0; a single wall always takes one reflection).  With a first overshoot
+ * o_0 beyond a wall, each reflection leaves o_{k+1} = c o_k - W beyond the
+ * other one.
+ *   c = 1: the path folds like a triangle wave of period 2W: fmod is exact,
+ *          and the parity of the number of reflections flips v or not.
+ *   c < 1: o_k = c^k (o_0 + S) - S with S = W / (1 - c), so the count is
+ *          K = ceil(log1p(o_0 / S) / -log(c)); the particle ends c o_{K-1}
+ *          inside the wall it hit last, with velocity v (-c)^K.
+ * So a particle at any speed (10^6 units per step in a box of 10: 10^5
+ * reflections) ends inside at the right place instead of clamped onto a
+ * wall step after step, which would look stuck. */
+static void fold_between(double *pos, double *vel, double lo, double hi, double c)
+{
+    double p = *pos, u = *vel, W = hi - lo;
+    if (c == 1.0) {
+        double m = fmod(p - lo, 2.0 * W);
+        if (m < 0.0)
+            m += 2.0 * W;
+        int odd = m > W;
+        *pos = odd ? lo + (2.0 * W - m) : lo + m;
+        *vel = odd ? -u : u;
+        return;
+    }
+    int above = p > hi;
+    double o0 = above ? p - hi : lo - p;
+    double S = W / (1.0 - c);
+    double K = ceil(log1p(o0 / S) / -log(c));
+    if (!(K >= 1.0))
+        K = 1.0;
+    double ck = pow(c, K);
+    double inside = ck * (o0 + S) - S + W; /* c o_{K-1}: distance inside the last wall */
+    inside = inside < 0.0 ? 0.0 : (inside > W ? W : inside);
+    int last_is_first = fmod(K, 2.0) == 1.0;
+    int last_hi = last_is_first ? above : !above;
+    *pos = last_hi ? hi - inside : lo + inside;
+    *vel = isk_k_flush(last_is_first ? -u * ck : u * ck);
+}
+
 static void settle_axis(size_t n, double *restrict pos, double *restrict v, double lo, double hi,
                         double c)
 {
@@ -133,6 +173,8 @@ static void settle_axis(size_t n, double *restrict pos, double *restrict v, doub
             else
                 break; /* NaN: handled by the clamp below */
         }
+        if ((p < lo || p > hi) && isfinite(p) && isfinite(lo) && isfinite(hi) && isfinite(u))
+            fold_between(&p, &u, lo, hi, c);
         if (!(p >= lo)) { /* also catches NaN */
             p = lo;
             if (!(u >= 0.0))

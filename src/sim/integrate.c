@@ -53,8 +53,8 @@ void isk_integrate_exact_drag(size_t n, double *restrict x, double *restrict y, 
         double ovx = vx[i], ovy = vy[i];
         x[i] = x[i] + ovx * (dt * g1) + ax * (dt2 * g2);
         y[i] = y[i] + ovy * (dt * g1) + ay * (dt2 * g2);
-        vx[i] = ovx * e + ax * (dt * g1);
-        vy[i] = ovy * e + ay * (dt * g1);
+        vx[i] = isk_k_flush(ovx * e + ax * (dt * g1));
+        vy[i] = isk_k_flush(ovy * e + ay * (dt * g1));
     }
 }
 
@@ -118,8 +118,8 @@ static void rk4_stage(size_t n, isk_scratch *restrict s, double *restrict x, dou
     }
 }
 
-static void eval(isk_forces *f, isk_scratch *s, size_t n, const double *x, const double *y,
-                 const double *vx, const double *vy, const double *m, int with_drag)
+static void eval(isk_forces *f, isk_scratch *s, size_t n, const double *x, const double *y, double *vx,
+                 double *vy, const double *m, int with_drag)
 {
     isk_forces_eval(f, n, x, y, vx, vy, m, s->fx, s->fy, s->px, s->py, with_drag);
 }

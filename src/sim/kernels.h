@@ -16,6 +16,9 @@
 
 #include <math.h>
 
+#include "iskra/forces.h"
+#include "iskra/integrate.h"
+
 /* MaterijalnaTocka.pomakni(dt, F): semi-implicit (symplectic) Euler exactly as
  * the thesis code: c = dt/m first, v += c*F per component (product first,
  * dodajCputaV), then r += dt*v with the NEW velocity. */
@@ -57,26 +60,60 @@ static inline double isk_k_drag(double v, double b) { return (-b) * v; }
  *   mult = s / d'^P   with s = enabled*(Q*k) precomputed by the caller
  *   F = n * mult
  * pw_kind is a compile-time constant at every call site: 2 -> d'*d' (exactly
- * V8's d**2), 1 -> d', 0 -> pow(d', P).  With sound != 0 a zero denominator
- * (the particle exactly on a potential without min distance, or d'^P
- * underflowing) gives zero force instead of the thesis's 0*inf = NaN. */
-static inline void isk_k_coulomb(double cx, double cy, double x, double y, double s, double xm,
-                                 double minv, double P, int pw_kind, int sound, double *fx,
-                                 double *fy)
+ * V8's d**2), 1 -> d', 0 -> pow(d', P).
+ * Returns 1 when (fx, fy) is the force.  With sound != 0 a result that is
+ * not finite or has a component beyond ISK_FORCE_LIMIT (the particle exactly
+ * on a potential without min distance: 0*inf = NaN in the thesis; d'^P
+ * underflowing; a huge force close to the centre) is replaced by (0, 0) and
+ * the function returns 0: the caller then asks isk_k_coulomb_saturated for
+ * the force (a rare fix-up, in a second pass). */
+static inline int isk_k_coulomb(double cx, double cy, double x, double y, double s, double xm,
+                                double minv, double P, int pw_kind, int sound, double *fx, double *fy)
 {
     double dx = cx - x, dy = cy - y;
     double d = sqrt(dx * dx + dy * dy);
     double nx = dx * xm;
     double dd = isgreater(minv, d) ? minv : d;
     double pw = pw_kind == 2 ? dd * dd : (pw_kind == 1 ? dd : pow(dd, P));
-    /* sound: a zero (or NaN) denominator becomes +inf, so mult = s/inf = 0;
-     * selecting the operand rather than the quotient keeps the division
-     * unconditional, which the vectorizer needs. */
-    double den = sound ? (isgreater(pw, 0.0) ? pw : INFINITY) : pw;
-    double mult = s / den;
-    *fx = nx * mult;
-    *fy = dy * mult;
+    double mult = s / pw;
+    double gx = nx * mult, gy = dy * mult;
+    if (!sound) {
+        *fx = gx;
+        *fy = gy;
+        return 1;
+    }
+    /* islessequal is false for NaN, so 0*inf lands here too. */
+    int ok = islessequal(fabs(gx), ISK_FORCE_LIMIT) & islessequal(fabs(gy), ISK_FORCE_LIMIT);
+    *fx = ok ? gx : 0.0;
+    *fy = ok ? gy : 0.0;
+    return ok;
 }
+
+/* The sound mode's force where isk_k_coulomb returned 0: the law's
+ * direction n = (xm*(cx - x), cy - y) with the larger component exactly
+ * +-ISK_FORCE_LIMIT (towards the potential when s > 0).  Dividing by the
+ * larger component instead of |n| keeps the direction exact even when
+ * |n|^2 would underflow.  No direction exists exactly at the centre (n = 0)
+ * or for a non-finite offset: the force is then (0, 0). */
+static inline void isk_k_coulomb_saturated(double cx, double cy, double x, double y, double s, double xm,
+                                           double *fx, double *fy)
+{
+    double nx = (cx - x) * xm, ny = cy - y;
+    double c = fmax(fabs(nx), fabs(ny));
+    if (!(c > 0.0 && c < INFINITY) || s == 0.0) {
+        *fx = 0.0;
+        *fy = 0.0;
+        return;
+    }
+    double lim = copysign(ISK_FORCE_LIMIT, s);
+    *fx = (nx / c) * lim;
+    *fy = (ny / c) * lim;
+}
+
+/* Components of a speed (or an amplitude) that only decays are flushed to
+ * zero below ISK_FLUSH_TINY (see iskra/integrate.h): quiet compare, so the
+ * loops stay vectorized. */
+static inline double isk_k_flush(double v) { return isless(fabs(v), ISK_FLUSH_TINY) ? 0.0 : v; }
 
 /* The distance the max-distance switch tests (same operations as above). */
 static inline double isk_k_coulomb_dist(double cx, double cy, double x, double y)
