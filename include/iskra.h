@@ -16,6 +16,8 @@
  *   iskra/shape.h    spawn shapes, velocity generators
  *   iskra/timestep.h fixed-step accumulator  iskra/effect.h  whole effects (stage lists)
  *   iskra/scene.h    INI scene files      iskra/presets.h  fire, smoke, sparks, ...
+ *   iskra/chart.h    line charts (work-precision diagrams, log/linear axes)
+ *   iskra/problems.h closed-form reference problems (integrator accuracy)
  * The SDL2 window lives in a separate library: #include "iskra/sdl.h" and
  * link libiskra-sdl (pkg-config iskra-sdl).
  */
@@ -47,5 +49,7 @@
 #include "iskra/effect.h"
 #include "iskra/scene.h"
 #include "iskra/presets.h"
+#include "iskra/chart.h"
+#include "iskra/problems.h"
 
 #endif
