@@ -186,8 +186,9 @@ run: deps
 	@BUILD=$(BUILD) sh tools/run_demo.sh
 
 bench: deps
-	@$(MAKE) --no-print-directory benches
+	@$(MAKE) --no-print-directory benches $(TOOL)
 	@set -e; for b in $(BENCHES); do echo "== $$b"; $$b; done
+	@echo "== iskra bench accuracy"; $(TOOL) bench accuracy --out out/accuracy
 
 # ---- fuzzing (clang + libFuzzer) -------------------------------------------
 # `make fuzz [FUZZ_TIME=600]`: the scene parser and runtime under libFuzzer

@@ -17,5 +17,6 @@ int cmd_list(int argc, char **argv);
 int cmd_describe(int argc, char **argv);
 int cmd_render(int argc, char **argv);
 int cmd_play(int argc, char **argv);
+int cmd_bench(int argc, char **argv);
 
 #endif

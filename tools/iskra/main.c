@@ -10,6 +10,7 @@ static const isk_command commands[] = {
     {"render", "render a scene to PNG (one frame or a sequence)", cmd_render},
     {"play", "run a scene in a window in real time", cmd_play},
     {"compare", "compare two PNG images pixel by pixel", cmd_compare},
+    {"bench", "measure what accuracy costs in time (bench accuracy)", cmd_bench},
 };
 
 static void usage(FILE *f)

@@ -1,0 +1,265 @@
+/* `iskra bench accuracy`: usage errors exit 2 with a clear message, --help
+ * exits 0, and a quick run of the integrator study writes well-formed CSV
+ * files (one row per setting) and readable charts.  Timings are machine
+ * dependent and never asserted. */
+#include <criterion/criterion.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <sys/wait.h>
+
+#include "iskra/png.h"
+#include "iskra/problems.h"
+#include "refimg.h"
+
+/* Criterion runs tests in parallel: each test has its own directory. */
+#define OUT "out/test_bench_cli"
+#define USAGE OUT "/usage"
+#define HELP OUT "/help"
+#define QUICK OUT "/quick"
+
+static void fresh(const char *dir)
+{
+    char cmd[512];
+    snprintf(cmd, sizeof cmd, "rm -rf %s && mkdir -p %s", dir, dir);
+    cr_assert_eq(system(cmd), 0);
+}
+
+/* Runs `iskra ARGS` (stdout/stderr to files in dir); returns the exit status. */
+static int run(const char *dir, const char *args)
+{
+    char cmd[2048];
+    snprintf(cmd, sizeof cmd, "%s/bin/iskra %s >%s/stdout.txt 2>%s/stderr.txt", refimg_build_dir(), args, dir, dir);
+    int rc = system(cmd);
+    cr_assert(WIFEXITED(rc), "%s did not exit normally", cmd);
+    return WEXITSTATUS(rc);
+}
+
+/* The whole file (malloc'd, NUL-terminated). */
+static char *slurp(const char *path)
+{
+    FILE *f = fopen(path, "rb");
+    cr_assert_not_null(f, "%s", path);
+    fseek(f, 0, SEEK_END);
+    long n = ftell(f);
+    fseek(f, 0, SEEK_SET);
+    char *buf = malloc((size_t)n + 1);
+    cr_assert_not_null(buf);
+    cr_assert_eq(fread(buf, 1, (size_t)n, f), (size_t)n);
+    buf[n] = 0;
+    fclose(f);
+    return buf;
+}
+
+static int exists(const char *path)
+{
+    struct stat st;
+    return stat(path, &st) == 0;
+}
+
+/* Exit status 2 and `needle` on stderr, nothing on stdout's place. */
+static void usage_error(const char *args, const char *needle)
+{
+    cr_assert_eq(run(USAGE, args), 2, "iskra %s", args);
+    char *err = slurp(USAGE "/stderr.txt");
+    cr_assert_not_null(strstr(err, needle), "iskra %s: stderr lacks \"%s\":\n%s", args, needle, err);
+    free(err);
+}
+
+Test(bench_cli, usage_errors)
+{
+    fresh(USAGE);
+    usage_error("bench", "expected 'accuracy'");
+    usage_error("bench speed", "expected 'accuracy', got 'speed'");
+    usage_error("bench accuracy --bogus", "unknown option '--bogus'");
+    usage_error("bench accuracy --only", "--only needs a value");
+    usage_error("bench accuracy --out", "--out needs a value");
+    usage_error("bench accuracy --quick --only nope --out " USAGE "/none", "no study named 'nope'");
+    cr_assert_not(exists(USAGE "/none"), "nothing is written on a usage error");
+}
+
+Test(bench_cli, help)
+{
+    fresh(HELP);
+    const char *forms[3] = {"bench --help", "bench accuracy --help", "bench accuracy --quick -h"};
+    for (int i = 0; i < 3; i++) {
+        cr_assert_eq(run(HELP, forms[i]), 0, "%s", forms[i]);
+        char *out = slurp(HELP "/stdout.txt");
+        cr_assert_not_null(strstr(out, "usage: iskra bench accuracy"), "%s", forms[i]);
+        cr_assert_not_null(strstr(out, "integrators"), "the help names the studies");
+        free(out);
+    }
+}
+
+/* ---- the quick run's files -------------------------------------------------- */
+
+enum { MAX_ROWS = 4096, MAX_COLS = 16 };
+
+typedef struct csv {
+    char *text;
+    int ncols, nrows;
+    char *head[MAX_COLS];
+    char *cell[MAX_ROWS][MAX_COLS];
+} csv;
+
+/* Splits the file in place into header and rows; every row must have the
+ * header's number of fields. */
+static void csv_read(csv *c, const char *path)
+{
+    memset(c, 0, sizeof *c);
+    c->text = slurp(path);
+    char *line = c->text, *next;
+    int row = -1;
+    for (; *line; line = next) {
+        next = strchr(line, '\n');
+        cr_assert_not_null(next, "%s: the last line is not terminated", path);
+        *next++ = 0;
+        char **dst = row < 0 ? c->head : c->cell[row];
+        int n = 0;
+        for (char *f = line;; n++) {
+            cr_assert_lt(n, MAX_COLS, "%s: too many fields", path);
+            dst[n] = f;
+            char *comma = strchr(f, ',');
+            if (!comma) {
+                n++;
+                break;
+            }
+            *comma = 0;
+            f = comma + 1;
+        }
+        if (row < 0)
+            c->ncols = n;
+        else
+            cr_assert_eq(n, c->ncols, "%s row %d: %d fields, the header has %d", path, row + 1, n, c->ncols);
+        row++;
+        cr_assert_lt(row, MAX_ROWS);
+    }
+    c->nrows = row;
+}
+
+static int col(const csv *c, const char *name)
+{
+    for (int i = 0; i < c->ncols; i++)
+        if (!strcmp(c->head[i], name))
+            return i;
+    cr_assert_fail("no column %s", name);
+    return -1;
+}
+
+static double num(const char *s)
+{
+    char *end;
+    double v = strtod(s, &end);
+    cr_assert(end != s && *end == 0, "not a number: '%s'", s);
+    return v;
+}
+
+static int integrator_index(const char *name)
+{
+    for (int m = 0; m < ISK_INTEGRATOR_COUNT; m++)
+        if (!strcmp(name, isk_integrator_name((isk_integrator)m)))
+            return m;
+    cr_assert_fail("unknown integrator '%s'", name);
+    return -1;
+}
+
+static void check_csv(isk_problem_kind kind, const char *errors)
+{
+    char path[256], header[512];
+    snprintf(path, sizeof path, QUICK "/acc/%s.csv", isk_problem_name(kind));
+    csv *c = malloc(sizeof *c);
+    csv_read(c, path);
+    snprintf(header, sizeof header, "problem,integrator,substeps,dt,steps,%s,diverged,ns_per_particle_step,ns_per_particle_run",
+             errors);
+    char joined[512] = "";
+    for (int i = 0; i < c->ncols; i++)
+        snprintf(joined + strlen(joined), sizeof joined - strlen(joined), "%s%s", i ? "," : "", c->head[i]);
+    cr_assert_str_eq(joined, header);
+
+    const double T = isk_problem_defaults(kind).T;
+    const int ci = col(c, "integrator"), cs = col(c, "substeps"), cdt = col(c, "dt"), cn = col(c, "steps"),
+              cdv = col(c, "diverged"), cps = col(c, "ns_per_particle_step"), cpr = col(c, "ns_per_particle_run");
+    /* steps seen per (integrator, substeps): every group sweeps the same steps */
+    long seen[ISK_INTEGRATOR_COUNT][3][64];
+    int nseen[ISK_INTEGRATOR_COUNT][3] = {{0}};
+    for (int r = 0; r < c->nrows; r++) {
+        char **row = c->cell[r];
+        cr_assert_str_eq(row[0], isk_problem_name(kind));
+        int m = integrator_index(row[ci]);
+        int sub = (int)num(row[cs]);
+        cr_assert(sub == 1 || sub == 2 || sub == 4, "substeps %d", sub);
+        int j = sub == 1 ? 0 : sub == 2 ? 1 : 2;
+        double dt = num(row[cdt]), steps = num(row[cn]);
+        cr_assert(steps >= 1 && steps == floor(steps));
+        cr_assert(fabs(dt * steps - T) < 1e-12 * T, "%s row %d: dt %g x %g steps != T %g", path, r + 1, dt, steps, T);
+        for (int k = 0; k < nseen[m][j]; k++)
+            cr_assert_neq(seen[m][j][k], (long)steps, "%s row %d repeats a setting", path, r + 1);
+        cr_assert_lt(nseen[m][j], 64);
+        seen[m][j][nseen[m][j]++] = (long)steps;
+        int diverged = (int)num(row[cdv]);
+        cr_assert(diverged == 0 || diverged == 1);
+        for (int e = 5; e < cdv; e++) {
+            double v = num(row[e]); /* strtod reads "inf" and "nan" too */
+            if (!diverged)
+                cr_assert(isfinite(v) && v >= 0, "%s row %d: %s = %s", path, r + 1, c->head[e], row[e]);
+        }
+        double ps = num(row[cps]), pr = num(row[cpr]);
+        cr_assert(isfinite(ps) && ps > 0 && isfinite(pr) && pr > 0, "%s row %d: timings %g %g", path, r + 1, ps, pr);
+        /* the run's cost is the step's cost times the integrator steps (CSV rounding aside) */
+        cr_assert(fabs(pr / (ps * steps * sub) - 1) < 0.01, "%s row %d", path, r + 1);
+        if (kind == ISK_PROBLEM_PROJECTILE && m == ISK_INTEGRATE_EXACT_DRAG)
+            cr_assert_lt(num(row[col(c, "position_error")]), 1e-10, "exact drag is exact");
+    }
+    int per = nseen[0][0];
+    cr_assert_geq(per, 6, "%s: %d step sizes", path, per);
+    for (int m = 0; m < ISK_INTEGRATOR_COUNT; m++)
+        for (int j = 0; j < 3; j++) {
+            cr_assert_eq(nseen[m][j], per, "%s: %s substeps group %d has %d rows, not %d", path,
+                         isk_integrator_name((isk_integrator)m), j, nseen[m][j], per);
+            for (int k = 0; k < per; k++)
+                cr_assert_eq(seen[m][j][k], seen[0][0][k]);
+        }
+    cr_assert_eq(c->nrows, ISK_INTEGRATOR_COUNT * 3 * per);
+    free(c->text);
+    free(c);
+}
+
+static void check_png(const char *name)
+{
+    char path[256];
+    snprintf(path, sizeof path, QUICK "/acc/%s", name);
+    isk_canvas cv;
+    cr_assert_eq(isk_png_read(&cv, path, NULL), ISK_OK, "%s", path);
+    cr_assert_eq(cv.width, 1200);
+    cr_assert_eq(cv.height, 800);
+    /* a chart, not a blank page: many pixels differ from the corner's */
+    size_t n = (size_t)cv.width * (size_t)cv.height, ink = 0;
+    for (int y = 0; y < cv.height; y++)
+        for (int x = 0; x < cv.width; x++)
+            ink += memcmp(cv.pixels + (size_t)y * cv.stride + (size_t)x * 4, cv.pixels, 4) != 0;
+    cr_assert_gt(ink, n / 100, "%s: only %zu pixels drawn", path, ink);
+    isk_canvas_free(&cv);
+}
+
+Test(bench_cli, quick_integrator_study_writes_csv_and_charts, .timeout = 120)
+{
+    fresh(QUICK);
+    int rc = run(QUICK, "bench accuracy --quick --only integrators --out " QUICK "/acc");
+    char *err = slurp(QUICK "/stderr.txt");
+    cr_assert_eq(rc, 0, "exit %d, stderr:\n%s", rc, err);
+    free(err);
+    char *out = slurp(QUICK "/stdout.txt");
+    cr_assert_not_null(strstr(out, "observed order"), "%s", out);
+    cr_assert_not_null(strstr(out, "cheapest setting"));
+    cr_assert_not_null(strstr(out, "bit-identical"));
+    cr_assert_null(strstr(out, "== knobs"), "--only ran one study");
+    free(out);
+    check_csv(ISK_PROBLEM_PROJECTILE, "position_error,velocity_error");
+    check_csv(ISK_PROBLEM_OSCILLATOR, "position_error,velocity_error,energy_error,phase_error");
+    check_csv(ISK_PROBLEM_RADIAL, "energy_error");
+    const char *charts[5] = {"projectile.png", "oscillator.png", "oscillator_phase.png", "radial.png", "substeps.png"};
+    for (int i = 0; i < 5; i++)
+        check_png(charts[i]);
+}

@@ -1,0 +1,91 @@
+/* iskra bench accuracy [--out DIR] [--quick] [--only STUDY]
+ * What accuracy costs in time: every study measures error against time on
+ * problems with known answers and writes a CSV and a chart per problem. */
+#include <stdio.h>
+#include <string.h>
+
+#include "cmd.h"
+#include "study.h"
+
+typedef struct study_entry {
+    const char *name;
+    const char *summary;
+    int (*run)(const study_opts *o);
+} study_entry;
+
+static const study_entry studies[] = {
+    {"integrators", "integrator x step x substeps on three closed-form problems", study_integrators},
+    {"knobs", "sine table, emission modes, ellipse sampler, float vs double", study_knobs},
+};
+enum { NSTUDIES = sizeof studies / sizeof studies[0] };
+
+static void help(FILE *f)
+{
+    fprintf(f, "usage: iskra bench accuracy [--out DIR] [--quick] [--only STUDY]\n"
+               "  Measures error against time per particle-step and writes CSV files and\n"
+               "  work-precision charts (PNG) into DIR (default out/accuracy).\n"
+               "  --quick       fewer repetitions and shorter sweeps (a smoke run)\n"
+               "  --only STUDY  run one study:");
+    for (int i = 0; i < NSTUDIES; i++)
+        fprintf(f, " %s", studies[i].name);
+    fprintf(f, "\n  studies:\n");
+    for (int i = 0; i < NSTUDIES; i++)
+        fprintf(f, "    %-12s %s\n", studies[i].name, studies[i].summary);
+    fprintf(f, "  Timings depend on the machine and its load; read the ratios.\n"
+               "  exit status: 0 done, 1 a study failed, 2 usage error\n");
+}
+
+int cmd_bench(int argc, char **argv)
+{
+    if (argc >= 2 && (!strcmp(argv[1], "--help") || !strcmp(argv[1], "-h"))) {
+        help(stdout);
+        return 0;
+    }
+    if (argc < 2 || strcmp(argv[1], "accuracy") != 0) {
+        fprintf(stderr, "iskra bench: expected 'accuracy'%s%s%s\n", argc >= 2 ? ", got '" : "",
+                argc >= 2 ? argv[1] : "", argc >= 2 ? "'" : "");
+        help(stderr);
+        return 2;
+    }
+    study_opts o = {"out/accuracy", 0};
+    const char *only = NULL;
+    for (int i = 2; i < argc; i++) {
+        if (!strcmp(argv[i], "--help") || !strcmp(argv[i], "-h")) {
+            help(stdout);
+            return 0;
+        } else if (!strcmp(argv[i], "--quick")) {
+            o.quick = 1;
+        } else if (!strcmp(argv[i], "--out") || !strcmp(argv[i], "--only")) {
+            if (i + 1 >= argc || !argv[i + 1][0]) {
+                fprintf(stderr, "iskra bench: %s needs a value\n", argv[i]);
+                return 2;
+            }
+            if (!strcmp(argv[i], "--out"))
+                o.out_dir = argv[++i];
+            else
+                only = argv[++i];
+        } else {
+            fprintf(stderr, "iskra bench: unknown option '%s'\n", argv[i]);
+            help(stderr);
+            return 2;
+        }
+    }
+    int found = 0, rc = 0;
+    for (int i = 0; i < NSTUDIES; i++) {
+        if (only && strcmp(only, studies[i].name) != 0)
+            continue;
+        found = 1;
+        printf("== %s: %s\n\n", studies[i].name, studies[i].summary);
+        fflush(stdout);
+        if (studies[i].run(&o) != 0)
+            rc = 1;
+    }
+    if (!found) {
+        fprintf(stderr, "iskra bench: no study named '%s'\n", only);
+        help(stderr);
+        return 2;
+    }
+    if (rc == 0)
+        printf("CSV files and charts in %s/\n", o.out_dir);
+    return rc;
+}
