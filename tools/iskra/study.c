@@ -102,6 +102,7 @@ int study_write_text(const study_opts *o, const char *name, const study_buf *b)
         fprintf(stderr, "iskra bench: %s: %s\n", path, strerror(errno));
         return 1;
     }
+    fchmod(fd, 0644); /* mkstemp makes it 0600; a CSV is for everyone to read, like the PNGs */
     FILE *f = fdopen(fd, "wb");
     if (!f) {
         fprintf(stderr, "iskra bench: %s: %s\n", path, strerror(errno));

@@ -3,7 +3,7 @@
  * JavaScript is doubles and its trajectories are reproduced bit for bit),
  * so this file carries its own float copy of the semi-implicit Euler step.
  *
- * Problem (as bench/bench_accuracy.c): a projectile under gravity g and
+ * Problem (as the integrator study, iskra/problems.h): a projectile under gravity g and
  * linear drag b, mass m, with a closed form
  *     r(t) = r0 + v_inf t + (v0 - v_inf)(1 - e^{-kt})/k,  k = b/m,  v_inf = (0, -g/k),
  * NP particles with different launch velocities, error = the largest
