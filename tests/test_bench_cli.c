@@ -13,6 +13,7 @@
 #include "iskra/png.h"
 #include "iskra/problems.h"
 #include "refimg.h"
+#include "tool_cli.h"
 
 /* Criterion runs tests in parallel: each test has its own directory. */
 #define OUT "out/test_bench_cli"
@@ -20,73 +21,34 @@
 #define HELP OUT "/help"
 #define QUICK OUT "/quick"
 
-static void fresh(const char *dir)
-{
-    char cmd[512];
-    snprintf(cmd, sizeof cmd, "rm -rf %s && mkdir -p %s", dir, dir);
-    cr_assert_eq(system(cmd), 0);
-}
-
-/* Runs `iskra ARGS` (stdout/stderr to files in dir); returns the exit status. */
-static int run(const char *dir, const char *args)
-{
-    char cmd[2048];
-    snprintf(cmd, sizeof cmd, "%s/bin/iskra %s >%s/stdout.txt 2>%s/stderr.txt", refimg_build_dir(), args, dir, dir);
-    int rc = system(cmd);
-    cr_assert(WIFEXITED(rc), "%s did not exit normally", cmd);
-    return WEXITSTATUS(rc);
-}
-
-/* The whole file (malloc'd, NUL-terminated). */
-static char *slurp(const char *path)
-{
-    FILE *f = fopen(path, "rb");
-    cr_assert_not_null(f, "%s", path);
-    fseek(f, 0, SEEK_END);
-    long n = ftell(f);
-    fseek(f, 0, SEEK_SET);
-    char *buf = malloc((size_t)n + 1);
-    cr_assert_not_null(buf);
-    cr_assert_eq(fread(buf, 1, (size_t)n, f), (size_t)n);
-    buf[n] = 0;
-    fclose(f);
-    return buf;
-}
-
-static int exists(const char *path)
-{
-    struct stat st;
-    return stat(path, &st) == 0;
-}
-
 /* Exit status 2 and `needle` on stderr, nothing on stdout's place. */
 static void usage_error(const char *args, const char *needle)
 {
-    cr_assert_eq(run(USAGE, args), 2, "iskra %s", args);
-    char *err = slurp(USAGE "/stderr.txt");
+    cr_assert_eq(cli_run(USAGE, args), 2, "iskra %s", args);
+    char *err = cli_slurp(USAGE "/stderr.txt");
     cr_assert_not_null(strstr(err, needle), "iskra %s: stderr lacks \"%s\":\n%s", args, needle, err);
     free(err);
 }
 
 Test(bench_cli, usage_errors)
 {
-    fresh(USAGE);
+    cli_fresh(USAGE);
     usage_error("bench", "expected 'accuracy'");
     usage_error("bench speed", "expected 'accuracy', got 'speed'");
     usage_error("bench accuracy --bogus", "unknown option '--bogus'");
     usage_error("bench accuracy --only", "--only needs a value");
     usage_error("bench accuracy --out", "--out needs a value");
     usage_error("bench accuracy --quick --only nope --out " USAGE "/none", "no study named 'nope'");
-    cr_assert_not(exists(USAGE "/none"), "nothing is written on a usage error");
+    cr_assert_not(cli_exists(USAGE "/none"), "nothing is written on a usage error");
 }
 
 Test(bench_cli, help)
 {
-    fresh(HELP);
+    cli_fresh(HELP);
     const char *forms[3] = {"bench --help", "bench accuracy --help", "bench accuracy --quick -h"};
     for (int i = 0; i < 3; i++) {
-        cr_assert_eq(run(HELP, forms[i]), 0, "%s", forms[i]);
-        char *out = slurp(HELP "/stdout.txt");
+        cr_assert_eq(cli_run(HELP, forms[i]), 0, "%s", forms[i]);
+        char *out = cli_slurp(HELP "/stdout.txt");
         cr_assert_not_null(strstr(out, "usage: iskra bench accuracy"), "%s", forms[i]);
         cr_assert_not_null(strstr(out, "integrators"), "the help names the studies");
         free(out);
@@ -109,7 +71,7 @@ typedef struct csv {
 static void csv_read(csv *c, const char *path)
 {
     memset(c, 0, sizeof *c);
-    c->text = slurp(path);
+    c->text = cli_slurp(path);
     char *line = c->text, *next;
     int row = -1;
     for (; *line; line = next) {
@@ -230,27 +192,17 @@ static void check_png(const char *name)
 {
     char path[256];
     snprintf(path, sizeof path, QUICK "/acc/%s", name);
-    isk_canvas cv;
-    cr_assert_eq(isk_png_read(&cv, path, NULL), ISK_OK, "%s", path);
-    cr_assert_eq(cv.width, 1200);
-    cr_assert_eq(cv.height, 800);
-    /* a chart, not a blank page: many pixels differ from the corner's */
-    size_t n = (size_t)cv.width * (size_t)cv.height, ink = 0;
-    for (int y = 0; y < cv.height; y++)
-        for (int x = 0; x < cv.width; x++)
-            ink += memcmp(cv.pixels + (size_t)y * cv.stride + (size_t)x * 4, cv.pixels, 4) != 0;
-    cr_assert_gt(ink, n / 100, "%s: only %zu pixels drawn", path, ink);
-    isk_canvas_free(&cv);
+    cli_check_chart(path, 1200, 800);
 }
 
 Test(bench_cli, quick_integrator_study_writes_csv_and_charts, .timeout = 120)
 {
-    fresh(QUICK);
-    int rc = run(QUICK, "bench accuracy --quick --only integrators --out " QUICK "/acc");
-    char *err = slurp(QUICK "/stderr.txt");
+    cli_fresh(QUICK);
+    int rc = cli_run(QUICK, "bench accuracy --quick --only integrators --out " QUICK "/acc");
+    char *err = cli_slurp(QUICK "/stderr.txt");
     cr_assert_eq(rc, 0, "exit %d, stderr:\n%s", rc, err);
     free(err);
-    char *out = slurp(QUICK "/stdout.txt");
+    char *out = cli_slurp(QUICK "/stdout.txt");
     cr_assert_not_null(strstr(out, "observed order"), "%s", out);
     cr_assert_not_null(strstr(out, "cheapest setting"));
     cr_assert_not_null(strstr(out, "bit-identical"));

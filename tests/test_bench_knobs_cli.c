@@ -13,31 +13,19 @@
 
 #include "iskra/png.h"
 #include "refimg.h"
+#include "tool_cli.h"
 
 #define TDIR "out/test_bench_knobs_cli"
 #define RES TDIR "/res" /* the study's output directory */
 
-static char *slurp(const char *path)
-{
-    FILE *f = fopen(path, "rb");
-    cr_assert_not_null(f, "%s is missing", path);
-    static char buf[1 << 16];
-    size_t n = fread(buf, 1, sizeof buf - 1, f);
-    cr_assert_lt(n, sizeof buf - 1, "%s is larger than expected", path);
-    buf[n] = 0;
-    fclose(f);
-    return buf;
-}
-
 /* Checks RES/<name>.csv: the header, `rows` data rows of the same number of
  * fields, and numbers (finite, or empty in column `may_be_empty`) in every
- * column from `first_number` on.  Returns the file's text (a static buffer,
- * valid until the next call). */
+ * column from `first_number` on.  Returns the file's text (malloc'd). */
 static char *check_csv(const char *name, const char *header, int rows, int first_number, int may_be_empty)
 {
     char path[256];
     snprintf(path, sizeof path, RES "/%s.csv", name);
-    char *text = slurp(path);
+    char *text = cli_slurp(path);
     size_t hl = strlen(header);
     cr_assert(strncmp(text, header, hl) == 0 && text[hl] == '\n', "%s header: %.*s", name, (int)hl + 1, text);
     int fields = 1;
@@ -70,31 +58,18 @@ static void check_png(const char *name)
 {
     char path[256];
     snprintf(path, sizeof path, RES "/%s.png", name);
-    isk_canvas c;
-    isk_error err;
-    cr_assert_eq(isk_png_read(&c, path, &err), ISK_OK, "%s: %s", path, err.message);
-    cr_assert(c.width >= 640 && c.height >= 480, "%s: %dx%d", path, c.width, c.height);
-    /* a chart, not an empty canvas: more than one colour */
-    int varied = 0;
-    for (int y = 0; y < c.height && !varied; y++)
-        for (int x = 0; x < c.width && !varied; x++)
-            varied = memcmp(c.pixels + (size_t)y * c.stride + 4 * (size_t)x, c.pixels, 4) != 0;
-    cr_assert(varied, "%s is a single colour", path);
-    isk_canvas_free(&c);
+    cli_check_chart(path, 640, 480);
 }
 
 Test(bench_knobs_cli, quick_run_writes_every_csv_and_chart)
 {
-    cr_assert_eq(system("rm -rf " TDIR " && mkdir -p " TDIR), 0);
-    char cmd[1024];
-    snprintf(cmd, sizeof cmd,
-             "%s/bin/iskra bench accuracy --quick --only knobs --out " RES " >" TDIR "/stdout.txt 2>" TDIR
-             "/stderr.txt",
-             refimg_build_dir());
-    int rc = system(cmd);
-    cr_assert(WIFEXITED(rc) && WEXITSTATUS(rc) == 0, "%s: status %d\n%s", cmd, rc, slurp(TDIR "/stderr.txt"));
-    cr_assert_str_eq(slurp(TDIR "/stderr.txt"), "");
-    const char *out = slurp(TDIR "/stdout.txt");
+    cli_fresh(TDIR);
+    int rc = cli_run(TDIR, "bench accuracy --quick --only knobs --out " RES);
+    char *err = cli_slurp(TDIR "/stderr.txt");
+    cr_assert(rc == 0, "status %d\n%s", rc, err);
+    cr_assert_str_eq(err, "");
+    free(err);
+    char *out = cli_slurp(TDIR "/stdout.txt");
     cr_assert_not_null(strstr(out, "every error is within its bound"), "%s", out);
     cr_assert_not_null(strstr(out, "AN EXPERIMENT, NOT A LIBRARY PATH"), "%s", out);
     cr_assert_not_null(strstr(out, "reproduced the library's bits"), "%s", out);
@@ -102,22 +77,24 @@ Test(bench_knobs_cli, quick_run_writes_every_csv_and_chart)
     /* quick: 11 sizes x 3 lookups; 3 rates x 4 frame rates x 2 modes;
      * 2 cases x 3 births x 4 frame rates; 3 sample counts x 2 modes;
      * (6 + 6 + 3) step sizes x 3 implementations */
-    check_csv("sine", "mode,size,max_abs_error,bound,error_over_bound,ns_per_call,libm_ns_per_call", 33, 1, -1);
+    free(out);
+    free(check_csv("sine", "mode,size,max_abs_error,bound,error_over_bound,ns_per_call,libm_ns_per_call", 33, 1, -1));
     char *rate = check_csv("emission_rate",
                            "rate,steps_per_s,mode,count_at_1s,expected_at_1s,error_at_1s_percent,"
                            "max_abs_count_error,ns_per_step,ns_per_particle",
                            24, 3, 8);
     /* the thesis's rounding at 20/s and 60 steps/s emits nothing */
     cr_assert_not_null(strstr(rate, "\n20,60,thesis,0,20,-100.0000,"), "%s", rate);
-    check_csv("emission_birth",
+    free(rate);
+    free(check_csv("emission_birth",
               "scenario,mode,steps_per_s,particles,mean_position_error,max_position_error,ns_per_step,"
               "us_per_sim_second",
-              24, 2, -1);
-    check_csv("ellipse",
+              24, 2, -1));
+    free(check_csv("ellipse",
               "mode,samples,ks_distance,tip_fraction,tip_fraction_error,max_bin_deviation,ns_per_sample,us_total", 6,
-              1, -1);
-    check_csv("float", "case,x0,T,steps_per_s,impl,max_position_error,ns_per_particle_step,ns_per_particle_run", 45,
-              5, -1);
+              1, -1));
+    free(check_csv("float", "case,x0,T,steps_per_s,impl,max_position_error,ns_per_particle_step,ns_per_particle_run", 45,
+              5, -1));
     const char *charts[] = {"sine", "emission_rate", "emission_birth", "ellipse", "float"};
     for (int i = 0; i < 5; i++)
         check_png(charts[i]);

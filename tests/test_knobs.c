@@ -255,30 +255,9 @@ Test(knobs, ellipse_radius_distribution)
 
 /* ---- float vs double ---------------------------------------------------------- */
 
-/* The study's fused semi-implicit Euler step for gravity + drag, copied
- * from tools/iskra/study_knobs_float.c (tests link only libiskra): in
- * double it must reproduce the library's bits, which is what makes its
- * float twin "the library's formula in float". */
-#define DEFINE_STEP(NAME, T, TINY, ABS)                                                                        \
-    static void NAME(size_t n, T *restrict x, T *restrict y, T *restrict vx, T *restrict vy,                     \
-                     const T *restrict m, T g, T b, T dt)                                                      \
-    {                                                                                                          \
-        for (size_t i = 0; i < n; i++) {                                                                       \
-            T vx0 = vx[i], vy0 = vy[i];                                                                        \
-            T ux = isless(ABS(vx0), TINY) ? (T)0 : vx0;                                                        \
-            T uy = isless(ABS(vy0), TINY) ? (T)0 : vy0;                                                        \
-            T fx = (T)0 + (-b) * ux;                                                                           \
-            T fy = ((T)0 + m[i] * (-g)) + (-b) * uy;                                                           \
-            T c = dt / m[i];                                                                                   \
-            T nvx = ux + c * fx, nvy = uy + c * fy;                                                            \
-            vx[i] = nvx;                                                                                       \
-            vy[i] = nvy;                                                                                       \
-            x[i] = x[i] + dt * nvx;                                                                            \
-            y[i] = y[i] + dt * nvy;                                                                            \
-        }                                                                                                      \
-    }
-DEFINE_STEP(step_double, double, ISK_FLUSH_TINY, fabs)
-DEFINE_STEP(step_float, float, 1e-30f, fabsf)
+/* The float study's own step (a header, so this test checks the very code
+ * the study times): in double it must reproduce the library's bits. */
+#include "../tools/iskra/study_float_step.h"
 
 enum { NP = 2000 };
 static const double G = 9.81, B = 0.8;
@@ -306,7 +285,7 @@ static double projectile(int use_float, double x0, double T, int steps_per_s)
             f[0][i] = (float)x0, f[1][i] = 0, f[2][i] = (float)vx, f[3][i] = (float)vy, f[4][i] = 1;
         }
         for (long k = 0; k < steps; k++)
-            step_float(NP, f[0], f[1], f[2], f[3], f[4], (float)G, (float)B, (float)dt);
+            study_step_float(NP, f[0], f[1], f[2], f[3], f[4], (float)G, (float)B, (float)dt);
         for (size_t i = 0; i < NP; i++)
             px[i] = f[0][i], py[i] = f[1][i];
     } else {
@@ -356,7 +335,7 @@ Test(knobs, float_loop_in_double_is_the_library_bit_for_bit)
     fo.drag = B;
     for (int k = 0; k < 1000; k++) {
         isk_integrate_range(ISK_INTEGRATE_SEMI_EULER, &fo, s, &p, 0, p.count, 1.0 / 60);
-        step_double(n, d[0], d[1], d[2], d[3], d[4], G, B, 1.0 / 60);
+        study_step_double(n, d[0], d[1], d[2], d[3], d[4], G, B, 1.0 / 60);
     }
     cr_expect_eq(memcmp(p.x, d[0], sizeof d[0]), 0);
     cr_expect_eq(memcmp(p.y, d[1], sizeof d[1]), 0);

@@ -9,6 +9,7 @@
 #include <unistd.h>
 
 #include "iskra/png.h"
+#include "tool_cli.h"
 
 #define OUT "out/test_scene_cli"
 
@@ -21,14 +22,7 @@ static const char *bin(void)
 }
 
 /* Runs `iskra ARGS` (stdout/stderr to files under OUT); returns the exit status. */
-static int run(const char *args)
-{
-    char cmd[2048];
-    snprintf(cmd, sizeof cmd, "SDL_VIDEODRIVER=dummy %s %s >%s/stdout.txt 2>%s/stderr.txt", bin(), args, OUT, OUT);
-    int rc = system(cmd);
-    cr_assert(WIFEXITED(rc), "%s did not exit normally", cmd);
-    return WEXITSTATUS(rc);
-}
+static int run(const char *args) { return cli_run(OUT, args); }
 
 static char *slurp(const char *name)
 {
@@ -41,12 +35,6 @@ static char *slurp(const char *name)
     buf[n] = 0;
     fclose(f);
     return buf;
-}
-
-static int exists(const char *path)
-{
-    struct stat st;
-    return stat(path, &st) == 0;
 }
 
 static void setup(void)
@@ -107,11 +95,11 @@ Test(scene_cli, render_sequence)
 {
     cr_assert_eq(run("render fig16_regular --frames 5 --every 2 --out-dir " OUT "/seq/deep"), 0, "%s",
                  slurp("stderr.txt"));
-    cr_assert(exists(OUT "/seq/deep/frame_000000.png"));
-    cr_assert(exists(OUT "/seq/deep/frame_000002.png"));
-    cr_assert(exists(OUT "/seq/deep/frame_000004.png"));
-    cr_assert_not(exists(OUT "/seq/deep/frame_000001.png"));
-    cr_assert_not(exists(OUT "/seq/deep/frame_000005.png"));
+    cr_assert(cli_exists(OUT "/seq/deep/frame_000000.png"));
+    cr_assert(cli_exists(OUT "/seq/deep/frame_000002.png"));
+    cr_assert(cli_exists(OUT "/seq/deep/frame_000004.png"));
+    cr_assert_not(cli_exists(OUT "/seq/deep/frame_000001.png"));
+    cr_assert_not(cli_exists(OUT "/seq/deep/frame_000005.png"));
     /* the last sequence frame equals a single render of that frame */
     cr_assert_eq(run("render fig16_regular --frames 4 --out " OUT "/f4.png"), 0);
     isk_canvas a, b;
@@ -172,8 +160,8 @@ Test(scene_cli, usage_errors_write_nothing)
     for (size_t i = 0; i < sizeof bad / sizeof bad[0]; i++) {
         cr_assert_eq(run(bad[i]), 2, "%s", bad[i]);
         cr_assert_neq(slurp("stderr.txt")[0], 0, "no message for: %s", bad[i]);
-        cr_assert_not(exists(OUT "/x.png"), "%s wrote a file", bad[i]);
-        cr_assert_not(exists(OUT "/xdir"), "%s made a directory", bad[i]);
+        cr_assert_not(cli_exists(OUT "/x.png"), "%s wrote a file", bad[i]);
+        cr_assert_not(cli_exists(OUT "/xdir"), "%s made a directory", bad[i]);
     }
 }
 
@@ -182,15 +170,15 @@ Test(scene_cli, scene_errors_exit_2_with_file_line_and_write_nothing)
     cr_assert_eq(run("render tests/data/bad_scenes/misspelt_key.ini --out " OUT "/x.png --out-dir " OUT "/xdir"), 2);
     cr_assert_str_eq(slurp("stderr.txt"),
                      "tests/data/bad_scenes/misspelt_key.ini:7: [emitter smoke] unknown key 'rat'; did you mean 'rate'?\n");
-    cr_assert_not(exists(OUT "/x.png"));
-    cr_assert_not(exists(OUT "/xdir"));
+    cr_assert_not(cli_exists(OUT "/x.png"));
+    cr_assert_not(cli_exists(OUT "/xdir"));
     cr_assert_eq(run("render tests/data/bad_scenes/runtime_invalid.ini --out " OUT "/x.png"), 2);
     cr_assert_str_eq(slurp("stderr.txt"),
                      "tests/data/bad_scenes/runtime_invalid.ini:3: emitter 'sparks': count must be 1..10000 (raise "
                      "limit for more)\n");
-    cr_assert_not(exists(OUT "/x.png"));
+    cr_assert_not(cli_exists(OUT "/x.png"));
     cr_assert_eq(run("render no_such_scene.ini --out " OUT "/x.png"), 2);
-    cr_assert_not(exists(OUT "/x.png"));
+    cr_assert_not(cli_exists(OUT "/x.png"));
 }
 
 /* Every broken scene under tests/data/bad_scenes/ fails with exactly the

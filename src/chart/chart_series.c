@@ -163,7 +163,11 @@ static double clamp01(double v)
  * +-1e300, ay + t*dy would cancel to nothing, while ax + t*dx along a short
  * dx stays exact.  Parameters can still round (a segment wholly above the
  * plot can get t0 = t1 = 1), so segments wholly on one side are rejected
- * first and the results are clamped: what comes out lies in the square. */
+ * first and the results are clamped: what comes out lies in the square.
+ * (The rasterizer's isk__clip_segment is not enough here: it clips to a
+ * guard box far outside the canvas, and a segment it passes between points
+ * near +-1e300 made the dash walk below run practically forever; the chart
+ * fuzz test catches that.) */
 static int clip_unit(double *x0, double *y0, double *x1, double *y1)
 {
     double ax = *x0, ay = *y0, bx = *x1, by = *y1;

@@ -29,6 +29,7 @@
 #include "iskra/integrate.h"
 #include "iskra/particles.h"
 #include "study.h"
+#include "study_float_step.h"
 
 static const double G = 9.81, B = 0.8, M = 1.0;
 
@@ -44,43 +45,7 @@ static const struct {
                    {"origin, T = 60 s", "origin-60s", 0, 60, 6, 3}};
 static const int STEPS_PER_S[MAXSTEPS] = {30, 60, 120, 240, 480, 960, 1920, 3840, 7680};
 
-/* The fused step, written once for both types so they cannot drift apart.
- * The library's drag stage first flushes speeds below ISK_FLUSH_TINY to 0
- * (iskra/integrate.h) and sums the forces as fx = 0 + (-b) vx,
- * fy = (0 + m(-g)) + (-b) vy; then isk_k_semi_euler: c = dt/m; v += c F;
- * r += dt v_new.  A float path needs its own flush threshold: 1e-200 is 0
- * in float, and float's subnormals start at 1.2e-38, so 1e-30 plays the
- * same role (never reached here, but it costs what it costs).
- * The library's kernels get g and b at run time from another translation
- * unit; here gcc would propagate the constants G and B into the loop and
- * then no longer vectorize it, so interprocedural optimisation is switched
- * off for these two functions to measure what a library float path would
- * run. */
-#if defined(__GNUC__) && !defined(__clang__)
-#define STUDY_NOIPA __attribute__((noipa))
-#else
-#define STUDY_NOIPA __attribute__((noinline))
-#endif
-#define DEFINE_STEP(NAME, T, TINY, ABS)                                                                           \
-    static STUDY_NOIPA void NAME(size_t n, T *restrict x, T *restrict y, T *restrict vx, T *restrict vy,                     \
-                     const T *restrict m, T g, T b, T dt)                                                      \
-    {                                                                                                          \
-        for (size_t i = 0; i < n; i++) {                                                                       \
-            T vx0 = vx[i], vy0 = vy[i]; /* loaded first, so the selects if-convert */                         \
-            T ux = isless(ABS(vx0), TINY) ? (T)0 : vx0;                                                        \
-            T uy = isless(ABS(vy0), TINY) ? (T)0 : vy0;                                                        \
-            T fx = (T)0 + (-b) * ux;                                                                           \
-            T fy = ((T)0 + m[i] * (-g)) + (-b) * uy;                                                           \
-            T c = dt / m[i];                                                                                   \
-            T nvx = ux + c * fx, nvy = uy + c * fy;                                                            \
-            vx[i] = nvx;                                                                                       \
-            vy[i] = nvy;                                                                                       \
-            x[i] = x[i] + dt * nvx;                                                                            \
-            y[i] = y[i] + dt * nvy;                                                                            \
-        }                                                                                                      \
-    }
-DEFINE_STEP(step_double, double, ISK_FLUSH_TINY, fabs)
-DEFINE_STEP(step_float, float, 1e-30f, fabsf)
+/* The fused steps: study_float_step.h. */
 
 static void launch(size_t i, size_t np, double *vx, double *vy)
 {
@@ -137,8 +102,8 @@ static double run(state *s, int impl, long steps, double dt)
     for (long k = 0; k < steps; k++)
         switch (impl) {
         case LIB: isk_integrate_range(ISK_INTEGRATE_SEMI_EULER, &fo, s->scr, &s->p, 0, s->p.count, dt); break;
-        case DBL: step_double(s->np, s->d[0], s->d[1], s->d[2], s->d[3], s->d[4], G, B, dt); break;
-        default: step_float(s->np, s->f[0], s->f[1], s->f[2], s->f[3], s->f[4], gf, bf, dtf); break;
+        case DBL: study_step_double(s->np, s->d[0], s->d[1], s->d[2], s->d[3], s->d[4], G, B, dt); break;
+        default: study_step_float(s->np, s->f[0], s->f[1], s->f[2], s->f[3], s->f[4], gf, bf, dtf); break;
         }
     return study_now() - t0;
 }

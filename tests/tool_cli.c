@@ -1,0 +1,65 @@
+/* Running the built `iskra` command from a test (see tool_cli.h). */
+#include "tool_cli.h"
+
+#include <criterion/criterion.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <sys/wait.h>
+
+#include "iskra/png.h"
+#include "refimg.h"
+
+void cli_fresh(const char *dir)
+{
+    char cmd[1024];
+    snprintf(cmd, sizeof cmd, "rm -rf %s && mkdir -p %s", dir, dir);
+    cr_assert_eq(system(cmd), 0, "%s", cmd);
+}
+
+int cli_run(const char *dir, const char *args)
+{
+    char cmd[4096];
+    snprintf(cmd, sizeof cmd, "SDL_VIDEODRIVER=dummy %s/bin/iskra %s >%s/stdout.txt 2>%s/stderr.txt",
+             refimg_build_dir(), args, dir, dir);
+    int rc = system(cmd);
+    cr_assert(WIFEXITED(rc), "%s did not exit normally", cmd);
+    return WEXITSTATUS(rc);
+}
+
+char *cli_slurp(const char *path)
+{
+    FILE *f = fopen(path, "rb");
+    cr_assert_not_null(f, "%s is missing", path);
+    fseek(f, 0, SEEK_END);
+    long n = ftell(f);
+    fseek(f, 0, SEEK_SET);
+    cr_assert_geq(n, 0, "%s", path);
+    char *buf = malloc((size_t)n + 1);
+    cr_assert_not_null(buf);
+    cr_assert_eq(fread(buf, 1, (size_t)n, f), (size_t)n, "%s", path);
+    buf[n] = 0;
+    fclose(f);
+    return buf;
+}
+
+int cli_exists(const char *path)
+{
+    struct stat st;
+    return stat(path, &st) == 0;
+}
+
+void cli_check_chart(const char *path, int min_w, int min_h)
+{
+    isk_canvas c;
+    isk_error err;
+    cr_assert_eq(isk_png_read(&c, path, &err), ISK_OK, "%s: %s", path, err.message);
+    cr_assert(c.width >= min_w && c.height >= min_h, "%s: %dx%d", path, c.width, c.height);
+    size_t n = (size_t)c.width * (size_t)c.height, ink = 0;
+    for (int y = 0; y < c.height; y++)
+        for (int x = 0; x < c.width; x++)
+            ink += memcmp(c.pixels + (size_t)y * c.stride + (size_t)x * 4, c.pixels, 4) != 0;
+    cr_assert_gt(ink, n / 100, "%s: only %zu pixels drawn", path, ink);
+    isk_canvas_free(&c);
+}

@@ -1,0 +1,31 @@
+/* tests/tool_cli.h — running the built `iskra` command from a test.
+ *
+ *     cli_fresh("out/test_x/case");                       // empty directory
+ *     int status = cli_run("out/test_x/case", "bench accuracy --quick");
+ *     char *err = cli_slurp("out/test_x/case/stderr.txt"); ... free(err);
+ *
+ * The tool is $ISKRA_BUILD/bin/iskra (default build/, see refimg.h), run
+ * from the repository root with SDL_VIDEODRIVER=dummy (no window ever
+ * opens).  Criterion runs tests in parallel: give each test its own
+ * directory. */
+#ifndef ISKRA_TESTS_TOOL_CLI_H
+#define ISKRA_TESTS_TOOL_CLI_H
+
+/* rm -rf dir && mkdir -p dir (asserts success). */
+void cli_fresh(const char *dir);
+
+/* Runs `iskra ARGS` with stdout and stderr in dir/stdout.txt and
+ * dir/stderr.txt; asserts a normal exit and returns the exit status. */
+int cli_run(const char *dir, const char *args);
+
+/* The whole file, malloc'd and NUL-terminated (asserts it exists). */
+char *cli_slurp(const char *path);
+
+/* 1 when the path exists. */
+int cli_exists(const char *path);
+
+/* Reads a chart PNG and asserts it is at least min_w x min_h and not a
+ * blank page: more than 1 % of its pixels differ from the corner's. */
+void cli_check_chart(const char *path, int min_w, int min_h);
+
+#endif
