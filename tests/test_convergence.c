@@ -32,6 +32,18 @@ static isk_problem small(isk_problem_kind kind)
     return pb;
 }
 
+/* The errors at `frames` steps and at twice as many (dt halved). */
+typedef struct halving {
+    isk_integrator method;
+    isk_problem_error coarse, fine;
+} halving;
+
+static halving halve(const isk_problem *pb, isk_integrator m, long frames)
+{
+    halving h = {m, run(pb, m, 1, frames), run(pb, m, 1, 2 * frames)};
+    return h;
+}
+
 /* err(dt) / err(dt/2) must be `want` within 20 %. */
 static void assert_ratio(const char *what, isk_integrator m, double coarse, double fine, double want)
 {
@@ -39,6 +51,9 @@ static void assert_ratio(const char *what, isk_integrator m, double coarse, doub
     cr_assert(fabs(r / want - 1.0) < 0.2, "%s, %s: error %.3e -> %.3e, ratio %.3f, want %g", what,
               isk_integrator_name(m), coarse, fine, r, want);
 }
+
+/* h must be a variable (it is named three times). */
+#define ASSERT_ORDER(what, h, field, want) assert_ratio(what, (h).method, (h).coarse.field, (h).fine.field, want)
 
 /* Projectile (gravity + drag), position error at T = 2 s.  Both Euler
  * forms are first order.  Velocity Verlet is also only FIRST order here:
@@ -53,14 +68,13 @@ Test(convergence, projectile_orders)
     isk_problem pb = small(ISK_PROBLEM_PROJECTILE);
     const isk_integrator first[3] = {ISK_INTEGRATE_EULER, ISK_INTEGRATE_SEMI_EULER, ISK_INTEGRATE_VERLET};
     for (int i = 0; i < 3; i++) {
-        double a = run(&pb, first[i], 1, 40).position, b = run(&pb, first[i], 1, 80).position;
-        assert_ratio("projectile position", first[i], a, b, 2.0);
-        double va = run(&pb, first[i], 1, 40).velocity, vb = run(&pb, first[i], 1, 80).velocity;
-        assert_ratio("projectile velocity", first[i], va, vb, 2.0);
+        halving h = halve(&pb, first[i], 40);
+        ASSERT_ORDER("projectile position", h, position, 2.0);
+        ASSERT_ORDER("projectile velocity", h, velocity, 2.0);
     }
-    double a = run(&pb, ISK_INTEGRATE_RK4, 1, 20).position, b = run(&pb, ISK_INTEGRATE_RK4, 1, 40).position;
-    assert_ratio("projectile position", ISK_INTEGRATE_RK4, a, b, 16.0);
-    cr_assert(b > 1e-9, "RK4 error %.3e: the test would be measuring rounding", b);
+    halving h = halve(&pb, ISK_INTEGRATE_RK4, 20);
+    ASSERT_ORDER("projectile position", h, position, 16.0);
+    cr_assert(h.fine.position > 1e-9, "RK4 error %.3e: the test would be measuring rounding", h.fine.position);
 }
 
 /* Harmonic oscillator (P = 0 spring), position error after 10.25 periods.
@@ -75,29 +89,17 @@ Test(convergence, projectile_orders)
 Test(convergence, oscillator_orders)
 {
     isk_problem pb = small(ISK_PROBLEM_OSCILLATOR);
-    double a, b;
-    a = run(&pb, ISK_INTEGRATE_VERLET, 1, 480).position;
-    b = run(&pb, ISK_INTEGRATE_VERLET, 1, 960).position;
-    assert_ratio("oscillator position", ISK_INTEGRATE_VERLET, a, b, 4.0);
-    a = run(&pb, ISK_INTEGRATE_RK4, 1, 240).position;
-    b = run(&pb, ISK_INTEGRATE_RK4, 1, 480).position;
-    assert_ratio("oscillator position", ISK_INTEGRATE_RK4, a, b, 16.0);
-    a = run(&pb, ISK_INTEGRATE_EULER, 1, 15360).position;
-    b = run(&pb, ISK_INTEGRATE_EULER, 1, 30720).position;
-    assert_ratio("oscillator position", ISK_INTEGRATE_EULER, a, b, 2.0);
-    a = run(&pb, ISK_INTEGRATE_SEMI_EULER, 1, 7680).position;
-    b = run(&pb, ISK_INTEGRATE_SEMI_EULER, 1, 15360).position;
-    assert_ratio("oscillator position", ISK_INTEGRATE_SEMI_EULER, a, b, 2.0);
-    a = run(&pb, ISK_INTEGRATE_SEMI_EULER, 1, 7680).velocity;
-    b = run(&pb, ISK_INTEGRATE_SEMI_EULER, 1, 15360).velocity;
-    assert_ratio("oscillator velocity", ISK_INTEGRATE_SEMI_EULER, a, b, 2.0);
+    halving verlet = halve(&pb, ISK_INTEGRATE_VERLET, 480), rk4 = halve(&pb, ISK_INTEGRATE_RK4, 240);
+    halving euler = halve(&pb, ISK_INTEGRATE_EULER, 15360), semi = halve(&pb, ISK_INTEGRATE_SEMI_EULER, 7680);
+    ASSERT_ORDER("oscillator position", verlet, position, 4.0);
+    ASSERT_ORDER("oscillator position", rk4, position, 16.0);
+    ASSERT_ORDER("oscillator position", euler, position, 2.0);
+    ASSERT_ORDER("oscillator position", semi, position, 2.0);
+    ASSERT_ORDER("oscillator velocity", semi, velocity, 2.0);
     /* Energy: semi-Euler's bounded wobble is O(w dt), Verlet's O((w dt)^2). */
-    a = run(&pb, ISK_INTEGRATE_SEMI_EULER, 1, 960).energy;
-    b = run(&pb, ISK_INTEGRATE_SEMI_EULER, 1, 1920).energy;
-    assert_ratio("oscillator energy", ISK_INTEGRATE_SEMI_EULER, a, b, 2.0);
-    a = run(&pb, ISK_INTEGRATE_VERLET, 1, 960).energy;
-    b = run(&pb, ISK_INTEGRATE_VERLET, 1, 1920).energy;
-    assert_ratio("oscillator energy", ISK_INTEGRATE_VERLET, a, b, 4.0);
+    halving semi_e = halve(&pb, ISK_INTEGRATE_SEMI_EULER, 960), verlet_e = halve(&pb, ISK_INTEGRATE_VERLET, 960);
+    ASSERT_ORDER("oscillator energy", semi_e, energy, 2.0);
+    ASSERT_ORDER("oscillator energy", verlet_e, energy, 4.0);
 }
 
 /* Radial motion through the Coulomb core: the kink in |F| at d = min
