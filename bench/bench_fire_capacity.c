@@ -30,10 +30,10 @@ int main(void)
     isk_emitter_def *e = isk_effect_def_add_emitter(&d, "fire");
     e->source = ISK_SOURCE_STREAM;
     e->pos = isk_vec2_make(0, -3.5);
-    e->shape = ISK_SPAWN_RECT;
+    e->shape = ISK_SHAPE_RECT;
     e->shape_a = 4.5;
     e->shape_b = 0.2;
-    e->velocity = ISK_LAUNCH_CONE;
+    e->launch = ISK_VELGEN_CONE;
     e->angle = 1.5707963267948966;
     e->spread = 0.6;
     e->speed_min = 0.5;

@@ -40,9 +40,9 @@ static isk_effect *fire(size_t n, int table)
     e->source = ISK_SOURCE_STREAM;
     e->count = n; /* one burst of n at t = 0, then a steady population */
     e->capacity = n;
-    e->shape = ISK_SPAWN_DISC;
+    e->shape = ISK_SHAPE_DISC;
     e->shape_a = 1;
-    e->velocity = ISK_LAUNCH_DISC;
+    e->launch = ISK_VELGEN_DISC;
     e->speed_max = 1;
     e->life = 1e6; /* finite: the per-particle lifetime check runs, as in the thesis */
     e->weight = 11;

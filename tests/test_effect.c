@@ -188,7 +188,7 @@ static void stream_def(isk_effect_def *d, double dt)
      * 0.4 s with life 0.6 s dies exactly at t = 1 s, a tie that rounding
      * (of accumulated ages) decides differently for different step sizes. */
     e->life = 0.6025;
-    e->velocity = ISK_LAUNCH_CONE;
+    e->launch = ISK_VELGEN_CONE;
     e->angle = 1.5707963267948966; /* up */
     e->spread = 0.5;
     e->speed_min = 4;

@@ -57,12 +57,12 @@ static void cone_stream(isk_effect_def *d, double dt, int with_wind)
 {
     isk_emitter_def *e = stream(d, dt, 200);
     e->life = 0.6025; /* no death exactly at t = 1 s (births are on a 1/200 s grid) */
-    e->velocity = ISK_LAUNCH_CONE;
+    e->launch = ISK_VELGEN_CONE;
     e->angle = PI / 2;
     e->spread = 0.5;
     e->speed_min = 4;
     e->speed_max = 6;
-    e->shape = ISK_SPAWN_DISC;
+    e->shape = ISK_SHAPE_DISC;
     e->shape_a = 0.5;
     if (with_wind) {
         int w = isk_effect_def_add_force(d, "wind", ISK_FORCE_WIND);
@@ -550,7 +550,7 @@ Test(fire, sparks_bounce_off_the_ground)
     isk_effect_def d;
     isk_emitter_def *e = stream(&d, 1.0 / 60, 100);
     e->pos = isk_vec2_make(0, 0.5);
-    e->velocity = ISK_LAUNCH_CONE;
+    e->launch = ISK_VELGEN_CONE;
     e->angle = PI / 2;
     e->spread = 1.5;
     e->speed_min = 1;

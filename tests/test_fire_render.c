@@ -116,10 +116,10 @@ static void flame_def(isk_effect_def *d, int ramps, isk_blend blend)
     isk_emitter_def *e = isk_effect_def_add_emitter(d, "flame");
     e->source = ISK_SOURCE_STREAM;
     e->pos = isk_vec2_make(0, -6);
-    e->shape = ISK_SPAWN_ELLIPSE;
+    e->shape = ISK_SHAPE_ELLIPSE;
     e->shape_a = 3;
     e->shape_b = 1;
-    e->velocity = ISK_LAUNCH_CONE;
+    e->launch = ISK_VELGEN_CONE;
     e->angle = PI / 2;
     e->spread = 0.6;
     e->speed_min = 4;

@@ -281,12 +281,12 @@ Test(scene_parse, emitter_every_key)
     cr_assert_eq(e->mass_range, 0.5);
     cr_assert_eq(e->count, 30);
     cr_assert_eq(e->start, 0.5);
-    cr_assert_eq(e->shape, ISK_SPAWN_RING);
+    cr_assert_eq(e->shape, ISK_SHAPE_RING);
     cr_assert_eq(e->shape_a, 0.5);
     cr_assert_eq(e->shape_b, 1);
     cr_assert_eq(e->shape_angle, 90 * deg);
     cr_assert_eq(e->shape_faithful, 1);
-    cr_assert_eq(e->velocity, ISK_LAUNCH_CONE);
+    cr_assert_eq(e->launch, ISK_VELGEN_CONE);
     cr_assert_eq(e->angle, 45 * deg);
     cr_assert_eq(e->spread, 30 * deg);
     cr_assert_eq(e->speed_min, 1);

@@ -26,13 +26,17 @@
 
 #include <stdint.h>
 
-#include "iskra/canvas.h"
+#include "iskra/color.h"
 
 typedef enum isk_blend {
     ISK_BLEND_REPLACE = 0,
     ISK_BLEND_OVER = 1,
-    ISK_BLEND_ADD = 2
+    ISK_BLEND_ADD = 2,
+    ISK_BLEND_COUNT
 } isk_blend;
+
+/* Names as scene files spell them, indexed by mode: "replace", "over", "add". */
+extern const char *const isk_blend_names[ISK_BLEND_COUNT];
 
 /* x/255 rounded to nearest, for 0 <= x <= 255*255*255. */
 static inline uint32_t isk_div255(uint32_t x)

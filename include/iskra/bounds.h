@@ -53,10 +53,17 @@ enum {
     ISK_SIDE_RIGHT = 1u << 1,
     ISK_SIDE_BOTTOM = 1u << 2,
     ISK_SIDE_LEFT = 1u << 3,
-    ISK_SIDE_ALL = 15u
+    ISK_SIDE_ALL = 15u,
+    ISK_SIDE_COUNT = 4 /* bits */
 };
 
-typedef enum isk_bounce_mode { ISK_BOUNCE_THESIS = 0, ISK_BOUNCE_REFLECT = 1 } isk_bounce_mode;
+typedef enum isk_bounce_mode { ISK_BOUNCE_THESIS = 0, ISK_BOUNCE_REFLECT = 1, ISK_BOUNCE_MODE_COUNT } isk_bounce_mode;
+
+/* Names as scene files spell them: isk_bounce_mode_names[mode] ("thesis",
+ * "reflect"); isk_side_names[k] names the side of bit 1 << k ("top",
+ * "right", "bottom", "left"). */
+extern const char *const isk_bounce_mode_names[ISK_BOUNCE_MODE_COUNT];
+extern const char *const isk_side_names[ISK_SIDE_COUNT];
 
 #define ISK_BOUNCE_MAX_REFLECTIONS 16
 

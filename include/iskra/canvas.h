@@ -21,28 +21,12 @@
 #include <stddef.h>
 #include <stdint.h>
 
+#include "iskra/color.h"
 #include "iskra/status.h"
 
 /* Largest accepted width or height. */
 #define ISK_CANVAS_MAX_DIM 16384
 
-typedef struct isk_color {
-    uint8_t r, g, b, a;
-} isk_color;
-
-static inline isk_color isk_rgba(uint8_t r, uint8_t g, uint8_t b, uint8_t a)
-{
-    isk_color c = {r, g, b, a};
-    return c;
-}
-
-#define ISK_BLACK       ((isk_color){0, 0, 0, 255})
-#define ISK_WHITE       ((isk_color){255, 255, 255, 255})
-#define ISK_TRANSPARENT ((isk_color){0, 0, 0, 0})
-#define ISK_YELLOW      ((isk_color){255, 255, 0, 255})
-#define ISK_RED         ((isk_color){255, 0, 0, 255})
-#define ISK_GREEN       ((isk_color){0, 128, 0, 255})  /* CSS "green" */
-#define ISK_BLUE        ((isk_color){0, 0, 255, 255})
 
 typedef struct isk_canvas {
     uint8_t *pixels;   /* top-left pixel; R,G,B,A bytes */

@@ -85,13 +85,19 @@
 typedef enum isk_deflect_reaction {
     ISK_DEFLECT_BOUNCE = 0,
     ISK_DEFLECT_KILL = 1,
-    ISK_DEFLECT_STICK = 2
+    ISK_DEFLECT_STICK = 2,
+    ISK_DEFLECT_REACTION_COUNT
 } isk_deflect_reaction;
 
 typedef enum isk_restitution_mode {
     ISK_RESTITUTION_UNIFORM = 0, /* fire thesis: c (v - 2 (v.n) n) */
-    ISK_RESTITUTION_NORMAL = 1   /* particle-engine thesis: v_t - c v_n */
+    ISK_RESTITUTION_NORMAL = 1,  /* particle-engine thesis: v_t - c v_n */
+    ISK_RESTITUTION_MODE_COUNT
 } isk_restitution_mode;
+
+/* Names as scene files spell them, indexed by value. */
+extern const char *const isk_deflect_reaction_names[ISK_DEFLECT_REACTION_COUNT]; /* bounce, kill, stick */
+extern const char *const isk_restitution_mode_names[ISK_RESTITUTION_MODE_COUNT]; /* uniform, normal */
 
 typedef struct isk_deflector {
     double x0, y0, x1, y1;         /* the segment; order does not matter */

@@ -50,6 +50,7 @@
 #include "iskra/forces.h"
 #include "iskra/gradient.h"
 #include "iskra/integrate.h"
+#include "iskra/shape.h"
 #include "iskra/sprite.h"
 #include "iskra/status.h"
 #include "iskra/system.h"
@@ -94,36 +95,24 @@ typedef enum isk_source_kind {
     ISK_SOURCE_KIND_COUNT
 } isk_source_kind;
 
-/* Where a stream emitter places new particles (relative to `pos`). */
-typedef enum isk_spawn_shape {
-    ISK_SPAWN_POINT = 0,
-    ISK_SPAWN_DISC,        /* radius a, area-uniform */
-    ISK_SPAWN_CIRCLE,      /* outline of radius a */
-    ISK_SPAWN_RING,        /* a <= r <= b, area-uniform */
-    ISK_SPAWN_SEGMENT,     /* from pos to pos + (a, b) */
-    ISK_SPAWN_RECT,        /* half-extents a, b */
-    ISK_SPAWN_ELLIPSE,     /* semi-axes a, b, area-uniform (faithful: particle-engine method) */
-    ISK_SPAWN_COUNT
-} isk_spawn_shape;
-
-/* How a stream emitter picks initial velocities. */
-typedef enum isk_launch_kind {
-    ISK_LAUNCH_CONSTANT = 0,  /* vel */
-    ISK_LAUNCH_DISC,          /* uniform in a disc of radius speed_max around vel */
-    ISK_LAUNCH_DIRECTION,     /* direction angle, speed in [speed_min, speed_max] */
-    ISK_LAUNCH_CONE,          /* angle +- spread/2, speed in [speed_min, speed_max] */
-    ISK_LAUNCH_COUNT
-} isk_launch_kind;
+/* Where a stream emitter places new particles is an isk_shape_kind around
+ * `pos` (iskra/shape.h: point; disc of radius a; circle of radius a; ring
+ * a <= r <= b; segment from pos to pos + (a, b); rect of half-extents a, b;
+ * ellipse of semi-axes a, b), and how it launches them an isk_velgen_kind
+ * (constant `vel`; disc of radius speed_max around `vel`; direction `angle`
+ * with a speed in [speed_min, speed_max]; cone angle +- spread/2). */
 
 typedef enum isk_rate_mode {
     ISK_RATE_ACCUMULATE = 0, /* fractional carry: exactly rate*t particles over time t */
-    ISK_RATE_THESIS          /* fire thesis: (unsigned)(dt*rate + 0.5) per frame, no carry */
+    ISK_RATE_THESIS,         /* fire thesis: (unsigned)(dt*rate + 0.5) per frame, no carry */
+    ISK_RATE_MODE_COUNT
 } isk_rate_mode;
 
 typedef enum isk_birth_mode {
     ISK_BIRTH_BACKDATE = 0,  /* born at the true time, advanced by its age (particle-engine thesis) */
     ISK_BIRTH_THESIS_JITTER, /* fire thesis: random whole-ms pre-advance, force and position only */
-    ISK_BIRTH_FRAME          /* all born at the end of the frame (shows banding) */
+    ISK_BIRTH_FRAME,         /* all born at the end of the frame (shows banding) */
+    ISK_BIRTH_MODE_COUNT
 } isk_birth_mode;
 
 typedef enum isk_draw_mode {
@@ -164,11 +153,11 @@ typedef struct isk_emitter_def {
     isk_kick_target kick;      /* COULOMB kicks: all particles of this emitter, or only new */
     double start;              /* EXPLOSION / burst time, seconds */
     double rect[4];            /* LAYER xmin, xmax, ymin, ymax */
-    isk_spawn_shape shape;     /* STREAM */
+    isk_shape_kind shape;      /* STREAM */
     double shape_a, shape_b;   /* STREAM shape parameters (see isk_spawn_shape) */
     double shape_angle;        /* STREAM shape rotation, radians */
     int shape_faithful;        /* ELLIPSE: the particle-engine thesis's non-uniform sampler */
-    isk_launch_kind velocity;
+    isk_velgen_kind launch;    /* STREAM */
     double angle, spread;      /* DIRECTION/CONE, radians */
     double speed_min, speed_max;
     double rate;               /* STREAM particles per second (0: bursts only) */

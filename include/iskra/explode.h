@@ -51,8 +51,23 @@
 
 typedef enum isk_kick_target {
     ISK_KICK_ALL = 0, /* thesis simulator: every particle of the store */
-    ISK_KICK_NEW = 1  /* only the particles this emitter created */
+    ISK_KICK_NEW = 1, /* only the particles this emitter created */
+    ISK_KICK_COUNT
 } isk_kick_target;
+
+/* The thesis's explosion kinds (isk_system_explode, the effect's emitters). */
+typedef enum isk_explosion {
+    ISK_EXPLOSION_RING = 0,      /* pravilnaEksplozija */
+    ISK_EXPLOSION_UNIFORM,       /* the fig-17 uniform square */
+    ISK_EXPLOSION_GAUSS,         /* gaussEksplozija */
+    ISK_EXPLOSION_COULOMB,       /* coulombEksplozija (see the kick target) */
+    ISK_EXPLOSION_MULTI_COULOMB, /* visestrukiCoulombEksplozija (scheduled batches) */
+    ISK_EXPLOSION_COUNT
+} isk_explosion;
+
+/* Names as scene files spell them, indexed by value. */
+extern const char *const isk_explosion_names[ISK_EXPLOSION_COUNT]; /* ring uniform gauss coulomb multi-coulomb */
+extern const char *const isk_kick_names[ISK_KICK_COUNT];           /* all new */
 
 /* Regular ring: position (cx, cy), velocity (4,4) rotated CCW by
  * (i*360)/count degrees with the thesis's rotation formula, mass 2. */

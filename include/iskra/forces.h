@@ -81,13 +81,19 @@
 
 typedef enum isk_fidelity {
     ISK_FIDELITY_SOUND = 0,  /* physically sound, never NaN (default) */
-    ISK_FIDELITY_THESIS = 1  /* the thesis code's exact behaviour, quirks included */
+    ISK_FIDELITY_THESIS = 1, /* the thesis code's exact behaviour, quirks included */
+    ISK_FIDELITY_COUNT
 } isk_fidelity;
 
 typedef enum isk_coulomb_law {
     ISK_COULOMB_LAW_CODE = 0, /* exponent is the code's P: |F| = k|Q| d^(1-P) */
-    ISK_COULOMB_LAW_TEXT = 1  /* exponent is the text's p: P = p + 2, |F| = k|Q| / d^(p+1) */
+    ISK_COULOMB_LAW_TEXT = 1, /* exponent is the text's p: P = p + 2, |F| = k|Q| / d^(p+1) */
+    ISK_COULOMB_LAW_COUNT
 } isk_coulomb_law;
+
+/* Names as scene files spell them, indexed by value. */
+extern const char *const isk_fidelity_names[ISK_FIDELITY_COUNT];  /* "sound", "thesis" */
+extern const char *const isk_coulomb_law_names[ISK_COULOMB_LAW_COUNT]; /* "code", "text" */
 
 /* Displacement of a moving potential for a motion parameter (the thesis
  * passes the frame's simulated time dt/f). */

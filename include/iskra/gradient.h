@@ -41,7 +41,7 @@
 #ifndef ISKRA_GRADIENT_H
 #define ISKRA_GRADIENT_H
 
-#include "iskra/canvas.h"
+#include "iskra/color.h"
 #include "iskra/status.h"
 
 #define ISK_GRADIENT_MAX_STOPS 16

@@ -59,6 +59,8 @@
 #include "iskra/particles.h"
 
 typedef enum isk_integrator {
+    ISK_INTEGRATE_INHERIT = -1, /* definitions only (an emitter of iskra/effect.h): use the
+                                   enclosing scene's integrator; never valid for a step */
     ISK_INTEGRATE_SEMI_EULER = 0,
     ISK_INTEGRATE_EULER,
     ISK_INTEGRATE_VERLET,
@@ -107,7 +109,10 @@ void isk_integrate_block(isk_integrator method, isk_forces *f, isk_scratch *s, s
 isk_status isk_integrate_range(isk_integrator method, isk_forces *f, isk_scratch *s, isk_particles *p,
                                size_t begin, size_t end, double dt);
 
-/* Short name ("semi-euler", "euler", "verlet", "rk4", "exact-drag"); "?" if unknown. */
+/* Names as scene files spell them, indexed by method: "semi-euler", "euler",
+ * "verlet", "rk4", "exact-drag". */
+extern const char *const isk_integrator_names[ISK_INTEGRATOR_COUNT];
+/* isk_integrator_names[method], or "?" if unknown. */
 const char *isk_integrator_name(isk_integrator method);
 
 #endif

@@ -29,7 +29,7 @@
 
 #include <stddef.h>
 
-#include "iskra/canvas.h"
+#include "iskra/color.h"
 #include "iskra/status.h"
 
 enum {

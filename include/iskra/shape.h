@@ -63,12 +63,14 @@ typedef enum isk_shape_kind {
     ISK_SHAPE_RING,
     ISK_SHAPE_SEGMENT,
     ISK_SHAPE_RECT,
-    ISK_SHAPE_ELLIPSE
+    ISK_SHAPE_ELLIPSE,
+    ISK_SHAPE_COUNT
 } isk_shape_kind;
 
 typedef enum isk_ellipse_mode {
     ISK_ELLIPSE_UNIFORM = 0, /* area-uniform (default) */
-    ISK_ELLIPSE_THESIS = 1   /* particle-engine thesis, eq. 5.1 (faithful) */
+    ISK_ELLIPSE_THESIS = 1,  /* particle-engine thesis, eq. 5.1 (faithful) */
+    ISK_ELLIPSE_MODE_COUNT
 } isk_ellipse_mode;
 
 typedef struct isk_shape {
@@ -83,8 +85,13 @@ typedef enum isk_velgen_kind {
     ISK_VELGEN_CONSTANT = 0,
     ISK_VELGEN_DISC,
     ISK_VELGEN_DIRECTION,
-    ISK_VELGEN_CONE
+    ISK_VELGEN_CONE,
+    ISK_VELGEN_COUNT
 } isk_velgen_kind;
+
+/* Names as scene files spell them (`shape`, `launch`), indexed by kind. */
+extern const char *const isk_shape_names[ISK_SHAPE_COUNT];   /* point disc circle ring segment rect ellipse */
+extern const char *const isk_velgen_names[ISK_VELGEN_COUNT]; /* constant disc direction cone */
 
 typedef struct isk_velgen {
     isk_velgen_kind kind;

@@ -66,8 +66,12 @@
 typedef enum isk_sprite_kind {
     ISK_SPRITE_DISC = 0,
     ISK_SPRITE_LINEAR = 1,
-    ISK_SPRITE_SMOOTH = 2
+    ISK_SPRITE_SMOOTH = 2,
+    ISK_SPRITE_KIND_COUNT
 } isk_sprite_kind;
+
+/* Names as scene files spell them, indexed by kind: "disc", "linear", "smooth". */
+extern const char *const isk_sprite_kind_names[ISK_SPRITE_KIND_COUNT];
 
 typedef struct isk_sprite {
     isk_sprite_kind kind;

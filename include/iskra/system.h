@@ -49,15 +49,6 @@
 #include "iskra/rng.h"
 #include "iskra/status.h"
 
-typedef enum isk_explosion {
-    ISK_EXPLOSION_RING = 0,      /* pravilnaEksplozija */
-    ISK_EXPLOSION_UNIFORM,       /* the fig-17 uniform square */
-    ISK_EXPLOSION_GAUSS,         /* gaussEksplozija */
-    ISK_EXPLOSION_COULOMB,       /* coulombEksplozija (kick target: sys->coulomb_kick) */
-    ISK_EXPLOSION_MULTI_COULOMB, /* visestrukiCoulombEksplozija (scheduled batches) */
-    ISK_EXPLOSION_COUNT
-} isk_explosion;
-
 typedef struct isk_system {
     isk_particles particles;
     isk_rng rng;

@@ -50,6 +50,8 @@ void isk_blend_pixel(uint8_t *d, isk_color s, isk_blend mode)
         d[2] = sat_add(d[2], isk_div255((uint32_t)s.b * s.a));
         d[3] = sat_add(d[3], s.a);
         break;
+    default: /* not a mode: nothing is drawn */
+        break;
     }
 }
 
@@ -61,12 +63,9 @@ void isk_blend_pixel_cov(uint8_t *d, isk_color s, uint8_t coverage, isk_blend mo
     isk_blend_pixel(d, s, mode);
 }
 
+const char *const isk_blend_names[ISK_BLEND_COUNT] = {"replace", "over", "add"};
+
 const char *isk_blend_name(isk_blend mode)
 {
-    switch (mode) {
-    case ISK_BLEND_REPLACE: return "replace";
-    case ISK_BLEND_OVER: return "over";
-    case ISK_BLEND_ADD: return "add";
-    }
-    return 0;
+    return (unsigned)mode < ISK_BLEND_COUNT ? isk_blend_names[mode] : (const char *)0;
 }

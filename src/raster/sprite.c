@@ -15,9 +15,12 @@ double isk_sprite_alpha(isk_sprite_kind kind, double d, int size)
     case ISK_SPRITE_DISC: return r < 1.0 ? 1.0 : 0.0;
     case ISK_SPRITE_LINEAR: return r < 1.0 ? 1.0 - r : 0.0;
     case ISK_SPRITE_SMOOTH: return r < 1.0 ? (1.0 - r * r) * (1.0 - r * r) : 0.0;
+    default: break;
     }
     return 0.0;
 }
+
+const char *const isk_sprite_kind_names[ISK_SPRITE_KIND_COUNT] = {"disc", "linear", "smooth"};
 
 /* Mask value for q = (2 dx)^2 + (2 dy)^2 = 4 d^2, integer. */
 static uint8_t mask_value(isk_sprite_kind kind, int64_t q, int64_t S)
@@ -40,6 +43,8 @@ static uint8_t mask_value(isk_sprite_kind kind, int64_t q, int64_t S)
         uint64_t den = (uint64_t)s2 * (uint64_t)s2;
         return (uint8_t)((255u * num * 2u + den) / (2u * den));
     }
+    default:
+        break;
     }
     return 0;
 }
@@ -236,6 +241,8 @@ void isk_draw_sprite(isk_canvas *c, const isk_sprite *s, double cx, double cy, i
                 d[2] = s->color.b;
                 d[3] = s->lut[mrow[i]][3];
             }
+            break;
+        default:
             break;
         }
     }

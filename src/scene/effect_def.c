@@ -98,8 +98,8 @@ isk_emitter_def *isk_effect_def_add_emitter(isk_effect_def *d, const char *name)
     e->explosion = ISK_EXPLOSION_GAUSS;
     e->count = 0; /* explosions and layers must say how many; streams: no burst */
     e->kick = ISK_KICK_ALL;
-    e->shape = ISK_SPAWN_POINT;
-    e->velocity = ISK_LAUNCH_CONSTANT;
+    e->shape = ISK_SHAPE_POINT;
+    e->launch = ISK_VELGEN_CONSTANT;
     e->rate_mode = ISK_RATE_ACCUMULATE;
     e->birth = ISK_BIRTH_BACKDATE;
     e->life = INFINITY;

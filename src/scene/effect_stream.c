@@ -24,32 +24,29 @@
 static isk_shape shape_of(const isk_emitter_def *em)
 {
     isk_shape s = {0};
+    s.kind = em->shape;
     s.cx = em->pos.x;
     s.cy = em->pos.y;
     s.a = em->shape_a;
     s.b = em->shape_b;
     s.angle = em->shape_angle;
     s.ellipse_mode = em->shape_faithful ? ISK_ELLIPSE_THESIS : ISK_ELLIPSE_UNIFORM;
-    static const isk_shape_kind kinds[ISK_SPAWN_COUNT] = {ISK_SHAPE_POINT,   ISK_SHAPE_DISC, ISK_SHAPE_CIRCLE,
-                                                          ISK_SHAPE_RING,    ISK_SHAPE_SEGMENT,
-                                                          ISK_SHAPE_RECT,    ISK_SHAPE_ELLIPSE};
-    s.kind = (unsigned)em->shape < ISK_SPAWN_COUNT ? kinds[em->shape] : ISK_SHAPE_POINT;
     return s;
 }
 
 static isk_velgen velgen_of(const isk_emitter_def *em)
 {
-    switch (em->velocity) {
-    case ISK_LAUNCH_DISC: return isk_velgen_disc(em->speed_max);
-    case ISK_LAUNCH_DIRECTION: return isk_velgen_direction(em->angle, em->speed_min, em->speed_max);
-    case ISK_LAUNCH_CONE: return isk_velgen_cone(em->angle, em->spread, em->speed_min, em->speed_max);
+    switch (em->launch) {
+    case ISK_VELGEN_DISC: return isk_velgen_disc(em->speed_max);
+    case ISK_VELGEN_DIRECTION: return isk_velgen_direction(em->angle, em->speed_min, em->speed_max);
+    case ISK_VELGEN_CONE: return isk_velgen_cone(em->angle, em->spread, em->speed_min, em->speed_max);
     default: return isk_velgen_constant(em->vel.x, em->vel.y);
     }
 }
 
 isk_status fx_stream_validate(const isk_emitter_def *em, char *why, size_t n)
 {
-    if ((unsigned)em->shape >= ISK_SPAWN_COUNT || (unsigned)em->velocity >= ISK_LAUNCH_COUNT) {
+    if ((unsigned)em->shape >= ISK_SHAPE_COUNT || (unsigned)em->launch >= ISK_VELGEN_COUNT) {
         snprintf(why, n, "unknown spawn shape or velocity kind");
         return ISK_ERR_RANGE;
     }
@@ -109,7 +106,7 @@ static void constant_accel(const fx_group *g, double *ax, double *ay)
 /* Where and how fast new particles start: built once per spawn call. */
 typedef struct launcher {
     isk_shape shape;
-    isk_velgen velocity;
+    isk_velgen launch;
 } launcher;
 
 static isk_status birth(isk_effect *e, fx_group *g, const launcher *l, double age, fx_advance_fn advance)
@@ -122,8 +119,8 @@ static isk_status birth(isk_effect *e, fx_group *g, const launcher *l, double ag
     }
     double x, y, vx, vy;
     isk_shape_sample(&l->shape, &g->rng, &x, &y);
-    isk_velgen_sample(&l->velocity, &g->rng, &vx, &vy);
-    if (em->velocity == ISK_LAUNCH_DISC) {
+    isk_velgen_sample(&l->launch, &g->rng, &vx, &vy);
+    if (em->launch == ISK_VELGEN_DISC) {
         vx += em->vel.x;
         vy += em->vel.y;
     }

@@ -22,7 +22,7 @@ static isk_emitter_def *start(isk_effect_def *d, const char *name, const char *d
     e->pos = pos;
     e->draw = ISK_DRAW_SPRITE;
     e->sprite = ISK_SPRITE_LINEAR;
-    e->velocity = ISK_LAUNCH_CONE;
+    e->launch = ISK_VELGEN_CONE;
     return e;
 }
 
@@ -63,7 +63,7 @@ int isk_preset_fire(isk_effect_def *d, const char *name, isk_vec2 pos, double sc
     if (!e)
         return -1;
     const double u = scale / 100.0; /* world units per cocos2d point */
-    e->shape = ISK_SPAWN_RECT;      /* posVar (40, 20) */
+    e->shape = ISK_SHAPE_RECT;      /* posVar (40, 20) */
     e->shape_a = 40 * u;
     e->shape_b = 20 * u;
     e->angle = 90 * DEG;            /* 90 +- 10 degrees */
@@ -88,7 +88,7 @@ int isk_preset_smoke(isk_effect_def *d, const char *name, isk_vec2 pos, double s
     if (!e)
         return -1;
     const double u = scale / 100.0;
-    e->shape = ISK_SPAWN_RECT;      /* posVar (20, 0) */
+    e->shape = ISK_SHAPE_RECT;      /* posVar (20, 0) */
     e->shape_a = 20 * u;
     e->shape_b = 0;
     e->angle = 90 * DEG;            /* 90 +- 5 */
@@ -117,7 +117,7 @@ int isk_preset_sparks(isk_effect_def *d, const char *name, isk_vec2 pos, double 
     if (!e)
         return -1;
     const double u = scale / 100.0;
-    e->shape = ISK_SPAWN_DISC;
+    e->shape = ISK_SHAPE_DISC;
     e->shape_a = 15 * u;
     e->angle = 90 * DEG;
     e->spread = 70 * DEG;
@@ -146,7 +146,7 @@ int isk_preset_fountain(isk_effect_def *d, const char *name, isk_vec2 pos, doubl
     if (!e)
         return -1;
     const double u = scale / 100.0;
-    e->shape = ISK_SPAWN_POINT;
+    e->shape = ISK_SHAPE_POINT;
     e->angle = 90 * DEG;            /* 90 +- 20 */
     e->spread = 40 * DEG;
     e->speed_min = 130 * u;         /* 180 +- 50 */
@@ -171,7 +171,7 @@ int isk_preset_snow(isk_effect_def *d, const char *name, isk_vec2 pos, double sc
     if (!e)
         return -1;
     const double u = scale / 100.0;
-    e->shape = ISK_SPAWN_RECT;      /* posVar (w/2, 0) of a 480-point screen */
+    e->shape = ISK_SHAPE_RECT;      /* posVar (w/2, 0) of a 480-point screen */
     e->shape_a = 240 * u;
     e->shape_b = 0;
     e->angle = -90 * DEG;           /* -90 +- 5 */
@@ -203,7 +203,7 @@ int isk_preset_explosion(isk_effect_def *d, const char *name, isk_vec2 pos, doub
     if (!e)
         return -1;
     const double u = scale / 100.0;
-    e->shape = ISK_SPAWN_POINT;
+    e->shape = ISK_SHAPE_POINT;
     e->angle = 90 * DEG;            /* 90 +- 360: every direction */
     e->spread = 360 * DEG;
     e->speed_min = 30 * u;          /* 70 +- 40 */

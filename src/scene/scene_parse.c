@@ -765,7 +765,7 @@ static int set_emitter(parser *P, section *s, int id, const char *k, const char 
         return 0;
     case K_EM_SHAPE:
         if (get_enum(P, ln, k, v, sk_shape_names, &i)) return 1;
-        e->shape = (isk_spawn_shape)i;
+        e->shape = (isk_shape_kind)i;
         return 0;
     case K_EM_SHAPE_A: return get_real(P, ln, k, v, R_ANY, &e->shape_a);
     case K_EM_SHAPE_B: return get_real(P, ln, k, v, R_ANY, &e->shape_b);
@@ -773,7 +773,7 @@ static int set_emitter(parser *P, section *s, int id, const char *k, const char 
     case K_EM_SHAPE_FAITHFUL: return get_bool(P, ln, k, v, &e->shape_faithful);
     case K_EM_LAUNCH:
         if (get_enum(P, ln, k, v, sk_launch_names, &i)) return 1;
-        e->velocity = (isk_launch_kind)i;
+        e->launch = (isk_velgen_kind)i;
         return 0;
     case K_EM_ANGLE: return get_angle(P, ln, k, v, R_IN(-3600, 3600), &e->angle);
     case K_EM_SPREAD: return get_angle(P, ln, k, v, R_IN(0, 360), &e->spread);

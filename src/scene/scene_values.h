@@ -17,7 +17,7 @@
 #include <stddef.h>
 #include <stdint.h>
 
-#include "iskra/canvas.h"
+#include "iskra/color.h"
 
 /* Longest item of a list (a scene line is at most 199 characters). */
 #define SCV_ITEM_MAX 200

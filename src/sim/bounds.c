@@ -5,6 +5,9 @@
 
 #include "sim/kernels.h"
 
+const char *const isk_bounce_mode_names[ISK_BOUNCE_MODE_COUNT] = {"thesis", "reflect"};
+const char *const isk_side_names[ISK_SIDE_COUNT] = {"top", "right", "bottom", "left"};
+
 isk_status isk_bounds_validate(const isk_bounds *b)
 {
     if (!b)

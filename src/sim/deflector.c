@@ -11,6 +11,9 @@ typedef struct seg {
     double ax, ay, bx, by, dx, dy;
 } seg;
 
+const char *const isk_deflect_reaction_names[ISK_DEFLECT_REACTION_COUNT] = {"bounce", "kill", "stick"};
+const char *const isk_restitution_mode_names[ISK_RESTITUTION_MODE_COUNT] = {"uniform", "normal"};
+
 static seg canon(const isk_deflector *d)
 {
     seg s;
@@ -249,6 +252,7 @@ isk_status isk_deflect(const isk_deflector *defs, int ndef, double *x, double *y
                 ey = qy;
                 done = 1;
                 break;
+            default: /* validated: ISK_DEFLECT_BOUNCE */
             case ISK_DEFLECT_BOUNCE: {
                 seg s = canon(d);
                 double rx = (1.0 - t) * (ex - sx), ry = (1.0 - t) * (ey - sy); /* rest of the path */

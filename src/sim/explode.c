@@ -6,6 +6,10 @@
 #include "sim/kernels.h"
 #include "sim/store_internal.h"
 
+const char *const isk_explosion_names[ISK_EXPLOSION_COUNT] = {"ring", "uniform", "gauss", "coulomb",
+                                                               "multi-coulomb"};
+const char *const isk_kick_names[ISK_KICK_COUNT] = {"all", "new"};
+
 static isk_status check_count(size_t count, size_t limit)
 {
     if (limit == 0)

@@ -6,6 +6,9 @@
 
 #include "sim/kernels.h"
 
+const char *const isk_fidelity_names[ISK_FIDELITY_COUNT] = {"sound", "thesis"};
+const char *const isk_coulomb_law_names[ISK_COULOMB_LAW_COUNT] = {"code", "text"};
+
 void isk_potential_init(isk_potential *pot, double k, isk_vec2 r, double charge)
 {
     if (!pot)
@@ -38,8 +41,9 @@ isk_status isk_potential_set_law(isk_potential *pot, isk_coulomb_law law, double
     case ISK_COULOMB_LAW_TEXT:
         pot->P = exponent + 2.0;
         return ISK_OK;
+    default:
+        return ISK_ERR_RANGE;
     }
-    return ISK_ERR_RANGE;
 }
 
 isk_status isk_potential_validate(const isk_potential *pot)

@@ -184,14 +184,13 @@ isk_status isk_integrate_range(isk_integrator method, isk_forces *f, isk_scratch
     return ISK_OK;
 }
 
+const char *const isk_integrator_names[ISK_INTEGRATOR_COUNT] = {
+    [ISK_INTEGRATE_SEMI_EULER] = "semi-euler", [ISK_INTEGRATE_EULER] = "euler",
+    [ISK_INTEGRATE_VERLET] = "verlet",         [ISK_INTEGRATE_RK4] = "rk4",
+    [ISK_INTEGRATE_EXACT_DRAG] = "exact-drag",
+};
+
 const char *isk_integrator_name(isk_integrator method)
 {
-    switch (method) {
-    case ISK_INTEGRATE_SEMI_EULER: return "semi-euler";
-    case ISK_INTEGRATE_EULER: return "euler";
-    case ISK_INTEGRATE_VERLET: return "verlet";
-    case ISK_INTEGRATE_RK4: return "rk4";
-    case ISK_INTEGRATE_EXACT_DRAG: return "exact-drag";
-    default: return "?";
-    }
+    return (unsigned)method < ISK_INTEGRATOR_COUNT ? isk_integrator_names[method] : "?";
 }

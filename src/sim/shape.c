@@ -7,6 +7,10 @@ static const double TWO_PI = 6.283185307179586;
 
 /* ---- constructors --------------------------------------------------------- */
 
+const char *const isk_shape_names[ISK_SHAPE_COUNT] = {"point",   "disc", "circle", "ring",
+                                                       "segment", "rect", "ellipse"};
+const char *const isk_velgen_names[ISK_VELGEN_COUNT] = {"constant", "disc", "direction", "cone"};
+
 static isk_shape shape(isk_shape_kind k, double cx, double cy, double a, double b)
 {
     isk_shape s = {k, cx, cy, a, b, 0.0, ISK_ELLIPSE_UNIFORM};
@@ -101,8 +105,9 @@ isk_status isk_shape_check(const isk_shape *s)
         if (s->ellipse_mode != ISK_ELLIPSE_UNIFORM && s->ellipse_mode != ISK_ELLIPSE_THESIS)
             return ISK_ERR_RANGE;
         return (s->a >= 0.0 && s->b >= 0.0) ? ISK_OK : ISK_ERR_RANGE;
+    default:
+        return ISK_ERR_RANGE;
     }
-    return ISK_ERR_RANGE;
 }
 
 isk_status isk_velgen_check(const isk_velgen *v)
@@ -126,8 +131,9 @@ isk_status isk_velgen_check(const isk_velgen *v)
         if (v->kind == ISK_VELGEN_CONE && (v->spread < 0.0 || v->spread > TWO_PI))
             return ISK_ERR_RANGE;
         return ISK_OK;
+    default:
+        return ISK_ERR_RANGE;
     }
-    return ISK_ERR_RANGE;
 }
 
 /* ---- sampling ------------------------------------------------------------- */
@@ -193,6 +199,9 @@ static inline void local_sample(const isk_shape *s, isk_shape_kind kind, isk_rng
             *ly *= s->b;
         }
         break;
+    default: /* checked by the callers */
+        *lx = *ly = 0.0;
+        break;
     }
 }
 
@@ -249,6 +258,7 @@ isk_status isk_shape_sample_n(const isk_shape *s, isk_rng *r, size_t n, double *
     case ISK_SHAPE_SEGMENT: fill(s, ISK_SHAPE_SEGMENT, r, n, x, y, c, sn); break;
     case ISK_SHAPE_RECT: fill(s, ISK_SHAPE_RECT, r, n, x, y, c, sn); break;
     case ISK_SHAPE_ELLIPSE: fill(s, ISK_SHAPE_ELLIPSE, r, n, x, y, c, sn); break;
+    default: break; /* checked above */
     }
     return ISK_OK;
 }
@@ -278,8 +288,10 @@ void isk_velgen_sample(const isk_velgen *v, isk_rng *r, double *vx, double *vy)
         *vy = speed * sin(ang);
         return;
     }
+    default:
+        *vx = *vy = 0.0;
+        return;
     }
-    *vx = *vy = 0.0;
 }
 
 isk_status isk_velgen_sample_n(const isk_velgen *v, isk_rng *r, size_t n, double *vx, double *vy)
