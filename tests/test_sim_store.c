@@ -83,6 +83,41 @@ Test(sim_store, cull_is_stable)
     isk_particles_free(&p);
 }
 
+/* Every optional column travels with its particle through growth, swap
+ * removal and the stable cull (one table of columns drives all three). */
+Test(sim_store, every_column_moves_with_its_particle)
+{
+    isk_particles p;
+    cr_assert_eq(isk_particles_init(&p, 0, ISK_PARTICLES_FLAGS), ISK_OK);
+    for (int i = 0; i < 300; i++) { /* grows 64 -> 128 -> 256 -> 512 */
+        cr_assert_eq(isk_particles_add(&p, i, -i, 2 * i, 3 * i, 1 + i, NULL), ISK_OK);
+        cr_assert_eq(p.osc_amp[i], 0.0);
+        p.size[i] = 0.5 * i;
+        p.color[i] = isk_rgba((uint8_t)i, (uint8_t)(i >> 8), 7, 255);
+        p.osc_amp[i] = 10.0 * i;
+        p.osc_phase[i] = 11.0 * i;
+        p.osc_omega[i] = 12.0 * i;
+        p.osc_offset[i] = 13.0 * i;
+        p.life[i] = i % 7 == 0 ? 0.5 : INFINITY;
+    }
+    isk_particles_remove(&p, 2); /* 299 takes slot 2 */
+    isk_particles_age(&p, 0, p.count, 1.0);
+    cr_assert_eq(isk_particles_cull(&p), 43); /* the multiples of 7 in 0..298 */
+    for (size_t k = 0; k < p.count; k++) {
+        double i = p.x[k];
+        cr_assert(fmod(i, 7) != 0, "%g survived", i);
+        cr_assert(p.y[k] == -i && p.vx[k] == 2 * i && p.vy[k] == 3 * i && p.m[k] == 1 + i);
+        cr_assert(p.size[k] == 0.5 * i && p.color[k].r == (uint8_t)i && p.color[k].g == (uint8_t)((int)i >> 8));
+        cr_assert(p.osc_amp[k] == 10 * i && p.osc_phase[k] == 11 * i && p.osc_omega[k] == 12 * i &&
+                  p.osc_offset[k] == 13 * i);
+        cr_assert(p.age[k] == 1.0 && isinf(p.life[k]));
+        if (k > 2)
+            cr_assert_gt(p.x[k], p.x[k - 1], "order kept");
+    }
+    cr_assert_eq(p.x[1], 299); /* slot 0 (x = 0) died, so 299 moved up to slot 1 */
+    isk_particles_free(&p);
+}
+
 Test(sim_store, validates_inputs_without_partial_state)
 {
     isk_particles p;

@@ -3,8 +3,11 @@
  * One array per attribute so the simulation stages are tight loops the
  * compiler vectorizes (see docs/vectorization.md).  Always present:
  * position x, y; velocity vx, vy; mass m; age and lifetime life.  Optional,
- * allocated only when the scene asks (flags at init): per-particle colour
- * (ISK_PARTICLES_COLOR) and size (ISK_PARTICLES_SIZE); otherwise NULL.
+ * allocated only when the scene asks (flags at init), otherwise NULL:
+ * per-particle colour (ISK_PARTICLES_COLOR), size (ISK_PARTICLES_SIZE) and
+ * the fire thesis's horizontal oscillation (ISK_PARTICLES_OSC: amplitude,
+ * phase, angular speed and the offset already applied).  Every column moves
+ * with its particle: growth, removal and culling treat them all alike.
  *
  *     isk_particles p;
  *     if (isk_particles_init(&p, 1024, 0) != ISK_OK) ...
@@ -34,7 +37,9 @@
 
 enum {
     ISK_PARTICLES_COLOR = 1u << 0, /* allocate the colour array */
-    ISK_PARTICLES_SIZE = 1u << 1   /* allocate the size array */
+    ISK_PARTICLES_SIZE = 1u << 1,  /* allocate the size array */
+    ISK_PARTICLES_OSC = 1u << 2,   /* allocate the four oscillation arrays */
+    ISK_PARTICLES_FLAGS = 7u       /* every flag */
 };
 
 /* Largest capacity a store accepts (about 2.7e8 particles; more is an error,
@@ -49,6 +54,10 @@ typedef struct isk_particles {
     double *age, *life;  /* seconds lived, lifetime (INFINITY = immortal) */
     double *size;        /* NULL unless ISK_PARTICLES_SIZE */
     isk_color *color;    /* NULL unless ISK_PARTICLES_COLOR */
+    double *osc_amp;     /* the four NULL unless ISK_PARTICLES_OSC (new particles: 0) */
+    double *osc_phase;
+    double *osc_omega;
+    double *osc_offset;  /* the offset already added to x */
     unsigned flags;
     isk_color default_color; /* given to new particles when color != NULL (yellow) */
     double default_size;     /* given to new particles when size != NULL (0.1) */

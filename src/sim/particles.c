@@ -2,6 +2,7 @@
 #include "iskra/particles.h"
 
 #include <math.h>
+#include <stddef.h>
 #include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
@@ -23,6 +24,41 @@ static size_t round_up(size_t bytes)
     return (bytes + ALIGN - 1) / ALIGN * ALIGN;
 }
 
+/* Every array of the store: where its pointer lives in isk_particles, the
+ * size of one element and the flag that asks for it (0: always there).
+ * Growth, removal and culling walk this table, so a new column is one row. */
+typedef struct column {
+    size_t field;
+    size_t elem;
+    unsigned flag;
+} column;
+
+#define COL(f, type, flag) {offsetof(isk_particles, f), sizeof(type), flag}
+static const column columns[] = {
+    COL(x, double, 0),         COL(y, double, 0),         COL(vx, double, 0),
+    COL(vy, double, 0),        COL(m, double, 0),         COL(age, double, 0),
+    COL(life, double, 0),      COL(size, double, ISK_PARTICLES_SIZE),
+    COL(color, isk_color, ISK_PARTICLES_COLOR),
+    COL(osc_amp, double, ISK_PARTICLES_OSC),   COL(osc_phase, double, ISK_PARTICLES_OSC),
+    COL(osc_omega, double, ISK_PARTICLES_OSC), COL(osc_offset, double, ISK_PARTICLES_OSC),
+};
+#undef COL
+enum { NCOLUMNS = sizeof columns / sizeof columns[0], AGE_COLUMN = 5, LIFE_COLUMN = 6 };
+
+/* The column's array (NULL when absent).  The pointer fields have different
+ * types, so they are read and written as bytes. */
+static unsigned char *col_get(const isk_particles *p, const column *c)
+{
+    void *a;
+    memcpy(&a, (const unsigned char *)p + c->field, sizeof a);
+    return a;
+}
+
+static void col_set(isk_particles *p, const column *c, void *a)
+{
+    memcpy((unsigned char *)p + c->field, &a, sizeof a);
+}
+
 static void free_arrays(isk_particles *p)
 {
     free(p->block);
@@ -32,30 +68,23 @@ static void free_arrays(isk_particles *p)
 /* Lays the arrays of `cap` particles out in one block (NULL on failure). */
 static void *alloc_arrays(isk_particles *n, size_t cap, unsigned flags)
 {
-    double **d[7] = {&n->x, &n->y, &n->vx, &n->vy, &n->m, &n->age, &n->life};
-    size_t dbytes = round_up(cap * sizeof(double));
-    size_t cbytes = round_up(cap * sizeof(isk_color));
-    size_t total = 7 * (dbytes + STAGGER);
-    if (flags & ISK_PARTICLES_SIZE)
-        total += dbytes + STAGGER;
-    if (flags & ISK_PARTICLES_COLOR)
-        total += cbytes + STAGGER;
+    size_t total = 0;
+    for (int k = 0; k < NCOLUMNS; k++)
+        if (!columns[k].flag || (flags & columns[k].flag))
+            total += round_up(cap * columns[k].elem) + STAGGER;
     unsigned char *block = aligned_alloc(ALIGN, round_up(total + ALIGN));
     if (!block)
         return NULL;
     size_t off = 0;
-    for (int k = 0; k < 7; k++) {
-        *d[k] = (double *)(void *)(block + off);
-        off += dbytes + STAGGER;
+    for (int k = 0; k < NCOLUMNS; k++) {
+        const column *c = &columns[k];
+        if (c->flag && !(flags & c->flag)) {
+            col_set(n, c, NULL);
+            continue;
+        }
+        col_set(n, c, block + off);
+        off += round_up(cap * c->elem) + STAGGER;
     }
-    n->size = NULL;
-    n->color = NULL;
-    if (flags & ISK_PARTICLES_SIZE) {
-        n->size = (double *)(void *)(block + off);
-        off += dbytes + STAGGER;
-    }
-    if (flags & ISK_PARTICLES_COLOR)
-        n->color = (isk_color *)(void *)(block + off);
     n->block = block;
     return block;
 }
@@ -67,7 +96,7 @@ isk_status isk_particles_init(isk_particles *p, size_t capacity, unsigned flags)
     memset(p, 0, sizeof *p);
     p->default_color = ISK_YELLOW;
     p->default_size = 0.1;
-    if (flags & ~(unsigned)(ISK_PARTICLES_COLOR | ISK_PARTICLES_SIZE))
+    if (flags & ~(unsigned)ISK_PARTICLES_FLAGS)
         return ISK_ERR_SIZE;
     p->flags = flags;
     return isk_particles_reserve(p, capacity);
@@ -105,19 +134,10 @@ isk_status isk_particles_reserve(isk_particles *p, size_t capacity)
     isk_particles n = *p;
     if (!alloc_arrays(&n, cap, p->flags))
         return ISK_ERR_NOMEM;
-    size_t c = p->count;
-    if (c) {
-        memcpy(n.x, p->x, c * sizeof(double));
-        memcpy(n.y, p->y, c * sizeof(double));
-        memcpy(n.vx, p->vx, c * sizeof(double));
-        memcpy(n.vy, p->vy, c * sizeof(double));
-        memcpy(n.m, p->m, c * sizeof(double));
-        memcpy(n.age, p->age, c * sizeof(double));
-        memcpy(n.life, p->life, c * sizeof(double));
-        if (n.size)
-            memcpy(n.size, p->size, c * sizeof(double));
-        if (n.color)
-            memcpy(n.color, p->color, c * sizeof(isk_color));
+    for (int k = 0; p->count && k < NCOLUMNS; k++) {
+        unsigned char *dst = col_get(&n, &columns[k]);
+        if (dst)
+            memcpy(dst, col_get(p, &columns[k]), p->count * columns[k].elem);
     }
     free_arrays(p);
     n.capacity = cap;
@@ -146,6 +166,12 @@ size_t isk_store_push(isk_particles *p, double x, double y, double vx, double vy
         p->size[i] = p->default_size;
     if (p->color)
         p->color[i] = p->default_color;
+    if (p->osc_amp) {
+        p->osc_amp[i] = 0.0;
+        p->osc_phase[i] = 0.0;
+        p->osc_omega[i] = 0.0;
+        p->osc_offset[i] = 0.0;
+    }
     return i;
 }
 
@@ -167,43 +193,56 @@ isk_status isk_particles_add(isk_particles *p, double x, double y, double vx, do
     return ISK_OK;
 }
 
-static void move_slot(isk_particles *p, size_t to, size_t from)
-{
-    p->x[to] = p->x[from];
-    p->y[to] = p->y[from];
-    p->vx[to] = p->vx[from];
-    p->vy[to] = p->vy[from];
-    p->m[to] = p->m[from];
-    p->age[to] = p->age[from];
-    p->life[to] = p->life[from];
-    if (p->size)
-        p->size[to] = p->size[from];
-    if (p->color)
-        p->color[to] = p->color[from];
-}
-
 void isk_particles_remove(isk_particles *p, size_t i)
 {
     if (!p || i >= p->count)
         return;
     size_t last = p->count - 1;
-    if (i != last)
-        move_slot(p, i, last);
+    for (int k = 0; i != last && k < NCOLUMNS; k++) {
+        unsigned char *a = col_get(p, &columns[k]);
+        size_t e = columns[k].elem;
+        if (a)
+            memcpy(a + i * e, a + last * e, e);
+    }
     p->count = last;
+}
+
+/* Compacts one column over [from, n), keeping the particles that live
+ * (age < life, NaN kept as before); returns the new count. */
+static size_t compact(const isk_particles *p, unsigned char *a, size_t e, size_t from, size_t n)
+{
+    const double *age = p->age, *life = p->life;
+    size_t w = from;
+    for (size_t r = from; r < n; r++)
+        if (!(age[r] >= life[r]))
+            memcpy(a + w++ * e, a + r * e, e);
+    return w;
 }
 
 size_t isk_particles_cull(isk_particles *p)
 {
     if (!p)
         return 0;
-    size_t w = 0, n = p->count;
-    for (size_t r = 0; r < n; r++) {
-        if (p->age[r] >= p->life[r])
-            continue;
-        if (w != r)
-            move_slot(p, w, r);
-        w++;
+    size_t n = p->count, first = 0;
+    while (first < n && !(p->age[first] >= p->life[first]))
+        first++;
+    if (first == n)
+        return 0;
+    /* Column by column from the first dead particle; age and life decide
+     * who stays, so they are compacted last. */
+    size_t w = first;
+    for (int k = 0; k < NCOLUMNS; k++) {
+        unsigned char *a = col_get(p, &columns[k]);
+        if (a && k != AGE_COLUMN && k != LIFE_COLUMN)
+            w = compact(p, a, columns[k].elem, first, n);
     }
+    w = first;
+    for (size_t r = first; r < n; r++)
+        if (!(p->age[r] >= p->life[r])) {
+            p->age[w] = p->age[r];
+            p->life[w] = p->life[r];
+            w++;
+        }
     p->count = w;
     return n - w;
 }
