@@ -110,13 +110,7 @@ Test(fire, subframe_birth_30_vs_144_steps)
  * 100 ms, then one of age 150 ms, and exactly two allocations (the birth
  * at 400 ms would be 350 ms old: never created).  Driven through the
  * runtime's spawn stage with those two uneven steps. */
-static int allocations;
-static void count_advance(isk_effect *e, fx_group *g, size_t i, double age)
-{
-    allocations++;
-    if (age > 0)
-        fx_run_stages(e, g, i, i + 1, age);
-}
+static size_t allocations;
 
 Test(fire, backdated_birth_worked_example)
 {
@@ -130,9 +124,11 @@ Test(fire, backdated_birth_worked_example)
     const double h[2] = {0.3, 0.45};
     const double want_age[2] = {0.1, 0.15};
     for (int k = 0; k < 2; k++) {
-        fx_run_stages(fx, g, 0, g->store.count, h[k]);
-        cr_assert_eq(fx_stream_spawn(fx, g, t, h[k], count_advance), ISK_OK);
-        fx_group_cull(g);
+        isk_pipeline_run(&g->pipeline, &g->store, 0, g->store.count, h[k], &fx->scratch);
+        size_t before = g->store.count;
+        cr_assert_eq(fx_step_spawn.run(fx, g, t, h[k]), ISK_OK);
+        allocations += g->store.count - before;
+        isk_particles_cull(&g->store);
         t += h[k];
         cr_assert_eq(g->store.count, 1u, "update %d", k);
         cr_assert_float_eq(g->store.age[0], want_age[k], 1e-12);
@@ -512,8 +508,8 @@ Test(fire, oscillation_amplitude_decay)
     e->osc_use_table = 0;
     isk_effect *fx = make(&d);
     steps(fx, 10);
-    cr_assert_float_eq(fx->groups[0].osc_amp[0], pow(0.95, 10), 1e-12);
-    cr_assert_float_eq(fx->groups[0].osc_amp[0], 0.5987, 1e-4);
+    cr_assert_float_eq(fx->groups[0].store.osc_amp[0], pow(0.95, 10), 1e-12);
+    cr_assert_float_eq(fx->groups[0].store.osc_amp[0], 0.5987, 1e-4);
     steps(fx, 1);
     cr_assert_float_eq(isk_effect_particles(fx, 0)->x[0], pow(0.95, 10), 1e-12);
     isk_effect_destroy(fx);

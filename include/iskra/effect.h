@@ -233,7 +233,18 @@ typedef struct isk_drawing_def {
     int hairline;              /* POLYLINE: the browser's hairline (isk_stroke_polyline_hairline) */
 } isk_drawing_def;
 
-typedef enum isk_view_def_kind { ISK_VIEWDEF_WINDOW = 0, ISK_VIEWDEF_CAMERA } isk_view_def_kind;
+typedef enum isk_view_def_kind { ISK_VIEWDEF_WINDOW = 0, ISK_VIEWDEF_CAMERA, ISK_VIEWDEF_COUNT } isk_view_def_kind;
+
+/* Names as scene files spell them, indexed by value (one table per enum;
+ * the parser, describe, error messages and `iskra keys` all read these). */
+extern const char *const isk_force_kind_names[ISK_FORCE_KIND_COUNT];     /* gravity drag wind potential */
+extern const char *const isk_source_names[ISK_SOURCE_KIND_COUNT];        /* particle explosion layer stream */
+extern const char *const isk_rate_mode_names[ISK_RATE_MODE_COUNT];       /* accumulate thesis */
+extern const char *const isk_birth_mode_names[ISK_BIRTH_MODE_COUNT];     /* backdate thesis-jitter frame */
+extern const char *const isk_draw_mode_names[ISK_DRAW_COUNT];            /* dot pixel disc sprite none dot-browser */
+extern const char *const isk_drawing_kind_names[ISK_DRAWING_KIND_COUNT]; /* polyline disc text polygon sprite */
+extern const char *const isk_units_names[2];                             /* world pixels (isk_drawing_def.pixels) */
+extern const char *const isk_view_kind_names[ISK_VIEWDEF_COUNT];         /* window camera */
 
 typedef struct isk_effect_def {
     int width, height;         /* canvas, default 600x600 */

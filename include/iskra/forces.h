@@ -139,6 +139,10 @@ typedef struct isk_forces {
     double drag;          /* b, F = -b*v; 0 skips the stage */
     isk_potential *pot;   /* potentials, acted in list order */
     size_t npot;
+    const size_t *pick;   /* NULL: every potential pot[0..npot) acts; otherwise only
+                             pot[pick[0]], ..., pot[pick[npick-1]], in that order (a system of
+                             many emitters shares one array of potentials, each emitter picks) */
+    size_t npick;
     isk_fidelity centre;  /* behaviour exactly on a potential without min (see top) */
 } isk_forces;
 

@@ -74,7 +74,9 @@ typedef enum isk_integrator {
 /* Decaying speeds are flushed to 0 below this (see the top). */
 #define ISK_FLUSH_TINY 1e-200
 
-/* Per-block working arrays (force accumulators, potential sum, RK4 copies). */
+/* Per-block working arrays of every stage of the block runner: force
+ * accumulators, potential sum, RK4 copies, and the positions before the move
+ * with the deflectors' kill flags. */
 typedef struct isk_scratch {
     _Alignas(64) double fx[ISK_SIM_BLOCK];
     _Alignas(64) double fy[ISK_SIM_BLOCK];
@@ -88,6 +90,9 @@ typedef struct isk_scratch {
     _Alignas(64) double sy[ISK_SIM_BLOCK];
     _Alignas(64) double svx[ISK_SIM_BLOCK];
     _Alignas(64) double svy[ISK_SIM_BLOCK];
+    _Alignas(64) double x_old[ISK_SIM_BLOCK];
+    _Alignas(64) double y_old[ISK_SIM_BLOCK];
+    unsigned char killed[ISK_SIM_BLOCK];
 } isk_scratch;
 
 /* Stage kernels given precomputed forces (n particles, any n). */

@@ -5,6 +5,15 @@
 
 #include "effect_internal.h"
 
+const char *const isk_force_kind_names[ISK_FORCE_KIND_COUNT] = {"gravity", "drag", "wind", "potential"};
+const char *const isk_source_names[ISK_SOURCE_KIND_COUNT] = {"particle", "explosion", "layer", "stream"};
+const char *const isk_rate_mode_names[ISK_RATE_MODE_COUNT] = {"accumulate", "thesis"};
+const char *const isk_birth_mode_names[ISK_BIRTH_MODE_COUNT] = {"backdate", "thesis-jitter", "frame"};
+const char *const isk_draw_mode_names[ISK_DRAW_COUNT] = {"dot", "pixel", "disc", "sprite", "none", "dot-browser"};
+const char *const isk_drawing_kind_names[ISK_DRAWING_KIND_COUNT] = {"polyline", "disc", "text", "polygon", "sprite"};
+const char *const isk_units_names[2] = {"world", "pixels"};
+const char *const isk_view_kind_names[ISK_VIEWDEF_COUNT] = {"window", "camera"};
+
 void isk_effect_def_init(isk_effect_def *d)
 {
     memset(d, 0, sizeof *d);

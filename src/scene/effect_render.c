@@ -106,7 +106,7 @@ static void draw_drawing(isk_effect *e, isk_canvas *c, const isk_view *v, const 
     }
 }
 
-/* The colour, alpha and size multiplier of particle i. */
+/* The colour, alpha and size multiplier of particle i at normalised age t. */
 static inline isk_color particle_color(const fx_group *g, const isk_particles *p, size_t i, double t,
                                        double *size_mult)
 {
@@ -121,80 +121,143 @@ static inline isk_color particle_color(const fx_group *g, const isk_particles *p
     return col;
 }
 
-static void draw_group(isk_effect *e, isk_canvas *c, fx_group *g)
+static int varies(const fx_group *g)
+{
+    return g->has_color_ramp || g->has_alpha_ramp || g->has_size_ramp || g->store.color;
+}
+
+/* Particle i's colour and size multiplier, constant unless something varies
+ * (a group-level fact: the branch always goes the same way). */
+static inline isk_color style(const fx_group *g, const isk_particles *p, size_t i, int vary, double *mult)
+{
+    *mult = 1.0;
+    if (!vary)
+        return g->def->color;
+    double t = isfinite(p->life[i]) && p->life[i] > 0 ? p->age[i] / p->life[i] : 0.0;
+    return particle_color(g, p, i, t, mult);
+}
+
+typedef void (*dot_fn)(isk_canvas *, double, double, isk_color, isk_blend);
+
+/* Dots of one constant colour: the view transform and the dot, nothing else. */
+static inline void dots_plain(isk_effect *e, isk_canvas *c, fx_group *g, const dot_fn dot)
+{
+    const isk_view *v = &e->view;
+    const isk_particles *p = &g->store;
+    const isk_color col = g->def->color;
+    const isk_blend blend = g->def->blend;
+    for (size_t i = 0; i < p->count; i++) {
+        double X, Y;
+        isk_view_to_screen(v, p->x[i], p->y[i], &X, &Y);
+        dot(c, X, Y, col, blend);
+    }
+}
+
+static inline void dots_styled(isk_effect *e, isk_canvas *c, fx_group *g, const dot_fn dot)
+{
+    const isk_view *v = &e->view;
+    const isk_particles *p = &g->store;
+    const isk_blend blend = g->def->blend;
+    for (size_t i = 0; i < p->count; i++) {
+        double X, Y, mult;
+        isk_view_to_screen(v, p->x[i], p->y[i], &X, &Y);
+        dot(c, X, Y, style(g, p, i, 1, &mult), blend);
+    }
+}
+
+static void draw_dots(isk_effect *e, isk_canvas *c, fx_group *g) { dots_plain(e, c, g, isk_draw_dot); }
+static void draw_browser_dots(isk_effect *e, isk_canvas *c, fx_group *g) { dots_plain(e, c, g, isk_draw_dot_browser); }
+static void draw_styled_dots(isk_effect *e, isk_canvas *c, fx_group *g) { dots_styled(e, c, g, isk_draw_dot); }
+static void draw_styled_browser_dots(isk_effect *e, isk_canvas *c, fx_group *g)
+{
+    dots_styled(e, c, g, isk_draw_dot_browser);
+}
+
+static void draw_pixels(isk_effect *e, isk_canvas *c, fx_group *g)
+{
+    const isk_particles *p = &g->store;
+    const int vary = varies(g);
+    for (size_t i = 0; i < p->count; i++) {
+        double X, Y, mult;
+        isk_view_to_screen(&e->view, p->x[i], p->y[i], &X, &Y);
+        isk_color col = style(g, p, i, vary, &mult);
+        if (X >= 0 && Y >= 0 && X < c->width && Y < c->height)
+            isk_draw_pixel(c, (int)X, (int)Y, col, g->def->blend);
+    }
+}
+
+static void draw_discs(isk_effect *e, isk_canvas *c, fx_group *g)
+{
+    const isk_particles *p = &g->store;
+    const int vary = varies(g);
+    const double scale = fabs(e->view.sx);
+    for (size_t i = 0; i < p->count; i++) {
+        double X, Y, mult;
+        isk_view_to_screen(&e->view, p->x[i], p->y[i], &X, &Y);
+        isk_color col = style(g, p, i, vary, &mult);
+        isk_fill_circle_aa(c, X, Y, 0.5 * g->def->size * mult * scale, col, g->def->blend);
+    }
+}
+
+/* Sprites: with a constant colour, one sprite baked in that colour (its
+ * blend table makes drawing cheapest); when the colour or alpha varies per
+ * particle (ramps), one mask per size baked in white and drawn tinted
+ * (isk_draw_sprite_tinted), so a ramp of a thousand colours bakes nothing
+ * more.  Both give isk_blend_pixel_cov's bytes exactly.  A size ramp gives
+ * each particle its own whole-pixel size (one cached mask per size). */
+static void draw_sprites(isk_effect *e, isk_canvas *c, fx_group *g)
 {
     const isk_emitter_def *em = g->def;
-    const isk_view *v = &e->view;
-    isk_particles *p = &g->store;
-    const size_t n = p->count;
-    const int varies = g->has_color_ramp || g->has_alpha_ramp || g->has_size_ramp || p->color;
-    const double scale = fabs(v->sx);
-    if (em->draw == ISK_DRAW_NONE)
-        return;
-    /* The two dot rules differ only in the function that spreads the dot. */
-    void (*const dot)(isk_canvas *, double, double, isk_color, isk_blend) =
-        em->draw == ISK_DRAW_DOT_BROWSER ? isk_draw_dot_browser : isk_draw_dot;
-    if ((em->draw == ISK_DRAW_DOT || em->draw == ISK_DRAW_DOT_BROWSER) && !varies) {
-        for (size_t i = 0; i < n; i++) {
-            double X, Y;
-            isk_view_to_screen(v, p->x[i], p->y[i], &X, &Y);
-            dot(c, X, Y, em->color, em->blend);
-        }
-        return;
-    }
-    /* Sprites: with a constant colour, one sprite baked in that colour
-     * (its blend table makes drawing cheapest); when the colour or alpha
-     * varies per particle (ramps), one mask per size baked in white and
-     * drawn tinted (isk_draw_sprite_tinted), so a ramp of a thousand colours
-     * bakes nothing more.  Both give isk_blend_pixel_cov's bytes exactly.
-     * A size ramp gives each particle its own whole-pixel size (one cached
-     * mask per size). */
+    const isk_particles *p = &g->store;
+    const int vary = varies(g);
     const int tinted = g->has_color_ramp || g->has_alpha_ramp || p->color;
     const isk_color bake_col = tinted ? ISK_WHITE : em->color;
+    const double scale = fabs(e->view.sx);
     const isk_sprite *spr = NULL;
     int last_px = -1;
-    for (size_t i = 0; i < n; i++) {
-        double X, Y, mult = 1.0;
-        isk_view_to_screen(v, p->x[i], p->y[i], &X, &Y);
-        double t = isfinite(p->life[i]) && p->life[i] > 0 ? p->age[i] / p->life[i] : 0.0;
-        isk_color col = varies ? particle_color(g, p, i, t, &mult) : em->color;
-        switch (em->draw) {
-        case ISK_DRAW_DOT:
-        case ISK_DRAW_DOT_BROWSER:
-            dot(c, X, Y, col, em->blend);
-            break;
-        case ISK_DRAW_PIXEL:
-            if (X >= 0 && Y >= 0 && X < c->width && Y < c->height)
-                isk_draw_pixel(c, (int)X, (int)Y, col, em->blend);
-            break;
-        case ISK_DRAW_DISC:
-            isk_fill_circle_aa(c, X, Y, 0.5 * em->size * mult * scale, col, em->blend);
-            break;
-        case ISK_DRAW_SPRITE: {
-            double d = em->size * mult * scale;
-            if (!(d > 0))
-                break;
-            int px = d >= ISK_SPRITE_MAX_SIZE ? ISK_SPRITE_MAX_SIZE : (d >= 1.0 ? (int)(d + 0.5) : 1);
-            if (!spr || px != last_px) {
+    for (size_t i = 0; i < p->count; i++) {
+        double X, Y, mult;
+        isk_view_to_screen(&e->view, p->x[i], p->y[i], &X, &Y);
+        isk_color col = style(g, p, i, vary, &mult);
+        double d = em->size * mult * scale;
+        if (!(d > 0))
+            continue;
+        int px = d >= ISK_SPRITE_MAX_SIZE ? ISK_SPRITE_MAX_SIZE : (d >= 1.0 ? (int)(d + 0.5) : 1);
+        if (!spr || px != last_px) {
+            if (isk_sprite_cache_get(e->sprites, em->sprite, px, bake_col, &spr) != ISK_OK) {
+                /* A full cache: start over rather than stop drawing. */
+                isk_sprite_cache_clear(e->sprites);
                 if (isk_sprite_cache_get(e->sprites, em->sprite, px, bake_col, &spr) != ISK_OK) {
-                    /* A full cache: start over rather than stop drawing. */
-                    isk_sprite_cache_clear(e->sprites);
-                    if (isk_sprite_cache_get(e->sprites, em->sprite, px, bake_col, &spr) != ISK_OK) {
-                        spr = NULL;
-                        break;
-                    }
+                    spr = NULL;
+                    continue;
                 }
-                last_px = px;
             }
-            if (tinted)
-                isk_draw_sprite_tinted(c, spr, X, Y, col, em->blend);
-            else
-                isk_draw_sprite(c, spr, X, Y, em->blend);
-            break;
+            last_px = px;
         }
-        default:
-            break;
-        }
+        if (tinted)
+            isk_draw_sprite_tinted(c, spr, X, Y, col, em->blend);
+        else
+            isk_draw_sprite(c, spr, X, Y, em->blend);
+    }
+}
+
+static void draw_nothing(isk_effect *e, isk_canvas *c, fx_group *g)
+{
+    (void)e;
+    (void)c;
+    (void)g;
+}
+
+fx_draw_fn fx_choose_draw(const fx_group *g)
+{
+    const int vary = varies(g);
+    switch (g->def->draw) {
+    case ISK_DRAW_DOT: return vary ? draw_styled_dots : draw_dots;
+    case ISK_DRAW_DOT_BROWSER: return vary ? draw_styled_browser_dots : draw_browser_dots;
+    case ISK_DRAW_PIXEL: return draw_pixels;
+    case ISK_DRAW_DISC: return draw_discs;
+    case ISK_DRAW_SPRITE: return draw_sprites;
+    default: return draw_nothing;
     }
 }
 
@@ -205,8 +268,10 @@ isk_status fx_render(isk_effect *e, isk_canvas *c)
         isk_canvas_fill(c, d->background);
     for (int i = 0; i < d->ndrawings; i++)
         draw_drawing(e, c, &e->view, &d->drawings[i]);
-    for (int k = 0; k < e->ngroups; k++)
-        draw_group(e, c, &e->groups[e->draw_order[k]]);
+    for (int k = 0; k < e->ngroups; k++) {
+        fx_group *g = &e->groups[e->draw_order[k]];
+        g->draw(e, c, g);
+    }
     /* The thesis simulator's potentials: a disc of radius 0.1 (blue attracts,
      * red repels), then the id in white at (x - 0.04, y - 0.06). */
     for (size_t k = 0; k < e->npots; k++) {

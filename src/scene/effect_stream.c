@@ -87,20 +87,8 @@ void fx_stream_reset(fx_group *g, double time)
 {
     g->dropped = 0;
     g->next_burst = g->def->count > 0 ? g->def->start + time : INFINITY;
+    g->origin = g->def->start + time;
     g->emitted = 0;
-}
-
-/* The constant part of the acceleration (for the thesis's jitter, which
- * applies only the external force). */
-static void constant_accel(const fx_group *g, double *ax, double *ay)
-{
-    if (g->has_stage[FX_STAGE_DRIFT] || g->has_stage[FX_STAGE_DRIFT_SLOW]) {
-        *ax = g->ax;
-        *ay = g->ay;
-    } else {
-        *ax = g->forces.ax;
-        *ay = g->forces.ay - g->forces.gravity;
-    }
 }
 
 /* Where and how fast new particles start: built once per spawn call. */
@@ -109,7 +97,11 @@ typedef struct launcher {
     isk_velgen launch;
 } launcher;
 
-static isk_status birth(isk_effect *e, fx_group *g, const launcher *l, double age, fx_advance_fn advance)
+/* One new particle: position, velocity and mass drawn here, lifetime and
+ * oscillation by fx_adopt, then its first moments: back-dated births run the
+ * group's own pipeline on it for its age; the thesis's jitter applies a
+ * random whole number of milliseconds of the external force. */
+static isk_status birth(isk_effect *e, fx_group *g, const launcher *l, double age)
 {
     const isk_emitter_def *em = g->def;
     isk_particles *p = &g->store;
@@ -125,19 +117,15 @@ static isk_status birth(isk_effect *e, fx_group *g, const launcher *l, double ag
         vy += em->vel.y;
     }
     double m = em->mass + (em->mass_range > 0 ? em->mass_range * isk_rng_uniform(&g->rng) : 0.0);
-    double life = em->life + (em->life_range > 0 ? em->life_range * isk_rng_uniform(&g->rng) : 0.0);
     size_t i;
     isk_status st = isk_particles_add(p, x, y, vx, vy, m, &i);
     if (st != ISK_OK)
         return st;
-    p->life[i] = life;
-    if ((st = fx_group_sync(g)) != ISK_OK)
-        return st;
-    if (g->has_osc)
-        fx_group_init_osc(e, g, i);
+    fx_adopt(e, g, i);
     switch (em->birth) {
     case ISK_BIRTH_BACKDATE:
-        advance(e, g, i, age);
+        if (age > 0)
+            isk_pipeline_run(&g->pipeline, p, i, i + 1, age, &e->scratch);
         break;
     case ISK_BIRTH_THESIS_JITTER: {
         /* (rand() % msec) / 1000 s of the external force and a position step. */
@@ -145,10 +133,8 @@ static isk_status birth(isk_effect *e, fx_group *g, const launcher *l, double ag
         int msec = (int)(h * 1000.0 + 0.5);
         if (msec > 0) {
             double sec = (double)isk_rng_below(&g->rng, (uint32_t)msec) / 1000.0;
-            double ax, ay;
-            constant_accel(g, &ax, &ay);
-            p->vx[i] += ax * sec;
-            p->vy[i] += ay * sec;
+            p->vx[i] += g->const_ax * sec;
+            p->vy[i] += g->const_ay * sec;
             p->x[i] += p->vx[i] * sec;
             p->y[i] += p->vy[i] * sec;
         }
@@ -160,7 +146,9 @@ static isk_status birth(isk_effect *e, fx_group *g, const launcher *l, double ag
     return ISK_OK;
 }
 
-isk_status fx_stream_spawn(isk_effect *e, fx_group *g, double t0, double h, fx_advance_fn advance)
+/* The births due in (t0, t0 + h], each created at t0 + h and advanced by
+ * its age. */
+static isk_status run_spawn(isk_effect *e, fx_group *g, double t0, double h)
 {
     const isk_emitter_def *em = g->def;
     const double t1 = t0 + h;
@@ -177,7 +165,7 @@ isk_status fx_stream_spawn(isk_effect *e, fx_group *g, double t0, double h, fx_a
         for (size_t k = 0; k < em->count; k++) {
             if (isfinite(em->life) && age >= em->life + em->life_range)
                 break; /* dead on arrival: the whole burst */
-            if ((s = birth(e, g, &l, em->birth == ISK_BIRTH_THESIS_JITTER ? h : age, advance)) != ISK_OK)
+            if ((s = birth(e, g, &l, em->birth == ISK_BIRTH_THESIS_JITTER ? h : age)) != ISK_OK)
                 return s;
         }
         g->next_burst = em->burst_every > 0 ? g->next_burst + em->burst_every : INFINITY;
@@ -189,13 +177,13 @@ isk_status fx_stream_spawn(isk_effect *e, fx_group *g, double t0, double h, fx_a
          * at 60 frames/s a rate of 20/s gives 0.833 -> nothing, ever. */
         unsigned k = (unsigned)(h * em->rate + 0.5);
         for (unsigned j = 0; j < k; j++)
-            if ((s = birth(e, g, &l, em->birth == ISK_BIRTH_THESIS_JITTER ? h : 0.0, advance)) != ISK_OK)
+            if ((s = birth(e, g, &l, em->birth == ISK_BIRTH_THESIS_JITTER ? h : 0.0)) != ISK_OK)
                 return s;
         return ISK_OK;
     }
     /* Accumulator: the k-th particle is due at start + k/rate. */
     for (;;) {
-        double tb = em->start + (double)(g->emitted + 1) / em->rate;
+        double tb = g->origin + (double)(g->emitted + 1) / em->rate;
         if (tb > t1_tol)
             break;
         g->emitted++;
@@ -205,8 +193,19 @@ isk_status fx_stream_spawn(isk_effect *e, fx_group *g, double t0, double h, fx_a
         if (isfinite(em->life) && age >= em->life + em->life_range)
             continue; /* would be dead already: never created */
         double a = em->birth == ISK_BIRTH_BACKDATE ? age : (em->birth == ISK_BIRTH_THESIS_JITTER ? h : 0.0);
-        if ((s = birth(e, g, &l, a, advance)) != ISK_OK)
+        if ((s = birth(e, g, &l, a)) != ISK_OK)
             return s;
     }
     return ISK_OK;
 }
+
+static void describe_spawn(const isk_effect *e, const fx_group *g, FILE *out)
+{
+    (void)e;
+    const isk_emitter_def *em = g->def;
+    static const char *const births[ISK_BIRTH_MODE_COUNT] = {"back-dated", "jittered", "frame-aligned"};
+    fprintf(out, "%g/s%s, %s births", em->rate, em->rate_mode == ISK_RATE_THESIS ? " (thesis rounding)" : "",
+            births[em->birth]);
+}
+
+const fx_step_kind fx_step_spawn = {"spawn", run_spawn, describe_spawn};

@@ -218,14 +218,15 @@ void isk_forces_eval(isk_forces *f, size_t n, const double *x, const double *y, 
         isk_force_accel(n, m, f->ax, f->ay, fx, fy);
     if (with_drag && f->drag != 0.0)
         drag_stage(n, vx, vy, f->drag, fx, fy);
+    const size_t np = f->pick ? f->npick : f->npot;
     int any = 0;
-    for (size_t k = 0; k < f->npot; k++)
-        any |= f->pot[k].enabled;
+    for (size_t k = 0; k < np; k++)
+        any |= f->pot[f->pick ? f->pick[k] : k].enabled;
     if (!any)
         return;
     memset(px, 0, n * sizeof *px);
     memset(py, 0, n * sizeof *py);
-    for (size_t k = 0; k < f->npot; k++)
-        isk_force_potential(&f->pot[k], n, x, y, px, py, f->centre);
+    for (size_t k = 0; k < np; k++)
+        isk_force_potential(&f->pot[f->pick ? f->pick[k] : k], n, x, y, px, py, f->centre);
     add_into(n, fx, fy, px, py);
 }

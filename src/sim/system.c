@@ -5,6 +5,8 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "sim/stage.h"
+
 isk_status isk_system_init(isk_system *s, uint64_t seed, size_t capacity)
 {
     if (!s)
@@ -223,24 +225,27 @@ isk_status isk_system_step(isk_system *s, double dt)
     if (st != ISK_OK)
         return st;
 
+    /* The system's fields compile into the block runner's list (the same
+     * runner the effect steps through): motion, walls, ageing. */
+    isk_pipeline pl;
+    isk_pipeline_init(&pl);
+    isk_stage *motion = isk_pipeline_add(&pl, &isk_stage_motion);
+    motion->u.motion.method = s->integrator;
+    motion->u.motion.forces = &s->forces;
+    if (bounce)
+        isk_pipeline_add(&pl, &isk_stage_walls)->u.walls = &s->bounds;
+    if (s->ageing)
+        isk_pipeline_add(&pl, &isk_stage_age);
+
     isk_particles *p = &s->particles;
     const size_t n = p->count;
     const int N = s->substeps;
     const double h = dt / (double)N / s->speed_divisor;
-    for (int j = 0; j < N; j++) {
-        /* Substeps outer, particles inner, like the thesis: a potential
-         * switched off by particle i in substep j is off for every particle
-         * in substep j+1. */
-        for (size_t o = 0; o < n; o += ISK_SIM_BLOCK) {
-            size_t m = n - o < ISK_SIM_BLOCK ? n - o : ISK_SIM_BLOCK;
-            double *x = p->x + o, *y = p->y + o, *vx = p->vx + o, *vy = p->vy + o;
-            isk_integrate_block(s->integrator, &s->forces, &s->scratch, m, x, y, vx, vy, p->m + o, h);
-            if (bounce)
-                isk_bounds_apply_arrays(&s->bounds, m, x, y, vx, vy);
-            if (s->ageing)
-                isk_particles_age(p, o, o + m, h);
-        }
-    }
+    /* Substeps outer, particles inner, like the thesis: a potential switched
+     * off by particle i in substep j is off for every particle in substep
+     * j+1. */
+    for (int j = 0; j < N; j++)
+        isk_pipeline_run(&pl, p, 0, n, h, &s->scratch);
     const double frame = h * (double)N; /* the thesis's vremenskiPomak*preciznost */
     s->time += frame;
     for (size_t k = 0; k < s->njobs; k++)

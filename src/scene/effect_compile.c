@@ -1,0 +1,180 @@
+/* Compilation: an emitter's definition becomes its group's lists (see
+ * effect_internal.h), holding exactly the stages that emitter needs, in the
+ * only order they ever run:
+ *
+ *   frame start:  late walls (draw_before_bounce) -> release (timed explosions)
+ *   pipeline:     remember (deflectors) -> drift | integrate -> slow ->
+ *                 oscillate -> walls -> deflect -> age
+ *   substep end:  spawn (streams) -> cull (finite lives, killing deflectors)
+ *
+ * A force no emitter references, a zero-strength force, a disabled
+ * potential, or a potential switched off by its maximum distance is in no
+ * list.  Recompiling is cheap (no allocation) and happens at create, reset,
+ * after a live set, and after a frame in which a potential switched off. */
+#include <math.h>
+#include <string.h>
+
+#include "effect_internal.h"
+
+/* Sums the referenced forces into the group's isk_forces; the live
+ * potentials that act are picked by index from the effect's array. */
+static void gather_forces(isk_effect *e, fx_group *g)
+{
+    const isk_effect_def *d = &e->def;
+    const isk_emitter_def *em = g->def;
+    isk_forces *f = &g->forces;
+    memset(f, 0, sizeof *f);
+    size_t np = 0;
+    for (int i = 0; i < em->nforces; i++) {
+        const isk_force_def *fd = &d->forces[em->forces[i]];
+        switch (fd->kind) {
+        case ISK_FORCE_GRAVITY: f->gravity += fd->g * em->gravity_mult; break;
+        case ISK_FORCE_DRAG: f->drag += fd->b; break;
+        case ISK_FORCE_WIND: f->ax += fd->accel.x; f->ay += fd->accel.y; break;
+        case ISK_FORCE_POTENTIAL:
+            for (size_t k = 0; k < e->npots; k++) {
+                const isk_potential *p = &e->pots[k];
+                if (e->pot_force[k] == em->forces[i] && p->enabled && p->k * p->charge != 0.0)
+                    g->pick[np++] = k;
+            }
+            break;
+        default: break;
+        }
+    }
+    f->ay += em->weight;
+    f->pot = e->pots;
+    f->npot = e->npots;
+    f->pick = g->pick;
+    f->npick = np;
+    f->centre = d->centre;
+}
+
+#define ADD(kind) ((st = isk_pipeline_add(&g->pipeline, &(kind))) != NULL)
+
+isk_status fx_compile(isk_effect *e, fx_group *g)
+{
+    const isk_effect_def *d = &e->def;
+    const isk_emitter_def *em = g->def;
+    isk_forces *f = &g->forces;
+    isk_stage *st = NULL;
+    isk_pipeline_init(&g->pipeline);
+    g->nframe_start = g->nsubstep_end = 0;
+    gather_forces(e, g);
+    g->integrator = em->integrator == ISK_INTEGRATE_INHERIT ? d->integrator : em->integrator;
+    g->substeps = em->substeps ? em->substeps : d->substeps;
+
+    g->ndefl = em->ndeflectors;
+    int can_kill = 0;
+    for (int k = 0; k < g->ndefl; k++) {
+        g->defl[k] = d->deflectors[em->deflectors[k]];
+        can_kill |= g->defl[k].reaction == ISK_DEFLECT_KILL;
+    }
+    const int walls = em->bounded && d->bounds.sides != 0;
+
+    if (walls && em->draw_before_bounce)
+        g->frame_start[g->nframe_start++] = &fx_step_late_walls;
+    if (em->source == ISK_SOURCE_EXPLOSION && (em->start > 0 || em->explosion == ISK_EXPLOSION_MULTI_COULOMB))
+        g->frame_start[g->nframe_start++] = &fx_step_release;
+
+    if (g->ndefl && !ADD(isk_stage_remember))
+        return ISK_ERR_FULL;
+    /* Constant accelerations with the thesis's integrator fold into one
+     * drift loop that reads no mass (gravity becomes a = -g). */
+    const int fast = g->integrator == ISK_INTEGRATE_SEMI_EULER && f->drag == 0 && f->npick == 0 &&
+                     d->fidelity == ISK_FIDELITY_SOUND;
+    const int fused_slow = fast && em->slow_faithful && em->slowing > 0;
+    /* The thesis's jitter applies the constant part of the acceleration. */
+    g->const_ax = f->ax;
+    g->const_ay = f->ay - f->gravity;
+    if (fast) {
+        if (fused_slow) {
+            if (!ADD(isk_stage_drift_slow))
+                return ISK_ERR_FULL;
+            st->u.drift_slow.ax = g->const_ax;
+            st->u.drift_slow.ay = g->const_ay;
+            st->u.drift_slow.slowing = em->slowing;
+        } else {
+            if (!ADD(isk_stage_drift))
+                return ISK_ERR_FULL;
+            st->u.drift.ax = g->const_ax;
+            st->u.drift.ay = g->const_ay;
+        }
+    } else {
+        if (!ADD(isk_stage_motion))
+            return ISK_ERR_FULL;
+        st->u.motion.method = g->integrator;
+        st->u.motion.forces = f;
+    }
+    if (em->slowing > 0 && !fused_slow) {
+        if (!ADD(isk_stage_slow))
+            return ISK_ERR_FULL;
+        st->u.slow.slowing = em->slowing;
+    }
+    if (g->store.osc_amp) {
+        if (!ADD(isk_stage_oscillate))
+            return ISK_ERR_FULL;
+        st->u.osc.decay = em->osc_decay;
+        st->u.osc.table = em->osc_use_table ? &e->sin_table : NULL;
+        st->u.osc.faithful = em->osc_faithful;
+        st->u.osc.omega_min = em->osc_omega_min;
+        st->u.osc.omega_max = em->osc_omega_max;
+        st->u.osc.amp_min = em->osc_amp_min;
+        st->u.osc.amp_max = em->osc_amp_max;
+    }
+    if (walls && !em->draw_before_bounce) {
+        if (!ADD(isk_stage_walls))
+            return ISK_ERR_FULL;
+        st->u.walls = &d->bounds;
+    }
+    if (g->ndefl) {
+        if (!ADD(isk_stage_deflect))
+            return ISK_ERR_FULL;
+        st->u.deflect.segs = g->defl;
+        st->u.deflect.n = g->ndefl;
+        st->u.deflect.rng = &g->rng;
+        st->u.deflect.can_kill = can_kill;
+    }
+    const int mortal = isfinite(em->life) || can_kill;
+    if (mortal && !ADD(isk_stage_age))
+        return ISK_ERR_FULL;
+
+    if (em->source == ISK_SOURCE_STREAM)
+        g->substep_end[g->nsubstep_end++] = &fx_step_spawn;
+    if (mortal)
+        g->substep_end[g->nsubstep_end++] = &fx_step_cull;
+    g->draw = fx_choose_draw(g);
+    return ISK_OK;
+}
+
+isk_status fx_compile_all(isk_effect *e)
+{
+    for (int i = 0; i < e->ngroups; i++) {
+        isk_status s = fx_compile(e, &e->groups[i]);
+        if (s != ISK_OK)
+            return s;
+    }
+    return ISK_OK;
+}
+
+static void describe_steps(const isk_effect *e, const fx_group *g, const fx_step_kind *const *k, int n, FILE *out)
+{
+    for (int i = 0; i < n; i++) {
+        fprintf(out, "  %-9s ", k[i]->name);
+        k[i]->describe(e, g, out);
+        fputc('\n', out);
+    }
+}
+
+void fx_describe_group(const isk_effect *e, const fx_group *g, FILE *out)
+{
+    const isk_emitter_def *em = g->def;
+    fprintf(out, "emitter %s (%s, %zu particles, %d substep%s of %s):\n", em->name, isk_source_names[em->source],
+            g->store.count, g->substeps, g->substeps == 1 ? "" : "s", isk_integrator_name(g->integrator));
+    describe_steps(e, g, g->frame_start, g->nframe_start, out);
+    isk_pipeline_describe(&g->pipeline, out);
+    describe_steps(e, g, g->substep_end, g->nsubstep_end, out);
+    if (em->draw != ISK_DRAW_NONE)
+        fprintf(out, "  draw      %s, %s%s%s%s\n", isk_draw_mode_names[em->draw], isk_blend_name(em->blend),
+                g->has_color_ramp ? ", colour over life" : "", g->has_alpha_ramp ? ", alpha over life" : "",
+                g->has_size_ramp ? ", size over life" : "");
+}

@@ -1,0 +1,174 @@
+/* Births and deaths of a group's particles: what exists at time 0, the
+ * thesis's explosions (at create, timed, scheduled or clicked), and the
+ * frame-level stages that release and cull them.  Every source's new
+ * particles go through fx_adopt, so lifetimes and oscillation state follow
+ * one rule.  Stream births are effect_stream.c's. */
+#include <math.h>
+
+#include "effect_internal.h"
+
+uint64_t fx_group_seed(uint64_t seed, int index)
+{
+    /* Emitter 0 uses the scene seed itself, so a one-emitter scene draws the
+     * same numbers as a C program seeding one isk_system with that seed. */
+    return seed + (uint64_t)index * 0x9E3779B97F4A7C15ull;
+}
+
+/* Lifetime life + U*range (one uniform, only with a finite life and a
+ * range), then the oscillation state: omega, amplitude, and with
+ * osc_random_phase the phase (the offset starts where the sine is, so the
+ * first step moves the particle by the change only). */
+void fx_adopt(isk_effect *e, fx_group *g, size_t from)
+{
+    const isk_emitter_def *em = g->def;
+    isk_particles *p = &g->store;
+    const int ranged = isfinite(em->life) && em->life_range > 0;
+    for (size_t i = from; i < p->count; i++)
+        p->life[i] = em->life + (ranged ? em->life_range * isk_rng_uniform(&g->rng) : 0.0);
+    if (!p->osc_amp)
+        return;
+    for (size_t i = from; i < p->count; i++) {
+        p->osc_omega[i] = isk_rng_range(&g->rng, em->osc_omega_min, em->osc_omega_max);
+        p->osc_amp[i] = isk_rng_range(&g->rng, em->osc_amp_min, em->osc_amp_max);
+        p->osc_phase[i] = 0.0;
+        p->osc_offset[i] = 0.0;
+        if (em->osc_random_phase) {
+            double ph = isk_rng_range(&g->rng, 0.0, 6.283185307179586);
+            p->osc_phase[i] = ph;
+            p->osc_offset[i] = p->osc_amp[i] * (em->osc_use_table ? isk_sinlut_floor(&e->sin_table, ph) : sin(ph));
+        }
+    }
+}
+
+isk_status fx_fire_explosion(isk_effect *e, fx_group *g, isk_explosion kind, double cx, double cy, size_t count,
+                             isk_kick_target kick)
+{
+    const isk_emitter_def *em = g->def;
+    size_t limit = em->limit ? em->limit : ISK_EXPLODE_THESIS_LIMIT;
+    isk_particles *p = &g->store;
+    size_t before = p->count;
+    isk_status s;
+    switch (kind) {
+    case ISK_EXPLOSION_RING: s = isk_explode_ring(p, cx, cy, count, limit); break;
+    case ISK_EXPLOSION_UNIFORM: s = isk_explode_uniform(p, &g->rng, cx, cy, count, limit); break;
+    case ISK_EXPLOSION_GAUSS: s = isk_explode_gauss(p, &g->rng, cx, cy, count, limit); break;
+    case ISK_EXPLOSION_COULOMB: s = isk_explode_coulomb(p, &g->rng, cx, cy, count, limit, kick); break;
+    case ISK_EXPLOSION_MULTI_COULOMB:
+        if (g->mc_active && !isk_multi_coulomb_done(&g->mc))
+            return ISK_ERR_FULL;
+        s = isk_multi_coulomb_start(&g->mc, cx, cy, count, limit);
+        if (s == ISK_OK) {
+            g->mc_active = 1;
+            s = isk_multi_coulomb_release(&g->mc, p, &g->rng, NULL);
+        }
+        break;
+    default: return ISK_ERR_RANGE;
+    }
+    if (s == ISK_OK)
+        fx_adopt(e, g, before);
+    return s;
+}
+
+isk_status fx_populate(isk_effect *e, fx_group *g)
+{
+    const isk_emitter_def *em = g->def;
+    isk_particles *p = &g->store;
+    isk_status s = ISK_OK;
+    switch (em->source) {
+    case ISK_SOURCE_PARTICLE:
+        s = isk_particles_add(p, em->pos.x, em->pos.y, em->vel.x, em->vel.y, em->mass, NULL);
+        if (s == ISK_OK)
+            fx_adopt(e, g, 0);
+        break;
+    case ISK_SOURCE_LAYER: {
+        size_t limit = em->limit ? em->limit : ISK_EXPLODE_THESIS_LIMIT;
+        s = isk_explode_layer(p, &g->rng, em->rect[0], em->rect[1], em->rect[2], em->rect[3], em->count, limit);
+        for (size_t i = 0; s == ISK_OK && i < p->count; i++)
+            p->m[i] = em->mass;
+        if (s == ISK_OK)
+            fx_adopt(e, g, 0);
+        break;
+    }
+    case ISK_SOURCE_EXPLOSION:
+        if (em->start <= 0) {
+            s = fx_fire_explosion(e, g, em->explosion, em->pos.x, em->pos.y, em->count, em->kick);
+            g->fired = 1;
+        }
+        break;
+    case ISK_SOURCE_STREAM:
+        fx_stream_reset(g, 0.0);
+        break;
+    default:
+        break;
+    }
+    return s;
+}
+
+/* Timed explosions (start > 0) fire at the first frame at or after their
+ * time; a multi-Coulomb explosion releases its due batches. */
+static isk_status run_release(isk_effect *e, fx_group *g, double t0, double h)
+{
+    (void)t0;
+    (void)h;
+    const isk_emitter_def *em = g->def;
+    if (em->source == ISK_SOURCE_EXPLOSION && !g->fired && e->time >= em->start) {
+        g->fired = 1;
+        isk_status s = fx_fire_explosion(e, g, em->explosion, em->pos.x, em->pos.y, em->count, em->kick);
+        if (s != ISK_OK)
+            return s;
+    }
+    if (g->mc_active && !isk_multi_coulomb_done(&g->mc)) {
+        size_t before = g->store.count;
+        isk_status s = isk_multi_coulomb_release(&g->mc, &g->store, &g->rng, NULL);
+        if (s != ISK_OK)
+            return s;
+        fx_adopt(e, g, before);
+    }
+    return ISK_OK;
+}
+
+static void describe_release(const isk_effect *e, const fx_group *g, FILE *out)
+{
+    (void)e;
+    const isk_emitter_def *em = g->def;
+    fprintf(out, "%s explosion of %zu at t=%g s", isk_explosion_names[em->explosion], em->count, em->start);
+}
+
+const fx_step_kind fx_step_release = {"release", run_release, describe_release};
+
+/* draw_before_bounce: the thesis examples draw, then bounce, so the walls of
+ * frame N run at the start of frame N + 1 (never before the first frame). */
+static isk_status run_late_walls(isk_effect *e, fx_group *g, double t0, double h)
+{
+    (void)t0;
+    (void)h;
+    if (e->frame > 0)
+        isk_bounds_apply(&e->def.bounds, &g->store, 0, g->store.count);
+    return ISK_OK;
+}
+
+static void describe_late_walls(const isk_effect *e, const fx_group *g, FILE *out)
+{
+    (void)g;
+    fprintf(out, "%s (after drawing: at the start of the next frame)", isk_bounce_mode_names[e->def.bounds.mode]);
+}
+
+const fx_step_kind fx_step_late_walls = {"walls", run_late_walls, describe_late_walls};
+
+static isk_status run_cull(isk_effect *e, fx_group *g, double t0, double h)
+{
+    (void)e;
+    (void)t0;
+    (void)h;
+    isk_particles_cull(&g->store);
+    return ISK_OK;
+}
+
+static void describe_cull(const isk_effect *e, const fx_group *g, FILE *out)
+{
+    (void)e;
+    (void)g;
+    fprintf(out, "age >= life");
+}
+
+const fx_step_kind fx_step_cull = {"cull", run_cull, describe_cull};

@@ -1,0 +1,117 @@
+/* src/sim/stage.h — the block runner: a list of stages, each a kernel on
+ * plain arrays with its own parameters, run over a particle store in fixed
+ * blocks of ISK_SIM_BLOCK particles (internal).
+ *
+ * The one loop of the simulation, written once:
+ *
+ *     for (each block [o, o + n) of [begin, end), in index order)
+ *         for (each stage of the pipeline, in list order)
+ *             stage->kind->run(stage, &block, h);
+ *
+ * isk_system_step (src/sim/system.c) and the effect runtime (src/scene)
+ * both step through isk_pipeline_run, so "the same bits as the thesis's
+ * loop" holds by construction, not by keeping two loops aligned.  Blocks
+ * keep the per-block scratch (force accumulators, RK4 copies, the positions
+ * before the move) in L1, and they are the unit that threads will share
+ * out: the bytes never depend on who ran which block.
+ *
+ *     isk_pipeline pl;
+ *     isk_pipeline_init(&pl);
+ *     isk_stage *s = isk_pipeline_add(&pl, &isk_stage_motion);   // NULL when full
+ *     s->u.motion.method = ISK_INTEGRATE_SEMI_EULER;
+ *     s->u.motion.forces = &forces;
+ *     isk_pipeline_run(&pl, &store, 0, store.count, h, &scratch);
+ *
+ * A stage kind is a row of plain data: its name (for `iskra describe`), its
+ * kernel, and a function that writes its parameters in words.  Adding a
+ * stage is one kind plus its kernel; no switch anywhere dispatches on it.
+ * A stage the scene does not use is simply not in the list.
+ */
+#ifndef ISKRA_SIM_STAGE_H
+#define ISKRA_SIM_STAGE_H
+
+#include <stddef.h>
+#include <stdint.h>
+#include <stdio.h>
+
+#include "iskra/bounds.h"
+#include "iskra/deflector.h"
+#include "iskra/forces.h"
+#include "iskra/integrate.h"
+#include "iskra/particles.h"
+#include "iskra/rng.h"
+#include "iskra/sinlut.h"
+
+/* What every stage of one block may use: the store (for its optional
+ * columns), offset pointers to the block's first particle, and the
+ * per-block scratch (iskra/integrate.h's isk_scratch: one per thread). */
+typedef struct isk_block {
+    isk_particles *p;
+    size_t first, n;                 /* particles [first, first + n) */
+    double *x, *y, *vx, *vy, *m;     /* p->x + first, ... */
+    isk_scratch *s;
+} isk_block;
+
+typedef struct isk_stage isk_stage;
+
+typedef struct isk_stage_kind {
+    const char *name;                                        /* "drift" */
+    void (*run)(const isk_stage *st, isk_block *b, double h);
+    void (*describe)(const isk_stage *st, FILE *out);        /* the parameters, in words */
+} isk_stage_kind;
+
+/* Per-kind parameters.  Pointers refer to data the owner keeps alive and
+ * unchanged while the pipeline runs (recompile after changing them). */
+struct isk_stage {
+    const isk_stage_kind *kind;
+    union {
+        struct { double ax, ay; } drift;                     /* isk_stage_drift */
+        struct { double ax, ay, slowing; } drift_slow;       /* isk_stage_drift_slow */
+        struct { isk_integrator method; isk_forces *forces; } motion;
+        struct { double slowing; } slow;
+        struct {
+            double decay;                                    /* amplitude *= max(0, 1 - decay*h) */
+            const isk_sinlut *table;                         /* NULL: libm sin */
+            int faithful;                                    /* 1: also add the offset change to vx */
+            double omega_min, omega_max, amp_min, amp_max;   /* for describe only */
+        } osc;
+        const isk_bounds *walls;
+        struct {
+            const isk_deflector *segs;
+            int n;
+            isk_rng *rng;                                    /* the owner's stream (probabilities) */
+            int can_kill;                                    /* some segment kills: life = -inf */
+        } deflect;
+    } u;
+};
+
+/* Each kind appears at most once in a list, so this is a bound, not a cap
+ * that could silently drop anything (isk_pipeline_add reports a full list). */
+#define ISK_PIPELINE_MAX 16
+
+typedef struct isk_pipeline {
+    isk_stage stage[ISK_PIPELINE_MAX];
+    int n;
+} isk_pipeline;
+
+void isk_pipeline_init(isk_pipeline *pl);
+/* Appends a stage of `kind` with zeroed parameters; NULL when the list is full. */
+isk_stage *isk_pipeline_add(isk_pipeline *pl, const isk_stage_kind *kind);
+/* Runs the list over particles [begin, end) of p with step h. */
+void isk_pipeline_run(const isk_pipeline *pl, isk_particles *p, size_t begin, size_t end, double h,
+                      isk_scratch *s);
+/* One line per stage: "  NAME      parameters". */
+void isk_pipeline_describe(const isk_pipeline *pl, FILE *out);
+
+/* The stage kinds, in the only order they ever appear in a list. */
+extern const isk_stage_kind isk_stage_remember;   /* x_old, y_old = x, y (deflectors need the path) */
+extern const isk_stage_kind isk_stage_drift;      /* constant acceleration + semi-implicit Euler, no mass */
+extern const isk_stage_kind isk_stage_drift_slow; /* the same with the fire thesis's slowing in between */
+extern const isk_stage_kind isk_stage_motion;     /* forces + an integrator (isk_integrate_block) */
+extern const isk_stage_kind isk_stage_slow;       /* v *= max(0, 1 - slowing*h) */
+extern const isk_stage_kind isk_stage_oscillate;  /* the fire thesis's horizontal sway (ISK_PARTICLES_OSC) */
+extern const isk_stage_kind isk_stage_walls;      /* isk_bounds_apply */
+extern const isk_stage_kind isk_stage_deflect;    /* deflector segments */
+extern const isk_stage_kind isk_stage_age;        /* age += h */
+
+#endif

@@ -1,0 +1,66 @@
+/* Contact stages: the walls and the deflector segments, with the positions
+ * before the move that deflectors need (see stage.h). */
+#include <math.h>
+#include <string.h>
+
+#include "sim/stage.h"
+
+static void run_remember(const isk_stage *st, isk_block *b, double h)
+{
+    (void)st;
+    (void)h;
+    memcpy(b->s->x_old, b->x, b->n * sizeof *b->x);
+    memcpy(b->s->y_old, b->y, b->n * sizeof *b->y);
+}
+
+static void describe_remember(const isk_stage *st, FILE *out)
+{
+    (void)st;
+    fprintf(out, "positions (for deflectors)");
+}
+
+const isk_stage_kind isk_stage_remember = {"remember", run_remember, describe_remember};
+
+static void run_walls(const isk_stage *st, isk_block *b, double h)
+{
+    (void)h;
+    isk_bounds_apply_arrays(st->u.walls, b->n, b->x, b->y, b->vx, b->vy);
+}
+
+static void describe_walls(const isk_stage *st, FILE *out)
+{
+    const isk_bounds *w = st->u.walls;
+    fprintf(out, "%s", (unsigned)w->mode < ISK_BOUNCE_MODE_COUNT ? isk_bounce_mode_names[w->mode] : "?");
+    if (w->sides != ISK_SIDE_ALL) {
+        const char *sep = ": ";
+        for (int k = 0; k < ISK_SIDE_COUNT; k++)
+            if (w->sides >> k & 1u) {
+                fprintf(out, "%s%s", sep, isk_side_names[k]);
+                sep = ", ";
+            }
+    }
+}
+
+const isk_stage_kind isk_stage_walls = {"walls", run_walls, describe_walls};
+
+static void run_deflect(const isk_stage *st, isk_block *b, double h)
+{
+    (void)h;
+    isk_scratch *s = b->s;
+    memset(s->killed, 0, b->n);
+    isk_deflect(st->u.deflect.segs, st->u.deflect.n, b->x, b->y, b->vx, b->vy, s->x_old, s->y_old, b->n,
+                st->u.deflect.rng, s->killed, NULL);
+    if (!st->u.deflect.can_kill)
+        return;
+    double *life = b->p->life + b->first;
+    for (size_t i = 0; i < b->n; i++)
+        if (s->killed[i])
+            life[i] = -INFINITY; /* culled at the end of the substep */
+}
+
+static void describe_deflect(const isk_stage *st, FILE *out)
+{
+    fprintf(out, "%d segment%s", st->u.deflect.n, st->u.deflect.n == 1 ? "" : "s");
+}
+
+const isk_stage_kind isk_stage_deflect = {"deflect", run_deflect, describe_deflect};

@@ -1,0 +1,90 @@
+/* Motion stages: the constant-acceleration drift, forces + integrator, and
+ * ageing (see stage.h). */
+#include <math.h>
+
+#include "sim/stage.h"
+
+/* v += a*h; r += h*v: semi-implicit Euler with a constant acceleration.
+ * With a = (0, -g) this is the hand-written gravity loop, operation for
+ * operation (vy + (-g*h) == vy - g*h in IEEE arithmetic). */
+static void drift_loop(size_t n, double *restrict x, double *restrict y, double *restrict vx,
+                       double *restrict vy, double ax, double ay, double h)
+{
+    const double dvx = ax * h, dvy = ay * h;
+    if (ax == 0.0) {
+        /* Gravity alone (the common case): vx does not change, so it is only
+         * read; skipping its store saves an eighth of the memory traffic.
+         * vx + 0 == vx for every vx but -0, and -0 + 0 = +0 would only
+         * change the sign of a zero velocity, never a position. */
+        for (size_t i = 0; i < n; i++) {
+            double nvy = vy[i] + dvy;
+            vy[i] = nvy;
+            x[i] = x[i] + h * vx[i];
+            y[i] = y[i] + h * nvy;
+        }
+        return;
+    }
+    for (size_t i = 0; i < n; i++) {
+        double nvx = vx[i] + dvx, nvy = vy[i] + dvy;
+        vx[i] = nvx;
+        vy[i] = nvy;
+        x[i] = x[i] + h * nvx;
+        y[i] = y[i] + h * nvy;
+    }
+}
+
+static void run_drift(const isk_stage *st, isk_block *b, double h)
+{
+    drift_loop(b->n, b->x, b->y, b->vx, b->vy, st->u.drift.ax, st->u.drift.ay, h);
+}
+
+static void describe_drift(const isk_stage *st, FILE *out)
+{
+    if (st->u.drift.ax != 0 || st->u.drift.ay != 0)
+        fprintf(out, "semi-euler, constant acceleration (%g, %g)", st->u.drift.ax, st->u.drift.ay);
+    else
+        fprintf(out, "semi-euler, no forces");
+}
+
+const isk_stage_kind isk_stage_drift = {"drift", run_drift, describe_drift};
+
+static void run_motion(const isk_stage *st, isk_block *b, double h)
+{
+    isk_integrate_block(st->u.motion.method, st->u.motion.forces, b->s, b->n, b->x, b->y, b->vx, b->vy,
+                        b->m, h);
+}
+
+/* Names only what acts. */
+static void describe_motion(const isk_stage *st, FILE *out)
+{
+    const isk_forces *f = st->u.motion.forces;
+    fprintf(out, "%s, forces: ", isk_integrator_name(st->u.motion.method));
+    int any = 0;
+    if (f->gravity != 0)
+        fprintf(out, "%sgravity g=%g", any++ ? ", " : "", f->gravity);
+    if (f->ax != 0 || f->ay != 0)
+        fprintf(out, "%saccel (%g, %g)", any++ ? ", " : "", f->ax, f->ay);
+    if (f->drag != 0)
+        fprintf(out, "%sdrag b=%g", any++ ? ", " : "", f->drag);
+    size_t n = f->pick ? f->npick : f->npot;
+    for (size_t k = 0; k < n; k++)
+        fprintf(out, "%spotential %d", any++ ? ", " : "", f->pot[f->pick ? f->pick[k] : k].id);
+    if (!any)
+        fprintf(out, "none");
+}
+
+const isk_stage_kind isk_stage_motion = {"integrate", run_motion, describe_motion};
+
+static void run_age(const isk_stage *st, isk_block *b, double h)
+{
+    (void)st;
+    isk_particles_age(b->p, b->first, b->first + b->n, h);
+}
+
+static void describe_age(const isk_stage *st, FILE *out)
+{
+    (void)st;
+    fprintf(out, "age += dt");
+}
+
+const isk_stage_kind isk_stage_age = {"age", run_age, describe_age};
