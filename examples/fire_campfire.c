@@ -41,7 +41,10 @@ static void add_log(isk_effect_def *d, double x0, double y0, double x1, double y
 {
     double dx = x1 - x0, dy = y1 - y0, L = hypot(dx, dy);
     double nx = -dy / L * r, ny = dx / L * r;
-    isk_drawing_def *q = isk_effect_def_add_drawing(d, "log", ISK_DRAWING_POLYGON);
+    char name[ISK_NAME_MAX]; /* drawings are named uniquely: "log0", "log0.end1", ... */
+    const int id = d->ndrawings;
+    snprintf(name, sizeof name, "log%d", id);
+    isk_drawing_def *q = isk_effect_def_add_drawing(d, name, ISK_DRAWING_POLYGON);
     double pts[8] = {x0 + nx, y0 + ny, x1 + nx, y1 + ny, x1 - nx, y1 - ny, x0 - nx, y0 - ny};
     q->points = malloc(sizeof pts);
     if (q->points)
@@ -54,7 +57,8 @@ static void add_log(isk_effect_def *d, double x0, double y0, double x1, double y
         const double rr[2] = {r, 0.55 * r};
         const isk_color cc[2] = {isk_rgba(90, 60, 40, 255), isk_rgba(60, 38, 25, 255)};
         for (int j = 0; j < 2; j++) {
-            isk_drawing_def *disc = isk_effect_def_add_drawing(d, j ? "log core" : "log end", ISK_DRAWING_DISC);
+            snprintf(name, sizeof name, "log%d.%s%d", id, j ? "core" : "end", k);
+            isk_drawing_def *disc = isk_effect_def_add_drawing(d, name, ISK_DRAWING_DISC);
             disc->x = k ? x1 : x0;
             disc->y = k ? y1 : y0;
             disc->r = rr[j];
@@ -103,7 +107,7 @@ static isk_status build(isk_effect **out, uint64_t seed, double wind)
     int log1 = isk_effect_def_add_deflector(&d, "log1", isk_deflector_segment(-1.1, 0.12, 0.9, 0.42));
     int log2 = isk_effect_def_add_deflector(&d, "log2", isk_deflector_segment(1.1, 0.12, -0.9, 0.42));
     for (int k = 0; k < d.ndeflectors; k++)
-        d.deflectors[k].restitution = 0.35;
+        d.deflectors[k].seg.restitution = 0.35;
 
     /* Smoke: rises because its weight (2.4) beats gravity (1.0). */
     isk_emitter_def *e = isk_effect_def_add_emitter(&d, "smoke");

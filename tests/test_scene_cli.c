@@ -174,7 +174,7 @@ Test(scene_cli, scene_errors_exit_2_with_file_line_and_write_nothing)
     cr_assert_not(cli_exists(OUT "/xdir"));
     cr_assert_eq(run("render tests/data/bad_scenes/runtime_invalid.ini --out " OUT "/x.png"), 2);
     cr_assert_str_eq(slurp("stderr.txt"),
-                     "tests/data/bad_scenes/runtime_invalid.ini:3: emitter 'sparks': count must be 1..10000 (raise "
+                     "tests/data/bad_scenes/runtime_invalid.ini:6: [emitter sparks] count: must be 1..10000 (raise "
                      "limit for more)\n");
     cr_assert_not(cli_exists(OUT "/x.png"));
     cr_assert_eq(run("render no_such_scene.ini --out " OUT "/x.png"), 2);
@@ -190,7 +190,7 @@ Test(scene_cli, bad_scene_messages)
     } cases[] = {
         {"misspelt_key", "tests/data/bad_scenes/misspelt_key.ini:7: [emitter smoke] unknown key 'rat'; did you mean 'rate'?"},
         {"bad_number", "tests/data/bad_scenes/bad_number.ini:3: [emitter smoke] rate: expected a number between 0 and "
-                       "100000000, got \"fast\""},
+                       "10000000, got \"fast\""},
         {"unknown_section", "tests/data/bad_scenes/unknown_section.ini:4: unknown section [emiter sparks]; did you "
                             "mean [emitter sparks]?"},
         {"undefined_force", "tests/data/bad_scenes/undefined_force.ini:7: [emitter sparks] forces: no force named "
@@ -205,7 +205,7 @@ Test(scene_cli, bad_scene_messages)
                       "#rrggbbaa or a name such as yellow), got \"yelow\"; did you mean \"yellow\"?"},
         {"wrong_kind_key", "tests/data/bad_scenes/wrong_kind_key.ini:3: [force air] g: only for kind = gravity (this "
                            "force has kind = drag)"},
-        {"runtime_invalid", "tests/data/bad_scenes/runtime_invalid.ini:3: emitter 'sparks': count must be 1..10000 "
+        {"runtime_invalid", "tests/data/bad_scenes/runtime_invalid.ini:6: [emitter sparks] count: must be 1..10000 "
                             "(raise limit for more)"},
     };
     for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {

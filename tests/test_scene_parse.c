@@ -92,7 +92,7 @@ Test(scene_values, colours)
         cr_assert_not(scv_color(bad[i], &c), "accepted \"%s\"", bad[i]);
     /* every listed name parses */
     for (int i = 0; i < scv_color_count; i++)
-        cr_assert(scv_color(scv_color_names[i], &c), "%s", scv_color_names[i]);
+        cr_assert(scv_color(scv_color_name_at(i), &c), "%s", scv_color_name_at(i));
 }
 
 Test(scene_values, lists)
@@ -128,7 +128,7 @@ Test(scene_parse, scene_and_view_keys)
     cr_assert_eq(d.seed, 12345678901234ull);
     cr_assert_eq(d.speed_divisor, 2);
     cr_assert_eq(d.centre, ISK_FIDELITY_THESIS);
-    cr_assert_eq(d.frames, 77);
+    cr_assert_eq(d.show.frames, 77);
     cr_assert_eq(d.view_kind, ISK_VIEWDEF_WINDOW);
     cr_assert_eq(d.xmin, -5);
     cr_assert_eq(d.xmax, 15);
@@ -152,7 +152,7 @@ Test(scene_parse, defaults_without_sections)
     cr_assert_eq(d.width, ref.width);
     cr_assert_eq(d.dt, ref.dt);
     cr_assert_eq(d.bounds.sides, 0u);
-    cr_assert_eq(d.click_enabled, 0);
+    cr_assert_eq(d.click.enabled, 0);
     isk_effect_def_free(&d);
 }
 
@@ -201,25 +201,25 @@ Test(scene_parse, deflectors_bounds_click_drawings)
                                "[drawing path]\npoints = 0,0, 1,1, 2,0\nclosed = yes\n"
                                "[drawing disc]\nposition = 1, 1\nradius = 0.5\n");
     cr_assert_eq(d.ndeflectors, 1);
-    cr_assert_str_eq(d.deflector_names[0], "floor");
-    cr_assert_eq(d.deflectors[0].x0, -1);
-    cr_assert_eq(d.deflectors[0].x1, 1);
-    cr_assert_eq(d.deflectors[0].restitution, 0.5);
-    cr_assert_eq(d.deflectors[0].probability, 0.25);
-    cr_assert_eq(d.deflectors[0].reaction, ISK_DEFLECT_STICK);
-    cr_assert_eq(d.deflectors[0].mode, ISK_RESTITUTION_NORMAL);
+    cr_assert_str_eq(d.deflectors[0].name, "floor");
+    cr_assert_eq(d.deflectors[0].seg.x0, -1);
+    cr_assert_eq(d.deflectors[0].seg.x1, 1);
+    cr_assert_eq(d.deflectors[0].seg.restitution, 0.5);
+    cr_assert_eq(d.deflectors[0].seg.probability, 0.25);
+    cr_assert_eq(d.deflectors[0].seg.reaction, ISK_DEFLECT_STICK);
+    cr_assert_eq(d.deflectors[0].seg.mode, ISK_RESTITUTION_NORMAL);
     cr_assert_eq(d.bounds.mode, ISK_BOUNCE_REFLECT);
     cr_assert_eq(d.bounds.sides, (unsigned)(ISK_SIDE_BOTTOM | ISK_SIDE_LEFT));
     cr_assert_eq(d.bounds.margin, 0.2);
     cr_assert_eq(d.bounds.restitution, 0.7);
     cr_assert_eq(d.bounds.xmax, 10);
     cr_assert_eq(d.bounds.ymax, 5);
-    cr_assert_eq(d.click_enabled, 1);
-    cr_assert_eq(d.click_explosion, ISK_EXPLOSION_RING);
-    cr_assert_eq(d.click_count, 50);
-    cr_assert_eq(d.click_emitter, 0);
-    cr_assert_eq(d.click_auto, 1);
-    cr_assert_eq(d.click_y, 2);
+    cr_assert_eq(d.click.enabled, 1);
+    cr_assert_eq(d.click.explosion, ISK_EXPLOSION_RING);
+    cr_assert_eq(d.click.count, 50);
+    cr_assert_eq(d.click.emitter, 0);
+    cr_assert_eq(d.click.at_start, 1);
+    cr_assert_eq(d.click.y, 2);
     cr_assert_eq(d.ndrawings, 3);
     cr_assert_eq(d.drawings[0].kind, ISK_DRAWING_TEXT);
     cr_assert_eq(d.drawings[0].pixels, 1);
@@ -366,7 +366,7 @@ Test(scene_parse, layout_freedom)
 Test(scene_errors, numbers_and_ranges)
 {
     load_fails("[emitter smoke]\nsource = stream\nrate = fast\n",
-               "t.ini:3: [emitter smoke] rate: expected a number between 0 and 100000000, got \"fast\"");
+               "t.ini:3: [emitter smoke] rate: expected a number between 0 and 10000000, got \"fast\"");
     load_fails("[scene]\ndt = nan\n", "t.ini:2: [scene] dt: expected a number > 0 and <= 1000, got \"nan\"");
     load_fails("[scene]\ndt = inf\n", "t.ini:2: [scene] dt: expected a number > 0 and <= 1000, got \"inf\"");
     load_fails("[scene]\ndt = 0\n", "t.ini:2: [scene] dt: expected a number > 0 and <= 1000, got \"0\"");
@@ -378,7 +378,9 @@ Test(scene_errors, numbers_and_ranges)
     load_fails("[emitter p]\nposition = 1, x\n",
                "t.ini:2: [emitter p] position: expected 2 numbers \"x, y\": item 2 is not a number: \"x\"");
     load_fails("[emitter p]\nsource = explosion\ncount = 0\n",
-               "t.ini:3: [emitter p] count: expected a whole number between 1 and 4000000, got \"0\"");
+               "t.ini:3: [emitter p] count: must be 1..10000 (raise limit for more)");
+    load_fails("[emitter p]\nsource = stream\ncount = 4000001\n",
+               "t.ini:3: [emitter p] count: expected a whole number between 0 and 4000000, got \"4000001\"");
     load_fails("[scene]\nseed = -1\n",
                "t.ini:2: [scene] seed: expected a whole number between 0 and 18446744073709551615, got \"-1\"");
     load_fails("[emitter p]\nosc_omega = 2, 1\n", "t.ini:2: [emitter p] osc_omega: min (2) is greater than max (1)");

@@ -18,7 +18,7 @@ static void render_def(const isk_effect_def *d, long frames, isk_canvas *c)
     isk_error err;
     cr_assert_eq(isk_effect_create(&fx, d, &err), ISK_OK, "%s", err.message);
     cr_assert_eq(isk_canvas_init(c, d->width, d->height), ISK_OK);
-    cr_assert_eq(isk_effect_run(fx, c, frames < 0 ? d->frames : frames), ISK_OK);
+    cr_assert_eq(isk_effect_run(fx, c, frames < 0 ? d->show.frames : frames), ISK_OK);
     isk_effect_destroy(fx);
 }
 
@@ -104,7 +104,7 @@ Test(scene_render, fig14_scene_is_a_frame_of_its_example)
     isk_effect_def d;
     isk_error err;
     cr_assert_eq(isk_scene_load(&d, "fig14_animation_strip", &err), ISK_OK, "%s", err.message);
-    long frames = d.frames;
+    long frames = d.show.frames;
     cr_assert_gt(frames, 0);
     isk_canvas c, ex;
     render_def(&d, -1, &c);

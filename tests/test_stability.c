@@ -468,7 +468,8 @@ Test(stability, bad_inputs_get_a_status_not_a_crash)
     em->life = 0;
     isk_effect *e = NULL;
     cr_assert_eq(isk_effect_create(&e, &d, &err), ISK_ERR_RANGE);
-    cr_assert(strstr(err.message, "life must be > 0"), "%s", err.message);
+    cr_assert(!strcmp(err.message, "emitter 'a': life: expected a number of seconds > 0 or forever, got \"0\""), "%s",
+              err.message);
     cr_assert_null(e);
     isk_effect_def_free(&d);
 }

@@ -1,11 +1,13 @@
 /* iskra/effect.h — a whole particle effect: named forces, deflectors, walls
  * and emitters, compiled into one list of stages per emitter, stepped and
- * drawn frame by frame.
+ * drawn frame by frame, and changeable while it runs.
  *
  * This is what a scene file becomes (iskra/scene.h parses INI into an
  * isk_effect_def) and what C programs can fill directly.  The definition is
- * plain data; isk_effect_create() validates it (clear messages naming the
- * emitter and field) and compiles it:
+ * plain data whose every field is a row of the key table (iskra/keys.h:
+ * type, range, default, meaning); isk_effect_def_init and the add functions
+ * set the table's defaults, and isk_effect_create validates every field
+ * against the same rows, with the parser's messages, then compiles:
  *
  *     isk_effect_def d;
  *     isk_effect_def_init(&d);                  // defaults: 600x600, view -10..10, dt 1/60
@@ -23,14 +25,16 @@
  *
  * Only the effects a scene calls for are simulated.  Each emitter's stage list
  * holds exactly what that emitter needs, in this order:
- *     spawn (stream/bursts/scheduled batches) -> remember positions (only
- *     with deflectors) -> forces it references + integrator (blocked) ->
- *     slowing -> oscillation -> walls -> deflectors -> ageing/culling
- * and its draw list: colour/alpha/size over life (only with gradients) ->
+ *     frame start: walls of draw_before_bounce, timed explosions;
+ *     every substep: remember positions (only with deflectors) -> forces it
+ *     references + integrator (blocked) -> slowing -> oscillation -> walls ->
+ *     deflectors -> ageing; then births (streams) -> culling
+ * and its draw routine: colour/alpha/size over life (only with gradients) ->
  * draw.  A force no emitter references, a zero-strength force, a disabled
  * potential, or a potential switched off by its maximum distance is not in
- * any list (the last is dropped when it switches off), so it costs nothing
- * and changes nothing.  isk_effect_describe() prints the lists.
+ * any list (the last leaves at the end of the frame in which it switched
+ * off), so it costs nothing and changes nothing.  isk_effect_describe()
+ * prints the lists.
  *
  * Determinism: every emitter owns an isk_rng seeded from (seed, emitter
  * index), so adding a force or an unrelated emitter after it never changes
@@ -47,15 +51,23 @@
 #include "iskra/bounds.h"
 #include "iskra/canvas.h"
 #include "iskra/deflector.h"
+#include "iskra/explode.h"
 #include "iskra/forces.h"
 #include "iskra/gradient.h"
 #include "iskra/integrate.h"
 #include "iskra/shape.h"
 #include "iskra/sprite.h"
 #include "iskra/status.h"
-#include "iskra/system.h"
 #include "iskra/vec2.h"
 #include "iskra/view.h"
+
+#ifdef __cplusplus
+extern "C" {
+#ifdef __cplusplus
+}
+#endif
+
+#endif
 
 #define ISK_NAME_MAX 32
 #define ISK_EFFECT_MAX_FORCES 64
@@ -80,10 +92,21 @@ typedef struct isk_force_def {
     double g;              /* GRAVITY: g >= 0 */
     double b;              /* DRAG: b >= 0 */
     isk_vec2 accel;        /* WIND */
-    isk_potential pot;     /* POTENTIAL (id assigned at create: 1, 2, ... in list order) */
+    isk_potential pot;     /* POTENTIAL (id assigned at create: 1, 2, ... in list order);
+                              pot.P is derived from exponent and law at create */
+    double exponent;       /* POTENTIAL: the distance exponent as written (default 2) */
+    isk_coulomb_law law;   /* POTENTIAL: how exponent reads: the code's P or the text's p */
     int draw;              /* POTENTIAL: draw as a disc of radius 0.1 with its id while on */
     int line;              /* where it was defined (scene files), 0 if unknown */
 } isk_force_def;
+
+/* ---- deflectors --------------------------------------------------------- */
+
+typedef struct isk_deflector_def {
+    char name[ISK_NAME_MAX];
+    int line;
+    isk_deflector seg;     /* the segment and how particles react (iskra/deflector.h) */
+} isk_deflector_def;
 
 /* ---- emitters ---------------------------------------------------------- */
 
@@ -149,7 +172,8 @@ typedef struct isk_emitter_def {
     double mass_range;         /* STREAM: mass = mass + U*mass_range */
     isk_explosion explosion;   /* EXPLOSION kind */
     size_t count;              /* EXPLOSION, LAYER count (required); STREAM burst size (0: none) */
-    size_t limit;              /* largest accepted count (0: the thesis's 10,000) */
+    size_t limit;              /* largest accepted explosion (also clicks into this emitter;
+                                  0: the thesis's 10,000) */
     isk_kick_target kick;      /* COULOMB kicks: all particles of this emitter, or only new */
     double start;              /* EXPLOSION / burst time, seconds */
     double rect[4];            /* LAYER xmin, xmax, ymin, ymax */
@@ -189,8 +213,8 @@ typedef struct isk_emitter_def {
     int osc_use_table;         /* 1: sine lookup table (iskra/sinlut.h), 0: libm sin */
     int osc_random_phase;      /* 1: each particle starts at a random phase (offset preset to
                                   A*sin(phase), so no jump); 0: phase 0 (the thesis, presumably) */
-    isk_integrator integrator; /* default: the effect's */
-    int substeps;              /* default: the effect's */
+    isk_integrator integrator; /* ISK_INTEGRATE_INHERIT (default): the scene's */
+    int substeps;              /* 0 (default): the scene's */
 
     /* drawing */
     isk_draw_mode draw;
@@ -235,6 +259,24 @@ typedef struct isk_drawing_def {
 
 typedef enum isk_view_def_kind { ISK_VIEWDEF_WINDOW = 0, ISK_VIEWDEF_CAMERA, ISK_VIEWDEF_COUNT } isk_view_def_kind;
 
+/* What a click does (isk_effect_click; `iskra play` calls it for a left
+ * click): an explosion at the clicked point, into one emitter's store. */
+typedef struct isk_click_def {
+    int enabled;               /* 1: clicks explode (a scene's [click] section sets it) */
+    isk_explosion explosion;   /* default coulomb */
+    size_t count;              /* default 1000 */
+    int emitter;               /* the emitter whose store receives it (-1: the first) */
+    int at_start;              /* 1: click once by itself at (x, y) (the thesis's simulator */
+    double x, y;               /*    scenes start with a click) ... */
+    long after_frames;         /* ... after this many frames (0: at create and reset) */
+} isk_click_def;
+
+/* Hints for programs that show an effect (`iskra render`, `iskra play`);
+ * the effect itself never reads them. */
+typedef struct isk_show_def {
+    long frames;               /* the frame `iskra render` shows by default (0) */
+} isk_show_def;
+
 /* Names as scene files spell them, indexed by value (one table per enum;
  * the parser, describe, error messages and `iskra keys` all read these). */
 extern const char *const isk_force_kind_names[ISK_FORCE_KIND_COUNT];     /* gravity drag wind potential */
@@ -262,23 +304,13 @@ typedef struct isk_effect_def {
     isk_fidelity fidelity;     /* THESIS: the thesis code's arithmetic everywhere (gravity as
                                   m*(-g) then dt/m, no constant-acceleration fast path) */
 
-    isk_force_def *forces;     int nforces;
-    isk_deflector *deflectors; int ndeflectors;
-    char (*deflector_names)[ISK_NAME_MAX];
+    isk_force_def *forces;         int nforces;
+    isk_deflector_def *deflectors; int ndeflectors;
     isk_bounds bounds;         /* sides == 0: no walls */
-    isk_emitter_def *emitters; int nemitters;
-    isk_drawing_def *drawings;   int ndrawings;
-
-    /* What a click does in `iskra play`: an explosion at the clicked point. */
-    int click_enabled;
-    isk_explosion click_explosion;
-    size_t click_count;
-    int click_emitter;         /* the emitter whose store receives it (-1: first) */
-    int click_auto;            /* 1: perform the click once at create, at (click_x, click_y) */
-    double click_x, click_y;   /* (the thesis's simulator scenes start with a click) */
-    long click_after;          /* the automatic click comes after this many frames (0: at
-                                  create); the thesis's scenes run one frame, then pause */
-    long frames;               /* scene files: the frame `iskra render` shows by default (0) */
+    isk_emitter_def *emitters;     int nemitters;
+    isk_drawing_def *drawings;     int ndrawings;
+    isk_click_def click;
+    isk_show_def show;
 } isk_effect_def;
 
 /* Defaults as documented on each field; no forces, emitters or drawings. */
@@ -353,5 +385,9 @@ const isk_effect_def *isk_effect_definition(const isk_effect *e);
 int isk_effect_emitter_count(const isk_effect *e);
 const isk_particles *isk_effect_particles(const isk_effect *e, int emitter);
 size_t isk_effect_dropped(const isk_effect *e, int emitter); /* spawns lost to a full pool */
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

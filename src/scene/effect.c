@@ -43,6 +43,7 @@ static void reset_potentials(isk_effect *e)
     for (int i = 0; i < d->nforces; i++)
         if (d->forces[i].kind == ISK_FORCE_POTENTIAL) {
             e->pots[e->npots] = d->forces[i].pot;
+            isk_potential_set_law(&e->pots[e->npots], d->forces[i].law, d->forces[i].exponent);
             e->pots[e->npots].id = (int)e->npots + 1;
             e->pot_force[e->npots] = i;
             e->npots++;
@@ -76,8 +77,8 @@ static isk_status build(isk_effect *e, isk_error *err)
             return isk_error_set(err, s, "emitter '%s': cannot create its particles: %s", em->name,
                                  isk_status_str(s));
     }
-    if (d->click_auto && d->click_after == 0) {
-        isk_status s = isk_effect_click(e, d->click_x, d->click_y);
+    if (d->click.at_start && d->click.after_frames == 0) {
+        isk_status s = isk_effect_click(e, d->click.x, d->click.y);
         if (s != ISK_OK)
             return isk_error_set(err, s, "click: %s", isk_status_str(s));
     }
@@ -233,8 +234,8 @@ isk_status isk_effect_step(isk_effect *e)
     /* The thesis's h stays unassigned when there are no particles: then its
      * potentials do not move. */
     e->last_frame_time = total ? frame_time : 0.0;
-    if (d->click_auto && d->click_after > 0 && e->frame == d->click_after)
-        return isk_effect_click(e, d->click_x, d->click_y);
+    if (d->click.at_start && d->click.after_frames > 0 && e->frame == d->click.after_frames)
+        return isk_effect_click(e, d->click.x, d->click.y);
     return ISK_OK;
 }
 
@@ -280,11 +281,11 @@ isk_status isk_effect_click(isk_effect *e, double x, double y)
     if (!isfinite(x) || !isfinite(y))
         return ISK_ERR_NAN;
     const isk_effect_def *d = &e->def;
-    if (!(d->click_enabled || d->click_auto) || e->ngroups == 0)
+    if (!(d->click.enabled || d->click.at_start) || e->ngroups == 0)
         return ISK_OK;
-    int gi = d->click_emitter >= 0 ? d->click_emitter : 0;
+    int gi = d->click.emitter >= 0 ? d->click.emitter : 0;
     fx_group *g = &e->groups[gi];
-    return fx_fire_explosion(e, g, d->click_explosion, x, y, d->click_count, g->def->kick);
+    return fx_fire_explosion(e, g, d->click.explosion, x, y, d->click.count, g->def->kick);
 }
 
 isk_status isk_effect_set_substeps(isk_effect *e, int substeps)

@@ -1,235 +1,307 @@
-/* Validation of an effect definition: every field of every item, with
- * messages that name the item ("emitter 'smoke' (line 12): ..."). */
+/* Validation of effect definitions (see effect_check.h): the key table's
+ * rows for every field, one function per section for what spans fields. */
+#include "effect_check.h"
+
 #include <math.h>
 #include <stdarg.h>
 #include <stdio.h>
+#include <string.h>
 
 #include "effect_internal.h"
-typedef struct checker {
-    isk_error *err;
-    isk_status status;
-} checker;
+#include "iskra/shape.h"
+#include "key_value.h"
 
-/* "emitter 'smoke' (line 12): life must be > 0" */
-static int fail(checker *ck, isk_status s, const char *what, const char *name, int line, const char *fmt, ...)
+typedef struct ctx {
+    const isk_effect_def *d;
+    isk_section_kind section;
+    int index;
+    fx_report *r;
+} ctx;
+
+static int report(ctx *c, isk_status s, const char *key, int show_key, const char *fmt, va_list ap)
 {
-    char msg[300], where[96];
-    va_list ap;
-    va_start(ap, fmt);
+    char msg[400];
     vsnprintf(msg, sizeof msg, fmt, ap);
-    va_end(ap);
-    if (line > 0)
-        snprintf(where, sizeof where, " (line %d)", line);
-    else
-        where[0] = 0;
-    if (name)
-        isk_error_set(ck->err, s, "%s '%s'%s: %s", what, name, where, msg);
-    else
-        isk_error_set(ck->err, s, "%s: %s", what, msg);
-    ck->status = s;
+    if (c->r->status == ISK_OK)
+        c->r->status = s;
+    c->r->emit(c->r, s, c->section, c->index, key, show_key, msg);
     return 0;
 }
 
-#define FIN(x) isfinite(x)
-
-static int check_ramp_c(checker *ck, const isk_emitter_def *e, const isk_color_ramp *r, const char *what)
+/* "key: message" about one key. */
+static int bad_key(ctx *c, const char *key, const char *fmt, ...)
+#if defined(__GNUC__)
+    __attribute__((format(printf, 3, 4)))
+#endif
+    ;
+static int bad_key(ctx *c, const char *key, const char *fmt, ...)
 {
-    if (r->n == 0)
+    va_list ap;
+    va_start(ap, fmt);
+    report(c, ISK_ERR_RANGE, key, 1, fmt, ap);
+    va_end(ap);
+    return 0;
+}
+
+/* "message" about the item, pointing at `key`'s line when it has one. */
+static int bad_item(ctx *c, const char *key, const char *fmt, ...)
+#if defined(__GNUC__)
+    __attribute__((format(printf, 3, 4)))
+#endif
+    ;
+static int bad_item(ctx *c, const char *key, const char *fmt, ...)
+{
+    va_list ap;
+    va_start(ap, fmt);
+    report(c, ISK_ERR_RANGE, key, 0, fmt, ap);
+    va_end(ap);
+    return 0;
+}
+
+/* ---- per section: what spans fields -------------------------------------------- */
+
+static int check_view(ctx *c)
+{
+    const isk_effect_def *d = c->d;
+    if (d->view_kind == ISK_VIEWDEF_CAMERA) {
+        isk_view v;
+        if (isk_view_camera(&v, d->width, d->height, d->zoom, d->tx, d->ty) != ISK_OK)
+            return bad_item(c, "zoom", "zoom %.15g and pan (%.15g, %.15g) give no usable camera", d->zoom, d->tx, d->ty);
         return 1;
-    isk_status s = isk_color_stops_check(r->stops, r->n);
-    if (s != ISK_OK)
-        return fail(ck, s, "emitter", e->name, e->line,
-                    "%s: 1..%d stops with t strictly increasing in [0, 1] expected", what, ISK_GRADIENT_MAX_STOPS);
+    }
+    if (!(d->xmin < d->xmax))
+        return bad_item(c, "xmax", "xmin (%.15g) must be less than xmax (%.15g)", d->xmin, d->xmax);
+    if (!(d->ymin < d->ymax))
+        return bad_item(c, "ymax", "ymin (%.15g) must be less than ymax (%.15g)", d->ymin, d->ymax);
+    if (!isfinite(d->xmax - d->xmin) || !isfinite(d->ymax - d->ymin))
+        return bad_item(c, "xmax", "the window is too large: its width or height (xmax - xmin, ymax - ymin) "
+                                   "overflows a double");
     return 1;
 }
 
-static int check_ramp_s(checker *ck, const isk_emitter_def *e, const isk_scalar_ramp *r, const char *what)
+static int check_force(ctx *c)
 {
-    if (r->n == 0)
+    const isk_force_def *f = &c->d->forces[c->index];
+    if (f->kind != ISK_FORCE_POTENTIAL)
         return 1;
-    isk_status s = isk_scalar_stops_check(r->stops, r->n);
-    if (s != ISK_OK)
-        return fail(ck, s, "emitter", e->name, e->line,
-                    "%s: 1..%d finite stops with t strictly increasing in [0, 1] expected", what,
-                    ISK_GRADIENT_MAX_STOPS);
-    for (int i = 0; i < r->n; i++)
-        if (r->stops[i].value < 0)
-            return fail(ck, ISK_ERR_RANGE, "emitter", e->name, e->line, "%s: values must be >= 0", what);
+    isk_potential p = f->pot;
+    if (isk_potential_set_law(&p, f->law, f->exponent) != ISK_OK || isk_potential_validate(&p) != ISK_OK)
+        return bad_key(c, "exponent", "gives no usable potential");
     return 1;
 }
 
-static int check_emitter(checker *ck, const isk_effect_def *d, const isk_emitter_def *e)
+static int check_deflector(ctx *c)
 {
-    const char *n = e->name;
-    int L = e->line;
-    if ((unsigned)e->source >= ISK_SOURCE_KIND_COUNT)
-        return fail(ck, ISK_ERR_RANGE, "emitter", n, L, "unknown source kind %d", (int)e->source);
-    if (!FIN(e->pos.x) || !FIN(e->pos.y) || !FIN(e->vel.x) || !FIN(e->vel.y))
-        return fail(ck, ISK_ERR_NAN, "emitter", n, L, "position and velocity must be finite");
-    if (!FIN(e->mass) || !(e->mass > 0))
-        return fail(ck, ISK_ERR_RANGE, "emitter", n, L, "mass must be a finite number > 0");
-    if (!FIN(e->mass_range) || e->mass_range < 0)
-        return fail(ck, ISK_ERR_RANGE, "emitter", n, L, "mass range must be >= 0");
-    if (!FIN(e->start) || e->start < 0)
-        return fail(ck, ISK_ERR_RANGE, "emitter", n, L, "start time must be >= 0");
-    size_t limit = e->limit ? e->limit : ISK_EXPLODE_THESIS_LIMIT;
-    if (limit > ISK_EFFECT_MAX_PARTICLES)
-        return fail(ck, ISK_ERR_RANGE, "emitter", n, L, "limit must be <= %u", ISK_EFFECT_MAX_PARTICLES);
-    if ((unsigned)e->kick > ISK_KICK_NEW)
-        return fail(ck, ISK_ERR_RANGE, "emitter", n, L, "unknown kick target");
+    const isk_deflector *g = &c->d->deflectors[c->index].seg;
+    if (g->x0 == g->x1 && g->y0 == g->y1)
+        return bad_key(c, "segment", "the two end points are the same (a segment needs a length)");
+    return 1;
+}
+
+static int check_bounds(ctx *c)
+{
+    const isk_bounds *b = &c->d->bounds;
+    if (!b->sides)
+        return 1;
+    if (!(b->xmin < b->xmax) || !(b->ymin < b->ymax))
+        return bad_key(c, "window", "needs xmin < xmax and ymin < ymax, got %.15g, %.15g, %.15g, %.15g", b->xmin,
+                       b->xmax, b->ymin, b->ymax);
+    if (!(b->xmin + b->margin < b->xmax - b->margin) || !(b->ymin + b->margin < b->ymax - b->margin))
+        return bad_item(c, "margin", "margin %.15g leaves no room between the walls", b->margin);
+    return 1;
+}
+
+static size_t limit_of(const isk_emitter_def *e)
+{
+    return e->limit ? e->limit : ISK_EXPLODE_THESIS_LIMIT;
+}
+
+static int check_stream(ctx *c, const isk_emitter_def *e)
+{
+    isk_shape s = {0};
+    s.kind = e->shape;
+    s.a = e->shape_a;
+    s.b = e->shape_b;
+    s.angle = e->shape_angle;
+    s.ellipse_mode = e->shape_faithful ? ISK_ELLIPSE_THESIS : ISK_ELLIPSE_UNIFORM;
+    if (isk_shape_check(&s) != ISK_OK)
+        return bad_key(c, "shape", "%s needs shape_a, shape_b >= 0%s", isk_shape_names[e->shape],
+                       e->shape == ISK_SHAPE_RING ? " and shape_a <= shape_b" : "");
+    if (e->speed_min > e->speed_max)
+        return bad_key(c, "speed_max", "must be >= speed_min (%.15g)", e->speed_min);
+    if (e->count > e->capacity)
+        return bad_key(c, "count", "a burst of %zu exceeds the capacity %zu", e->count, e->capacity);
+    if (e->rate == 0 && e->count == 0)
+        return bad_item(c, "rate", "a stream needs rate > 0 or a burst count > 0");
+    return 1;
+}
+
+static int check_emitter(ctx *c)
+{
+    const isk_effect_def *d = c->d;
+    const isk_emitter_def *e = &d->emitters[c->index];
     switch (e->source) {
     case ISK_SOURCE_EXPLOSION:
-        if ((unsigned)e->explosion >= ISK_EXPLOSION_COUNT)
-            return fail(ck, ISK_ERR_RANGE, "emitter", n, L, "unknown explosion kind");
-        /* fallthrough */
     case ISK_SOURCE_LAYER:
-        if (e->count < 1 || e->count > limit)
-            return fail(ck, ISK_ERR_RANGE, "emitter", n, L, "count must be 1..%zu (raise limit for more)", limit);
-        if (e->source == ISK_SOURCE_LAYER &&
-            (!FIN(e->rect[0]) || !FIN(e->rect[1]) || !FIN(e->rect[2]) || !FIN(e->rect[3]) ||
-             e->rect[0] > e->rect[1] || e->rect[2] > e->rect[3]))
-            return fail(ck, ISK_ERR_RANGE, "emitter", n, L, "layer rectangle must be finite with min <= max");
+        if (e->count < 1 || e->count > limit_of(e))
+            return bad_key(c, "count", "must be 1..%zu (raise limit for more)", limit_of(e));
+        if (e->source == ISK_SOURCE_LAYER && (e->rect[0] > e->rect[1] || e->rect[2] > e->rect[3]))
+            return bad_key(c, "rect", "needs xmin <= xmax and ymin <= ymax");
         break;
-    case ISK_SOURCE_STREAM: {
-        char why[200];
-        if (fx_stream_validate(e, why, sizeof why) != ISK_OK)
-            return fail(ck, ISK_ERR_RANGE, "emitter", n, L, "%s", why);
+    case ISK_SOURCE_STREAM:
+        if (!check_stream(c, e))
+            return 0;
         break;
-    }
     default:
         break;
     }
-    if (!(e->life > 0) || isnan(e->life) || !FIN(e->life_range) || e->life_range < 0)
-        return fail(ck, ISK_ERR_RANGE, "emitter", n, L, "life must be > 0 (or infinite) and life range >= 0");
-    if (e->capacity < 1 || e->capacity > ISK_EFFECT_MAX_PARTICLES)
-        return fail(ck, ISK_ERR_RANGE, "emitter", n, L, "capacity must be 1..%u", ISK_EFFECT_MAX_PARTICLES);
-    if (e->nforces < 0 || e->nforces > ISK_EFFECT_MAX_FORCES || e->ndeflectors < 0 ||
-        e->ndeflectors > ISK_EFFECT_MAX_DEFLECTORS)
-        return fail(ck, ISK_ERR_RANGE, "emitter", n, L, "too many references");
-    for (int i = 0; i < e->nforces; i++)
-        if (e->forces[i] < 0 || e->forces[i] >= d->nforces)
-            return fail(ck, ISK_ERR_RANGE, "emitter", n, L, "force reference %d does not exist", e->forces[i]);
-    for (int i = 0; i < e->ndeflectors; i++)
-        if (e->deflectors[i] < 0 || e->deflectors[i] >= d->ndeflectors)
-            return fail(ck, ISK_ERR_RANGE, "emitter", n, L, "deflector reference %d does not exist",
-                        e->deflectors[i]);
-    if (!FIN(e->gravity_mult) || !FIN(e->weight) || !FIN(e->slowing) || e->slowing < 0)
-        return fail(ck, ISK_ERR_RANGE, "emitter", n, L,
-                    "gravity multiplier and weight must be finite, slowing finite and >= 0");
-    if (!FIN(e->osc_omega_min) || !FIN(e->osc_omega_max) || !FIN(e->osc_amp_min) || !FIN(e->osc_amp_max) ||
-        e->osc_omega_min > e->osc_omega_max || e->osc_amp_min > e->osc_amp_max || e->osc_amp_min < 0 ||
-        !FIN(e->osc_decay) || e->osc_decay < 0)
-        return fail(ck, ISK_ERR_RANGE, "emitter", n, L,
-                    "oscillation ranges must be finite with min <= max, amplitude and decay >= 0");
-    if ((int)e->integrator != -1 && (unsigned)e->integrator >= ISK_INTEGRATOR_COUNT)
-        return fail(ck, ISK_ERR_RANGE, "emitter", n, L, "unknown integrator");
     if (e->slow_faithful && e->slowing > 0) {
         /* The thesis order is a fused constant-acceleration kernel. */
-        int ok = ((int)e->integrator == -1 ? d->integrator : e->integrator) == ISK_INTEGRATE_SEMI_EULER &&
-                 d->fidelity == ISK_FIDELITY_SOUND;
+        isk_integrator m = e->integrator == ISK_INTEGRATE_INHERIT ? d->integrator : e->integrator;
+        int ok = m == ISK_INTEGRATE_SEMI_EULER && d->fidelity == ISK_FIDELITY_SOUND;
         for (int i = 0; ok && i < e->nforces; i++) {
             const isk_force_def *f = &d->forces[e->forces[i]];
             ok = !(f->kind == ISK_FORCE_DRAG && f->b != 0) && f->kind != ISK_FORCE_POTENTIAL;
         }
         if (!ok)
-            return fail(ck, ISK_ERR_RANGE, "emitter", n, L,
-                        "the thesis slowing order needs the semi-implicit Euler integrator, sound fidelity "
-                        "and only gravity/wind forces");
+            return bad_key(c, "slow_faithful", "the thesis slowing order needs the semi-implicit Euler integrator, "
+                                               "sound fidelity and only gravity/wind forces");
     }
-    if (e->substeps < 0 || e->substeps > 10000)
-        return fail(ck, ISK_ERR_RANGE, "emitter", n, L, "substeps must be 1..10000 (0 inherits)");
-    if ((unsigned)e->draw >= ISK_DRAW_COUNT)
-        return fail(ck, ISK_ERR_RANGE, "emitter", n, L, "unknown draw mode");
-    if ((unsigned)e->sprite > ISK_SPRITE_SMOOTH)
-        return fail(ck, ISK_ERR_RANGE, "emitter", n, L, "unknown sprite kind");
-    if ((unsigned)e->blend > ISK_BLEND_ADD)
-        return fail(ck, ISK_ERR_RANGE, "emitter", n, L, "unknown blend mode");
-    if ((e->draw == ISK_DRAW_DISC || e->draw == ISK_DRAW_SPRITE) && (!FIN(e->size) || !(e->size > 0)))
-        return fail(ck, ISK_ERR_RANGE, "emitter", n, L, "size must be a finite number > 0");
-    if (!check_ramp_c(ck, e, &e->color_over_life, "colour over life") ||
-        !check_ramp_s(ck, e, &e->alpha_over_life, "alpha over life") ||
-        !check_ramp_s(ck, e, &e->size_over_life, "size over life"))
-        return 0;
     return 1;
 }
 
-static int check_def(checker *ck, const isk_effect_def *d)
+static int check_drawing(ctx *c)
 {
-    if (d->width < 1 || d->height < 1 || d->width > ISK_CANVAS_MAX_DIM || d->height > ISK_CANVAS_MAX_DIM)
-        return fail(ck, ISK_ERR_SIZE, "scene", NULL, 0, "canvas size must be 1..%d in each direction",
-                    ISK_CANVAS_MAX_DIM);
-    if (!FIN(d->dt) || !(d->dt > 0) || d->dt > 3600)
-        return fail(ck, ISK_ERR_RANGE, "scene", NULL, 0, "dt must be a number in (0, 3600] seconds");
-    if (d->substeps < 1 || d->substeps > 10000)
-        return fail(ck, ISK_ERR_RANGE, "scene", NULL, 0, "substeps must be 1..10000");
-    if (!FIN(d->speed_divisor) || !(d->speed_divisor > 0))
-        return fail(ck, ISK_ERR_RANGE, "scene", NULL, 0, "speed divisor must be > 0");
-    if ((unsigned)d->integrator >= ISK_INTEGRATOR_COUNT)
-        return fail(ck, ISK_ERR_RANGE, "scene", NULL, 0, "unknown integrator");
-    if ((unsigned)d->centre > ISK_FIDELITY_THESIS || (unsigned)d->fidelity > ISK_FIDELITY_THESIS)
-        return fail(ck, ISK_ERR_RANGE, "scene", NULL, 0, "unknown fidelity");
+    const isk_drawing_def *g = &c->d->drawings[c->index];
+    if (g->kind == ISK_DRAWING_POLYLINE && (!g->points || g->npoints < 2))
+        return bad_key(c, "points", "a polyline needs 2 or more points");
+    if (g->kind == ISK_DRAWING_POLYGON && (!g->points || g->npoints < 3))
+        return bad_key(c, "points", "a polygon needs 3 or more points");
+    return 1;
+}
+
+static int check_click(ctx *c)
+{
+    const isk_effect_def *d = c->d;
+    const isk_click_def *k = &d->click;
+    if (!k->enabled && !k->at_start)
+        return 1;
+    if (d->nemitters == 0)
+        return bad_item(c, "emitter", "the click needs an emitter to receive it");
+    const isk_emitter_def *e = &d->emitters[k->emitter >= 0 ? k->emitter : 0];
+    if (k->count > limit_of(e))
+        return bad_key(c, "count", "%zu is more than emitter '%s' accepts in one explosion (its limit is %zu: raise "
+                                   "it)",
+                       k->count, e->name, limit_of(e));
+    return 1;
+}
+
+typedef int (*section_check)(ctx *c);
+
+static const section_check section_checks[ISK_SECTION_COUNT] = {
+    [ISK_SECTION_VIEW] = check_view,       [ISK_SECTION_FORCE] = check_force,
+    [ISK_SECTION_DEFLECTOR] = check_deflector, [ISK_SECTION_BOUNDS] = check_bounds,
+    [ISK_SECTION_EMITTER] = check_emitter, [ISK_SECTION_DRAWING] = check_drawing,
+    [ISK_SECTION_CLICK] = check_click,
+};
+
+/* ---- the whole item, the whole definition ---------------------------------------- */
+
+int fx_check_item(const isk_effect_def *d, isk_section_kind s, int index, int rows, fx_report *r)
+{
+    ctx c = {d, s, index, r};
+    const void *item = fx_section_item_c(d, s, index);
+    if (!item)
+        return bad_item(&c, NULL, "no such item");
+    const int kind = fx_item_kind(d, s, index);
+    int nkinds = 0;
+    isk_section_kind_names(s, &nkinds);
+    if (nkinds && (kind < 0 || kind >= nkinds))
+        return bad_key(&c, isk_section_kind_key(s), "unknown %s %d", isk_section_kind_key(s), kind);
+    for (int i = 0; rows && i < isk_key_count(); i++) {
+        const isk_key *k = isk_key_at(i);
+        char why[300];
+        if (k->section == s && fx_key_applies(k, kind) && fx_key_check(k, item, d, why, sizeof why) != 0)
+            return bad_key(&c, k->name, "%s", why);
+    }
+    return section_checks[s] ? section_checks[s](&c) : 1;
+}
+
+static int unique_names(const isk_effect_def *d, isk_section_kind s, fx_report *r)
+{
+    int n = fx_section_items(d, s);
+    for (int i = 0; i < n; i++) {
+        const char *a = fx_item_name(d, s, i);
+        for (int j = 0; *a && j < i; j++)
+            if (!strcmp(a, fx_item_name(d, s, j))) {
+                ctx c = {d, s, i, r};
+                return bad_item(&c, NULL, "a second %s named '%s'", isk_section_name(s), a);
+            }
+    }
+    return 1;
+}
+
+static int structure_fails(const isk_effect_def *d, fx_report *r, isk_status s, const char *msg)
+{
+    (void)d;
+    if (r->status == ISK_OK)
+        r->status = s;
+    r->emit(r, s, ISK_SECTION_SCENE, 0, NULL, 0, msg);
+    return 0;
+}
+
+int fx_check_def(const isk_effect_def *d, fx_report *r)
+{
     if (d->nforces < 0 || d->nforces > ISK_EFFECT_MAX_FORCES || d->nemitters < 0 ||
         d->nemitters > ISK_EFFECT_MAX_EMITTERS || d->ndeflectors < 0 || d->ndeflectors > ISK_EFFECT_MAX_DEFLECTORS ||
-        d->ndrawings < 0 || d->ndrawings > ISK_EFFECT_MAX_DRAWINGS)
-        return fail(ck, ISK_ERR_SIZE, "scene", NULL, 0, "too many forces, emitters, deflectors or drawings");
-    for (int i = 0; i < d->nforces; i++) {
-        const isk_force_def *f = &d->forces[i];
-        if ((unsigned)f->kind >= ISK_FORCE_KIND_COUNT)
-            return fail(ck, ISK_ERR_RANGE, "force", f->name, f->line, "unknown kind");
-        if (!FIN(f->g) || f->g < 0 || !FIN(f->b) || f->b < 0)
-            return fail(ck, ISK_ERR_RANGE, "force", f->name, f->line, "g and b must be finite and >= 0");
-        if (!FIN(f->accel.x) || !FIN(f->accel.y))
-            return fail(ck, ISK_ERR_NAN, "force", f->name, f->line, "acceleration must be finite");
-        if (f->kind == ISK_FORCE_POTENTIAL && isk_potential_validate(&f->pot) != ISK_OK)
-            return fail(ck, ISK_ERR_RANGE, "force", f->name, f->line,
-                        "potential fields must be finite (enabled 0 or 1)");
+        d->ndrawings < 0 || d->ndrawings > ISK_EFFECT_MAX_DRAWINGS) {
+        char msg[160];
+        snprintf(msg, sizeof msg, "at most %d forces, %d deflectors, %d emitters and %d drawings",
+                 ISK_EFFECT_MAX_FORCES, ISK_EFFECT_MAX_DEFLECTORS, ISK_EFFECT_MAX_EMITTERS, ISK_EFFECT_MAX_DRAWINGS);
+        return structure_fails(d, r, ISK_ERR_SIZE, msg);
     }
-    for (int i = 0; i < d->ndeflectors; i++)
-        if (isk_deflector_check(&d->deflectors[i]) != ISK_OK)
-            return fail(ck, ISK_ERR_RANGE, "deflector", d->deflector_names ? d->deflector_names[i] : "?", 0,
-                        "needs finite end points that differ, restitution >= 0, probability in [0, 1]");
-    if (d->bounds.sides != 0 && isk_bounds_validate(&d->bounds) != ISK_OK)
-        return fail(ck, ISK_ERR_RANGE, "bounds", NULL, 0,
-                    "walls need a finite window with min < max, margin >= 0, restitution in [0, 1]");
-    for (int i = 0; i < d->nemitters; i++)
-        if (!check_emitter(ck, d, &d->emitters[i]))
+    if ((d->nforces && !d->forces) || (d->ndeflectors && !d->deflectors) || (d->nemitters && !d->emitters) ||
+        (d->ndrawings && !d->drawings))
+        return structure_fails(d, r, ISK_ERR_NULL, "a count is set but its array is NULL");
+    for (int s = 0; s < ISK_SECTION_COUNT; s++) {
+        if (!unique_names(d, (isk_section_kind)s, r))
             return 0;
-    for (int i = 0; i < d->ndrawings; i++) {
-        const isk_drawing_def *s = &d->drawings[i];
-        if ((unsigned)s->kind >= ISK_DRAWING_KIND_COUNT || (unsigned)s->blend > ISK_BLEND_ADD)
-            return fail(ck, ISK_ERR_RANGE, "drawing", s->name, s->line, "unknown kind or blend");
-        if (s->kind == ISK_DRAWING_POLYLINE && (!s->points || s->npoints < 2 || s->npoints > 100000))
-            return fail(ck, ISK_ERR_RANGE, "drawing", s->name, s->line, "a polyline needs 2..100000 points");
-        if (s->kind == ISK_DRAWING_POLYGON && (!s->points || s->npoints < 3 || s->npoints > 100000))
-            return fail(ck, ISK_ERR_RANGE, "drawing", s->name, s->line, "a polygon needs 3..100000 points");
-        if ((s->kind == ISK_DRAWING_POLYLINE || s->kind == ISK_DRAWING_POLYGON))
-            for (int k = 0; k < 2 * s->npoints; k++)
-                if (!FIN(s->points[k]))
-                    return fail(ck, ISK_ERR_NAN, "drawing", s->name, s->line, "points must be finite");
-        if (!FIN(s->x) || !FIN(s->y) || !FIN(s->r))
-            return fail(ck, ISK_ERR_NAN, "drawing", s->name, s->line, "position and radius must be finite");
-        if (s->kind == ISK_DRAWING_SPRITE &&
-            ((unsigned)s->sprite > ISK_SPRITE_SMOOTH || !FIN(s->size) || !(s->size > 0)))
-            return fail(ck, ISK_ERR_RANGE, "drawing", s->name, s->line, "a sprite needs a kind and a size > 0");
-        if (s->kind == ISK_DRAWING_TEXT && (s->scale < 1 || s->scale > 64))
-            return fail(ck, ISK_ERR_RANGE, "drawing", s->name, s->line, "text scale must be 1..64");
-    }
-    if (d->click_enabled || d->click_auto) {
-        if ((unsigned)d->click_explosion >= ISK_EXPLOSION_COUNT)
-            return fail(ck, ISK_ERR_RANGE, "click", NULL, 0, "unknown explosion kind");
-        if (d->click_emitter >= d->nemitters || d->nemitters == 0)
-            return fail(ck, ISK_ERR_RANGE, "click", NULL, 0, "the click needs an emitter to receive it");
-        if (!FIN(d->click_x) || !FIN(d->click_y))
-            return fail(ck, ISK_ERR_NAN, "click", NULL, 0, "click point must be finite");
-        if (d->click_after < 0)
-            return fail(ck, ISK_ERR_RANGE, "click", NULL, 0, "after_frames must be >= 0");
+        for (int i = 0; i < fx_section_items(d, (isk_section_kind)s); i++)
+            if (!fx_check_item(d, (isk_section_kind)s, i, 1, r))
+                return 0;
     }
     return 1;
 }
 
+/* ---- isk_effect_create's reporter ---------------------------------------------- */
+
+typedef struct create_report {
+    fx_report r; /* first: the emit callback gets this struct back */
+    const isk_effect_def *d;
+    isk_error *err;
+} create_report;
+
+/* "emitter 'smoke' (line 12): rate: expected ..." */
+static void create_emit(fx_report *r, isk_status s, isk_section_kind section, int index, const char *key,
+                        int show_key, const char *msg)
+{
+    const create_report *cr = (const create_report *)r;
+    const isk_effect_def *d = cr->d;
+    char where[32] = "";
+    int line = fx_item_line(d, section, index);
+    if (line > 0)
+        snprintf(where, sizeof where, " (line %d)", line);
+    const char *sec = isk_section_name(section);
+    if (isk_section_named(section))
+        isk_error_set(cr->err, s, "%s '%s'%s: %s%s%s", sec, fx_item_name(d, section, index), where,
+                      key && show_key ? key : "", key && show_key ? ": " : "", msg);
+    else
+        isk_error_set(cr->err, s, "%s%s: %s%s%s", sec, where, key && show_key ? key : "",
+                      key && show_key ? ": " : "", msg);
+}
 
 isk_status fx_check(const isk_effect_def *d, isk_error *err)
 {
-    checker ck = {err, ISK_OK};
-    return check_def(&ck, d) ? ISK_OK : ck.status;
+    create_report cr = {{create_emit, NULL, ISK_OK}, d, err};
+    return fx_check_def(d, &cr.r) ? ISK_OK : cr.r.status;
 }

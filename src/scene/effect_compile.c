@@ -66,7 +66,7 @@ isk_status fx_compile(isk_effect *e, fx_group *g)
     g->ndefl = em->ndeflectors;
     int can_kill = 0;
     for (int k = 0; k < g->ndefl; k++) {
-        g->defl[k] = d->deflectors[em->deflectors[k]];
+        g->defl[k] = d->deflectors[em->deflectors[k]].seg;
         can_kill |= g->defl[k].reaction == ISK_DEFLECT_KILL;
     }
     const int walls = em->bounded && d->bounds.sides != 0;

@@ -108,6 +108,8 @@ isk_status fx_check(const isk_effect_def *d, isk_error *err);
 
 /* effect_def.c */
 isk_status fx_def_copy(isk_effect_def *dst, const isk_effect_def *src);
+/* pot.P from the force's exponent and law. */
+void fx_force_sync(isk_force_def *f);
 
 /* effect_compile.c: (re)builds the group's lists from the definition and the
  * effect's live potentials; ISK_ERR_FULL if a list overflowed (a bug). */

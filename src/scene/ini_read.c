@@ -9,14 +9,16 @@
 #include <string.h>
 
 typedef struct reader {
-    const char *text; /* remaining input */
+    const char *text;   /* remaining input */
     const char *name;
-    int line;         /* number of the line last handed to libinih */
-    int too_long;     /* line number of an over-long line, 0 if none */
+    int line;           /* number of the line last handed to libinih */
+    isk_ini_section_fn section;
     isk_ini_key_fn fn;
     void *user;
     isk_error *err;
-    int failed;       /* the callback reported an error */
+    int stop_line;      /* the reader refused this line (too long, bad syntax) */
+    const char *stop_msg;
+    int failed;         /* a callback reported an error */
 } reader;
 
 int isk_ini_error(isk_error *err, const char *name, int line, const char *fmt, ...)
@@ -32,23 +34,99 @@ int isk_ini_error(isk_error *err, const char *name, int line, const char *fmt, .
     return 1;
 }
 
-/* libinih's ini_reader: like fgets, one line per call. */
+static int blank(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\v' || c == '\f'; }
+
+/* libinih's inline-comment rule: ';' at the start or after a blank. */
+static const char *find_chars_or_comment(const char *s, const char *end, const char *chars)
+{
+    int was_space = 0;
+    for (; s < end; s++) {
+        if (strchr(chars, *s) || (was_space && *s == ';'))
+            return s;
+        was_space = blank(*s);
+    }
+    return end;
+}
+
+/* What libinih would refuse on this (stripped) line, or NULL; a header is
+ * reported to the section callback here. */
+static const char *classify(reader *r, char *s, size_t len)
+{
+    char *e = s + len;
+    while (e > s && blank(e[-1]))
+        e--;
+    if (e == s || *s == ';' || *s == '#')
+        return NULL;
+    if (*s == '[') {
+        const char *close = find_chars_or_comment(s + 1, e, "]");
+        if (close == e || *close != ']')
+            return "section header without ']'";
+        const char *after = close + 1;
+        while (after < e && blank(*after))
+            after++;
+        if (after < e && *after != ';' && *after != '#')
+            return "unexpected text after ']' (a comment starts with ';')";
+        if (r->section) {
+            char header[ISK_INI_MAX_LINE + 1];
+            size_t n = (size_t)(close - s - 1);
+            memcpy(header, s + 1, n);
+            header[n] = 0;
+            if (r->section(r->user, header, r->line, r->err)) {
+                r->failed = 1;
+                return NULL;
+            }
+        }
+        return NULL;
+    }
+    const char *eq = find_chars_or_comment(s, e, "=:");
+    if (eq == e || (*eq != '=' && *eq != ':'))
+        return "cannot parse this line: expected [section], key = value, or a ; comment";
+    const char *ke = eq;
+    while (ke > s && blank(ke[-1]))
+        ke--;
+    if (ke == s)
+        return "missing key name before '='";
+    return NULL;
+}
+
+/* libinih's ini_reader: like fgets, one line per call, leading blanks
+ * removed; NULL (the end, for libinih) at a line it must not see. */
 static char *read_line(char *buf, int size, void *stream)
 {
     reader *r = stream;
-    if (r->too_long || r->failed || !*r->text)
+    if (r->stop_line || r->failed || !*r->text)
         return NULL;
     const char *nl = strchr(r->text, '\n');
     size_t len = nl ? (size_t)(nl - r->text) : strlen(r->text);
     r->line++;
     if (len > (size_t)size - 2 || len > ISK_INI_MAX_LINE) {
-        r->too_long = r->line;
+        r->stop_line = r->line;
+        r->stop_msg = "line too long";
         return NULL;
     }
-    memcpy(buf, r->text, len);
+    const char *s = r->text;
+    r->text += len + (nl ? 1 : 0);
+    if (r->line == 1 && len >= 3 && (unsigned char)s[0] == 0xEF && (unsigned char)s[1] == 0xBB &&
+        (unsigned char)s[2] == 0xBF) {
+        s += 3;
+        len -= 3;
+    }
+    while (len && blank(*s)) {
+        s++;
+        len--;
+    }
+    memcpy(buf, s, len);
+    buf[len] = 0;
+    const char *bad = classify(r, buf, len);
+    if (r->failed)
+        return NULL;
+    if (bad) {
+        r->stop_line = r->line;
+        r->stop_msg = bad;
+        return NULL;
+    }
     buf[len] = '\n';
     buf[len + 1] = 0;
-    r->text += len + (nl ? 1 : 0);
     return buf;
 }
 
@@ -64,24 +142,26 @@ static int on_pair(void *user, const char *section, const char *key, const char 
     return 1;
 }
 
-isk_status isk_ini_parse_string(const char *text, const char *name, isk_ini_key_fn fn, void *user,
-                                isk_error *err)
+isk_status isk_ini_parse(const char *text, const char *name, isk_ini_section_fn section, isk_ini_key_fn fn,
+                         void *user, isk_error *err)
 {
     if (!text || !fn)
         return isk_error_set(err, ISK_ERR_NULL, "scene: NULL text or callback");
     if (!name)
         name = "<string>";
-    reader r = {text, name, 0, 0, fn, user, err, 0};
+    reader r = {text, name, 0, section, fn, user, err, 0, NULL, 0};
     int rc = ini_parse_stream(read_line, &r, on_pair, &r);
     if (r.failed)
         return err ? err->status : ISK_ERR_FORMAT;
-    if (r.too_long) {
-        isk_ini_error(err, name, r.too_long, "line too long (at most %d characters)", ISK_INI_MAX_LINE);
+    if (r.stop_line) {
+        if (!strcmp(r.stop_msg, "line too long"))
+            isk_ini_error(err, name, r.stop_line, "line too long (at most %d characters)", ISK_INI_MAX_LINE);
+        else
+            isk_ini_error(err, name, r.stop_line, "%s", r.stop_msg);
         return ISK_ERR_FORMAT;
     }
-    if (rc > 0) {
-        isk_ini_error(err, name, rc,
-                      "cannot parse this line: expected [section], key = value, or a ; comment");
+    if (rc > 0) { /* cannot happen with the checks above, but libinih may know more */
+        isk_ini_error(err, name, rc, "cannot parse this line: expected [section], key = value, or a ; comment");
         return ISK_ERR_FORMAT;
     }
     if (rc < 0) {
@@ -89,6 +169,12 @@ isk_status isk_ini_parse_string(const char *text, const char *name, isk_ini_key_
         return ISK_ERR_NOMEM;
     }
     return ISK_OK;
+}
+
+isk_status isk_ini_parse_string(const char *text, const char *name, isk_ini_key_fn fn, void *user,
+                                isk_error *err)
+{
+    return isk_ini_parse(text, name, NULL, fn, user, err);
 }
 
 isk_status isk_ini_read_file(const char *path, char **text, isk_error *err)

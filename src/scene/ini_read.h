@@ -1,10 +1,23 @@
 /* src/scene/ini_read.h — INI reading with line numbers (internal).
  *
- * libinih does the parsing; Debian builds it without INI_HANDLER_LINENO, so
- * we feed it through our own line reader that counts lines and refuses lines
- * longer than libinih's buffer (which it would otherwise split silently into
- * two bogus lines).  Every callback gets the line its key was on; the first
- * error stops the parse and is reported as "FILE:LINE: message".
+ * libinih splits each line into key and value (trimming, inline comments).
+ * It is fed through our own line reader, because Debian's build of it
+ * cannot do the rest of what scene files need:
+ *   - no line numbers (built without INI_HANDLER_LINENO): the reader counts;
+ *   - no call for a new section (INI_CALL_HANDLER_ON_NEW_SECTION is off), so
+ *     sections without keys would be invisible, and names are cut at 50
+ *     characters: the reader reports every header itself, whole, in order;
+ *   - it goes on after a syntax error (INI_STOP_ON_FIRST_ERROR is off) and
+ *     only says where the first one was at the very end, after calling back
+ *     for later lines: the reader recognises a line libinih would refuse
+ *     (a header without ']', text after ']', no '=' or ':', no key) and stops
+ *     there, so errors always come in file order;
+ *   - an indented line continues the previous value (INI_ALLOW_MULTILINE is
+ *     on): the reader strips leading blanks, so indented keys are just keys;
+ *   - a line longer than its buffer is silently split in two: the reader
+ *     refuses it.
+ * Every callback gets its line; the first error stops the parse and is
+ * reported as "FILE:LINE: message".
  *
  *     static int on_key(void *u, const char *sec, const char *key,
  *                       const char *val, int line, isk_error *err) { ... }
@@ -28,9 +41,16 @@
 typedef int (*isk_ini_key_fn)(void *user, const char *section, const char *key, const char *value,
                               int line, isk_error *err);
 
+/* Called for every section header, with the text between '[' and ']'
+ * (untrimmed), before any key of the section. */
+typedef int (*isk_ini_section_fn)(void *user, const char *header, int line, isk_error *err);
+
 /* `text` is NUL-terminated; `name` is used in messages (a path or "<string>"). */
 isk_status isk_ini_parse_string(const char *text, const char *name, isk_ini_key_fn fn, void *user,
                                 isk_error *err);
+/* The same with a callback for section headers too (`section` may be NULL). */
+isk_status isk_ini_parse(const char *text, const char *name, isk_ini_section_fn section, isk_ini_key_fn fn,
+                         void *user, isk_error *err);
 /* Reads a whole text file (at most ISK_INI_MAX_BYTES, no NUL bytes) into a
  * malloc'd NUL-terminated string for the caller to free. */
 isk_status isk_ini_read_file(const char *path, char **text, isk_error *err);

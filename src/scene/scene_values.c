@@ -1,5 +1,6 @@
 /* Value syntax of scene files (see scene_values.h). */
 #include "scene_values.h"
+#include "scene/ini_read.h"
 
 #include <ctype.h>
 #include <errno.h>
@@ -102,15 +103,19 @@ int scv_u64(const char *s, uint64_t *out)
     return 1;
 }
 
+/* Equal but for the case of ASCII letters. */
+static int same_word(const char *a, const char *b)
+{
+    while (*a && *b && tolower((unsigned char)*a) == tolower((unsigned char)*b))
+        a++, b++;
+    return !*a && !*b;
+}
+
 int scv_lookup(const char *s, const char *const *names, int n)
 {
-    for (int i = 0; i < n; i++) {
-        const char *a = s, *b = names[i];
-        while (*a && *b && tolower((unsigned char)*a) == tolower((unsigned char)*b))
-            a++, b++;
-        if (!*a && !*b)
+    for (int i = 0; i < n; i++)
+        if (same_word(s, names[i]))
             return i;
-    }
     return -1;
 }
 
@@ -142,13 +147,12 @@ static const struct {
 };
 #define NCOLORS ((int)(sizeof colors / sizeof colors[0]))
 
-const char *const scv_color_names[] = {
-    "black", "white", "red",     "green",   "lime",    "blue",   "yellow",   "orange",
-    "cyan",  "aqua",  "magenta", "fuchsia", "gray",    "grey",   "silver",   "maroon",
-    "navy",  "olive", "purple",  "teal",    "brown",   "pink",   "gold",     "orangered",
-    "darkred", "skyblue", "darkgray", "lightgray", "transparent",
-};
 const int scv_color_count = NCOLORS;
+
+const char *scv_color_name_at(int i)
+{
+    return i >= 0 && i < NCOLORS ? colors[i].name : NULL;
+}
 
 static int hexval(char c)
 {
@@ -178,11 +182,12 @@ int scv_color(const char *s, isk_color *out)
         *out = isk_rgba(ch[0], ch[1], ch[2], ch[3]);
         return 1;
     }
-    int i = scv_lookup(s, scv_color_names, NCOLORS);
-    if (i < 0)
-        return 0;
-    *out = isk_rgba(colors[i].r, colors[i].g, colors[i].b, colors[i].a);
-    return 1;
+    for (int i = 0; i < NCOLORS; i++)
+        if (same_word(s, colors[i].name)) {
+            *out = isk_rgba(colors[i].r, colors[i].g, colors[i].b, colors[i].a);
+            return 1;
+        }
+    return 0;
 }
 
 static char *trim(char *s)
@@ -217,4 +222,31 @@ int scv_split(const char *s, char *buf, size_t bufsize, char sep, char **items, 
             return 1;
         p = c + 1;
     }
+}
+
+const char *scv_suggest(const char *word, const char *const *names, int count)
+{
+    const char *s = isk_ini_suggest(word, names, (size_t)count);
+    if (s)
+        return s;
+    size_t n = strlen(word);
+    for (int i = 0; i < count; i++) {
+        if (strlen(names[i]) != n)
+            continue;
+        size_t a = 0;
+        while (a < n && word[a] == names[i][a])
+            a++;
+        if (a + 1 < n && word[a] == names[i][a + 1] && word[a + 1] == names[i][a] &&
+            !strcmp(word + a + 2, names[i] + a + 2))
+            return names[i];
+    }
+    return NULL;
+}
+
+const char *scv_color_name(isk_color c)
+{
+    for (int i = 0; i < NCOLORS; i++)
+        if (colors[i].r == c.r && colors[i].g == c.g && colors[i].b == c.b && colors[i].a == c.a)
+            return colors[i].name;
+    return NULL;
 }

@@ -35,9 +35,15 @@ int scv_color(const char *s, isk_color *out);
 int scv_split(const char *s, char *buf, size_t bufsize, char sep, char **items, int max, int *n);
 /* Case-insensitive lookup of s in names[0..n-1]: the index, or -1. */
 int scv_lookup(const char *s, const char *const *names, int n);
+/* The likely intended one of names[0..n-1] for a misspelt `word` (edit
+ * distance, or one swap of adjacent letters: "widht" -> "width"), or NULL. */
+const char *scv_suggest(const char *word, const char *const *names, int n);
+/* The CSS name of a colour if it has one ("yellow"), else NULL. */
+const char *scv_color_name(isk_color c);
 
-/* CSS colour names we accept, for messages and did-you-mean. */
-extern const char *const scv_color_names[];
+/* The CSS colour names we accept (scv_color_count of them, for messages and
+ * did-you-mean): the i-th, or NULL. */
+const char *scv_color_name_at(int i);
 extern const int scv_color_count;
 
 #endif

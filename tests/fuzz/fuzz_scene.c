@@ -22,7 +22,7 @@ static int small_enough(const isk_effect_def *d)
 {
     if ((long)d->width * d->height > MAX_PIXELS || d->substeps > MAX_SUBSTEPS)
         return 0;
-    size_t total = d->click_enabled || d->click_auto ? d->click_count : 0;
+    size_t total = d->click.enabled || d->click.at_start ? d->click.count : 0;
     for (int i = 0; i < d->nemitters; i++) {
         const isk_emitter_def *e = &d->emitters[i];
         if (e->substeps > MAX_SUBSTEPS || e->capacity > MAX_PARTICLES || e->limit > MAX_PARTICLES)

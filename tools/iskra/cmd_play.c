@@ -155,7 +155,7 @@ static int frame(void *user, isk_canvas *canvas, double dt_seconds, const isk_ev
             default: break;
             }
         } else if (ev[i].type == ISK_EVENT_MOUSE_DOWN && ev[i].button == 1) {
-            if (!p->def->click_enabled) {
+            if (!p->def->click.enabled) {
                 if (!p->said_no_click)
                     fprintf(stderr, "iskra play: this scene has no [click] action\n");
                 p->said_no_click = 1;

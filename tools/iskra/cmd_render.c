@@ -114,7 +114,7 @@ int cmd_render(int argc, char **argv)
     if (rc)
         return rc;
     if (frames < 0)
-        frames = def.frames;
+        frames = def.show.frames;
     isk_canvas canvas;
     if (isk_canvas_init(&canvas, def.width, def.height) != ISK_OK) {
         fprintf(stderr, "iskra render: cannot allocate a %dx%d canvas\n", def.width, def.height);

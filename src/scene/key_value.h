@@ -1,0 +1,57 @@
+/* src/scene/key_value.h — a key's value as text and as a field (internal).
+ *
+ * Three operations per row of the key table (iskra/keys.h), driven by its
+ * type: parse text into the field, check the field's value (what
+ * isk_effect_create does for C definitions), and format the field back into
+ * text that parses to the same value (isk_effect_get, saving a scene).  The
+ * parser and the validation share the range and the message: a failure
+ * fills `why` with "expected a number between 0 and 10000000, got "1e8""
+ * (the key and where it is are the caller's to add).
+ *
+ * The items: [scene] and [view] keys live in the isk_effect_def itself,
+ * [bounds] in its isk_bounds, [click] in its isk_click_def, the others in
+ * the arrays of forces, deflectors, emitters and drawings.
+ */
+#ifndef ISKRA_SCENE_KEY_VALUE_H
+#define ISKRA_SCENE_KEY_VALUE_H
+
+#include <stddef.h>
+
+#include "iskra/effect.h"
+#include "iskra/keys.h"
+
+/* How many items of a section the definition holds (1 for the unnamed
+ * sections), the i-th item, its name ("" for unnamed sections) and the line
+ * it was defined at (0 if unknown or unnamed). */
+int fx_section_items(const isk_effect_def *d, isk_section_kind s);
+void *fx_section_item(isk_effect_def *d, isk_section_kind s, int i);
+const void *fx_section_item_c(const isk_effect_def *d, isk_section_kind s, int i);
+const char *fx_item_name(const isk_effect_def *d, isk_section_kind s, int i);
+int fx_item_line(const isk_effect_def *d, isk_section_kind s, int i);
+/* The item's kind (its force kind, source, ...); -1 for sections without. */
+int fx_item_kind(const isk_effect_def *d, isk_section_kind s, int i);
+/* Whether a key applies to an item of that kind (-1: every key applies). */
+int fx_key_applies(const isk_key *k, int kind);
+/* "only for source = stream (this emitter has source = particle)" */
+void fx_key_kind_message(const isk_key *k, int kind, char *buf, size_t n);
+
+/* Text -> field.  `d` resolves names (REFS, REF); may be NULL otherwise.
+ * Returns 0, or -1 with the reason in `why`. */
+int fx_key_parse(const isk_key *k, void *item, const char *text, const isk_effect_def *d, char *why, size_t n);
+/* The field's value checked against the row: 0, or -1 with the reason. */
+int fx_key_check(const isk_key *k, const void *item, const isk_effect_def *d, char *why, size_t n);
+/* Field -> text (parses back to the same value); 0, or -1 if `buf` is too small. */
+int fx_key_format(const isk_key *k, const void *item, const isk_effect_def *d, char *buf, size_t n);
+/* "a number between 0 and 10000000", "ring, uniform, gauss, coulomb or multi-coulomb" */
+void fx_key_expect(const isk_key *k, char *buf, size_t n);
+/* The range alone ("0..1e+07", "> 0", "") and the accepted names, for tables. */
+void fx_key_range_text(const isk_key *k, char *buf, size_t n);
+
+/* Sets the row's default (its `dflt` text) into the item; rows without a
+ * default are left alone.  Returns 0 (a bad default is a bug the test of
+ * the table catches). */
+int fx_key_set_default(const isk_key *k, void *item);
+/* Every default of a section into one item. */
+void fx_section_defaults(isk_section_kind s, void *item);
+
+#endif

@@ -1,0 +1,441 @@
+/* The key table (iskra/keys.h): one row per key of a scene file.
+ *
+ * Every fact about a key is here and nowhere else: the parser, the
+ * validation of C definitions, the defaults, live changes, `iskra keys` and
+ * the key tables of docs/scene-format.md read these rows.  Rows are grouped
+ * by section, in the order the documentation lists them. */
+#include "iskra/keys.h"
+
+#include <math.h>
+#include <stddef.h>
+#include <string.h>
+
+#include "iskra/effect.h"
+
+#define N(a) ((int)(sizeof(a) / sizeof((a)[0])))
+#define BIT(k) (1u << (k))
+#define ALL ISK_KEY_ALL_KINDS
+#define NAMES(a) .names = (a), .nnames = N(a)
+
+/* ranges */
+#define GE(a) .lo_bound = ISK_BOUND_INCL, .min = (a)
+#define GT(a) .lo_bound = ISK_BOUND_EXCL, .min = (a)
+#define IN(a, b) .lo_bound = ISK_BOUND_INCL, .min = (a), .hi_bound = ISK_BOUND_INCL, .max = (b)
+#define GT_LE(a, b) .lo_bound = ISK_BOUND_EXCL, .min = (a), .hi_bound = ISK_BOUND_INCL, .max = (b)
+
+static const isk_key_word forever_words[] = {{"forever", INFINITY}, {"inf", INFINITY}, {"infinite", INFINITY},
+                                             {"immortal", INFINITY}, {NULL, 0}};
+static const isk_key_word off_words[] = {{"off", ISK_DIST_OFF}, {"none", ISK_DIST_OFF}, {NULL, 0}};
+static const isk_key_word scene_words[] = {{"scene", 0}, {NULL, 0}};
+static const isk_key_word inherit_words[] = {{"scene", ISK_INTEGRATE_INHERIT}, {NULL, 0}};
+
+/* ---- [scene] and [view]: fields of isk_effect_def ------------------------- */
+
+#define SCENE(key) .section = ISK_SECTION_SCENE, .name = key
+#define VIEW(key) .section = ISK_SECTION_VIEW, .name = key
+#define DEF(f) .offset = offsetof(isk_effect_def, f)
+#define WIN BIT(ISK_VIEWDEF_WINDOW)
+#define CAM BIT(ISK_VIEWDEF_CAMERA)
+
+/* ---- [force NAME]: isk_force_def ------------------------------------------ */
+
+#define FORCE(key) .section = ISK_SECTION_FORCE, .name = key
+#define FRC(f) .offset = offsetof(isk_force_def, f)
+#define GRAV BIT(ISK_FORCE_GRAVITY)
+#define DRAG BIT(ISK_FORCE_DRAG)
+#define WIND BIT(ISK_FORCE_WIND)
+#define POT BIT(ISK_FORCE_POTENTIAL)
+
+/* ---- [deflector NAME]: isk_deflector_def ---------------------------------- */
+
+#define DEFL(key) .section = ISK_SECTION_DEFLECTOR, .name = key
+#define SEG(f) .offset = offsetof(isk_deflector_def, seg.f)
+
+/* ---- [bounds]: isk_bounds -------------------------------------------------- */
+
+#define BOUNDS(key) .section = ISK_SECTION_BOUNDS, .name = key
+#define BND(f) .offset = offsetof(isk_bounds, f)
+
+/* ---- [emitter NAME]: isk_emitter_def --------------------------------------- */
+
+#define EMITTER(key) .section = ISK_SECTION_EMITTER, .name = key
+#define EM(f) .offset = offsetof(isk_emitter_def, f)
+#define S_P BIT(ISK_SOURCE_PARTICLE)
+#define S_E BIT(ISK_SOURCE_EXPLOSION)
+#define S_L BIT(ISK_SOURCE_LAYER)
+#define S_S BIT(ISK_SOURCE_STREAM)
+
+/* ---- [drawing NAME]: isk_drawing_def --------------------------------------- */
+
+#define DRAWING(key) .section = ISK_SECTION_DRAWING, .name = key
+#define DRW(f) .offset = offsetof(isk_drawing_def, f)
+#define D_LINE BIT(ISK_DRAWING_POLYLINE)
+#define D_DISC BIT(ISK_DRAWING_DISC)
+#define D_TEXT BIT(ISK_DRAWING_TEXT)
+#define D_POLY BIT(ISK_DRAWING_POLYGON)
+#define D_SPR BIT(ISK_DRAWING_SPRITE)
+
+/* ---- [click]: isk_click_def ------------------------------------------------ */
+
+#define CLICK(key) .section = ISK_SECTION_CLICK, .name = key
+#define CLK(f) .offset = offsetof(isk_click_def, f)
+
+#define MAXP ((double)ISK_EFFECT_MAX_PARTICLES)
+
+static const isk_key keys[] = {
+    /* [scene] */
+    {SCENE("width"), .type = ISK_KEY_WHOLE, DEF(width), IN(1, ISK_CANVAS_MAX_DIM), .dflt = "600", .create_only = 1,
+     .meaning = "canvas width in pixels"},
+    {SCENE("height"), .type = ISK_KEY_WHOLE, DEF(height), IN(1, ISK_CANVAS_MAX_DIM), .dflt = "600",
+     .create_only = 1, .meaning = "canvas height in pixels"},
+    {SCENE("background"), .type = ISK_KEY_COLOR, DEF(background), .dflt = "black", .live = ALL,
+     .meaning = "fill colour"},
+    {SCENE("clear"), .type = ISK_KEY_BOOL, DEF(clear), .dflt = "true", .live = ALL,
+     .meaning = "clear every frame; false = trails (every step draws over the last, as the thesis's static "
+                "trajectory figures)"},
+    {SCENE("dt"), .type = ISK_KEY_NUMBER, DEF(dt), GT_LE(0, 1000), .dflt = "1/60", .live = ALL,
+     .meaning = "simulated seconds per frame"},
+    {SCENE("substeps"), .type = ISK_KEY_WHOLE, DEF(substeps), IN(1, 1000), .dflt = "1", .live = ALL,
+     .meaning = "steps of dt/substeps per frame (the thesis's precision)"},
+    {SCENE("integrator"), .type = ISK_KEY_ENUM, DEF(integrator), NAMES(isk_integrator_names), .dflt = "semi-euler",
+     .live = ALL, .meaning = "time integrator (include/iskra/integrate.h)"},
+    {SCENE("seed"), .type = ISK_KEY_SEED, DEF(seed), .dflt = "1",
+     .meaning = "random seed; each emitter draws from its own stream seeded from (seed, emitter index)"},
+    {SCENE("speed_divisor"), .type = ISK_KEY_NUMBER, DEF(speed_divisor), GT_LE(0, 1e6), .dflt = "1", .live = ALL,
+     .meaning = "the thesis simulator's speed slider f: each frame simulates dt/f seconds, so the whole "
+                "simulation (particles and moving potentials) runs f times slower"},
+    {SCENE("centre"), .type = ISK_KEY_ENUM, DEF(centre), NAMES(isk_fidelity_names), .dflt = "sound", .live = ALL,
+     .meaning = "exactly on a potential without a min distance: thesis = the thesis code's NaN, sound = zero "
+                "force"},
+    {SCENE("frames"), .type = ISK_KEY_LONG, DEF(show.frames), IN(0, 1e8), .dflt = "0", .live = ALL,
+     .meaning = "the frame `iskra render` shows when --frames is not given (the effect ignores it)"},
+    {SCENE("fidelity"), .type = ISK_KEY_ENUM, DEF(fidelity), NAMES(isk_fidelity_names), .dflt = "sound",
+     .live = ALL,
+     .meaning = "thesis: the thesis code's arithmetic everywhere (gravity as m*(-g) then dt/m, no "
+                "constant-acceleration fast path), for bit-exact thesis scenes with random masses"},
+
+    /* [view] */
+    {VIEW("xmin"), .type = ISK_KEY_NUMBER, DEF(xmin), .applies = WIN, .dflt = "-10", .live = ALL,
+     .meaning = "left edge of the world window shown on the canvas"},
+    {VIEW("xmax"), .type = ISK_KEY_NUMBER, DEF(xmax), .applies = WIN, .dflt = "10", .live = ALL,
+     .meaning = "right edge (> xmin)"},
+    {VIEW("ymin"), .type = ISK_KEY_NUMBER, DEF(ymin), .applies = WIN, .dflt = "-10", .live = ALL,
+     .meaning = "bottom edge"},
+    {VIEW("ymax"), .type = ISK_KEY_NUMBER, DEF(ymax), .applies = WIN, .dflt = "10", .live = ALL,
+     .meaning = "top edge (> ymin)"},
+    {VIEW("zoom"), .type = ISK_KEY_NUMBER, DEF(zoom), .applies = CAM, GT(0), .dflt = "10", .live = ALL,
+     .meaning = "camera: smaller is closer; (w+h)/(2*zoom) pixels per unit"},
+    {VIEW("pan"), .type = ISK_KEY_VECTOR, DEF(tx), .applies = CAM, .dflt = "0, 0", .live = ALL,
+     .meaning = "camera translation (tx, ty)"},
+
+    /* [force NAME] */
+    {FORCE("kind"), .type = ISK_KEY_ENUM, FRC(kind), NAMES(isk_force_kind_names), .dflt = "gravity",
+     .dflt_doc = "the section's NAME when it is a kind ([force drag])", .create_only = 1,
+     .meaning = "what the force is"},
+    {FORCE("g"), .type = ISK_KEY_NUMBER, FRC(g), .applies = GRAV, GE(0), .dflt = "0", .live = ALL,
+     .meaning = "F = (0, -m*g*gravity_multiplier)"},
+    {FORCE("b"), .type = ISK_KEY_NUMBER, FRC(b), .applies = DRAG, GE(0), .dflt = "0", .live = ALL,
+     .meaning = "F = -b*v"},
+    {FORCE("acceleration"), .type = ISK_KEY_VECTOR, FRC(accel), .applies = WIND, .dflt = "0, 0", .live = ALL,
+     .meaning = "a constant acceleration, F = m*a"},
+    {FORCE("k"), .type = ISK_KEY_NUMBER, FRC(pot.k), .applies = POT, .required = POT, .dflt = "0", .live = ALL,
+     .meaning = "the potential's strength"},
+    {FORCE("charge"), .type = ISK_KEY_NUMBER, FRC(pot.charge), .applies = POT, .dflt = "1", .live = ALL,
+     .meaning = "Q; k*Q > 0 attracts"},
+    {FORCE("position"), .type = ISK_KEY_VECTOR, FRC(pot.r), .applies = POT, .required = POT, .dflt = "0, 0",
+     .live = ALL, .meaning = "x, y of the potential"},
+    {FORCE("exponent"), .type = ISK_KEY_NUMBER, FRC(exponent), .applies = POT, IN(-1000, 1000), .dflt = "2",
+     .live = ALL, .meaning = "the distance exponent, read by law"},
+    {FORCE("law"), .type = ISK_KEY_ENUM, FRC(law), .applies = POT, NAMES(isk_coulomb_law_names), .dflt = "code",
+     .live = ALL,
+     .meaning = "code: exponent is the code's P, |F| = k|Q| d^(1-P); text: the thesis text's p, P = p + 2"},
+    {FORCE("min_distance"), .type = ISK_KEY_NUMBER, FRC(pot.min_dist), .applies = POT, .words = off_words,
+     .dflt = "off", .live = ALL,
+     .meaning = "distances below it are clamped (softens the centre); <= 0 is off"},
+    {FORCE("max_distance"), .type = ISK_KEY_NUMBER, FRC(pot.max_dist), .applies = POT, .words = off_words,
+     .dflt = "off", .live = ALL,
+     .meaning = "once any particle comes closer, the potential switches off for good (and leaves the "
+                "pipeline); <= 0 is off"},
+    {FORCE("x_multiplier"), .type = ISK_KEY_NUMBER, FRC(pot.x_mult), .applies = POT, .dflt = "1", .live = ALL,
+     .meaning = "scales the force's x component only"},
+    {FORCE("enabled"), .type = ISK_KEY_BOOL, FRC(pot.enabled), .applies = POT, .dflt = "true", .live = ALL,
+     .meaning = "a disabled potential is not simulated at all (setting it true also revives one that "
+                "switched itself off)"},
+    {FORCE("velocity"), .type = ISK_KEY_VECTOR, FRC(pot.vel), .applies = POT, .dflt = "0, 0", .live = ALL,
+     .meaning = "the potential moves by velocity*dt/speed_divisor per frame"},
+    {FORCE("draw"), .type = ISK_KEY_BOOL, FRC(draw), .applies = POT, .dflt = "true", .live = ALL,
+     .meaning = "draw it as a disc of radius 0.1 with its number, while it is on"},
+
+    /* [deflector NAME] */
+    {DEFL("segment"), .type = ISK_KEY_NUMBERS4, SEG(x0), .required = ALL, .what = "x0, y0, x1, y1",
+     .dflt = "0, 0, 1, 0", .live = ALL,
+     .meaning = "x0, y0, x1, y1 (a non-zero length)"},
+    {DEFL("restitution"), .type = ISK_KEY_NUMBER, SEG(restitution), IN(0, 1000), .dflt = "1", .live = ALL,
+     .meaning = "c: the velocity is scaled by c at a bounce"},
+    {DEFL("probability"), .type = ISK_KEY_NUMBER, SEG(probability), IN(0, 1), .dflt = "1", .live = ALL,
+     .meaning = "chance that a hit reacts (otherwise the particle passes)"},
+    {DEFL("reaction"), .type = ISK_KEY_ENUM, SEG(reaction), NAMES(isk_deflect_reaction_names), .dflt = "bounce",
+     .live = ALL, .meaning = "what a hit does"},
+    {DEFL("restitution_mode"), .type = ISK_KEY_ENUM, SEG(mode), NAMES(isk_restitution_mode_names),
+     .dflt = "uniform", .live = ALL,
+     .meaning = "uniform: c*(v - 2(v.n)n) (fire thesis); normal: only the normal part scaled (particle-engine "
+                "thesis)"},
+
+    /* [bounds] */
+    {BOUNDS("mode"), .type = ISK_KEY_ENUM, BND(mode), NAMES(isk_bounce_mode_names), .dflt = "reflect", .live = ALL,
+     .meaning = "thesis: the thesis's zarobi (sign flip, only the floor clamps); reflect: mirror about the wall "
+                "with restitution, never tunnels or sticks"},
+    {BOUNDS("sides"), .type = ISK_KEY_SIDES, BND(sides), NAMES(isk_side_names), .dflt = "none",
+     .dflt_doc = "all when the scene has a [bounds] section", .live = ALL, .meaning = "which walls exist"},
+    {BOUNDS("margin"), .type = ISK_KEY_NUMBER, BND(margin), GE(0), .dflt = "0",
+     .dflt_doc = "0.1 with mode = thesis, 0 with reflect", .live = ALL,
+     .meaning = "walls sit this far inside the window"},
+    {BOUNDS("restitution"), .type = ISK_KEY_NUMBER, BND(restitution), .applies = BIT(ISK_BOUNCE_REFLECT), IN(0, 1),
+     .dflt = "1", .live = ALL, .meaning = "c: the normal speed is scaled by c at a bounce"},
+    {BOUNDS("window"), .type = ISK_KEY_NUMBERS4, BND(xmin), .what = "xmin, xmax, ymin, ymax",
+     .dflt = "-10, 10, -10, 10",
+     .dflt_doc = "the view's window (a camera view: its visible window at the scene's size)", .live = ALL,
+     .meaning = "xmin, xmax, ymin, ymax the walls follow (min < max)"},
+
+    /* [emitter NAME] */
+    {EMITTER("source"), .type = ISK_KEY_ENUM, EM(source), NAMES(isk_source_names), .dflt = "particle",
+     .create_only = 1,
+     .meaning = "one particle; a thesis explosion; the stationary layer; continuous emission"},
+    {EMITTER("position"), .type = ISK_KEY_VECTOR, EM(pos), .applies = S_P | S_E | S_S, .dflt = "0, 0", .live = S_S,
+     .meaning = "the particle / explosion centre / stream origin"},
+    {EMITTER("velocity"), .type = ISK_KEY_VECTOR, EM(vel), .applies = S_P | S_S, .dflt = "0, 0", .live = S_S,
+     .meaning = "the particle's velocity; a stream's constant (or disc-centre) velocity"},
+    {EMITTER("mass"), .type = ISK_KEY_NUMBER, EM(mass), .applies = S_P | S_L | S_S, GT(0), .dflt = "1", .live = S_S,
+     .meaning = "(explosions set their own masses: 2 or 2 + U)"},
+    {EMITTER("mass_range"), .type = ISK_KEY_NUMBER, EM(mass_range), .applies = S_S, GE(0), .dflt = "0", .live = S_S,
+     .meaning = "mass = mass + U*mass_range"},
+    {EMITTER("explosion"), .type = ISK_KEY_ENUM, EM(explosion), .applies = S_E, NAMES(isk_explosion_names),
+     .dflt = "gauss", .meaning = "the thesis's explosion types"},
+    {EMITTER("count"), .type = ISK_KEY_COUNT, EM(count), .applies = S_E | S_L | S_S, .required = S_L,
+     IN(0, MAXP), .dflt = "0", .live = S_S,
+     .meaning = "particles: an explosion's or the layer's (1..limit); a stream's per burst (0: no bursts)"},
+    {EMITTER("limit"), .type = ISK_KEY_COUNT, EM(limit), .applies = S_E | S_L | S_S, IN(0, MAXP), .dflt = "0",
+     .live = ALL,
+     .meaning = "largest accepted explosion, clicks included (0: the thesis's 10,000)"},
+    {EMITTER("kick"), .type = ISK_KEY_ENUM, EM(kick), .applies = S_E, NAMES(isk_kick_names), .dflt = "all",
+     .live = ALL,
+     .meaning = "which particles a Coulomb kick pushes: the whole emitter (thesis) or only the new ones"},
+    {EMITTER("start"), .type = ISK_KEY_NUMBER, EM(start), .applies = S_E | S_S, GE(0), .dflt = "0",
+     .what = "a number of seconds", .meaning = "time of the explosion / first burst and of the stream's start"},
+    {EMITTER("rect"), .type = ISK_KEY_NUMBERS4, EM(rect), .applies = S_L, .required = S_L,
+     .what = "xmin, xmax, ymin, ymax", .dflt = "0, 0, 0, 0",
+     .meaning = "xmin, xmax, ymin, ymax of the layer"},
+    {EMITTER("shape"), .type = ISK_KEY_ENUM, EM(shape), .applies = S_S, NAMES(isk_shape_names), .dflt = "point",
+     .live = S_S, .meaning = "where new particles appear around position"},
+    {EMITTER("shape_a"), .type = ISK_KEY_NUMBER, EM(shape_a), .applies = S_S, .dflt = "0", .live = S_S,
+     .meaning = "radius (disc, circle); inner radius (ring); x offset (segment); half-width (rect); semi-axis "
+                "(ellipse)"},
+    {EMITTER("shape_b"), .type = ISK_KEY_NUMBER, EM(shape_b), .applies = S_S, .dflt = "0", .live = S_S,
+     .meaning = "outer radius (ring); y offset (segment); half-height (rect); semi-axis (ellipse)"},
+    {EMITTER("shape_angle"), .type = ISK_KEY_ANGLE, EM(shape_angle), .applies = S_S, IN(-3600, 3600), .dflt = "0",
+     .live = S_S, .meaning = "rotation of the shape"},
+    {EMITTER("shape_faithful"), .type = ISK_KEY_BOOL, EM(shape_faithful), .applies = S_S, .dflt = "false",
+     .live = S_S, .meaning = "ellipse: the particle-engine thesis's (non-uniform) sampler"},
+    {EMITTER("launch"), .type = ISK_KEY_ENUM, EM(launch), .applies = S_S, NAMES(isk_velgen_names),
+     .dflt = "constant", .live = S_S, .meaning = "how initial velocities are drawn"},
+    {EMITTER("angle"), .type = ISK_KEY_ANGLE, EM(angle), .applies = S_S, IN(-3600, 3600), .dflt = "0", .live = S_S,
+     .meaning = "direction of direction/cone launches"},
+    {EMITTER("spread"), .type = ISK_KEY_ANGLE, EM(spread), .applies = S_S, IN(0, 360), .dflt = "0", .live = S_S,
+     .meaning = "opening of a cone launch"},
+    {EMITTER("speed_min"), .type = ISK_KEY_NUMBER, EM(speed_min), .applies = S_S, GE(0), .dflt = "0", .live = S_S,
+     .meaning = "slowest launch speed"},
+    {EMITTER("speed_max"), .type = ISK_KEY_NUMBER, EM(speed_max), .applies = S_S, GE(0), .dflt = "0", .live = S_S,
+     .meaning = "fastest launch speed (>= speed_min; disc: its radius)"},
+    {EMITTER("rate"), .type = ISK_KEY_NUMBER, EM(rate), .applies = S_S, IN(0, 1e7), .dflt = "0", .live = S_S,
+     .meaning = "particles per second (0: bursts only)"},
+    {EMITTER("rate_mode"), .type = ISK_KEY_ENUM, EM(rate_mode), .applies = S_S, NAMES(isk_rate_mode_names),
+     .dflt = "accumulate", .live = S_S,
+     .meaning = "fractional carry (exact over time), or the fire thesis's rounding per frame"},
+    {EMITTER("birth"), .type = ISK_KEY_ENUM, EM(birth), .applies = S_S, NAMES(isk_birth_mode_names),
+     .dflt = "backdate", .live = S_S, .meaning = "when within a frame particles are born"},
+    {EMITTER("burst_every"), .type = ISK_KEY_NUMBER, EM(burst_every), .applies = S_S, GE(0), .dflt = "0",
+     .what = "a number of seconds", .live = S_S,
+     .meaning = "a burst of count every this many seconds (0: once, at start)"},
+    {EMITTER("life"), .type = ISK_KEY_NUMBER, EM(life), GT(0), .words = forever_words, .dflt = "forever",
+     .what = "a number of seconds", .live = ALL, .meaning = "lifetime of new particles"},
+    {EMITTER("life_range"), .type = ISK_KEY_NUMBER, EM(life_range), GE(0), .dflt = "0", .live = ALL,
+     .meaning = "lifetime = life + U*life_range"},
+    {EMITTER("capacity"), .type = ISK_KEY_COUNT, EM(capacity), IN(1, MAXP), .dflt = "100000", .live = ALL,
+     .meaning = "pool size: spawns beyond it are dropped (and counted)"},
+    {EMITTER("forces"), .type = ISK_KEY_REFS, EM(forces), .aux = offsetof(isk_emitter_def, nforces),
+     .refers = ISK_SECTION_FORCE, .dflt = "none",
+     .live = ALL, .meaning = "the forces acting on these particles"},
+    {EMITTER("deflectors"), .type = ISK_KEY_REFS, EM(deflectors), .aux = offsetof(isk_emitter_def, ndeflectors),
+     .refers = ISK_SECTION_DEFLECTOR,
+     .dflt = "none", .live = ALL, .meaning = "the deflectors they hit"},
+    {EMITTER("bounded"), .type = ISK_KEY_BOOL, EM(bounded), .dflt = "true", .live = ALL,
+     .meaning = "the walls of [bounds] apply"},
+    {EMITTER("draw_before_bounce"), .type = ISK_KEY_BOOL, EM(draw_before_bounce), .dflt = "false", .live = ALL,
+     .meaning = "the thesis examples' order: draw, then the walls"},
+    {EMITTER("gravity_multiplier"), .type = ISK_KEY_NUMBER, EM(gravity_mult), .dflt = "1", .live = ALL,
+     .meaning = "scales gravity forces for these particles"},
+    {EMITTER("weight"), .type = ISK_KEY_NUMBER, EM(weight), .dflt = "0", .live = ALL,
+     .meaning = "buoyancy: an upward acceleration (fire thesis)"},
+    {EMITTER("slowing"), .type = ISK_KEY_NUMBER, EM(slowing), GE(0), .dflt = "0", .live = ALL,
+     .meaning = "damping per second: v *= max(0, 1 - slowing*dt)"},
+    {EMITTER("slow_faithful"), .type = ISK_KEY_BOOL, EM(slow_faithful), .dflt = "false", .live = ALL,
+     .meaning = "the fire thesis's order: v += a*dt; v *= (1 - slowing*dt); p += v*dt (only with constant "
+                "accelerations and semi-euler)"},
+    {EMITTER("osc_omega"), .type = ISK_KEY_PAIR, EM(osc_omega_min), .what = "min, max", .dflt = "0, 0", .live = ALL,
+     .meaning = "oscillation angular speed range, rad/s (0, 0: off; negative: the sway starts towards -x)"},
+    {EMITTER("osc_amplitude"), .type = ISK_KEY_PAIR, EM(osc_amp_min), GE(0), .what = "min, max", .dflt = "0, 0",
+     .live = ALL,
+     .meaning = "initial horizontal amplitude range, world units"},
+    {EMITTER("osc_decay"), .type = ISK_KEY_NUMBER, EM(osc_decay), GE(0), .dflt = "0", .live = ALL,
+     .meaning = "amplitude *= max(0, 1 - decay*dt)"},
+    {EMITTER("osc_faithful"), .type = ISK_KEY_BOOL, EM(osc_faithful), .dflt = "false", .live = ALL,
+     .meaning = "also add the offset change to vx (the fire thesis's code)"},
+    {EMITTER("osc_table"), .type = ISK_KEY_BOOL, EM(osc_use_table), .dflt = "true", .live = ALL,
+     .meaning = "sine from a lookup table (as the thesis) or libm"},
+    {EMITTER("osc_random_phase"), .type = ISK_KEY_BOOL, EM(osc_random_phase), .dflt = "false", .live = ALL,
+     .meaning = "start each particle at a random phase (its offset preset, so it does not jump)"},
+    {EMITTER("integrator"), .type = ISK_KEY_ENUM, EM(integrator), NAMES(isk_integrator_names),
+     .words = inherit_words, .dflt = "scene", .live = ALL, .meaning = "time integrator (scene: the scene's)"},
+    {EMITTER("substeps"), .type = ISK_KEY_WHOLE, EM(substeps), IN(1, 1000), .words = scene_words, .dflt = "scene",
+     .live = ALL, .meaning = "substeps per frame (scene: the scene's)"},
+    {EMITTER("draw"), .type = ISK_KEY_ENUM, EM(draw), NAMES(isk_draw_mode_names), .dflt = "dot", .live = ALL,
+     .meaning = "dot: exact-area 1x1 square at the point; dot-browser: the thesis browser's rule; pixel; disc "
+                "of diameter size; sprite; none (simulated only)"},
+    {EMITTER("sprite"), .type = ISK_KEY_ENUM, EM(sprite), NAMES(isk_sprite_kind_names), .dflt = "linear",
+     .live = ALL, .meaning = "sprite shape (include/iskra/sprite.h)"},
+    {EMITTER("size"), .type = ISK_KEY_NUMBER, EM(size), GT_LE(0, 1e6), .dflt = "0.1", .live = ALL,
+     .meaning = "disc/sprite diameter, world units"},
+    {EMITTER("color"), .type = ISK_KEY_COLOR, EM(color), .dflt = "yellow", .live = ALL,
+     .meaning = "the particles' colour"},
+    {EMITTER("blend"), .type = ISK_KEY_ENUM, EM(blend), NAMES(isk_blend_names), .dflt = "over", .live = ALL,
+     .meaning = "how they combine with the canvas (include/iskra/blend.h)"},
+    {EMITTER("color_over_life"), .type = ISK_KEY_COLOR_STOPS, EM(color_over_life), .dflt = "off", .live = ALL,
+     .meaning = "replaces color by normalised age"},
+    {EMITTER("alpha_over_life"), .type = ISK_KEY_SCALAR_STOPS, EM(alpha_over_life), IN(0, 1), .dflt = "off",
+     .live = ALL, .meaning = "multiplies the colour's alpha"},
+    {EMITTER("size_over_life"), .type = ISK_KEY_SCALAR_STOPS, EM(size_over_life), IN(0, 1e6), .dflt = "off",
+     .live = ALL, .meaning = "multiplies size"},
+    {EMITTER("order"), .type = ISK_KEY_WHOLE, EM(order), IN(-1000000, 1000000), .dflt = "0",
+     .dflt_doc = "its definition index", .live = ALL,
+     .meaning = "draw order (lower first; ties by definition order)"},
+
+    /* [drawing NAME] */
+    {DRAWING("kind"), .type = ISK_KEY_ENUM, DRW(kind), NAMES(isk_drawing_kind_names), .dflt = "polyline",
+     .dflt_doc = "the NAME when it is a kind, else polyline with points, disc with radius, text with text",
+     .create_only = 1, .meaning = "what the drawing is"},
+    {DRAWING("units"), .type = ISK_KEY_ENUM, DRW(pixels), NAMES(isk_units_names), .dflt = "world", .live = ALL,
+     .meaning = "coordinates in world units or canvas pixels (y down)"},
+    {DRAWING("points"), .type = ISK_KEY_POINTS, DRW(points), .aux = offsetof(isk_drawing_def, npoints),
+     .applies = D_LINE | D_POLY, .required = D_LINE | D_POLY, IN(2, 64), .dflt = "", .live = ALL,
+     .meaning = "x0, y0, x1, y1, ...: a polyline's path (2..64 points), a polygon's corners (3..64)"},
+    {DRAWING("closed"), .type = ISK_KEY_BOOL, DRW(closed), .applies = D_LINE, .dflt = "false", .live = ALL,
+     .meaning = "join the last point to the first"},
+    {DRAWING("hairline"), .type = ISK_KEY_BOOL, DRW(hairline), .applies = D_LINE, .dflt = "false", .live = ALL,
+     .meaning = "draw as the browser's canvas does at width 1 (a diagonal stays 2 px wide, no joins); false: the "
+                "exact-area width-1 stroke with miter joins"},
+    {DRAWING("position"), .type = ISK_KEY_VECTOR, DRW(x), .applies = D_DISC | D_TEXT | D_SPR,
+     .required = D_DISC | D_TEXT | D_SPR, .dflt = "0, 0", .live = ALL,
+     .meaning = "centre / text baseline start (pixels: top-left)"},
+    {DRAWING("sprite"), .type = ISK_KEY_ENUM, DRW(sprite), .applies = D_SPR, NAMES(isk_sprite_kind_names),
+     .dflt = "linear", .live = ALL, .meaning = "sprite shape"},
+    {DRAWING("size"), .type = ISK_KEY_NUMBER, DRW(size), .applies = D_SPR, .required = D_SPR, GT_LE(0, 1e9),
+     .dflt = "1", .live = ALL, .meaning = "the sprite's diameter"},
+    {DRAWING("radius"), .type = ISK_KEY_NUMBER, DRW(r), .applies = D_DISC, .required = D_DISC, GT_LE(0, 1e9),
+     .dflt = "1", .live = ALL, .meaning = "the disc's radius"},
+    {DRAWING("text"), .type = ISK_KEY_TEXT, DRW(text), .aux = sizeof(((isk_drawing_def *)0)->text),
+     .applies = D_TEXT, .required = D_TEXT, .dflt = "", .live = ALL, .meaning = "what to write"},
+    {DRAWING("scale"), .type = ISK_KEY_WHOLE, DRW(scale), .applies = D_TEXT, IN(1, 64), .dflt = "1", .live = ALL,
+     .meaning = "font scale"},
+    {DRAWING("color"), .type = ISK_KEY_COLOR, DRW(color), .dflt = "white", .live = ALL, .meaning = "its colour"},
+    {DRAWING("blend"), .type = ISK_KEY_ENUM, DRW(blend), NAMES(isk_blend_names), .dflt = "over", .live = ALL,
+     .meaning = "how it combines with the canvas"},
+
+    /* [click] */
+    {CLICK("explosion"), .type = ISK_KEY_ENUM, CLK(explosion), NAMES(isk_explosion_names), .dflt = "coulomb",
+     .live = ALL, .meaning = "what a click sets off"},
+    {CLICK("count"), .type = ISK_KEY_COUNT, CLK(count), IN(1, MAXP), .dflt = "1000", .live = ALL,
+     .meaning = "particles per click (at most the receiving emitter's limit)"},
+    {CLICK("emitter"), .type = ISK_KEY_REF, CLK(emitter), .refers = ISK_SECTION_EMITTER, .dflt = "", .dflt_doc = "the first emitter",
+     .live = ALL, .meaning = "the emitter whose particles the click adds to (they get its forces, walls, drawing)"},
+    {CLICK("at_start"), .type = ISK_KEY_POINT, CLK(x), .aux = offsetof(isk_click_def, at_start), .dflt = "none",
+     .meaning = "also click once at this world point when the scene starts (the thesis's simulator scenes "
+                "start with a click)"},
+    {CLICK("after_frames"), .type = ISK_KEY_LONG, CLK(after_frames), IN(0, 1e8), .dflt = "0",
+     .meaning = "with at_start: the click comes after this many frames (the thesis's scenes run one frame of "
+                "the layer alone: 1)"},
+};
+
+int isk_key_count(void) { return N(keys); }
+
+const isk_key *isk_key_at(int i) { return i >= 0 && i < N(keys) ? &keys[i] : NULL; }
+
+const isk_key *isk_key_find(isk_section_kind section, const char *name)
+{
+    for (int i = 0; name && i < N(keys); i++)
+        if (keys[i].section == section && !strcmp(keys[i].name, name))
+            return &keys[i];
+    return NULL;
+}
+
+/* ---- sections ---------------------------------------------------------------- */
+
+typedef struct section_info {
+    const char *name;
+    int named;
+    const char *kind_key;
+    const char *const *kind_names;
+    int nkinds;
+} section_info;
+
+static const section_info sections[ISK_SECTION_COUNT] = {
+    [ISK_SECTION_SCENE] = {"scene", 0, NULL, NULL, 0},
+    [ISK_SECTION_VIEW] = {"view", 0, "", isk_view_kind_names, ISK_VIEWDEF_COUNT},
+    [ISK_SECTION_FORCE] = {"force", 1, "kind", isk_force_kind_names, ISK_FORCE_KIND_COUNT},
+    [ISK_SECTION_DEFLECTOR] = {"deflector", 1, NULL, NULL, 0},
+    [ISK_SECTION_BOUNDS] = {"bounds", 0, "mode", isk_bounce_mode_names, ISK_BOUNCE_MODE_COUNT},
+    [ISK_SECTION_EMITTER] = {"emitter", 1, "source", isk_source_names, ISK_SOURCE_KIND_COUNT},
+    [ISK_SECTION_DRAWING] = {"drawing", 1, "kind", isk_drawing_kind_names, ISK_DRAWING_KIND_COUNT},
+    [ISK_SECTION_CLICK] = {"click", 0, NULL, NULL, 0},
+};
+
+const char *isk_section_name(isk_section_kind s)
+{
+    return (unsigned)s < ISK_SECTION_COUNT ? sections[s].name : NULL;
+}
+
+int isk_section_named(isk_section_kind s) { return (unsigned)s < ISK_SECTION_COUNT && sections[s].named; }
+
+int isk_section_find(const char *type)
+{
+    for (int i = 0; type && i < ISK_SECTION_COUNT; i++)
+        if (!strcmp(sections[i].name, type))
+            return i;
+    return -1;
+}
+
+const char *isk_section_kind_key(isk_section_kind s)
+{
+    return (unsigned)s < ISK_SECTION_COUNT ? sections[s].kind_key : NULL;
+}
+
+const char *const *isk_section_kind_names(isk_section_kind s, int *n)
+{
+    int k = (unsigned)s < ISK_SECTION_COUNT ? sections[s].nkinds : 0;
+    if (n)
+        *n = k;
+    return k ? sections[s].kind_names : NULL;
+}
+
+const char *isk_key_type_name(isk_key_type t)
+{
+    static const char *const names[ISK_KEY_TYPE_COUNT] = {
+        [ISK_KEY_NUMBER] = "number",       [ISK_KEY_WHOLE] = "whole",         [ISK_KEY_LONG] = "whole",
+        [ISK_KEY_COUNT] = "whole",         [ISK_KEY_SEED] = "whole",          [ISK_KEY_BOOL] = "boolean",
+        [ISK_KEY_COLOR] = "colour",        [ISK_KEY_ENUM] = "enum",           [ISK_KEY_VECTOR] = "vector",
+        [ISK_KEY_POINT] = "vector",        [ISK_KEY_ANGLE] = "angle",         [ISK_KEY_PAIR] = "2 numbers",
+        [ISK_KEY_NUMBERS4] = "4 numbers",  [ISK_KEY_COLOR_STOPS] = "colour stops",
+        [ISK_KEY_SCALAR_STOPS] = "stops",  [ISK_KEY_TEXT] = "text",           [ISK_KEY_SIDES] = "sides",
+        [ISK_KEY_POINTS] = "points",       [ISK_KEY_REFS] = "names",          [ISK_KEY_REF] = "name",
+    };
+    return (unsigned)t < ISK_KEY_TYPE_COUNT ? names[t] : "?";
+}
