@@ -125,8 +125,18 @@ int isk_section_find(const char *type);
 const char *isk_section_kind_key(isk_section_kind section);
 const char *const *isk_section_kind_names(isk_section_kind section, int *n);
 
-/* "number", "whole number", "boolean", ... (for tables). */
+/* "number", "whole", "boolean", ... (for tables). */
 const char *isk_key_type_name(isk_key_type type);
+
+/* A row in words, for tables (`iskra keys`, docs/scene-format.md, panels):
+ *   range:   "0..10000000", "> 0", "semi-euler, euler, ..." (enums), ""
+ *   kinds:   the kinds of `mask` ("explosion, layer, stream"); "" for every kind
+ *   default: the default as written, how it is chosen, or "required"
+ *   live:    "yes", "at reset", "no" (only at creation), or "stream (others at reset)" */
+void isk_key_range_text(const isk_key *k, char *buf, size_t n);
+void isk_key_kinds_text(const isk_key *k, unsigned mask, char *buf, size_t n);
+void isk_key_default_text(const isk_key *k, char *buf, size_t n);
+void isk_key_live_text(const isk_key *k, char *buf, size_t n);
 
 #ifdef __cplusplus
 }

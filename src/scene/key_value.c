@@ -213,40 +213,6 @@ void fx_key_expect(const isk_key *k, char *buf, size_t n)
     }
 }
 
-void fx_key_range_text(const isk_key *k, char *buf, size_t n)
-{
-    buf[0] = 0;
-    if (k->type == ISK_KEY_ENUM || k->type == ISK_KEY_SIDES) {
-        const char *all[64];
-        int m = 0;
-        for (int i = 0; i < k->nnames && m < 64; i++)
-            all[m++] = k->names[i];
-        for (int i = 0; k->words && k->words[i].word && m < 64; i++)
-            all[m++] = k->words[i].word;
-        size_t used = 0;
-        for (int i = 0; i < m; i++)
-            used += (size_t)snprintf(buf + used, used < n ? n - used : 0, "%s%s", i ? ", " : "", all[i]);
-        return;
-    }
-    if (k->lo_bound == ISK_BOUND_INCL && k->hi_bound == ISK_BOUND_INCL)
-        snprintf(buf, n, "%.15g..%.15g", k->min, k->max);
-    else if (k->lo_bound && k->hi_bound)
-        snprintf(buf, n, "%s %.15g, %s %.15g", k->lo_bound == ISK_BOUND_INCL ? ">=" : ">", k->min,
-                 k->hi_bound == ISK_BOUND_INCL ? "<=" : "<", k->max);
-    else if (k->lo_bound)
-        snprintf(buf, n, "%s %.15g", k->lo_bound == ISK_BOUND_INCL ? ">=" : ">", k->min);
-    else if (k->hi_bound)
-        snprintf(buf, n, "%s %.15g", k->hi_bound == ISK_BOUND_INCL ? "<=" : "<", k->max);
-    size_t len = strlen(buf);
-    if (k->type == ISK_KEY_POINTS)
-        snprintf(buf + len, n - len, " points");
-    for (int i = 0; k->words && k->words[i].word; i++) {
-        len = strlen(buf);
-        snprintf(buf + len, n - len, "%s%s", len ? "; " : "", k->words[i].word);
-        break;
-    }
-}
-
 static int in_range(const isk_key *k, double v)
 {
     if (k->lo_bound == ISK_BOUND_INCL && !(v >= k->min)) return 0;
@@ -869,11 +835,16 @@ static int put(char *buf, size_t n, const char *fmt, ...)
     return r >= 0 && (size_t)r < n ? 0 : -1;
 }
 
-/* Shortest decimal that reads back to the same double. */
+/* Shortest decimal that reads back to the same double, without an
+ * exponent where plain digits are as readable ("90", not "9e+01"). */
 static void num(char *buf, size_t n, double v)
 {
+    const double a = fabs(v);
+    const int plain = a >= 1e-5 && a < 1e16;
     for (int p = 1; p <= 17; p++) {
         snprintf(buf, n, "%.*g", p, v);
+        if (plain && p < 17 && strchr(buf, 'e'))
+            continue;
         if (strtod(buf, NULL) == v)
             return;
     }

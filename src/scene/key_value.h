@@ -44,8 +44,6 @@ int fx_key_check(const isk_key *k, const void *item, const isk_effect_def *d, ch
 int fx_key_format(const isk_key *k, const void *item, const isk_effect_def *d, char *buf, size_t n);
 /* "a number between 0 and 10000000", "ring, uniform, gauss, coulomb or multi-coulomb" */
 void fx_key_expect(const isk_key *k, char *buf, size_t n);
-/* The range alone ("0..1e+07", "> 0", "") and the accepted names, for tables. */
-void fx_key_range_text(const isk_key *k, char *buf, size_t n);
 
 /* Sets the row's default (its `dflt` text) into the item; rows without a
  * default are left alone.  Returns 0 (a bad default is a bug the test of

@@ -8,6 +8,7 @@
 
 #include <math.h>
 #include <stddef.h>
+#include <stdio.h>
 #include <string.h>
 
 #include "iskra/effect.h"
@@ -169,7 +170,7 @@ static const isk_key keys[] = {
     /* [deflector NAME] */
     {DEFL("segment"), .type = ISK_KEY_NUMBERS4, SEG(x0), .required = ALL, .what = "x0, y0, x1, y1",
      .dflt = "0, 0, 1, 0", .live = ALL,
-     .meaning = "x0, y0, x1, y1 (a non-zero length)"},
+     .meaning = "the end points x0, y0, x1, y1, which must differ"},
     {DEFL("restitution"), .type = ISK_KEY_NUMBER, SEG(restitution), IN(0, 1000), .dflt = "1", .live = ALL,
      .meaning = "c: the velocity is scaled by c at a bounce"},
     {DEFL("probability"), .type = ISK_KEY_NUMBER, SEG(probability), IN(0, 1), .dflt = "1", .live = ALL,
@@ -438,4 +439,86 @@ const char *isk_key_type_name(isk_key_type t)
         [ISK_KEY_POINTS] = "points",       [ISK_KEY_REFS] = "names",          [ISK_KEY_REF] = "name",
     };
     return (unsigned)t < ISK_KEY_TYPE_COUNT ? names[t] : "?";
+}
+
+/* ---- rows in words (tables, `iskra keys`, the documentation) ---------------- */
+
+void isk_key_range_text(const isk_key *k, char *buf, size_t n)
+{
+    buf[0] = 0;
+    if (k->type == ISK_KEY_SEED) {
+        snprintf(buf, n, "0..2^64-1");
+        return;
+    }
+    if (k->type == ISK_KEY_ENUM || k->type == ISK_KEY_SIDES) {
+        const char *all[64];
+        int m = 0;
+        for (int i = 0; i < k->nnames && m < 64; i++)
+            all[m++] = k->names[i];
+        for (int i = 0; k->words && k->words[i].word && m < 64; i++)
+            all[m++] = k->words[i].word;
+        size_t used = 0;
+        for (int i = 0; i < m; i++)
+            used += (size_t)snprintf(buf + used, used < n ? n - used : 0, "%s%s", i ? ", " : "", all[i]);
+        return;
+    }
+    if (k->lo_bound == ISK_BOUND_INCL && k->hi_bound == ISK_BOUND_INCL)
+        snprintf(buf, n, "%.15g..%.15g", k->min, k->max);
+    else if (k->lo_bound && k->hi_bound)
+        snprintf(buf, n, "%s %.15g, %s %.15g", k->lo_bound == ISK_BOUND_INCL ? ">=" : ">", k->min,
+                 k->hi_bound == ISK_BOUND_INCL ? "<=" : "<", k->max);
+    else if (k->lo_bound)
+        snprintf(buf, n, "%s %.15g", k->lo_bound == ISK_BOUND_INCL ? ">=" : ">", k->min);
+    else if (k->hi_bound)
+        snprintf(buf, n, "%s %.15g", k->hi_bound == ISK_BOUND_INCL ? "<=" : "<", k->max);
+    size_t len = strlen(buf);
+    if (k->type == ISK_KEY_POINTS)
+        snprintf(buf + len, n - len, " points");
+    if (k->words) { /* the first word; the others are synonyms */
+        len = strlen(buf);
+        snprintf(buf + len, n - len, "%s or %s", len ? "" : "any", k->words[0].word);
+    }
+}
+
+
+void isk_key_kinds_text(const isk_key *k, unsigned mask, char *buf, size_t n)
+{
+    int count;
+    const char *const *names = isk_section_kind_names(k->section, &count);
+    buf[0] = 0;
+    if (!names || mask == 0 || mask == ALL)
+        return;
+    size_t used = 0;
+    int any = 0;
+    for (int i = 0; i < count; i++)
+        if (mask >> i & 1u) {
+            used += (size_t)snprintf(buf + used, used < n ? n - used : 0, "%s%s", any ? ", " : "", names[i]);
+            any = 1;
+        }
+}
+
+void isk_key_default_text(const isk_key *k, char *buf, size_t n)
+{
+    if (k->required && k->required == (k->applies ? k->applies : k->required))
+        snprintf(buf, n, "required");
+    else if (k->dflt_doc)
+        snprintf(buf, n, "%s", k->dflt_doc);
+    else
+        snprintf(buf, n, "%s", k->dflt ? k->dflt : "");
+}
+
+void isk_key_live_text(const isk_key *k, char *buf, size_t n)
+{
+    unsigned applies = k->applies ? k->applies : ALL;
+    if (k->create_only)
+        snprintf(buf, n, "no");
+    else if (k->live == 0)
+        snprintf(buf, n, "at reset");
+    else if ((k->live & applies) == applies || k->live == ALL)
+        snprintf(buf, n, "yes");
+    else {
+        char kinds[120];
+        isk_key_kinds_text(k, k->live & applies, kinds, sizeof kinds);
+        snprintf(buf, n, "%s (others at reset)", kinds);
+    }
 }

@@ -386,7 +386,7 @@ static int kinds_and_required(parser *P, section *s)
     }
     for (int i = 0; i < P->nkeys; i++) {
         const isk_key *k = isk_key_at(i);
-        if (k->section == s->type && !s->key_line[i] && kind >= 0 && (k->required >> kind & 1u))
+        if (k->section == s->type && !s->key_line[i] && (kind < 0 ? k->required != 0 : (k->required >> kind & 1u)))
             return fail_at(P, s, s->line, NULL, "needs %s (%s)", k->name, k->meaning);
     }
     return 0;

@@ -18,5 +18,6 @@ int cmd_describe(int argc, char **argv);
 int cmd_render(int argc, char **argv);
 int cmd_play(int argc, char **argv);
 int cmd_bench(int argc, char **argv);
+int cmd_keys(int argc, char **argv);
 
 #endif

@@ -7,6 +7,7 @@
 static const isk_command commands[] = {
     {"list", "list the built-in scenes", cmd_list},
     {"describe", "print the pipeline a scene compiles to", cmd_describe},
+    {"keys", "every key of a scene file: type, default, range, meaning", cmd_keys},
     {"render", "render a scene to PNG (one frame or a sequence)", cmd_render},
     {"play", "run a scene in a window in real time", cmd_play},
     {"compare", "compare two PNG images pixel by pixel", cmd_compare},
