@@ -370,7 +370,59 @@ isk_status isk_effect_step_render(isk_effect *e, isk_canvas *c);
 /* The click action at world point (x, y). */
 isk_status isk_effect_click(isk_effect *e, double x, double y);
 
-/* Runtime overrides (validated): substeps >= 1; dt > 0. */
+/* ---- changing it while it runs ----------------------------------------------
+ *
+ * Any key of the key table (iskra/keys.h, `iskra keys`), by name, with its
+ * value as text, as a scene file would write it:
+ *
+ *     isk_effect_set(fx, "force drag", "b", "0.3", &err);
+ *     isk_effect_set(fx, "emitter sparks", "position", "1.5, 2", &err);
+ *     isk_effect_set(fx, "scene", "substeps", "4", &err);
+ *     char v[64];  isk_effect_get(fx, "bounds", "sides", v, sizeof v, &err);  // "left, right, bottom"
+ *
+ * `section` is spelled as in a scene file without the brackets: "scene",
+ * "view", "bounds", "click", or a type and a name ("force drag", "emitter
+ * sparks", "deflector floor", "drawing label").  A value is parsed and
+ * checked through the key's row and then with the whole definition (a
+ * stream's count against its capacity, ...), with the parser's messages
+ * ("[emitter sparks] rate: expected a number between 0 and 10000000, got
+ * "1e8""); a refused value changes nothing (ISK_ERR_RANGE; ISK_ERR_NULL,
+ * ISK_ERR_NOMEM).  An accepted one is part of the definition from then on
+ * (isk_effect_definition, isk_effect_reset and isk_effect_get see it) and
+ * applies from the next step: the stage lists are recompiled, so a force set
+ * to zero leaves the pipeline and describe, one set non-zero enters it.
+ *
+ * When a change takes effect is the key's `live` column: "yes" keys act at
+ * the next step (forces, potentials including enabled, position and
+ * velocity, walls, deflectors, the emitters' physics and drawing, a stream's
+ * rate and position, dt, substeps, integrator, speed_divisor, the click);
+ * "at reset" keys are stored now and shape the particles the next
+ * isk_effect_reset creates (an explosion's count, a layer's rect, the seed);
+ * keys marked "no" (width, height, and the kinds: a force's kind, an
+ * emitter's source, a drawing's kind) are refused with a message saying so.
+ * A potential's live position and on/off state are its own (it moves, it
+ * may switch itself off): a change to another of its keys keeps them.
+ * isk_effect_get gives the definition's value, in a form isk_effect_set and
+ * scene files read back to the same bits; ISK_ERR_SIZE if buf is too small. */
+isk_status isk_effect_set(isk_effect *e, const char *section, const char *key, const char *value, isk_error *err);
+isk_status isk_effect_get(const isk_effect *e, const char *section, const char *key, char *buf, size_t size,
+                          isk_error *err);
+
+/* Adds a potential while running (the simulator's "add potential" click):
+ * a [force NAME] of kind potential with pot's fields (its exponent is the
+ * code's P), acting on every emitter from the next step, with the next free
+ * id.  Removing a force takes it out of the definition and of every emitter
+ * that referenced it.  Errors: ISK_ERR_NULL, ISK_ERR_RANGE (a name in use or
+ * not a valid name, a bad field, no such force), ISK_ERR_FULL, ISK_ERR_NOMEM. */
+isk_status isk_effect_add_potential(isk_effect *e, const char *name, const isk_potential *pot, isk_error *err);
+isk_status isk_effect_remove_force(isk_effect *e, const char *name, isk_error *err);
+
+/* The live potentials (where they are now, whether they are still on), in
+ * force order; *count receives how many.  Valid until the next change. */
+const isk_potential *isk_effect_potentials(const isk_effect *e, size_t *count);
+
+/* Substeps for every emitter that uses the scene's: the same as
+ * isk_effect_set(e, "scene", "substeps", ...) with an int (1..1000). */
 isk_status isk_effect_set_substeps(isk_effect *e, int substeps);
 
 /* The compiled stage lists, one line per stage, per emitter. */

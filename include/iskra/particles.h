@@ -73,6 +73,12 @@ void isk_particles_free(isk_particles *p);
 /* Makes room for at least `capacity` particles; all-or-nothing. */
 isk_status isk_particles_reserve(isk_particles *p, size_t capacity);
 
+/* Adds the optional columns of `flags` to a store that lacks them; the
+ * particles already there get what new ones get (default colour and size,
+ * oscillation 0).  All-or-nothing.  Errors: ISK_ERR_NULL, ISK_ERR_SIZE
+ * (unknown flag bits), ISK_ERR_NOMEM. */
+isk_status isk_particles_add_columns(isk_particles *p, unsigned flags);
+
 /* Appends one particle; *index (may be NULL) receives its slot.  Errors:
  * ISK_ERR_NULL, ISK_ERR_NAN (non-finite value), ISK_ERR_RANGE (m <= 0),
  * ISK_ERR_SIZE/ISK_ERR_NOMEM when the store cannot grow. */

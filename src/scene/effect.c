@@ -20,18 +20,20 @@ static void free_group(fx_group *g)
     fx_free_ramps(g);
 }
 
-/* Room for the group's picks and segments, sized by the definition. */
+int fx_emitter_oscillates(const isk_emitter_def *em)
+{
+    return em->osc_amp_max > 0 && em->osc_omega_max != 0;
+}
+
+/* Room for the group's picks (its segments grow as it compiles). */
 static isk_status alloc_group(isk_effect *e, fx_group *g)
 {
-    const isk_emitter_def *em = g->def;
-    const int osc = em->osc_amp_max > 0 && em->osc_omega_max != 0;
-    isk_status s = isk_particles_init(&g->store, 0, osc ? ISK_PARTICLES_OSC : 0);
+    isk_status s = isk_particles_init(&g->store, 0, fx_emitter_oscillates(g->def) ? ISK_PARTICLES_OSC : 0);
     if (s != ISK_OK)
         return s;
     g->pick_cap = e->pots_cap;
     g->pick = calloc(g->pick_cap ? g->pick_cap : 1, sizeof *g->pick);
-    g->defl = calloc(em->ndeflectors ? (size_t)em->ndeflectors : 1, sizeof *g->defl);
-    return g->pick && g->defl ? ISK_OK : ISK_ERR_NOMEM;
+    return g->pick ? ISK_OK : ISK_ERR_NOMEM;
 }
 
 /* The live potentials start as the definition's, ids 1, 2, ... in force
@@ -86,7 +88,7 @@ static isk_status build(isk_effect *e, isk_error *err)
 }
 
 /* Draw order: by `order`, ties by definition order (insertion sort: stable). */
-static void sort_draw_order(isk_effect *e)
+void fx_sort_draw_order(isk_effect *e)
 {
     const isk_effect_def *d = &e->def;
     for (int i = 0; i < e->ngroups; i++) {
@@ -135,7 +137,7 @@ isk_status isk_effect_create(isk_effect **out, const isk_effect_def *def, isk_er
         isk_effect_destroy(e);
         return isk_error_set(err, ISK_ERR_NOMEM, "effect: out of memory");
     }
-    sort_draw_order(e);
+    fx_sort_draw_order(e);
     if ((s = build(e, err)) != ISK_OK) {
         isk_effect_destroy(e);
         return s;
@@ -292,13 +294,9 @@ isk_status isk_effect_set_substeps(isk_effect *e, int substeps)
 {
     if (!e)
         return ISK_ERR_NULL;
-    if (substeps < 1 || substeps > 10000)
-        return ISK_ERR_RANGE;
-    e->def.substeps = substeps;
-    for (int i = 0; i < e->ngroups; i++)
-        if (!e->groups[i].def->substeps)
-            e->groups[i].substeps = substeps;
-    return ISK_OK;
+    char v[16];
+    snprintf(v, sizeof v, "%d", substeps);
+    return isk_effect_set(e, "scene", "substeps", v, NULL);
 }
 
 /* ---- inspection ------------------------------------------------------------ */

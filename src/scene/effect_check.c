@@ -131,9 +131,7 @@ static int check_stream(ctx *c, const isk_emitter_def *e)
         return bad_key(c, "speed_max", "must be >= speed_min (%.15g)", e->speed_min);
     if (e->count > e->capacity)
         return bad_key(c, "count", "a burst of %zu exceeds the capacity %zu", e->count, e->capacity);
-    if (e->rate == 0 && e->count == 0)
-        return bad_item(c, "rate", "a stream needs rate > 0 or a burst count > 0");
-    return 1;
+    return 1; /* rate 0 and no bursts is an idle stream: fine while running, a mistake in a file (the parser's) */
 }
 
 static int check_emitter(ctx *c)

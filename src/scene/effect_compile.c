@@ -12,6 +12,7 @@
  * list.  Recompiling is cheap (no allocation) and happens at create, reset,
  * after a live set, and after a frame in which a potential switched off. */
 #include <math.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include "effect_internal.h"
@@ -63,6 +64,13 @@ isk_status fx_compile(isk_effect *e, fx_group *g)
     g->integrator = em->integrator == ISK_INTEGRATE_INHERIT ? d->integrator : em->integrator;
     g->substeps = em->substeps ? em->substeps : d->substeps;
 
+    if (em->ndeflectors > g->defl_cap) {
+        isk_deflector *a = realloc(g->defl, sizeof *a * (size_t)em->ndeflectors);
+        if (!a)
+            return ISK_ERR_NOMEM;
+        g->defl = a;
+        g->defl_cap = em->ndeflectors;
+    }
     g->ndefl = em->ndeflectors;
     int can_kill = 0;
     for (int k = 0; k < g->ndefl; k++) {

@@ -63,7 +63,7 @@ struct fx_group {
     size_t *pick;                  /* room for every potential of the effect */
     size_t pick_cap;
     isk_deflector *defl;           /* the referenced deflectors' segments, in reference order */
-    int ndefl;
+    int ndefl, defl_cap;
     isk_integrator integrator;
     int substeps;
     double const_ax, const_ay;     /* the constant part of the acceleration (thesis jitter) */
@@ -111,8 +111,14 @@ isk_status fx_def_copy(isk_effect_def *dst, const isk_effect_def *src);
 /* pot.P from the force's exponent and law. */
 void fx_force_sync(isk_force_def *f);
 
+/* effect.c */
+void fx_sort_draw_order(isk_effect *e);
+/* The emitter's particles sway (they need the store's oscillation columns). */
+int fx_emitter_oscillates(const isk_emitter_def *em);
+
 /* effect_compile.c: (re)builds the group's lists from the definition and the
- * effect's live potentials; ISK_ERR_FULL if a list overflowed (a bug). */
+ * effect's live potentials; ISK_ERR_FULL if a list overflowed (a bug),
+ * ISK_ERR_NOMEM if the group's segments could not grow. */
 isk_status fx_compile(isk_effect *e, fx_group *g);
 isk_status fx_compile_all(isk_effect *e);
 void fx_describe_group(const isk_effect *e, const fx_group *g, FILE *out);

@@ -352,6 +352,9 @@ static const isk_key keys[] = {
      .meaning = "how it combines with the canvas"},
 
     /* [click] */
+    {CLICK("enabled"), .type = ISK_KEY_BOOL, CLK(enabled), .dflt = "false",
+     .dflt_doc = "true when the scene has a [click] section", .live = ALL,
+     .meaning = "a click explodes (isk_effect_click does nothing otherwise)"},
     {CLICK("explosion"), .type = ISK_KEY_ENUM, CLK(explosion), NAMES(isk_explosion_names), .dflt = "coulomb",
      .live = ALL, .meaning = "what a click sets off"},
     {CLICK("count"), .type = ISK_KEY_COUNT, CLK(count), IN(1, MAXP), .dflt = "1000", .live = ALL,

@@ -403,6 +403,12 @@ static int derived_defaults(parser *P, section *s)
         fx_force_sync(f);
         return 0;
     }
+    if (s->type == ISK_SECTION_EMITTER) {
+        const isk_emitter_def *e = &d->emitters[s->index];
+        if (e->source == ISK_SOURCE_STREAM && e->rate == 0 && e->count == 0)
+            return fail_at(P, s, line_of(s, "rate"), NULL, "a stream needs rate > 0 or a burst count > 0");
+        return 0;
+    }
     if (s->type != ISK_SECTION_BOUNDS)
         return 0;
     isk_bounds *b = &d->bounds;

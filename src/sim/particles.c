@@ -145,6 +145,48 @@ isk_status isk_particles_reserve(isk_particles *p, size_t capacity)
     return ISK_OK;
 }
 
+/* The value a new particle gets in column k (one element at dst). */
+static void column_default(const isk_particles *p, int k, unsigned char *dst)
+{
+    if (columns[k].field == offsetof(isk_particles, color))
+        memcpy(dst, &p->default_color, sizeof p->default_color);
+    else if (columns[k].field == offsetof(isk_particles, size))
+        memcpy(dst, &p->default_size, sizeof p->default_size);
+    else
+        memset(dst, 0, columns[k].elem); /* all-bits-zero is +0.0 */
+}
+
+isk_status isk_particles_add_columns(isk_particles *p, unsigned flags)
+{
+    if (!p)
+        return ISK_ERR_NULL;
+    if (flags & ~(unsigned)ISK_PARTICLES_FLAGS)
+        return ISK_ERR_SIZE;
+    unsigned want = p->flags | flags;
+    if (want == p->flags && p->x)
+        return ISK_OK;
+    isk_particles n = *p;
+    n.flags = want;
+    size_t cap = p->capacity ? p->capacity : 64;
+    if (!alloc_arrays(&n, cap, want))
+        return ISK_ERR_NOMEM;
+    for (int k = 0; k < NCOLUMNS; k++) {
+        unsigned char *dst = col_get(&n, &columns[k]), *src = col_get(p, &columns[k]);
+        if (!dst)
+            continue;
+        if (src && p->x) {
+            memcpy(dst, src, p->count * columns[k].elem);
+        } else {
+            for (size_t i = 0; i < p->count; i++)
+                column_default(p, k, dst + i * columns[k].elem);
+        }
+    }
+    free_arrays(p);
+    n.capacity = cap;
+    *p = n;
+    return ISK_OK;
+}
+
 isk_status isk_store_grow_for(isk_particles *p, size_t extra)
 {
     if (extra > ISK_PARTICLES_MAX - p->count)
