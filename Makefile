@@ -13,7 +13,11 @@
 
 PREFIX  ?= /usr/local
 DESTDIR ?=
-VERSION := 0.1.0
+# The version is written once, in include/iskra/version.h.
+version_part = $(shell sed -n 's/^\#define ISKRA_VERSION_$(1) \([0-9][0-9]*\).*/\1/p' include/iskra/version.h)
+VERSION := $(call version_part,MAJOR).$(call version_part,MINOR).$(call version_part,PATCH)
+# Before 1.0 a minor version may change the ABI: the soname carries it.
+SOVERSION := $(call version_part,MAJOR).$(call version_part,MINOR)
 
 CC      ?= cc
 ifeq ($(origin CC),default)
@@ -94,7 +98,9 @@ LIBS_SDL  = $(PKG_SDL_LIBS)
 .SECONDARY:
 .DEFAULT_GOAL := all
 
-all: lib $(TOOL) examples tests benches
+CXX_CHECK := $(BUILD)/tests/cxx_link
+
+all: lib $(TOOL) examples tests benches $(CXX_CHECK)
 
 lib: $(LIBA) $(LIBSO) $(SDLA) $(SDLSO)
 examples: $(EXAMPLES)
@@ -102,6 +108,8 @@ tests: $(TESTS)
 benches: $(BENCHES)
 
 # ---- objects -------------------------------------------------------------
+# SDL's compiler flags only where SDL's headers are read (iskra/sdl.h itself
+# needs none).
 $(BUILD)/obj/src/io/sdl_%.o: src/io/sdl_%.c
 	@mkdir -p $(dir $@)
 	$(call say,CC,$<)
@@ -110,7 +118,10 @@ $(BUILD)/obj/src/io/sdl_%.o: src/io/sdl_%.c
 $(BUILD)/obj/%.o: %.c
 	@mkdir -p $(dir $@)
 	$(call say,CC,$<)
-	$(Q)$(CC) $(ALL_CFLAGS) $(PKG_SDL_CFLAGS) -MMD -MP -c $< -o $@
+	$(Q)$(CC) $(ALL_CFLAGS) -MMD -MP -c $< -o $@
+
+# The one test that drives SDL itself.
+$(BUILD)/obj/tests/test_sdl.o: ALL_CFLAGS += $(PKG_SDL_CFLAGS)
 
 # ---- libraries -----------------------------------------------------------
 $(LIBA): $(LIB_OBJ)
@@ -118,20 +129,22 @@ $(LIBA): $(LIB_OBJ)
 	$(call say,AR,$@)
 	$(Q)rm -f $@ && ar rcs $@ $^
 
-$(LIBSO): $(LIB_OBJ)
+$(LIBSO): $(LIB_OBJ) src/exports.map
 	@mkdir -p $(dir $@)
 	$(call say,LD,$@)
-	$(Q)$(CC) -shared $(SANFLAGS) -Wl,-soname,libiskra.so.0 -o $@ $^ $(LDFLAGS) $(LIBS_CORE)
+	$(Q)$(CC) -shared $(SANFLAGS) -Wl,-soname,libiskra.so.$(SOVERSION) -Wl,--version-script,src/exports.map \
+	    -o $@ $(LIB_OBJ) $(LDFLAGS) $(LIBS_CORE)
 
 $(SDLA): $(SDL_OBJ)
 	@mkdir -p $(dir $@)
 	$(call say,AR,$@)
 	$(Q)rm -f $@ && ar rcs $@ $^
 
-$(SDLSO): $(SDL_OBJ) $(LIBSO)
+$(SDLSO): $(SDL_OBJ) $(LIBSO) src/exports.map
 	@mkdir -p $(dir $@)
 	$(call say,LD,$@)
-	$(Q)$(CC) -shared $(SANFLAGS) -Wl,-soname,libiskra-sdl.so.0 -o $@ $(SDL_OBJ) $(LDFLAGS) -L$(BUILD)/lib -liskra $(LIBS_SDL) $(LIBS_CORE)
+	$(Q)$(CC) -shared $(SANFLAGS) -Wl,-soname,libiskra-sdl.so.$(SOVERSION) -Wl,--version-script,src/exports.map \
+	    -o $@ $(SDL_OBJ) $(LDFLAGS) -L$(BUILD)/lib -liskra $(LIBS_SDL) $(LIBS_CORE)
 
 # ---- programs (statically linked against our own libraries) ----------------
 $(TOOL): $(TOOL_OBJ) $(SDLA) $(LIBA)
@@ -148,6 +161,18 @@ $(BUILD)/tests/%: $(BUILD)/obj/tests/%.o $(TEST_SUPPORT_OBJ) $(SDLA) $(LIBA)
 	@mkdir -p $(dir $@)
 	$(call say,LD,$@)
 	$(Q)$(CC) $(ALL_CFLAGS) -o $@ $< $(TEST_SUPPORT_OBJ) $(SDLA) $(LIBA) $(LDFLAGS) $(PKG_CRIT) $(PKG_INIH) $(LIBS_SDL) $(LIBS_CORE)
+
+# Every public header as C++: compiled with the C++ compiler, linked, run by
+# tests/run_all.sh.
+CXX     ?= c++
+ifeq ($(origin CXX),default)
+CXX := g++
+endif
+$(CXX_CHECK): tests/cxx_link.cpp $(wildcard include/*.h include/iskra/*.h) $(SDLA) $(LIBA)
+	@mkdir -p $(dir $@)
+	$(call say,CXX,$<)
+	$(Q)$(CXX) -std=c++11 $(OPT) -Wall -Wextra -Wpedantic $(WFLAGS) $(SANFLAGS) -Iinclude -o $@ $< $(SDLA) $(LIBA) \
+	    $(LDFLAGS) $(LIBS_SDL) $(LIBS_CORE)
 
 $(BUILD)/bench/%: $(BUILD)/obj/bench/%.o $(LIBA)
 	@mkdir -p $(dir $@)
@@ -241,11 +266,11 @@ install: lib $(TOOL)
 	install -m 644 include/iskra/*.h $(DESTDIR)$(INCDIR)/iskra/
 	install -m 644 $(LIBA) $(SDLA) $(DESTDIR)$(LIBDIR)/
 	install -m 755 $(LIBSO) $(DESTDIR)$(LIBDIR)/libiskra.so.$(VERSION)
-	ln -sf libiskra.so.$(VERSION) $(DESTDIR)$(LIBDIR)/libiskra.so.0
-	ln -sf libiskra.so.0 $(DESTDIR)$(LIBDIR)/libiskra.so
+	ln -sf libiskra.so.$(VERSION) $(DESTDIR)$(LIBDIR)/libiskra.so.$(SOVERSION)
+	ln -sf libiskra.so.$(SOVERSION) $(DESTDIR)$(LIBDIR)/libiskra.so
 	install -m 755 $(SDLSO) $(DESTDIR)$(LIBDIR)/libiskra-sdl.so.$(VERSION)
-	ln -sf libiskra-sdl.so.$(VERSION) $(DESTDIR)$(LIBDIR)/libiskra-sdl.so.0
-	ln -sf libiskra-sdl.so.0 $(DESTDIR)$(LIBDIR)/libiskra-sdl.so
+	ln -sf libiskra-sdl.so.$(VERSION) $(DESTDIR)$(LIBDIR)/libiskra-sdl.so.$(SOVERSION)
+	ln -sf libiskra-sdl.so.$(SOVERSION) $(DESTDIR)$(LIBDIR)/libiskra-sdl.so
 	install -m 755 $(TOOL) $(DESTDIR)$(BINDIR)/iskra
 	sed -e 's|@PREFIX@|$(PREFIX)|g' -e 's|@LIBDIR@|$(LIBDIR)|g' -e 's|@INCDIR@|$(INCDIR)|g' \
 	    -e 's|@VERSION@|$(VERSION)|g' iskra.pc.in > $(DESTDIR)$(PCDIR)/iskra.pc

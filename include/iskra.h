@@ -2,6 +2,7 @@
  *
  * iskra is a C11 2D particle toolkit with its own software rasterizer.
  * Modules (each header documents itself at the top):
+ *   iskra/version.h  ISKRA_VERSION_*       iskra/color.h   RGBA colours
  *   iskra/status.h   error codes           iskra/rng.h     seeded generator
  *   iskra/canvas.h   RGBA8 buffers         iskra/blend.h   blend modes
  *   iskra/draw.h     primitives            iskra/text.h    bitmap font
@@ -16,14 +17,18 @@
  *   iskra/shape.h    spawn shapes, velocity generators
  *   iskra/timestep.h fixed-step accumulator  iskra/effect.h  whole effects (stage lists)
  *   iskra/scene.h    INI scene files      iskra/presets.h  fire, smoke, sparks, ...
+ *   iskra/keys.h     every scene key: type, range, default, meaning (one table)
  *   iskra/chart.h    line charts (work-precision diagrams, log/linear axes)
  *   iskra/problems.h closed-form reference problems (integrator accuracy)
  * The SDL2 window lives in a separate library: #include "iskra/sdl.h" and
- * link libiskra-sdl (pkg-config iskra-sdl).
+ * link libiskra-sdl (pkg-config iskra-sdl).  Every header can be used from
+ * C++ (extern "C"; tests/cxx_link.cpp checks).
  */
 #ifndef ISKRA_H
 #define ISKRA_H
 
+#include "iskra/version.h"
+#include "iskra/color.h"
 #include "iskra/status.h"
 #include "iskra/rng.h"
 #include "iskra/canvas.h"
@@ -48,6 +53,7 @@
 #include "iskra/timestep.h"
 #include "iskra/effect.h"
 #include "iskra/scene.h"
+#include "iskra/keys.h"
 #include "iskra/presets.h"
 #include "iskra/chart.h"
 #include "iskra/problems.h"

@@ -37,6 +37,15 @@ for t in "$BUILD"/tests/test_*; do
         echo "ok   $name: $passing tests"
     fi
 done
+# Every public header as C++ (built by the Makefile with the C++ compiler).
+if [ -x "$BUILD/tests/cxx_link" ] && [ -z "${ISKRA_TEST_FILTER:-}" ]; then
+    if "$BUILD/tests/cxx_link" >"$log" 2>&1; then
+        passed=$((passed + 1)); echo "ok   cxx_link"
+    else
+        failed=$((failed + 1)); bad_bins="$bad_bins cxx_link"
+        echo "---- cxx_link ----"; cat "$log"
+    fi
+fi
 # The install check (make install + a pkg-config build) runs once, on the
 # normal build only: a sanitized libiskra would need sanitized users.
 if [ "$BUILD" = build ] && [ -z "${ISKRA_TEST_FILTER:-}" ]; then

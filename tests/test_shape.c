@@ -83,6 +83,8 @@ Test(shape, every_sample_satisfies_its_shape)
                 case ISK_SHAPE_ELLIPSE:
                     cr_assert_leq((u / s->a) * (u / s->a) + (v / s->b) * (v / s->b), 1 + 1e-9);
                     break;
+                default:
+                    cr_assert_fail("a shape kind without a test");
                 }
             }
         }

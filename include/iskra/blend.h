@@ -28,6 +28,10 @@
 
 #include "iskra/color.h"
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 typedef enum isk_blend {
     ISK_BLEND_REPLACE = 0,
     ISK_BLEND_OVER = 1,
@@ -52,5 +56,9 @@ void isk_blend_pixel_cov(uint8_t *dst, isk_color src, uint8_t coverage, isk_blen
 
 /* Name of a blend mode ("replace", "over", "add"), or NULL if invalid. */
 const char *isk_blend_name(isk_blend mode);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

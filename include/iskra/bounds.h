@@ -48,6 +48,10 @@
 #include "iskra/particles.h"
 #include "iskra/status.h"
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 enum {
     ISK_SIDE_TOP = 1u << 0,
     ISK_SIDE_RIGHT = 1u << 1,
@@ -93,5 +97,9 @@ void isk_bounds_apply(const isk_bounds *b, isk_particles *p, size_t begin, size_
 
 /* The same on raw arrays of n particles. */
 void isk_bounds_apply_arrays(const isk_bounds *b, size_t n, double *x, double *y, double *vx, double *vy);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

@@ -24,9 +24,12 @@
 #include "iskra/color.h"
 #include "iskra/status.h"
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 /* Largest accepted width or height. */
 #define ISK_CANVAS_MAX_DIM 16384
-
 
 typedef struct isk_canvas {
     uint8_t *pixels;   /* top-left pixel; R,G,B,A bytes */
@@ -80,5 +83,9 @@ typedef struct isk_canvas_diff {
  * opaque magenta and the others as a dimmed opaque copy of a, the
  * picture tests write next to a failing comparison. */
 int isk_canvas_compare(const isk_canvas *a, const isk_canvas *b, isk_canvas_diff *d, isk_canvas *diff_image);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

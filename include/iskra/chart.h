@@ -67,6 +67,10 @@
 #include "iskra/canvas.h"
 #include "iskra/status.h"
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 typedef enum isk_chart_marker {
     ISK_MARKER_NONE = 0,
     ISK_MARKER_CIRCLE,
@@ -145,5 +149,9 @@ isk_chart_style isk_chart_style_default(int index);
  *   ISK_ERR_RANGE  an unknown legend, dash or marker value; a data-fitted
  *                  axis with no placeable point (see Ranges above). */
 isk_status isk_chart_draw(const isk_chart *ch, isk_canvas *c);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

@@ -79,6 +79,10 @@
 #include "iskra/rng.h"
 #include "iskra/status.h"
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 /* Most hits handled for one particle in one call (bounces plus passes). */
 #define ISK_DEFLECT_MAX_HITS 8
 
@@ -134,5 +138,9 @@ isk_status isk_deflect(const isk_deflector *defs, int ndef, double *x, double *y
 /* The velocity map M of one deflector, applied to (vx, vy) (for emitters
  * and tests; no validation). */
 void isk_deflector_reflect(const isk_deflector *d, double *vx, double *vy);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

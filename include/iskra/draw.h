@@ -74,6 +74,10 @@
 #include "iskra/blend.h"
 #include "iskra/canvas.h"
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 void isk_draw_pixel(isk_canvas *c, int x, int y, isk_color color, isk_blend mode);
 void isk_fill_rect(isk_canvas *c, int x, int y, int w, int h, isk_color color, isk_blend mode);
 
@@ -126,5 +130,9 @@ int isk_dot_weights(double x, double y, uint8_t w[4]);
  * otherwise *ix, *iy receive the top-left pixel of the 2x2 block. */
 void isk_draw_dot_browser(isk_canvas *c, double x, double y, isk_color color, isk_blend mode);
 int isk_dot_weights_browser(double x, double y, int *ix, int *iy, uint8_t w[4]);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

@@ -47,6 +47,10 @@
 #include "iskra/status.h"
 #include "iskra/vec2.h"
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 #define ISK_EXPLODE_THESIS_LIMIT 10000u
 
 typedef enum isk_kick_target {
@@ -123,5 +127,9 @@ isk_status isk_multi_coulomb_release(isk_multi_coulomb *mc, isk_particles *p, is
 /* age += dt. */
 void isk_multi_coulomb_advance(isk_multi_coulomb *mc, double dt);
 int isk_multi_coulomb_done(const isk_multi_coulomb *mc);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

@@ -73,6 +73,10 @@
 #include "iskra/status.h"
 #include "iskra/vec2.h"
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 #define ISK_DIST_OFF (-1.0)
 
 /* Largest force component the sound centre rule lets a potential produce
@@ -163,5 +167,9 @@ void isk_force_potential(isk_potential *pot, size_t n, const double *x, const do
  * why), which is why vx, vy are not const. */
 void isk_forces_eval(isk_forces *f, size_t n, const double *x, const double *y, double *vx, double *vy,
                      const double *m, double *fx, double *fy, double *px, double *py, int with_drag);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

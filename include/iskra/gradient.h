@@ -44,6 +44,10 @@
 #include "iskra/color.h"
 #include "iskra/status.h"
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 #define ISK_GRADIENT_MAX_STOPS 16
 #define ISK_GRADIENT_DEFAULT_RES 1000
 #define ISK_GRADIENT_MAX_RES 65536
@@ -109,5 +113,9 @@ static inline double isk_scalar_gradient_at(const isk_scalar_gradient *g, double
 {
     return g->table[isk_gradient_index(g->res, g->fixup, t)];
 }
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

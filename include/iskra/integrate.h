@@ -58,6 +58,10 @@
 #include "iskra/forces.h"
 #include "iskra/particles.h"
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 typedef enum isk_integrator {
     ISK_INTEGRATE_INHERIT = -1, /* definitions only (an emitter of iskra/effect.h): use the
                                    enclosing scene's integrator; never valid for a step */
@@ -71,6 +75,13 @@ typedef enum isk_integrator {
 
 #define ISK_SIM_BLOCK 256
 
+/* 64-byte alignment in both languages the header is read in. */
+#ifdef __cplusplus
+#define ISK_ALIGN64 alignas(64)
+#else
+#define ISK_ALIGN64 _Alignas(64)
+#endif
+
 /* Decaying speeds are flushed to 0 below this (see the top). */
 #define ISK_FLUSH_TINY 1e-200
 
@@ -78,20 +89,20 @@ typedef enum isk_integrator {
  * accumulators, potential sum, RK4 copies, and the positions before the move
  * with the deflectors' kill flags. */
 typedef struct isk_scratch {
-    _Alignas(64) double fx[ISK_SIM_BLOCK];
-    _Alignas(64) double fy[ISK_SIM_BLOCK];
-    _Alignas(64) double px[ISK_SIM_BLOCK];
-    _Alignas(64) double py[ISK_SIM_BLOCK];
-    _Alignas(64) double x0[ISK_SIM_BLOCK];
-    _Alignas(64) double y0[ISK_SIM_BLOCK];
-    _Alignas(64) double vx0[ISK_SIM_BLOCK];
-    _Alignas(64) double vy0[ISK_SIM_BLOCK];
-    _Alignas(64) double sx[ISK_SIM_BLOCK];
-    _Alignas(64) double sy[ISK_SIM_BLOCK];
-    _Alignas(64) double svx[ISK_SIM_BLOCK];
-    _Alignas(64) double svy[ISK_SIM_BLOCK];
-    _Alignas(64) double x_old[ISK_SIM_BLOCK];
-    _Alignas(64) double y_old[ISK_SIM_BLOCK];
+    ISK_ALIGN64 double fx[ISK_SIM_BLOCK];
+    ISK_ALIGN64 double fy[ISK_SIM_BLOCK];
+    ISK_ALIGN64 double px[ISK_SIM_BLOCK];
+    ISK_ALIGN64 double py[ISK_SIM_BLOCK];
+    ISK_ALIGN64 double x0[ISK_SIM_BLOCK];
+    ISK_ALIGN64 double y0[ISK_SIM_BLOCK];
+    ISK_ALIGN64 double vx0[ISK_SIM_BLOCK];
+    ISK_ALIGN64 double vy0[ISK_SIM_BLOCK];
+    ISK_ALIGN64 double sx[ISK_SIM_BLOCK];
+    ISK_ALIGN64 double sy[ISK_SIM_BLOCK];
+    ISK_ALIGN64 double svx[ISK_SIM_BLOCK];
+    ISK_ALIGN64 double svy[ISK_SIM_BLOCK];
+    ISK_ALIGN64 double x_old[ISK_SIM_BLOCK];
+    ISK_ALIGN64 double y_old[ISK_SIM_BLOCK];
     unsigned char killed[ISK_SIM_BLOCK];
 } isk_scratch;
 
@@ -119,5 +130,9 @@ isk_status isk_integrate_range(isk_integrator method, isk_forces *f, isk_scratch
 extern const char *const isk_integrator_names[ISK_INTEGRATOR_COUNT];
 /* isk_integrator_names[method], or "?" if unknown. */
 const char *isk_integrator_name(isk_integrator method);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

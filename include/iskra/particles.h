@@ -35,6 +35,10 @@
 #include "iskra/color.h"
 #include "iskra/status.h"
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 enum {
     ISK_PARTICLES_COLOR = 1u << 0, /* allocate the colour array */
     ISK_PARTICLES_SIZE = 1u << 1,  /* allocate the size array */
@@ -96,5 +100,9 @@ size_t isk_particles_cull(isk_particles *p);
 void isk_particles_age(isk_particles *p, size_t begin, size_t end, double dt);
 
 void isk_particles_clear(isk_particles *p);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

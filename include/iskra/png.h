@@ -16,9 +16,17 @@
 #include "iskra/canvas.h"
 #include "iskra/status.h"
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 isk_status isk_png_write(const isk_canvas *c, const char *path, isk_error *err);
 
 /* Reads `path` into a newly initialised canvas (free with isk_canvas_free). */
 isk_status isk_png_read(isk_canvas *out, const char *path, isk_error *err);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

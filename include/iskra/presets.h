@@ -47,6 +47,10 @@
 
 #include "iskra/effect.h"
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 /* cocos2d ParticleFire: additive, orange (194, 64, 31) fading to black over
  * life 3 +- 0.25 s, 250 particles at 83.3/s from a 0.8 x 0.4 rectangle,
  * speed 0.6 +- 0.2 straight up +- 10 degrees, size 0.54, no gravity.  (Times
@@ -82,5 +86,9 @@ int isk_preset_snow(isk_effect_def *d, const char *name, isk_vec2 pos, double sc
  * speed 0.7 +- 0.4, life 5 +- 2 s, size 0.15, red (178, 25, 51) fading to
  * a transparent grey (128), overpaint, no gravity. */
 int isk_preset_explosion(isk_effect_def *d, const char *name, isk_vec2 pos, double scale);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

@@ -71,6 +71,10 @@
 #include "iskra/system.h"
 #include "iskra/vec2.h"
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 typedef enum isk_problem_kind {
     ISK_PROBLEM_PROJECTILE = 0, /* gravity + linear drag: exact r(t), v(t) */
     ISK_PROBLEM_OSCILLATOR,     /* P = 0 potential: harmonic, exact r, v, E, phase */
@@ -150,5 +154,9 @@ isk_status isk_problem_setup(const isk_problem *p, isk_system *s);
  * exact answer at s->time.  Errors: validation, ISK_ERR_NULL, ISK_ERR_SIZE
  * (the particle count is not p->count), ISK_ERR_NAN (s->time not finite). */
 isk_status isk_problem_measure(const isk_problem *p, const isk_system *s, isk_problem_error *out);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

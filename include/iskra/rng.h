@@ -26,6 +26,10 @@
 
 #include <stdint.h>
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 typedef struct isk_rng {
     uint32_t z1, z2, z3, z4;
 } isk_rng;
@@ -50,5 +54,9 @@ uint32_t isk_rng_below(isk_rng *r, uint32_t n);
  *   z0 = sqrt(-2 ln u1) cos(2 pi u2),  z1 = sqrt(-2 ln u1) sin(2 pi u2)
  * with u1 taken as 1 - uniform, in (0, 1], so ln 0 can never happen. */
 void isk_rng_normal2(isk_rng *r, double *z0, double *z1);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

@@ -40,6 +40,10 @@
 #include "iskra/effect.h"
 #include "iskra/status.h"
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 /* Parses a scene file. */
 isk_status isk_scene_load_file(isk_effect_def *out, const char *path, isk_error *err);
 
@@ -57,5 +61,9 @@ isk_status isk_scene_load(isk_effect_def *out, const char *name_or_path, isk_err
 int isk_scene_builtin_count(void);
 const char *isk_scene_builtin_name(int i);
 const char *isk_scene_builtin_text(const char *name);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

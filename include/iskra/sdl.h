@@ -41,6 +41,10 @@
 #include "iskra/canvas.h"
 #include "iskra/status.h"
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 typedef struct isk_window isk_window;
 
 /* Keys: printable ASCII keys are their lower-case character; others below. */
@@ -112,5 +116,9 @@ isk_status isk_window_run(isk_window *w, isk_canvas *canvas, isk_frame_fn frame,
 isk_status isk_window_push_event(isk_window *w, const isk_event *ev);
 
 void isk_window_close(isk_window *w);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

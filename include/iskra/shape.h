@@ -56,6 +56,10 @@
 #include "iskra/rng.h"
 #include "iskra/status.h"
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 typedef enum isk_shape_kind {
     ISK_SHAPE_POINT = 0,
     ISK_SHAPE_DISC,
@@ -125,5 +129,9 @@ void isk_velgen_sample(const isk_velgen *v, isk_rng *rng, double *vx, double *vy
  * writes nothing on error (NULL arrays with n > 0, NULL rng: ISK_ERR_NULL). */
 isk_status isk_shape_sample_n(const isk_shape *s, isk_rng *rng, size_t n, double *x, double *y);
 isk_status isk_velgen_sample_n(const isk_velgen *v, isk_rng *rng, size_t n, double *vx, double *vy);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

@@ -49,6 +49,10 @@
 
 #include "iskra/status.h"
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 #define ISK_SINLUT_MIN_N 16
 #define ISK_SINLUT_MAX_N 65536
 
@@ -93,7 +97,7 @@ double isk_sinlut_reduce_slow(const isk_sinlut *lut, double theta);
 static inline double isk_sinlut__steps(const isk_sinlut *lut, double theta, int *bad)
 {
     double t = theta * lut->scale;
-    if (!(fabs(t) < 0x1p62)) {
+    if (!(fabs(t) < 4611686018427387904.0)) { /* 2^62 */
         t = isk_sinlut_reduce_slow(lut, theta);
         if (t != t) {
             *bad = 1;
@@ -166,5 +170,9 @@ static inline double isk_sinlut_cos_lerp(const isk_sinlut *lut, double theta)
 {
     return isk_sinlut__lerp(lut, theta, (uint64_t)lut->n / 4u);
 }
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

@@ -60,6 +60,10 @@
 #include "iskra/canvas.h"
 #include "iskra/status.h"
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 #define ISK_SPRITE_MAX_SIZE 256
 #define ISK_SPRITE_CACHE_MAX 4096
 
@@ -129,5 +133,9 @@ void isk_sprite_cache_clear(isk_sprite_cache *cache);
 /* Sprites held, and sprites baked since creation (for tests and stats). */
 int isk_sprite_cache_count(const isk_sprite_cache *cache);
 long isk_sprite_cache_bakes(const isk_sprite_cache *cache);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

@@ -11,6 +11,10 @@
 
 #include <stddef.h>
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 typedef enum isk_status {
     ISK_OK = 0,
     ISK_ERR_NULL,        /* a required pointer argument was NULL */
@@ -42,5 +46,9 @@ isk_status isk_error_set(isk_error *err, isk_status status, const char *fmt, ...
     __attribute__((format(printf, 3, 4)))
 #endif
     ;
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

@@ -49,6 +49,10 @@
 #include "iskra/rng.h"
 #include "iskra/status.h"
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 typedef struct isk_system {
     isk_particles particles;
     isk_rng rng;
@@ -74,8 +78,9 @@ typedef struct isk_system {
 isk_status isk_system_init(isk_system *s, uint64_t seed, size_t capacity);
 void isk_system_free(isk_system *s);
 
-/* Validating setters.  ISK_ERR_NAN for non-finite, ISK_ERR_RANGE for
- * negative g/b, unknown integrator, substeps < 1, divisor <= 0. */
+/* Validating setters.  ISK_ERR_NAN for non-finite, ISK_ERR_RANGE for a
+ * negative drag b, an unknown integrator, substeps < 1.  Gravity may be
+ * negative (it then pulls upwards): only a non-finite g is refused. */
 isk_status isk_system_set_gravity(isk_system *s, double g);
 isk_status isk_system_set_drag(isk_system *s, double b);
 isk_status isk_system_set_integrator(isk_system *s, isk_integrator method);
@@ -104,5 +109,9 @@ isk_status isk_system_step(isk_system *s, double dt);
 
 /* The bounce stage alone, on the whole store (for draw-before-bounce). */
 void isk_system_bounce(isk_system *s);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

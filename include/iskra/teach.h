@@ -31,6 +31,10 @@
 #include "iskra/vec2.h"
 #include "iskra/view.h"
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 typedef struct isk_material_point {
     double m;      /* masa */
     isk_vec2 r;    /* position */
@@ -67,5 +71,9 @@ void isk_particle_zarobi(isk_particle *c, const isk_view *view, int top, int rig
 /* The same bounce against explicit walls (no view needed). */
 void isk_particle_zarobi_box(isk_particle *c, double xmin, double xmax, double ymin, double ymax,
                              int top, int right, int bottom, int left);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

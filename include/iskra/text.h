@@ -16,6 +16,10 @@
 #include "iskra/blend.h"
 #include "iskra/canvas.h"
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 /* Cell size at scale 1, including the one-pixel spacing column/row. */
 #define ISK_FONT_CELL_W 6
 #define ISK_FONT_CELL_H 9
@@ -48,5 +52,9 @@ void isk_draw_text(isk_canvas *c, int x, int y, const char *s, int scale,
 /* The 5x8 bitmap of byte `ch`: 8 rows, bit 4 of each row is the leftmost
  * pixel.  Returns the box glyph for bytes outside 32..126. */
 const uint8_t *isk_font_glyph(unsigned char ch);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

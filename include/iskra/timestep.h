@@ -20,6 +20,10 @@
 
 #include "iskra/status.h"
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 typedef struct isk_timestep {
     double dt;          /* simulation step, seconds (> 0) */
     double accumulated; /* real time not yet simulated, 0 <= accumulated < dt after advance */
@@ -44,5 +48,9 @@ double isk_timestep_alpha(const isk_timestep *ts);
 
 /* Forgets accumulated time (after a pause or a reset). */
 void isk_timestep_reset(isk_timestep *ts);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

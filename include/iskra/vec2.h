@@ -25,6 +25,10 @@
 
 #include <math.h>
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 typedef struct isk_vec2 {
     double x, y;
 } isk_vec2;
@@ -80,5 +84,9 @@ static inline isk_vec2 isk_vec2_rotate(isk_vec2 a, double deg)
     double c = cos(rad), s = sin(rad);
     return isk_vec2_make(a.x * c - a.y * s, a.x * s + a.y * c);
 }
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

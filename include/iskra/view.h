@@ -30,6 +30,10 @@
 #include "iskra/canvas.h"
 #include "iskra/status.h"
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 typedef enum isk_view_kind { ISK_VIEW_WINDOW = 0, ISK_VIEW_CAMERA = 1 } isk_view_kind;
 
 typedef struct isk_view {
@@ -73,5 +77,9 @@ void isk_world_polyline(isk_canvas *c, const isk_view *v, const double *xy, int 
 /* The same path as the browser's hairlines (isk_stroke_polyline_hairline). */
 void isk_world_polyline_hairline(isk_canvas *c, const isk_view *v, const double *xy, int n, int closed,
                                  isk_color color, isk_blend mode);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

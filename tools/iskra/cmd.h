@@ -4,7 +4,6 @@
 #ifndef ISKRA_TOOL_CMD_H
 #define ISKRA_TOOL_CMD_H
 
-#define ISKRA_TOOL_VERSION "0.1.0"
 
 typedef struct isk_command {
     const char *name;

@@ -3,6 +3,7 @@
 #include <string.h>
 
 #include "cmd.h"
+#include "iskra/version.h"
 
 static const isk_command commands[] = {
     {"list", "list the built-in scenes", cmd_list},
@@ -33,7 +34,7 @@ int main(int argc, char **argv)
         return 0;
     }
     if (!strcmp(argv[1], "--version")) {
-        printf("iskra %s\n", ISKRA_TOOL_VERSION);
+        printf("iskra %s\n", ISKRA_VERSION_STRING);
         return 0;
     }
     for (size_t i = 0; i < sizeof commands / sizeof commands[0]; i++)
