@@ -13,7 +13,7 @@ typedef struct seen {
     int fail_on; /* line to fail on, 0 = never */
 } seen;
 
-static int record(void *u, const char *sec, const char *key, const char *val, int line, isk_error *err)
+static isk_status record(void *u, const char *sec, const char *key, const char *val, int line, isk_error *err)
 {
     seen *s = u;
     if (s->fail_on == line)
@@ -25,7 +25,7 @@ static int record(void *u, const char *sec, const char *key, const char *val, in
         s->line[s->n] = line;
     }
     s->n++;
-    return 0;
+    return ISK_OK;
 }
 
 Test(ini_read, keys_with_line_numbers)

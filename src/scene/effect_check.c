@@ -18,56 +18,56 @@ typedef struct ctx {
     fx_report *r;
 } ctx;
 
-static int report(ctx *c, isk_status s, const char *key, int show_key, const char *fmt, va_list ap)
+static isk_status report(ctx *c, isk_status s, const char *key, int show_key, const char *fmt, va_list ap)
 {
     char msg[400];
     vsnprintf(msg, sizeof msg, fmt, ap);
     if (c->r->status == ISK_OK)
         c->r->status = s;
     c->r->emit(c->r, s, c->section, c->index, key, show_key, msg);
-    return 0;
+    return s;
 }
 
 /* "key: message" about one key. */
-static int bad_key(ctx *c, const char *key, const char *fmt, ...)
+static isk_status bad_key(ctx *c, const char *key, const char *fmt, ...)
 #if defined(__GNUC__)
     __attribute__((format(printf, 3, 4)))
 #endif
     ;
-static int bad_key(ctx *c, const char *key, const char *fmt, ...)
+static isk_status bad_key(ctx *c, const char *key, const char *fmt, ...)
 {
     va_list ap;
     va_start(ap, fmt);
-    report(c, ISK_ERR_RANGE, key, 1, fmt, ap);
+    isk_status s = report(c, ISK_ERR_RANGE, key, 1, fmt, ap);
     va_end(ap);
-    return 0;
+    return s;
 }
 
 /* "message" about the item, pointing at `key`'s line when it has one. */
-static int bad_item(ctx *c, const char *key, const char *fmt, ...)
+static isk_status bad_item(ctx *c, const char *key, const char *fmt, ...)
 #if defined(__GNUC__)
     __attribute__((format(printf, 3, 4)))
 #endif
     ;
-static int bad_item(ctx *c, const char *key, const char *fmt, ...)
+static isk_status bad_item(ctx *c, const char *key, const char *fmt, ...)
 {
     va_list ap;
     va_start(ap, fmt);
-    report(c, ISK_ERR_RANGE, key, 0, fmt, ap);
+    isk_status s = report(c, ISK_ERR_RANGE, key, 0, fmt, ap);
     va_end(ap);
-    return 0;
+    return s;
 }
 
 /* ---- per section: what spans fields -------------------------------------------- */
 
-static int check_view(ctx *c)
+static isk_status check_view(ctx *c)
 {
     const isk_effect_def *d = c->d;
     if (d->view_kind == ISK_VIEWDEF_CAMERA) {
         isk_view v;
         if (isk_view_camera(&v, d->width, d->height, d->zoom, d->tx, d->ty) != ISK_OK)
             return bad_item(c, "zoom", "zoom %.15g and pan (%.15g, %.15g) give no usable camera", d->zoom, d->tx, d->ty);
-        return 1;
+        return ISK_OK;
     }
     if (!(d->xmin < d->xmax))
         return bad_item(c, "xmax", "xmin (%.15g) must be less than xmax (%.15g)", d->xmin, d->xmax);
@@ -76,39 +76,39 @@ static int check_view(ctx *c)
     if (!isfinite(d->xmax - d->xmin) || !isfinite(d->ymax - d->ymin))
         return bad_item(c, "xmax", "the window is too large: its width or height (xmax - xmin, ymax - ymin) "
                                    "overflows a double");
-    return 1;
+    return ISK_OK;
 }
 
-static int check_force(ctx *c)
+static isk_status check_force(ctx *c)
 {
     const isk_force_def *f = &c->d->forces[c->index];
     if (f->kind != ISK_FORCE_POTENTIAL)
-        return 1;
+        return ISK_OK;
     isk_potential p = f->pot;
     if (isk_potential_set_law(&p, f->law, f->exponent) != ISK_OK || isk_potential_validate(&p) != ISK_OK)
         return bad_key(c, "exponent", "gives no usable potential");
-    return 1;
+    return ISK_OK;
 }
 
-static int check_deflector(ctx *c)
+static isk_status check_deflector(ctx *c)
 {
     const isk_deflector *g = &c->d->deflectors[c->index].seg;
     if (g->x0 == g->x1 && g->y0 == g->y1)
         return bad_key(c, "segment", "the two end points are the same (a segment needs a length)");
-    return 1;
+    return ISK_OK;
 }
 
-static int check_bounds(ctx *c)
+static isk_status check_bounds(ctx *c)
 {
     const isk_bounds *b = &c->d->bounds;
     if (!b->sides)
-        return 1;
+        return ISK_OK;
     if (!(b->xmin < b->xmax) || !(b->ymin < b->ymax))
         return bad_key(c, "window", "needs xmin < xmax and ymin < ymax, got %.15g, %.15g, %.15g, %.15g", b->xmin,
                        b->xmax, b->ymin, b->ymax);
     if (!(b->xmin + b->margin < b->xmax - b->margin) || !(b->ymin + b->margin < b->ymax - b->margin))
         return bad_item(c, "margin", "margin %.15g leaves no room between the walls", b->margin);
-    return 1;
+    return ISK_OK;
 }
 
 static size_t limit_of(const isk_emitter_def *e)
@@ -116,7 +116,7 @@ static size_t limit_of(const isk_emitter_def *e)
     return e->limit ? e->limit : ISK_EXPLODE_THESIS_LIMIT;
 }
 
-static int check_stream(ctx *c, const isk_emitter_def *e)
+static isk_status check_stream(ctx *c, const isk_emitter_def *e)
 {
     isk_shape s = {0};
     s.kind = e->shape;
@@ -131,10 +131,10 @@ static int check_stream(ctx *c, const isk_emitter_def *e)
         return bad_key(c, "speed_max", "must be >= speed_min (%.15g)", e->speed_min);
     if (e->count > e->capacity)
         return bad_key(c, "count", "a burst of %zu exceeds the capacity %zu", e->count, e->capacity);
-    return 1; /* rate 0 and no bursts is an idle stream: fine while running, a mistake in a file (the parser's) */
+    return ISK_OK; /* rate 0 and no bursts is an idle stream: fine while running, a mistake in a file (the parser's) */
 }
 
-static int check_emitter(ctx *c)
+static isk_status check_emitter(ctx *c)
 {
     const isk_effect_def *d = c->d;
     const isk_emitter_def *e = &d->emitters[c->index];
@@ -146,10 +146,12 @@ static int check_emitter(ctx *c)
         if (e->source == ISK_SOURCE_LAYER && (e->rect[0] > e->rect[1] || e->rect[2] > e->rect[3]))
             return bad_key(c, "rect", "needs xmin <= xmax and ymin <= ymax");
         break;
-    case ISK_SOURCE_STREAM:
-        if (!check_stream(c, e))
-            return 0;
+    case ISK_SOURCE_STREAM: {
+        isk_status s = check_stream(c, e);
+        if (s != ISK_OK)
+            return s;
         break;
+    }
     default:
         break;
     }
@@ -165,25 +167,25 @@ static int check_emitter(ctx *c)
             return bad_key(c, "slow_faithful", "the thesis slowing order needs the semi-implicit Euler integrator, "
                                                "sound fidelity and only gravity/wind forces");
     }
-    return 1;
+    return ISK_OK;
 }
 
-static int check_drawing(ctx *c)
+static isk_status check_drawing(ctx *c)
 {
     const isk_drawing_def *g = &c->d->drawings[c->index];
     if (g->kind == ISK_DRAWING_POLYLINE && (!g->points || g->npoints < 2))
         return bad_key(c, "points", "a polyline needs 2 or more points");
     if (g->kind == ISK_DRAWING_POLYGON && (!g->points || g->npoints < 3))
         return bad_key(c, "points", "a polygon needs 3 or more points");
-    return 1;
+    return ISK_OK;
 }
 
-static int check_click(ctx *c)
+static isk_status check_click(ctx *c)
 {
     const isk_effect_def *d = c->d;
     const isk_click_def *k = &d->click;
     if (!k->enabled && !k->at_start)
-        return 1;
+        return ISK_OK;
     if (d->nemitters == 0)
         return bad_item(c, "emitter", "the click needs an emitter to receive it");
     const isk_emitter_def *e = &d->emitters[k->emitter >= 0 ? k->emitter : 0];
@@ -191,10 +193,10 @@ static int check_click(ctx *c)
         return bad_key(c, "count", "%zu is more than emitter '%s' accepts in one explosion (its limit is %zu: raise "
                                    "it)",
                        k->count, e->name, limit_of(e));
-    return 1;
+    return ISK_OK;
 }
 
-typedef int (*section_check)(ctx *c);
+typedef isk_status (*section_check)(ctx *c);
 
 static const section_check section_checks[ISK_SECTION_COUNT] = {
     [ISK_SECTION_VIEW] = check_view,       [ISK_SECTION_FORCE] = check_force,
@@ -205,7 +207,7 @@ static const section_check section_checks[ISK_SECTION_COUNT] = {
 
 /* ---- the whole item, the whole definition ---------------------------------------- */
 
-int fx_check_item(const isk_effect_def *d, isk_section_kind s, int index, int rows, fx_report *r)
+isk_status fx_check_item(const isk_effect_def *d, isk_section_kind s, int index, int rows, fx_report *r)
 {
     ctx c = {d, s, index, r};
     const void *item = fx_section_item_c(d, s, index);
@@ -222,10 +224,10 @@ int fx_check_item(const isk_effect_def *d, isk_section_kind s, int index, int ro
         if (k->section == s && fx_key_applies(k, kind) && fx_key_check(k, item, d, why, sizeof why) != 0)
             return bad_key(&c, k->name, "%s", why);
     }
-    return section_checks[s] ? section_checks[s](&c) : 1;
+    return section_checks[s] ? section_checks[s](&c) : ISK_OK;
 }
 
-static int unique_names(const isk_effect_def *d, isk_section_kind s, fx_report *r)
+static isk_status unique_names(const isk_effect_def *d, isk_section_kind s, fx_report *r)
 {
     int n = fx_section_items(d, s);
     for (int i = 0; i < n; i++) {
@@ -236,19 +238,19 @@ static int unique_names(const isk_effect_def *d, isk_section_kind s, fx_report *
                 return bad_item(&c, NULL, "a second %s named '%s'", isk_section_name(s), a);
             }
     }
-    return 1;
+    return ISK_OK;
 }
 
-static int structure_fails(const isk_effect_def *d, fx_report *r, isk_status s, const char *msg)
+static isk_status structure_fails(const isk_effect_def *d, fx_report *r, isk_status s, const char *msg)
 {
     (void)d;
     if (r->status == ISK_OK)
         r->status = s;
     r->emit(r, s, ISK_SECTION_SCENE, 0, NULL, 0, msg);
-    return 0;
+    return s;
 }
 
-int fx_check_def(const isk_effect_def *d, fx_report *r)
+isk_status fx_check_def(const isk_effect_def *d, fx_report *r)
 {
     if (d->nforces < 0 || d->nforces > ISK_EFFECT_MAX_FORCES || d->nemitters < 0 ||
         d->nemitters > ISK_EFFECT_MAX_EMITTERS || d->ndeflectors < 0 || d->ndeflectors > ISK_EFFECT_MAX_DEFLECTORS ||
@@ -262,13 +264,13 @@ int fx_check_def(const isk_effect_def *d, fx_report *r)
         (d->ndrawings && !d->drawings))
         return structure_fails(d, r, ISK_ERR_NULL, "a count is set but its array is NULL");
     for (int s = 0; s < ISK_SECTION_COUNT; s++) {
-        if (!unique_names(d, (isk_section_kind)s, r))
-            return 0;
-        for (int i = 0; i < fx_section_items(d, (isk_section_kind)s); i++)
-            if (!fx_check_item(d, (isk_section_kind)s, i, 1, r))
-                return 0;
+        isk_status st = unique_names(d, (isk_section_kind)s, r);
+        for (int i = 0; st == ISK_OK && i < fx_section_items(d, (isk_section_kind)s); i++)
+            st = fx_check_item(d, (isk_section_kind)s, i, 1, r);
+        if (st != ISK_OK)
+            return st;
     }
-    return 1;
+    return ISK_OK;
 }
 
 /* ---- isk_effect_create's reporter ---------------------------------------------- */
@@ -301,5 +303,5 @@ static void create_emit(fx_report *r, isk_status s, isk_section_kind section, in
 isk_status fx_check(const isk_effect_def *d, isk_error *err)
 {
     create_report cr = {{create_emit, NULL, ISK_OK}, d, err};
-    return fx_check_def(d, &cr.r) ? ISK_OK : cr.r.status;
+    return fx_check_def(d, &cr.r);
 }

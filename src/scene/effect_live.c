@@ -227,15 +227,15 @@ isk_status isk_effect_set(isk_effect *e, const char *section, const char *key, c
     if (k->type == ISK_KEY_POINTS)
         copy.drawing.points = NULL; /* the parse allocates anew; the old points stay until it is accepted */
     char why[400];
-    if (fx_key_parse(k, &copy, value, d, why, sizeof why) != 0)
-        return isk_error_set(err, ISK_ERR_RANGE, "%s %s: %s", w.label, key, why);
+    if ((s = fx_key_parse(k, &copy, value, d, why, sizeof why)) != ISK_OK)
+        return isk_error_set(err, s, "%s %s: %s", w.label, key, why);
     memcpy(item, &copy, size);
     live_report lr = {{live_emit, NULL, ISK_OK}, d, err};
-    if (!fx_check_def(d, &lr.r)) {
+    if ((s = fx_check_def(d, &lr.r)) != ISK_OK) {
         if (k->type == ISK_KEY_POINTS)
             free(copy.drawing.points);
         memcpy(item, &old, size);
-        return lr.r.status != ISK_OK ? lr.r.status : ISK_ERR_RANGE;
+        return s;
     }
     if (k->type == ISK_KEY_POINTS)
         free(old.drawing.points);
@@ -261,7 +261,7 @@ isk_status isk_effect_get(const isk_effect *e, const char *section, const char *
         s = find_key(d, &w, key, &k, err);
     if (s != ISK_OK)
         return s;
-    if (fx_key_format(k, fx_section_item_c(d, w.section, w.index), d, buf, size) != 0) {
+    if (fx_key_format(k, fx_section_item_c(d, w.section, w.index), d, buf, size) != ISK_OK) {
         buf[0] = 0;
         return isk_error_set(err, ISK_ERR_SIZE, "%s %s: the value needs more than %zu bytes", w.label, key, size);
     }

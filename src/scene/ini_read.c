@@ -21,7 +21,7 @@ typedef struct reader {
     int failed;         /* a callback reported an error */
 } reader;
 
-int isk_ini_error(isk_error *err, const char *name, int line, const char *fmt, ...)
+isk_status isk_ini_error(isk_error *err, const char *name, int line, const char *fmt, ...)
 {
     if (err) {
         char msg[400];
@@ -31,7 +31,7 @@ int isk_ini_error(isk_error *err, const char *name, int line, const char *fmt, .
         va_end(ap);
         isk_error_set(err, ISK_ERR_FORMAT, "%s:%d: %s", name, line, msg);
     }
-    return 1;
+    return ISK_ERR_FORMAT;
 }
 
 static int blank(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\v' || c == '\f'; }
@@ -71,7 +71,7 @@ static const char *classify(reader *r, char *s, size_t len)
             size_t n = (size_t)(close - s - 1);
             memcpy(header, s + 1, n);
             header[n] = 0;
-            if (r->section(r->user, header, r->line, r->err)) {
+            if (r->section(r->user, header, r->line, r->err) != ISK_OK) {
                 r->failed = 1;
                 return NULL;
             }
@@ -135,7 +135,7 @@ static int on_pair(void *user, const char *section, const char *key, const char 
     reader *r = user;
     if (r->failed)
         return 0;
-    if (r->fn(r->user, section, key, value, r->line, r->err)) {
+    if (r->fn(r->user, section, key, value, r->line, r->err) != ISK_OK) {
         r->failed = 1;
         return 0;
     }

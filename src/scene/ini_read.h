@@ -23,8 +23,8 @@
  *                       const char *val, int line, isk_error *err) { ... }
  *     isk_ini_parse_file("scene.ini", on_key, &state, &err);
  *
- * A callback returns 0 on success; non-zero stops parsing (it has filled
- * *err, normally through isk_ini_error()).
+ * A callback returns ISK_OK to go on; any other isk_status stops parsing (it
+ * has filled *err, normally through isk_ini_error()).
  */
 #ifndef ISKRA_SCENE_INI_READ_H
 #define ISKRA_SCENE_INI_READ_H
@@ -38,12 +38,12 @@
 /* Largest accepted input, so a scene can never make us read without bound. */
 #define ISK_INI_MAX_BYTES (4u * 1024u * 1024u)
 
-typedef int (*isk_ini_key_fn)(void *user, const char *section, const char *key, const char *value,
+typedef isk_status (*isk_ini_key_fn)(void *user, const char *section, const char *key, const char *value,
                               int line, isk_error *err);
 
 /* Called for every section header, with the text between '[' and ']'
  * (untrimmed), before any key of the section. */
-typedef int (*isk_ini_section_fn)(void *user, const char *header, int line, isk_error *err);
+typedef isk_status (*isk_ini_section_fn)(void *user, const char *header, int line, isk_error *err);
 
 /* `text` is NUL-terminated; `name` is used in messages (a path or "<string>"). */
 isk_status isk_ini_parse_string(const char *text, const char *name, isk_ini_key_fn fn, void *user,
@@ -57,9 +57,9 @@ isk_status isk_ini_read_file(const char *path, char **text, isk_error *err);
 /* Reads the whole file (as isk_ini_read_file) and parses it. */
 isk_status isk_ini_parse_file(const char *path, isk_ini_key_fn fn, void *user, isk_error *err);
 
-/* Formats "NAME:LINE: message" into err with ISK_ERR_FORMAT; returns 1 so a
- * callback can `return isk_ini_error(...)`. */
-int isk_ini_error(isk_error *err, const char *name, int line, const char *fmt, ...)
+/* Formats "NAME:LINE: message" into err with ISK_ERR_FORMAT and returns
+ * ISK_ERR_FORMAT, so a callback can `return isk_ini_error(...)`. */
+isk_status isk_ini_error(isk_error *err, const char *name, int line, const char *fmt, ...)
 #if defined(__GNUC__)
     __attribute__((format(printf, 4, 5)))
 #endif

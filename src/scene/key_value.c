@@ -222,12 +222,12 @@ static int in_range(const isk_key *k, double v)
     return 1;
 }
 
-static int expected(const isk_key *k, char *why, size_t n, const char *got)
+static isk_status expected(const isk_key *k, char *why, size_t n, const char *got)
 {
     char want[200];
     fx_key_expect(k, want, sizeof want);
     snprintf(why, n, "expected %s, got \"%s\"", want, got);
-    return -1;
+    return ISK_ERR_RANGE;
 }
 
 /* A word standing for a value: its index, or -1. */
@@ -251,7 +251,7 @@ static const char *word_of(const isk_key *k, double v)
 /* ---- parse -------------------------------------------------------------------- */
 
 /* Exactly `count` comma-separated numbers, each within the row's range. */
-static int parse_numbers(const isk_key *k, const char *text, int count, double *out, char *why, size_t n)
+static isk_status parse_numbers(const isk_key *k, const char *text, int count, double *out, char *why, size_t n)
 {
     char buf[MAX_TEXT], want[160];
     char *items[SCV_LIST_MAX];
@@ -260,33 +260,33 @@ static int parse_numbers(const isk_key *k, const char *text, int count, double *
     if (strlen(text) >= sizeof buf || !scv_split(text, buf, sizeof buf, ',', items, SCV_LIST_MAX, &got) ||
         got != count) {
         snprintf(why, n, "expected %s, got \"%s\"", want, text);
-        return -1;
+        return ISK_ERR_RANGE;
     }
     for (int i = 0; i < count; i++)
         if (!scv_number(items[i], &out[i]) || !in_range(k, out[i])) {
             char w2[120];
             range_words(k, "a number", w2, sizeof w2);
             snprintf(why, n, "expected %s: item %d is not %s: \"%s\"", want, i + 1, w2, items[i]);
-            return -1;
+            return ISK_ERR_RANGE;
         }
-    return 0;
+    return ISK_OK;
 }
 
-static int parse_whole(const isk_key *k, const char *text, double *out, char *why, size_t n)
+static isk_status parse_whole(const isk_key *k, const char *text, double *out, char *why, size_t n)
 {
     int w = word_index(k, text);
     if (w >= 0) {
         *out = k->words[w].value;
-        return 0;
+        return ISK_OK;
     }
     double x = 0;
     if (!scv_number(text, &x) || x != floor(x) || !in_range(k, x))
         return expected(k, why, n, text);
     *out = x;
-    return 0;
+    return ISK_OK;
 }
 
-static int parse_stops(const isk_key *k, void *item, const char *text, char *why, size_t n)
+static isk_status parse_stops(const isk_key *k, void *item, const char *text, char *why, size_t n)
 {
     const int is_color = k->type == ISK_KEY_COLOR_STOPS;
     isk_color_ramp *cr = AT(isk_color_ramp, item, k->offset);
@@ -297,7 +297,7 @@ static int parse_stops(const isk_key *k, void *item, const char *text, char *why
             cr->n = 0;
         else
             sr->n = 0;
-        return 0;
+        return ISK_OK;
     }
     char buf[MAX_TEXT];
     char *items[SCV_LIST_MAX];
@@ -306,11 +306,11 @@ static int parse_stops(const isk_key *k, void *item, const char *text, char *why
     if (strlen(text) >= sizeof buf || !scv_split(text, buf, sizeof buf, ',', items, SCV_LIST_MAX, &count) ||
         count < 1) {
         snprintf(why, n, "expected stops \"%s\", got \"%s\"", form, text);
-        return -1;
+        return ISK_ERR_RANGE;
     }
     if (count > ISK_GRADIENT_MAX_STOPS) {
         snprintf(why, n, "at most %d stops, got %d", ISK_GRADIENT_MAX_STOPS, count);
-        return -1;
+        return ISK_ERR_RANGE;
     }
     isk_color_stop cs[ISK_GRADIENT_MAX_STOPS];
     isk_scalar_stop ss[ISK_GRADIENT_MAX_STOPS];
@@ -319,7 +319,7 @@ static int parse_stops(const isk_key *k, void *item, const char *text, char *why
         char *colon = strchr(items[i], ':');
         if (!colon) {
             snprintf(why, n, "stop %d: expected \"t:%s\", got \"%s\"", i + 1, is_color ? "colour" : "value", items[i]);
-            return -1;
+            return ISK_ERR_RANGE;
         }
         *colon = 0;
         char *tv = items[i], *val = colon + 1;
@@ -331,18 +331,18 @@ static int parse_stops(const isk_key *k, void *item, const char *text, char *why
         double t;
         if (!scv_number(tv, &t) || t < 0 || t > 1) {
             snprintf(why, n, "stop %d: expected a position t between 0 and 1, got \"%s\"", i + 1, tv);
-            return -1;
+            return ISK_ERR_RANGE;
         }
         if (t <= prev) {
             snprintf(why, n, "stop %d: positions must increase (%.15g after %.15g)", i + 1, t, prev);
-            return -1;
+            return ISK_ERR_RANGE;
         }
         prev = t;
         if (is_color) {
             cs[i].t = t;
             if (!scv_color(val, &cs[i].color)) {
                 snprintf(why, n, "stop %d: expected a colour (#rrggbb, #rrggbbaa or a name), got \"%s\"", i + 1, val);
-                return -1;
+                return ISK_ERR_RANGE;
             }
         } else {
             ss[i].t = t;
@@ -350,7 +350,7 @@ static int parse_stops(const isk_key *k, void *item, const char *text, char *why
                 char want[120];
                 range_words(k, "a number", want, sizeof want);
                 snprintf(why, n, "stop %d: expected %s, got \"%s\"", i + 1, want, val);
-                return -1;
+                return ISK_ERR_RANGE;
             }
         }
     }
@@ -361,17 +361,17 @@ static int parse_stops(const isk_key *k, void *item, const char *text, char *why
         memcpy(sr->stops, ss, sizeof ss[0] * (size_t)count);
         sr->n = count;
     }
-    return 0;
+    return ISK_OK;
 }
 
-static int parse_sides(const isk_key *k, void *item, const char *text, char *why, size_t n)
+static isk_status parse_sides(const isk_key *k, void *item, const char *text, char *why, size_t n)
 {
     static const char *const words[] = {"all", "none"};
     unsigned *sides = AT(unsigned, item, k->offset);
     int w = scv_lookup(text, words, 2);
     if (w >= 0) {
         *sides = w == 0 ? ISK_SIDE_ALL : 0u;
-        return 0;
+        return ISK_OK;
     }
     char buf[MAX_TEXT];
     char *items[SCV_LIST_MAX];
@@ -386,19 +386,19 @@ static int parse_sides(const isk_key *k, void *item, const char *text, char *why
             const char *s = scv_suggest(items[j], k->names, k->nnames);
             snprintf(why, n, "expected top, right, bottom or left (or all, none), got \"%s\"%s%s%s", items[j],
                      s ? "; did you mean \"" : "", s ? s : "", s ? "\"?" : "");
-            return -1;
+            return ISK_ERR_RANGE;
         }
         if (mask & (1u << sd)) {
             snprintf(why, n, "'%s' is listed twice", k->names[sd]);
-            return -1;
+            return ISK_ERR_RANGE;
         }
         mask |= 1u << sd;
     }
     *sides = mask;
-    return 0;
+    return ISK_OK;
 }
 
-static int parse_points(const isk_key *k, void *item, const char *text, char *why, size_t n)
+static isk_status parse_points(const isk_key *k, void *item, const char *text, char *why, size_t n)
 {
     char buf[MAX_TEXT];
     char *items[SCV_LIST_MAX];
@@ -409,19 +409,19 @@ static int parse_points(const isk_key *k, void *item, const char *text, char *wh
     double *pts = malloc(sizeof *pts * (size_t)count);
     if (!pts) {
         snprintf(why, n, "out of memory");
-        return -1;
+        return ISK_ERR_NOMEM;
     }
     for (int j = 0; j < count; j++)
         if (!scv_number(items[j], &pts[j])) {
             free(pts);
             snprintf(why, n, "item %d is not a number: \"%s\"", j + 1, items[j]);
-            return -1;
+            return ISK_ERR_RANGE;
         }
     double **field = AT(double *, item, k->offset);
     free(*field);
     *field = pts;
     *AT(int, item, k->aux) = count / 2;
-    return 0;
+    return ISK_OK;
 }
 
 static int name_ok(const char *s)
@@ -436,20 +436,20 @@ static int name_ok(const char *s)
 }
 
 /* "no force named 'gravty'; did you mean 'gravity'?" */
-static int unknown_name(const isk_key *k, const isk_effect_def *d, const char *name, char *why, size_t n)
+static isk_status unknown_name(const isk_key *k, const isk_effect_def *d, const char *name, char *why, size_t n)
 {
     const char *sec = isk_section_name(k->refers);
     int count = d ? fx_section_items(d, k->refers) : 0;
     if (count == 0) {
         snprintf(why, n, "no %s named '%s' (the scene defines no [%s NAME] section)", sec, name, sec);
-        return -1;
+        return ISK_ERR_RANGE;
     }
     const char *names[ISK_EFFECT_MAX_DEFLECTORS];
     for (int i = 0; i < count && i < ISK_EFFECT_MAX_DEFLECTORS; i++)
         names[i] = fx_item_name(d, k->refers, i);
     const char *s = scv_suggest(name, names, count);
     snprintf(why, n, "no %s named '%s'%s%s%s", sec, name, s ? "; did you mean '" : "", s ? s : "", s ? "'?" : "");
-    return -1;
+    return ISK_ERR_RANGE;
 }
 
 static int find_name(const isk_effect_def *d, isk_section_kind s, const char *name)
@@ -461,7 +461,7 @@ static int find_name(const isk_effect_def *d, isk_section_kind s, const char *na
     return -1;
 }
 
-static int parse_refs(const isk_key *k, void *item, const char *text, const isk_effect_def *d, char *why, size_t n)
+static isk_status parse_refs(const isk_key *k, void *item, const char *text, const isk_effect_def *d, char *why, size_t n)
 {
     int *idx = AT(int, item, k->offset);
     int *count = AT(int, item, k->aux);
@@ -474,7 +474,7 @@ static int parse_refs(const isk_key *k, void *item, const char *text, const isk_
         for (int i = 0; i < m; i++)
             idx[i] = i;
         *count = m;
-        return 0;
+        return ISK_OK;
     }
     char buf[MAX_TEXT];
     char *items[SCV_LIST_MAX];
@@ -490,21 +490,21 @@ static int parse_refs(const isk_key *k, void *item, const char *text, const isk_
         for (int q = 0; q < j; q++)
             if (got[q] == i) {
                 snprintf(why, n, "'%s' is listed twice", items[j]);
-                return -1;
+                return ISK_ERR_RANGE;
             }
         got[j] = i;
     }
     memcpy(idx, got, sizeof got[0] * (size_t)m);
     *count = m;
-    return 0;
+    return ISK_OK;
 }
 
-static int parse_ref(const isk_key *k, void *item, const char *text, const isk_effect_def *d, char *why, size_t n)
+static isk_status parse_ref(const isk_key *k, void *item, const char *text, const isk_effect_def *d, char *why, size_t n)
 {
     int *field = AT(int, item, k->offset);
     if (!*text) {
         *field = -1;
-        return 0;
+        return ISK_OK;
     }
     if (!name_ok(text))
         return expected(k, why, n, text);
@@ -512,12 +512,12 @@ static int parse_ref(const isk_key *k, void *item, const char *text, const isk_e
     if (i < 0)
         return unknown_name(k, d, text, why, n);
     *field = i;
-    return 0;
+    return ISK_OK;
 }
 
 /* Degrees ("90"), or radians with a suffix ("0.6 rad"): a radian value from
  * a C program then arrives bit for bit, where degrees would be rounded twice. */
-static int parse_angle(const isk_key *k, void *item, const char *text, char *why, size_t n)
+static isk_status parse_angle(const isk_key *k, void *item, const char *text, char *why, size_t n)
 {
     double *field = AT(double, item, k->offset);
     size_t len = strlen(text);
@@ -537,15 +537,15 @@ static int parse_angle(const isk_key *k, void *item, const char *text, char *why
         if (!scv_number(buf, &v) || !in_range(&r, v))
             return expected(k, why, n, text);
         *field = v;
-        return 0;
+        return ISK_OK;
     }
     if (!scv_number(text, &v) || !in_range(k, v))
         return expected(k, why, n, text);
     *field = v * (PI / 180.0);
-    return 0;
+    return ISK_OK;
 }
 
-int fx_key_parse(const isk_key *k, void *item, const char *text, const isk_effect_def *d, char *why, size_t n)
+isk_status fx_key_parse(const isk_key *k, void *item, const char *text, const isk_effect_def *d, char *why, size_t n)
 {
     double x = 0, q[4];
     int i;
@@ -554,32 +554,32 @@ int fx_key_parse(const isk_key *k, void *item, const char *text, const isk_effec
         int w = word_index(k, text);
         if (w >= 0) {
             *AT(double, item, k->offset) = k->words[w].value;
-            return 0;
+            return ISK_OK;
         }
         if (!scv_number(text, &x) || !in_range(k, x))
             return expected(k, why, n, text);
         *AT(double, item, k->offset) = x;
-        return 0;
+        return ISK_OK;
     }
     case ISK_KEY_WHOLE:
         if (parse_whole(k, text, &x, why, n))
-            return -1;
+            return ISK_ERR_RANGE;
         *AT(int, item, k->offset) = (int)x;
-        return 0;
+        return ISK_OK;
     case ISK_KEY_LONG:
         if (parse_whole(k, text, &x, why, n))
-            return -1;
+            return ISK_ERR_RANGE;
         *AT(long, item, k->offset) = (long)x;
-        return 0;
+        return ISK_OK;
     case ISK_KEY_COUNT:
         if (parse_whole(k, text, &x, why, n))
-            return -1;
+            return ISK_ERR_RANGE;
         *AT(size_t, item, k->offset) = (size_t)x;
-        return 0;
+        return ISK_OK;
     case ISK_KEY_SEED:
-        return scv_u64(text, AT(uint64_t, item, k->offset)) ? 0 : expected(k, why, n, text);
+        return scv_u64(text, AT(uint64_t, item, k->offset)) ? ISK_OK : expected(k, why, n, text);
     case ISK_KEY_BOOL:
-        return scv_bool(text, AT(int, item, k->offset)) ? 0 : expected(k, why, n, text);
+        return scv_bool(text, AT(int, item, k->offset)) ? ISK_OK : expected(k, why, n, text);
     case ISK_KEY_COLOR:
         if (!scv_color(text, AT(isk_color, item, k->offset))) {
             const char *names[64];
@@ -591,14 +591,14 @@ int fx_key_parse(const isk_key *k, void *item, const char *text, const isk_effec
             fx_key_expect(k, want, sizeof want);
             snprintf(why, n, "expected %s, got \"%s\"%s%s%s", want, text, s ? "; did you mean \"" : "", s ? s : "",
                      s ? "\"?" : "");
-            return -1;
+            return ISK_ERR_RANGE;
         }
-        return 0;
+        return ISK_OK;
     case ISK_KEY_ENUM: {
         int w = word_index(k, text);
         if (w >= 0) {
             *AT(int, item, k->offset) = (int)k->words[w].value;
-            return 0;
+            return ISK_OK;
         }
         i = scv_lookup(text, k->names, k->nnames);
         if (i < 0) {
@@ -607,65 +607,65 @@ int fx_key_parse(const isk_key *k, void *item, const char *text, const isk_effec
             fx_key_expect(k, want, sizeof want);
             snprintf(why, n, "expected %s, got \"%s\"%s%s%s", want, text, s ? "; did you mean \"" : "", s ? s : "",
                      s ? "\"?" : "");
-            return -1;
+            return ISK_ERR_RANGE;
         }
         *AT(int, item, k->offset) = i;
-        return 0;
+        return ISK_OK;
     }
     case ISK_KEY_VECTOR:
         if (parse_numbers(k, text, 2, q, why, n))
-            return -1;
+            return ISK_ERR_RANGE;
         memcpy(AT(double, item, k->offset), q, 2 * sizeof q[0]);
-        return 0;
+        return ISK_OK;
     case ISK_KEY_POINT: {
         static const char *const none[] = {"none", "off"};
         if (scv_lookup(text, none, 2) >= 0) {
             *AT(int, item, k->aux) = 0;
-            return 0;
+            return ISK_OK;
         }
         if (parse_numbers(k, text, 2, q, why, n))
-            return -1;
+            return ISK_ERR_RANGE;
         memcpy(AT(double, item, k->offset), q, 2 * sizeof q[0]);
         *AT(int, item, k->aux) = 1;
-        return 0;
+        return ISK_OK;
     }
     case ISK_KEY_ANGLE: return parse_angle(k, item, text, why, n);
     case ISK_KEY_PAIR:
         if (parse_numbers(k, text, 2, q, why, n))
-            return -1;
+            return ISK_ERR_RANGE;
         if (q[0] > q[1]) {
             snprintf(why, n, "min (%.15g) is greater than max (%.15g)", q[0], q[1]);
-            return -1;
+            return ISK_ERR_RANGE;
         }
         memcpy(AT(double, item, k->offset), q, 2 * sizeof q[0]);
-        return 0;
+        return ISK_OK;
     case ISK_KEY_NUMBERS4:
         if (parse_numbers(k, text, 4, q, why, n))
-            return -1;
+            return ISK_ERR_RANGE;
         memcpy(AT(double, item, k->offset), q, 4 * sizeof q[0]);
-        return 0;
+        return ISK_OK;
     case ISK_KEY_COLOR_STOPS:
     case ISK_KEY_SCALAR_STOPS: return parse_stops(k, item, text, why, n);
     case ISK_KEY_TEXT: {
         size_t len = strlen(text);
         if (len >= k->aux) {
             snprintf(why, n, "text longer than %zu characters", k->aux - 1);
-            return -1;
+            return ISK_ERR_RANGE;
         }
         memcpy(AT(char, item, k->offset), text, len + 1);
-        return 0;
+        return ISK_OK;
     }
     case ISK_KEY_SIDES: return parse_sides(k, item, text, why, n);
     case ISK_KEY_POINTS: return parse_points(k, item, text, why, n);
     case ISK_KEY_REFS: return parse_refs(k, item, text, d, why, n);
     case ISK_KEY_REF: return parse_ref(k, item, text, d, why, n);
-    default: snprintf(why, n, "unknown key type"); return -1;
+    default: snprintf(why, n, "unknown key type"); return ISK_ERR_RANGE;
     }
 }
 
 /* ---- check -------------------------------------------------------------------- */
 
-static int refused(const isk_key *k, const void *item, const isk_effect_def *d, char *why, size_t n)
+static isk_status refused(const isk_key *k, const void *item, const isk_effect_def *d, char *why, size_t n)
 {
     char got[MAX_TEXT];
     if (fx_key_format(k, item, d, got, sizeof got) != 0)
@@ -681,13 +681,13 @@ static int numbers_ok(const isk_key *k, const double *v, int count)
     return 1;
 }
 
-int fx_key_check(const isk_key *k, const void *item, const isk_effect_def *d, char *why, size_t n)
+isk_status fx_key_check(const isk_key *k, const void *item, const isk_effect_def *d, char *why, size_t n)
 {
     switch (k->type) {
     case ISK_KEY_NUMBER: {
         double v = *AT_C(double, item, k->offset);
         if (word_of(k, v) || (isfinite(v) && in_range(k, v)))
-            return 0;
+            return ISK_OK;
         return refused(k, item, d, why, n);
     }
     case ISK_KEY_WHOLE:
@@ -696,32 +696,32 @@ int fx_key_check(const isk_key *k, const void *item, const isk_effect_def *d, ch
         double v = k->type == ISK_KEY_WHOLE ? (double)*AT_C(int, item, k->offset)
                    : k->type == ISK_KEY_LONG ? (double)*AT_C(long, item, k->offset)
                                              : (double)*AT_C(size_t, item, k->offset);
-        return word_of(k, v) || in_range(k, v) ? 0 : refused(k, item, d, why, n);
+        return word_of(k, v) || in_range(k, v) ? ISK_OK : refused(k, item, d, why, n);
     }
     case ISK_KEY_BOOL: {
         int v = *AT_C(int, item, k->offset);
-        return v == 0 || v == 1 ? 0 : refused(k, item, d, why, n);
+        return v == 0 || v == 1 ? ISK_OK : refused(k, item, d, why, n);
     }
     case ISK_KEY_ENUM: {
         int v = *AT_C(int, item, k->offset);
-        return (v >= 0 && v < k->nnames) || word_of(k, v) ? 0 : refused(k, item, d, why, n);
+        return (v >= 0 && v < k->nnames) || word_of(k, v) ? ISK_OK : refused(k, item, d, why, n);
     }
     case ISK_KEY_VECTOR:
     case ISK_KEY_NUMBERS4: {
         const double *v = AT_C(double, item, k->offset);
-        return numbers_ok(k, v, k->type == ISK_KEY_VECTOR ? 2 : 4) ? 0 : refused(k, item, d, why, n);
+        return numbers_ok(k, v, k->type == ISK_KEY_VECTOR ? 2 : 4) ? ISK_OK : refused(k, item, d, why, n);
     }
     case ISK_KEY_POINT: {
         int given = *AT_C(int, item, k->aux);
         const double *v = AT_C(double, item, k->offset);
-        return given == 0 || (given == 1 && numbers_ok(k, v, 2)) ? 0 : refused(k, item, d, why, n);
+        return given == 0 || (given == 1 && numbers_ok(k, v, 2)) ? ISK_OK : refused(k, item, d, why, n);
     }
     case ISK_KEY_ANGLE: {
         double v = *AT_C(double, item, k->offset);
         isk_key r = *k;
         r.min = k->min * (PI / 180.0);
         r.max = k->max * (PI / 180.0);
-        return isfinite(v) && in_range(&r, v) ? 0 : refused(k, item, d, why, n);
+        return isfinite(v) && in_range(&r, v) ? ISK_OK : refused(k, item, d, why, n);
     }
     case ISK_KEY_PAIR: {
         const double *v = AT_C(double, item, k->offset);
@@ -729,57 +729,57 @@ int fx_key_check(const isk_key *k, const void *item, const isk_effect_def *d, ch
             return refused(k, item, d, why, n);
         if (v[0] > v[1]) {
             snprintf(why, n, "min (%.15g) is greater than max (%.15g)", v[0], v[1]);
-            return -1;
+            return ISK_ERR_RANGE;
         }
-        return 0;
+        return ISK_OK;
     }
     case ISK_KEY_COLOR_STOPS: {
         const isk_color_ramp *r = AT_C(isk_color_ramp, item, k->offset);
         if (r->n == 0 || (r->n > 0 && r->n <= ISK_GRADIENT_MAX_STOPS && isk_color_stops_check(r->stops, r->n) == ISK_OK))
-            return 0;
+            return ISK_OK;
         snprintf(why, n, "1..%d stops with t strictly increasing in [0, 1] expected", ISK_GRADIENT_MAX_STOPS);
-        return -1;
+        return ISK_ERR_RANGE;
     }
     case ISK_KEY_SCALAR_STOPS: {
         const isk_scalar_ramp *r = AT_C(isk_scalar_ramp, item, k->offset);
         if (r->n == 0)
-            return 0;
+            return ISK_OK;
         if (r->n < 0 || r->n > ISK_GRADIENT_MAX_STOPS || isk_scalar_stops_check(r->stops, r->n) != ISK_OK) {
             snprintf(why, n, "1..%d finite stops with t strictly increasing in [0, 1] expected",
                      ISK_GRADIENT_MAX_STOPS);
-            return -1;
+            return ISK_ERR_RANGE;
         }
         for (int i = 0; i < r->n; i++)
             if (!in_range(k, r->stops[i].value)) {
                 char want[120];
                 range_words(k, "a number", want, sizeof want);
                 snprintf(why, n, "stop %d: expected %s, got \"%.17g\"", i + 1, want, r->stops[i].value);
-                return -1;
+                return ISK_ERR_RANGE;
             }
-        return 0;
+        return ISK_OK;
     }
     case ISK_KEY_TEXT:
         if (memchr(AT_C(char, item, k->offset), 0, k->aux))
-            return 0;
+            return ISK_OK;
         snprintf(why, n, "text longer than %zu characters (or not terminated)", k->aux - 1);
-        return -1;
+        return ISK_ERR_RANGE;
     case ISK_KEY_SIDES:
-        return *AT_C(unsigned, item, k->offset) & ~(unsigned)ISK_SIDE_ALL ? refused(k, item, d, why, n) : 0;
+        return *AT_C(unsigned, item, k->offset) & ~(unsigned)ISK_SIDE_ALL ? refused(k, item, d, why, n) : ISK_OK;
     case ISK_KEY_POINTS: {
         const double *pts = *AT_C(double *, item, k->offset);
         int count = *AT_C(int, item, k->aux);
         if (count == 0 && !pts)
-            return 0; /* whether points are needed is the section's check */
+            return ISK_OK; /* whether points are needed is the section's check */
         if (!pts || count < (int)k->min || count > 100000) {
             snprintf(why, n, "expected %.15g to 100000 points (and the array), got %d", k->min, count);
-            return -1;
+            return ISK_ERR_RANGE;
         }
         for (int i = 0; i < 2 * count; i++)
             if (!isfinite(pts[i])) {
                 snprintf(why, n, "points must be finite (item %d is %.17g)", i + 1, pts[i]);
-                return -1;
+                return ISK_ERR_RANGE;
             }
-        return 0;
+        return ISK_OK;
     }
     case ISK_KEY_REFS: {
         const int *idx = AT_C(int, item, k->offset);
@@ -788,37 +788,37 @@ int fx_key_check(const isk_key *k, const void *item, const isk_effect_def *d, ch
         int total = d ? fx_section_items(d, k->refers) : 0;
         if (count < 0 || count > cap) {
             snprintf(why, n, "0..%d references expected, got %d", cap, count);
-            return -1;
+            return ISK_ERR_RANGE;
         }
         for (int i = 0; i < count; i++) {
             if (idx[i] < 0 || idx[i] >= total) {
                 snprintf(why, n, "%s reference %d does not exist", isk_section_name(k->refers), idx[i]);
-                return -1;
+                return ISK_ERR_RANGE;
             }
             for (int j = 0; j < i; j++)
                 if (idx[j] == idx[i]) {
                     snprintf(why, n, "'%s' is listed twice", fx_item_name(d, k->refers, idx[i]));
-                    return -1;
+                    return ISK_ERR_RANGE;
                 }
         }
-        return 0;
+        return ISK_OK;
     }
     case ISK_KEY_REF: {
         int v = *AT_C(int, item, k->offset);
         int total = d ? fx_section_items(d, k->refers) : 0;
         if (v >= -1 && v < total)
-            return 0;
+            return ISK_OK;
         snprintf(why, n, "%s %d does not exist", isk_section_name(k->refers), v);
-        return -1;
+        return ISK_ERR_RANGE;
     }
     default:
-        return 0; /* SEED, COLOR: every value is valid */
+        return ISK_OK; /* SEED, COLOR: every value is valid */
     }
 }
 
 /* ---- format ------------------------------------------------------------------- */
 
-static int put(char *buf, size_t n, const char *fmt, ...)
+static isk_status put(char *buf, size_t n, const char *fmt, ...)
 #if defined(__GNUC__)
     __attribute__((format(printf, 3, 4)))
 #endif
@@ -826,13 +826,13 @@ static int put(char *buf, size_t n, const char *fmt, ...)
 
 #include <stdarg.h>
 
-static int put(char *buf, size_t n, const char *fmt, ...)
+static isk_status put(char *buf, size_t n, const char *fmt, ...)
 {
     va_list ap;
     va_start(ap, fmt);
     int r = vsnprintf(buf, n, fmt, ap);
     va_end(ap);
-    return r >= 0 && (size_t)r < n ? 0 : -1;
+    return r >= 0 && (size_t)r < n ? ISK_OK : ISK_ERR_SIZE;
 }
 
 /* Shortest decimal that reads back to the same double, without an
@@ -850,7 +850,7 @@ static void num(char *buf, size_t n, double v)
     }
 }
 
-static int colour_text(char *buf, size_t n, isk_color c)
+static isk_status colour_text(char *buf, size_t n, isk_color c)
 {
     const char *name = scv_color_name(c);
     if (name)
@@ -860,7 +860,7 @@ static int colour_text(char *buf, size_t n, isk_color c)
     return put(buf, n, "#%02x%02x%02x%02x", c.r, c.g, c.b, c.a);
 }
 
-static int numbers_text(char *buf, size_t n, const double *v, int count)
+static isk_status numbers_text(char *buf, size_t n, const double *v, int count)
 {
     size_t used = 0;
     buf[0] = 0;
@@ -869,17 +869,17 @@ static int numbers_text(char *buf, size_t n, const double *v, int count)
         num(t, sizeof t, v[i]);
         int r = snprintf(buf + used, n - used, "%s%s", i ? ", " : "", t);
         if (r < 0 || (size_t)r >= n - used)
-            return -1;
+            return ISK_ERR_RANGE;
         used += (size_t)r;
     }
-    return 0;
+    return ISK_OK;
 }
 
-int fx_key_format(const isk_key *k, const void *item, const isk_effect_def *d, char *buf, size_t n)
+isk_status fx_key_format(const isk_key *k, const void *item, const isk_effect_def *d, char *buf, size_t n)
 {
     char t[40];
     if (n == 0)
-        return -1;
+        return ISK_ERR_RANGE;
     switch (k->type) {
     case ISK_KEY_NUMBER: {
         double v = *AT_C(double, item, k->offset);
@@ -946,15 +946,15 @@ int fx_key_format(const isk_key *k, const void *item, const isk_effect_def *d, c
             num(tv, sizeof tv, is_color ? cr->stops[i].t : sr->stops[i].t);
             if (is_color) {
                 if (colour_text(val, sizeof val, cr->stops[i].color))
-                    return -1;
+                    return ISK_ERR_SIZE;
             } else {
                 num(val, sizeof val, sr->stops[i].value);
             }
             if (put(buf + used, n - used, "%s%s:%s", i ? ", " : "", tv, val))
-                return -1;
+                return ISK_ERR_RANGE;
             used += strlen(buf + used);
         }
-        return 0;
+        return ISK_OK;
     }
     case ISK_KEY_TEXT: return put(buf, n, "%.*s", (int)k->aux, AT_C(char, item, k->offset));
     case ISK_KEY_SIDES: {
@@ -968,10 +968,10 @@ int fx_key_format(const isk_key *k, const void *item, const isk_effect_def *d, c
         for (int i = 0; i < k->nnames; i++)
             if (s >> i & 1u) {
                 if (put(buf + used, n - used, "%s%s", used ? ", " : "", k->names[i]))
-                    return -1;
+                    return ISK_ERR_RANGE;
                 used += strlen(buf + used);
             }
-        return 0;
+        return ISK_OK;
     }
     case ISK_KEY_POINTS: {
         const double *pts = *AT_C(double *, item, k->offset);
@@ -988,27 +988,27 @@ int fx_key_format(const isk_key *k, const void *item, const isk_effect_def *d, c
         size_t used = 0;
         for (int i = 0; i < count; i++) {
             if (put(buf + used, n - used, "%s%s", i ? ", " : "", d ? fx_item_name(d, k->refers, idx[i]) : "?"))
-                return -1;
+                return ISK_ERR_RANGE;
             used += strlen(buf + used);
         }
-        return 0;
+        return ISK_OK;
     }
     case ISK_KEY_REF: {
         int v = *AT_C(int, item, k->offset);
         return put(buf, n, "%s", v >= 0 && d ? fx_item_name(d, k->refers, v) : "");
     }
-    default: return -1;
+    default: return ISK_ERR_RANGE;
     }
 }
 
 /* ---- defaults ------------------------------------------------------------------ */
 
-int fx_key_set_default(const isk_key *k, void *item)
+isk_status fx_key_set_default(const isk_key *k, void *item)
 {
     /* An empty default means "none" except for a reference, where it is the
      * first item (-1). */
     if (!k->dflt || (!*k->dflt && k->type != ISK_KEY_REF) || k->type == ISK_KEY_REFS || k->type == ISK_KEY_POINTS)
-        return 0;
+        return ISK_OK;
     char why[160];
     return fx_key_parse(k, item, k->dflt, NULL, why, sizeof why);
 }

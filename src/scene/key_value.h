@@ -36,19 +36,21 @@ int fx_key_applies(const isk_key *k, int kind);
 void fx_key_kind_message(const isk_key *k, int kind, char *buf, size_t n);
 
 /* Text -> field.  `d` resolves names (REFS, REF); may be NULL otherwise.
- * Returns 0, or -1 with the reason in `why`. */
-int fx_key_parse(const isk_key *k, void *item, const char *text, const isk_effect_def *d, char *why, size_t n);
-/* The field's value checked against the row: 0, or -1 with the reason. */
-int fx_key_check(const isk_key *k, const void *item, const isk_effect_def *d, char *why, size_t n);
-/* Field -> text (parses back to the same value); 0, or -1 if `buf` is too small. */
-int fx_key_format(const isk_key *k, const void *item, const isk_effect_def *d, char *buf, size_t n);
+ * ISK_OK, or ISK_ERR_RANGE (ISK_ERR_NOMEM) with the reason in `why`. */
+isk_status fx_key_parse(const isk_key *k, void *item, const char *text, const isk_effect_def *d, char *why, size_t n);
+/* The field's value checked against the row: ISK_OK, or ISK_ERR_RANGE with
+ * the reason. */
+isk_status fx_key_check(const isk_key *k, const void *item, const isk_effect_def *d, char *why, size_t n);
+/* Field -> text (parses back to the same value); ISK_OK, or ISK_ERR_SIZE if
+ * `buf` is too small. */
+isk_status fx_key_format(const isk_key *k, const void *item, const isk_effect_def *d, char *buf, size_t n);
 /* "a number between 0 and 10000000", "ring, uniform, gauss, coulomb or multi-coulomb" */
 void fx_key_expect(const isk_key *k, char *buf, size_t n);
 
 /* Sets the row's default (its `dflt` text) into the item; rows without a
- * default are left alone.  Returns 0 (a bad default is a bug the test of
- * the table catches). */
-int fx_key_set_default(const isk_key *k, void *item);
+ * default are left alone.  ISK_OK (a bad default is a bug the test of the
+ * table catches). */
+isk_status fx_key_set_default(const isk_key *k, void *item);
 /* Every default of a section into one item. */
 void fx_section_defaults(isk_section_kind s, void *item);
 

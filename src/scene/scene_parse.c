@@ -63,12 +63,12 @@ static void sec_label(const section *s, char *buf, size_t n)
 }
 
 /* "FILE:LINE: [section] key: message" (without key: "[section] message") */
-static int fail_at(parser *P, const section *s, int line, const char *key, const char *fmt, ...)
+static isk_status fail_at(parser *P, const section *s, int line, const char *key, const char *fmt, ...)
 #if defined(__GNUC__)
     __attribute__((format(printf, 5, 6)))
 #endif
     ;
-static int fail_at(parser *P, const section *s, int line, const char *key, const char *fmt, ...)
+static isk_status fail_at(parser *P, const section *s, int line, const char *key, const char *fmt, ...)
 {
     char msg[400], label[80];
     va_list ap;
@@ -125,7 +125,7 @@ static char *trim(char *s)
 }
 
 /* A new item of the section's type, with the table's defaults. */
-static int add_item(parser *P, section *s, const char *name, int line)
+static isk_status add_item(parser *P, section *s, const char *name, int line)
 {
     isk_effect_def *d = P->d;
     const char *what = NULL;
@@ -177,10 +177,10 @@ static int add_item(parser *P, section *s, const char *name, int line)
     }
     if (s->index < 0)
         return isk_ini_error(P->err, P->name, line, "too many %s (at most %d)", what, max);
-    return 0;
+    return ISK_OK;
 }
 
-static int on_section(void *user, const char *header, int line, isk_error *err)
+static isk_status on_section(void *user, const char *header, int line, isk_error *err)
 {
     (void)err;
     parser *P = user;
@@ -234,8 +234,7 @@ static int on_section(void *user, const char *header, int line, isk_error *err)
     if (P->nsec % 16 == 0) {
         section *a = realloc(P->sec, sizeof *a * (size_t)(P->nsec + 16));
         if (!a) {
-            isk_error_set(P->err, ISK_ERR_NOMEM, "%s: out of memory", P->name);
-            return 1;
+            return isk_error_set(P->err, ISK_ERR_NOMEM, "%s: out of memory", P->name);
         }
         P->sec = a;
     }
@@ -248,8 +247,7 @@ static int on_section(void *user, const char *header, int line, isk_error *err)
     s->deferred = calloc((size_t)P->nkeys, sizeof *s->deferred);
     P->nsec++; /* counted before it can fail, so it is freed */
     if (!s->key_line || !s->deferred) {
-        isk_error_set(P->err, ISK_ERR_NOMEM, "%s: out of memory", P->name);
-        return 1;
+        return isk_error_set(P->err, ISK_ERR_NOMEM, "%s: out of memory", P->name);
     }
     P->cur = P->nsec - 1;
     return add_item(P, s, name, line);
@@ -257,7 +255,7 @@ static int on_section(void *user, const char *header, int line, isk_error *err)
 
 /* ---- keys ---------------------------------------------------------------------- */
 
-static int unknown_key(parser *P, const section *s, const char *key, int line)
+static isk_status unknown_key(parser *P, const section *s, const char *key, int line)
 {
     const char *names[128];
     int n = 0;
@@ -277,7 +275,7 @@ static int unknown_key(parser *P, const section *s, const char *key, int line)
                    isk_section_name(s->type));
 }
 
-static int on_key(void *user, const char *section_name, const char *key, const char *value, int line,
+static isk_status on_key(void *user, const char *section_name, const char *key, const char *value, int line,
                   isk_error *err)
 {
     (void)section_name; /* the section callback already told us (whole, with its line) */
@@ -299,34 +297,36 @@ static int on_key(void *user, const char *section_name, const char *key, const c
         /* Resolved at the end: the sections it names may come later. */
         s->deferred[r] = malloc(strlen(value) + 1);
         if (!s->deferred[r]) {
-            isk_error_set(P->err, ISK_ERR_NOMEM, "%s: out of memory", P->name);
-            return 1;
+            return isk_error_set(P->err, ISK_ERR_NOMEM, "%s: out of memory", P->name);
         }
         memcpy(s->deferred[r], value, strlen(value) + 1);
-        return 0;
+        return ISK_OK;
     }
     char why[400];
-    if (fx_key_parse(k, fx_section_item(P->d, s->type, s->index), value, P->d, why, sizeof why))
+    isk_status st = fx_key_parse(k, fx_section_item(P->d, s->type, s->index), value, P->d, why, sizeof why);
+    if (st == ISK_ERR_NOMEM)
+        return isk_error_set(P->err, st, "%s: out of memory", P->name);
+    if (st != ISK_OK)
         return fail_at(P, s, line, key, "%s", why);
-    return 0;
+    return ISK_OK;
 }
 
 /* ---- the end of the file -------------------------------------------------------- */
 
 /* The kind a section has when `kind` is not given: its name, if it is a
  * kind; for drawings, what its keys say. */
-static int derive_kind(parser *P, section *s)
+static isk_status derive_kind(parser *P, section *s)
 {
     isk_effect_def *d = P->d;
     const isk_key *kk = isk_key_find(s->type, "kind");
     if (!kk || given(s, kk))
-        return 0;
+        return ISK_OK;
     if (s->type == ISK_SECTION_FORCE) {
         int k = scv_lookup(s->name, isk_force_kind_names, ISK_FORCE_KIND_COUNT);
         if (k < 0)
             return fail_at(P, s, s->line, NULL, "needs kind = gravity, drag, wind or potential");
         d->forces[s->index].kind = (isk_force_kind)k;
-        return 0;
+        return ISK_OK;
     }
     int k = scv_lookup(s->name, isk_drawing_kind_names, ISK_DRAWING_KIND_COUNT);
     if (k < 0 && given(s, isk_key_find(s->type, "points")))
@@ -338,11 +338,11 @@ static int derive_kind(parser *P, section *s)
     if (k < 0)
         return fail_at(P, s, s->line, NULL, "needs kind = polyline, polygon, disc, sprite or text");
     d->drawings[s->index].kind = (isk_drawing_kind)k;
-    return 0;
+    return ISK_OK;
 }
 
 /* A window (xmin, xmax, ymin, ymax) or a camera (zoom, pan), from the keys given. */
-static int view_kind(parser *P, section *s)
+static isk_status view_kind(parser *P, section *s)
 {
     int win = 0, cam = 0, wline = 0, cline = 0;
     for (int i = 0; i < P->nkeys; i++) {
@@ -359,16 +359,16 @@ static int view_kind(parser *P, section *s)
         return fail_at(P, s, wline > cline ? wline : cline, NULL,
                        "mixes a world window (xmin, xmax, ymin, ymax) with a camera (zoom, pan): use one");
     P->d->view_kind = cam ? ISK_VIEWDEF_CAMERA : ISK_VIEWDEF_WINDOW;
-    return 0;
+    return ISK_OK;
 }
 
 /* Keys given that do not apply to the kind (the first in the file), then
  * the required ones not given (in table order). */
-static int kinds_and_required(parser *P, section *s)
+static isk_status kinds_and_required(parser *P, section *s)
 {
     const int kind = fx_item_kind(P->d, s->type, s->index);
     if (s->type == ISK_SECTION_VIEW)
-        return 0; /* the keys given decided its kind */
+        return ISK_OK; /* the keys given decided its kind */
     const isk_key *first = NULL;
     int first_line = 0;
     for (int i = 0; i < P->nkeys; i++) {
@@ -389,11 +389,11 @@ static int kinds_and_required(parser *P, section *s)
         if (k->section == s->type && !s->key_line[i] && (kind < 0 ? k->required != 0 : (k->required >> kind & 1u)))
             return fail_at(P, s, s->line, NULL, "needs %s (%s)", k->name, k->meaning);
     }
-    return 0;
+    return ISK_OK;
 }
 
 /* Defaults that follow from other keys. */
-static int derived_defaults(parser *P, section *s)
+static isk_status derived_defaults(parser *P, section *s)
 {
     isk_effect_def *d = P->d;
     if (s->type == ISK_SECTION_FORCE) {
@@ -401,16 +401,16 @@ static int derived_defaults(parser *P, section *s)
         if (given(s, isk_key_find(s->type, "law")) && !given(s, isk_key_find(s->type, "exponent")))
             return fail_at(P, s, line_of(s, "law"), "law", "needs an exponent to apply to");
         fx_force_sync(f);
-        return 0;
+        return ISK_OK;
     }
     if (s->type == ISK_SECTION_EMITTER) {
         const isk_emitter_def *e = &d->emitters[s->index];
         if (e->source == ISK_SOURCE_STREAM && e->rate == 0 && e->count == 0)
             return fail_at(P, s, line_of(s, "rate"), NULL, "a stream needs rate > 0 or a burst count > 0");
-        return 0;
+        return ISK_OK;
     }
     if (s->type != ISK_SECTION_BOUNDS)
-        return 0;
+        return ISK_OK;
     isk_bounds *b = &d->bounds;
     if (!given(s, isk_key_find(s->type, "margin")))
         b->margin = b->mode == ISK_BOUNCE_THESIS ? 0.1 : 0.0;
@@ -424,10 +424,10 @@ static int derived_defaults(parser *P, section *s)
             b->xmin = d->xmin; b->xmax = d->xmax; b->ymin = d->ymin; b->ymax = d->ymax;
         }
     }
-    return 0;
+    return ISK_OK;
 }
 
-static int resolve(parser *P, section *s)
+static isk_status resolve(parser *P, section *s)
 {
     for (int i = 0; i < P->nkeys; i++) {
         if (!s->deferred[i])
@@ -437,7 +437,7 @@ static int resolve(parser *P, section *s)
         if (fx_key_parse(k, fx_section_item(P->d, s->type, s->index), s->deferred[i], P->d, why, sizeof why))
             return fail_at(P, s, s->key_line[i], k->name, "%s", why);
     }
-    return 0;
+    return ISK_OK;
 }
 
 /* The checks effect_check.c shares with isk_effect_create, at the line of
@@ -463,19 +463,25 @@ static void parse_emit(fx_report *r, isk_status st, isk_section_kind type, int i
                   key && show_key ? ": " : "", msg);
 }
 
-static int finish(parser *P)
+static isk_status finish(parser *P)
 {
     for (int i = 0; i < P->nsec; i++) {
         section *s = &P->sec[i];
-        if (resolve(P, s) || (s->type == ISK_SECTION_VIEW ? view_kind(P, s) : derive_kind(P, s)) ||
-            kinds_and_required(P, s) || derived_defaults(P, s))
-            return 1;
+        isk_status st = resolve(P, s);
+        if (st == ISK_OK)
+            st = s->type == ISK_SECTION_VIEW ? view_kind(P, s) : derive_kind(P, s);
+        if (st == ISK_OK)
+            st = kinds_and_required(P, s);
+        if (st == ISK_OK)
+            st = derived_defaults(P, s);
+        if (st != ISK_OK)
+            return st;
     }
     parse_report pr = {{parse_emit, NULL, ISK_OK}, P};
     for (int i = 0; i < P->nsec; i++)
-        if (!fx_check_item(P->d, P->sec[i].type, P->sec[i].index, 0, &pr.r))
-            return 1;
-    return 0;
+        if (fx_check_item(P->d, P->sec[i].type, P->sec[i].index, 0, &pr.r) != ISK_OK)
+            return ISK_ERR_FORMAT; /* reported as FILE:LINE by parse_emit */
+    return ISK_OK;
 }
 
 /* ---- entry points ----------------------------------------------------------------- */
@@ -496,8 +502,8 @@ isk_status isk_scene_load_string(isk_effect_def *out, const char *text, const ch
         err = &local;
     parser P = {out, name, err, NULL, 0, -1, isk_key_count()};
     isk_status st = isk_ini_parse(text, name, on_section, on_key, &P, err);
-    if (st == ISK_OK && finish(&P))
-        st = err->status != ISK_OK ? err->status : ISK_ERR_FORMAT;
+    if (st == ISK_OK)
+        st = finish(&P);
     for (int i = 0; i < P.nsec; i++) {
         for (int k = 0; P.sec[i].deferred && k < P.nkeys; k++)
             free(P.sec[i].deferred[k]);
