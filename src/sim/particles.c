@@ -249,42 +249,47 @@ void isk_particles_remove(isk_particles *p, size_t i)
     p->count = last;
 }
 
-/* Compacts one column over [from, n), keeping the particles that live
- * (age < life, NaN kept as before); returns the new count. */
-static size_t compact(const isk_particles *p, unsigned char *a, size_t e, size_t from, size_t n)
-{
-    const double *age = p->age, *life = p->life;
-    size_t w = from;
-    for (size_t r = from; r < n; r++)
-        if (!(age[r] >= life[r]))
-            memcpy(a + w++ * e, a + r * e, e);
-    return w;
-}
-
 size_t isk_particles_cull(isk_particles *p)
 {
     if (!p)
         return 0;
-    size_t n = p->count, first = 0;
-    while (first < n && !(p->age[first] >= p->life[first]))
+    const size_t n = p->count;
+    const double *age = p->age, *life = p->life;
+    size_t first = 0;
+    while (first < n && !(age[first] >= life[first]))
         first++;
     if (first == n)
         return 0;
-    /* Column by column from the first dead particle; age and life decide
-     * who stays, so they are compacted last. */
-    size_t w = first;
+    /* Every present column, gathered once: the double columns (age and life
+     * last, since they decide who stays) and any other. */
+    double *dcol[NCOLUMNS];
+    unsigned char *ocol[NCOLUMNS];
+    size_t oel[NCOLUMNS];
+    int nd = 0, no = 0;
     for (int k = 0; k < NCOLUMNS; k++) {
         unsigned char *a = col_get(p, &columns[k]);
-        if (a && k != AGE_COLUMN && k != LIFE_COLUMN)
-            w = compact(p, a, columns[k].elem, first, n);
-    }
-    w = first;
-    for (size_t r = first; r < n; r++)
-        if (!(p->age[r] >= p->life[r])) {
-            p->age[w] = p->age[r];
-            p->life[w] = p->life[r];
-            w++;
+        if (!a || k == AGE_COLUMN || k == LIFE_COLUMN)
+            continue;
+        if (columns[k].elem == sizeof(double)) {
+            dcol[nd++] = (double *)(void *)a;
+        } else {
+            oel[no] = columns[k].elem;
+            ocol[no++] = a;
         }
+    }
+    double *pa = p->age, *pl = p->life;
+    size_t w = first;
+    for (size_t r = first; r < n; r++) {
+        if (pa[r] >= pl[r])
+            continue; /* NaN ages and lives are kept, as a live particle's */
+        for (int k = 0; k < nd; k++)
+            dcol[k][w] = dcol[k][r];
+        for (int k = 0; k < no; k++)
+            memcpy(ocol[k] + w * oel[k], ocol[k] + r * oel[k], oel[k] == 4 ? 4 : oel[k]);
+        pa[w] = pa[r];
+        pl[w] = pl[r];
+        w++;
+    }
     p->count = w;
     return n - w;
 }

@@ -54,15 +54,15 @@ static void describe_drift_slow(const isk_stage *st, FILE *out)
 
 const isk_stage_kind isk_stage_drift_slow = {"drift", run_drift_slow, describe_drift_slow};
 
-/* One loop per (table, faithful) choice: `table` and `faithful` are
+/* One loop per (table, faithful) choice: `use_table` and `faithful` are
  * constants at each call below, so no loop branches per particle. */
 static inline void osc_loop(size_t n, double *restrict x, double *restrict vx, double *restrict amp,
                             double *restrict ph, const double *restrict om, double *restrict off, double decay,
-                            const isk_sinlut *table, const int faithful, double h)
+                            const isk_sinlut *table, const int use_table, const int faithful, double h)
 {
     for (size_t i = 0; i < n; i++) {
         ph[i] += om[i] * h;
-        double s = amp[i] * (table ? isk_sinlut_floor(table, ph[i]) : sin(ph[i]));
+        double s = amp[i] * (use_table ? isk_sinlut_floor(table, ph[i]) : sin(ph[i]));
         double dx = s - off[i];
         x[i] += dx;
         if (faithful)
@@ -82,13 +82,13 @@ static void run_oscillate(const isk_stage *st, isk_block *b, double h)
     double *amp = p->osc_amp + o, *ph = p->osc_phase + o, *om = p->osc_omega + o, *off = p->osc_offset + o;
     const isk_sinlut *t = st->u.osc.table;
     if (t && st->u.osc.faithful)
-        osc_loop(b->n, b->x, b->vx, amp, ph, om, off, decay, t, 1, h);
+        osc_loop(b->n, b->x, b->vx, amp, ph, om, off, decay, t, 1, 1, h);
     else if (t)
-        osc_loop(b->n, b->x, b->vx, amp, ph, om, off, decay, t, 0, h);
+        osc_loop(b->n, b->x, b->vx, amp, ph, om, off, decay, t, 1, 0, h);
     else if (st->u.osc.faithful)
-        osc_loop(b->n, b->x, b->vx, amp, ph, om, off, decay, NULL, 1, h);
+        osc_loop(b->n, b->x, b->vx, amp, ph, om, off, decay, NULL, 0, 1, h);
     else
-        osc_loop(b->n, b->x, b->vx, amp, ph, om, off, decay, NULL, 0, h);
+        osc_loop(b->n, b->x, b->vx, amp, ph, om, off, decay, NULL, 0, 0, h);
 }
 
 static void describe_oscillate(const isk_stage *st, FILE *out)
