@@ -250,3 +250,28 @@ Test(keys, documentation_tables_are_generated)
     free(want);
     free(have);
 }
+
+/* The page's complete example is a working scene. */
+Test(keys, documentation_example_scene_works)
+{
+    char *doc = cli_slurp("docs/scene-format.md");
+    char *start = strstr(doc, "## A complete example\n\n```ini\n");
+    cr_assert_not_null(start);
+    start = strchr(start, '\n') + 1;
+    start = strchr(start, '\n') + 1;
+    start = strchr(start, '\n') + 1;
+    char *end = strstr(start, "```\n");
+    cr_assert_not_null(end);
+    *end = 0;
+    isk_effect_def d;
+    isk_error err = {0};
+    cr_assert_eq(isk_scene_load_string(&d, start, "example", &err), ISK_OK, "%s", err.message);
+    isk_effect *fx = NULL;
+    cr_assert_eq(isk_effect_create(&fx, &d, &err), ISK_OK, "%s", err.message);
+    for (int i = 0; i < 60; i++)
+        cr_assert_eq(isk_effect_step(fx), ISK_OK);
+    cr_assert_gt(isk_effect_particle_count(fx), 100);
+    isk_effect_destroy(fx);
+    isk_effect_def_free(&d);
+    free(doc);
+}

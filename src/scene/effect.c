@@ -301,12 +301,34 @@ isk_status isk_effect_set_substeps(isk_effect *e, int substeps)
 
 /* ---- inspection ------------------------------------------------------------ */
 
+/* The canvas and view, then each emitter's lists, then the drawings (so a
+ * scene that only draws says what it draws). */
 void isk_effect_describe(const isk_effect *e, FILE *out)
 {
     if (!e || !out)
         return;
+    const isk_effect_def *d = &e->def;
+    fprintf(out, "scene: %dx%d canvas, ", d->width, d->height);
+    if (d->view_kind == ISK_VIEWDEF_CAMERA)
+        fprintf(out, "camera zoom %g pan (%g, %g)", d->zoom, d->tx, d->ty);
+    else
+        fprintf(out, "view x %g..%g, y %g..%g", d->xmin, d->xmax, d->ymin, d->ymax);
+    fprintf(out, ", dt %g s, %d substep%s of %s%s\n", d->dt, d->substeps, d->substeps == 1 ? "" : "s",
+            isk_integrator_name(d->integrator), d->clear ? "" : ", trails");
     for (int gi = 0; gi < e->ngroups; gi++)
         fx_describe_group(e, &e->groups[gi], out);
+    if (d->ndrawings)
+        fprintf(out, "drawings (before the particles):\n");
+    for (int i = 0; i < d->ndrawings; i++) {
+        const isk_drawing_def *g = &d->drawings[i];
+        fprintf(out, "  %-9s %s", isk_drawing_kind_names[g->kind], g->name);
+        if (g->kind == ISK_DRAWING_POLYLINE || g->kind == ISK_DRAWING_POLYGON)
+            fprintf(out, ", %d points%s%s", g->npoints, g->closed ? ", closed" : "", g->hairline ? ", hairline" : "");
+        if (g->kind == ISK_DRAWING_TEXT)
+            fprintf(out, ", \"%s\"", g->text);
+        fprintf(out, ", %s, %s%s\n", isk_blend_names[g->blend], isk_units_names[g->pixels ? 1 : 0],
+                g->pixels ? "" : " units");
+    }
 }
 
 size_t isk_effect_particle_count(const isk_effect *e)
