@@ -593,8 +593,8 @@ Test(fire, describe_lists_fire_stages)
     FILE *f = fmemopen(buf, sizeof buf, "w");
     isk_effect_describe(fx, f);
     fclose(f);
-    cr_assert(strstr(buf, "thesis order") && strstr(buf, "oscillate") && strstr(buf, "thesis rounding") &&
-                  strstr(buf, "jittered"),
+    cr_assert(strstr(buf, "thesis order") && strstr(buf, "oscillate") && strstr(buf, "rate_mode thesis") &&
+                  strstr(buf, "birth thesis-jitter"),
               "%s", buf);
     cr_assert(strstr(buf, "slow      v") == NULL, "%s", buf); /* fused into the drift */
     isk_effect_destroy(fx);

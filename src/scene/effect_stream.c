@@ -203,9 +203,9 @@ static void describe_spawn(const isk_effect *e, const fx_group *g, FILE *out)
 {
     (void)e;
     const isk_emitter_def *em = g->def;
-    static const char *const births[ISK_BIRTH_MODE_COUNT] = {"back-dated", "jittered", "frame-aligned"};
-    fprintf(out, "%g/s%s, %s births", em->rate, em->rate_mode == ISK_RATE_THESIS ? " (thesis rounding)" : "",
-            births[em->birth]);
+    /* In the scene file's words: key = value. */
+    fprintf(out, "%g/s, rate_mode %s, birth %s", em->rate, isk_rate_mode_names[em->rate_mode],
+            isk_birth_mode_names[em->birth]);
 }
 
 const fx_step_kind fx_step_spawn = {"spawn", run_spawn, describe_spawn};

@@ -39,8 +39,6 @@ static const int FPS[NFPS] = {24, 30, 48, 60, 90, 120, 144, 240};
 static const int FPS_QUICK[] = {24, 60, 144, 240};
 static const double RATES[NRATES] = {20, 90, 1000};
 static const isk_birth_mode BIRTH[NBIRTH] = {ISK_BIRTH_BACKDATE, ISK_BIRTH_THESIS_JITTER, ISK_BIRTH_FRAME};
-static const char *const BIRTH_NAME[NBIRTH] = {"backdate", "thesis-jitter", "frame"};
-static const char *const RATE_NAME[2] = {"accumulate", "thesis"};
 
 /* The birth study's two cases: launch velocity and gravity. */
 static const struct {
@@ -141,7 +139,7 @@ static int rate_study(const study_opts *o, const int *fps, int nfps, int reps)
                 err_pct[m][ri][fi] = ((double)c - RATES[ri]) / RATES[ri] * 100;
                 max_err[m][ri][fi] = worst;
                 ns[m][ri][fi] = sec / fps[fi] * 1e9;
-                study_printf(&csv, "%g,%d,%s,%zu,%g,%.4f,%.6f,%.1f,", RATES[ri], fps[fi], RATE_NAME[m], c, RATES[ri],
+                study_printf(&csv, "%g,%d,%s,%zu,%g,%.4f,%.6f,%.1f,", RATES[ri], fps[fi], isk_rate_mode_names[m], c, RATES[ri],
                              err_pct[m][ri][fi], worst, ns[m][ri][fi]);
                 if (c > 0) /* nothing emitted: no cost per particle (empty field) */
                     study_printf(&csv, "%.1f", sec / (double)c * 1e9);
@@ -253,7 +251,7 @@ static int birth_study(const study_opts *o, const int *fps, int nfps, int reps)
                 const size_t want = (size_t)BIRTH_RATE;
                 if (st != ISK_OK || p->count != want) {
                     fprintf(stderr, "iskra bench: emission_birth: %s %s at %d steps/s: %s, %zu particles at 1 s, "
-                                    "expected %zu\n", SCEN[sc].name, BIRTH_NAME[b], fps[fi], isk_status_str(st),
+                                    "expected %zu\n", SCEN[sc].name, isk_birth_mode_names[BIRTH[b]], fps[fi], isk_status_str(st),
                             p->count, want);
                     rc = 1;
                     isk_effect_destroy(fx);
@@ -276,7 +274,7 @@ static int birth_study(const study_opts *o, const int *fps, int nfps, int reps)
                 mean[sc][b][fi] = sum / (double)want;
                 worst[sc][b][fi] = big;
                 us[sc][b][fi] = sec * 1e6;
-                study_printf(&csv, "%s,%s,%d,%zu,%.6e,%.6e,%.1f,%.3f\n", SCEN[sc].key, BIRTH_NAME[b], fps[fi], want,
+                study_printf(&csv, "%s,%s,%d,%zu,%.6e,%.6e,%.1f,%.3f\n", SCEN[sc].key, isk_birth_mode_names[BIRTH[b]], fps[fi], want,
                              mean[sc][b][fi], big, sec / fps[fi] * 1e9, us[sc][b][fi]);
             }
 
@@ -288,7 +286,7 @@ static int birth_study(const study_opts *o, const int *fps, int nfps, int reps)
                SCEN[sc].vx, SCEN[sc].vy, SCEN[sc].g);
         printf("%7s", "steps/s");
         for (int b = 0; b < NBIRTH; b++)
-            printf(" | %-29s", BIRTH_NAME[b]);
+            printf(" | %-29s", isk_birth_mode_names[BIRTH[b]]);
         printf("\n");
         for (int fi = 0; fi < nfps; fi++) {
             printf("%7d", fps[fi]);
@@ -303,7 +301,7 @@ static int birth_study(const study_opts *o, const int *fps, int nfps, int reps)
      * draw in [0, h) (mean h/3). */
     printf("\nno force, mean error / (speed h), per steps/s:");
     for (int b = 1; b < NBIRTH; b++) {
-        printf("  %s", BIRTH_NAME[b]);
+        printf("  %s", isk_birth_mode_names[BIRTH[b]]);
         for (int fi = 0; fi < nfps; fi++)
             printf(" %.3f", mean[0][b][fi] / (hypot(SCEN[0].vx, SCEN[0].vy) / fps[fi]));
     }
@@ -336,7 +334,7 @@ static int birth_study(const study_opts *o, const int *fps, int nfps, int reps)
             }
             for (int fi = 0; fi < nfps; fi++)
                 xs[sc][b][fi] = us[sc][b][fi];
-            snprintf(names[sc][b], sizeof names[sc][b], "%s, %s", BIRTH_NAME[b], SCEN[sc].name);
+            snprintf(names[sc][b], sizeof names[sc][b], "%s, %s", isk_birth_mode_names[BIRTH[b]], SCEN[sc].name);
             ser[ns] = (isk_chart_series){names[sc][b], xs[sc][b], mean[sc][b], (size_t)nfps,
                                          isk_chart_style_default(sc * NBIRTH + b)};
             ns++;
