@@ -128,6 +128,10 @@ const char *const *isk_section_kind_names(isk_section_kind section, int *n);
 /* "number", "whole", "boolean", ... (for tables). */
 const char *isk_key_type_name(isk_key_type type);
 
+/* The words an ENUM (or SIDES) key accepts: its names, then the words that
+ * stand for values ("scene"); at most max into out, returns how many. */
+int isk_key_choices(const isk_key *k, const char **out, int max);
+
 /* A row in words, for tables (`iskra keys`, docs/scene-format.md, panels):
  *   range:   "0..10000000", "> 0", "semi-euler, euler, ..." (enums), ""
  *   kinds:   the kinds of `mask` ("explosion, layer, stream"); "" for every kind

@@ -28,35 +28,23 @@ static isk_status report(ctx *c, isk_status s, const char *key, int show_key, co
     return s;
 }
 
-/* "key: message" about one key. */
-static isk_status bad_key(ctx *c, const char *key, const char *fmt, ...)
+/* A failure about `key`: "key: message" with show_key, else "message"
+ * pointing at the key's line (when it has one). */
+static isk_status fail(ctx *c, const char *key, int show_key, const char *fmt, ...)
 #if defined(__GNUC__)
-    __attribute__((format(printf, 3, 4)))
+    __attribute__((format(printf, 4, 5)))
 #endif
     ;
-static isk_status bad_key(ctx *c, const char *key, const char *fmt, ...)
+static isk_status fail(ctx *c, const char *key, int show_key, const char *fmt, ...)
 {
     va_list ap;
     va_start(ap, fmt);
-    isk_status s = report(c, ISK_ERR_RANGE, key, 1, fmt, ap);
+    isk_status s = report(c, ISK_ERR_RANGE, key, show_key, fmt, ap);
     va_end(ap);
     return s;
 }
-
-/* "message" about the item, pointing at `key`'s line when it has one. */
-static isk_status bad_item(ctx *c, const char *key, const char *fmt, ...)
-#if defined(__GNUC__)
-    __attribute__((format(printf, 3, 4)))
-#endif
-    ;
-static isk_status bad_item(ctx *c, const char *key, const char *fmt, ...)
-{
-    va_list ap;
-    va_start(ap, fmt);
-    isk_status s = report(c, ISK_ERR_RANGE, key, 0, fmt, ap);
-    va_end(ap);
-    return s;
-}
+#define bad_key(c, key, ...) fail(c, key, 1, __VA_ARGS__)
+#define bad_item(c, key, ...) fail(c, key, 0, __VA_ARGS__)
 
 /* ---- per section: what spans fields -------------------------------------------- */
 

@@ -75,12 +75,7 @@ static isk_status find_key(const isk_effect_def *d, const where *w, const char *
 {
     const isk_key *k = isk_key_find(w->section, key);
     if (!k) {
-        const char *names[128];
-        int n = 0;
-        for (int i = 0; i < isk_key_count() && n < 128; i++)
-            if (isk_key_at(i)->section == w->section)
-                names[n++] = isk_key_at(i)->name;
-        const char *sug = scv_suggest(key, names, n);
+        const char *sug = fx_key_suggest(w->section, key);
         return isk_error_set(err, ISK_ERR_RANGE, "%s unknown key '%s'%s%s%s", w->label, key,
                              sug ? "; did you mean '" : "", sug ? sug : "", sug ? "'?" : "");
     }
@@ -92,6 +87,14 @@ static isk_status find_key(const isk_effect_def *d, const where *w, const char *
     }
     *out = k;
     return ISK_OK;
+}
+
+/* The item and the key's row, or the failure's status with its message. */
+static isk_status locate(const isk_effect_def *d, const char *section, const char *key, where *w, const isk_key **k,
+                         isk_error *err)
+{
+    isk_status s = find_item(d, section, w, err);
+    return s != ISK_OK ? s : find_key(d, w, key, k, err);
 }
 
 /* ---- the report of a refused change ------------------------------------------------ */
@@ -197,9 +200,7 @@ isk_status isk_effect_set(isk_effect *e, const char *section, const char *key, c
     isk_effect_def *d = &e->def;
     where w;
     const isk_key *k;
-    isk_status s = find_item(d, section, &w, err);
-    if (s == ISK_OK)
-        s = find_key(d, &w, key, &k, err);
+    isk_status s = locate(d, section, key, &w, &k, err);
     if (s != ISK_OK)
         return s;
     if (k->create_only)
@@ -256,9 +257,7 @@ isk_status isk_effect_get(const isk_effect *e, const char *section, const char *
     const isk_effect_def *d = &e->def;
     where w;
     const isk_key *k;
-    isk_status s = find_item(d, section, &w, err);
-    if (s == ISK_OK)
-        s = find_key(d, &w, key, &k, err);
+    isk_status s = locate(d, section, key, &w, &k, err);
     if (s != ISK_OK)
         return s;
     if (fx_key_format(k, fx_section_item_c(d, w.section, w.index), d, buf, size) != ISK_OK) {

@@ -141,6 +141,25 @@ _Static_assert(sizeof(isk_integrator) == sizeof(int) && sizeof(isk_blend) == siz
                    sizeof(isk_force_kind) == sizeof(int) && sizeof(isk_source_kind) == sizeof(int),
                "enum fields are read as int");
 
+/* Whole-number fields come in three types; a row says which. */
+static double whole_get(const isk_key *k, const void *item)
+{
+    switch (k->type) {
+    case ISK_KEY_WHOLE: return (double)*AT_C(int, item, k->offset);
+    case ISK_KEY_LONG: return (double)*AT_C(long, item, k->offset);
+    default: return (double)*AT_C(size_t, item, k->offset);
+    }
+}
+
+static void whole_set(const isk_key *k, void *item, double v)
+{
+    switch (k->type) {
+    case ISK_KEY_WHOLE: *AT(int, item, k->offset) = (int)v; break;
+    case ISK_KEY_LONG: *AT(long, item, k->offset) = (long)v; break;
+    default: *AT(size_t, item, k->offset) = (size_t)v; break;
+    }
+}
+
 /* ---- expectations and ranges (one wording for the parser and the check) ------- */
 
 static void range_words(const isk_key *k, const char *what, char *buf, size_t n)
@@ -187,11 +206,7 @@ void fx_key_expect(const isk_key *k, char *buf, size_t n)
     case ISK_KEY_COLOR: snprintf(buf, n, "a colour (#rrggbb, #rrggbbaa or a name such as yellow)"); return;
     case ISK_KEY_ENUM: {
         const char *all[64];
-        int m = 0;
-        for (int i = 0; i < k->nnames && m < 64; i++)
-            all[m++] = k->names[i];
-        for (int i = 0; k->words && k->words[i].word && m < 64; i++)
-            all[m++] = k->words[i].word;
+        int m = isk_key_choices(k, all, 64);
         join_kinds(buf, n, all, m, m >= 32 ? ~0u : (1u << m) - 1u);
         return;
     }
@@ -228,6 +243,28 @@ static isk_status expected(const isk_key *k, char *why, size_t n, const char *go
     fx_key_expect(k, want, sizeof want);
     snprintf(why, n, "expected %s, got \"%s\"", want, got);
     return ISK_ERR_RANGE;
+}
+
+/* "expected ..., got "x"; did you mean "y"?" (a suggestion from names). */
+static isk_status expected_or_guess(const isk_key *k, const char *text, const char *const *names, int count,
+                                    char *why, size_t n)
+{
+    const char *s = count ? scv_suggest(text, names, count) : NULL;
+    char want[200];
+    fx_key_expect(k, want, sizeof want);
+    snprintf(why, n, "expected %s, got \"%s\"%s%s%s", want, text, s ? "; did you mean \"" : "", s ? s : "",
+             s ? "\"?" : "");
+    return ISK_ERR_RANGE;
+}
+
+const char *fx_key_suggest(isk_section_kind section, const char *word)
+{
+    const char *names[128];
+    int n = 0;
+    for (int i = 0; i < isk_key_count() && n < 128; i++)
+        if (isk_key_at(i)->section == section)
+            names[n++] = isk_key_at(i)->name;
+    return scv_suggest(word, names, n);
 }
 
 /* A word standing for a value: its index, or -1. */
@@ -322,12 +359,7 @@ static isk_status parse_stops(const isk_key *k, void *item, const char *text, ch
             return ISK_ERR_RANGE;
         }
         *colon = 0;
-        char *tv = items[i], *val = colon + 1;
-        while (*val == ' ' || *val == '\t')
-            val++;
-        size_t tl = strlen(tv);
-        while (tl && (tv[tl - 1] == ' ' || tv[tl - 1] == '\t'))
-            tv[--tl] = 0;
+        char *tv = scv_trim(items[i]), *val = scv_trim(colon + 1);
         double t;
         if (!scv_number(tv, &t) || t < 0 || t > 1) {
             snprintf(why, n, "stop %d: expected a position t between 0 and 1, got \"%s\"", i + 1, tv);
@@ -562,19 +594,11 @@ isk_status fx_key_parse(const isk_key *k, void *item, const char *text, const is
         return ISK_OK;
     }
     case ISK_KEY_WHOLE:
-        if (parse_whole(k, text, &x, why, n))
-            return ISK_ERR_RANGE;
-        *AT(int, item, k->offset) = (int)x;
-        return ISK_OK;
     case ISK_KEY_LONG:
-        if (parse_whole(k, text, &x, why, n))
-            return ISK_ERR_RANGE;
-        *AT(long, item, k->offset) = (long)x;
-        return ISK_OK;
     case ISK_KEY_COUNT:
         if (parse_whole(k, text, &x, why, n))
             return ISK_ERR_RANGE;
-        *AT(size_t, item, k->offset) = (size_t)x;
+        whole_set(k, item, x);
         return ISK_OK;
     case ISK_KEY_SEED:
         return scv_u64(text, AT(uint64_t, item, k->offset)) ? ISK_OK : expected(k, why, n, text);
@@ -586,12 +610,7 @@ isk_status fx_key_parse(const isk_key *k, void *item, const char *text, const is
             int m = scv_color_count < 64 ? scv_color_count : 64;
             for (int j = 0; j < m; j++)
                 names[j] = scv_color_name_at(j);
-            const char *s = text[0] != '#' ? scv_suggest(text, names, m) : NULL;
-            char want[120];
-            fx_key_expect(k, want, sizeof want);
-            snprintf(why, n, "expected %s, got \"%s\"%s%s%s", want, text, s ? "; did you mean \"" : "", s ? s : "",
-                     s ? "\"?" : "");
-            return ISK_ERR_RANGE;
+            return expected_or_guess(k, text, names, text[0] != '#' ? m : 0, why, n);
         }
         return ISK_OK;
     case ISK_KEY_ENUM: {
@@ -601,14 +620,8 @@ isk_status fx_key_parse(const isk_key *k, void *item, const char *text, const is
             return ISK_OK;
         }
         i = scv_lookup(text, k->names, k->nnames);
-        if (i < 0) {
-            const char *s = scv_suggest(text, k->names, k->nnames);
-            char want[200];
-            fx_key_expect(k, want, sizeof want);
-            snprintf(why, n, "expected %s, got \"%s\"%s%s%s", want, text, s ? "; did you mean \"" : "", s ? s : "",
-                     s ? "\"?" : "");
-            return ISK_ERR_RANGE;
-        }
+        if (i < 0)
+            return expected_or_guess(k, text, k->names, k->nnames, why, n);
         *AT(int, item, k->offset) = i;
         return ISK_OK;
     }
@@ -693,9 +706,7 @@ isk_status fx_key_check(const isk_key *k, const void *item, const isk_effect_def
     case ISK_KEY_WHOLE:
     case ISK_KEY_LONG:
     case ISK_KEY_COUNT: {
-        double v = k->type == ISK_KEY_WHOLE ? (double)*AT_C(int, item, k->offset)
-                   : k->type == ISK_KEY_LONG ? (double)*AT_C(long, item, k->offset)
-                                             : (double)*AT_C(size_t, item, k->offset);
+        double v = whole_get(k, item);
         return word_of(k, v) || in_range(k, v) ? ISK_OK : refused(k, item, d, why, n);
     }
     case ISK_KEY_BOOL: {
@@ -892,17 +903,9 @@ isk_status fx_key_format(const isk_key *k, const void *item, const isk_effect_de
     case ISK_KEY_WHOLE:
     case ISK_KEY_LONG:
     case ISK_KEY_COUNT: {
-        double v = k->type == ISK_KEY_WHOLE ? (double)*AT_C(int, item, k->offset)
-                   : k->type == ISK_KEY_LONG ? (double)*AT_C(long, item, k->offset)
-                                             : (double)*AT_C(size_t, item, k->offset);
+        double v = whole_get(k, item); /* exact: every accepted value is below 2^53 */
         const char *w = word_of(k, v);
-        if (w)
-            return put(buf, n, "%s", w);
-        if (k->type == ISK_KEY_WHOLE)
-            return put(buf, n, "%d", *AT_C(int, item, k->offset));
-        if (k->type == ISK_KEY_LONG)
-            return put(buf, n, "%ld", *AT_C(long, item, k->offset));
-        return put(buf, n, "%zu", *AT_C(size_t, item, k->offset));
+        return w ? put(buf, n, "%s", w) : put(buf, n, "%.0f", v);
     }
     case ISK_KEY_SEED: return put(buf, n, "%llu", (unsigned long long)*AT_C(uint64_t, item, k->offset));
     case ISK_KEY_BOOL: return put(buf, n, "%s", *AT_C(int, item, k->offset) ? "true" : "false");

@@ -44,6 +44,8 @@ isk_status fx_key_check(const isk_key *k, const void *item, const isk_effect_def
 /* Field -> text (parses back to the same value); ISK_OK, or ISK_ERR_SIZE if
  * `buf` is too small. */
 isk_status fx_key_format(const isk_key *k, const void *item, const isk_effect_def *d, char *buf, size_t n);
+/* The section's key most like a misspelt `word`, or NULL. */
+const char *fx_key_suggest(isk_section_kind section, const char *word);
 /* "a number between 0 and 10000000", "ring, uniform, gauss, coulomb or multi-coulomb" */
 void fx_key_expect(const isk_key *k, char *buf, size_t n);
 

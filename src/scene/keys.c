@@ -446,6 +446,16 @@ const char *isk_key_type_name(isk_key_type t)
 
 /* ---- rows in words (tables, `iskra keys`, the documentation) ---------------- */
 
+int isk_key_choices(const isk_key *k, const char **out, int max)
+{
+    int m = 0;
+    for (int i = 0; k && i < k->nnames && m < max; i++)
+        out[m++] = k->names[i];
+    for (int i = 0; k && k->words && k->words[i].word && m < max; i++)
+        out[m++] = k->words[i].word;
+    return m;
+}
+
 void isk_key_range_text(const isk_key *k, char *buf, size_t n)
 {
     buf[0] = 0;
@@ -455,11 +465,7 @@ void isk_key_range_text(const isk_key *k, char *buf, size_t n)
     }
     if (k->type == ISK_KEY_ENUM || k->type == ISK_KEY_SIDES) {
         const char *all[64];
-        int m = 0;
-        for (int i = 0; i < k->nnames && m < 64; i++)
-            all[m++] = k->names[i];
-        for (int i = 0; k->words && k->words[i].word && m < 64; i++)
-            all[m++] = k->words[i].word;
+        int m = isk_key_choices(k, all, 64);
         size_t used = 0;
         for (int i = 0; i < m; i++)
             used += (size_t)snprintf(buf + used, used < n ? n - used : 0, "%s%s", i ? ", " : "", all[i]);

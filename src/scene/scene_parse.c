@@ -112,15 +112,6 @@ static int valid_name(const char *s)
     return 1;
 }
 
-static char *trim(char *s)
-{
-    while (*s == ' ' || *s == '\t')
-        s++;
-    size_t n = strlen(s);
-    while (n && (s[n - 1] == ' ' || s[n - 1] == '\t'))
-        s[--n] = 0;
-    return s;
-}
 
 /* A new item of the section's type, with the table's defaults. */
 static isk_status add_item(parser *P, section *s, const char *name, int line)
@@ -184,12 +175,12 @@ static isk_status on_section(void *user, const char *header, int line, isk_error
     parser *P = user;
     char text[ISK_INI_MAX_LINE + 1];
     snprintf(text, sizeof text, "%s", header);
-    char *type = trim(text), *name = type;
+    char *type = scv_trim(text), *name = type;
     while (*name && *name != ' ' && *name != '\t')
         name++;
     if (*name)
         *name++ = 0;
-    name = trim(name);
+    name = scv_trim(name);
 
     int t = isk_section_find(type);
     if (t < 0) {
@@ -255,12 +246,7 @@ static isk_status on_section(void *user, const char *header, int line, isk_error
 
 static isk_status unknown_key(parser *P, const section *s, const char *key, int line)
 {
-    const char *names[128];
-    int n = 0;
-    for (int i = 0; i < isk_key_count() && n < 128; i++)
-        if (isk_key_at(i)->section == s->type)
-            names[n++] = isk_key_at(i)->name;
-    const char *sug = scv_suggest(key, names, n);
+    const char *sug = fx_key_suggest(s->type, key);
     if (sug)
         return fail_at(P, s, line, NULL, "unknown key '%s'; did you mean '%s'?", key, sug);
     for (int i = 0; i < isk_key_count(); i++) {

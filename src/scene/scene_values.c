@@ -190,7 +190,7 @@ int scv_color(const char *s, isk_color *out)
     return 0;
 }
 
-static char *trim(char *s)
+char *scv_trim(char *s)
 {
     while (*s == ' ' || *s == '\t')
         s++;
@@ -207,14 +207,14 @@ int scv_split(const char *s, char *buf, size_t bufsize, char sep, char **items, 
     if (len + 1 > bufsize)
         return 0;
     memcpy(buf, s, len + 1);
-    if (!*trim(buf))
+    if (!*scv_trim(buf))
         return 1;
     char *p = buf;
     for (;;) {
         char *c = strchr(p, sep);
         if (c)
             *c = 0;
-        char *item = trim(p);
+        char *item = scv_trim(p);
         if (!*item || *n >= max)
             return 0;
         items[(*n)++] = item;

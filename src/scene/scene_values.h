@@ -33,6 +33,8 @@ int scv_color(const char *s, isk_color *out);
  * hold strlen(s)+1 bytes).  Returns 0 for more than `max` items or an empty
  * item; *n = 0 for an empty or blank string. */
 int scv_split(const char *s, char *buf, size_t bufsize, char sep, char **items, int max, int *n);
+/* Blanks (space, tab, CR) removed from both ends, in place. */
+char *scv_trim(char *s);
 /* Case-insensitive lookup of s in names[0..n-1]: the index, or -1. */
 int scv_lookup(const char *s, const char *const *names, int n);
 /* The likely intended one of names[0..n-1] for a misspelt `word` (edit

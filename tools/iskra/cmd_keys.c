@@ -76,6 +76,19 @@ static void print_csv(int section)
     }
 }
 
+/* A row's columns in words. */
+typedef struct row_text {
+    char dflt[200], range[300], kinds[200], live[200];
+} row_text;
+
+static void row_words(const isk_key *k, row_text *t)
+{
+    isk_key_default_text(k, t->dflt, sizeof t->dflt);
+    isk_key_range_text(k, t->range, sizeof t->range);
+    isk_key_kinds_text(k, k->applies, t->kinds, sizeof t->kinds);
+    isk_key_live_text(k, t->live, sizeof t->live);
+}
+
 /* One markdown cell (a '|' inside is escaped). */
 static void md_cell(const char *s)
 {
@@ -101,18 +114,15 @@ static void print_markdown(int section)
         const isk_key *k = isk_key_at(i);
         if ((int)k->section != section)
             continue;
-        char dflt[200], range[300], kinds[200], live[200];
-        isk_key_default_text(k, dflt, sizeof dflt);
-        isk_key_range_text(k, range, sizeof range);
-        isk_key_kinds_text(k, k->applies, kinds, sizeof kinds);
-        isk_key_live_text(k, live, sizeof live);
+        row_text t;
+        row_words(k, &t);
         printf("| `%s` |", k->name);
         if (kind_col)
-            md_cell(kinds);
+            md_cell(t.kinds);
         md_cell(isk_key_type_name(k->type));
-        md_cell(dflt);
-        md_cell(range);
-        md_cell(live);
+        md_cell(t.dflt);
+        md_cell(t.range);
+        md_cell(t.live);
         md_cell(k->meaning);
         putchar('\n');
     }
@@ -137,17 +147,14 @@ static void print_readable(int section)
             const isk_key *k = isk_key_at(i);
             if ((int)k->section != s)
                 continue;
-            char dflt[200], range[300], ks[200], live[200];
-            isk_key_default_text(k, dflt, sizeof dflt);
-            isk_key_range_text(k, range, sizeof range);
-            isk_key_kinds_text(k, k->applies, ks, sizeof ks);
-            isk_key_live_text(k, live, sizeof live);
-            printf("  %-19s %-12s default %s", k->name, isk_key_type_name(k->type), *dflt ? dflt : "none");
-            if (*range)
-                printf("; range %s", range);
-            if (*ks)
-                printf("; for %s", ks);
-            printf("; live: %s\n", live);
+            row_text t;
+            row_words(k, &t);
+            printf("  %-19s %-12s default %s", k->name, isk_key_type_name(k->type), *t.dflt ? t.dflt : "none");
+            if (*t.range)
+                printf("; range %s", t.range);
+            if (*t.kinds)
+                printf("; for %s", t.kinds);
+            printf("; live: %s\n", t.live);
             printf("  %-19s %s\n", "", k->meaning);
         }
         printf("\n");
