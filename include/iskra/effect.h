@@ -71,6 +71,9 @@ extern "C" {
 #define ISK_EFFECT_MAX_EMITTERS 64
 #define ISK_EFFECT_MAX_DRAWINGS 64
 #define ISK_EFFECT_MAX_PARTICLES 4000000u /* per emitter, a sanity bound */
+/* The memory an effect may need at its fullest unless isk_effect_def.max_memory says
+ * otherwise: 4 GiB. */
+#define ISK_EFFECT_DEFAULT_MAX_MEMORY ((size_t)4 << 30)
 
 /* ---- forces ------------------------------------------------------------ */
 
@@ -185,7 +188,8 @@ typedef struct isk_emitter_def {
     isk_birth_mode birth;
     double burst_every;        /* STREAM: a burst of `count` every this many s (0: once at start) */
     double life, life_range;   /* lifetime = life + U*life_range; INFINITY = immortal */
-    size_t capacity;           /* pool size: spawns beyond it are dropped and counted */
+    size_t capacity;           /* pool size, for every source: births, explosions and clicks
+                                  beyond it are dropped and counted */
 
     /* motion */
     int forces[ISK_EFFECT_MAX_FORCES]; /* indices into isk_effect_def.forces */
@@ -307,6 +311,11 @@ typedef struct isk_effect_def {
     isk_drawing_def *drawings;     int ndrawings;
     isk_click_def click;
     isk_show_def show;
+    /* Not a scene key (a file must not raise its own limit): the most memory
+     * the program lets this effect take at its fullest, every emitter's pool
+     * full; isk_effect_create refuses a definition that could need more.  0:
+     * ISK_EFFECT_DEFAULT_MAX_MEMORY. */
+    size_t max_memory;
 } isk_effect_def;
 
 /* Defaults as documented on each field; no forces, emitters or drawings. */
@@ -321,6 +330,10 @@ int isk_effect_def_add_force(isk_effect_def *d, const char *name, isk_force_kind
 int isk_effect_def_add_deflector(isk_effect_def *d, const char *name, isk_deflector seg);
 isk_emitter_def *isk_effect_def_add_emitter(isk_effect_def *d, const char *name);
 isk_drawing_def *isk_effect_def_add_drawing(isk_effect_def *d, const char *name, isk_drawing_kind kind);
+/* The most memory the effect can take, in bytes: every emitter's pool full
+ * (its capacity, the store's growth included), its scratch and sprites. */
+size_t isk_effect_def_memory(const isk_effect_def *d);
+
 /* Index of the named force / deflector / emitter, or -1. */
 int isk_effect_def_find_force(const isk_effect_def *d, const char *name);
 int isk_effect_def_find_deflector(const isk_effect_def *d, const char *name);

@@ -124,6 +124,8 @@ isk_status isk_multi_coulomb_start(isk_multi_coulomb *mc, double cx, double cy, 
  * (nothing of the failing batch is added). */
 isk_status isk_multi_coulomb_release(isk_multi_coulomb *mc, isk_particles *p, isk_rng *r,
                                      size_t *released);
+/* How many particles the next release would add (every batch due now). */
+size_t isk_multi_coulomb_due(const isk_multi_coulomb *mc);
 /* age += dt. */
 void isk_multi_coulomb_advance(isk_multi_coulomb *mc, double dt);
 int isk_multi_coulomb_done(const isk_multi_coulomb *mc);

@@ -74,6 +74,11 @@ typedef struct isk_particles {
 isk_status isk_particles_init(isk_particles *p, size_t capacity, unsigned flags);
 void isk_particles_free(isk_particles *p);
 
+/* The most memory a store with these flags takes while it grows to hold
+ * `count` particles: its arrays at the capacity growth reaches, plus the
+ * arrays it grew from (both exist while it moves).  0 if count is too large. */
+size_t isk_particles_bytes(size_t count, unsigned flags);
+
 /* Makes room for at least `capacity` particles; all-or-nothing. */
 isk_status isk_particles_reserve(isk_particles *p, size_t capacity);
 

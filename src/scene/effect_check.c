@@ -4,6 +4,7 @@
 
 #include <math.h>
 #include <stdarg.h>
+#include <stdint.h>
 #include <stdio.h>
 #include <string.h>
 
@@ -131,6 +132,8 @@ static isk_status check_emitter(ctx *c)
     case ISK_SOURCE_LAYER:
         if (e->count < 1 || e->count > limit_of(e))
             return bad_key(c, "count", "must be 1..%zu (raise limit for more)", limit_of(e));
+        if (e->count > e->capacity)
+            return bad_key(c, "count", "%zu exceeds the capacity %zu (raise capacity for more)", e->count, e->capacity);
         if (e->source == ISK_SOURCE_LAYER && (e->rect[0] > e->rect[1] || e->rect[2] > e->rect[3]))
             return bad_key(c, "rect", "needs xmin <= xmax and ymin <= ymax");
         break;
@@ -238,6 +241,54 @@ static isk_status structure_fails(const isk_effect_def *d, fx_report *r, isk_sta
     return s;
 }
 
+/* "1.5 GiB", "233 MiB", "12 KiB" */
+static void bytes_text(size_t b, char *buf, size_t n)
+{
+    if (b == SIZE_MAX)
+        snprintf(buf, n, "more than can be addressed");
+    else if (b >= (size_t)1 << 30)
+        snprintf(buf, n, "%.1f GiB", (double)b / (double)((size_t)1 << 30));
+    else if (b >= (size_t)1 << 20)
+        snprintf(buf, n, "%.0f MiB", (double)b / (double)((size_t)1 << 20));
+    else
+        snprintf(buf, n, "%.0f KiB", (double)b / 1024.0);
+}
+
+/* Every pool full must fit the program's memory limit: say which emitters
+ * take what (the largest first, at most four). */
+static isk_status memory_fits(const isk_effect_def *d, fx_report *r)
+{
+    const size_t limit = d->max_memory ? d->max_memory : ISK_EFFECT_DEFAULT_MAX_MEMORY;
+    const size_t need = isk_effect_def_memory(d);
+    if (need <= limit)
+        return ISK_OK;
+    char msg[400], a[40], b[40];
+    bytes_text(need, a, sizeof a);
+    bytes_text(limit, b, sizeof b);
+    size_t used = (size_t)snprintf(msg, sizeof msg, "the emitters could need %s at their fullest (", a);
+    int shown[4], nshown = 0;
+    for (int k = 0; k < 4 && k < d->nemitters; k++) {
+        int best = -1;
+        for (int i = 0; i < d->nemitters; i++) {
+            int taken = 0;
+            for (int j = 0; j < nshown; j++)
+                taken |= shown[j] == i;
+            if (!taken && (best < 0 || fx_emitter_memory(&d->emitters[i]) > fx_emitter_memory(&d->emitters[best])))
+                best = i;
+        }
+        shown[nshown++] = best;
+        char e[40];
+        bytes_text(fx_emitter_memory(&d->emitters[best]), e, sizeof e);
+        used += (size_t)snprintf(msg + used, used < sizeof msg ? sizeof msg - used : 0, "%s'%s' %s", k ? ", " : "",
+                                 d->emitters[best].name, e);
+    }
+    snprintf(msg + used, used < sizeof msg ? sizeof msg - used : 0,
+             "%s), more than the limit of %s: lower their capacity, or raise the limit (--max-memory, "
+             "isk_effect_def.max_memory)",
+             d->nemitters > 4 ? ", ..." : "", b);
+    return structure_fails(d, r, ISK_ERR_SIZE, msg);
+}
+
 isk_status fx_check_def(const isk_effect_def *d, fx_report *r)
 {
     if (d->nforces < 0 || d->nforces > ISK_EFFECT_MAX_FORCES || d->nemitters < 0 ||
@@ -251,6 +302,9 @@ isk_status fx_check_def(const isk_effect_def *d, fx_report *r)
     if ((d->nforces && !d->forces) || (d->ndeflectors && !d->deflectors) || (d->nemitters && !d->emitters) ||
         (d->ndrawings && !d->drawings))
         return structure_fails(d, r, ISK_ERR_NULL, "a count is set but its array is NULL");
+    isk_status ms = memory_fits(d, r);
+    if (ms != ISK_OK)
+        return ms;
     for (int s = 0; s < ISK_SECTION_COUNT; s++) {
         isk_status st = unique_names(d, (isk_section_kind)s, r);
         for (int i = 0; st == ISK_OK && i < fx_section_items(d, (isk_section_kind)s); i++)

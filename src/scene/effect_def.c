@@ -1,5 +1,6 @@
 /* Building and copying effect definitions (plain data, see iskra/effect.h). */
 #include <math.h>
+#include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -113,6 +114,28 @@ isk_drawing_def *isk_effect_def_add_drawing(isk_effect_def *d, const char *name,
     set_name(s->name, name);
     s->kind = kind;
     return s;
+}
+
+/* What one emitter's pool takes at its fullest. */
+size_t fx_emitter_memory(const isk_emitter_def *e)
+{
+    unsigned flags = fx_emitter_oscillates(e) ? ISK_PARTICLES_OSC : 0;
+    size_t b = isk_particles_bytes(e->capacity, flags);
+    return b ? b : SIZE_MAX;
+}
+
+size_t isk_effect_def_memory(const isk_effect_def *d)
+{
+    if (!d)
+        return 0;
+    /* The effect itself (scratch, sine table, sprite cache, sorted order) is
+     * small and bounded; the pools are what grows. */
+    size_t total = sizeof(isk_effect_def) + ((size_t)1 << 20);
+    for (int i = 0; d->emitters && i < d->nemitters; i++) {
+        size_t b = fx_emitter_memory(&d->emitters[i]);
+        total = b > SIZE_MAX - total ? SIZE_MAX : total + b;
+    }
+    return total;
 }
 
 void fx_force_sync(isk_force_def *f)

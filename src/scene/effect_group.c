@@ -47,6 +47,16 @@ isk_status fx_fire_explosion(isk_effect *e, fx_group *g, isk_explosion kind, dou
     size_t limit = em->limit ? em->limit : ISK_EXPLODE_THESIS_LIMIT;
     isk_particles *p = &g->store;
     size_t before = p->count;
+    if (count > limit)
+        return ISK_ERR_RANGE; /* the explosion's own limit: refused, as the thesis does */
+    /* The pool bounds every source: what does not fit is dropped and counted. */
+    size_t room = p->count < em->capacity ? em->capacity - p->count : 0;
+    if (count > room) {
+        g->dropped += count - room;
+        count = room;
+    }
+    if (count == 0)
+        return ISK_OK;
     isk_status s;
     switch (kind) {
     case ISK_EXPLOSION_RING: s = isk_explode_ring(p, cx, cy, count, limit); break;
@@ -119,6 +129,14 @@ static isk_status run_release(isk_effect *e, fx_group *g, double t0, double h)
     }
     if (g->mc_active && !isk_multi_coulomb_done(&g->mc)) {
         size_t before = g->store.count;
+        isk_multi_coulomb *mc = &g->mc;
+        /* Batches that no longer fit the pool (streams share it) are dropped
+         * with the rest of the explosion. */
+        if (before + isk_multi_coulomb_due(mc) > em->capacity) {
+            g->dropped += mc->last_size + (mc->batches - mc->next) * mc->batch_size;
+            mc->next = mc->batches + 1;
+            return ISK_OK;
+        }
         isk_status s = isk_multi_coulomb_release(&g->mc, &g->store, &g->rng, NULL);
         if (s != ISK_OK)
             return s;

@@ -110,6 +110,8 @@ isk_status fx_check(const isk_effect_def *d, isk_error *err);
 isk_status fx_def_copy(isk_effect_def *dst, const isk_effect_def *src);
 /* pot.P from the force's exponent and law. */
 void fx_force_sync(isk_force_def *f);
+/* What one emitter's pool takes at its fullest (SIZE_MAX: more than can be). */
+size_t fx_emitter_memory(const isk_emitter_def *e);
 
 /* effect.c */
 void fx_sort_draw_order(isk_effect *e);

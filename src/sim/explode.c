@@ -218,4 +218,15 @@ void isk_multi_coulomb_advance(isk_multi_coulomb *mc, double dt)
         mc->age += dt;
 }
 
+size_t isk_multi_coulomb_due(const isk_multi_coulomb *mc)
+{
+    size_t n = 0;
+    double t = mc ? mc->next_release : 0.0;
+    for (size_t b = mc ? mc->next : 1; mc && b <= mc->batches && mc->age >= t; b++) {
+        n += b == mc->batches ? mc->last_size : mc->batch_size;
+        t += 0.010 / (double)b; /* as the release's schedule */
+    }
+    return n;
+}
+
 int isk_multi_coulomb_done(const isk_multi_coulomb *mc) { return !mc || mc->next > mc->batches; }

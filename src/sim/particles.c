@@ -65,14 +65,20 @@ static void free_arrays(isk_particles *p)
     p->block = NULL;
 }
 
-/* Lays the arrays of `cap` particles out in one block (NULL on failure). */
-static void *alloc_arrays(isk_particles *n, size_t cap, unsigned flags)
+/* The bytes of one block of arrays for `cap` particles. */
+static size_t block_bytes(size_t cap, unsigned flags)
 {
-    size_t total = 0;
+    size_t total = ALIGN;
     for (int k = 0; k < NCOLUMNS; k++)
         if (!columns[k].flag || (flags & columns[k].flag))
             total += round_up(cap * columns[k].elem) + STAGGER;
-    unsigned char *block = aligned_alloc(ALIGN, round_up(total + ALIGN));
+    return round_up(total);
+}
+
+/* Lays the arrays of `cap` particles out in one block (NULL on failure). */
+static void *alloc_arrays(isk_particles *n, size_t cap, unsigned flags)
+{
+    unsigned char *block = aligned_alloc(ALIGN, block_bytes(cap, flags));
     if (!block)
         return NULL;
     size_t off = 0;
@@ -114,6 +120,20 @@ void isk_particles_free(isk_particles *p)
     p->flags = flags;
     p->default_color = dc;
     p->default_size = ds;
+}
+
+size_t isk_particles_bytes(size_t count, unsigned flags)
+{
+    if (count > ISK_PARTICLES_MAX)
+        return 0;
+    size_t cap = 64, prev = 0;
+    while (cap < count) {
+        prev = cap;
+        cap *= 2;
+    }
+    if (cap > ISK_PARTICLES_MAX)
+        cap = ISK_PARTICLES_MAX;
+    return block_bytes(cap, flags) + (prev ? block_bytes(prev, flags) : 0);
 }
 
 isk_status isk_particles_reserve(isk_particles *p, size_t capacity)

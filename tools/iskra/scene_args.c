@@ -4,6 +4,7 @@
 
 #include <errno.h>
 #include <math.h>
+#include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -104,6 +105,24 @@ int scene_args_take(scene_args *a, int argc, char **argv, int *i)
         a->substeps = (int)n;
         return 1;
     }
+    if ((r = arg_value(a->cmd, argc, argv, i, "--max-memory", &v)) != 0) {
+        /* whole bytes, or with a binary suffix: 512M, 8G */
+        char *end;
+        errno = 0;
+        unsigned long long b = strtoull(v, &end, 10);
+        int shift = *end == 'K' || *end == 'k' ? 10 : *end == 'M' || *end == 'm' ? 20 : *end == 'G' || *end == 'g' ? 30 : 0;
+        if (shift)
+            end++;
+        if (r < 0 || end == v || *end || errno || v[0] == '-' || v[0] == '+' || b == 0 ||
+            b > (unsigned long long)(SIZE_MAX >> shift)) {
+            if (r > 0)
+                fprintf(stderr, "iskra %s: --max-memory: expected a size in bytes such as 512M or 8G, got \"%s\"\n",
+                        a->cmd, v);
+            return -1;
+        }
+        a->max_memory = (size_t)b << shift;
+        return 1;
+    }
     const char *s = argv[*i];
     if (s[0] == '-' && s[1]) {
         fprintf(stderr, "iskra %s: unknown option '%s' (iskra %s --help)\n", a->cmd, s, a->cmd);
@@ -123,7 +142,9 @@ void scene_args_help(FILE *f)
                "  --seed N         random seed, 0..2^64-1 (default: the scene's)\n"
                "  --size WxH       canvas size in pixels, e.g. 800x600 (default: the scene's)\n"
                "  --dt SECONDS     time step per frame, > 0 (default: the scene's)\n"
-               "  --substeps N     substeps per frame, 1..1000 (default: the scene's)\n");
+               "  --substeps N     substeps per frame, 1..1000 (default: the scene's)\n"
+               "  --max-memory B   the most memory the scene may take with every pool full, in bytes\n"
+               "                   or with K, M, G (default 4G); a scene that could need more is refused\n");
 }
 
 int scene_args_open(const scene_args *a, isk_effect_def *def, isk_effect **fx)
@@ -149,6 +170,7 @@ int scene_args_open(const scene_args *a, isk_effect_def *def, isk_effect **fx)
         def->dt = a->dt;
     if (a->substeps)
         def->substeps = a->substeps;
+    def->max_memory = a->max_memory;
     s = isk_effect_create(fx, def, &err);
     if (s != ISK_OK) {
         /* "emitter 'x' (line 12): why" -> "FILE:12: emitter 'x': why", like the parser's */

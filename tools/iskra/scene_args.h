@@ -17,6 +17,7 @@ typedef struct scene_args {
     int width, height;    /* 0: the scene's */
     double dt;            /* 0: the scene's */
     int substeps;         /* 0: the scene's */
+    size_t max_memory;    /* 0: the library's default budget */
 } scene_args;
 
 /* The value of option argv[*i] ("--opt VALUE" or "--opt=VALUE") if its name
