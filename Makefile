@@ -99,8 +99,10 @@ LIBS_SDL  = $(PKG_SDL_LIBS)
 .DEFAULT_GOAL := all
 
 CXX_CHECK := $(BUILD)/tests/cxx_link
+# The iskra tool with allocation failure injection (tests/alloc/alloc_fail.c).
+ALLOC_TOOL := $(BUILD)/tests/iskra_allocfail
 
-all: lib $(TOOL) examples tests benches $(CXX_CHECK)
+all: lib $(TOOL) examples tests benches $(CXX_CHECK) $(ALLOC_TOOL)
 
 lib: $(LIBA) $(LIBSO) $(SDLA) $(SDLSO)
 examples: $(EXAMPLES)
@@ -151,6 +153,12 @@ $(TOOL): $(TOOL_OBJ) $(SDLA) $(LIBA)
 	@mkdir -p $(dir $@)
 	$(call say,LD,$@)
 	$(Q)$(CC) $(ALL_CFLAGS) -o $@ $(TOOL_OBJ) $(SDLA) $(LIBA) $(LDFLAGS) $(PKG_INIH) $(LIBS_SDL) $(LIBS_CORE)
+
+$(ALLOC_TOOL): $(TOOL_OBJ) $(BUILD)/obj/tests/alloc/alloc_fail.o $(SDLA) $(LIBA)
+	@mkdir -p $(dir $@)
+	$(call say,LD,$@)
+	$(Q)$(CC) $(ALL_CFLAGS) -o $@ $^ -Wl,--wrap=malloc,--wrap=calloc,--wrap=realloc,--wrap=aligned_alloc \
+	    $(LDFLAGS) $(PKG_INIH) $(LIBS_SDL) $(LIBS_CORE)
 
 $(BUILD)/examples/%: $(BUILD)/obj/examples/%.o $(SDLA) $(LIBA)
 	@mkdir -p $(dir $@)

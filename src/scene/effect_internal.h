@@ -44,8 +44,9 @@ typedef struct fx_step_kind {
 
 #define FX_MAX_STEP_STAGES 4
 
-/* Draws a group's store (effect_render.c picks one per group). */
-typedef void (*fx_draw_fn)(isk_effect *e, isk_canvas *c, fx_group *g);
+/* Draws a group's store (effect_render.c picks one per group); ISK_ERR_NOMEM
+ * when a sprite could not be baked. */
+typedef isk_status (*fx_draw_fn)(isk_effect *e, isk_canvas *c, fx_group *g);
 
 struct fx_group {
     int index;                     /* emitter index in the definition */

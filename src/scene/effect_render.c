@@ -45,7 +45,7 @@ void fx_free_ramps(fx_group *g)
     g->has_color_ramp = g->has_alpha_ramp = g->has_size_ramp = 0;
 }
 
-static void draw_drawing(isk_effect *e, isk_canvas *c, const isk_view *v, const isk_drawing_def *s)
+static isk_status draw_drawing(isk_effect *e, isk_canvas *c, const isk_view *v, const isk_drawing_def *s)
 {
     switch (s->kind) {
     case ISK_DRAWING_POLYGON: {
@@ -73,8 +73,12 @@ static void draw_drawing(isk_effect *e, isk_canvas *c, const isk_view *v, const 
         }
         int px = d >= ISK_SPRITE_MAX_SIZE ? ISK_SPRITE_MAX_SIZE : (d >= 1.0 ? (int)(d + 0.5) : 1);
         const isk_sprite *spr;
-        if (isk_sprite_cache_get(e->sprites, s->sprite, px, s->color, &spr) == ISK_OK)
-            isk_draw_sprite(c, spr, X, Y, s->blend);
+        if (isk_sprite_cache_get(e->sprites, s->sprite, px, s->color, &spr) != ISK_OK) {
+            isk_sprite_cache_clear(e->sprites);
+            if (isk_sprite_cache_get(e->sprites, s->sprite, px, s->color, &spr) != ISK_OK)
+                return ISK_ERR_NOMEM;
+        }
+        isk_draw_sprite(c, spr, X, Y, s->blend);
         break;
     }
     case ISK_DRAWING_POLYLINE:
@@ -104,6 +108,7 @@ static void draw_drawing(isk_effect *e, isk_canvas *c, const isk_view *v, const 
     case ISK_DRAWING_KIND_COUNT:
         break;
     }
+    return ISK_OK;
 }
 
 /* The colour, alpha and size multiplier of particle i at normalised age t. */
@@ -165,15 +170,31 @@ static inline void dots_styled(isk_effect *e, isk_canvas *c, fx_group *g, const 
     }
 }
 
-static void draw_dots(isk_effect *e, isk_canvas *c, fx_group *g) { dots_plain(e, c, g, isk_draw_dot); }
-static void draw_browser_dots(isk_effect *e, isk_canvas *c, fx_group *g) { dots_plain(e, c, g, isk_draw_dot_browser); }
-static void draw_styled_dots(isk_effect *e, isk_canvas *c, fx_group *g) { dots_styled(e, c, g, isk_draw_dot); }
-static void draw_styled_browser_dots(isk_effect *e, isk_canvas *c, fx_group *g)
+static isk_status draw_dots(isk_effect *e, isk_canvas *c, fx_group *g)
 {
-    dots_styled(e, c, g, isk_draw_dot_browser);
+    dots_plain(e, c, g, isk_draw_dot);
+    return ISK_OK;
 }
 
-static void draw_pixels(isk_effect *e, isk_canvas *c, fx_group *g)
+static isk_status draw_browser_dots(isk_effect *e, isk_canvas *c, fx_group *g)
+{
+    dots_plain(e, c, g, isk_draw_dot_browser);
+    return ISK_OK;
+}
+
+static isk_status draw_styled_dots(isk_effect *e, isk_canvas *c, fx_group *g)
+{
+    dots_styled(e, c, g, isk_draw_dot);
+    return ISK_OK;
+}
+
+static isk_status draw_styled_browser_dots(isk_effect *e, isk_canvas *c, fx_group *g)
+{
+    dots_styled(e, c, g, isk_draw_dot_browser);
+    return ISK_OK;
+}
+
+static isk_status draw_pixels(isk_effect *e, isk_canvas *c, fx_group *g)
 {
     const isk_particles *p = &g->store;
     const int vary = varies(g);
@@ -184,9 +205,10 @@ static void draw_pixels(isk_effect *e, isk_canvas *c, fx_group *g)
         if (X >= 0 && Y >= 0 && X < c->width && Y < c->height)
             isk_draw_pixel(c, (int)X, (int)Y, col, g->def->blend);
     }
+    return ISK_OK;
 }
 
-static void draw_discs(isk_effect *e, isk_canvas *c, fx_group *g)
+static isk_status draw_discs(isk_effect *e, isk_canvas *c, fx_group *g)
 {
     const isk_particles *p = &g->store;
     const int vary = varies(g);
@@ -197,6 +219,7 @@ static void draw_discs(isk_effect *e, isk_canvas *c, fx_group *g)
         isk_color col = style(g, p, i, vary, &mult);
         isk_fill_circle_aa(c, X, Y, 0.5 * g->def->size * mult * scale, col, g->def->blend);
     }
+    return ISK_OK;
 }
 
 /* Sprites: with a constant colour, one sprite baked in that colour (its
@@ -205,7 +228,7 @@ static void draw_discs(isk_effect *e, isk_canvas *c, fx_group *g)
  * (isk_draw_sprite_tinted), so a ramp of a thousand colours bakes nothing
  * more.  Both give isk_blend_pixel_cov's bytes exactly.  A size ramp gives
  * each particle its own whole-pixel size (one cached mask per size). */
-static void draw_sprites(isk_effect *e, isk_canvas *c, fx_group *g)
+static isk_status draw_sprites(isk_effect *e, isk_canvas *c, fx_group *g)
 {
     const isk_emitter_def *em = g->def;
     const isk_particles *p = &g->store;
@@ -225,12 +248,11 @@ static void draw_sprites(isk_effect *e, isk_canvas *c, fx_group *g)
         int px = d >= ISK_SPRITE_MAX_SIZE ? ISK_SPRITE_MAX_SIZE : (d >= 1.0 ? (int)(d + 0.5) : 1);
         if (!spr || px != last_px) {
             if (isk_sprite_cache_get(e->sprites, em->sprite, px, bake_col, &spr) != ISK_OK) {
-                /* A full cache: start over rather than stop drawing. */
+                /* A full cache: start over rather than stop drawing; if even
+                 * that fails, memory is out (never a silently missing sprite). */
                 isk_sprite_cache_clear(e->sprites);
-                if (isk_sprite_cache_get(e->sprites, em->sprite, px, bake_col, &spr) != ISK_OK) {
-                    spr = NULL;
-                    continue;
-                }
+                if (isk_sprite_cache_get(e->sprites, em->sprite, px, bake_col, &spr) != ISK_OK)
+                    return ISK_ERR_NOMEM;
             }
             last_px = px;
         }
@@ -239,13 +261,15 @@ static void draw_sprites(isk_effect *e, isk_canvas *c, fx_group *g)
         else
             isk_draw_sprite(c, spr, X, Y, em->blend);
     }
+    return ISK_OK;
 }
 
-static void draw_nothing(isk_effect *e, isk_canvas *c, fx_group *g)
+static isk_status draw_nothing(isk_effect *e, isk_canvas *c, fx_group *g)
 {
     (void)e;
     (void)c;
     (void)g;
+    return ISK_OK;
 }
 
 fx_draw_fn fx_choose_draw(const fx_group *g)
@@ -266,11 +290,16 @@ isk_status fx_render(isk_effect *e, isk_canvas *c)
     const isk_effect_def *d = &e->def;
     if (d->clear)
         isk_canvas_fill(c, d->background);
-    for (int i = 0; i < d->ndrawings; i++)
-        draw_drawing(e, c, &e->view, &d->drawings[i]);
+    for (int i = 0; i < d->ndrawings; i++) {
+        isk_status s = draw_drawing(e, c, &e->view, &d->drawings[i]);
+        if (s != ISK_OK)
+            return s;
+    }
     for (int k = 0; k < e->ngroups; k++) {
         fx_group *g = &e->groups[e->draw_order[k]];
-        g->draw(e, c, g);
+        isk_status s = g->draw(e, c, g);
+        if (s != ISK_OK)
+            return s;
     }
     /* The thesis simulator's potentials: a disc of radius 0.1 (blue attracts,
      * red repels), then the id in white at (x - 0.04, y - 0.06). */

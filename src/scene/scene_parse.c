@@ -164,8 +164,10 @@ static isk_status add_item(parser *P, section *s, const char *name, int line)
         s->index = 0;
         break;
     }
-    if (s->index < 0)
+    if (s->index < 0 && fx_section_items(d, s->type) >= max)
         return isk_ini_error(P->err, P->name, line, "too many %s (at most %d)", what, max);
+    if (s->index < 0) /* room, so the add could not allocate */
+        return isk_error_set(P->err, ISK_ERR_NOMEM, "%s: out of memory", P->name);
     return ISK_OK;
 }
 

@@ -117,7 +117,7 @@ int cmd_render(int argc, char **argv)
         frames = def.show.frames;
     isk_canvas canvas;
     if (isk_canvas_init(&canvas, def.width, def.height) != ISK_OK) {
-        fprintf(stderr, "iskra render: cannot allocate a %dx%d canvas\n", def.width, def.height);
+        fprintf(stderr, "iskra render: out of memory (a %dx%d canvas)\n", def.width, def.height);
         isk_effect_destroy(fx);
         isk_effect_def_free(&def);
         return 1;
