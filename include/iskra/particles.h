@@ -101,7 +101,8 @@ void isk_particles_remove(isk_particles *p, size_t i);
  * returns how many were removed. */
 size_t isk_particles_cull(isk_particles *p);
 
-/* Adds dt to every age (a stage; the system runs it only when ageing is on). */
+/* Adds dt to the ages of [begin, end), end clamped to the count (a stage;
+ * the system runs it only when ageing is on). */
 void isk_particles_age(isk_particles *p, size_t begin, size_t end, double dt);
 
 void isk_particles_clear(isk_particles *p);

@@ -430,7 +430,7 @@ const char *const *isk_section_kind_names(isk_section_kind s, int *n)
     return k ? sections[s].kind_names : NULL;
 }
 
-const char *isk_key_type_name(isk_key_type t)
+const char *isk_key_type_name(isk_key_type t) /* "?" when out of range */
 {
     static const char *const names[ISK_KEY_TYPE_COUNT] = {
         [ISK_KEY_NUMBER] = "number",       [ISK_KEY_WHOLE] = "whole",         [ISK_KEY_LONG] = "whole",
@@ -449,6 +449,8 @@ const char *isk_key_type_name(isk_key_type t)
 int isk_key_choices(const isk_key *k, const char **out, int max)
 {
     int m = 0;
+    if (!out)
+        return 0;
     for (int i = 0; k && i < k->nnames && m < max; i++)
         out[m++] = k->names[i];
     for (int i = 0; k && k->words && k->words[i].word && m < max; i++)
@@ -458,7 +460,11 @@ int isk_key_choices(const isk_key *k, const char **out, int max)
 
 void isk_key_range_text(const isk_key *k, char *buf, size_t n)
 {
+    if (!buf || n == 0)
+        return;
     buf[0] = 0;
+    if (!k)
+        return;
     if (k->type == ISK_KEY_SEED) {
         snprintf(buf, n, "0..2^64-1");
         return;
@@ -492,6 +498,11 @@ void isk_key_range_text(const isk_key *k, char *buf, size_t n)
 
 void isk_key_kinds_text(const isk_key *k, unsigned mask, char *buf, size_t n)
 {
+    if (!buf || n == 0)
+        return;
+    buf[0] = 0;
+    if (!k)
+        return;
     int count;
     const char *const *names = isk_section_kind_names(k->section, &count);
     buf[0] = 0;
@@ -508,7 +519,11 @@ void isk_key_kinds_text(const isk_key *k, unsigned mask, char *buf, size_t n)
 
 void isk_key_default_text(const isk_key *k, char *buf, size_t n)
 {
-    if (k->required && k->required == (k->applies ? k->applies : k->required))
+    if (!buf || n == 0)
+        return;
+    if (!k)
+        buf[0] = 0;
+    else if (k->required && k->required == (k->applies ? k->applies : k->required))
         snprintf(buf, n, "required");
     else if (k->dflt_doc)
         snprintf(buf, n, "%s", k->dflt_doc);
@@ -518,6 +533,12 @@ void isk_key_default_text(const isk_key *k, char *buf, size_t n)
 
 void isk_key_live_text(const isk_key *k, char *buf, size_t n)
 {
+    if (!buf || n == 0)
+        return;
+    if (!k) {
+        buf[0] = 0;
+        return;
+    }
     unsigned applies = k->applies ? k->applies : ALL;
     if (k->create_only)
         snprintf(buf, n, "no");

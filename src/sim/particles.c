@@ -316,6 +316,10 @@ size_t isk_particles_cull(isk_particles *p)
 
 void isk_particles_age(isk_particles *p, size_t begin, size_t end, double dt)
 {
+    if (!p)
+        return;
+    if (end > p->count)
+        end = p->count; /* never past the particles there are */
     double *restrict age = p->age;
     for (size_t i = begin; i < end; i++)
         age[i] = age[i] + dt;

@@ -218,6 +218,13 @@ static inline void place(const isk_shape *s, double c, double sn, double lx, dou
 
 void isk_shape_sample(const isk_shape *s, isk_rng *r, double *x, double *y)
 {
+    if (!s || !r || !x || !y) {
+        if (x)
+            *x = 0.0;
+        if (y)
+            *y = 0.0;
+        return;
+    }
     double lx = 0.0, ly = 0.0;
     local_sample(s, s->kind, r, &lx, &ly);
     double c = 1.0, sn = 0.0;
@@ -265,6 +272,13 @@ isk_status isk_shape_sample_n(const isk_shape *s, isk_rng *r, size_t n, double *
 
 void isk_velgen_sample(const isk_velgen *v, isk_rng *r, double *vx, double *vy)
 {
+    if (!v || !r || !vx || !vy) {
+        if (vx)
+            *vx = 0.0;
+        if (vy)
+            *vy = 0.0;
+        return;
+    }
     switch (v->kind) {
     case ISK_VELGEN_CONSTANT:
         *vx = v->vx;

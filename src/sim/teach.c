@@ -3,33 +3,47 @@
 
 #include "sim/kernels.h"
 
+/* A NULL particle or view is a no-op (or a zero force): the teaching API
+ * never dereferences what it was not given. */
 void isk_mp_move(isk_material_point *mp, double dt, isk_vec2 F)
 {
+    if (!mp)
+        return;
     isk_k_semi_euler(&mp->r.x, &mp->r.y, &mp->v.x, &mp->v.y, mp->m, F.x, F.y, dt);
 }
 
 void isk_mp_move_explicit(isk_material_point *mp, double dt, isk_vec2 F)
 {
+    if (!mp)
+        return;
     isk_k_euler(&mp->r.x, &mp->r.y, &mp->v.x, &mp->v.y, mp->m, F.x, F.y, dt);
 }
 
 isk_vec2 isk_gravity_force(const isk_material_point *mp, double g)
 {
+    if (!mp)
+        return isk_vec2_make(0.0, 0.0);
     return isk_vec2_make(0.0, isk_k_gravity_fy(mp->m, g));
 }
 
 isk_vec2 isk_drag_force(const isk_material_point *mp, double o)
 {
+    if (!mp)
+        return isk_vec2_make(0.0, 0.0);
     return isk_vec2_make(isk_k_drag(mp->v.x, o), isk_k_drag(mp->v.y, o));
 }
 
 isk_vec2 isk_potential_force_on(isk_potential *pot, const isk_material_point *mp, isk_fidelity centre)
 {
+    if (!mp)
+        return isk_vec2_make(0.0, 0.0);
     return isk_potential_force(pot, mp->r.x, mp->r.y, centre);
 }
 
 void isk_particle_init(isk_particle *c, double m, isk_vec2 r, isk_vec2 v)
 {
+    if (!c)
+        return;
     c->diameter = 0.1;
     c->mp.m = m;
     c->mp.r = r;
@@ -39,12 +53,16 @@ void isk_particle_init(isk_particle *c, double m, isk_vec2 r, isk_vec2 v)
 
 void isk_particle_draw(const isk_particle *c, isk_canvas *canvas, const isk_view *view)
 {
+    if (!c || !canvas || !view)
+        return;
     isk_world_dot_browser(canvas, view, c->mp.r.x, c->mp.r.y, c->color, ISK_BLEND_OVER);
 }
 
 void isk_particle_zarobi_box(isk_particle *c, double xmin, double xmax, double ymin, double ymax,
                              int top, int right, int bottom, int left)
 {
+    if (!c)
+        return;
     double *x = &c->mp.r.x, *y = &c->mp.r.y, *vx = &c->mp.v.x, *vy = &c->mp.v.y;
     double p = c->diameter;
     if (left)
@@ -61,5 +79,7 @@ void isk_particle_zarobi_box(isk_particle *c, double xmin, double xmax, double y
 
 void isk_particle_zarobi(isk_particle *c, const isk_view *view, int top, int right, int bottom, int left)
 {
+    if (!c || !view)
+        return;
     isk_particle_zarobi_box(c, view->xmin, view->xmax, view->ymin, view->ymax, top, right, bottom, left);
 }
