@@ -20,11 +20,6 @@ static void free_group(fx_group *g)
     fx_free_ramps(g);
 }
 
-int fx_emitter_oscillates(const isk_emitter_def *em)
-{
-    return em->osc_amp_max > 0 && em->osc_omega_max != 0;
-}
-
 /* Room for the group's picks (its segments grow as it compiles). */
 static isk_status alloc_group(isk_effect *e, fx_group *g)
 {
@@ -52,6 +47,42 @@ static void reset_potentials(isk_effect *e)
         }
 }
 
+/* Everything that exists at time 0. */
+static isk_status populate(isk_effect *e, fx_group *g)
+{
+    const isk_emitter_def *em = g->def;
+    isk_particles *p = &g->store;
+    isk_status s = ISK_OK;
+    switch (em->source) {
+    case ISK_SOURCE_PARTICLE:
+        s = isk_particles_add(p, em->pos.x, em->pos.y, em->vel.x, em->vel.y, em->mass, NULL);
+        if (s == ISK_OK)
+            fx_adopt(e, g, 0);
+        break;
+    case ISK_SOURCE_LAYER: {
+        size_t limit = em->limit ? em->limit : ISK_EXPLODE_THESIS_LIMIT;
+        s = isk_explode_layer(p, &g->rng, em->rect[0], em->rect[1], em->rect[2], em->rect[3], em->count, limit);
+        for (size_t i = 0; s == ISK_OK && i < p->count; i++)
+            p->m[i] = em->mass;
+        if (s == ISK_OK)
+            fx_adopt(e, g, 0);
+        break;
+    }
+    case ISK_SOURCE_EXPLOSION:
+        if (em->start <= 0) {
+            s = fx_fire_explosion(e, g, em->explosion, em->pos.x, em->pos.y, em->count, em->kick);
+            g->fired = 1;
+        }
+        break;
+    case ISK_SOURCE_STREAM:
+        fx_stream_reset(g, 0.0);
+        break;
+    default:
+        break;
+    }
+    return s;
+}
+
 /* Builds all groups from the definition: the state right after create. */
 static isk_status build(isk_effect *e, isk_error *err)
 {
@@ -75,7 +106,7 @@ static isk_status build(isk_effect *e, isk_error *err)
             return s;
         if ((s = fx_compile(e, g)) != ISK_OK)
             return isk_error_set(err, s, "emitter '%s': cannot compile: %s", em->name, isk_status_str(s));
-        if ((s = fx_populate(e, g)) != ISK_OK)
+        if ((s = populate(e, g)) != ISK_OK)
             return isk_error_set(err, s, "emitter '%s': cannot create its particles: %s", em->name,
                                  isk_status_str(s));
     }
@@ -288,15 +319,6 @@ isk_status isk_effect_click(isk_effect *e, double x, double y)
     int gi = d->click.emitter >= 0 ? d->click.emitter : 0;
     fx_group *g = &e->groups[gi];
     return fx_fire_explosion(e, g, d->click.explosion, x, y, d->click.count, g->def->kick);
-}
-
-isk_status isk_effect_set_substeps(isk_effect *e, int substeps)
-{
-    if (!e)
-        return ISK_ERR_NULL;
-    char v[16];
-    snprintf(v, sizeof v, "%d", substeps);
-    return isk_effect_set(e, "scene", "substeps", v, NULL);
 }
 
 /* ---- inspection ------------------------------------------------------------ */

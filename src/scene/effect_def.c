@@ -116,6 +116,11 @@ isk_drawing_def *isk_effect_def_add_drawing(isk_effect_def *d, const char *name,
     return s;
 }
 
+int fx_emitter_oscillates(const isk_emitter_def *em)
+{
+    return em->osc_amp_max > 0 && em->osc_omega_max != 0;
+}
+
 /* What one emitter's pool takes at its fullest. */
 size_t fx_emitter_memory(const isk_emitter_def *e)
 {

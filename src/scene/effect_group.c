@@ -1,8 +1,8 @@
-/* Births and deaths of a group's particles: what exists at time 0, the
- * thesis's explosions (at create, timed, scheduled or clicked), and the
- * frame-level stages that release and cull them.  Every source's new
- * particles go through fx_adopt, so lifetimes and oscillation state follow
- * one rule.  Stream births are effect_stream.c's. */
+/* Births and deaths of a group's particles: the thesis's explosions (at
+ * create, timed, scheduled or clicked), and the frame-level stages that
+ * release and cull them.  Every source's new particles go through fx_adopt,
+ * so lifetimes and oscillation state follow one rule.  Stream births are
+ * effect_stream.c's; what exists at time 0 is effect.c's (populate). */
 #include <math.h>
 
 #include "effect_internal.h"
@@ -76,41 +76,6 @@ isk_status fx_fire_explosion(isk_effect *e, fx_group *g, isk_explosion kind, dou
     }
     if (s == ISK_OK)
         fx_adopt(e, g, before);
-    return s;
-}
-
-isk_status fx_populate(isk_effect *e, fx_group *g)
-{
-    const isk_emitter_def *em = g->def;
-    isk_particles *p = &g->store;
-    isk_status s = ISK_OK;
-    switch (em->source) {
-    case ISK_SOURCE_PARTICLE:
-        s = isk_particles_add(p, em->pos.x, em->pos.y, em->vel.x, em->vel.y, em->mass, NULL);
-        if (s == ISK_OK)
-            fx_adopt(e, g, 0);
-        break;
-    case ISK_SOURCE_LAYER: {
-        size_t limit = em->limit ? em->limit : ISK_EXPLODE_THESIS_LIMIT;
-        s = isk_explode_layer(p, &g->rng, em->rect[0], em->rect[1], em->rect[2], em->rect[3], em->count, limit);
-        for (size_t i = 0; s == ISK_OK && i < p->count; i++)
-            p->m[i] = em->mass;
-        if (s == ISK_OK)
-            fx_adopt(e, g, 0);
-        break;
-    }
-    case ISK_SOURCE_EXPLOSION:
-        if (em->start <= 0) {
-            s = fx_fire_explosion(e, g, em->explosion, em->pos.x, em->pos.y, em->count, em->kick);
-            g->fired = 1;
-        }
-        break;
-    case ISK_SOURCE_STREAM:
-        fx_stream_reset(g, 0.0);
-        break;
-    default:
-        break;
-    }
     return s;
 }
 

@@ -17,6 +17,7 @@
  *   effect_check.c    validation of a definition
  *   effect_compile.c  definition -> lists, and describe
  *   effect_group.c    births: every source's particles enter through fx_adopt
+ *   effect_live.c     changes while running: isk_effect_set / get, potentials
  *   effect_stream.c   when a stream's particles are born
  *   effect_render.c   drawing
  *   effect_def.c      building and copying definitions
@@ -113,11 +114,11 @@ isk_status fx_def_copy(isk_effect_def *dst, const isk_effect_def *src);
 void fx_force_sync(isk_force_def *f);
 /* What one emitter's pool takes at its fullest (SIZE_MAX: more than can be). */
 size_t fx_emitter_memory(const isk_emitter_def *e);
+/* The emitter's particles sway (they need the store's oscillation columns). */
+int fx_emitter_oscillates(const isk_emitter_def *em);
 
 /* effect.c */
 void fx_sort_draw_order(isk_effect *e);
-/* The emitter's particles sway (they need the store's oscillation columns). */
-int fx_emitter_oscillates(const isk_emitter_def *em);
 
 /* effect_compile.c: (re)builds the group's lists from the definition and the
  * effect's live potentials; ISK_ERR_FULL if a list overflowed (a bug),
@@ -131,8 +132,6 @@ uint64_t fx_group_seed(uint64_t seed, int index);
 /* New particles [from, count) take the emitter's lifetime, then their
  * oscillation state: every source's particles go through here. */
 void fx_adopt(isk_effect *e, fx_group *g, size_t from);
-/* Everything that exists at time 0. */
-isk_status fx_populate(isk_effect *e, fx_group *g);
 isk_status fx_fire_explosion(isk_effect *e, fx_group *g, isk_explosion kind, double cx, double cy, size_t count,
                              isk_kick_target kick);
 extern const fx_step_kind fx_step_release;    /* frame start: timed and scheduled explosions */

@@ -267,6 +267,15 @@ isk_status isk_effect_get(const isk_effect *e, const char *section, const char *
     return ISK_OK;
 }
 
+isk_status isk_effect_set_substeps(isk_effect *e, int substeps)
+{
+    if (!e)
+        return ISK_ERR_NULL;
+    char v[16];
+    snprintf(v, sizeof v, "%d", substeps);
+    return isk_effect_set(e, "scene", "substeps", v, NULL);
+}
+
 /* ---- forces while running ----------------------------------------------------------- */
 
 /* Room for one more live potential (every group's pick list grows with it). */

@@ -8,6 +8,9 @@
  * fills `why` with "expected a number between 0 and 10000000, got "1e8""
  * (the key and where it is are the caller's to add).
  *
+ * Files: key_item.c (the items, the shared helpers below), key_parse.c,
+ * key_check.c, key_format.c (formatting and the defaults).
+ *
  * The items: [scene] and [view] keys live in the isk_effect_def itself,
  * [bounds] in its isk_bounds, [click] in its isk_click_def, the others in
  * the arrays of forces, deflectors, emitters and drawings.
@@ -55,5 +58,29 @@ void fx_key_expect(const isk_key *k, char *buf, size_t n);
 isk_status fx_key_set_default(const isk_key *k, void *item);
 /* Every default of a section into one item. */
 void fx_section_defaults(isk_section_kind s, void *item);
+
+/* ---- shared by the key_*.c files ------------------------------------------- */
+
+/* The field at `off` in an item, as a T (a row says which type it is). */
+#define FX_AT(T, item, off) ((T *)(void *)((char *)(item) + (off)))
+#define FX_AT_C(T, item, off) ((const T *)(const void *)((const char *)(item) + (off)))
+
+/* Whole-number fields (int, long, size_t by the row's type), as a double. */
+double fx_whole_get(const isk_key *k, const void *item);
+void fx_whole_set(const isk_key *k, void *item, double v);
+/* "a number between 0 and 1", "a number > 0" for the row's range. */
+void fx_range_words(const isk_key *k, const char *what, char *buf, size_t n);
+int fx_in_range(const isk_key *k, double v);
+/* why = "expected <the row's expectation>, got "text"" (ISK_ERR_RANGE). */
+isk_status fx_expected(const isk_key *k, char *why, size_t n, const char *got);
+/* The same with "; did you mean "x"?" from names. */
+isk_status fx_expected_or_guess(const isk_key *k, const char *text, const char *const *names, int count, char *why,
+                                size_t n);
+/* The word standing for a value: its index in k->words, or -1; the word of
+ * a value, or NULL. */
+int fx_word_index(const isk_key *k, const char *s);
+const char *fx_word_of(const isk_key *k, double v);
+/* "a, b or c" of the names whose bit is set in mask. */
+void fx_join_names(char *buf, size_t n, const char *const *names, int count, unsigned mask);
 
 #endif
