@@ -8,12 +8,14 @@
 
 #include "cmd.h"
 #include "iskra/png.h"
+#include "outpath.h"
 
 static void help(FILE *f)
 {
     fprintf(f, "usage: iskra compare A.png B.png [--diff OUT.png]\n"
                "  Compares two images pixel by pixel (all four channels).\n"
-               "  --diff OUT.png  write an image with differing pixels in magenta\n"
+               "  --diff OUT.png  write an image with differing pixels in magenta (missing\n"
+               "                  directories are created; OUT must not be A or B)\n"
                "  exit status: 0 identical, 1 different or unreadable, 2 usage error\n");
 }
 
@@ -46,6 +48,12 @@ int cmd_compare(int argc, char **argv)
         help(stderr);
         return 2;
     }
+    if (diff && !*diff) {
+        fprintf(stderr, "iskra compare: --diff needs a file name\n");
+        return 2;
+    }
+    if (outpath_refuse_input("compare", diff, files[0]) || outpath_refuse_input("compare", diff, files[1]))
+        return 2;
     isk_canvas a, b;
     isk_error err;
     if (isk_png_read(&a, files[0], &err) != ISK_OK) {
@@ -79,7 +87,9 @@ int cmd_compare(int argc, char **argv)
     }
     if (diff) {
         isk_error err;
-        if (isk_png_write(&img, diff, &err) != ISK_OK) {
+        if (outpath_make_parents("compare", diff)) {
+            rc = 1;
+        } else if (isk_png_write(&img, diff, &err) != ISK_OK) {
             fprintf(stderr, "iskra compare: %s\n", err.message);
             rc = 1;
         }

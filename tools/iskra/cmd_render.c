@@ -3,15 +3,14 @@
  * Renders frame N (frame 0 = the initial state, frame N = after N steps) to
  * a PNG, and/or a numbered sequence DIR/frame_000000.png ... of every K-th
  * frame up to N.  Everything is validated before anything is written. */
-#include <errno.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <sys/stat.h>
 
 #include "cmd.h"
 #include "iskra/effect.h"
 #include "iskra/png.h"
+#include "outpath.h"
 #include "progress.h"
 #include "scene_args.h"
 
@@ -24,32 +23,11 @@ static void help(FILE *f)
                "                   [scene] frames, else 0)\n"
                "  --out FILE.png   write frame N there\n"
                "  --out-dir DIR    write frames 0, K, 2K, ... <= N as DIR/frame_000000.png ...\n"
-               "                   (DIR is created if missing)\n"
+               "                   (missing directories of DIR and FILE are created)\n"
                "  --every K        sequence step, >= 1 (default 1)\n");
     scene_args_help(f);
     fprintf(f, "  A progress bar appears on stderr when it is a terminal and the render\n"
                "  takes a while.  exit status: 0 success, 1 cannot write, 2 usage or scene error\n");
-}
-
-/* mkdir -p */
-static int make_dirs(const char *path)
-{
-    char buf[4096];
-    size_t n = strlen(path);
-    if (n == 0 || n >= sizeof buf)
-        return -1;
-    memcpy(buf, path, n + 1);
-    for (size_t i = 1; i <= n; i++) {
-        if (buf[i] == '/' || buf[i] == 0) {
-            char c = buf[i];
-            buf[i] = 0;
-            if (mkdir(buf, 0777) != 0 && errno != EEXIST)
-                return -1;
-            buf[i] = c;
-        }
-    }
-    struct stat st;
-    return stat(path, &st) == 0 && S_ISDIR(st.st_mode) ? 0 : -1;
 }
 
 static int write_png(const isk_canvas *c, const char *path)
@@ -107,6 +85,8 @@ int cmd_render(int argc, char **argv)
         fprintf(stderr, "iskra render: empty output name\n");
         return 2;
     }
+    if (outpath_refuse_input("render", out, a.scene))
+        return 2;
 
     isk_effect_def def;
     isk_effect *fx;
@@ -122,8 +102,7 @@ int cmd_render(int argc, char **argv)
         isk_effect_def_free(&def);
         return 1;
     }
-    if (out_dir && make_dirs(out_dir) != 0) {
-        fprintf(stderr, "iskra render: cannot create directory %s: %s\n", out_dir, strerror(errno));
+    if ((out_dir && outpath_make_dirs("render", out_dir)) || (out && outpath_make_parents("render", out))) {
         rc = 1;
         goto done;
     }
