@@ -6,6 +6,7 @@
 #   make run        install missing packages, then run the main demo
 #   make bench      run the benchmarks (ratios measured in one run)
 #   make install PREFIX=/usr/local DESTDIR=   headers, libraries, iskra.pc, iskra
+#                (an rpath in iskra.pc for a non-system LIBDIR; RPATH=no|yes)
 #
 # Sources are discovered, not listed: every src/**/*.c goes into libiskra
 # except src/io/sdl_*.c (libiskra-sdl); every examples/*.c, tests/test_*.c and
@@ -235,6 +236,19 @@ INCDIR ?= $(PREFIX)/include
 BINDIR ?= $(PREFIX)/bin
 PCDIR  ?= $(LIBDIR)/pkgconfig
 
+# Programs built with `pkg-config --libs iskra` find libiskra.so at run time
+# without LD_LIBRARY_PATH: for a LIBDIR outside the default system library
+# directories the .pc files carry -Wl,-rpath,LIBDIR (RPATH=no leaves it out,
+# RPATH=yes always puts it in).
+RPATH ?= auto
+MULTIARCH := $(shell $(CC) -print-multiarch 2>/dev/null)
+SYSTEM_LIBDIRS := /lib /usr/lib /lib64 /usr/lib64 $(if $(MULTIARCH),/lib/$(MULTIARCH) /usr/lib/$(MULTIARCH))
+PC_RPATH = $(if $(filter yes,$(RPATH)),-Wl$(,)-rpath$(,)$${libdir},$(if $(filter auto,$(RPATH)),$(if \
+             $(filter $(patsubst %/,%,$(LIBDIR)),$(SYSTEM_LIBDIRS)),,-Wl$(,)-rpath$(,)$${libdir})))
+, := ,
+PC_SED = sed -e 's|@PREFIX@|$(PREFIX)|g' -e 's|@LIBDIR@|$(LIBDIR)|g' -e 's|@INCDIR@|$(INCDIR)|g' \
+             -e 's|@VERSION@|$(VERSION)|g' -e 's| @RPATH@|$(if $(PC_RPATH), $(PC_RPATH))|g'
+
 install: lib $(TOOL)
 	install -d $(DESTDIR)$(INCDIR)/iskra $(DESTDIR)$(LIBDIR) $(DESTDIR)$(BINDIR) $(DESTDIR)$(PCDIR)
 	install -m 644 include/iskra.h $(DESTDIR)$(INCDIR)/iskra.h
@@ -247,10 +261,8 @@ install: lib $(TOOL)
 	ln -sf libiskra-sdl.so.$(VERSION) $(DESTDIR)$(LIBDIR)/libiskra-sdl.so.0
 	ln -sf libiskra-sdl.so.0 $(DESTDIR)$(LIBDIR)/libiskra-sdl.so
 	install -m 755 $(TOOL) $(DESTDIR)$(BINDIR)/iskra
-	sed -e 's|@PREFIX@|$(PREFIX)|g' -e 's|@LIBDIR@|$(LIBDIR)|g' -e 's|@INCDIR@|$(INCDIR)|g' \
-	    -e 's|@VERSION@|$(VERSION)|g' iskra.pc.in > $(DESTDIR)$(PCDIR)/iskra.pc
-	sed -e 's|@PREFIX@|$(PREFIX)|g' -e 's|@LIBDIR@|$(LIBDIR)|g' -e 's|@INCDIR@|$(INCDIR)|g' \
-	    -e 's|@VERSION@|$(VERSION)|g' iskra-sdl.pc.in > $(DESTDIR)$(PCDIR)/iskra-sdl.pc
+	$(PC_SED) iskra.pc.in > $(DESTDIR)$(PCDIR)/iskra.pc
+	$(PC_SED) iskra-sdl.pc.in > $(DESTDIR)$(PCDIR)/iskra-sdl.pc
 
 uninstall:
 	rm -f $(DESTDIR)$(INCDIR)/iskra.h
