@@ -81,7 +81,8 @@ isk_status isk_sinlut_init_copy(isk_sinlut *lut, int n, double *buf, size_t buf_
 double isk_sinlut_bound(int n, isk_sinlut_mode mode);
 
 /* Lookup by mode through a switch (for code that picks the mode at run
- * time; hot loops should call the specific inline function). */
+ * time; hot loops should call the specific inline function).  NaN for a
+ * NULL table, an unknown mode or a non-finite theta. */
 double isk_sinlut_eval(const isk_sinlut *lut, isk_sinlut_mode mode, double theta);
 
 /* Out-of-line reduction for |t| >= 2^62 or non-finite theta: returns the

@@ -28,6 +28,9 @@ isk_status isk_error_set(isk_error *err, isk_status status, const char *fmt, ...
     if (err) {
         va_list ap;
         err->status = status;
+        err->message[0] = 0;
+        if (!fmt)
+            return status;
         va_start(ap, fmt);
         vsnprintf(err->message, sizeof err->message, fmt, ap);
         va_end(ap);
