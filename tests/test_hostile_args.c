@@ -17,6 +17,7 @@
 #include "iskra/canvas.h"
 #include "iskra/chart.h"
 #include "iskra/draw.h"
+#include "iskra/outfile.h"
 #include "iskra/gradient.h"
 #include "iskra/png.h"
 #include "iskra/rng.h"
@@ -782,6 +783,44 @@ Test(hostile, isk_png_write)
     cr_assert_eq(isk_png_write(&f.c, NUL, &e), ISK_ERR_NULL);
     cr_assert_eq(isk_png_write(&f.c, "", &e), ISK_ERR_IO);
     EACH_HOSTILE_CANVAS(h) cr_assert_neq(isk_png_write(h, "out/hostile-never-written.png", NULL), ISK_OK);
+    isk_canvas thin = f.c;
+    thin.stride = 4; /* rows overlapping: stride < 4 * width */
+    cr_assert_eq(isk_png_write(&thin, "out/hostile-never-written.png", &e), ISK_ERR_SIZE);
+    cr_assert_eq(isk_png_write_stream(&f.c, NUL, "x", &e), ISK_ERR_NULL);
+    cr_assert_eq(isk_png_write_stream(NUL, stdout, "x", &e), ISK_ERR_NULL);
+}
+Test(hostile, isk_png_read_info)
+{
+    isk_png_info info;
+    isk_error e;
+    cr_assert_eq(isk_png_read_info(NUL, &info, &e), ISK_ERR_NULL);
+    cr_assert_eq(isk_png_read_info("refimg/fig09_stationary_particle.png", NUL, &e), ISK_ERR_NULL);
+    cr_assert_eq(isk_png_read_info("", &info, &e), ISK_ERR_IO);
+    cr_assert_eq(isk_png_read_info("/", &info, &e), ISK_ERR_IO);
+}
+Test(hostile, isk_png_read_max)
+{
+    isk_canvas c;
+    const char *ok = "refimg/fig09_stationary_particle.png";
+    const long long bad[] = {0, -1, LLONG_MIN, LLONG_MAX, 16384LL * 16384 + 1};
+    for (size_t i = 0; i < sizeof bad / sizeof bad[0]; i++) {
+        cr_assert_eq(isk_png_read_max(&c, ok, bad[i], NULL), ISK_ERR_RANGE, "%lld", bad[i]);
+        cr_assert_null(c.pixels);
+    }
+    cr_assert_eq(isk_png_read_max(NUL, ok, 100, NULL), ISK_ERR_NULL);
+    cr_assert_eq(isk_png_read_max(&c, NUL, 100, NULL), ISK_ERR_NULL);
+}
+Test(hostile, isk_png_read_memory)
+{
+    isk_canvas c;
+    static const unsigned char junk[16] = {137, 'P', 'N', 'G'};
+    cr_assert_eq(isk_png_read_memory(NUL, junk, 16, "m", 100, NULL), ISK_ERR_NULL);
+    cr_assert_eq(isk_png_read_memory(&c, NUL, 16, "m", 100, NULL), ISK_ERR_NULL);
+    cr_assert_eq(isk_png_read_memory(&c, NUL, 0, "m", 100, NULL), ISK_ERR_FORMAT);
+    cr_assert_eq(isk_png_read_memory(&c, junk, 0, NUL, 100, NULL), ISK_ERR_FORMAT);
+    cr_assert_eq(isk_png_read_memory(&c, junk, sizeof junk, "m", 100, NULL), ISK_ERR_FORMAT);
+    cr_assert_eq(isk_png_read_memory(&c, junk, sizeof junk, "m", -100, NULL), ISK_ERR_RANGE);
+    cr_assert_null(c.pixels);
 }
 Test(hostile, isk_png_read)
 {
@@ -791,4 +830,37 @@ Test(hostile, isk_png_read)
     cr_assert_eq(isk_png_read(&c, NUL, &e), ISK_ERR_NULL);
     cr_assert_eq(isk_png_read(&c, "", &e), ISK_ERR_IO);
     cr_assert_null(c.pixels);
+    cr_assert_eq(isk_png_read(&c, "/", &e), ISK_ERR_IO);
+    cr_assert_null(c.pixels);
+}
+
+/* ---- io: output files -------------------------------------------------------- */
+
+Test(hostile, isk_outfile_open)
+{
+    isk_outfile o;
+    isk_error e;
+    cr_assert_eq(isk_outfile_open(NUL, "out/x", &e), ISK_ERR_NULL);
+    cr_assert_eq(isk_outfile_open(&o, NUL, &e), ISK_ERR_NULL);
+    cr_assert_null(o.f);
+    cr_assert_eq(isk_outfile_open(&o, "", &e), ISK_ERR_IO);
+    cr_assert_eq(isk_outfile_open(&o, "/", &e), ISK_ERR_IO);
+    cr_assert_eq(isk_outfile_open(&o, "out/no/such/dir/x.png", &e), ISK_ERR_IO);
+    cr_assert_null(o.f);
+    cr_assert_null(o.temp);
+}
+Test(hostile, isk_outfile_commit)
+{
+    isk_outfile o;
+    memset(&o, 0, sizeof o);
+    cr_assert_eq(isk_outfile_commit(NUL, NULL), ISK_ERR_NULL);
+    cr_assert_eq(isk_outfile_commit(&o, NULL), ISK_ERR_IO);
+}
+Test(hostile, isk_outfile_abort)
+{
+    isk_outfile o;
+    memset(&o, 0, sizeof o);
+    isk_outfile_abort(NUL);
+    isk_outfile_abort(&o);
+    isk_outfile_abort(&o);
 }
