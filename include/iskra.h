@@ -18,6 +18,7 @@
  *   iskra/scene.h    INI scene files      iskra/presets.h  fire, smoke, sparks, ...
  *   iskra/chart.h    line charts (work-precision diagrams, log/linear axes)
  *   iskra/problems.h closed-form reference problems (integrator accuracy)
+ *   iskra/outfile.h  safe output files     iskra/refimg.h  reference-image checks
  * The SDL2 window lives in a separate library: #include "iskra/sdl.h" and
  * link libiskra-sdl (pkg-config iskra-sdl).
  */
@@ -51,5 +52,7 @@
 #include "iskra/presets.h"
 #include "iskra/chart.h"
 #include "iskra/problems.h"
+#include "iskra/outfile.h"
+#include "iskra/refimg.h"
 
 #endif

@@ -36,6 +36,24 @@ readelf -d "$work/hello-static" | grep -q 'NEEDED.*libiskra' && fail "hello-stat
 "$prefix/bin/iskra" compare "$work/hello.png" "$work/static/hello.png" >/dev/null \
     || fail "the shared and static builds drew different pictures"
 
+# The README's reference-image examples, built against the installed library
+# and used as a user would: the first run with ISKRA_REFIMG_UPDATE=1 makes
+# the references, the next passes, a changed reference fails with the
+# actual and diff images left behind.
+for ex in refimg_assert refimg_criterion; do
+    d="$work/$ex"; mkdir -p "$d"
+    extra=""; [ "$ex" = refimg_criterion ] && extra=criterion
+    # shellcheck disable=SC2046
+    cc -std=c11 -Wall -Wextra -Werror "docs/$ex.c" -o "$d/run" $(pkg-config --cflags --libs iskra $extra)
+    (cd "$d" && ISKRA_REFIMG_UPDATE=1 ./run >/dev/null 2>&1) || fail "$ex: the update run failed"
+    (cd "$d" && ./run >/dev/null 2>&1) || fail "$ex: the check after the update failed"
+    ref=$(ls "$d"/ref/*.png | head -n 1)
+    cp "$work/hello.png" "$ref"
+    if (cd "$d" && ./run >"$d/log" 2>&1 || exit 1); then fail "$ex: passed against a wrong reference"; fi
+    grep -q "pixels differ\|reference" "$d/log" || fail "$ex: the failure does not say what differs"
+    ls "$d"/out/refimg/*.actual.png "$d"/out/refimg/*.diff.png >/dev/null 2>&1 || fail "$ex: no actual/diff images"
+done
+
 make --no-print-directory -s uninstall PREFIX="$prefix" >/dev/null
 test ! -e "$prefix/lib/libiskra.so" && test ! -e "$prefix/include/iskra.h"
 echo "install check: ok"

@@ -61,4 +61,12 @@ isk_status isk_outfile_commit(isk_outfile *o, isk_error *err);
 /* Closes and removes the temporary (safe on a zeroed or closed outfile). */
 void isk_outfile_abort(isk_outfile *o);
 
+/* mkdir -p: creates `dir` and its missing parents (0777 before the umask).
+ * An existing directory is fine.  Errors: ISK_ERR_NULL, ISK_ERR_IO (the
+ * message names the level that could not be made and why), ISK_ERR_NOMEM. */
+isk_status isk_make_dirs(const char *dir, isk_error *err);
+
+/* isk_make_dirs of the directory part of `path` (nothing for "name.png"). */
+isk_status isk_make_parent_dirs(const char *path, isk_error *err);
+
 #endif

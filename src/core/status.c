@@ -18,6 +18,7 @@ const char *isk_status_str(isk_status s)
     case ISK_ERR_UNSUPPORTED: return "not supported";
     case ISK_ERR_DISPLAY: return "window system error";
     case ISK_ERR_FULL: return "container is full";
+    case ISK_ERR_MISMATCH: return "differs from the reference image";
     case ISK_STATUS_COUNT: break;
     }
     return "unknown status";

@@ -171,3 +171,55 @@ void isk_outfile_abort(isk_outfile *o)
     free(o->path);
     memset(o, 0, sizeof *o);
 }
+
+static int is_dir(const char *path)
+{
+    struct stat st;
+    return stat(path, &st) == 0 && S_ISDIR(st.st_mode);
+}
+
+isk_status isk_make_dirs(const char *dir, isk_error *err)
+{
+    if (!dir)
+        return isk_error_set(err, ISK_ERR_NULL, "mkdir: NULL path");
+    size_t n = strlen(dir);
+    if (n == 0)
+        return ISK_OK;
+    char *buf = dup_str(dir);
+    if (!buf)
+        return isk_error_set(err, ISK_ERR_NOMEM, "%s: out of memory", dir);
+    isk_status s = ISK_OK;
+    /* Each prefix ending before a '/' (and the whole path), shortest first;
+     * an existing directory is fine whoever made it (another process may
+     * be making the same tree). */
+    for (size_t i = 1; i <= n && s == ISK_OK; i++) {
+        if ((buf[i] != '/' && buf[i] != 0) || buf[i - 1] == '/')
+            continue;
+        char c = buf[i];
+        buf[i] = 0;
+        if (mkdir(buf, 0777) != 0 && (errno != EEXIST || !is_dir(buf)))
+            s = isk_error_set(err, ISK_ERR_IO, "cannot create directory %s: %s", buf,
+                              strerror(errno == EEXIST ? ENOTDIR : errno));
+        buf[i] = c;
+    }
+    free(buf);
+    return s;
+}
+
+isk_status isk_make_parent_dirs(const char *path, isk_error *err)
+{
+    if (!path)
+        return isk_error_set(err, ISK_ERR_NULL, "mkdir: NULL path");
+    const char *slash = strrchr(path, '/');
+    if (!slash || slash == path)
+        return ISK_OK; /* "name.png" or "/name.png" */
+    size_t n = (size_t)(slash - path);
+    char *dir = malloc(n + 1);
+    if (!dir)
+        return isk_error_set(err, ISK_ERR_NOMEM, "%s: out of memory", path);
+    memcpy(dir, path, n);
+    dir[n] = 0;
+    isk_status s = isk_make_dirs(dir, err);
+    free(dir);
+    return s;
+}
