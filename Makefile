@@ -50,6 +50,7 @@ ALL_CFLAGS = $(CFLAGS_BASE) $(CFLAGS)
 LDFLAGS ?=
 
 PKG_PNG  = $(shell pkg-config --cflags --libs libpng 2>/dev/null || echo -lpng)
+PKG_GIF  = $(shell pkg-config --cflags --libs libgif 2>/dev/null || echo -lgif)
 PKG_SDL_CFLAGS = $(shell pkg-config --cflags sdl2 2>/dev/null)
 PKG_SDL_LIBS   = $(shell pkg-config --libs sdl2 2>/dev/null || echo -lSDL2)
 PKG_INIH = $(shell pkg-config --cflags --libs inih 2>/dev/null || echo -linih)
@@ -77,7 +78,7 @@ EXAMPLES := $(EX_SRC:examples/%.c=$(BUILD)/examples/%)
 TESTS    := $(TEST_SRC:tests/%.c=$(BUILD)/tests/%)
 BENCHES  := $(BENCH_SRC:bench/%.c=$(BUILD)/bench/%)
 
-LIBS_CORE = $(PKG_PNG) $(PKG_INIH) -lm
+LIBS_CORE = $(PKG_PNG) $(PKG_GIF) $(PKG_INIH) -lm
 
 # Quiet by default; `make V=1` shows full command lines.
 ifeq ($(V),1)
@@ -212,7 +213,7 @@ fuzz: fuzz-deps
 $(FUZZ_BIN): tests/fuzz/fuzz_scene.c $(LIB_SRC) $(BUILD)/gen/scenes_gen.h
 	@mkdir -p $(dir $@)
 	$(call say,FUZZCC,$@)
-	$(Q)$(FUZZ_CC) $(FUZZ_CFLAGS) -o $@ tests/fuzz/fuzz_scene.c $(LIB_SRC) $(PKG_PNG) $(PKG_INIH) -lm
+	$(Q)$(FUZZ_CC) $(FUZZ_CFLAGS) -o $@ tests/fuzz/fuzz_scene.c $(LIB_SRC) $(PKG_PNG) $(PKG_GIF) $(PKG_INIH) -lm
 
 fuzz-run: $(FUZZ_BIN)
 	@mkdir -p $(BUILD)/fuzz/corpus tests/fuzz/regressions
@@ -226,7 +227,7 @@ fuzz-run: $(FUZZ_BIN)
 	     "exit status $$rc (full log: $(BUILD)/fuzz/log)"; exit $$rc
 
 # ---- dependencies (Debian) -------------------------------------------------
-DEB_PKGS := build-essential pkg-config libpng-dev libsdl2-dev libcriterion-dev libinih-dev
+DEB_PKGS := build-essential pkg-config libpng-dev libgif-dev libsdl2-dev libcriterion-dev libinih-dev
 deps:
 	@sh tools/deps.sh $(DEB_PKGS)
 

@@ -29,7 +29,7 @@ test -s "$work/hello.png" || fail "hello wrote no hello.png"
 mkdir -p "$work/static"
 # shellcheck disable=SC2046
 cc -std=c11 docs/hello_iskra.c -o "$work/hello-static" -I"$prefix/include" "$prefix/lib/libiskra.a" \
-   $(pkg-config --libs libpng inih) -lm
+   $(pkg-config --libs libpng libgif inih) -lm
 readelf -d "$work/hello-static" | grep -q 'NEEDED.*libiskra' && fail "hello-static needs libiskra.so"
 (cd "$work/static" && ../hello-static)
 # Both programs drew the same picture (and the installed tool reads it).

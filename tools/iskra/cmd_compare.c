@@ -7,6 +7,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "cleanup.h"
 #include "cmd.h"
 #include "iskra/png.h"
 #include "iskra/refimg.h"
@@ -122,8 +123,8 @@ static void run(report *r, long long max_pixels)
         if (r->diff_path) {
             if (outpath_make_parents("compare", r->diff_path))
                 snprintf(r->error, sizeof r->error, "cannot write %s", r->diff_path);
-            else if (isk_png_write(&img, r->diff_path, &err) != ISK_OK)
-                snprintf(r->error, sizeof r->error, "%s", err.message);
+            else if (cleanup_png_write(&img, r->diff_path))
+                snprintf(r->error, sizeof r->error, "cannot write %s", r->diff_path);
         }
     }
     isk_canvas_free(&a);
@@ -179,6 +180,7 @@ int cmd_compare(int argc, char **argv)
         return 2;
     r.a = files[0];
     r.b = files[1];
+    cleanup_install("compare");
     run(&r, max_pixels);
     if (r.error[0]) {
         fprintf(stderr, "iskra compare: %s\n", r.error);
