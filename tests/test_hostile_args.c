@@ -91,8 +91,9 @@ Test(hostile, isk_error_set)
 {
     cr_assert_eq(isk_error_set(NUL, ISK_ERR_IO, "x %d", 1), ISK_ERR_IO);
     isk_error e;
-    const char *volatile fmt = NULL;
-    cr_assert_eq(isk_error_set(&e, ISK_ERR_RANGE, fmt), ISK_ERR_RANGE);
+    /* through a pointer: a NULL format is the point, not a warning */
+    isk_status (*set)(isk_error *, isk_status, const char *, ...) = isk_error_set;
+    cr_assert_eq(set(&e, ISK_ERR_RANGE, NUL), ISK_ERR_RANGE);
     cr_assert_str_eq(e.message, "");
     char big[2000];
     memset(big, 'x', sizeof big - 1);
