@@ -19,6 +19,7 @@
  *   iskra/chart.h    line charts (work-precision diagrams, log/linear axes)
  *   iskra/problems.h closed-form reference problems (integrator accuracy)
  *   iskra/outfile.h  safe output files     iskra/refimg.h  reference-image checks
+ *   iskra/anim.h     animated GIF, YUV4MPEG2, raw RGBA frames
  * The SDL2 window lives in a separate library: #include "iskra/sdl.h" and
  * link libiskra-sdl (pkg-config iskra-sdl).
  */
@@ -54,5 +55,6 @@
 #include "iskra/problems.h"
 #include "iskra/outfile.h"
 #include "iskra/refimg.h"
+#include "iskra/anim.h"
 
 #endif

@@ -865,3 +865,55 @@ Test(hostile, isk_outfile_abort)
     isk_outfile_abort(&o);
     isk_outfile_abort(&o);
 }
+
+/* ---- io: the SDL window (no window is opened: every call is refused first) -- */
+
+#include "iskra/sdl.h"
+
+static int never(void *user, isk_canvas *c, double dt, const isk_event *ev, int n)
+{
+    (void)user, (void)c, (void)dt, (void)ev, (void)n;
+    return 1;
+}
+
+Test(hostile, isk_window_open)
+{
+    isk_window *w = (isk_window *)&w;
+    isk_error e;
+    cr_assert_eq(isk_window_open(NUL, "t", 10, 10, &e), ISK_ERR_NULL);
+    const int bad[][2] = {{0, 10}, {10, 0}, {-1, 10}, {10, INT_MIN}, {INT_MAX, 10}, {ISK_CANVAS_MAX_DIM + 1, 1}};
+    for (size_t i = 0; i < sizeof bad / sizeof bad[0]; i++) {
+        cr_assert_eq(isk_window_open(&w, "t", bad[i][0], bad[i][1], &e), ISK_ERR_SIZE);
+        cr_assert_null(w);
+    }
+}
+Test(hostile, isk_window_set_size)
+{
+    cr_assert_eq(isk_window_set_size(NUL, 10, 10), ISK_ERR_NULL);
+}
+Test(hostile, isk_window_present)
+{
+    isk_canvas c;
+    cr_assert_eq(isk_canvas_init(&c, 2, 2), ISK_OK);
+    cr_assert_eq(isk_window_present(NUL, &c, NULL), ISK_ERR_NULL);
+    isk_canvas_free(&c);
+}
+Test(hostile, isk_window_poll)
+{
+    isk_event ev;
+    cr_assert_eq(isk_window_poll(NUL, &ev), 0);
+}
+Test(hostile, isk_window_push_event)
+{
+    isk_event ev;
+    memset(&ev, 0, sizeof ev);
+    cr_assert_eq(isk_window_push_event(NUL, &ev), ISK_ERR_NULL);
+}
+Test(hostile, isk_window_run)
+{
+    isk_canvas c;
+    cr_assert_eq(isk_canvas_init(&c, 2, 2), ISK_OK);
+    cr_assert_eq(isk_window_run(NUL, &c, never, NULL, 1, NULL), ISK_ERR_NULL);
+    isk_canvas_free(&c);
+}
+Test(hostile, isk_window_close) { isk_window_close(NUL); }
