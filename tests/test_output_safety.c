@@ -39,16 +39,7 @@ static void picture(isk_canvas *c, int w, int h, uint8_t seed)
         }
 }
 
-static int temporaries_in(const char *dir)
-{
-    char cmd[512];
-    snprintf(cmd, sizeof cmd, "ls -a '%s' | grep -c '\\.tmp\\.'", dir);
-    FILE *p = popen(cmd, "r");
-    int n = -1;
-    cr_assert_eq(fscanf(p, "%d", &n), 1);
-    pclose(p);
-    return n;
-}
+static int temporaries_in(const char *dir) { return cli_count_files(dir, "\\.tmp\\."); }
 
 static mode_t kind(const char *path, int follow)
 {

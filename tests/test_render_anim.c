@@ -80,6 +80,14 @@ static void load(isk_canvas *c, const char *path)
     cr_assert_eq(isk_png_read(c, path, &err), ISK_OK, "%s", err.message);
 }
 
+/* Sequence frame f of dir (DIR/frame_%06ld.png). */
+static void seq_frame(isk_canvas *c, const char *dir, long f)
+{
+    char path[256];
+    snprintf(path, sizeof path, "%s/frame_%06ld.png", dir, f);
+    load(c, path);
+}
+
 static char *file_bytes(const char *path, size_t *n)
 {
     FILE *f = fopen(path, "rb");
@@ -94,6 +102,16 @@ static char *file_bytes(const char *path, size_t *n)
     return b;
 }
 
+/* Two renders of one animation are the same bytes. */
+static void same_bytes(const char *a, const char *b)
+{
+    size_t na, nb;
+    char *x = file_bytes(a, &na), *y = file_bytes(b, &nb);
+    cr_assert(na == nb && !memcmp(x, y, na), "%s and %s differ", a, b);
+    free(x);
+    free(y);
+}
+
 Test(render_anim, gif_frames_equal_the_sequence_when_they_have_few_colours, .timeout = 120)
 {
     const char *d = OUT "/few";
@@ -106,22 +124,16 @@ Test(render_anim, gif_frames_equal_the_sequence_when_they_have_few_colours, .tim
     cr_assert_eq(g.n, 5, "frames 0, 10, 20, 30, 40");
     cr_assert_eq(g.loops, 0, "loops forever");
     for (int i = 0; i < g.n; i++) {
-        char path[128];
-        snprintf(path, sizeof path, OUT "/few/seq/frame_%06d.png", 10 * i);
         isk_canvas png;
-        load(&png, path);
-        cr_assert(isk_canvas_equal(&png, &g.frame[i]), "GIF frame %d differs from %s", i, path);
+        seq_frame(&png, OUT "/few/seq", 10 * i);
+        cr_assert(isk_canvas_equal(&png, &g.frame[i]), "GIF frame %d differs from sequence frame %d", i, 10 * i);
         cr_assert_eq(g.delay[i], 10, "10 fps: 10 cs per frame, frame %d has %d", i, g.delay[i]);
         isk_canvas_free(&png);
     }
     gif_free(&g);
     /* the same frames give the same bytes */
     cr_assert_eq(cli_run(d, "render fig16_regular --frames 40 --every 10 --fps 10 --out " OUT "/few/b.gif"), 0);
-    size_t na, nb;
-    char *a = file_bytes(OUT "/few/a.gif", &na), *b = file_bytes(OUT "/few/b.gif", &nb);
-    cr_assert(na == nb && !memcmp(a, b, na), "two renders of one animation differ");
-    free(a);
-    free(b);
+    same_bytes(OUT "/few/a.gif", OUT "/few/b.gif");
 }
 
 Test(render_anim, gif_of_a_many_colour_scene_stays_close_and_deterministic, .timeout = 120)
@@ -136,10 +148,8 @@ Test(render_anim, gif_of_a_many_colour_scene_stays_close_and_deterministic, .tim
     cr_assert_eq(g.n, 4);
     cr_assert_eq(g.width, 480);
     for (int i = 0; i < g.n; i++) {
-        char path[128];
-        snprintf(path, sizeof path, OUT "/many/seq/frame_%06d.png", 20 * i);
         isk_canvas png;
-        load(&png, path);
+        seq_frame(&png, OUT "/many/seq", 20 * i);
         isk_canvas_diff diff;
         cr_assert(isk_canvas_compare(&png, &g.frame[i], &diff, NULL));
         /* alpha is 255 on both sides, so mean_abs over RGB is 4/3 of this */
@@ -154,11 +164,7 @@ Test(render_anim, gif_of_a_many_colour_scene_stays_close_and_deterministic, .tim
     cr_assert_eq(isk_png_write(&g.frame[3], OUT "/many/gif_frame_60.png", NULL), ISK_OK);
     gif_free(&g);
     cr_assert_eq(cli_run(d, "render fire_campfire --frames 60 --every 20 --out " OUT "/many/again.gif"), 0);
-    size_t na, nb;
-    char *a = file_bytes(OUT "/many/fire.gif", &na), *b = file_bytes(OUT "/many/again.gif", &nb);
-    cr_assert(na == nb && !memcmp(a, b, na), "two renders of one animation differ");
-    free(a);
-    free(b);
+    same_bytes(OUT "/many/fire.gif", OUT "/many/again.gif");
 }
 
 Test(render_anim, gif_delays_follow_real_time_in_whole_centiseconds)
@@ -218,10 +224,8 @@ Test(render_anim, y4m_is_yuv4mpeg2_444_with_bt601_values, .timeout = 120)
     for (int f = 0; f < 3; f++) {
         cr_assert_eq(strncmp(v + pos, "FRAME\n", 6), 0);
         pos += 6;
-        char path[128];
-        snprintf(path, sizeof path, OUT "/y4m/seq/frame_%06d.png", 2 * f);
         isk_canvas png;
-        load(&png, path);
+        seq_frame(&png, OUT "/y4m/seq", 2 * f);
         for (int k = 0; k < 3; k++)
             for (int y = 0; y < 400; y++)
                 for (int x = 0; x < 480; x++) {
@@ -261,12 +265,10 @@ Test(render_anim, raw_frames_through_a_pipe_are_the_canvas_bytes, .timeout = 120
     static uint8_t buf[480 * 400 * 4];
     for (int f = 0; f < 3; f++) {
         read_exact(p, buf, sizeof buf, f);
-        char path[128];
-        snprintf(path, sizeof path, OUT "/raw/seq/frame_%06d.png", 5 * f);
         isk_canvas png, raw;
-        load(&png, path);
+        seq_frame(&png, OUT "/raw/seq", 5 * f);
         cr_assert_eq(isk_canvas_wrap(&raw, buf, 480, 400, 480 * 4), ISK_OK);
-        cr_assert(isk_canvas_equal(&png, &raw), "raw frame %d differs from %s", f, path);
+        cr_assert(isk_canvas_equal(&png, &raw), "raw frame %d differs from sequence frame %d", f, 5 * f);
         isk_canvas_free(&png);
     }
     cr_assert_eq(fgetc(p), EOF, "more bytes than three frames");

@@ -56,23 +56,12 @@ static void nap(void)
     nanosleep(&ts, NULL);
 }
 
-static int count_files(const char *dir, const char *pattern)
-{
-    char cmd[512];
-    snprintf(cmd, sizeof cmd, "ls -a '%s' 2>/dev/null | grep -c '%s'", dir, pattern);
-    FILE *p = popen(cmd, "r");
-    int n = -1;
-    cr_assert_eq(fscanf(p, "%d", &n), 1);
-    pclose(p);
-    return n;
-}
-
 /* Waits until dir holds at least n frame files (or 60 s). */
 static void wait_for_frames(const char *dir, int n)
 {
-    for (int i = 0; i < 3000 && count_files(dir, "^frame_.*png$") < n; i++)
+    for (int i = 0; i < 3000 && cli_count_files(dir, "^frame_.*png$") < n; i++)
         nap();
-    cr_assert_geq(count_files(dir, "^frame_.*png$"), n, "the render did not get going");
+    cr_assert_geq(cli_count_files(dir, "^frame_.*png$"), n, "the render did not get going");
 }
 
 static int exit_status(pid_t pid)
@@ -93,9 +82,9 @@ Test(render_signals, a_sequence_interrupted_says_what_it_wrote_and_resumes, .tim
     wait_for_frames(OUT "/resume/seq", 4);
     cr_assert_eq(kill(pid, SIGTERM), 0);
     cr_assert_eq(exit_status(pid), 128 + SIGTERM);
-    cr_assert_eq(count_files(OUT "/resume/seq", "\\.tmp\\."), 0, "a temporary was left behind");
+    cr_assert_eq(cli_count_files(OUT "/resume/seq", "\\.tmp\\."), 0, "a temporary was left behind");
     char *err = cli_slurp(OUT "/resume/stderr.txt");
-    int n = count_files(OUT "/resume/seq", "^frame_.*png$");
+    int n = cli_count_files(OUT "/resume/seq", "^frame_.*png$");
     long last = 2L * (n - 1);
     char want[256];
     snprintf(want, sizeof want,
@@ -164,14 +153,14 @@ Test(render_signals, every_signal_removes_the_temporaries, .timeout = 240)
             wait_for_frames(OUT "/sigs/seq", 2);
         } else {
             /* until the temporary exists */
-            for (int i = 0; i < 3000 && count_files(d, "\\.tmp\\.") < 1; i++)
+            for (int i = 0; i < 3000 && cli_count_files(d, "\\.tmp\\.") < 1; i++)
                 nap();
-            cr_assert_eq(count_files(d, "\\.tmp\\."), 1, "%s: no temporary to remove", names[k]);
+            cr_assert_eq(cli_count_files(d, "\\.tmp\\."), 1, "%s: no temporary to remove", names[k]);
         }
         cr_assert_eq(kill(pid, sigs[k]), 0);
         cr_assert_eq(exit_status(pid), 128 + sigs[k], "%s", names[k]);
-        cr_assert_eq(count_files(d, "\\.tmp\\."), 0, "%s left a temporary", names[k]);
-        cr_assert_eq(count_files(OUT "/sigs/seq", "\\.tmp\\."), 0, "%s left a temporary", names[k]);
+        cr_assert_eq(cli_count_files(d, "\\.tmp\\."), 0, "%s left a temporary", names[k]);
+        cr_assert_eq(cli_count_files(OUT "/sigs/seq", "\\.tmp\\."), 0, "%s left a temporary", names[k]);
         cr_assert_not(cli_exists(outs[k]), "%s: the unfinished output exists", names[k]);
         char *err = cli_slurp(OUT "/sigs/stderr.txt");
         char want[64];

@@ -67,6 +67,18 @@ char *cli_slurp(const char *path)
     return buf;
 }
 
+int cli_count_files(const char *dir, const char *pattern)
+{
+    char cmd[1024];
+    snprintf(cmd, sizeof cmd, "ls -a '%s' 2>/dev/null | grep -c '%s'", dir, pattern);
+    FILE *p = popen(cmd, "r");
+    cr_assert_not_null(p, "%s", cmd);
+    int n = -1;
+    cr_assert_eq(fscanf(p, "%d", &n), 1, "%s", cmd);
+    pclose(p);
+    return n;
+}
+
 int cli_exists(const char *path)
 {
     struct stat st;

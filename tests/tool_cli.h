@@ -26,6 +26,9 @@ int cli_run_in(const char *cwd, const char *dir, const char *args);
 /* The whole file, malloc'd and NUL-terminated (asserts it exists). */
 char *cli_slurp(const char *path);
 
+/* How many names in dir (dot files too) match the grep pattern. */
+int cli_count_files(const char *dir, const char *pattern);
+
 /* 1 when the path exists. */
 int cli_exists(const char *path);
 
