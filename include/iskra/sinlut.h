@@ -29,7 +29,9 @@
  * range.  NaN and +-Inf give NaN, like sin().
  *
  * The lookups are static inline and branch only on that rare huge-angle
- * case.  The isk_sinlut struct is plain read-only data: share it freely.
+ * case; they take a table isk_sinlut_init filled (not checked: they are
+ * for hot loops; isk_sinlut_eval is the checked call, NaN for NULL).  The
+ * isk_sinlut struct is plain read-only data: share it freely.
  *
  *     isk_sinlut lut;
  *     if (isk_sinlut_init(&lut, 4096) != ISK_OK) return 1;   // N = 4096
