@@ -24,7 +24,8 @@
 static void help(FILE *f)
 {
     fprintf(f, "usage: iskra render SCENE [--frames N] --out FILE.png\n"
-               "       iskra render SCENE [--frames N] [--every K] [--fps F] --out FILE.gif|FILE.y4m\n"
+               "       iskra render SCENE [--frames N] [--every K] [--fps F] --out FILE.gif\n"
+               "                    (or --out FILE.y4m)\n"
                "       iskra render SCENE [--frames N] [--every K] --raw --out FILE|-\n"
                "       iskra render SCENE [--frames N] [--every K] --out-dir DIR [--resume]\n"
                "  Renders frame N of the scene (0 = the initial state; N steps of dt).\n"
@@ -150,8 +151,11 @@ static int choose_fps(render_args *r, double dt, double *fps)
 {
     *fps = r->fps > 0 ? r->fps : 1.0 / (dt * (double)r->o.every);
     if (r->o.anim_path && r->o.anim_format != ISK_ANIM_RAW && !(*fps >= 0.001 && *fps <= 1000.0)) {
-        fprintf(stderr, "iskra render: 1 / (dt * every) = %g frames per second is outside 0.001..1000; give --fps\n",
-                *fps);
+        if (r->fps > 0)
+            fprintf(stderr, "iskra render: --fps: expected 0.001..1000, got %g\n", *fps);
+        else
+            fprintf(stderr, "iskra render: 1 / (dt * every) = %g frames per second is outside 0.001..1000; "
+                            "give --fps\n", *fps);
         return 2;
     }
     return 0;
