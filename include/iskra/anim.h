@@ -39,6 +39,10 @@
 #include "iskra/canvas.h"
 #include "iskra/status.h"
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 typedef enum isk_anim_format { ISK_ANIM_GIF = 0, ISK_ANIM_Y4M, ISK_ANIM_RAW, ISK_ANIM_FORMAT_COUNT } isk_anim_format;
 
 typedef struct isk_anim_opts {
@@ -72,5 +76,9 @@ int isk_anim_format_of_path(const char *path, isk_anim_format *f);
 
 /* "gif", "y4m", "raw"; NULL for an unknown format. */
 const char *isk_anim_format_name(isk_anim_format f);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

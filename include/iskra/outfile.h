@@ -41,6 +41,10 @@
 
 #include "iskra/status.h"
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 typedef struct isk_outfile {
     FILE *f;          /* write here between open and commit/abort */
     char *path;       /* the file being written (a symlink's final target) */
@@ -68,5 +72,9 @@ isk_status isk_make_dirs(const char *dir, isk_error *err);
 
 /* isk_make_dirs of the directory part of `path` (nothing for "name.png"). */
 isk_status isk_make_parent_dirs(const char *path, isk_error *err);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

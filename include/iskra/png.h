@@ -39,6 +39,10 @@
 #include "iskra/canvas.h"
 #include "iskra/status.h"
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 /* isk_png_read's cap on decoded pixels: 8192 x 8192 = 64 Mpx (256 MiB of
  * RGBA).  isk_png_read_max takes any cap up to ISK_CANVAS_MAX_DIM^2. */
 #define ISK_PNG_MAX_PIXELS_DEFAULT (8192LL * 8192LL)
@@ -77,5 +81,9 @@ isk_status isk_png_read_max(isk_canvas *out, const char *path, long long max_pix
 /* The same from `size` bytes in memory (`name` labels messages). */
 isk_status isk_png_read_memory(isk_canvas *out, const void *data, size_t size, const char *name,
                                long long max_pixels, isk_error *err);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

@@ -52,6 +52,10 @@
 #include "iskra/canvas.h"
 #include "iskra/status.h"
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 typedef enum isk_refimg_update {
     ISK_REFIMG_UPDATE_FROM_ENV = 0, /* ISKRA_REFIMG_UPDATE, read at each call */
     ISK_REFIMG_UPDATE_NEVER,
@@ -84,5 +88,9 @@ isk_status isk_refimg_check(const isk_canvas *c, const char *ref_path, const isk
 /* "N of M pixels differ, max channel difference D, mean absolute difference
  * F" — the words isk_refimg_check and `iskra compare` use.  Returns buf. */
 char *isk_refimg_summary(const isk_canvas_diff *d, char *buf, size_t n);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

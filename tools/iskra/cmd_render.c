@@ -184,7 +184,7 @@ int cmd_render(int argc, char **argv)
     if ((rc = choose_fps(&r, def.dt, &fps)) != 0)
         goto done;
     if (isk_canvas_init(&canvas, def.width, def.height) != ISK_OK) {
-        fprintf(stderr, "iskra render: cannot allocate a %dx%d canvas\n", def.width, def.height);
+        fprintf(stderr, "iskra render: out of memory (a %dx%d canvas)\n", def.width, def.height);
         rc = 1;
         goto done;
     }
