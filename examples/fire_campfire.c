@@ -329,6 +329,17 @@ static int strip(campfire *cf, const char *path, isk_canvas *c)
     return rc;
 }
 
+#define ABOUT "a campfire: additive flames, bouncing sparks, rising smoke"
+
+/* The options this example adds to the shared ones (example.h). */
+static void own_usage(FILE *f)
+{
+    fprintf(f, "  --wind X     sideways wind acceleration X in [-100, 100] (world units/s^2)\n"
+               "               on flames, smoke and sparks (default 0)\n"
+               "  --strip PATH write a PNG strip of the first second: 6 half-size panels at\n"
+               "               t = 1/6 .. 1 s (alone, it replaces the default output)\n");
+}
+
 int main(int argc, char **argv)
 {
     /* Our own options first; the rest go to the shared parser. */
@@ -338,7 +349,18 @@ int main(int argc, char **argv)
     char *rest[64];
     int nrest = 0;
     for (int i = 0; i < argc && nrest < 64; i++) {
-        if (i > 0 && !strcmp(argv[i], "--wind") && i + 1 < argc) {
+        if (i > 0 && (!strcmp(argv[i], "--help") || !strcmp(argv[i], "-h"))) {
+            example_usage(stdout, "fire_campfire", ABOUT, EX_SEED | EX_FRAMES);
+            own_usage(stdout);
+            return 0;
+        }
+        if (i > 0 && (!strcmp(argv[i], "--wind") || !strcmp(argv[i], "--strip")) && i + 1 >= argc) {
+            fprintf(stderr, "fire_campfire: %s needs a value\n", argv[i]);
+            example_usage(stderr, "fire_campfire", ABOUT, EX_SEED | EX_FRAMES);
+            own_usage(stderr);
+            return 2;
+        }
+        if (i > 0 && !strcmp(argv[i], "--wind")) {
             char *end;
             wind = strtod(argv[i + 1], &end);
             if (*end || !isfinite(wind) || fabs(wind) > 100) {
@@ -346,7 +368,7 @@ int main(int argc, char **argv)
                 return 2;
             }
             i++;
-        } else if (i > 0 && !strcmp(argv[i], "--strip") && i + 1 < argc) {
+        } else if (i > 0 && !strcmp(argv[i], "--strip")) {
             strip_path = argv[++i];
         } else {
             if (i > 0 && (!strcmp(argv[i], "--png") || !strcmp(argv[i], "--window")))
@@ -360,8 +382,7 @@ int main(int argc, char **argv)
         rest[nrest++] = "--png";
         rest[nrest++] = "/dev/null";
     }
-    example_parse(nrest, rest, &o, EX_SEED | EX_FRAMES, "fire_campfire",
-                  "a campfire: additive flames, bouncing sparks, rising smoke [--wind X] [--strip PATH]");
+    example_parse(nrest, rest, &o, EX_SEED | EX_FRAMES, "fire_campfire", ABOUT);
 
     campfire cf;
     isk_canvas c;

@@ -20,6 +20,8 @@
  *   iskra/keys.h     every scene key: type, range, default, meaning (one table)
  *   iskra/chart.h    line charts (work-precision diagrams, log/linear axes)
  *   iskra/problems.h closed-form reference problems (integrator accuracy)
+ *   iskra/outfile.h  safe output files     iskra/refimg.h  reference-image checks
+ *   iskra/anim.h     animated GIF, YUV4MPEG2, raw RGBA frames
  * The SDL2 window lives in a separate library: #include "iskra/sdl.h" and
  * link libiskra-sdl (pkg-config iskra-sdl).  Every header can be used from
  * C++ (extern "C"; tests/cxx_link.cpp checks).
@@ -57,5 +59,8 @@
 #include "iskra/presets.h"
 #include "iskra/chart.h"
 #include "iskra/problems.h"
+#include "iskra/outfile.h"
+#include "iskra/refimg.h"
+#include "iskra/anim.h"
 
 #endif

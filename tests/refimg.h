@@ -7,10 +7,12 @@
  *     }
  *
  * refimg_check compares `c` with refimg/<name>.png exactly (every byte of
- * every pixel).  On a mismatch it writes out/refimg/<name>.actual.png and
- * out/refimg/<name>.diff.png (differing pixels magenta, the rest a dimmed
- * copy), prints how many pixels differ and by how much, and how to update the
- * reference on purpose.  A missing reference fails with the same hint.
+ * every pixel) through the library's isk_refimg_check (iskra/refimg.h),
+ * with out/refimg/ as the output directory: on a mismatch it leaves
+ * out/refimg/<name>.actual.png and <name>.diff.png (differing pixels
+ * magenta, the rest a dimmed copy), prints how many pixels differ and by
+ * how much, and how to update the reference on purpose.  A missing
+ * reference fails with the same hint.
  *
  * With ISKRA_REFIMG_UPDATE=1 in the environment it (re)writes the reference
  * instead and passes.  tools/refimg wraps this: `tools/refimg run [name]`,
@@ -27,9 +29,10 @@
 /* Exact comparison; returns 1 on match (or after an update), 0 otherwise. */
 int refimg_check(const char *name, const isk_canvas *c);
 
-/* Tolerant comparison: passes when at most `max_pixels` pixels differ and no
- * channel differs by more than `max_channel_diff`.  `reason` must say why a
- * tolerance is needed (it is printed on failure). */
+/* Tolerant comparison: passes when at most `max_pixels` pixels have a
+ * channel that differs by more than `max_channel_diff` (the library's
+ * rule).  `reason` must say why a tolerance is needed (it is printed on
+ * failure). */
 int refimg_check_tol(const char *name, const isk_canvas *c, int max_channel_diff, long max_pixels,
                      const char *reason);
 

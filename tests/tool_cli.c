@@ -7,6 +7,7 @@
 #include <string.h>
 #include <sys/stat.h>
 #include <sys/wait.h>
+#include <unistd.h>
 
 #include "iskra/png.h"
 #include "refimg.h"
@@ -28,6 +29,28 @@ int cli_run(const char *dir, const char *args)
     return WEXITSTATUS(rc);
 }
 
+/* `path` made absolute against the repository root (the tests' cwd). */
+static void absolute(const char *path, char *out, size_t n)
+{
+    char cwd[512];
+    cr_assert_not_null(getcwd(cwd, sizeof cwd));
+    snprintf(out, n, "%s%s%s", path[0] == '/' ? "" : cwd, path[0] == '/' ? "" : "/", path);
+}
+
+int cli_run_in(const char *cwd, const char *dir, const char *args)
+{
+    char tool[1024], d[1024], c[1024], cmd[16384];
+    snprintf(cmd, sizeof cmd, "%s/bin/iskra", refimg_build_dir());
+    absolute(cmd, tool, sizeof tool);
+    absolute(dir, d, sizeof d);
+    absolute(cwd, c, sizeof c);
+    snprintf(cmd, sizeof cmd, "cd '%s' && SDL_VIDEODRIVER=dummy '%s' %s >'%s/stdout.txt' 2>'%s/stderr.txt'", c, tool,
+             args, d, d);
+    int rc = system(cmd);
+    cr_assert(WIFEXITED(rc), "%s did not exit normally", cmd);
+    return WEXITSTATUS(rc);
+}
+
 char *cli_slurp(const char *path)
 {
     FILE *f = fopen(path, "rb");
@@ -42,6 +65,18 @@ char *cli_slurp(const char *path)
     buf[n] = 0;
     fclose(f);
     return buf;
+}
+
+int cli_count_files(const char *dir, const char *pattern)
+{
+    char cmd[1024];
+    snprintf(cmd, sizeof cmd, "ls -a '%s' 2>/dev/null | grep -c '%s'", dir, pattern);
+    FILE *p = popen(cmd, "r");
+    cr_assert_not_null(p, "%s", cmd);
+    int n = -1;
+    cr_assert_eq(fscanf(p, "%d", &n), 1, "%s", cmd);
+    pclose(p);
+    return n;
 }
 
 int cli_exists(const char *path)

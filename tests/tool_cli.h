@@ -18,8 +18,16 @@ void cli_fresh(const char *dir);
  * dir/stderr.txt; asserts a normal exit and returns the exit status. */
 int cli_run(const char *dir, const char *args);
 
+/* The same with `cwd` as the working directory (any directory, e.g. one
+ * under /tmp: nothing may assume it is the repository); stdout and stderr
+ * still go to dir/stdout.txt and dir/stderr.txt. */
+int cli_run_in(const char *cwd, const char *dir, const char *args);
+
 /* The whole file, malloc'd and NUL-terminated (asserts it exists). */
 char *cli_slurp(const char *path);
+
+/* How many names in dir (dot files too) match the grep pattern. */
+int cli_count_files(const char *dir, const char *pattern);
 
 /* 1 when the path exists. */
 int cli_exists(const char *path);

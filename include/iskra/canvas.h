@@ -42,7 +42,9 @@ typedef struct isk_canvas {
 /* Allocates a width x height canvas, all bytes 0 (transparent black). */
 isk_status isk_canvas_init(isk_canvas *c, int width, int height);
 
-/* Wraps caller memory; stride in bytes must be >= 4*width.  Never freed by us. */
+/* Wraps caller memory; stride in bytes must be >= 4*width, and small enough
+ * that the last row's end, (height-1)*stride + 4*width, fits in a pointer
+ * offset (ISK_ERR_SIZE otherwise).  Never freed by us. */
 isk_status isk_canvas_wrap(isk_canvas *c, void *pixels, int width, int height, size_t stride);
 
 /* A view of the rectangle (x, y, w, h) of `parent`, clipped to the parent.
@@ -65,7 +67,9 @@ static inline uint8_t *isk_canvas_at(const isk_canvas *c, int x, int y)
 /* Reads pixel (x, y); out-of-range coordinates give ISK_TRANSPARENT. */
 isk_color isk_canvas_get(const isk_canvas *c, int x, int y);
 
-/* 1 when both canvases have equal size and identical pixel bytes. */
+/* 1 when both canvases have equal size and identical pixel bytes (0 when
+ * either is NULL or malformed: NULL pixels with a size, a negative size, a
+ * stride shorter than a row). */
 int isk_canvas_equal(const isk_canvas *a, const isk_canvas *b);
 
 /* How two canvases differ, over all four channels. */

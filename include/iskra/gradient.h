@@ -87,7 +87,7 @@ void isk_color_gradient_free(isk_color_gradient *g);
 void isk_scalar_gradient_free(isk_scalar_gradient *g);
 
 /* The exact interpolation (no table), for valid stops; t is clamped the same
- * way as in the lookups. */
+ * way as in the lookups.  NULL stops or n < 1 give transparent black / 0. */
 isk_color isk_color_gradient_eval(const isk_color_stop *stops, int n, double t);
 double isk_scalar_gradient_eval(const isk_scalar_stop *stops, int n, double t);
 

@@ -38,7 +38,10 @@ typedef struct isk_rng {
  * Tausworthe words above their minimum values (z1 >= 2, z2 >= 8, z3 >= 16). */
 void isk_rng_seed(isk_rng *r, uint64_t seed);
 
-/* Next raw 32-bit output: taus(z1) ^ taus(z2) ^ taus(z3) ^ lcg(z4). */
+/* Next raw 32-bit output: taus(z1) ^ taus(z2) ^ taus(z3) ^ lcg(z4).
+ * A NULL generator is a programming error that never crashes: every draw
+ * from it is 0 (uniform 0.0, range lo, below 0, normals 0), and seeding it
+ * does nothing. */
 uint32_t isk_rng_u32(isk_rng *r);
 
 /* Uniform double in [0, 1) with 53 random bits. */

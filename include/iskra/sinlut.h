@@ -29,7 +29,9 @@
  * range.  NaN and +-Inf give NaN, like sin().
  *
  * The lookups are static inline and branch only on that rare huge-angle
- * case.  The isk_sinlut struct is plain read-only data: share it freely.
+ * case; they take a table isk_sinlut_init filled (not checked: they are
+ * for hot loops; isk_sinlut_eval is the checked call, NaN for NULL).  The
+ * isk_sinlut struct is plain read-only data: share it freely.
  *
  *     isk_sinlut lut;
  *     if (isk_sinlut_init(&lut, 4096) != ISK_OK) return 1;   // N = 4096
@@ -85,7 +87,8 @@ isk_status isk_sinlut_init_copy(isk_sinlut *lut, int n, double *buf, size_t buf_
 double isk_sinlut_bound(int n, isk_sinlut_mode mode);
 
 /* Lookup by mode through a switch (for code that picks the mode at run
- * time; hot loops should call the specific inline function). */
+ * time; hot loops should call the specific inline function).  NaN for a
+ * NULL table, an unknown mode or a non-finite theta. */
 double isk_sinlut_eval(const isk_sinlut *lut, isk_sinlut_mode mode, double theta);
 
 /* Out-of-line reduction for |t| >= 2^62 or non-finite theta: returns the

@@ -27,6 +27,7 @@ typedef enum isk_status {
     ISK_ERR_UNSUPPORTED, /* valid request this build cannot honour */
     ISK_ERR_DISPLAY,     /* the window system (SDL) failed */
     ISK_ERR_FULL,        /* a fixed-capacity container is full */
+    ISK_ERR_MISMATCH,    /* an image differs from its reference (iskra/refimg.h) */
     ISK_STATUS_COUNT
 } isk_status;
 

@@ -33,7 +33,8 @@ typedef struct isk_timestep {
 } isk_timestep;
 
 /* Errors: ISK_ERR_NULL, ISK_ERR_NAN (dt not finite), ISK_ERR_RANGE (dt <= 0,
- * max_steps < 1). */
+ * max_steps < 1).  Any max_steps up to INT_MAX works: many steps due at
+ * once are counted arithmetically, not one by one. */
 isk_status isk_timestep_init(isk_timestep *ts, double dt, int max_steps);
 
 /* Adds frame_seconds of real time (negative or non-finite counts as 0) and
@@ -41,6 +42,7 @@ isk_status isk_timestep_init(isk_timestep *ts, double dt, int max_steps);
  * due, the excess is dropped (counted in `dropped`) and the remainder kept
  * below one dt, so a stall is followed by normal frames, not a catch-up. */
 int isk_timestep_advance(isk_timestep *ts, double frame_seconds);
+/* (NULL, or an accumulator never initialised: 0 steps; alpha 0.) */
 
 /* Fraction of a step accumulated but not simulated, in [0, 1): for
  * interpolating what is drawn between two simulation states. */

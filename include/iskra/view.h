@@ -52,6 +52,9 @@ isk_status isk_view_window(isk_view *v, int width, int height,
 /* Fire-thesis camera.  Errors: ISK_ERR_SIZE, ISK_ERR_NAN, ISK_ERR_RANGE (zoom <= 0). */
 isk_status isk_view_camera(isk_view *v, int width, int height, double zoom, double tx, double ty);
 
+/* A NULL view converts every point to (0, 0), and the isk_world_* calls
+ * below draw nothing with it. */
+
 /* World -> screen (fractional pixels). */
 void isk_view_to_screen(const isk_view *v, double x, double y, double *sx, double *sy);
 /* Screen -> world, the exact inverse formulas of the view's kind. */

@@ -74,6 +74,8 @@ static uint8_t lerp_channel(uint8_t a, uint8_t b, double f)
 
 isk_color isk_color_gradient_eval(const isk_color_stop *s, int n, double t)
 {
+    if (!s || n < 1)
+        return (isk_color){0, 0, 0, 0};
     t = clamp_t(t);
     if (t <= s[0].t)
         return s[0].color;
@@ -93,6 +95,8 @@ isk_color isk_color_gradient_eval(const isk_color_stop *s, int n, double t)
 
 double isk_scalar_gradient_eval(const isk_scalar_stop *s, int n, double t)
 {
+    if (!s || n < 1)
+        return 0.0;
     t = clamp_t(t);
     if (t <= s[0].t)
         return s[0].value;

@@ -26,6 +26,8 @@ static uint64_t splitmix64(uint64_t *s)
 
 void isk_rng_seed(isk_rng *r, uint64_t seed)
 {
+    if (!r)
+        return;
     uint64_t s = seed;
     uint64_t a = splitmix64(&s), b = splitmix64(&s);
     r->z1 = (uint32_t)a;
@@ -40,6 +42,8 @@ void isk_rng_seed(isk_rng *r, uint64_t seed)
 
 uint32_t isk_rng_u32(isk_rng *r)
 {
+    if (!r) /* no generator: every draw is 0 (so uniform 0, range lo, normal 0) */
+        return 0u;
     return taus_step(&r->z1, 13, 19, 12, 4294967294u) ^ taus_step(&r->z2, 2, 25, 4, 4294967288u) ^
            taus_step(&r->z3, 3, 11, 17, 4294967280u) ^ lcg_step(&r->z4);
 }
@@ -58,7 +62,7 @@ double isk_rng_range(isk_rng *r, double lo, double hi)
 
 uint32_t isk_rng_below(isk_rng *r, uint32_t n)
 {
-    if (n == 0u)
+    if (n == 0u || !r) /* (a NULL generator's zeros would never pass the rejection) */
         return 0u;
     /* Lemire's multiply-and-reject: unbiased, usually one draw. */
     uint64_t m = (uint64_t)isk_rng_u32(r) * n;

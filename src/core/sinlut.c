@@ -57,7 +57,7 @@ isk_status isk_sinlut_init_copy(isk_sinlut *lut, int n, double *buf, size_t buf_
 
 double isk_sinlut_reduce_slow(const isk_sinlut *lut, double theta)
 {
-    if (!isfinite(theta))
+    if (!lut || !isfinite(theta))
         return NAN;
     /* fmod is exact; |result| < 2 pi, so |t| <= n. */
     return fmod(theta, TWO_PI) * lut->scale;
@@ -78,6 +78,8 @@ double isk_sinlut_bound(int n, isk_sinlut_mode mode)
 
 double isk_sinlut_eval(const isk_sinlut *lut, isk_sinlut_mode mode, double theta)
 {
+    if (!lut || !lut->table)
+        return NAN;
     switch (mode) {
     case ISK_SINLUT_FLOOR: return isk_sinlut_floor(lut, theta);
     case ISK_SINLUT_ROUND: return isk_sinlut_round(lut, theta);

@@ -18,6 +18,7 @@ const char *isk_status_str(isk_status s)
     case ISK_ERR_UNSUPPORTED: return "not supported";
     case ISK_ERR_DISPLAY: return "window system error";
     case ISK_ERR_FULL: return "container is full";
+    case ISK_ERR_MISMATCH: return "differs from the reference image";
     case ISK_STATUS_COUNT: break;
     }
     return "unknown status";
@@ -28,6 +29,9 @@ isk_status isk_error_set(isk_error *err, isk_status status, const char *fmt, ...
     if (err) {
         va_list ap;
         err->status = status;
+        err->message[0] = 0;
+        if (!fmt)
+            return status;
         va_start(ap, fmt);
         vsnprintf(err->message, sizeof err->message, fmt, ap);
         va_end(ap);

@@ -1,6 +1,7 @@
 /* Canvas memory: owned, wrapped and view canvases. */
 #include "iskra/canvas.h"
 
+#include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -33,6 +34,11 @@ isk_status isk_canvas_wrap(isk_canvas *c, void *pixels, int width, int height, s
     if (!c || !pixels)
         return ISK_ERR_NULL;
     if (!valid_dims(width, height) || stride < (size_t)width * 4u)
+        return ISK_ERR_SIZE;
+    /* The last row must be addressable: (height-1)*stride + 4*width may
+     * neither wrap around size_t nor exceed what a pointer offset holds. */
+    size_t last_row = (size_t)(height - 1);
+    if (last_row > 0 && stride > ((size_t)PTRDIFF_MAX - (size_t)width * 4u) / last_row)
         return ISK_ERR_SIZE;
     c->pixels = pixels;
     c->width = width;
@@ -100,9 +106,20 @@ isk_color isk_canvas_get(const isk_canvas *c, int x, int y)
     return isk_rgba(p[0], p[1], p[2], p[3]);
 }
 
+/* A canvas whose fields can be read without going out of bounds: an empty
+ * one (0 x 0), or pixels with a positive size and a stride that fits a row. */
+static int readable(const isk_canvas *c)
+{
+    if (!c)
+        return 0;
+    if (c->width == 0 || c->height == 0)
+        return c->width >= 0 && c->height >= 0;
+    return c->pixels && c->width > 0 && c->height > 0 && c->stride >= (size_t)c->width * 4u;
+}
+
 int isk_canvas_equal(const isk_canvas *a, const isk_canvas *b)
 {
-    if (!a || !b || a->width != b->width || a->height != b->height)
+    if (!readable(a) || !readable(b) || a->width != b->width || a->height != b->height)
         return 0;
     for (int y = 0; y < a->height; y++)
         if (memcmp(a->pixels + (size_t)y * a->stride, b->pixels + (size_t)y * b->stride,
@@ -114,14 +131,14 @@ int isk_canvas_equal(const isk_canvas *a, const isk_canvas *b)
 int isk_canvas_compare(const isk_canvas *a, const isk_canvas *b, isk_canvas_diff *d, isk_canvas *diff_image)
 {
     isk_canvas_diff r = {0, 0, 0, 0.0};
-    if (!a || !b) {
+    if (!readable(a) || !readable(b)) {
         if (d) *d = r;
         return 0;
     }
     int same_size = a->width == b->width && a->height == b->height;
     double sum = 0.0;
     int w = a->width > b->width ? a->width : b->width, h = a->height > b->height ? a->height : b->height;
-    if (diff_image && (diff_image->width != w || diff_image->height != h))
+    if (diff_image && (!readable(diff_image) || diff_image->width != w || diff_image->height != h))
         diff_image = NULL;
     for (int y = 0; y < h; y++) {
         for (int x = 0; x < w; x++) {

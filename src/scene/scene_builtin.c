@@ -50,6 +50,27 @@ isk_status isk_scene_load(isk_effect_def *out, const char *name_or_path, isk_err
     /* A path-looking name is a missing file; otherwise suggest a built-in. */
     if (strchr(name_or_path, '/') || strstr(name_or_path, ".ini"))
         return isk_error_set(err, ISK_ERR_IO, "%s: %s", name_or_path, strerror(ENOENT));
+    /* Part of a name ("fig19", "campfire") names the built-ins containing
+     * it, when they are few; otherwise the nearest name by spelling. */
+    enum { MAX_HITS = 4 };
+    const char *hits[MAX_HITS];
+    int nhits = 0;
+    for (int i = 0; strlen(name_or_path) >= 3 && i < NBUILTIN; i++)
+        if (strstr(builtin_scenes[i].name, name_or_path)) {
+            if (nhits < MAX_HITS)
+                hits[nhits] = builtin_scenes[i].name;
+            nhits++;
+        }
+    if (nhits >= 1 && nhits <= MAX_HITS) {
+        char list[4 * (ISK_NAME_MAX + 8)] = "";
+        for (int i = 0; i < nhits; i++) {
+            size_t used = strlen(list);
+            snprintf(list + used, sizeof list - used, "%s%s", i == 0 ? "" : i == nhits - 1 ? " or " : ", ",
+                     hits[i]);
+        }
+        return isk_error_set(err, ISK_ERR_IO, "%s: no such file or built-in scene; did you mean %s?",
+                             name_or_path, list);
+    }
     const char *names[256];
     int n = 0;
     for (int i = 0; i < NBUILTIN && n < 256; i++)

@@ -78,7 +78,9 @@ isk_status isk_view_camera(isk_view *v, int width, int height, double zoom, doub
 void isk_view_to_screen(const isk_view *v, double x, double y, double *sx, double *sy)
 {
     double X, Y;
-    if (v->kind == ISK_VIEW_CAMERA) {
+    if (!v) {
+        X = Y = 0.0;
+    } else if (v->kind == ISK_VIEW_CAMERA) {
         X = v->width / 2.0 + v->a * (x + v->tx);
         Y = v->height / 2.0 - v->a * (y + v->ty);
     } else {
@@ -92,7 +94,9 @@ void isk_view_to_screen(const isk_view *v, double x, double y, double *sx, doubl
 void isk_view_to_world(const isk_view *v, double sx, double sy, double *x, double *y)
 {
     double X, Y;
-    if (v->kind == ISK_VIEW_CAMERA) {
+    if (!v) {
+        X = Y = 0.0;
+    } else if (v->kind == ISK_VIEW_CAMERA) {
         X = (sx - v->width / 2.0) / v->a - v->tx;
         Y = (v->height / 2.0 - sy) / v->a - v->ty;
     } else {

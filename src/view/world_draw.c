@@ -11,6 +11,8 @@
 
 void isk_world_dot(isk_canvas *c, const isk_view *v, double x, double y, isk_color color, isk_blend mode)
 {
+    if (!v)
+        return;
     double X, Y;
     isk_view_to_screen(v, x, y, &X, &Y);
     isk_draw_dot(c, X, Y, color, mode);
@@ -19,6 +21,8 @@ void isk_world_dot(isk_canvas *c, const isk_view *v, double x, double y, isk_col
 void isk_world_dot_browser(isk_canvas *c, const isk_view *v, double x, double y, isk_color color,
                            isk_blend mode)
 {
+    if (!v)
+        return;
     double X, Y;
     isk_view_to_screen(v, x, y, &X, &Y);
     isk_draw_dot_browser(c, X, Y, color, mode);
@@ -27,6 +31,8 @@ void isk_world_dot_browser(isk_canvas *c, const isk_view *v, double x, double y,
 void isk_world_disc(isk_canvas *c, const isk_view *v, double x, double y, double r, isk_color color,
                     isk_blend mode)
 {
+    if (!v)
+        return;
     double X, Y;
     isk_view_to_screen(v, x, y, &X, &Y);
     double R = v->sx * r;
@@ -38,7 +44,7 @@ void isk_world_text(isk_canvas *c, const isk_view *v, double x, double y, const 
                     isk_color color, isk_blend mode)
 {
     double X, Y;
-    if (scale < 1)
+    if (!v || scale < 1)
         return;
     isk_view_to_screen(v, x, y, &X, &Y);
     /* Baseline at Y: the 7 rows above the descender row sit above it.  Far
@@ -54,7 +60,7 @@ void isk_world_text(isk_canvas *c, const isk_view *v, double x, double y, const 
 static void world_path(isk_canvas *c, const isk_view *v, const double *xy, int n, int closed, isk_color color,
                        isk_blend mode, int hairline)
 {
-    if (!xy || n < 2)
+    if (!v || !xy || n < 2)
         return;
     double stack[64];
     double *s = n <= 32 ? stack : malloc(sizeof(double) * 2 * (size_t)n);

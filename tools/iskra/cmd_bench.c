@@ -5,6 +5,7 @@
 #include <string.h>
 
 #include "cmd.h"
+#include "outpath.h"
 #include "study.h"
 
 typedef struct study_entry {
@@ -23,7 +24,8 @@ static void help(FILE *f)
 {
     fprintf(f, "usage: iskra bench accuracy [--out DIR] [--quick] [--only STUDY]\n"
                "  Measures error against time per particle-step and writes CSV files and\n"
-               "  work-precision charts (PNG) into DIR (default out/accuracy).\n"
+               "  work-precision charts (PNG) into DIR (default out/accuracy, relative\n"
+               "  to the current directory; missing directories are created).\n"
                "  --quick       fewer repetitions and shorter sweeps (a smoke run)\n"
                "  --only STUDY  run one study:");
     for (int i = 0; i < NSTUDIES; i++)
@@ -70,20 +72,25 @@ int cmd_bench(int argc, char **argv)
             return 2;
         }
     }
-    int found = 0, rc = 0;
-    for (int i = 0; i < NSTUDIES; i++) {
-        if (only && strcmp(only, studies[i].name) != 0)
-            continue;
-        found = 1;
-        printf("== %s: %s\n\n", studies[i].name, studies[i].summary);
-        fflush(stdout);
-        if (studies[i].run(&o) != 0)
-            rc = 1;
-    }
+    int found = !only;
+    for (int i = 0; only && i < NSTUDIES; i++)
+        found |= !strcmp(only, studies[i].name);
     if (!found) {
         fprintf(stderr, "iskra bench: no study named '%s'\n", only);
         help(stderr);
         return 2;
+    }
+    /* Before the first study: a bad --out fails now, not after a long run. */
+    if (outpath_make_dirs("bench", o.out_dir))
+        return 1;
+    int rc = 0;
+    for (int i = 0; i < NSTUDIES; i++) {
+        if (only && strcmp(only, studies[i].name) != 0)
+            continue;
+        printf("== %s: %s\n\n", studies[i].name, studies[i].summary);
+        fflush(stdout);
+        if (studies[i].run(&o) != 0)
+            rc = 1;
     }
     if (rc == 0)
         printf("CSV files and charts in %s/\n", o.out_dir);

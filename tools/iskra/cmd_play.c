@@ -8,9 +8,11 @@
  * clicked world point.  The simulation draws into its own canvas (trail
  * scenes accumulate there); the window shows a copy with the overlay on top.
  * --frames N stops after N displayed frames (for tests, with
- * SDL_VIDEODRIVER=dummy no display is needed). */
+ * SDL_VIDEODRIVER=dummy no display is needed).  --shots DIR says where F12
+ * screenshots go (default: the current directory; said on stderr). */
 #include <stdio.h>
 #include <string.h>
+#include <unistd.h>
 
 #include "cmd.h"
 #include "iskra/draw.h"
@@ -19,6 +21,7 @@
 #include "iskra/sdl.h"
 #include "iskra/text.h"
 #include "iskra/timestep.h"
+#include "outpath.h"
 #include "progress.h"
 #include "scene_args.h"
 
@@ -34,6 +37,7 @@ typedef struct player {
     int paused, overlay, substeps;
     int said_no_click;
     char name[64];           /* scene name for screenshots */
+    const char *shots;       /* screenshot directory (NULL: the current one) */
     double fps, update_ms;   /* smoothed */
     long frames_shown;
     int failed;              /* 1: runtime failure */
@@ -41,12 +45,15 @@ typedef struct player {
 
 static void help(FILE *f)
 {
-    fprintf(f, "usage: iskra play SCENE [--frames N] [--seed N] [--size WxH] [--dt S] [--substeps N]\n"
+    fprintf(f, "usage: iskra play SCENE [--frames N] [--shots DIR] [--seed N] [--size WxH]\n"
+               "                  [--dt S] [--substeps N]\n"
                "  Runs the scene in a window in real time (fixed time step).\n"
                "  keys: space pause/resume   R reset   + / - substeps   F12 screenshot\n"
-               "        (iskra-SCENE-FRAME.png in the current directory)   H overlay   Esc quit\n"
+               "        (iskra-SCENE-FRAME.png, see --shots)   H overlay   Esc quit\n"
                "  mouse: left click runs the scene's [click] action at that point\n"
                "  --frames N       quit after N displayed frames (for scripts and tests)\n"
+               "  --shots DIR      where F12 screenshots go, created if missing (default:\n"
+               "                   the current directory)\n"
                "  --script EVENTS  inject events at the start (for tests), space-separated:\n"
                "                   space r + - = kp+ kp- h f12 esc click:X,Y (canvas pixels)\n");
     scene_args_help(f);
@@ -66,8 +73,11 @@ static void scene_name(const char *scene, char *out, size_t n)
 
 static void screenshot(player *p)
 {
-    char path[128];
-    snprintf(path, sizeof path, "iskra-%s-%06ld.png", p->name, isk_effect_frame(p->fx));
+    char path[4200];
+    snprintf(path, sizeof path, "%s%siskra-%s-%06ld.png", p->shots ? p->shots : "", p->shots ? "/" : "",
+             p->name, isk_effect_frame(p->fx));
+    if (p->shots && outpath_make_dirs("play", p->shots))
+        return;
     isk_error err;
     if (isk_png_write(&p->sim, path, &err) == ISK_OK)
         fprintf(stderr, "iskra play: saved %s\n", path);
@@ -205,7 +215,7 @@ int cmd_play(int argc, char **argv)
 {
     scene_args a = {.cmd = "play"};
     long max_frames = 0;
-    const char *script = NULL;
+    const char *script = NULL, *shots = NULL;
     for (int i = 1; i < argc; i++) {
         const char *v;
         int r;
@@ -216,6 +226,18 @@ int cmd_play(int argc, char **argv)
         if ((r = arg_value("play", argc, argv, &i, "--frames", &v)) != 0) {
             if (r < 0 || !arg_long("play", "--frames", v, 1, 1000000000, &max_frames))
                 return 2;
+        } else if ((r = arg_value("play", argc, argv, &i, "--shots", &v)) != 0) {
+            if (r < 0)
+                return 2;
+            if (!*v) {
+                fprintf(stderr, "iskra play: --shots needs a directory\n");
+                return 2;
+            }
+            if (strlen(v) > 4000) {
+                fprintf(stderr, "iskra play: --shots: directory name too long\n");
+                return 2;
+            }
+            shots = v;
         } else if ((r = arg_value("play", argc, argv, &i, "--script", &v)) != 0) {
             if (r < 0)
                 return 2;
@@ -239,6 +261,7 @@ int cmd_play(int argc, char **argv)
     p.overlay = 1;
     p.substeps = def.substeps;
     scene_name(a.scene, p.name, sizeof p.name);
+    p.shots = shots;
     isk_canvas shown;
     isk_window *w = NULL;
     isk_error err;
@@ -262,6 +285,9 @@ int cmd_play(int argc, char **argv)
         fprintf(stderr, "iskra play: cannot open a window: %s\n", err.message);
         goto out_shown;
     }
+    char cwd[4096];
+    fprintf(stderr, "iskra play: F12 screenshots go to %s\n",
+            shots ? shots : getcwd(cwd, sizeof cwd) ? cwd : "the current directory");
     if (script && (rc = push_script(w, script)) != 0) {
         isk_window_close(w);
         goto out_shown;

@@ -1,132 +1,196 @@
-/* iskra render SCENE --frames N --out FILE.png
- * iskra render SCENE --frames N --out-dir DIR [--every K]
+/* iskra render SCENE [--frames N] --out FILE.png
+ * iskra render SCENE [--frames N] [--every K] [--fps F] --out FILE.gif|FILE.y4m
+ * iskra render SCENE [--frames N] [--every K] --raw --out FILE|-
+ * iskra render SCENE [--frames N] [--every K] --out-dir DIR [--resume]
  * Renders frame N (frame 0 = the initial state, frame N = after N steps) to
- * a PNG, and/or a numbered sequence DIR/frame_000000.png ... of every K-th
- * frame up to N.  Everything is validated before anything is written. */
-#include <errno.h>
+ * a PNG, and/or frames 0, K, 2K, ... <= N as a numbered PNG sequence, an
+ * animated GIF, a YUV4MPEG2 video or raw RGBA frames (render_out.h).
+ * Everything is validated before anything is written; a signal removes
+ * the temporaries and says what was written (cleanup.h). */
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <sys/stat.h>
+#include <unistd.h>
 
+#include "cleanup.h"
 #include "cmd.h"
+#include "iskra/anim.h"
 #include "iskra/effect.h"
-#include "iskra/png.h"
+#include "outpath.h"
 #include "progress.h"
+#include "render_out.h"
 #include "scene_args.h"
 
 static void help(FILE *f)
 {
     fprintf(f, "usage: iskra render SCENE [--frames N] --out FILE.png\n"
-               "       iskra render SCENE [--frames N] --out-dir DIR [--every K]\n"
+               "       iskra render SCENE [--frames N] [--every K] [--fps F] --out FILE.gif\n"
+               "                    (or --out FILE.y4m)\n"
+               "       iskra render SCENE [--frames N] [--every K] --raw --out FILE|-\n"
+               "       iskra render SCENE [--frames N] [--every K] --out-dir DIR [--resume]\n"
                "  Renders frame N of the scene (0 = the initial state; N steps of dt).\n"
-               "  --frames N       the frame to render, 0..100000000 (default: the scene's\n"
+               "  --frames N       the last frame, 0..100000000 (default: the scene's\n"
                "                   [scene] frames, else 0)\n"
-               "  --out FILE.png   write frame N there\n"
+               "  --out FILE.png   write frame N there (any name but .gif/.y4m is a PNG)\n"
+               "  --out FILE.gif   an animated GIF of frames 0, K, 2K, ... <= N (a palette\n"
+               "                   per frame: exact up to 256 colours, else median cut)\n"
+               "  --out FILE.y4m   the same frames as YUV4MPEG2 (ffmpeg, mpv, VLC)\n"
+               "  --raw            the same frames as raw RGBA bytes, W*H*4 per frame, to\n"
+               "                   --out FILE, or to stdout with --out - (for a pipe), e.g.\n"
+               "                   iskra render fire_campfire --frames 600 --raw --out - |\n"
+               "                     ffmpeg -f rawvideo -pixel_format rgba -video_size 480x400\n"
+               "                     -framerate 60 -i - fire.mp4\n"
+               "  --fps F          frames per second of a GIF or Y4M, 0.001..1000 (default\n"
+               "                   1 / (dt * K): real time)\n"
                "  --out-dir DIR    write frames 0, K, 2K, ... <= N as DIR/frame_000000.png ...\n"
-               "                   (DIR is created if missing)\n"
-               "  --every K        sequence step, >= 1 (default 1)\n");
+               "  --resume         with --out-dir: keep the frames already there (after an\n"
+               "                   interrupted render; the simulation still runs from 0)\n"
+               "  --every K        sequence and animation step, >= 1 (default 1)\n"
+               "  Missing directories of every output are created.\n");
     scene_args_help(f);
     fprintf(f, "  A progress bar appears on stderr when it is a terminal and the render\n"
-               "  takes a while.  exit status: 0 success, 1 cannot write, 2 usage or scene error\n");
+               "  takes a while.  SIGINT, SIGTERM, SIGHUP or SIGPIPE removes the temporary\n"
+               "  files, says which frames were written and exits with 128 + the signal.\n"
+               "  exit status: 0 success, 1 cannot write, 2 usage or scene error\n");
 }
 
-/* mkdir -p */
-static int make_dirs(const char *path)
+typedef struct render_args {
+    scene_args scene;
+    const char *out;
+    long frames;     /* -1: the scene's */
+    double fps;      /* 0: 1 / (dt * every) */
+    int raw, have_every;
+    render_out o;
+} render_args;
+
+/* 0, or 2 after printing the usage error. */
+static int parse(render_args *r, int argc, char **argv)
 {
-    char buf[4096];
-    size_t n = strlen(path);
-    if (n == 0 || n >= sizeof buf)
-        return -1;
-    memcpy(buf, path, n + 1);
-    for (size_t i = 1; i <= n; i++) {
-        if (buf[i] == '/' || buf[i] == 0) {
-            char c = buf[i];
-            buf[i] = 0;
-            if (mkdir(buf, 0777) != 0 && errno != EEXIST)
-                return -1;
-            buf[i] = c;
+    for (int i = 1; i < argc; i++) {
+        const char *v;
+        int k;
+        if (!strcmp(argv[i], "--help") || !strcmp(argv[i], "-h")) {
+            help(stdout);
+            exit(0);
+        }
+        if (!strcmp(argv[i], "--raw")) {
+            r->raw = 1;
+        } else if (!strcmp(argv[i], "--resume")) {
+            r->o.resume = 1;
+        } else if ((k = arg_value("render", argc, argv, &i, "--frames", &v)) != 0) {
+            if (k < 0 || !arg_long("render", "--frames", v, 0, 100000000, &r->frames))
+                return 2;
+        } else if ((k = arg_value("render", argc, argv, &i, "--every", &v)) != 0) {
+            if (k < 0 || !arg_long("render", "--every", v, 1, 100000000, &r->o.every))
+                return 2;
+            r->have_every = 1;
+        } else if ((k = arg_value("render", argc, argv, &i, "--fps", &v)) != 0) {
+            if (k < 0 || !arg_double_pos("render", "--fps", v, &r->fps))
+                return 2;
+        } else if ((k = arg_value("render", argc, argv, &i, "--out-dir", &v)) != 0) {
+            if (k < 0)
+                return 2;
+            r->o.dir = v;
+        } else if ((k = arg_value("render", argc, argv, &i, "--out", &v)) != 0) {
+            if (k < 0)
+                return 2;
+            r->out = v;
+        } else if (scene_args_take(&r->scene, argc, argv, &i) < 0) {
+            return 2;
         }
     }
-    struct stat st;
-    return stat(path, &st) == 0 && S_ISDIR(st.st_mode) ? 0 : -1;
+    return 0;
 }
 
-static int write_png(const isk_canvas *c, const char *path)
+/* The combinations; 0 or 2 after printing why. */
+static int check(render_args *r)
 {
-    isk_error err;
-    if (isk_png_write(c, path, &err) != ISK_OK) {
-        fprintf(stderr, "iskra render: %s\n", err.message);
-        return 1;
+    const char *why = NULL;
+    if (!r->scene.scene)
+        why = "which scene?";
+    else if (!r->out && !r->o.dir)
+        why = "say where: --out FILE (.png, .gif, .y4m; --raw), or --out-dir DIR";
+    else if ((r->out && !*r->out) || (r->o.dir && !*r->o.dir))
+        why = "empty output name";
+    if (why) {
+        fprintf(stderr, "iskra render: %s\n", why);
+        help(stderr);
+        return 2;
+    }
+    if (r->out && r->raw) {
+        r->o.anim_path = r->out;
+        r->o.anim_format = ISK_ANIM_RAW;
+    } else if (r->out && isk_anim_format_of_path(r->out, &r->o.anim_format)) {
+        r->o.anim_path = r->out;
+    } else if (r->out && !strcmp(r->out, "-")) {
+        why = "--out -: standard output takes raw frames (add --raw), or name a .png, .gif or .y4m file";
+    } else {
+        r->o.png = r->out;
+    }
+    if (!why && r->raw && !r->out)
+        why = "--raw needs --out FILE or --out -";
+    else if (!why && r->have_every && !r->o.dir && !r->o.anim_path)
+        why = "--every needs --out-dir, an animation (--out FILE.gif, FILE.y4m) or --raw";
+    else if (!why && r->fps > 0 && !(r->o.anim_path && r->o.anim_format != ISK_ANIM_RAW))
+        why = "--fps is for --out FILE.gif or FILE.y4m (raw frames carry no rate)";
+    else if (!why && r->o.resume && !r->o.dir)
+        why = "--resume needs --out-dir";
+    else if (!why && r->o.anim_path && !strcmp(r->o.anim_path, "-") && isatty(STDOUT_FILENO))
+        why = "refusing to write raw frames to a terminal (pipe them, or --out FILE)";
+    if (why) {
+        fprintf(stderr, "iskra render: %s\n", why);
+        return 2;
+    }
+    if (outpath_refuse_input("render", r->out, r->scene.scene))
+        return 2;
+    return 0;
+}
+
+/* Frames per second for the animation: --fps, or real time.  0 or 2. */
+static int choose_fps(render_args *r, double dt, double *fps)
+{
+    *fps = r->fps > 0 ? r->fps : 1.0 / (dt * (double)r->o.every);
+    if (r->o.anim_path && r->o.anim_format != ISK_ANIM_RAW && !(*fps >= 0.001 && *fps <= 1000.0)) {
+        if (r->fps > 0)
+            fprintf(stderr, "iskra render: --fps: expected 0.001..1000, got %g\n", *fps);
+        else
+            fprintf(stderr, "iskra render: 1 / (dt * every) = %g frames per second is outside 0.001..1000; "
+                            "give --fps\n", *fps);
+        return 2;
     }
     return 0;
 }
 
 int cmd_render(int argc, char **argv)
 {
-    scene_args a = {.cmd = "render"};
-    const char *out = NULL, *out_dir = NULL;
-    long frames = -1, every = 1;
-    int have_every = 0;
-    for (int i = 1; i < argc; i++) {
-        const char *v;
-        int r;
-        if (!strcmp(argv[i], "--help") || !strcmp(argv[i], "-h")) {
-            help(stdout);
-            return 0;
-        }
-        if ((r = arg_value("render", argc, argv, &i, "--frames", &v)) != 0) {
-            if (r < 0 || !arg_long("render", "--frames", v, 0, 100000000, &frames))
-                return 2;
-        } else if ((r = arg_value("render", argc, argv, &i, "--every", &v)) != 0) {
-            if (r < 0 || !arg_long("render", "--every", v, 1, 100000000, &every))
-                return 2;
-            have_every = 1;
-        } else if ((r = arg_value("render", argc, argv, &i, "--out-dir", &v)) != 0) {
-            if (r < 0)
-                return 2;
-            out_dir = v;
-        } else if ((r = arg_value("render", argc, argv, &i, "--out", &v)) != 0) {
-            if (r < 0)
-                return 2;
-            out = v;
-        } else if (scene_args_take(&a, argc, argv, &i) < 0) {
-            return 2;
-        }
-    }
-    if (!a.scene || (!out && !out_dir)) {
-        fprintf(stderr, "iskra render: %s\n", !a.scene ? "which scene?" : "say where: --out FILE.png or --out-dir DIR");
-        help(stderr);
-        return 2;
-    }
-    if (have_every && !out_dir) {
-        fprintf(stderr, "iskra render: --every needs --out-dir\n");
-        return 2;
-    }
-    if ((out && !*out) || (out_dir && !*out_dir)) {
-        fprintf(stderr, "iskra render: empty output name\n");
-        return 2;
-    }
+    render_args r;
+    memset(&r, 0, sizeof r);
+    r.scene.cmd = "render";
+    r.frames = -1;
+    r.o.every = 1;
+    int rc = parse(&r, argc, argv);
+    if (!rc)
+        rc = check(&r);
+    if (rc)
+        return rc;
 
     isk_effect_def def;
     isk_effect *fx;
-    int rc = scene_args_open(&a, &def, &fx);
-    if (rc)
+    if ((rc = scene_args_open(&r.scene, &def, &fx)) != 0)
         return rc;
-    if (frames < 0)
-        frames = def.show.frames;
-    isk_canvas canvas;
+    long frames = r.frames >= 0 ? r.frames : def.show.frames;
+    double fps;
+    isk_canvas canvas = {0};
+    if ((rc = choose_fps(&r, def.dt, &fps)) != 0)
+        goto done;
     if (isk_canvas_init(&canvas, def.width, def.height) != ISK_OK) {
         fprintf(stderr, "iskra render: out of memory (a %dx%d canvas)\n", def.width, def.height);
-        isk_effect_destroy(fx);
-        isk_effect_def_free(&def);
-        return 1;
-    }
-    if (out_dir && make_dirs(out_dir) != 0) {
-        fprintf(stderr, "iskra render: cannot create directory %s: %s\n", out_dir, strerror(errno));
         rc = 1;
         goto done;
     }
+    cleanup_install("render");
+    if ((rc = render_out_begin(&r.o, def.width, def.height, fps)) != 0)
+        goto done;
 
     progress pg;
     progress_start(&pg, frames);
@@ -137,13 +201,11 @@ int cmd_render(int argc, char **argv)
     isk_status s = isk_effect_run(fx, &canvas, 0);
     int drawn = 1;
     for (long f = 0; s == ISK_OK; f++) {
-        if (out_dir && f % every == 0) {
+        if (render_out_wants(&r.o, f)) {
             if (!drawn && (s = isk_effect_render(fx, &canvas)) != ISK_OK)
                 break;
             drawn = 1;
-            char path[4200];
-            snprintf(path, sizeof path, "%s/frame_%06ld.png", out_dir, f);
-            if (write_png(&canvas, path)) {
+            if (render_out_frame(&r.o, &canvas, f)) {
                 rc = 1;
                 goto done;
             }
@@ -157,14 +219,14 @@ int cmd_render(int argc, char **argv)
     if (s == ISK_OK && !drawn)
         s = isk_effect_render(fx, &canvas);
     if (s != ISK_OK) {
-        fprintf(stderr, "iskra render: %s: frame %ld: %s\n", a.scene, isk_effect_frame(fx), isk_status_str(s));
+        fprintf(stderr, "iskra render: %s: frame %ld: %s\n", r.scene.scene, isk_effect_frame(fx), isk_status_str(s));
         rc = 1;
         goto done;
     }
     progress_end(&pg);
-    if (out && write_png(&canvas, out))
-        rc = 1;
+    rc = render_out_end(&r.o, &canvas);
 done:
+    render_out_abort(&r.o);
     isk_canvas_free(&canvas);
     isk_effect_destroy(fx);
     isk_effect_def_free(&def);

@@ -6,10 +6,10 @@
 #include "iskra/version.h"
 
 static const isk_command commands[] = {
-    {"list", "list the built-in scenes", cmd_list},
+    {"list", "list the built-in scenes, each with its description", cmd_list},
     {"describe", "print the pipeline a scene compiles to", cmd_describe},
     {"keys", "every key of a scene file: type, default, range, meaning", cmd_keys},
-    {"render", "render a scene to PNG (one frame or a sequence)", cmd_render},
+    {"render", "render a scene to PNG, a PNG sequence, GIF, Y4M or raw frames", cmd_render},
     {"play", "run a scene in a window in real time", cmd_play},
     {"compare", "compare two PNG images pixel by pixel", cmd_compare},
     {"bench", "measure what accuracy costs in time (bench accuracy)", cmd_bench},

@@ -1,0 +1,80 @@
+/* iskra/outfile.h — writing a file without ever destroying what it replaces.
+ *
+ *     isk_outfile o;
+ *     isk_error err;
+ *     if (isk_outfile_open(&o, "out/anim.gif", &err) != ISK_OK) { ...err.message... }
+ *     ...write to o.f (or hand it to isk_png_write_stream, isk_anim_begin)...
+ *     if (failed) isk_outfile_abort(&o);
+ *     else if (isk_outfile_commit(&o, &err) != ISK_OK) { ... }
+ *
+ * What happens depends on what the path names when it is opened:
+ *
+ *   nothing, or a regular file   the bytes go to a temporary file beside it,
+ *                                PATH.tmp.XXXXXX, which is renamed over PATH
+ *                                only by a successful commit (flushed and
+ *                                fsynced first), keeping an existing file's
+ *                                permissions (a new file gets 0644).  Abort,
+ *                                or a failed commit, removes the temporary:
+ *                                PATH is then exactly as it was.
+ *   a symbolic link              followed: the file it finally points to is
+ *                                treated as above and replaced, the link
+ *                                stays a link.  A dangling link is refused
+ *                                (ISK_ERR_IO): we do not guess where it meant.
+ *   a character device or FIFO   written through (streamed): opened for
+ *                                writing, never created, truncated, replaced
+ *                                or removed, so `/dev/null` stays a device and
+ *                                a reader at the other end of a FIFO gets the
+ *                                bytes (opening a FIFO waits for its reader).
+ *                                Abort cannot take back what was written.
+ *   a directory, a block device  refused (ISK_ERR_IO), nothing touched.
+ *   or a socket
+ *
+ * `temp` names the temporary file while one exists (NULL when streaming,
+ * and after commit or abort): a program that handles signals can unlink()
+ * it from its handler (unlink is async-signal-safe).  The library itself
+ * installs no handlers and keeps no global state.
+ */
+#ifndef ISKRA_OUTFILE_H
+#define ISKRA_OUTFILE_H
+
+#include <stdio.h>
+
+#include "iskra/status.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+typedef struct isk_outfile {
+    FILE *f;          /* write here between open and commit/abort */
+    char *path;       /* the file being written (a symlink's final target) */
+    char *temp;       /* the temporary file, or NULL (streaming, or closed) */
+    int streaming;    /* 1: written through to a device or FIFO */
+} isk_outfile;
+
+/* Errors: ISK_ERR_NULL, ISK_ERR_IO (empty name, refused kind of file,
+ * cannot create the temporary: the message says which), ISK_ERR_NOMEM.
+ * On error *o is zeroed and nothing exists that did not exist before. */
+isk_status isk_outfile_open(isk_outfile *o, const char *path, isk_error *err);
+
+/* Flushes, syncs and closes; for a temporary, renames it over the target.
+ * On failure the temporary is removed (ISK_ERR_IO, "disk full?" etc.).
+ * Either way *o is closed afterwards. */
+isk_status isk_outfile_commit(isk_outfile *o, isk_error *err);
+
+/* Closes and removes the temporary (safe on a zeroed or closed outfile). */
+void isk_outfile_abort(isk_outfile *o);
+
+/* mkdir -p: creates `dir` and its missing parents (0777 before the umask).
+ * An existing directory is fine.  Errors: ISK_ERR_NULL, ISK_ERR_IO (the
+ * message names the level that could not be made and why), ISK_ERR_NOMEM. */
+isk_status isk_make_dirs(const char *dir, isk_error *err);
+
+/* isk_make_dirs of the directory part of `path` (nothing for "name.png"). */
+isk_status isk_make_parent_dirs(const char *path, isk_error *err);
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif

@@ -1,0 +1,225 @@
+/* Output files that never destroy what they replace (iskra/outfile.h). */
+#define _XOPEN_SOURCE 700 /* realpath */
+#include "iskra/outfile.h"
+
+#include <errno.h>
+#include <fcntl.h>
+#include <limits.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+static char *dup_str(const char *s)
+{
+    size_t n = strlen(s) + 1;
+    char *d = malloc(n);
+    if (d)
+        memcpy(d, s, n);
+    return d;
+}
+
+static isk_status fail(isk_outfile *o, isk_error *err, isk_status s, const char *shown, const char *why)
+{
+    free(o->path);
+    free(o->temp);
+    memset(o, 0, sizeof *o);
+    return isk_error_set(err, s, "%s: %s", shown, why);
+}
+
+/* A device or FIFO: open for writing as it is (no O_CREAT, no O_TRUNC). */
+static isk_status open_stream(isk_outfile *o, const char *path, isk_error *err)
+{
+    int fd = open(path, O_WRONLY | O_NOCTTY);
+    if (fd < 0)
+        return fail(o, err, ISK_ERR_IO, path, strerror(errno));
+    o->f = fdopen(fd, "wb");
+    if (!o->f) {
+        int e = errno;
+        close(fd);
+        return fail(o, err, ISK_ERR_IO, path, strerror(e));
+    }
+    o->streaming = 1;
+    return ISK_OK;
+}
+
+/* A regular file (or none yet) at `target`: a temporary beside it. */
+static isk_status open_temp(isk_outfile *o, const char *target, const char *shown, const struct stat *existing,
+                            isk_error *err)
+{
+    size_t n = strlen(target);
+    o->temp = malloc(n + 12);
+    if (!o->temp)
+        return fail(o, err, ISK_ERR_NOMEM, shown, "out of memory");
+    memcpy(o->temp, target, n);
+    memcpy(o->temp + n, ".tmp.XXXXXX", 12);
+    int fd = mkstemp(o->temp);
+    if (fd < 0) {
+        char why[300];
+        snprintf(why, sizeof why, "cannot create temporary file: %s", strerror(errno));
+        return fail(o, err, ISK_ERR_IO, shown, why);
+    }
+    /* mkstemp makes it 0600: give it the permissions of the file it
+     * replaces, or the usual 0644 for a new one. */
+    if (fchmod(fd, existing ? (existing->st_mode & 07777) : 0644) != 0) {
+        /* not fatal: the file is still ours and readable by us */
+    }
+    o->f = fdopen(fd, "wb");
+    if (!o->f) {
+        int e = errno;
+        close(fd);
+        unlink(o->temp);
+        return fail(o, err, ISK_ERR_IO, shown, strerror(e));
+    }
+    return ISK_OK;
+}
+
+isk_status isk_outfile_open(isk_outfile *o, const char *path, isk_error *err)
+{
+    if (!o)
+        return isk_error_set(err, ISK_ERR_NULL, "output: NULL outfile");
+    memset(o, 0, sizeof *o);
+    if (!path)
+        return isk_error_set(err, ISK_ERR_NULL, "output: NULL path");
+    if (!*path)
+        return isk_error_set(err, ISK_ERR_IO, "output: empty file name");
+    struct stat lst, st;
+    if (lstat(path, &lst) != 0) {
+        if (errno != ENOENT)
+            return fail(o, err, ISK_ERR_IO, path, strerror(errno));
+        o->path = dup_str(path);
+        if (!o->path)
+            return fail(o, err, ISK_ERR_NOMEM, path, "out of memory");
+        return open_temp(o, path, path, NULL, err);
+    }
+    if (S_ISLNK(lst.st_mode)) {
+        if (stat(path, &st) != 0)
+            return fail(o, err, ISK_ERR_IO, path,
+                        errno == ENOENT ? "a symbolic link to a missing file (refused: write to the target itself)"
+                                        : strerror(errno));
+    } else {
+        st = lst;
+    }
+    if (S_ISCHR(st.st_mode) || S_ISFIFO(st.st_mode)) {
+        o->path = dup_str(path);
+        if (!o->path)
+            return fail(o, err, ISK_ERR_NOMEM, path, "out of memory");
+        return open_stream(o, path, err);
+    }
+    if (S_ISDIR(st.st_mode))
+        return fail(o, err, ISK_ERR_IO, path, "is a directory");
+    if (!S_ISREG(st.st_mode))
+        return fail(o, err, ISK_ERR_IO, path, "not a regular file, character device or FIFO (refused)");
+    if (S_ISLNK(lst.st_mode)) {
+        /* Replace the file the link points to, beside it, so the rename
+         * stays within one directory and the link keeps working. */
+        char *real = realpath(path, NULL);
+        if (!real)
+            return fail(o, err, ISK_ERR_IO, path, strerror(errno));
+        o->path = real;
+    } else {
+        o->path = dup_str(path);
+        if (!o->path)
+            return fail(o, err, ISK_ERR_NOMEM, path, "out of memory");
+    }
+    return open_temp(o, o->path, path, &st, err);
+}
+
+isk_status isk_outfile_commit(isk_outfile *o, isk_error *err)
+{
+    if (!o)
+        return isk_error_set(err, ISK_ERR_NULL, "output: NULL outfile");
+    if (!o->f)
+        return isk_error_set(err, ISK_ERR_IO, "output: not open");
+    int ok = fflush(o->f) == 0;
+    int e = ok ? 0 : errno;
+    if (ok && !o->streaming && fsync(fileno(o->f)) != 0) {
+        ok = 0;
+        e = errno;
+    }
+    if (fclose(o->f) != 0 && ok) {
+        ok = 0;
+        e = errno;
+    }
+    o->f = NULL;
+    isk_status s = ISK_OK;
+    if (!ok) {
+        s = isk_error_set(err, ISK_ERR_IO, "%s: write failed: %s", o->path,
+                          e == ENOSPC ? "no space left on device" : strerror(e ? e : EIO));
+        if (o->temp)
+            unlink(o->temp);
+    } else if (o->temp && rename(o->temp, o->path) != 0) {
+        s = isk_error_set(err, ISK_ERR_IO, "%s: cannot rename the temporary file over it: %s", o->path,
+                          strerror(errno));
+        unlink(o->temp);
+    }
+    free(o->temp);
+    free(o->path);
+    memset(o, 0, sizeof *o);
+    return s;
+}
+
+void isk_outfile_abort(isk_outfile *o)
+{
+    if (!o)
+        return;
+    if (o->f)
+        fclose(o->f);
+    if (o->temp)
+        unlink(o->temp);
+    free(o->temp);
+    free(o->path);
+    memset(o, 0, sizeof *o);
+}
+
+static int is_dir(const char *path)
+{
+    struct stat st;
+    return stat(path, &st) == 0 && S_ISDIR(st.st_mode);
+}
+
+isk_status isk_make_dirs(const char *dir, isk_error *err)
+{
+    if (!dir)
+        return isk_error_set(err, ISK_ERR_NULL, "mkdir: NULL path");
+    size_t n = strlen(dir);
+    if (n == 0)
+        return ISK_OK;
+    char *buf = dup_str(dir);
+    if (!buf)
+        return isk_error_set(err, ISK_ERR_NOMEM, "%s: out of memory", dir);
+    isk_status s = ISK_OK;
+    /* Each prefix ending before a '/' (and the whole path), shortest first;
+     * an existing directory is fine whoever made it (another process may
+     * be making the same tree). */
+    for (size_t i = 1; i <= n && s == ISK_OK; i++) {
+        if ((buf[i] != '/' && buf[i] != 0) || buf[i - 1] == '/')
+            continue;
+        char c = buf[i];
+        buf[i] = 0;
+        if (mkdir(buf, 0777) != 0 && (errno != EEXIST || !is_dir(buf)))
+            s = isk_error_set(err, ISK_ERR_IO, "cannot create directory %s: %s", buf,
+                              strerror(errno == EEXIST ? ENOTDIR : errno));
+        buf[i] = c;
+    }
+    free(buf);
+    return s;
+}
+
+isk_status isk_make_parent_dirs(const char *path, isk_error *err)
+{
+    if (!path)
+        return isk_error_set(err, ISK_ERR_NULL, "mkdir: NULL path");
+    const char *slash = strrchr(path, '/');
+    if (!slash || slash == path)
+        return ISK_OK; /* "name.png" or "/name.png" */
+    size_t n = (size_t)(slash - path);
+    char *dir = malloc(n + 1);
+    if (!dir)
+        return isk_error_set(err, ISK_ERR_NOMEM, "%s: out of memory", path);
+    memcpy(dir, path, n);
+    dir[n] = 0;
+    isk_status s = isk_make_dirs(dir, err);
+    free(dir);
+    return s;
+}
