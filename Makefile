@@ -3,6 +3,7 @@
 #   make            libraries, the iskra tool, examples, tests, benchmarks
 #   make test       install missing Debian packages, build, run every test
 #   make test SANITIZE=1   the same under AddressSanitizer + UBSan (build-san/)
+#   make test SANITIZE=thread  ThreadSanitizer (build-tsan/; CI runs the threaded tests)
 #   make test SANITIZE=clang   the same built by clang, with float-cast-overflow
 #                  and integer-divide-by-zero too (build-clang/)
 #   make fuzz-smoke   every kept fuzz crasher and corpus file, then a short
@@ -47,6 +48,12 @@ BUILD   ?= build-clang
 override CC := clang
 SANFLAGS := -fsanitize=address,undefined,float-cast-overflow,integer-divide-by-zero -fno-sanitize=pointer-overflow \
             -fno-sanitize-recover=all -fno-omit-frame-pointer
+OPT     ?= -O1 -g
+else ifeq ($(SANITIZE),thread)
+# ThreadSanitizer for what runs on several threads (CI runs the threaded
+# check with it: make threads-check SANITIZE=thread).
+BUILD   ?= build-tsan
+SANFLAGS := -fsanitize=thread -fno-omit-frame-pointer
 OPT     ?= -O1 -g
 else
 BUILD   ?= build
@@ -101,7 +108,7 @@ EXAMPLES := $(EX_SRC:examples/%.c=$(BUILD)/examples/%)
 TESTS    := $(TEST_SRC:tests/%.c=$(BUILD)/tests/%)
 BENCHES  := $(BENCH_SRC:bench/%.c=$(BUILD)/bench/%)
 
-LIBS_CORE = $(PKG_PNG) $(PKG_GIF) $(PKG_INIH) -lm
+LIBS_CORE = $(PKG_PNG) $(PKG_GIF) $(PKG_INIH) -lm -pthread
 
 # Quiet by default; `make V=1` shows full command lines.
 ifeq ($(V),1)
@@ -120,10 +127,12 @@ LIBS_SDL  = $(PKG_SDL_LIBS)
 .DEFAULT_GOAL := all
 
 CXX_CHECK := $(BUILD)/tests/cxx_link
+# Threads never change a byte (a plain program: it runs under TSan too).
+THREADS_CHECK := $(BUILD)/tests/threads_check
 # The iskra tool with allocation failure injection (tests/alloc/alloc_fail.c).
 ALLOC_TOOL := $(BUILD)/tests/iskra_allocfail
 
-all: lib $(TOOL) examples tests benches $(CXX_CHECK) $(ALLOC_TOOL)
+all: lib $(TOOL) examples tests benches $(CXX_CHECK) $(ALLOC_TOOL) $(THREADS_CHECK)
 
 lib: $(LIBA) $(LIBSO) $(SDLA) $(SDLSO)
 examples: $(EXAMPLES)
@@ -174,6 +183,17 @@ $(TOOL): $(TOOL_OBJ) $(SDLA) $(LIBA)
 	@mkdir -p $(dir $@)
 	$(call say,LD,$@)
 	$(Q)$(CC) $(ALL_CFLAGS) -o $@ $(TOOL_OBJ) $(SDLA) $(LIBA) $(LDFLAGS) $(PKG_INIH) $(LIBS_SDL) $(LIBS_CORE)
+
+$(THREADS_CHECK): $(BUILD)/obj/tests/checks/threads_check.o $(LIBA)
+	@mkdir -p $(dir $@)
+	$(call say,LD,$@)
+	$(Q)$(CC) $(ALL_CFLAGS) -o $@ $^ $(LDFLAGS) $(LIBS_CORE)
+
+# CI: the threaded paths under ThreadSanitizer (make threads-check SANITIZE=thread).
+.PHONY: threads-check
+threads-check: deps
+	@$(MAKE) --no-print-directory $(THREADS_CHECK)
+	@TSAN_OPTIONS=halt_on_error=1 $(THREADS_CHECK) --quick
 
 $(ALLOC_TOOL): $(TOOL_OBJ) $(BUILD)/obj/tests/alloc/alloc_fail.o $(SDLA) $(LIBA)
 	@mkdir -p $(dir $@)
@@ -366,7 +386,7 @@ uninstall:
 	rm -f $(DESTDIR)$(BINDIR)/iskra
 
 clean:
-	rm -rf build build-san build-clang out
+	rm -rf build build-san build-clang build-tsan out
 
 help:
 	@sed -n '1,12p' Makefile

@@ -37,6 +37,15 @@ for t in "$BUILD"/tests/test_*; do
         echo "ok   $name: $passing tests"
     fi
 done
+# Threads never change a byte (a plain program; CI also runs it under TSan).
+if [ -x "$BUILD/tests/threads_check" ] && [ -z "${ISKRA_TEST_FILTER:-}" ]; then
+    if "$BUILD/tests/threads_check" >"$log" 2>&1; then
+        passed=$((passed + 1)); echo "ok   threads_check"
+    else
+        failed=$((failed + 1)); bad_bins="$bad_bins threads_check"
+        echo "---- threads_check ----"; cat "$log"
+    fi
+fi
 # Every public header as C++ (built by the Makefile with the C++ compiler).
 if [ -x "$BUILD/tests/cxx_link" ] && [ -z "${ISKRA_TEST_FILTER:-}" ]; then
     if "$BUILD/tests/cxx_link" >"$log" 2>&1; then

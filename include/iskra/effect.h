@@ -316,6 +316,11 @@ typedef struct isk_effect_def {
      * full; isk_effect_create refuses a definition that could need more.  0:
      * ISK_EFFECT_DEFAULT_MAX_MEMORY. */
     size_t max_memory;
+    /* Not a scene key either (it depends on the machine, never the result):
+     * the threads the effect steps on, 1..256; 0 (default): ISKRA_THREADS
+     * from the environment if it is set, else every online core.  The bytes
+     * are the same for every number. */
+    int threads;
 } isk_effect_def;
 
 /* Defaults as documented on each field; no forces, emitters or drawings. */
@@ -425,6 +430,12 @@ isk_status isk_effect_get(const isk_effect *e, const char *section, const char *
  * not a valid name, a bad field, no such force), ISK_ERR_FULL, ISK_ERR_NOMEM. */
 isk_status isk_effect_add_potential(isk_effect *e, const char *name, const isk_potential *pot, isk_error *err);
 isk_status isk_effect_remove_force(isk_effect *e, const char *name, isk_error *err);
+
+/* Threads: how many the effect steps on, and a new number (1..256; 0: the
+ * default as isk_effect_def.threads says).  Changing it never changes a
+ * byte of the result.  ISK_ERR_RANGE, ISK_ERR_NOMEM, ISK_ERR_UNSUPPORTED. */
+int isk_effect_threads(const isk_effect *e);
+isk_status isk_effect_set_threads(isk_effect *e, int threads);
 
 /* The live potentials (where they are now, whether they are still on), in
  * force order; *count receives how many.  Valid until the next change. */

@@ -11,6 +11,7 @@
 #include <string.h>
 
 #include "effect_internal.h"
+#include "sim/pool.h"
 
 static void free_group(fx_group *g)
 {
@@ -169,6 +170,10 @@ isk_status isk_effect_create(isk_effect **out, const isk_effect_def *def, isk_er
         return isk_error_set(err, ISK_ERR_NOMEM, "effect: out of memory");
     }
     fx_sort_draw_order(e);
+    if ((s = isk_effect_set_threads(e, d->threads)) != ISK_OK) {
+        isk_effect_destroy(e);
+        return isk_error_set(err, s, "effect: cannot start its threads: %s", isk_status_str(s));
+    }
     if ((s = build(e, err)) != ISK_OK) {
         isk_effect_destroy(e);
         return s;
@@ -188,8 +193,43 @@ void isk_effect_destroy(isk_effect *e)
     free(e->pots);
     free(e->pot_force);
     isk_sprite_cache_destroy(e->sprites);
+    isk_pool_destroy(e->pool);
     isk_effect_def_free(&e->def);
     free(e);
+}
+
+/* ISKRA_THREADS if the environment sets a valid number, else the cores. */
+static int default_threads(void)
+{
+    const char *v = getenv("ISKRA_THREADS");
+    char *end = NULL;
+    long n = v ? strtol(v, &end, 10) : 0;
+    if (v && *v && end && !*end && n >= 1 && n <= ISK_POOL_MAX_THREADS)
+        return (int)n;
+    return isk_pool_online_cores();
+}
+
+int isk_effect_threads(const isk_effect *e)
+{
+    return e && e->pool ? isk_pool_threads(e->pool) : 1;
+}
+
+isk_status isk_effect_set_threads(isk_effect *e, int threads)
+{
+    if (!e)
+        return ISK_ERR_NULL;
+    if (threads < 0 || threads > ISK_POOL_MAX_THREADS)
+        return ISK_ERR_RANGE;
+    int n = threads ? threads : default_threads();
+    if (e->pool && isk_pool_threads(e->pool) == n)
+        return ISK_OK;
+    isk_pool *p;
+    isk_status s = isk_pool_create(&p, n);
+    if (s != ISK_OK)
+        return s;
+    isk_pool_destroy(e->pool);
+    e->pool = p;
+    return ISK_OK;
 }
 
 isk_status isk_effect_reset(isk_effect *e)
@@ -218,7 +258,10 @@ static isk_status step_group(isk_effect *e, fx_group *g)
     const double h = d->dt / (double)N / d->speed_divisor;
     isk_status s = run_steps(e, g, g->frame_start, g->nframe_start, e->time, h * (double)N);
     for (int j = 0; s == ISK_OK && j < N; j++) {
-        isk_pipeline_run(&g->pipeline, &g->store, 0, g->store.count, h, &e->scratch);
+        if (g->parallel)
+            isk_pipeline_run_pool(&g->pipeline, &g->store, 0, g->store.count, h, e->pool);
+        else
+            isk_pipeline_run(&g->pipeline, &g->store, 0, g->store.count, h, &e->scratch);
         s = run_steps(e, g, g->substep_end, g->nsubstep_end, e->time + h * j, h);
     }
     if (g->mc_active)

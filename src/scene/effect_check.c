@@ -302,6 +302,8 @@ isk_status fx_check_def(const isk_effect_def *d, fx_report *r)
     if ((d->nforces && !d->forces) || (d->ndeflectors && !d->deflectors) || (d->nemitters && !d->emitters) ||
         (d->ndrawings && !d->drawings))
         return structure_fails(d, r, ISK_ERR_NULL, "a count is set but its array is NULL");
+    if (d->threads < 0 || d->threads > 256)
+        return structure_fails(d, r, ISK_ERR_RANGE, "threads must be 0 (the default) .. 256");
     isk_status ms = memory_fits(d, r);
     if (ms != ISK_OK)
         return ms;

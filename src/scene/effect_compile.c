@@ -78,6 +78,15 @@ isk_status fx_compile(isk_effect *e, fx_group *g)
         can_kill |= g->defl[k].reaction == ISK_DEFLECT_KILL;
     }
     const int walls = em->bounded && d->bounds.sides != 0;
+    /* Blocks are independent unless a potential can switch itself off (the
+     * first particle that comes close decides for all later ones) or a
+     * deflector draws from the group's random stream (the draws go in
+     * particle order): then one thread runs the blocks in order. */
+    g->parallel = 1;
+    for (size_t k = 0; k < f->npick; k++)
+        g->parallel &= !(e->pots[f->pick[k]].max_dist > 0.0);
+    for (int k = 0; k < g->ndefl; k++)
+        g->parallel &= !(g->defl[k].probability > 0.0 && g->defl[k].probability < 1.0);
 
     if (walls && em->draw_before_bounce)
         g->frame_start[g->nframe_start++] = &fx_step_late_walls;
@@ -181,6 +190,9 @@ void fx_describe_group(const isk_effect *e, const fx_group *g, FILE *out)
     describe_steps(e, g, g->frame_start, g->nframe_start, out);
     isk_pipeline_describe(&g->pipeline, out);
     describe_steps(e, g, g->substep_end, g->nsubstep_end, out);
+    if (!g->parallel)
+        fprintf(out, "  %-9s one thread, in particle order (%s)\n", "order",
+                g->forces.npick ? "a potential may switch itself off" : "a deflector draws at random");
     if (em->draw != ISK_DRAW_NONE)
         fprintf(out, "  draw      %s, %s%s%s%s\n", isk_draw_mode_names[em->draw], isk_blend_name(em->blend),
                 g->has_color_ramp ? ", colour over life" : "", g->has_alpha_ramp ? ", alpha over life" : "",

@@ -69,6 +69,7 @@ struct fx_group {
     isk_integrator integrator;
     int substeps;
     double const_ax, const_ay;     /* the constant part of the acceleration (thesis jitter) */
+    int parallel;                  /* its pipeline's blocks are independent: threads may share them */
     fx_draw_fn draw;
 
     /* explosions (effect_group.c) */
@@ -97,7 +98,8 @@ struct isk_effect {
     fx_group *groups;              /* one per emitter, definition order */
     int ngroups;
     int *draw_order;               /* group indices sorted by (order, index) */
-    isk_scratch scratch;
+    isk_scratch scratch;           /* for the caller's own block runs (births) */
+    struct isk_pool *pool;         /* the threads the groups' pipelines run on */
     isk_sinlut sin_table;
     double time;
     long frame;

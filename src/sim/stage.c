@@ -1,6 +1,8 @@
 /* The block runner (see stage.h). */
 #include "sim/stage.h"
 
+#include "sim/pool.h"
+
 #include <string.h>
 
 void isk_pipeline_init(isk_pipeline *pl)
@@ -18,23 +20,45 @@ isk_stage *isk_pipeline_add(isk_pipeline *pl, const isk_stage_kind *kind)
     return s;
 }
 
+/* Every stage, in order, on the block [o, o + n). */
+static void run_block(const isk_pipeline *pl, isk_particles *p, size_t o, size_t n, double h, isk_scratch *s)
+{
+    isk_block b = {p, o, n, p->x + o, p->y + o, p->vx + o, p->vy + o, p->m + o, s};
+    for (int k = 0; k < pl->n; k++)
+        pl->stage[k].kind->run(&pl->stage[k], &b, h);
+}
+
 void isk_pipeline_run(const isk_pipeline *pl, isk_particles *p, size_t begin, size_t end, double h,
                       isk_scratch *s)
 {
-    isk_block b;
-    b.p = p;
-    b.s = s;
-    for (size_t o = begin; o < end; o += ISK_SIM_BLOCK) {
-        b.first = o;
-        b.n = end - o < ISK_SIM_BLOCK ? end - o : ISK_SIM_BLOCK;
-        b.x = p->x + o;
-        b.y = p->y + o;
-        b.vx = p->vx + o;
-        b.vy = p->vy + o;
-        b.m = p->m + o;
-        for (int k = 0; k < pl->n; k++)
-            pl->stage[k].kind->run(&pl->stage[k], &b, h);
-    }
+    for (size_t o = begin; o < end; o += ISK_SIM_BLOCK)
+        run_block(pl, p, o, end - o < ISK_SIM_BLOCK ? end - o : ISK_SIM_BLOCK, h, s);
+}
+
+typedef struct pool_run {
+    const isk_pipeline *pl;
+    isk_particles *p;
+    size_t begin, end;
+    double h;
+    isk_pool *pool;
+} pool_run;
+
+static void run_item(void *ctx, int worker, size_t item)
+{
+    const pool_run *r = ctx;
+    size_t o = r->begin + item * ISK_SIM_BLOCK;
+    run_block(r->pl, r->p, o, r->end - o < ISK_SIM_BLOCK ? r->end - o : ISK_SIM_BLOCK, r->h,
+              isk_pool_scratch(r->pool, worker));
+}
+
+void isk_pipeline_run_pool(const isk_pipeline *pl, isk_particles *p, size_t begin, size_t end, double h,
+                           isk_pool *pool)
+{
+    if (end <= begin)
+        return;
+    pool_run r = {pl, p, begin, end, h, pool};
+    size_t blocks = (end - begin + ISK_SIM_BLOCK - 1) / ISK_SIM_BLOCK;
+    isk_pool_for(pool, blocks, ISK_PIPELINE_MIN_PARALLEL_BLOCKS, run_item, &r);
 }
 
 void isk_pipeline_describe(const isk_pipeline *pl, FILE *out)

@@ -100,6 +100,16 @@ isk_stage *isk_pipeline_add(isk_pipeline *pl, const isk_stage_kind *kind);
 /* Runs the list over particles [begin, end) of p with step h. */
 void isk_pipeline_run(const isk_pipeline *pl, isk_particles *p, size_t begin, size_t end, double h,
                       isk_scratch *s);
+/* The same with the blocks shared out over a pool's threads.  Only for
+ * lists whose stages touch nothing outside their block (the compiler of the
+ * list decides: a potential that can switch itself off, or a deflector
+ * that draws from the owner's random stream, makes the order of particles
+ * matter); then the bytes are the same for every number of threads.  Below
+ * ISK_PIPELINE_MIN_PARALLEL_BLOCKS blocks it runs on the caller. */
+#define ISK_PIPELINE_MIN_PARALLEL_BLOCKS 8
+struct isk_pool;
+void isk_pipeline_run_pool(const isk_pipeline *pl, isk_particles *p, size_t begin, size_t end, double h,
+                           struct isk_pool *pool);
 /* One line per stage: "  NAME      parameters". */
 void isk_pipeline_describe(const isk_pipeline *pl, FILE *out);
 

@@ -105,6 +105,12 @@ int scene_args_take(scene_args *a, int argc, char **argv, int *i)
         a->substeps = (int)n;
         return 1;
     }
+    if ((r = arg_value(a->cmd, argc, argv, i, "--threads", &v)) != 0) {
+        if (r < 0 || !arg_long(a->cmd, "--threads", v, 1, 256, &n))
+            return -1;
+        a->threads = (int)n;
+        return 1;
+    }
     if ((r = arg_value(a->cmd, argc, argv, i, "--max-memory", &v)) != 0) {
         /* whole bytes, or with a binary suffix: 512M, 8G */
         char *end;
@@ -143,6 +149,8 @@ void scene_args_help(FILE *f)
                "  --size WxH       canvas size in pixels, e.g. 800x600 (default: the scene's)\n"
                "  --dt SECONDS     time step per frame, > 0 (default: the scene's)\n"
                "  --substeps N     substeps per frame, 1..1000 (default: the scene's)\n"
+               "  --threads N      threads to step on, 1..256 (default: ISKRA_THREADS, else every core;\n"
+               "                   the result is the same for every number)\n"
                "  --max-memory B   the most memory the scene may take with every pool full, in bytes\n"
                "                   or with K, M, G (default 4G); a scene that could need more is refused\n");
 }
@@ -171,6 +179,7 @@ int scene_args_open(const scene_args *a, isk_effect_def *def, isk_effect **fx)
     if (a->substeps)
         def->substeps = a->substeps;
     def->max_memory = a->max_memory;
+    def->threads = a->threads;
     s = isk_effect_create(fx, def, &err);
     if (s != ISK_OK) {
         /* "emitter 'x' (line 12): why" -> "FILE:12: emitter 'x': why", like the parser's */

@@ -18,6 +18,7 @@ typedef struct scene_args {
     double dt;            /* 0: the scene's */
     int substeps;         /* 0: the scene's */
     size_t max_memory;    /* 0: the library's default budget */
+    int threads;          /* 0: ISKRA_THREADS, else every core */
 } scene_args;
 
 /* The value of option argv[*i] ("--opt VALUE" or "--opt=VALUE") if its name

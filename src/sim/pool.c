@@ -1,0 +1,166 @@
+/* Worker threads for independent items (see pool.h): POSIX threads, one
+ * mutex and two condition variables; items are handed out in chunks by an
+ * atomic counter. */
+#include "sim/pool.h"
+
+#include <pthread.h>
+#include <stdatomic.h>
+#include <stdlib.h>
+#include <unistd.h>
+
+/* Items a thread takes at a time: small enough to balance the load, large
+ * enough that the counter is rarely contended. */
+enum { CHUNK = 4 };
+
+struct isk_pool {
+    int threads;
+    isk_scratch *scratch;      /* one per worker, 64-byte aligned */
+    pthread_t *tid;            /* threads - 1 of them */
+    pthread_mutex_t lock;
+    pthread_cond_t start, done;
+    /* the current job (set under the lock before generation moves on) */
+    isk_pool_fn fn;
+    void *ctx;
+    size_t n;
+    atomic_size_t next;        /* the first item nobody has taken */
+    int generation;            /* a new job bumps it */
+    int running;               /* workers still inside the current job */
+    int quit;
+};
+
+typedef struct worker_arg {
+    isk_pool *pool;
+    int worker;
+} worker_arg;
+
+static void take_items(isk_pool *p, int worker)
+{
+    for (;;) {
+        size_t i = atomic_fetch_add_explicit(&p->next, CHUNK, memory_order_relaxed);
+        if (i >= p->n)
+            return;
+        size_t end = i + CHUNK < p->n ? i + CHUNK : p->n;
+        for (; i < end; i++)
+            p->fn(p->ctx, worker, i);
+    }
+}
+
+static void *worker_main(void *arg)
+{
+    isk_pool *p = ((worker_arg *)arg)->pool;
+    const int worker = ((worker_arg *)arg)->worker;
+    free(arg);
+    int seen = 0;
+    pthread_mutex_lock(&p->lock);
+    for (;;) {
+        while (p->generation == seen && !p->quit)
+            pthread_cond_wait(&p->start, &p->lock);
+        if (p->quit)
+            break;
+        seen = p->generation;
+        pthread_mutex_unlock(&p->lock);
+        take_items(p, worker);
+        pthread_mutex_lock(&p->lock);
+        if (--p->running == 0)
+            pthread_cond_signal(&p->done);
+    }
+    pthread_mutex_unlock(&p->lock);
+    return NULL;
+}
+
+int isk_pool_online_cores(void)
+{
+    long n = sysconf(_SC_NPROCESSORS_ONLN);
+    return n < 1 ? 1 : n > ISK_POOL_MAX_THREADS ? ISK_POOL_MAX_THREADS : (int)n;
+}
+
+isk_status isk_pool_create(isk_pool **out, int threads)
+{
+    if (!out)
+        return ISK_ERR_NULL;
+    *out = NULL;
+    if (threads < 1 || threads > ISK_POOL_MAX_THREADS)
+        return ISK_ERR_RANGE;
+    isk_pool *p = calloc(1, sizeof *p);
+    if (!p)
+        return ISK_ERR_NOMEM;
+    p->threads = threads;
+    p->scratch = aligned_alloc(64, sizeof *p->scratch * (size_t)threads);
+    p->tid = calloc((size_t)threads, sizeof *p->tid);
+    if (!p->scratch || !p->tid) {
+        free(p->scratch);
+        free(p->tid);
+        free(p);
+        return ISK_ERR_NOMEM;
+    }
+    pthread_mutex_init(&p->lock, NULL);
+    pthread_cond_init(&p->start, NULL);
+    pthread_cond_init(&p->done, NULL);
+    atomic_init(&p->next, 0);
+    for (int w = 1; w < threads; w++) {
+        worker_arg *a = malloc(sizeof *a);
+        isk_status s = a ? ISK_OK : ISK_ERR_NOMEM;
+        if (a) {
+            a->pool = p;
+            a->worker = w;
+            if (pthread_create(&p->tid[w - 1], NULL, worker_main, a) != 0) {
+                free(a);
+                s = ISK_ERR_UNSUPPORTED;
+            }
+        }
+        if (s != ISK_OK) {
+            p->threads = w; /* the ones started are joined */
+            isk_pool_destroy(p);
+            return s;
+        }
+    }
+    *out = p;
+    return ISK_OK;
+}
+
+void isk_pool_destroy(isk_pool *p)
+{
+    if (!p)
+        return;
+    pthread_mutex_lock(&p->lock);
+    p->quit = 1;
+    pthread_cond_broadcast(&p->start);
+    pthread_mutex_unlock(&p->lock);
+    for (int w = 1; w < p->threads; w++)
+        pthread_join(p->tid[w - 1], NULL);
+    pthread_mutex_destroy(&p->lock);
+    pthread_cond_destroy(&p->start);
+    pthread_cond_destroy(&p->done);
+    free(p->scratch);
+    free(p->tid);
+    free(p);
+}
+
+int isk_pool_threads(const isk_pool *p) { return p ? p->threads : 1; }
+
+isk_scratch *isk_pool_scratch(isk_pool *p, int worker) { return &p->scratch[worker]; }
+
+void isk_pool_for(isk_pool *p, size_t n, size_t min_items, isk_pool_fn fn, void *ctx)
+{
+    if (n == 0)
+        return;
+    if (p->threads == 1 || n < min_items || n < 2) {
+        for (size_t i = 0; i < n; i++)
+            fn(ctx, 0, i);
+        return;
+    }
+    pthread_mutex_lock(&p->lock);
+    p->fn = fn;
+    p->ctx = ctx;
+    p->n = n;
+    atomic_store_explicit(&p->next, 0, memory_order_relaxed);
+    p->running = p->threads - 1;
+    p->generation++;
+    pthread_cond_broadcast(&p->start);
+    pthread_mutex_unlock(&p->lock);
+    take_items(p, 0);
+    pthread_mutex_lock(&p->lock);
+    while (p->running > 0)
+        pthread_cond_wait(&p->done, &p->lock);
+    pthread_mutex_unlock(&p->lock);
+}

@@ -1,0 +1,128 @@
+/* Threads never change a byte: every shipped scene, and scenes large enough
+ * that the blocks really are shared out, give the same canvas and the same
+ * particles, bit for bit, on 1, 2, 3 and 7 threads; lists whose particles'
+ * order matters (a potential that can switch itself off, a deflector that
+ * draws at random) run in order and still match.
+ *
+ * A plain program, not a Criterion test, so that it also runs under
+ * ThreadSanitizer (Criterion's process arena does not start under TSan):
+ * tests/run_all.sh runs it in every build, and CI builds it with
+ * `make threads-check SANITIZE=thread`.  Exit status 0 when everything
+ * matches. */
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "iskra/effect.h"
+#include "iskra/scene.h"
+
+static const int THREADS[] = {1, 2, 3, 7};
+#define NT (int)(sizeof THREADS / sizeof THREADS[0])
+static int failures;
+
+#define CHECK(cond, ...)                                                                                        \
+    do {                                                                                                       \
+        if (!(cond)) {                                                                                         \
+            fprintf(stderr, "threads_check: " __VA_ARGS__);                                                    \
+            fputc('\n', stderr);                                                                               \
+            failures++;                                                                                        \
+        }                                                                                                      \
+    } while (0)
+
+/* `frames` frames on `threads` threads: the canvas, and a hash of every
+ * particle's state (0 when the effect could not be made). */
+static unsigned long long run(const isk_effect_def *d, int threads, long frames, isk_canvas *c)
+{
+    isk_effect_def copy = *d;
+    copy.threads = threads;
+    isk_effect *fx = NULL;
+    isk_error err = {0};
+    memset(c, 0, sizeof *c);
+    if (isk_effect_create(&fx, &copy, &err) != ISK_OK || isk_canvas_init(c, d->width, d->height) != ISK_OK ||
+        isk_effect_run(fx, c, frames) != ISK_OK) {
+        CHECK(0, "%d threads: %s", threads, err.message);
+        isk_effect_destroy(fx);
+        return 0;
+    }
+    CHECK(isk_effect_threads(fx) == threads, "asked for %d threads, got %d", threads, isk_effect_threads(fx));
+    unsigned long long h = 1469598103934665603ull;
+    for (int g = 0; g < isk_effect_emitter_count(fx); g++) {
+        const isk_particles *p = isk_effect_particles(fx, g);
+        const double *cols[] = {p->x, p->y, p->vx, p->vy, p->age};
+        for (int k = 0; k < 5; k++)
+            for (size_t i = 0; i < p->count; i++) {
+                unsigned long long b;
+                memcpy(&b, &cols[k][i], sizeof b);
+                h = (h ^ b) * 1099511628211ull;
+            }
+    }
+    isk_effect_destroy(fx);
+    return h;
+}
+
+static void same_on_every_count(const isk_effect_def *d, long frames, const char *name)
+{
+    isk_canvas ref;
+    unsigned long long href = run(d, 1, frames, &ref);
+    for (int t = 1; t < NT; t++) {
+        isk_canvas c;
+        unsigned long long h = run(d, THREADS[t], frames, &c);
+        CHECK(isk_canvas_equal(&ref, &c), "%s: %d threads draw other bytes", name, THREADS[t]);
+        CHECK(h == href, "%s: %d threads move the particles differently", name, THREADS[t]);
+        isk_canvas_free(&c);
+    }
+    isk_canvas_free(&ref);
+}
+
+static void scene_text(const char *text, const char *name, long frames)
+{
+    isk_effect_def d;
+    isk_error err = {0};
+    if (isk_scene_load_string(&d, text, name, &err) != ISK_OK) {
+        CHECK(0, "%s", err.message);
+        return;
+    }
+    same_on_every_count(&d, frames, name);
+    isk_effect_def_free(&d);
+}
+
+int main(int argc, char **argv)
+{
+    /* --quick: the large scenes only (ThreadSanitizer is slow) */
+    int quick = argc > 1 && !strcmp(argv[1], "--quick");
+    for (int i = 0; !quick && i < isk_scene_builtin_count(); i++) {
+        isk_effect_def d;
+        isk_error err = {0};
+        const char *name = isk_scene_builtin_name(i);
+        if (isk_scene_load(&d, name, &err) != ISK_OK) {
+            CHECK(0, "%s", err.message);
+            continue;
+        }
+        same_on_every_count(&d, d.show.frames > 120 ? 120 : d.show.frames, name);
+        isk_effect_def_free(&d);
+    }
+    /* Big enough that every substep shares its blocks out: gravity, drag, a
+     * potential and walls on 60,000 particles, plus a stream with a deflector
+     * and colour over life. */
+    scene_text("[scene]\nwidth = 200\nheight = 150\nsubsteps = 2\nintegrator = rk4\n"
+               "[force gravity]\ng = 9.81\n[force drag]\nb = 0.3\n"
+               "[force well]\nkind = potential\nk = 30\nposition = 2, 3\nmin_distance = 0.5\n"
+               "[deflector floor]\nsegment = -9, -6, 9, -7\nrestitution = 0.7\n"
+               "[bounds]\nrestitution = 0.8\n"
+               "[emitter cloud]\nsource = explosion\nexplosion = gauss\ncount = 60000\nlimit = 60000\n"
+               "forces = gravity, drag, well\n"
+               "[emitter fountain]\nsource = stream\nrate = 20000\nlife = 1.5\nlaunch = cone\nangle = 90\n"
+               "spread = 40\nspeed_min = 5\nspeed_max = 9\nforces = gravity\ndeflectors = floor\n"
+               "draw = sprite\nsize = 0.3\nblend = add\ncolor_over_life = 0:white, 1:#ff400000\n",
+               "big", quick ? 10 : 40);
+    /* An order-dependent list: a potential that switches itself off. */
+    scene_text("[force trap]\nkind = potential\nk = 80\nposition = 0, 0\nmax_distance = 0.2\n"
+               "[emitter layer]\nsource = layer\ncount = 20000\nlimit = 20000\nrect = -5, 5, -5, 5\n"
+               "forces = trap\n",
+               "trap", quick ? 10 : 60);
+    if (failures)
+        fprintf(stderr, "threads_check: %d failures\n", failures);
+    else
+        printf("threads_check: the same bytes on 1, 2, 3 and 7 threads\n");
+    return failures != 0;
+}
