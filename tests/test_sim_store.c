@@ -105,9 +105,10 @@ Test(sim_store, every_column_moves_with_its_particle)
     cr_assert_eq(isk_particles_cull(&p), 43); /* the multiples of 7 in 0..298 */
     for (size_t k = 0; k < p.count; k++) {
         double i = p.x[k];
+        const int n = (int)i; /* 0..299: an int first, so the byte conversions are defined */
         cr_assert(fmod(i, 7) != 0, "%g survived", i);
         cr_assert(p.y[k] == -i && p.vx[k] == 2 * i && p.vy[k] == 3 * i && p.m[k] == 1 + i);
-        cr_assert(p.size[k] == 0.5 * i && p.color[k].r == (uint8_t)i && p.color[k].g == (uint8_t)((int)i >> 8));
+        cr_assert(p.size[k] == 0.5 * i && p.color[k].r == (uint8_t)n && p.color[k].g == (uint8_t)(n >> 8));
         cr_assert(p.osc_amp[k] == 10 * i && p.osc_phase[k] == 11 * i && p.osc_omega[k] == 12 * i &&
                   p.osc_offset[k] == 13 * i);
         cr_assert(p.age[k] == 1.0 && isinf(p.life[k]));
