@@ -65,6 +65,8 @@ static void fill_block(isk_canvas *c, long long x0, long long y0, long long w, l
     if (y0 < 0) y0 = 0;
     if (x1 > c->width) x1 = c->width;
     if (y1 > c->height) y1 = c->height;
+    if (x0 >= x1 || y0 >= y1)
+        return; /* wholly off the canvas: not even an address is formed */
     for (long long y = y0; y < y1; y++) {
         uint8_t *p = isk_canvas_at(c, (int)x0, (int)y);
         for (long long x = x0; x < x1; x++, p += 4)
