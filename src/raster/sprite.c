@@ -6,6 +6,8 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "raster/span_simd.h"
+
 double isk_sprite_alpha(isk_sprite_kind kind, double d, int size)
 {
     if (!(size > 0) || !(d >= 0.0))
@@ -80,8 +82,9 @@ isk_status isk_sprite_init(isk_sprite *s, isk_sprite_kind kind, int size, isk_co
         return ISK_ERR_SIZE;
     size_t area = (size_t)size * (size_t)size;
     size_t span_bytes = 2u * (size_t)size * sizeof(uint16_t);
-    /* one block: four span tables first (alignment), then four masks */
-    uint8_t *block = malloc(4u * (span_bytes + area));
+    /* one block: four span tables first (alignment), then four masks, then
+     * four increment images */
+    uint8_t *block = malloc(4u * (span_bytes + area + 4u * area));
     if (!block)
         return ISK_ERR_NOMEM;
     memset(s, 0, sizeof *s);
@@ -91,6 +94,7 @@ isk_status isk_sprite_init(isk_sprite *s, isk_sprite_kind kind, int size, isk_co
     for (int p = 0; p < 4; p++) {
         s->span[p] = (uint16_t *)(void *)(block + (size_t)p * span_bytes);
         s->mask[p] = block + 4u * span_bytes + (size_t)p * area;
+        s->inc[p] = block + 4u * (span_bytes + area) + (size_t)p * 4u * area;
         bake_phase(s, p);
     }
     for (uint32_t m = 0; m < 256u; m++) {
@@ -100,6 +104,9 @@ isk_status isk_sprite_init(isk_sprite *s, isk_sprite_kind kind, int size, isk_co
         s->lut[m][2] = (uint8_t)isk_div255((uint32_t)color.b * a);
         s->lut[m][3] = (uint8_t)a;
     }
+    for (int p = 0; p < 4; p++)
+        for (size_t k = 0; k < area; k++)
+            memcpy(s->inc[p] + 4u * k, s->lut[s->mask[p][k]], 4);
     return ISK_OK;
 }
 
@@ -120,12 +127,6 @@ static double twice_snapped(double v)
     if (t - h >= 0.5)
         h += 1.0;
     return h;
-}
-
-static inline uint8_t sat_add(uint32_t a, uint32_t b)
-{
-    uint32_t s = a + b;
-    return (uint8_t)(s > 255u ? 255u : s);
 }
 
 /* Where the sprite lands: mask phase, origin and the clipped row/column
@@ -156,88 +157,75 @@ static int place(const isk_canvas *c, const isk_sprite *s, double cx, double cy,
     return 1;
 }
 
+/* Rows of a sprite are a canvas stride apart, too far for the hardware
+ * prefetcher: start loading the row a few ahead while blending this one. */
+#define ROW_AHEAD 3
+
+static inline void prefetch_row(const isk_canvas *c, const placement *pl, const uint16_t *span, int j)
+{
+#if defined(__GNUC__)
+    if (j < pl->je) {
+        int b = span[2 * j] > pl->ib ? span[2 * j] : pl->ib;
+        int e = span[2 * j + 1] < pl->ie ? span[2 * j + 1] : pl->ie;
+        if (b < e) {
+            __builtin_prefetch(isk_canvas_at(c, pl->x0 + b, pl->y0 + j), 1);
+            __builtin_prefetch(isk_canvas_at(c, pl->x0 + e - 1, pl->y0 + j), 1);
+        }
+    }
+#else
+    (void)c; (void)pl; (void)span; (void)j;
+#endif
+}
+
+/* Each row is one span of the mask, blended by the row kernels of
+ * raster/span_simd.h with the mode fixed for the whole sprite.  The baked
+ * colour's additive increments are premade (inc), so an untinted additive
+ * sprite is a saturating byte add of two arrays. */
 void isk_draw_sprite_tinted(isk_canvas *c, const isk_sprite *s, double cx, double cy, isk_color color,
                             isk_blend mode)
 {
     placement pl;
     if (!place(c, s, cx, cy, mode, &pl))
         return;
-    const int S = s->size;
+    const size_t S = (size_t)s->size;
     const uint8_t *mask = s->mask[pl.p];
     const uint16_t *span = s->span[pl.p];
-    const uint32_t ca = color.a;
+    for (int j = pl.jb; j < pl.jb + ROW_AHEAD; j++)
+        prefetch_row(c, &pl, span, j);
     for (int j = pl.jb; j < pl.je; j++) {
+        prefetch_row(c, &pl, span, j + ROW_AHEAD);
         int b = span[2 * j] > pl.ib ? span[2 * j] : pl.ib;
         int e = span[2 * j + 1] < pl.ie ? span[2 * j + 1] : pl.ie;
-        const uint8_t *mrow = mask + (size_t)j * (size_t)S;
+        if (b >= e)
+            continue;
         uint8_t *d = isk_canvas_at(c, pl.x0 + b, pl.y0 + j);
-        if (mode == ISK_BLEND_ADD) {
-            /* isk_blend_pixel_cov's arithmetic, inlined: a' = div255(a*m),
-             * then dst += div255(c*a') per channel, saturating. */
-            for (int i = b; i < e; i++, d += 4) {
-                uint32_t m = mrow[i];
-                if (!m)
-                    continue;
-                uint32_t a = isk_div255(ca * m);
-                d[0] = sat_add(d[0], isk_div255((uint32_t)color.r * a));
-                d[1] = sat_add(d[1], isk_div255((uint32_t)color.g * a));
-                d[2] = sat_add(d[2], isk_div255((uint32_t)color.b * a));
-                d[3] = sat_add(d[3], a);
-            }
-        } else {
-            for (int i = b; i < e; i++, d += 4)
-                if (mrow[i])
-                    isk_blend_pixel_cov(d, color, mrow[i], mode);
-        }
+        isk__span_cov(d, mask + (size_t)j * S + (size_t)b, e - b, color, mode);
     }
 }
 
 void isk_draw_sprite(isk_canvas *c, const isk_sprite *s, double cx, double cy, isk_blend mode)
 {
+    if (mode != ISK_BLEND_ADD) { /* over and replace: the baked colour through the mask */
+        if (s)
+            isk_draw_sprite_tinted(c, s, cx, cy, s->color, mode);
+        return;
+    }
     placement pl;
     if (!place(c, s, cx, cy, mode, &pl))
         return;
-    int S = s->size;
-    int x0 = pl.x0, y0 = pl.y0;
-    const uint8_t *mask = s->mask[pl.p];
+    const size_t S = (size_t)s->size;
+    const uint8_t *inc = s->inc[pl.p];
     const uint16_t *span = s->span[pl.p];
-    int jb = pl.jb, je = pl.je, ib = pl.ib, ie = pl.ie;
-    for (int j = jb; j < je; j++) {
-        int b = span[2 * j] > ib ? span[2 * j] : ib;
-        int e = span[2 * j + 1] < ie ? span[2 * j + 1] : ie;
-        const uint8_t *mrow = mask + (size_t)j * (size_t)S;
-        uint8_t *d = isk_canvas_at(c, x0 + b, y0 + j);
-        switch (mode) {
-        case ISK_BLEND_ADD:
-            for (int i = b; i < e; i++, d += 4) {
-                const uint8_t *v = s->lut[mrow[i]];
-                if (!mrow[i])
-                    continue;
-                d[0] = sat_add(d[0], v[0]);
-                d[1] = sat_add(d[1], v[1]);
-                d[2] = sat_add(d[2], v[2]);
-                d[3] = sat_add(d[3], v[3]);
-            }
-            break;
-        case ISK_BLEND_OVER:
-            for (int i = b; i < e; i++, d += 4) {
-                if (!mrow[i])
-                    continue;
-                isk_color src = {s->color.r, s->color.g, s->color.b, s->lut[mrow[i]][3]};
-                isk_blend_pixel(d, src, ISK_BLEND_OVER);
-            }
-            break;
-        case ISK_BLEND_REPLACE:
-            for (int i = b; i < e; i++, d += 4) {
-                if (!mrow[i])
-                    continue;
-                d[0] = s->color.r;
-                d[1] = s->color.g;
-                d[2] = s->color.b;
-                d[3] = s->lut[mrow[i]][3];
-            }
-            break;
-        }
+    for (int j = pl.jb; j < pl.jb + ROW_AHEAD; j++)
+        prefetch_row(c, &pl, span, j);
+    for (int j = pl.jb; j < pl.je; j++) {
+        prefetch_row(c, &pl, span, j + ROW_AHEAD);
+        int b = span[2 * j] > pl.ib ? span[2 * j] : pl.ib;
+        int e = span[2 * j + 1] < pl.ie ? span[2 * j + 1] : pl.ie;
+        if (b >= e)
+            continue;
+        uint8_t *d = isk_canvas_at(c, pl.x0 + b, pl.y0 + j);
+        isk__span_add_bytes(d, inc + 4u * ((size_t)j * S + (size_t)b), 4 * (e - b));
     }
 }
 
