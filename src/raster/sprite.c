@@ -69,6 +69,20 @@ static void bake_phase(isk_sprite *s, int p)
             first = last = 0;
         span[2 * j] = (uint16_t)first;
         span[2 * j + 1] = (uint16_t)last;
+        /* The padded span: grown over zero-mask pixels of the row to a
+         * multiple of 4 pixels, the row kernels' step (coverage 0 changes
+         * nothing, so the bytes are the same). */
+        int len = last - first, g = (len + 3) & ~3;
+        if (first + g <= S)
+            last = first + g;
+        else if (last - g >= 0)
+            first = last - g;
+        else
+            first = 0, last = S;
+        if (len == 0)
+            first = last = 0;
+        s->vspan[p][2 * j] = (uint16_t)first;
+        s->vspan[p][2 * j + 1] = (uint16_t)last;
     }
 }
 
@@ -82,9 +96,9 @@ isk_status isk_sprite_init(isk_sprite *s, isk_sprite_kind kind, int size, isk_co
         return ISK_ERR_SIZE;
     size_t area = (size_t)size * (size_t)size;
     size_t span_bytes = 2u * (size_t)size * sizeof(uint16_t);
-    /* one block: four span tables first (alignment), then four masks, then
-     * four increment images */
-    uint8_t *block = malloc(4u * (span_bytes + area + 4u * area));
+    /* one block: four span and four padded-span tables first (alignment),
+     * then four masks, then four increment images */
+    uint8_t *block = malloc(4u * (2u * span_bytes + area + 4u * area));
     if (!block)
         return ISK_ERR_NOMEM;
     memset(s, 0, sizeof *s);
@@ -93,8 +107,9 @@ isk_status isk_sprite_init(isk_sprite *s, isk_sprite_kind kind, int size, isk_co
     s->color = color;
     for (int p = 0; p < 4; p++) {
         s->span[p] = (uint16_t *)(void *)(block + (size_t)p * span_bytes);
-        s->mask[p] = block + 4u * span_bytes + (size_t)p * area;
-        s->inc[p] = block + 4u * (span_bytes + area) + (size_t)p * 4u * area;
+        s->vspan[p] = (uint16_t *)(void *)(block + (size_t)(4 + p) * span_bytes);
+        s->mask[p] = block + 8u * span_bytes + (size_t)p * area;
+        s->inc[p] = block + 4u * (2u * span_bytes + area) + (size_t)p * 4u * area;
         bake_phase(s, p);
     }
     for (uint32_t m = 0; m < 256u; m++) {
@@ -119,14 +134,13 @@ void isk_sprite_free(isk_sprite *s)
 }
 
 /* 2 * (nearest multiple of 1/2 to v), halves up, computed without the
- * rounding of 2v + 0.5; NaN/Inf pass through. */
-static double twice_snapped(double v)
+ * rounding of 2v + 0.5, for |v| < 2^20 (so floor is an int conversion). */
+static inline int twice_snapped(double v)
 {
     double t = 2.0 * v;
-    double h = floor(t);
-    if (t - h >= 0.5)
-        h += 1.0;
-    return h;
+    int h = (int)t;
+    h -= (double)h > t;  /* floor */
+    return h + (t - h >= 0.5);
 }
 
 /* Where the sprite lands: mask phase, origin and the clipped row/column
@@ -135,21 +149,25 @@ typedef struct placement {
     int p, x0, y0, jb, je, ib, ie;
 } placement;
 
-static int place(const isk_canvas *c, const isk_sprite *s, double cx, double cy, isk_blend mode, placement *pl)
+static inline int place(const isk_canvas *c, const isk_sprite *s, double cx, double cy, isk_blend mode,
+                        placement *pl)
 {
     if (!c || !c->pixels || !s || !s->mask[0])
         return 0;
     if (mode != ISK_BLEND_REPLACE && mode != ISK_BLEND_OVER && mode != ISK_BLEND_ADD)
         return 0;
+    /* Anything this far out is off every canvas (<= 16384 px, S <= 256);
+     * the test also rejects NaN and Inf before any conversion. */
+    if (!(cx > -1e6 && cx < 1e6 && cy > -1e6 && cy < 1e6))
+        return 0;
     int S = s->size;
-    double tx = twice_snapped(cx) - S, ty = twice_snapped(cy) - S; /* 2 * mask origin */
-    double ox = floor(0.5 * tx), oy = floor(0.5 * ty);
-    /* Rejects NaN, Inf and anything off-canvas before converting to int. */
+    int tx = twice_snapped(cx) - S, ty = twice_snapped(cy) - S; /* 2 * mask origin */
+    int ox = tx >> 1, oy = ty >> 1; /* floor(tx / 2): arithmetic shift */
     if (!(ox > -S && ox < c->width && oy > -S && oy < c->height))
         return 0;
-    pl->x0 = (int)ox;
-    pl->y0 = (int)oy;
-    pl->p = (tx - 2.0 * ox != 0.0) + 2 * (ty - 2.0 * oy != 0.0);
+    pl->x0 = ox;
+    pl->y0 = oy;
+    pl->p = (tx & 1) + 2 * (ty & 1);
     pl->jb = pl->y0 < 0 ? -pl->y0 : 0;
     pl->je = c->height - pl->y0 < S ? c->height - pl->y0 : S;
     pl->ib = pl->x0 < 0 ? -pl->x0 : 0;
@@ -158,75 +176,67 @@ static int place(const isk_canvas *c, const isk_sprite *s, double cx, double cy,
 }
 
 /* Rows of a sprite are a canvas stride apart, too far for the hardware
- * prefetcher: start loading the row a few ahead while blending this one. */
-#define ROW_AHEAD 3
+ * prefetcher: the row a few ahead is requested while this one is blended. */
+#define ROW_AHEAD 4
 
-static inline void prefetch_row(const isk_canvas *c, const placement *pl, const uint16_t *span, int j)
+/* The sprite's rows, each one span of the mask blended by the row kernels
+ * of raster/span_simd.h, the mode a constant (one loop per mode).  inc != 0:
+ * the baked colour's premade additive increments (a saturating byte add of
+ * two arrays).  A sprite wholly on the canvas uses the padded spans (whole
+ * 4-pixel steps); a clipped one the exact spans cut to the canvas. */
+static ISK__INLINE void draw_rows(const isk_canvas *c, const isk_sprite *s, const placement *pl, isk_color col,
+                                  int inc, isk_blend mode)
 {
-#if defined(__GNUC__)
-    if (j < pl->je) {
-        int b = span[2 * j] > pl->ib ? span[2 * j] : pl->ib;
-        int e = span[2 * j + 1] < pl->ie ? span[2 * j + 1] : pl->ie;
-        if (b < e) {
-            __builtin_prefetch(isk_canvas_at(c, pl->x0 + b, pl->y0 + j), 1);
-            __builtin_prefetch(isk_canvas_at(c, pl->x0 + e - 1, pl->y0 + j), 1);
+    const int S = s->size;
+    const size_t stride = c->stride;
+    const uint8_t *mask = s->mask[pl->p];
+    const uint8_t *incs = s->inc[pl->p];
+    const int whole = pl->jb == 0 && pl->je == S && pl->ib == 0 && pl->ie == S;
+    const uint16_t *span = whole ? s->vspan[pl->p] : s->span[pl->p];
+    for (int j = pl->jb; j < pl->je; j++) {
+        int b = span[2 * j], e = span[2 * j + 1];
+        if (!whole) {
+            b = b > pl->ib ? b : pl->ib;
+            e = e < pl->ie ? e : pl->ie;
         }
-    }
-#else
-    (void)c; (void)pl; (void)span; (void)j;
+        if (b >= e)
+            continue;
+        uint8_t *d = c->pixels + (size_t)(pl->y0 + j) * stride + (size_t)(pl->x0 + b) * 4u;
+#if defined(__GNUC__)
+        if (j + ROW_AHEAD < pl->je)
+            __builtin_prefetch(d + ROW_AHEAD * stride, 1);
 #endif
+        if (inc)
+            isk__span_add_bytes(d, incs + 4u * ((size_t)j * (size_t)S + (size_t)b), 4 * (e - b));
+        else
+            isk__span_cov(d, mask + (size_t)j * (size_t)S + (size_t)b, e - b, col, mode);
+    }
 }
 
-/* Each row is one span of the mask, blended by the row kernels of
- * raster/span_simd.h with the mode fixed for the whole sprite.  The baked
- * colour's additive increments are premade (inc), so an untinted additive
- * sprite is a saturating byte add of two arrays. */
+static ISK__INLINE void draw_cov(const isk_canvas *c, const isk_sprite *s, const placement *pl, isk_color col,
+                                 isk_blend mode)
+{
+    draw_rows(c, s, pl, col, 0, mode);
+}
+
 void isk_draw_sprite_tinted(isk_canvas *c, const isk_sprite *s, double cx, double cy, isk_color color,
                             isk_blend mode)
 {
     placement pl;
     if (!place(c, s, cx, cy, mode, &pl))
         return;
-    const size_t S = (size_t)s->size;
-    const uint8_t *mask = s->mask[pl.p];
-    const uint16_t *span = s->span[pl.p];
-    for (int j = pl.jb; j < pl.jb + ROW_AHEAD; j++)
-        prefetch_row(c, &pl, span, j);
-    for (int j = pl.jb; j < pl.je; j++) {
-        prefetch_row(c, &pl, span, j + ROW_AHEAD);
-        int b = span[2 * j] > pl.ib ? span[2 * j] : pl.ib;
-        int e = span[2 * j + 1] < pl.ie ? span[2 * j + 1] : pl.ie;
-        if (b >= e)
-            continue;
-        uint8_t *d = isk_canvas_at(c, pl.x0 + b, pl.y0 + j);
-        isk__span_cov(d, mask + (size_t)j * S + (size_t)b, e - b, color, mode);
-    }
+    ISK__BLEND_DISPATCH(mode, draw_cov, c, s, &pl, color);
 }
 
 void isk_draw_sprite(isk_canvas *c, const isk_sprite *s, double cx, double cy, isk_blend mode)
 {
-    if (mode != ISK_BLEND_ADD) { /* over and replace: the baked colour through the mask */
-        if (s)
-            isk_draw_sprite_tinted(c, s, cx, cy, s->color, mode);
-        return;
-    }
     placement pl;
     if (!place(c, s, cx, cy, mode, &pl))
         return;
-    const size_t S = (size_t)s->size;
-    const uint8_t *inc = s->inc[pl.p];
-    const uint16_t *span = s->span[pl.p];
-    for (int j = pl.jb; j < pl.jb + ROW_AHEAD; j++)
-        prefetch_row(c, &pl, span, j);
-    for (int j = pl.jb; j < pl.je; j++) {
-        prefetch_row(c, &pl, span, j + ROW_AHEAD);
-        int b = span[2 * j] > pl.ib ? span[2 * j] : pl.ib;
-        int e = span[2 * j + 1] < pl.ie ? span[2 * j + 1] : pl.ie;
-        if (b >= e)
-            continue;
-        uint8_t *d = isk_canvas_at(c, pl.x0 + b, pl.y0 + j);
-        isk__span_add_bytes(d, inc + 4u * ((size_t)j * S + (size_t)b), 4 * (e - b));
-    }
+    if (mode == ISK_BLEND_ADD)
+        draw_rows(c, s, &pl, s->color, 1, ISK_BLEND_ADD);
+    else /* over and replace: the baked colour through the mask */
+        ISK__BLEND_DISPATCH(mode, draw_cov, c, s, &pl, s->color);
 }
 
 /* ---- cache ------------------------------------------------------------- */
