@@ -164,10 +164,12 @@ static void fill_circle_aa_pixels(isk_canvas *c, double cx, double cy, double r,
  * pixel's area is then min_antideriv's arithmetic on them in the same order,
  * so every double, hence every coverage byte, is the one the per-pixel walk
  * computes.  Coverage is collected per row and blended by the span kernel. */
-#define ROW_CACHE 512 /* columns; wider discs take the per-pixel walk */
+#define ROW_CACHE 512    /* columns; wider discs take the per-pixel walk */
+#define PREFETCH_ROWS 16 /* rows requested ahead of the one being drawn */
 
 typedef struct edge_y {
     double y, cl, w, hw; /* row edge, |y|, w(|y|) (0 beyond r), h_integral(w) */
+    double cw;           /* cl * w */
 } edge_y;
 
 static void edge_y_make(edge_y *e, double y, double r)
@@ -176,16 +178,17 @@ static void edge_y_make(edge_y *e, double y, double r)
     e->cl = fabs(y);
     e->w = e->cl < r ? sqrt((r - e->cl) * (r + e->cl)) : 0.0;
     e->hw = h_integral(e->w, r);
+    e->cw = e->cl * e->w;
 }
 
-/* min_antideriv(x, cl, r) given h_integral(x) and the row edge's values */
+/* min_antideriv(x, cl, r) given h_integral(x) and the row edge's values;
+ * the three cases are all computed and one selected (no branch to
+ * mispredict; (-cl)*w is -(cl*w) exactly). */
 static inline double min_antideriv_cached(double x, double hx, const edge_y *e)
 {
-    if (x > e->w)
-        return e->cl * e->w + hx - e->hw;
-    if (x < -e->w)
-        return -e->cl * e->w + hx + e->hw;
-    return e->cl * x;
+    double t1 = e->cw + hx - e->hw, t2 = -e->cw + hx + e->hw, t3 = e->cl * x;
+    double t = x < -e->w ? t2 : t3;
+    return x > e->w ? t1 : t;
 }
 
 /* strip_integral(a, b, y, r) for clamped a, b */
@@ -203,6 +206,14 @@ static ISK__INLINE void fill_circle_aa_rows(isk_canvas *c, double cx, double cy,
     int j1 = isk__floor_clamp(cy + r, -1, c->height);
     if (j0 < 0) j0 = 0;
     if (j1 > c->height - 1) j1 = c->height - 1;
+    /* The disc's rows are random accesses a stride apart: ask for the first
+     * ones now, so the loads overlap the integrals computed below. */
+#if defined(__GNUC__)
+    for (int j = j0; j <= j1 && j < j0 + PREFETCH_ROWS; j++) {
+        __builtin_prefetch(isk_canvas_at(c, i0g, j), 1);
+        __builtin_prefetch(isk_canvas_at(c, i1g, j), 1);
+    }
+#endif
     /* per column: clamped edges and their integrals */
     const int ncol = i1g - i0g + 1;
     double ca[ROW_CACHE], cb[ROW_CACHE], ha[ROW_CACHE], hb[ROW_CACHE];
@@ -214,8 +225,14 @@ static ISK__INLINE void fill_circle_aa_rows(isk_canvas *c, double cx, double cy,
         hb[k] = h_integral(cb[k], r);
     }
     uint8_t cov[ROW_CACHE];
+    /* a pixel's bottom strip is the top strip of the pixel below when the
+     * two rows share their edge: kept per column with the row it came from */
+    double sprev[ROW_CACHE];
+    int srow[ROW_CACHE];
+    for (int k = 0; k < ncol; k++)
+        srow[k] = -2;
     edge_y e0, e1;
-    int have_e1 = 0;
+    int have_e1 = 0, shared;
     for (int j = j0; j <= j1; j++) {
         double y0 = j - cy, y1 = y0 + 1.0;
         double ay0 = fabs(y0), ay1 = fabs(y1); /* fmin/fmax without NaN: no libm call */
@@ -224,7 +241,8 @@ static ISK__INLINE void fill_circle_aa_rows(isk_canvas *c, double cx, double cy,
         if (!(ny < r))
             continue;
         /* the previous row's bottom edge is this row's top when equal */
-        if (have_e1 && e1.y == y0)
+        shared = have_e1 && e1.y == y0;
+        if (shared)
             e0 = e1;
         else
             edge_y_make(&e0, y0, r);
@@ -238,8 +256,10 @@ static ISK__INLINE void fill_circle_aa_rows(isk_canvas *c, double cx, double cy,
         if (i0 > i1)
             continue;
 #if defined(__GNUC__)
-        if (j + 2 <= j1) /* the row after next: a stride away, not prefetched by the hardware */
-            __builtin_prefetch(isk_canvas_at(c, i0, j + 2), 1);
+        if (j + PREFETCH_ROWS <= j1) {
+            __builtin_prefetch(isk_canvas_at(c, i0g, j + PREFETCH_ROWS), 1);
+            __builtin_prefetch(isk_canvas_at(c, i1g, j + PREFETCH_ROWS), 1);
+        }
 #endif
         for (int i = i0; i <= i1; i++) {
             double x0 = i - cx, x1 = x0 + 1.0;
@@ -253,9 +273,11 @@ static ISK__INLINE void fill_circle_aa_rows(isk_canvas *c, double cx, double cy,
                 v = 0;
             } else {
                 int k = i - i0g;
-                double area = strip_cached(ca[k], ha[k], cb[k], hb[k], &e1) -
-                              strip_cached(ca[k], ha[k], cb[k], hb[k], &e0);
-                v = isk__coverage(area);
+                double s1 = strip_cached(ca[k], ha[k], cb[k], hb[k], &e1);
+                double s0 = shared && srow[k] == j - 1 ? sprev[k] : strip_cached(ca[k], ha[k], cb[k], hb[k], &e0);
+                sprev[k] = s1;
+                srow[k] = j;
+                v = isk__coverage(s1 - s0);
             }
             cov[i - i0] = v;
         }

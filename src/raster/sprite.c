@@ -176,8 +176,9 @@ static inline int place(const isk_canvas *c, const isk_sprite *s, double cx, dou
 }
 
 /* Rows of a sprite are a canvas stride apart, too far for the hardware
- * prefetcher: the row a few ahead is requested while this one is blended. */
-#define ROW_AHEAD 4
+ * prefetcher: the first rows are requested at once (both ends of the
+ * clipped row), later ones ROW_AHEAD rows before they are blended. */
+#define ROW_AHEAD 16
 
 /* The sprite's rows, each one span of the mask blended by the row kernels
  * of raster/span_simd.h, the mode a constant (one loop per mode).  inc != 0:
@@ -193,6 +194,13 @@ static ISK__INLINE void draw_rows(const isk_canvas *c, const isk_sprite *s, cons
     const uint8_t *incs = s->inc[pl->p];
     const int whole = pl->jb == 0 && pl->je == S && pl->ib == 0 && pl->ie == S;
     const uint16_t *span = whole ? s->vspan[pl->p] : s->span[pl->p];
+#if defined(__GNUC__)
+    for (int j = pl->jb; j < pl->je && j < pl->jb + ROW_AHEAD; j++) {
+        uint8_t *d = c->pixels + (size_t)(pl->y0 + j) * stride + (size_t)(pl->x0 + pl->ib) * 4u;
+        __builtin_prefetch(d, 1);
+        __builtin_prefetch(d + 4u * (size_t)(pl->ie - pl->ib - 1), 1);
+    }
+#endif
     for (int j = pl->jb; j < pl->je; j++) {
         int b = span[2 * j], e = span[2 * j + 1];
         if (!whole) {
@@ -203,8 +211,11 @@ static ISK__INLINE void draw_rows(const isk_canvas *c, const isk_sprite *s, cons
             continue;
         uint8_t *d = c->pixels + (size_t)(pl->y0 + j) * stride + (size_t)(pl->x0 + b) * 4u;
 #if defined(__GNUC__)
-        if (j + ROW_AHEAD < pl->je)
-            __builtin_prefetch(d + ROW_AHEAD * stride, 1);
+        if (j + ROW_AHEAD < pl->je) {
+            const uint8_t *q = c->pixels + (size_t)(pl->y0 + j + ROW_AHEAD) * stride + (size_t)(pl->x0 + pl->ib) * 4u;
+            __builtin_prefetch(q, 1);
+            __builtin_prefetch(q + 4u * (size_t)(pl->ie - pl->ib - 1), 1);
+        }
 #endif
         if (inc)
             isk__span_add_bytes(d, incs + 4u * ((size_t)j * (size_t)S + (size_t)b), 4 * (e - b));
