@@ -176,78 +176,131 @@ static inline int place(const isk_canvas *c, const isk_sprite *s, double cx, dou
 }
 
 /* Rows of a sprite are a canvas stride apart, too far for the hardware
- * prefetcher: the first rows are requested at once (both ends of the
- * clipped row), later ones ROW_AHEAD rows before they are blended. */
-#define ROW_AHEAD 16
+ * prefetcher: the first rows are requested at once, later ones ROW_AHEAD
+ * rows before they are blended (sprites wholly on the canvas; clipped ones
+ * are rare). */
+#define ROW_AHEAD 6
 
 /* The sprite's rows, each one span of the mask blended by the row kernels
  * of raster/span_simd.h, the mode a constant (one loop per mode).  inc != 0:
  * the baked colour's premade additive increments (a saturating byte add of
  * two arrays).  A sprite wholly on the canvas uses the padded spans (whole
- * 4-pixel steps); a clipped one the exact spans cut to the canvas. */
+ * 4-pixel steps); a clipped one the exact spans cut to the canvas.  The
+ * row kernels are parameters so the loop is compiled once per SIMD level. */
+typedef void (*span_cov_fn)(uint8_t *, const uint8_t *, int, isk_color, isk_blend);
+typedef void (*span_add_fn)(uint8_t *, const uint8_t *, int);
+typedef void (*span_over_fn)(uint8_t *, const uint8_t *, int, isk_color);
+
+/* What a row blends: the mask in a colour, or the baked colour's premade
+ * increments, added or (AVX2) taken as a' for source-over. */
+enum { SRC_MASK, SRC_INC_ADD, SRC_INC_OVER };
+
 static ISK__INLINE void draw_rows(const isk_canvas *c, const isk_sprite *s, const placement *pl, isk_color col,
-                                  int inc, isk_blend mode)
+                                  int src_kind, isk_blend mode, span_cov_fn span_cov, span_add_fn span_add,
+                                  span_over_fn span_over)
 {
+    const int inc = src_kind != SRC_MASK;
     const int S = s->size;
-    const size_t stride = c->stride;
-    const uint8_t *mask = s->mask[pl->p];
-    const uint8_t *incs = s->inc[pl->p];
-    const int whole = pl->jb == 0 && pl->je == S && pl->ib == 0 && pl->ie == S;
-    const uint16_t *span = whole ? s->vspan[pl->p] : s->span[pl->p];
+    const size_t stride = c->stride, unit = inc ? 4u : 1u; /* source bytes per pixel */
+    const uint8_t *src = inc ? s->inc[pl->p] : s->mask[pl->p];
+    if (pl->jb == 0 && pl->je == S && pl->ib == 0 && pl->ie == S) {
+        /* wholly on the canvas: padded spans, no clipping, rows by pointer steps */
+        const uint16_t *span = s->vspan[pl->p];
+        uint8_t *drow = c->pixels + (size_t)pl->y0 * stride + (size_t)pl->x0 * 4u;
 #if defined(__GNUC__)
-    for (int j = pl->jb; j < pl->je && j < pl->jb + ROW_AHEAD; j++) {
-        uint8_t *d = c->pixels + (size_t)(pl->y0 + j) * stride + (size_t)(pl->x0 + pl->ib) * 4u;
-        __builtin_prefetch(d, 1);
-        __builtin_prefetch(d + 4u * (size_t)(pl->ie - pl->ib - 1), 1);
-    }
-#endif
-    for (int j = pl->jb; j < pl->je; j++) {
-        int b = span[2 * j], e = span[2 * j + 1];
-        if (!whole) {
-            b = b > pl->ib ? b : pl->ib;
-            e = e < pl->ie ? e : pl->ie;
+        for (int j = 0; j < S && j < ROW_AHEAD; j++) {
+            __builtin_prefetch(drow + (size_t)j * stride + 4u * span[2 * j], 1);
+            __builtin_prefetch(drow + (size_t)j * stride + 4u * span[2 * j + 1] - 1, 1);
         }
+#endif
+        for (int j = 0; j < S; j++, drow += stride, src += unit * (size_t)S) {
+            int b = span[2 * j], n = span[2 * j + 1] - b;
+#if defined(__GNUC__)
+            if (j + ROW_AHEAD < S) {
+                __builtin_prefetch(drow + ROW_AHEAD * stride + 4u * span[2 * (j + ROW_AHEAD)], 1);
+                __builtin_prefetch(drow + ROW_AHEAD * stride + 4u * span[2 * (j + ROW_AHEAD) + 1] - 1, 1);
+            }
+#endif
+            if (src_kind == SRC_INC_ADD)
+                span_add(drow + 4 * b, src + 4 * b, 4 * n);
+            else if (src_kind == SRC_INC_OVER)
+                span_over(drow + 4 * b, src + 4 * b, n, col);
+            else
+                span_cov(drow + 4 * b, src + b, n, col, mode);
+        }
+        return;
+    }
+    const uint16_t *span = s->span[pl->p];
+    for (int j = pl->jb; j < pl->je; j++) {
+        int b = span[2 * j] > pl->ib ? span[2 * j] : pl->ib;
+        int e = span[2 * j + 1] < pl->ie ? span[2 * j + 1] : pl->ie;
         if (b >= e)
             continue;
         uint8_t *d = c->pixels + (size_t)(pl->y0 + j) * stride + (size_t)(pl->x0 + b) * 4u;
-#if defined(__GNUC__)
-        if (j + ROW_AHEAD < pl->je) {
-            const uint8_t *q = c->pixels + (size_t)(pl->y0 + j + ROW_AHEAD) * stride + (size_t)(pl->x0 + pl->ib) * 4u;
-            __builtin_prefetch(q, 1);
-            __builtin_prefetch(q + 4u * (size_t)(pl->ie - pl->ib - 1), 1);
-        }
-#endif
-        if (inc)
-            isk__span_add_bytes(d, incs + 4u * ((size_t)j * (size_t)S + (size_t)b), 4 * (e - b));
+        const uint8_t *q = src + unit * ((size_t)j * (size_t)S + (size_t)b);
+        if (src_kind == SRC_INC_ADD)
+            span_add(d, q, 4 * (e - b));
+        else if (src_kind == SRC_INC_OVER)
+            span_over(d, q, e - b, col);
         else
-            isk__span_cov(d, mask + (size_t)j * (size_t)S + (size_t)b, e - b, col, mode);
+            span_cov(d, q, e - b, col, mode);
     }
 }
 
-static ISK__INLINE void draw_cov(const isk_canvas *c, const isk_sprite *s, const placement *pl, isk_color col,
-                                 isk_blend mode)
+/* One function per SIMD level: kind SRC_INC_ADD = premade increments
+ * (additive, baked colour), SRC_INC_OVER = the baked colour over (taken from
+ * the increments where the level has a kernel for it, else from the mask),
+ * SRC_MASK = the mask in col with the given mode. */
+#define SPRITE_ROWS(NAME, ATTR, SPAN_COV, SPAN_ADD, SPAN_OVER, OVER_KIND)                          \
+    static ATTR void NAME(const isk_canvas *c, const isk_sprite *s, const placement *pl, isk_color col, \
+                          int kind, isk_blend mode)                                                  \
+    {                                                                                                \
+        if (kind == SRC_INC_ADD)                                                                     \
+            draw_rows(c, s, pl, col, SRC_INC_ADD, ISK_BLEND_ADD, SPAN_COV, SPAN_ADD, SPAN_OVER);     \
+        else if (kind == SRC_INC_OVER)                                                               \
+            draw_rows(c, s, pl, col, OVER_KIND, ISK_BLEND_OVER, SPAN_COV, SPAN_ADD, SPAN_OVER);      \
+        else if (mode == ISK_BLEND_ADD)                                                              \
+            draw_rows(c, s, pl, col, SRC_MASK, ISK_BLEND_ADD, SPAN_COV, SPAN_ADD, SPAN_OVER);        \
+        else if (mode == ISK_BLEND_OVER)                                                             \
+            draw_rows(c, s, pl, col, SRC_MASK, ISK_BLEND_OVER, SPAN_COV, SPAN_ADD, SPAN_OVER);       \
+        else                                                                                         \
+            draw_rows(c, s, pl, col, SRC_MASK, ISK_BLEND_REPLACE, SPAN_COV, SPAN_ADD, SPAN_OVER);    \
+    }
+
+SPRITE_ROWS(rows_base, , isk__span_cov, isk__span_add_bytes, NULL, SRC_MASK)
+#if ISK__SPAN_AVX2
+SPRITE_ROWS(rows_avx2, ISK__AVX2_FN, isk__span_cov_avx2, isk__span_add_bytes_avx2, isk__span_over_inc_avx2,
+            SRC_INC_OVER)
+#endif
+
+static void rows(const isk_canvas *c, const isk_sprite *s, const placement *pl, isk_color col, int kind,
+                 isk_blend mode)
 {
-    draw_rows(c, s, pl, col, 0, mode);
+#if ISK__SPAN_AVX2
+    if (isk__have_avx2()) {
+        rows_avx2(c, s, pl, col, kind, mode);
+        return;
+    }
+#endif
+    rows_base(c, s, pl, col, kind, mode);
 }
 
 void isk_draw_sprite_tinted(isk_canvas *c, const isk_sprite *s, double cx, double cy, isk_color color,
                             isk_blend mode)
 {
     placement pl;
-    if (!place(c, s, cx, cy, mode, &pl))
-        return;
-    ISK__BLEND_DISPATCH(mode, draw_cov, c, s, &pl, color);
+    if (place(c, s, cx, cy, mode, &pl))
+        rows(c, s, &pl, color, SRC_MASK, mode);
 }
 
 void isk_draw_sprite(isk_canvas *c, const isk_sprite *s, double cx, double cy, isk_blend mode)
 {
     placement pl;
-    if (!place(c, s, cx, cy, mode, &pl))
-        return;
-    if (mode == ISK_BLEND_ADD)
-        draw_rows(c, s, &pl, s->color, 1, ISK_BLEND_ADD);
-    else /* over and replace: the baked colour through the mask */
-        ISK__BLEND_DISPATCH(mode, draw_cov, c, s, &pl, s->color);
+    /* additive: the premade increments; over and replace: the baked colour
+     * through the mask */
+    if (place(c, s, cx, cy, mode, &pl))
+        rows(c, s, &pl, s->color,
+             mode == ISK_BLEND_ADD ? SRC_INC_ADD : mode == ISK_BLEND_OVER ? SRC_INC_OVER : SRC_MASK, mode);
 }
 
 /* ---- cache ------------------------------------------------------------- */
