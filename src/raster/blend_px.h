@@ -38,23 +38,31 @@ typedef struct isk__cov_lut {
     uint8_t alpha[256];      /* a' */
     uint8_t add[256][4];     /* r, g, b increments and a' (ISK_BLEND_ADD) */
     uint64_t over_p[256];    /* lanes r*a', g*a', b*a', 255*a' (ISK_BLEND_OVER, opaque dst) */
+    uint64_t over_inv[256];  /* lanes 255 - a', four times */
 } isk__cov_lut;
 
 #define ISK__LANES_LO 0x00FF00FF00FF00FFull
 
-static inline void isk__cov_lut_init(isk__cov_lut *t, isk_color col)
+/* Fills the table's entry for coverage w (a batch that only ever uses
+ * coverage 255, i.e. plain pixels, fills just that one). */
+static inline void isk__cov_lut_entry(isk__cov_lut *t, isk_color col, uint32_t w)
 {
     t->col = col;
-    for (uint32_t w = 0; w < 256u; w++) {
-        uint32_t a = isk_div255((uint32_t)col.a * w);
-        t->alpha[w] = (uint8_t)a;
-        t->add[w][0] = (uint8_t)isk_div255((uint32_t)col.r * a);
-        t->add[w][1] = (uint8_t)isk_div255((uint32_t)col.g * a);
-        t->add[w][2] = (uint8_t)isk_div255((uint32_t)col.b * a);
-        t->add[w][3] = (uint8_t)a;
-        t->over_p[w] = (uint64_t)(col.r * a) | (uint64_t)(col.g * a) << 16 | (uint64_t)(col.b * a) << 32 |
-                       (uint64_t)(255u * a) << 48;
-    }
+    uint32_t a = isk_div255((uint32_t)col.a * w);
+    t->alpha[w] = (uint8_t)a;
+    t->add[w][0] = (uint8_t)isk_div255((uint32_t)col.r * a);
+    t->add[w][1] = (uint8_t)isk_div255((uint32_t)col.g * a);
+    t->add[w][2] = (uint8_t)isk_div255((uint32_t)col.b * a);
+    t->add[w][3] = (uint8_t)a;
+    t->over_p[w] = (uint64_t)(col.r * a) | (uint64_t)(col.g * a) << 16 | (uint64_t)(col.b * a) << 32 |
+                   (uint64_t)(255u * a) << 48;
+    t->over_inv[w] = (uint64_t)(255u - a) * 0x0001000100010001ull;
+}
+
+static inline void isk__cov_lut_init(isk__cov_lut *t, isk_color col)
+{
+    for (uint32_t w = 0; w < 256u; w++)
+        isk__cov_lut_entry(t, col, w);
 }
 
 /* Four saturating byte additions in one uint32 (no carry crosses a byte). */
@@ -216,23 +224,31 @@ typedef struct isk__cov_lut {
     uint8_t alpha[256];      /* a' */
     uint8_t add[256][4];     /* r, g, b increments and a' (ISK_BLEND_ADD) */
     uint64_t over_p[256];    /* lanes r*a', g*a', b*a', 255*a' (ISK_BLEND_OVER, opaque dst) */
+    uint64_t over_inv[256];  /* lanes 255 - a', four times */
 } isk__cov_lut;
 
 #define ISK__LANES_LO 0x00FF00FF00FF00FFull
 
-static inline void isk__cov_lut_init(isk__cov_lut *t, isk_color col)
+/* Fills the table's entry for coverage w (a batch that only ever uses
+ * coverage 255, i.e. plain pixels, fills just that one). */
+static inline void isk__cov_lut_entry(isk__cov_lut *t, isk_color col, uint32_t w)
 {
     t->col = col;
-    for (uint32_t w = 0; w < 256u; w++) {
-        uint32_t a = isk_div255((uint32_t)col.a * w);
-        t->alpha[w] = (uint8_t)a;
-        t->add[w][0] = (uint8_t)isk_div255((uint32_t)col.r * a);
-        t->add[w][1] = (uint8_t)isk_div255((uint32_t)col.g * a);
-        t->add[w][2] = (uint8_t)isk_div255((uint32_t)col.b * a);
-        t->add[w][3] = (uint8_t)a;
-        t->over_p[w] = (uint64_t)(col.r * a) | (uint64_t)(col.g * a) << 16 | (uint64_t)(col.b * a) << 32 |
-                       (uint64_t)(255u * a) << 48;
-    }
+    uint32_t a = isk_div255((uint32_t)col.a * w);
+    t->alpha[w] = (uint8_t)a;
+    t->add[w][0] = (uint8_t)isk_div255((uint32_t)col.r * a);
+    t->add[w][1] = (uint8_t)isk_div255((uint32_t)col.g * a);
+    t->add[w][2] = (uint8_t)isk_div255((uint32_t)col.b * a);
+    t->add[w][3] = (uint8_t)a;
+    t->over_p[w] = (uint64_t)(col.r * a) | (uint64_t)(col.g * a) << 16 | (uint64_t)(col.b * a) << 32 |
+                   (uint64_t)(255u * a) << 48;
+    t->over_inv[w] = (uint64_t)(255u - a) * 0x0001000100010001ull;
+}
+
+static inline void isk__cov_lut_init(isk__cov_lut *t, isk_color col)
+{
+    for (uint32_t w = 0; w < 256u; w++)
+        isk__cov_lut_entry(t, col, w);
 }
 
 /* Four saturating byte additions in one uint32 (no carry crosses a byte). */
