@@ -12,6 +12,8 @@
  */
 #include "iskra/draw.h"
 
+#include <string.h>
+
 #include "raster/clip.h"
 #include "raster/span_simd.h"
 
@@ -177,7 +179,9 @@ static void edge_y_make(edge_y *e, double y, double r)
     e->y = y;
     e->cl = fabs(y);
     e->w = e->cl < r ? sqrt((r - e->cl) * (r + e->cl)) : 0.0;
-    e->hw = h_integral(e->w, r);
+    /* h_integral(+0) is +0 (C's asin(+0) is +0): no libm call for the
+     * edges beyond the disc */
+    e->hw = e->w == 0.0 ? 0.0 : h_integral(e->w, r);
     e->cw = e->cl * e->w;
 }
 
@@ -196,6 +200,28 @@ static inline double strip_cached(double a, double ha, double b, double hb, cons
 {
     double v = min_antideriv_cached(b, hb, e) - min_antideriv_cached(a, ha, e);
     return e->y < 0.0 ? -v : v;
+}
+
+/* Coverage of pixel i of the row (edges e0, e1), or -1 when it is wholly
+ * inside the disc. */
+static ISK__INLINE int pixel_cov(int i, double cx, double r2, double fy, double ny, int shared, int j, int i0g,
+                                 const double *ca, const double *ha, const double *cb, const double *hb,
+                                 const edge_y *e0, const edge_y *e1, double *sprev, int *srow)
+{
+    double x0 = i - cx, x1 = x0 + 1.0;
+    double ax0 = fabs(x0), ax1 = fabs(x1); /* fmin/fmax without NaN: no libm call */
+    double nx = (x0 <= 0.0 && x1 >= 0.0) ? 0.0 : (ax0 < ax1 ? ax0 : ax1);
+    double fx = ax0 > ax1 ? ax0 : ax1;
+    if (fx * fx + fy * fy <= r2)
+        return -1;
+    if (nx * nx + ny * ny >= r2)
+        return 0;
+    int k = i - i0g;
+    double s1 = strip_cached(ca[k], ha[k], cb[k], hb[k], e1);
+    double s0 = shared && srow[k] == j - 1 ? sprev[k] : strip_cached(ca[k], ha[k], cb[k], hb[k], e0);
+    sprev[k] = s1;
+    srow[k] = j;
+    return isk__coverage(s1 - s0);
 }
 
 static ISK__INLINE void fill_circle_aa_rows(isk_canvas *c, double cx, double cy, double r, isk_color color,
@@ -224,7 +250,7 @@ static ISK__INLINE void fill_circle_aa_rows(isk_canvas *c, double cx, double cy,
         ha[k] = k > 0 && ca[k] == cb[k - 1] ? hb[k - 1] : h_integral(ca[k], r);
         hb[k] = h_integral(cb[k], r);
     }
-    uint8_t cov[ROW_CACHE];
+    uint8_t cov[ROW_CACHE + 4];
     /* a pixel's bottom strip is the top strip of the pixel below when the
      * two rows share their edge: kept per column with the row it came from */
     double sprev[ROW_CACHE];
@@ -261,27 +287,43 @@ static ISK__INLINE void fill_circle_aa_rows(isk_canvas *c, double cx, double cy,
             __builtin_prefetch(isk_canvas_at(c, i1g, j + PREFETCH_ROWS), 1);
         }
 #endif
-        for (int i = i0; i <= i1; i++) {
-            double x0 = i - cx, x1 = x0 + 1.0;
-            double ax0 = fabs(x0), ax1 = fabs(x1);
-            double nx = (x0 <= 0.0 && x1 >= 0.0) ? 0.0 : (ax0 < ax1 ? ax0 : ax1);
-            double fx = ax0 > ax1 ? ax0 : ax1;
-            uint8_t v;
-            if (fx * fx + fy * fy <= r2) {
-                v = 255; /* isk__coverage(1.0) */
-            } else if (nx * nx + ny * ny >= r2) {
-                v = 0;
-            } else {
-                int k = i - i0g;
-                double s1 = strip_cached(ca[k], ha[k], cb[k], hb[k], &e1);
-                double s0 = shared && srow[k] == j - 1 ? sprev[k] : strip_cached(ca[k], ha[k], cb[k], hb[k], &e0);
-                sprev[k] = s1;
-                srow[k] = j;
-                v = isk__coverage(s1 - s0);
-            }
-            cov[i - i0] = v;
+        /* fx grows away from the centre on both sides (max of a falling
+         * and a rising function), so the full pixels of a row are one run:
+         * the edge pixels are classified from each end inward until a full
+         * one, and the run between is set at once. */
+        int i = i0;
+        for (; i <= i1; i++) {
+            int v = pixel_cov(i, cx, r2, fy, ny, shared, j, i0g, ca, ha, cb, hb, &e0, &e1, sprev, srow);
+            if (v < 0)
+                break;
+            cov[i - i0] = (uint8_t)v;
         }
-        isk__span_cov(isk_canvas_at(c, i0, j), cov, i1 - i0 + 1, color, mode);
+        if (i <= i1) {
+            int b = i1;
+            for (; b > i; b--) {
+                int v = pixel_cov(b, cx, r2, fy, ny, shared, j, i0g, ca, ha, cb, hb, &e0, &e1, sprev, srow);
+                if (v < 0)
+                    break;
+                cov[b - i0] = (uint8_t)v;
+            }
+            for (int k = i; k <= b; k++) /* short runs: no memset call */
+                cov[k - i0] = 255;    /* isk__coverage(1.0) */
+        }
+        /* Padded to whole 4-pixel steps of the span kernel with coverage 0
+         * (no change in any mode) where the canvas row allows. */
+        int n = i1 - i0 + 1, n4 = (n + 3) & ~3, start = i0;
+        if (i0 + n4 <= c->width) {
+            for (int k = n; k < n4; k++)
+                cov[k] = 0;
+            n = n4;
+        } else if (i1 + 1 - n4 >= 0 && n4 <= ROW_CACHE) {
+            memmove(cov + (n4 - n), cov, (size_t)n);
+            for (int k = 0; k < n4 - n; k++)
+                cov[k] = 0;
+            start = i1 + 1 - n4;
+            n = n4;
+        }
+        isk__span_cov(isk_canvas_at(c, start, j), cov, n, color, mode);
     }
 }
 
