@@ -250,7 +250,7 @@ static ISK__INLINE void fill_circle_aa_rows(isk_canvas *c, double cx, double cy,
         ha[k] = k > 0 && ca[k] == cb[k - 1] ? hb[k - 1] : h_integral(ca[k], r);
         hb[k] = h_integral(cb[k], r);
     }
-    uint8_t cov[ROW_CACHE + 4];
+    uint8_t cov[ROW_CACHE + 16]; /* room for 16-byte stores past the row */
     /* a pixel's bottom strip is the top strip of the pixel below when the
      * two rows share their edge: kept per column with the row it came from */
     double sprev[ROW_CACHE];
@@ -299,27 +299,33 @@ static ISK__INLINE void fill_circle_aa_rows(isk_canvas *c, double cx, double cy,
             cov[i - i0] = (uint8_t)v;
         }
         if (i <= i1) {
-            int b = i1;
-            for (; b > i; b--) {
+            /* isk__coverage(1.0) = 255 from the first full pixel on, 16
+             * bytes a store (the buffer has room past the row; a memset
+             * call costs more for these short runs), then the right end's
+             * edge pixels over it */
+            static const uint8_t full16[16] = {255, 255, 255, 255, 255, 255, 255, 255,
+                                               255, 255, 255, 255, 255, 255, 255, 255};
+            for (int k = i - i0; k <= i1 - i0; k += 16)
+                memcpy(cov + k, full16, 16);
+            for (int b = i1; b > i; b--) {
                 int v = pixel_cov(b, cx, r2, fy, ny, shared, j, i0g, ca, ha, cb, hb, &e0, &e1, sprev, srow);
                 if (v < 0)
                     break;
                 cov[b - i0] = (uint8_t)v;
             }
-            for (int k = i; k <= b; k++) /* short runs: no memset call */
-                cov[k - i0] = 255;    /* isk__coverage(1.0) */
         }
         /* Padded to whole 4-pixel steps of the span kernel with coverage 0
          * (no change in any mode) where the canvas row allows. */
         int n = i1 - i0 + 1, n4 = (n + 3) & ~3, start = i0;
         if (i0 + n4 <= c->width) {
-            for (int k = n; k < n4; k++)
-                cov[k] = 0;
+            cov[n] = cov[n + 1] = cov[n + 2] = 0; /* up to 3 bytes of padding (room is there) */
             n = n4;
         } else if (i1 + 1 - n4 >= 0 && n4 <= ROW_CACHE) {
-            memmove(cov + (n4 - n), cov, (size_t)n);
-            for (int k = 0; k < n4 - n; k++)
-                cov[k] = 0;
+            int pad = n4 - n; /* 1..3: the row moves right, zeros before it */
+            memmove(cov + pad, cov, (size_t)n);
+            cov[0] = 0;
+            if (pad > 1) cov[1] = 0;
+            if (pad > 2) cov[2] = 0;
             start = i1 + 1 - n4;
             n = n4;
         }
