@@ -362,6 +362,21 @@ static ISK__INLINE void isk__span_add_bytes(uint8_t *d, const uint8_t *q, int nb
 }
 
 
+/* isk__span_add_bytes for a padded span: nbytes a multiple of 16 (whole
+ * 4-pixel steps), so no tail loops. */
+static ISK__INLINE void isk__span_add_bytes16(uint8_t *d, const uint8_t *q, int nbytes)
+{
+#if ISK__SPAN_SSE2
+    for (int k = 0; k < nbytes; k += 16) {
+        __m128i a = _mm_loadu_si128((const __m128i *)(const void *)(d + k));
+        __m128i b = _mm_loadu_si128((const __m128i *)(const void *)(q + k));
+        _mm_storeu_si128((__m128i *)(void *)(d + k), _mm_adds_epu8(a, b));
+    }
+#else
+    isk__span_add_bytes(d, q, nbytes);
+#endif
+}
+
 #if ISK__SPAN_AVX2
 /* isk__span_cov, 8 pixels a step (then the SSE2 step for a 4-pixel rest). */
 static ISK__INLINE ISK__AVX2_FN void isk__span_cov_avx2(uint8_t *d, const uint8_t *cov, int n, isk_color col,
@@ -386,6 +401,22 @@ static ISK__INLINE ISK__AVX2_FN void isk__span_cov_avx2(uint8_t *d, const uint8_
         }
     }
     isk__span_cov(d + 4 * i, cov + i, n - i, col, mode);
+}
+
+/* isk__span_add_bytes16, 32 bytes a step and one 16-byte step for the rest. */
+static ISK__INLINE ISK__AVX2_FN void isk__span_add_bytes16_avx2(uint8_t *d, const uint8_t *q, int nbytes)
+{
+    int k = 0;
+    for (; k + 32 <= nbytes; k += 32) {
+        __m256i a = _mm256_loadu_si256((const __m256i *)(const void *)(d + k));
+        __m256i b = _mm256_loadu_si256((const __m256i *)(const void *)(q + k));
+        _mm256_storeu_si256((__m256i *)(void *)(d + k), _mm256_adds_epu8(a, b));
+    }
+    if (k < nbytes) {
+        __m128i a = _mm_loadu_si128((const __m128i *)(const void *)(d + k));
+        __m128i b = _mm_loadu_si128((const __m128i *)(const void *)(q + k));
+        _mm_storeu_si128((__m128i *)(void *)(d + k), _mm_adds_epu8(a, b));
+    }
 }
 
 static ISK__INLINE ISK__AVX2_FN void isk__span_add_bytes_avx2(uint8_t *d, const uint8_t *q, int nbytes)

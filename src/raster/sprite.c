@@ -197,7 +197,7 @@ enum { SRC_MASK, SRC_INC_ADD, SRC_INC_OVER };
 
 static ISK__INLINE void draw_rows(const isk_canvas *c, const isk_sprite *s, const placement *pl, isk_color col,
                                   int src_kind, isk_blend mode, span_cov_fn span_cov, span_add_fn span_add,
-                                  span_over_fn span_over)
+                                  span_add_fn span_add16, span_over_fn span_over)
 {
     const int inc = src_kind != SRC_MASK;
     const int S = s->size;
@@ -221,7 +221,9 @@ static ISK__INLINE void draw_rows(const isk_canvas *c, const isk_sprite *s, cons
                 __builtin_prefetch(drow + ROW_AHEAD * stride + 4u * span[2 * (j + ROW_AHEAD) + 1] - 1, 1);
             }
 #endif
-            if (src_kind == SRC_INC_ADD)
+            if (src_kind == SRC_INC_ADD && !(n & 3))
+                span_add16(drow + 4 * b, src + 4 * b, 4 * n); /* padded: whole 16-byte steps */
+            else if (src_kind == SRC_INC_ADD) /* a row too short to pad (S not a multiple of 4) */
                 span_add(drow + 4 * b, src + 4 * b, 4 * n);
             else if (src_kind == SRC_INC_OVER)
                 span_over(drow + 4 * b, src + 4 * b, n, col);
@@ -251,26 +253,26 @@ static ISK__INLINE void draw_rows(const isk_canvas *c, const isk_sprite *s, cons
  * (additive, baked colour), SRC_INC_OVER = the baked colour over (taken from
  * the increments where the level has a kernel for it, else from the mask),
  * SRC_MASK = the mask in col with the given mode. */
-#define SPRITE_ROWS(NAME, ATTR, SPAN_COV, SPAN_ADD, SPAN_OVER, OVER_KIND)                          \
+#define SPRITE_ROWS(NAME, ATTR, SPAN_COV, SPAN_ADD, SPAN_ADD16, SPAN_OVER, OVER_KIND)                          \
     static ATTR void NAME(const isk_canvas *c, const isk_sprite *s, const placement *pl, isk_color col, \
                           int kind, isk_blend mode)                                                  \
     {                                                                                                \
         if (kind == SRC_INC_ADD)                                                                     \
-            draw_rows(c, s, pl, col, SRC_INC_ADD, ISK_BLEND_ADD, SPAN_COV, SPAN_ADD, SPAN_OVER);     \
+            draw_rows(c, s, pl, col, SRC_INC_ADD, ISK_BLEND_ADD, SPAN_COV, SPAN_ADD, SPAN_ADD16, SPAN_OVER);     \
         else if (kind == SRC_INC_OVER)                                                               \
-            draw_rows(c, s, pl, col, OVER_KIND, ISK_BLEND_OVER, SPAN_COV, SPAN_ADD, SPAN_OVER);      \
+            draw_rows(c, s, pl, col, OVER_KIND, ISK_BLEND_OVER, SPAN_COV, SPAN_ADD, SPAN_ADD16, SPAN_OVER);      \
         else if (mode == ISK_BLEND_ADD)                                                              \
-            draw_rows(c, s, pl, col, SRC_MASK, ISK_BLEND_ADD, SPAN_COV, SPAN_ADD, SPAN_OVER);        \
+            draw_rows(c, s, pl, col, SRC_MASK, ISK_BLEND_ADD, SPAN_COV, SPAN_ADD, SPAN_ADD16, SPAN_OVER);        \
         else if (mode == ISK_BLEND_OVER)                                                             \
-            draw_rows(c, s, pl, col, SRC_MASK, ISK_BLEND_OVER, SPAN_COV, SPAN_ADD, SPAN_OVER);       \
+            draw_rows(c, s, pl, col, SRC_MASK, ISK_BLEND_OVER, SPAN_COV, SPAN_ADD, SPAN_ADD16, SPAN_OVER);       \
         else                                                                                         \
-            draw_rows(c, s, pl, col, SRC_MASK, ISK_BLEND_REPLACE, SPAN_COV, SPAN_ADD, SPAN_OVER);    \
+            draw_rows(c, s, pl, col, SRC_MASK, ISK_BLEND_REPLACE, SPAN_COV, SPAN_ADD, SPAN_ADD16, SPAN_OVER);    \
     }
 
-SPRITE_ROWS(rows_base, , isk__span_cov, isk__span_add_bytes, NULL, SRC_MASK)
+SPRITE_ROWS(rows_base, , isk__span_cov, isk__span_add_bytes, isk__span_add_bytes16, NULL, SRC_MASK)
 #if ISK__SPAN_AVX2
-SPRITE_ROWS(rows_avx2, ISK__AVX2_FN, isk__span_cov_avx2, isk__span_add_bytes_avx2, isk__span_over_inc_avx2,
-            SRC_INC_OVER)
+SPRITE_ROWS(rows_avx2, ISK__AVX2_FN, isk__span_cov_avx2, isk__span_add_bytes_avx2, isk__span_add_bytes16_avx2,
+            isk__span_over_inc_avx2, SRC_INC_OVER)
 #endif
 
 static void rows(const isk_canvas *c, const isk_sprite *s, const placement *pl, isk_color col, int kind,
