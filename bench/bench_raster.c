@@ -8,8 +8,8 @@
  * Every variant draws the same precomputed random items onto an 800x600
  * opaque canvas (refilled, untimed, before each pass); passes of all
  * variants are interleaved and each figure is the fastest of REPS passes
- * (the median beside it), so the ratios printed are measured in one run
- * under the same load.  Single pixels are also compared with their own
+ * (the median beside it) in thread CPU time (bench_cpu_now), so the ratios
+ * printed are measured in one run under the same load.  Single pixels are also compared with their own
  * floor: the same random pixels, one byte incremented.
  *
  *   build/bench/bench_raster [reps]
@@ -145,11 +145,6 @@ static void run_sprite(ctx *k, const variant *vr)
 
 /* ---- set-up ------------------------------------------------------------- */
 
-static double urand(unsigned long long *s)
-{
-    *s = *s * 6364136223846793005ull + 1442695040888963407ull;
-    return (double)(*s >> 11) * (1.0 / 9007199254740992.0);
-}
 
 static const char *mode_name(int b)
 {
@@ -178,17 +173,17 @@ int main(int argc, char **argv)
         return 1;
     unsigned long long seed = 12;
     for (long i = 0; i < NDOTS; i++) {
-        k.wx[i] = -4.0 + 8.0 * urand(&seed);
-        k.wy[i] = -3.0 + 6.0 * urand(&seed);
+        k.wx[i] = -4.0 + 8.0 * bench_urand(&seed);
+        k.wy[i] = -3.0 + 6.0 * bench_urand(&seed);
     }
     for (long i = 0; i < NPIX; i++) {
-        k.px[i] = (int)(urand(&seed) * W);
-        k.py[i] = (int)(urand(&seed) * H);
+        k.px[i] = (int)(bench_urand(&seed) * W);
+        k.py[i] = (int)(bench_urand(&seed) * H);
         isk_view_to_world(&k.v, k.px[i] + 0.5, k.py[i] + 0.5, &k.pwx[i], &k.pwy[i]);
     }
     for (long i = 0; i < NSPR; i++) {
-        k.cx[i] = urand(&seed) * W;
-        k.cy[i] = urand(&seed) * H;
+        k.cx[i] = bench_urand(&seed) * W;
+        k.cy[i] = bench_urand(&seed) * H;
     }
     for (int kind = 0; kind < 3; kind++)
         for (int d = 0; d < 3; d++)
@@ -232,9 +227,9 @@ int main(int argc, char **argv)
     for (int rep = 0; rep < reps; rep++)
         for (int i = 0; i < nv; i++) {
             isk_canvas_fill(&k.c, isk_rgba(20, 30, 40, 255));
-            double t0 = bench_now();
+            double t0 = bench_cpu_now();
             vs[i].run(&k, &vs[i]);
-            vs[i].t[rep] = bench_now() - t0;
+            vs[i].t[rep] = bench_cpu_now() - t0;
         }
     for (int i = 0; i < nv; i++) {
         vs[i].med = bench_median(vs[i].t, reps) * 1e9 / (double)vs[i].items; /* sorts t */

@@ -5,8 +5,9 @@
  * Every library draws the same items (same random positions, same colour
  * (255,180,60,200), same blend: over or add) onto its own 800x600 opaque
  * canvas in its own pixel format; passes of all libraries are interleaved
- * and each figure is the fastest of REPS passes (the machine is shared and
- * interference only slows a pass down; the median is printed at the end of
+ * and each figure is the fastest of REPS passes in thread CPU time
+ * (bench_cpu_now; the machine is shared and interference only slows a pass
+ * down; the median is printed at the end of
  * each row for iskra and the reference peer, to show the spread).  Peers get screen
  * coordinates; iskra's batched dot also does the world->screen transform.
  * Sprites: every library blits the same S x S coverage mask (iskra's baked
@@ -101,11 +102,6 @@ typedef struct items {
     int n;             /* how many of them a pass draws */
 } items;
 
-static double urand(unsigned long long *s)
-{
-    *s = *s * 6364136223846793005ull + 1442695040888963407ull;
-    return (double)(*s >> 11) * (1.0 / 9007199254740992.0);
-}
 
 /* ---- primitives --------------------------------------------------------- */
 
@@ -326,7 +322,7 @@ static void grid_items(items *g, const prim *p)
     unsigned long long seed = 99;
     for (int i = 0; i < 48; i++) {
         double ox = 8 + (i % 8) * pitch, oy = 8 + (i / 8) * pitch;
-        double fx = urand(&seed), fy = urand(&seed);
+        double fx = bench_urand(&seed), fy = bench_urand(&seed);
         g->dx[i] = ox + fx;
         g->dy[i] = oy + fy;
         isk_view_to_world(&g->view, g->dx[i], g->dy[i], &g->wx[i], &g->wy[i]);
@@ -392,13 +388,13 @@ int main(int argc, char **argv)
     }
     unsigned long long seed = 12;
     for (int i = 0; i < nmax; i++) {
-        it.wx[i] = -4.0 + 8.0 * urand(&seed);
-        it.wy[i] = -3.0 + 6.0 * urand(&seed);
+        it.wx[i] = -4.0 + 8.0 * bench_urand(&seed);
+        it.wy[i] = -3.0 + 6.0 * bench_urand(&seed);
         isk_view_to_screen(&it.view, it.wx[i], it.wy[i], &it.dx[i], &it.dy[i]);
-        it.px[i] = (int)(urand(&seed) * W);
-        it.py[i] = (int)(urand(&seed) * H);
-        it.cx[i] = 20 + urand(&seed) * (W - 40);
-        it.cy[i] = 20 + urand(&seed) * (H - 40);
+        it.px[i] = (int)(bench_urand(&seed) * W);
+        it.py[i] = (int)(bench_urand(&seed) * H);
+        it.cx[i] = 20 + bench_urand(&seed) * (W - 40);
+        it.cy[i] = 20 + bench_urand(&seed) * (H - 40);
     }
 
     /* the primitives */
@@ -469,9 +465,9 @@ int main(int argc, char **argv)
                 if (!prim_has(p, l))
                     continue;
                 fill_opaque(&k, l, 0);
-                double t0 = bench_now();
+                double t0 = bench_cpu_now();
                 draw(&k, &it, p, l, COL);
-                t[l][rep] = bench_now() - t0;
+                t[l][rep] = bench_cpu_now() - t0;
             }
         printf("%-30s", name);
         for (int l = 0; l < NLIB; l++) {

@@ -176,9 +176,9 @@ static inline int place(const isk_canvas *c, const isk_sprite *s, double cx, dou
 }
 
 /* Rows of a sprite are a canvas stride apart, too far for the hardware
- * prefetcher: the first rows are requested at once, later ones ROW_AHEAD
- * rows before they are blended (sprites wholly on the canvas; clipped ones
- * are rare). */
+ * prefetcher: both ends of the first ROW_AHEAD rows are requested at once
+ * (sprites wholly on the canvas; clipped ones are rare).  Requests inside
+ * the row loop were tried and cost more than they saved. */
 #define ROW_AHEAD 6
 
 /* The sprite's rows, each one span of the mask blended by the row kernels
@@ -216,10 +216,7 @@ static ISK__INLINE void draw_rows(const isk_canvas *c, const isk_sprite *s, cons
         for (int j = 0; j < S; j++, drow += stride, src += unit * (size_t)S) {
             int b = span[2 * j], n = span[2 * j + 1] - b;
 #if defined(__GNUC__)
-            if (j + ROW_AHEAD < S) {
-                __builtin_prefetch(drow + ROW_AHEAD * stride + 4u * span[2 * (j + ROW_AHEAD)], 1);
-                __builtin_prefetch(drow + ROW_AHEAD * stride + 4u * span[2 * (j + ROW_AHEAD) + 1] - 1, 1);
-            }
+
 #endif
             if (src_kind == SRC_INC_ADD && !(n & 3))
                 span_add16(drow + 4 * b, src + 4 * b, 4 * n); /* padded: whole 16-byte steps */
