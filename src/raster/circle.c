@@ -202,21 +202,18 @@ static inline double strip_cached(double a, double ha, double b, double hb, cons
     return e->y < 0.0 ? -v : v;
 }
 
-/* Coverage of pixel i of the row (edges e0, e1), or -1 when it is wholly
- * inside the disc. */
-static ISK__INLINE int pixel_cov(int i, double cx, double r2, double fy, double ny, int shared, int j, int i0g,
-                                 const double *ca, const double *ha, const double *cb, const double *hb,
-                                 const edge_y *e0, const edge_y *e1, double *sprev, int *srow)
+/* Coverage of the pixel in column k of the row (edges e0, e1), or -1 when
+ * it is wholly inside the disc.  fx2[k], nx2[k] are the column's squared
+ * far and near distances (fx*fx, nx*nx of the per-pixel walk, computed once
+ * per column), fy2, ny2 the row's. */
+static ISK__INLINE int pixel_cov(int k, double r2, double fy2, double ny2, int shared, int j, const double *fx2,
+                                 const double *nx2, const double *ca, const double *ha, const double *cb,
+                                 const double *hb, const edge_y *e0, const edge_y *e1, double *sprev, int *srow)
 {
-    double x0 = i - cx, x1 = x0 + 1.0;
-    double ax0 = fabs(x0), ax1 = fabs(x1); /* fmin/fmax without NaN: no libm call */
-    double nx = (x0 <= 0.0 && x1 >= 0.0) ? 0.0 : (ax0 < ax1 ? ax0 : ax1);
-    double fx = ax0 > ax1 ? ax0 : ax1;
-    if (fx * fx + fy * fy <= r2)
+    if (fx2[k] + fy2 <= r2)
         return -1;
-    if (nx * nx + ny * ny >= r2)
+    if (nx2[k] + ny2 >= r2)
         return 0;
-    int k = i - i0g;
     double s1 = strip_cached(ca[k], ha[k], cb[k], hb[k], e1);
     double s0 = shared && srow[k] == j - 1 ? sprev[k] : strip_cached(ca[k], ha[k], cb[k], hb[k], e0);
     sprev[k] = s1;
@@ -242,9 +239,14 @@ static ISK__INLINE void fill_circle_aa_rows(isk_canvas *c, double cx, double cy,
 #endif
     /* per column: clamped edges and their integrals */
     const int ncol = i1g - i0g + 1;
-    double ca[ROW_CACHE], cb[ROW_CACHE], ha[ROW_CACHE], hb[ROW_CACHE];
+    double ca[ROW_CACHE], cb[ROW_CACHE], ha[ROW_CACHE], hb[ROW_CACHE], fx2[ROW_CACHE], nx2[ROW_CACHE];
     for (int k = 0; k < ncol; k++) {
         double x0 = (i0g + k) - cx, x1 = x0 + 1.0;
+        double ax0 = fabs(x0), ax1 = fabs(x1); /* fmin/fmax without NaN: no libm call */
+        double nx = (x0 <= 0.0 && x1 >= 0.0) ? 0.0 : (ax0 < ax1 ? ax0 : ax1);
+        double fx = ax0 > ax1 ? ax0 : ax1;
+        fx2[k] = fx * fx;
+        nx2[k] = nx * nx;
         ca[k] = isk__clampd(x0, -r, r);
         cb[k] = isk__clampd(x1, -r, r);
         ha[k] = k > 0 && ca[k] == cb[k - 1] ? hb[k - 1] : h_integral(ca[k], r);
@@ -291,9 +293,10 @@ static ISK__INLINE void fill_circle_aa_rows(isk_canvas *c, double cx, double cy,
          * and a rising function), so the full pixels of a row are one run:
          * the edge pixels are classified from each end inward until a full
          * one, and the run between is set at once. */
+        const double fy2 = fy * fy, ny2 = ny * ny;
         int i = i0;
         for (; i <= i1; i++) {
-            int v = pixel_cov(i, cx, r2, fy, ny, shared, j, i0g, ca, ha, cb, hb, &e0, &e1, sprev, srow);
+            int v = pixel_cov(i - i0g, r2, fy2, ny2, shared, j, fx2, nx2, ca, ha, cb, hb, &e0, &e1, sprev, srow);
             if (v < 0)
                 break;
             cov[i - i0] = (uint8_t)v;
@@ -308,7 +311,7 @@ static ISK__INLINE void fill_circle_aa_rows(isk_canvas *c, double cx, double cy,
             for (int k = i - i0; k <= i1 - i0; k += 16)
                 memcpy(cov + k, full16, 16);
             for (int b = i1; b > i; b--) {
-                int v = pixel_cov(b, cx, r2, fy, ny, shared, j, i0g, ca, ha, cb, hb, &e0, &e1, sprev, srow);
+                int v = pixel_cov(b - i0g, r2, fy2, ny2, shared, j, fx2, nx2, ca, ha, cb, hb, &e0, &e1, sprev, srow);
                 if (v < 0)
                     break;
                 cov[b - i0] = (uint8_t)v;
