@@ -204,7 +204,7 @@ PEER_OBJ  := $(BUILD)/obj/bench/bench_peers/bench_peers.o $(BUILD)/obj/bench/ben
 .PHONY: bench-peers peer-deps peer-run
 bench: bench-peers
 peer-deps: deps
-	@sh tools/deps.sh $(PEER_PKGS) || echo "bench_peers: could not install$(foreach p,$(PEER_PKGS), $(p))"
+	@sh tools/deps.sh $(PEER_PKGS) || echo "bench_peers: could not install $(PEER_PKGS)"
 bench-peers: peer-deps
 	@$(MAKE) --no-print-directory peer-run
 ifeq ($(PEER_OK),1)
@@ -227,7 +227,7 @@ peer-run: $(PEER_BIN)
 	@echo "== $(PEER_BIN)"; $(PEER_BIN)
 else
 peer-run:
-	@echo "== bench_peers: skipped (needs the Debian packages$(foreach p,$(PEER_PKGS), $(p)))"
+	@echo "== bench_peers: skipped (needs the Debian packages $(PEER_PKGS))"
 endif
 
 # ---- fuzzing (clang + libFuzzer) -------------------------------------------
