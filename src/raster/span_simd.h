@@ -45,10 +45,23 @@
 #endif
 
 #if ISK__SPAN_SSE2
+/* The kernels' constants made opaque to the compiler (an empty asm that
+ * "changes" them): GCC would otherwise rebuild each broadcast (move, movd,
+ * broadcast: a shuffle-port operation) inside every loop step; this way it
+ * builds them once and keeps them in registers. */
+static ISK__INLINE __m128i isk__s_keep(__m128i v)
+{
+    __asm__("" : "+x"(v));
+    return v;
+}
+#define ISK__K128 isk__s_keep(_mm_set1_epi16(128))
+#define ISK__K257 isk__s_keep(_mm_set1_epi16(257))
+#define ISK__K255 isk__s_keep(_mm_set1_epi16(255))
+
 /* div255 in each 16-bit lane (x <= 255*255): high half of (x + 128) * 257. */
 static ISK__INLINE __m128i isk__s_div255(__m128i x)
 {
-    return _mm_mulhi_epu16(_mm_add_epi16(x, _mm_set1_epi16(128)), _mm_set1_epi16(257));
+    return _mm_mulhi_epu16(_mm_add_epi16(x, ISK__K128), ISK__K257);
 }
 
 /* a' = div255(ca * cov) of 4 pixels in lanes 0..3 (ca = 255: a' = cov). */
@@ -88,7 +101,7 @@ static ISK__INLINE int isk__s4_over_opaque_aa(uint8_t *d, __m128i a01, __m128i a
     __m128i v = _mm_loadu_si128((const __m128i *)(const void *)d);
     if ((_mm_movemask_epi8(_mm_cmpeq_epi8(v, _mm_set1_epi8(-1))) & 0x8888) != 0x8888)
         return 0;
-    const __m128i z = _mm_setzero_si128(), k255 = _mm_set1_epi16(255);
+    const __m128i z = _mm_setzero_si128(), k255 = ISK__K255;
     __m128i lo = _mm_add_epi16(_mm_mullo_epi16(_mm_unpacklo_epi8(v, z), _mm_sub_epi16(k255, a01)),
                                _mm_mullo_epi16(C, a01));
     __m128i hi = _mm_add_epi16(_mm_mullo_epi16(_mm_unpackhi_epi8(v, z), _mm_sub_epi16(k255, a23)),
@@ -120,9 +133,18 @@ static inline int isk__have_avx2(void)
     return __builtin_cpu_supports("avx2");
 }
 
+static ISK__INLINE ISK__AVX2_FN __m256i isk__a_keep(__m256i v)
+{
+    __asm__("" : "+x"(v));
+    return v;
+}
+#define ISK__K128Y isk__a_keep(_mm256_set1_epi16(128))
+#define ISK__K257Y isk__a_keep(_mm256_set1_epi16(257))
+#define ISK__K255Y isk__a_keep(_mm256_set1_epi16(255))
+
 static ISK__INLINE ISK__AVX2_FN __m256i isk__a_div255(__m256i x)
 {
-    return _mm256_mulhi_epu16(_mm256_add_epi16(x, _mm256_set1_epi16(128)), _mm256_set1_epi16(257));
+    return _mm256_mulhi_epu16(_mm256_add_epi16(x, ISK__K128Y), ISK__K257Y);
 }
 
 /* a' of 8 pixels spread over their channels: lo = [a0 x4 a1 x4 | a4 x4 a5 x4],
@@ -131,8 +153,7 @@ static ISK__INLINE ISK__AVX2_FN void isk__a_alpha8(const uint8_t *cov, uint32_t 
 {
     __m128i A = _mm_unpacklo_epi8(_mm_loadl_epi64((const __m128i *)(const void *)cov), _mm_setzero_si128());
     if (ca != 255u)
-        A = _mm_mulhi_epu16(_mm_add_epi16(_mm_mullo_epi16(A, _mm_set1_epi16((short)ca)), _mm_set1_epi16(128)),
-                            _mm_set1_epi16(257));
+        A = _mm_mulhi_epu16(_mm_add_epi16(_mm_mullo_epi16(A, _mm_set1_epi16((short)ca)), ISK__K128), ISK__K257);
     __m128i t = _mm_unpacklo_epi16(A, A), u = _mm_unpackhi_epi16(A, A);
     __m256i T = _mm256_inserti128_si256(_mm256_castsi128_si256(t), u, 1);
     *lo = _mm256_unpacklo_epi32(T, T);
@@ -152,7 +173,7 @@ static ISK__INLINE ISK__AVX2_FN int isk__a8_over_opaque(uint8_t *d, __m256i lo, 
     __m256i v = _mm256_loadu_si256((const __m256i *)(const void *)d);
     if (((unsigned)_mm256_movemask_epi8(_mm256_cmpeq_epi8(v, _mm256_set1_epi8(-1))) & 0x88888888u) != 0x88888888u)
         return 0;
-    const __m256i z = _mm256_setzero_si256(), k255 = _mm256_set1_epi16(255);
+    const __m256i z = _mm256_setzero_si256(), k255 = ISK__K255Y;
     __m256i xl = _mm256_add_epi16(_mm256_mullo_epi16(_mm256_unpacklo_epi8(v, z), _mm256_sub_epi16(k255, lo)),
                                   _mm256_mullo_epi16(C, lo));
     __m256i xh = _mm256_add_epi16(_mm256_mullo_epi16(_mm256_unpackhi_epi8(v, z), _mm256_sub_epi16(k255, hi)),
