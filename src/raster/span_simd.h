@@ -454,41 +454,99 @@ static ISK__INLINE ISK__AVX2_FN void isk__span_add_bytes_avx2(uint8_t *d, const 
  * of each pixel's increments is its a' (iskra/sprite.h), spread over the
  * four channels by one byte shuffle; out = div255(c a' + d (255 - a')) on
  * opaque destinations, isk__px_over with alpha a' elsewhere (the same as
- * isk__px_cov with the mask byte, whose a' this is). */
-static ISK__INLINE ISK__AVX2_FN void isk__span_over_inc_avx2(uint8_t *d, const uint8_t *inc, int n, isk_color col)
+ * isk__px_cov with the mask byte, whose a' this is).  The constants are
+ * built once per sprite (isk__over_k) and passed down. */
+typedef struct isk__over_k {
+    __m256i C, spread, z, k128, k257, k255;
+} isk__over_k;
+
+static ISK__INLINE ISK__AVX2_FN void isk__over_k_init(isk__over_k *k, isk_color col)
 {
-    const __m256i C = _mm256_setr_epi16(col.r, col.g, col.b, 255, col.r, col.g, col.b, 255, col.r, col.g, col.b,
-                                        255, col.r, col.g, col.b, 255);
-    const __m256i spread = _mm256_setr_epi8(3, 3, 3, 3, 7, 7, 7, 7, 11, 11, 11, 11, 15, 15, 15, 15, 3, 3, 3, 3, 7, 7,
-                                            7, 7, 11, 11, 11, 11, 15, 15, 15, 15);
-    const __m256i z = _mm256_setzero_si256();
-    int i = 0;
-    for (; i + 8 <= n; i += 8) {
-        __m256i aa = _mm256_shuffle_epi8(_mm256_loadu_si256((const __m256i *)(const void *)(inc + 4 * i)), spread);
-        __m256i lo = _mm256_unpacklo_epi8(aa, z), hi = _mm256_unpackhi_epi8(aa, z);
-        if (!isk__a8_over_opaque(d + 4 * i, lo, hi, C))
-            for (int k = i; k < i + 8; k++) {
-                isk_color s = col;
-                s.a = inc[4 * k + 3];
-                isk__px_over(d + 4 * k, s);
-            }
-    }
-    for (; i + 4 <= n; i += 4) {
-        const __m128i spread4 = _mm_setr_epi8(3, 3, 3, 3, 7, 7, 7, 7, 11, 11, 11, 11, 15, 15, 15, 15);
-        __m128i aa = _mm_shuffle_epi8(_mm_loadu_si128((const __m128i *)(const void *)(inc + 4 * i)), spread4);
-        __m128i zz = _mm_setzero_si128();
-        if (!isk__s4_over_opaque_aa(d + 4 * i, _mm_unpacklo_epi8(aa, zz), _mm_unpackhi_epi8(aa, zz),
-                                    _mm256_castsi256_si128(C)))
-            for (int k = i; k < i + 4; k++) {
-                isk_color s = col;
-                s.a = inc[4 * k + 3];
-                isk__px_over(d + 4 * k, s);
-            }
-    }
-    for (; i < n; i++) {
+    k->C = isk__a_keep(_mm256_setr_epi16(col.r, col.g, col.b, 255, col.r, col.g, col.b, 255, col.r, col.g, col.b, 255,
+                                         col.r, col.g, col.b, 255));
+    k->spread = isk__a_keep(_mm256_setr_epi8(3, 3, 3, 3, 7, 7, 7, 7, 11, 11, 11, 11, 15, 15, 15, 15, 3, 3, 3, 3, 7, 7,
+                                             7, 7, 11, 11, 11, 11, 15, 15, 15, 15));
+    k->z = _mm256_setzero_si256();
+    k->k128 = ISK__K128Y;
+    k->k257 = ISK__K257Y;
+    k->k255 = ISK__K255Y;
+}
+
+/* 16 lanes of 16-bit x <= 255*255 -> div255, with the kept constants */
+#define ISK__A_DIV255K(x, k) _mm256_mulhi_epu16(_mm256_add_epi16((x), (k)->k128), (k)->k257)
+#define ISK__S_DIV255K(x, k) \
+    _mm_mulhi_epu16(_mm_add_epi16((x), _mm256_castsi256_si128((k)->k128)), _mm256_castsi256_si128((k)->k257))
+
+static ISK__INLINE ISK__AVX2_FN void isk__over_inc_fallback(uint8_t *d, const uint8_t *inc, int n, isk_color col)
+{
+    for (int i = 0; i < n; i++) {
         isk_color s = col;
         s.a = inc[4 * i + 3];
         isk__px_over(d + 4 * i, s);
+    }
+}
+
+static ISK__INLINE ISK__AVX2_FN void isk__over_inc_row_k(uint8_t *d, const uint8_t *inc, int n, isk_color col,
+                                                         const isk__over_k *k)
+{
+    int i = 0;
+    for (; i + 8 <= n; i += 8) {
+        __m256i v = _mm256_loadu_si256((const __m256i *)(const void *)(d + 4 * i));
+        if (((unsigned)_mm256_movemask_epi8(_mm256_cmpeq_epi8(v, _mm256_cmpeq_epi8(k->z, k->z))) & 0x88888888u) !=
+            0x88888888u) {
+            isk__over_inc_fallback(d + 4 * i, inc + 4 * i, 8, col);
+            continue;
+        }
+        __m256i aa = _mm256_shuffle_epi8(_mm256_loadu_si256((const __m256i *)(const void *)(inc + 4 * i)), k->spread);
+        __m256i lo = _mm256_unpacklo_epi8(aa, k->z), hi = _mm256_unpackhi_epi8(aa, k->z);
+        __m256i xl = _mm256_add_epi16(_mm256_mullo_epi16(_mm256_unpacklo_epi8(v, k->z), _mm256_sub_epi16(k->k255, lo)),
+                                      _mm256_mullo_epi16(k->C, lo));
+        __m256i xh = _mm256_add_epi16(_mm256_mullo_epi16(_mm256_unpackhi_epi8(v, k->z), _mm256_sub_epi16(k->k255, hi)),
+                                      _mm256_mullo_epi16(k->C, hi));
+        _mm256_storeu_si256((__m256i *)(void *)(d + 4 * i),
+                            _mm256_packus_epi16(ISK__A_DIV255K(xl, k), ISK__A_DIV255K(xh, k)));
+    }
+    if (i + 4 <= n) { /* the same for one 4-pixel step, in the low halves */
+        const __m128i z = _mm256_castsi256_si128(k->z);
+        __m128i v = _mm_loadu_si128((const __m128i *)(const void *)(d + 4 * i));
+        if ((_mm_movemask_epi8(_mm_cmpeq_epi8(v, _mm_cmpeq_epi8(z, z))) & 0x8888) != 0x8888) {
+            isk__over_inc_fallback(d + 4 * i, inc + 4 * i, 4, col);
+        } else {
+            __m128i aa = _mm_shuffle_epi8(_mm_loadu_si128((const __m128i *)(const void *)(inc + 4 * i)),
+                                          _mm256_castsi256_si128(k->spread));
+            __m128i lo = _mm_unpacklo_epi8(aa, z), hi = _mm_unpackhi_epi8(aa, z);
+            const __m128i C = _mm256_castsi256_si128(k->C), k255 = _mm256_castsi256_si128(k->k255);
+            __m128i xl = _mm_add_epi16(_mm_mullo_epi16(_mm_unpacklo_epi8(v, z), _mm_sub_epi16(k255, lo)),
+                                       _mm_mullo_epi16(C, lo));
+            __m128i xh = _mm_add_epi16(_mm_mullo_epi16(_mm_unpackhi_epi8(v, z), _mm_sub_epi16(k255, hi)),
+                                       _mm_mullo_epi16(C, hi));
+            _mm_storeu_si128((__m128i *)(void *)(d + 4 * i),
+                             _mm_packus_epi16(ISK__S_DIV255K(xl, k), ISK__S_DIV255K(xh, k)));
+        }
+        i += 4;
+    }
+    isk__over_inc_fallback(d + 4 * i, inc + 4 * i, n - i, col);
+}
+
+static ISK__INLINE ISK__AVX2_FN void isk__span_over_inc_avx2(uint8_t *d, const uint8_t *inc, int n, isk_color col)
+{
+    isk__over_k k;
+    isk__over_k_init(&k, col);
+    isk__over_inc_row_k(d, inc, n, col, &k);
+}
+
+/* Every row of a baked sprite wholly on the canvas, over: row j is at
+ * drow + j * stride, its increments at inc + j * inc_stride, its span
+ * [span[2j], span[2j+1]). */
+static ISK__INLINE ISK__AVX2_FN void isk__rows_over_inc_avx2(uint8_t *drow, size_t stride, const uint8_t *inc,
+                                                             size_t inc_stride, const uint16_t *span, int S,
+                                                             isk_color col)
+{
+    isk__over_k k;
+    isk__over_k_init(&k, col);
+    for (int j = 0; j < S; j++, drow += stride, inc += inc_stride) {
+        int b = span[2 * j];
+        isk__over_inc_row_k(drow + 4 * b, inc + 4 * b, span[2 * j + 1] - b, col, &k);
     }
 }
 #endif

@@ -190,6 +190,7 @@ static inline int place(const isk_canvas *c, const isk_sprite *s, double cx, dou
 typedef void (*span_cov_fn)(uint8_t *, const uint8_t *, int, isk_color, isk_blend);
 typedef void (*span_add_fn)(uint8_t *, const uint8_t *, int);
 typedef void (*span_over_fn)(uint8_t *, const uint8_t *, int, isk_color);
+typedef void (*rows_over_fn)(uint8_t *, size_t, const uint8_t *, size_t, const uint16_t *, int, isk_color);
 
 /* What a row blends: the mask in a colour, or the baked colour's premade
  * increments, added or (AVX2) taken as a' for source-over. */
@@ -197,7 +198,7 @@ enum { SRC_MASK, SRC_INC_ADD, SRC_INC_OVER };
 
 static ISK__INLINE void draw_rows(const isk_canvas *c, const isk_sprite *s, const placement *pl, isk_color col,
                                   int src_kind, isk_blend mode, span_cov_fn span_cov, span_add_fn span_add,
-                                  span_add_fn span_add16, span_over_fn span_over)
+                                  span_add_fn span_add16, span_over_fn span_over, rows_over_fn rows_over)
 {
     const int inc = src_kind != SRC_MASK;
     const int S = s->size;
@@ -206,6 +207,17 @@ static ISK__INLINE void draw_rows(const isk_canvas *c, const isk_sprite *s, cons
     if (pl->jb == 0 && pl->je == S && pl->ib == 0 && pl->ie == S) {
         /* wholly on the canvas: padded spans, no clipping, rows by pointer steps */
         const uint16_t *span = s->vspan[pl->p];
+        if (src_kind == SRC_INC_OVER && rows_over) { /* one call: constants built once per sprite */
+            uint8_t *d0 = c->pixels + (size_t)pl->y0 * stride + (size_t)pl->x0 * 4u;
+#if defined(__GNUC__)
+            for (int j = 0; j < S && j < ROW_AHEAD; j++) {
+                __builtin_prefetch(d0 + (size_t)j * stride + 4u * span[2 * j], 1);
+                __builtin_prefetch(d0 + (size_t)j * stride + 4u * span[2 * j + 1] - 1, 1);
+            }
+#endif
+            rows_over(d0, stride, src, 4u * (size_t)S, span, S, col);
+            return;
+        }
         /* Additive rows of a size that is a multiple of 4 are drawn whole
          * (adding zeros is harmless): every row then has the same length,
          * which the branch predictor keeps, where spans of four phases
@@ -260,26 +272,26 @@ static ISK__INLINE void draw_rows(const isk_canvas *c, const isk_sprite *s, cons
  * (additive, baked colour), SRC_INC_OVER = the baked colour over (taken from
  * the increments where the level has a kernel for it, else from the mask),
  * SRC_MASK = the mask in col with the given mode. */
-#define SPRITE_ROWS(NAME, ATTR, SPAN_COV, SPAN_ADD, SPAN_ADD16, SPAN_OVER, OVER_KIND)                          \
+#define SPRITE_ROWS(NAME, ATTR, SPAN_COV, SPAN_ADD, SPAN_ADD16, SPAN_OVER, ROWS_OVER, OVER_KIND)                          \
     static ATTR void NAME(const isk_canvas *c, const isk_sprite *s, const placement *pl, isk_color col, \
                           int kind, isk_blend mode)                                                  \
     {                                                                                                \
         if (kind == SRC_INC_ADD)                                                                     \
-            draw_rows(c, s, pl, col, SRC_INC_ADD, ISK_BLEND_ADD, SPAN_COV, SPAN_ADD, SPAN_ADD16, SPAN_OVER);     \
+            draw_rows(c, s, pl, col, SRC_INC_ADD, ISK_BLEND_ADD, SPAN_COV, SPAN_ADD, SPAN_ADD16, SPAN_OVER, ROWS_OVER);     \
         else if (kind == SRC_INC_OVER)                                                               \
-            draw_rows(c, s, pl, col, OVER_KIND, ISK_BLEND_OVER, SPAN_COV, SPAN_ADD, SPAN_ADD16, SPAN_OVER);      \
+            draw_rows(c, s, pl, col, OVER_KIND, ISK_BLEND_OVER, SPAN_COV, SPAN_ADD, SPAN_ADD16, SPAN_OVER, ROWS_OVER);      \
         else if (mode == ISK_BLEND_ADD)                                                              \
-            draw_rows(c, s, pl, col, SRC_MASK, ISK_BLEND_ADD, SPAN_COV, SPAN_ADD, SPAN_ADD16, SPAN_OVER);        \
+            draw_rows(c, s, pl, col, SRC_MASK, ISK_BLEND_ADD, SPAN_COV, SPAN_ADD, SPAN_ADD16, SPAN_OVER, ROWS_OVER);        \
         else if (mode == ISK_BLEND_OVER)                                                             \
-            draw_rows(c, s, pl, col, SRC_MASK, ISK_BLEND_OVER, SPAN_COV, SPAN_ADD, SPAN_ADD16, SPAN_OVER);       \
+            draw_rows(c, s, pl, col, SRC_MASK, ISK_BLEND_OVER, SPAN_COV, SPAN_ADD, SPAN_ADD16, SPAN_OVER, ROWS_OVER);       \
         else                                                                                         \
-            draw_rows(c, s, pl, col, SRC_MASK, ISK_BLEND_REPLACE, SPAN_COV, SPAN_ADD, SPAN_ADD16, SPAN_OVER);    \
+            draw_rows(c, s, pl, col, SRC_MASK, ISK_BLEND_REPLACE, SPAN_COV, SPAN_ADD, SPAN_ADD16, SPAN_OVER, ROWS_OVER);    \
     }
 
-SPRITE_ROWS(rows_base, , isk__span_cov, isk__span_add_bytes, isk__span_add_bytes16, NULL, SRC_MASK)
+SPRITE_ROWS(rows_base, , isk__span_cov, isk__span_add_bytes, isk__span_add_bytes16, NULL, NULL, SRC_MASK)
 #if ISK__SPAN_AVX2
 SPRITE_ROWS(rows_avx2, ISK__AVX2_FN, isk__span_cov_avx2, isk__span_add_bytes_avx2, isk__span_add_bytes16_avx2,
-            isk__span_over_inc_avx2, SRC_INC_OVER)
+            isk__span_over_inc_avx2, isk__rows_over_inc_avx2, SRC_INC_OVER)
 #endif
 
 static void rows(const isk_canvas *c, const isk_sprite *s, const placement *pl, isk_color col, int kind,
