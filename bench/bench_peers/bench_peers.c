@@ -5,7 +5,8 @@
  * Every library draws the same items (same random positions, same colour
  * (255,180,60,200), same blend: over or add) onto its own 800x600 opaque
  * canvas in its own pixel format; passes of all libraries are interleaved
- * and each figure is the fastest of REPS passes in thread CPU time
+ * (the repetitions outermost, over all primitives) and each figure is the
+ * fastest of REPS passes in thread CPU time
  * (bench_cpu_now; the machine is shared and interference only slows a pass
  * down; the median is printed at the end of
  * each row for iskra and the reference peer, to show the spread).  Peers get screen
@@ -46,7 +47,7 @@
 #include "iskra/view.h"
 #include "peer_agg.h"
 
-enum { W = 800, H = 600, NDOT = 1 << 16, NPIX = 1 << 16, NDISC = 1 << 11, NSPR = 1 << 11, MAXREP = 31 };
+enum { W = 800, H = 600, NDOT = 1 << 17, NPIX = 1 << 17, NDISC = 1 << 12, NSPR = 1 << 13, MAXREP = 31 };
 enum { LIB_ISKRA, LIB_ISKRA_CALL, LIB_CAIRO, LIB_PIXMAN, LIB_AGG, LIB_SDL, NLIB };
 static const char *LIB_NAME[NLIB] = {"iskra", "iskra/call", "cairo", "pixman", "AGG", "SDL2"};
 
@@ -429,6 +430,41 @@ int main(int argc, char **argv)
     for (int l = 0; l < NLIB; l++)
         printf(" %10s", LIB_NAME[l]);
     printf("   %-28s %s\n", "iskra / peer", "same work (px per item; iskra, then peers)");
+    /* Every primitive's same-work check first, then the timed passes: the
+     * repetitions are the outer loop, so each primitive's passes are spread
+     * over the whole run and a burst of load elsewhere on the machine
+     * cannot spoil all of them. */
+    static double area[64][NLIB], t[64][NLIB][MAXREP];
+    for (int pi = 0; pi < np; pi++) {
+        prim *p = &ps[pi];
+        grid_items(&grid, p);
+        for (int l = 0; l < NLIB; l++) {
+            if (!prim_has(p, l))
+                continue;
+            fill_opaque(&k, l, 1);
+            draw(&k, &grid, p, l, WHITE);
+            area[pi][l] = area_of(&k, l) / grid.n;
+        }
+    }
+    for (int rep = 0; rep < reps; rep++)
+        for (int pi = 0; pi < np; pi++) {
+            prim *p = &ps[pi];
+            /* sprites at integer top-left for the peers */
+            it.n = p->kind == P_DOT ? NDOT : p->kind == P_PIXEL ? NPIX : p->kind == P_DISC ? NDISC : NSPR;
+            if (p->kind == P_SPRITE)
+                for (int i = 0; i < it.n; i++) {
+                    it.sx[i] = (int)floor(it.cx[i] - p->S / 2.0);
+                    it.sy[i] = (int)floor(it.cy[i] - p->S / 2.0);
+                }
+            for (int l = 0; l < NLIB; l++) {
+                if (!prim_has(p, l))
+                    continue;
+                fill_opaque(&k, l, 0);
+                double t0 = bench_cpu_now();
+                draw(&k, &it, p, l, COL);
+                t[pi][l][rep] = bench_cpu_now() - t0;
+            }
+        }
     int bad = 0;
     for (int pi = 0; pi < np; pi++) {
         prim *p = &ps[pi];
@@ -442,56 +478,31 @@ int main(int argc, char **argv)
                      p->add ? "add" : "over");
             break;
         }
-        /* same work */
-        grid_items(&grid, p);
-        double area[NLIB] = {0};
-        for (int l = 0; l < NLIB; l++) {
-            if (!prim_has(p, l))
-                continue;
-            fill_opaque(&k, l, 1);
-            draw(&k, &grid, p, l, WHITE);
-            area[l] = area_of(&k, l) / grid.n;
-        }
-        /* timing: sprites at integer top-left for the peers */
-        it.n = p->kind == P_DOT ? NDOT : p->kind == P_PIXEL ? NPIX : p->kind == P_DISC ? NDISC : NSPR;
-        if (p->kind == P_SPRITE)
-            for (int i = 0; i < it.n; i++) {
-                it.sx[i] = (int)floor(it.cx[i] - p->S / 2.0);
-                it.sy[i] = (int)floor(it.cy[i] - p->S / 2.0);
-            }
-        double t[NLIB][MAXREP], med[NLIB], mid[NLIB];
-        for (int rep = 0; rep < reps; rep++)
-            for (int l = 0; l < NLIB; l++) {
-                if (!prim_has(p, l))
-                    continue;
-                fill_opaque(&k, l, 0);
-                double t0 = bench_cpu_now();
-                draw(&k, &it, p, l, COL);
-                t[l][rep] = bench_cpu_now() - t0;
-            }
+        const int n = p->kind == P_DOT ? NDOT : p->kind == P_PIXEL ? NPIX : p->kind == P_DISC ? NDISC : NSPR;
+        double med[NLIB], mid[NLIB];
         printf("%-30s", name);
         for (int l = 0; l < NLIB; l++) {
             if (!prim_has(p, l)) {
                 printf(" %10s", "-");
                 continue;
             }
-            mid[l] = bench_median(t[l], reps) * 1e9 / it.n; /* sorts: t[l][0] is the fastest */
-            med[l] = t[l][0] * 1e9 / it.n;
+            mid[l] = bench_median(t[pi][l], reps) * 1e9 / n; /* sorts: t[pi][l][0] is the fastest */
+            med[l] = t[pi][l][0] * 1e9 / n;
             printf(" %10.1f", med[l]);
         }
         /* the ratio the target is stated against */
         int ref = p->kind == P_SPRITE ? LIB_PIXMAN : LIB_AGG;
         printf("   %-6s %5.2fx (median %4.2fx)", LIB_NAME[ref], med[LIB_ISKRA] / med[ref], mid[LIB_ISKRA] / mid[ref]);
         double tol = p->kind == P_DISC ? 0.02 + 0.12 / p->r : 0.02;
-        printf(" %.3g", area[LIB_ISKRA]);
+        printf(" %.3g", area[pi][LIB_ISKRA]);
         for (int l = 0; l < NLIB; l++) {
             if (l == LIB_ISKRA || !prim_has(p, l))
                 continue;
             int compared = !(p->kind == P_DISC && l == LIB_SDL) && !(p->kind == P_PIXEL && l == LIB_SDL);
-            double rel = fabs(area[l] - area[LIB_ISKRA]) / area[LIB_ISKRA];
+            double rel = fabs(area[pi][l] - area[pi][LIB_ISKRA]) / area[pi][LIB_ISKRA];
             int ok = !compared || rel <= tol;
             bad |= !ok;
-            printf(" %s %.3g%s", LIB_NAME[l], area[l], !compared ? "(aliased)" : ok ? "" : " DIFFERS");
+            printf(" %s %.3g%s", LIB_NAME[l], area[pi][l], !compared ? "(aliased)" : ok ? "" : " DIFFERS");
         }
         printf("\n");
     }
