@@ -54,6 +54,22 @@ static ISK__INLINE uint8_t isk__sat_add(uint32_t a, uint32_t b)
     return (uint8_t)(s > 255u ? 255u : s);
 }
 
+/* Source-over onto a translucent pixel: the division by the output alpha.
+ * Out of line (and marked cold) so the common opaque path stays short. */
+#if defined(__GNUC__)
+__attribute__((noinline, cold, unused))
+#endif
+static void isk__px_over_general(uint8_t *d, isk_color s, uint32_t sa, uint32_t da, uint32_t inv)
+{
+    uint32_t wd = da * inv;              /* destination weight, scaled by 255 */
+    uint32_t A = 255u * sa + wd;         /* 255 * output alpha */
+    uint32_t half = A / 2u;
+    d[0] = (uint8_t)((255u * s.r * sa + d[0] * wd + half) / A);
+    d[1] = (uint8_t)((255u * s.g * sa + d[1] * wd + half) / A);
+    d[2] = (uint8_t)((255u * s.b * sa + d[2] * wd + half) / A);
+    d[3] = (uint8_t)isk_div255(A);
+}
+
 /* Source-over on straight colour (iskra/blend.h). */
 static ISK__INLINE void isk__px_over(uint8_t *d, isk_color s)
 {
@@ -71,7 +87,9 @@ static ISK__INLINE void isk__px_over(uint8_t *d, isk_color s)
 #if defined(__SSE2__)
         /* the three channels (and alpha: div255(255 sa + 255 inv) = 255) in
          * one set of 16-bit lanes; div255(x) = high half of (x + 128) * 257 */
-        uint32_t c32 = (uint32_t)s.r | (uint32_t)s.g << 8 | (uint32_t)s.b << 16 | 0xFF000000u, d32;
+        uint32_t c32, d32; /* x86 is little-endian: memory order r g b a is the value's byte order */
+        memcpy(&c32, &s, 4);
+        c32 |= 0xFF000000u;
         memcpy(&d32, d, 4);
         const __m128i z = _mm_setzero_si128();
         __m128i C = _mm_unpacklo_epi8(_mm_cvtsi32_si128((int)c32), z);
@@ -88,13 +106,7 @@ static ISK__INLINE void isk__px_over(uint8_t *d, isk_color s)
 #endif
         return;
     }
-    uint32_t wd = da * inv;              /* destination weight, scaled by 255 */
-    uint32_t A = 255u * sa + wd;         /* 255 * output alpha */
-    uint32_t half = A / 2u;
-    d[0] = (uint8_t)((255u * s.r * sa + d[0] * wd + half) / A);
-    d[1] = (uint8_t)((255u * s.g * sa + d[1] * wd + half) / A);
-    d[2] = (uint8_t)((255u * s.b * sa + d[2] * wd + half) / A);
-    d[3] = (uint8_t)isk_div255(A);
+    isk__px_over_general(d, s, sa, da, inv);
 }
 
 static ISK__INLINE void isk__px_add(uint8_t *d, isk_color s)
@@ -102,7 +114,9 @@ static ISK__INLINE void isk__px_add(uint8_t *d, isk_color s)
 #if defined(__SSE2__)
     /* increments div255(c a) in 16-bit lanes (alpha: div255(255 a) = a),
      * then saturating byte adds */
-    uint32_t c32 = (uint32_t)s.r | (uint32_t)s.g << 8 | (uint32_t)s.b << 16 | 0xFF000000u, d32;
+    uint32_t c32, d32; /* x86 is little-endian: memory order r g b a is the value's byte order */
+    memcpy(&c32, &s, 4);
+    c32 |= 0xFF000000u;
     memcpy(&d32, d, 4);
     __m128i C = _mm_unpacklo_epi8(_mm_cvtsi32_si128((int)c32), _mm_setzero_si128());
     __m128i x = _mm_mullo_epi16(C, _mm_set1_epi16((short)s.a));
@@ -205,11 +219,23 @@ static ISK__INLINE uint64_t isk__div255_lanes(uint64_t x)
  * lanes p and the weight inv = 255 - a'. */
 static ISK__INLINE void isk__over_opaque_lanes(uint8_t *d, uint64_t p, uint32_t inv)
 {
+#if defined(__SSE2__)
+    /* the same lanes in SSE2 (x86: the u64's 16-bit lanes are r g b a in
+     * order); div255 as the high half of (x + 128) * 257 */
+    uint32_t d32;
+    memcpy(&d32, d, 4);
+    __m128i D = _mm_unpacklo_epi8(_mm_cvtsi32_si128((int)d32), _mm_setzero_si128());
+    __m128i x = _mm_add_epi16(_mm_mullo_epi16(D, _mm_set1_epi16((short)inv)), _mm_cvtsi64_si128((long long)p));
+    x = _mm_mulhi_epu16(_mm_add_epi16(x, _mm_set1_epi16(128)), _mm_set1_epi16(257));
+    d32 = (uint32_t)_mm_cvtsi128_si32(_mm_packus_epi16(x, x));
+    memcpy(d, &d32, 4);
+#else
     uint64_t x = (uint64_t)d[0] | (uint64_t)d[1] << 16 | (uint64_t)d[2] << 32 | (uint64_t)255u << 48;
     x = isk__div255_lanes(x * inv + p);
     d[0] = (uint8_t)x;
     d[1] = (uint8_t)(x >> 16);
     d[2] = (uint8_t)(x >> 32);
+#endif
 }
 
 /* isk__px_cov(d, t->col, cov, mode), through the table. */
@@ -235,7 +261,11 @@ static ISK__INLINE void isk__px_lut(uint8_t *d, const isk__cov_lut *t, uint32_t 
         uint32_t v, inc;
         memcpy(&v, d, 4);
         memcpy(&inc, t->add[cov], 4);
+#if defined(__SSE2__)
+        v = (uint32_t)_mm_cvtsi128_si32(_mm_adds_epu8(_mm_cvtsi32_si128((int)v), _mm_cvtsi32_si128((int)inc)));
+#else
         v = isk__sat_add_u8x4(v, inc);
+#endif
         memcpy(d, &v, 4);
         break;
     }
