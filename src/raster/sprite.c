@@ -207,15 +207,15 @@ static ISK__INLINE void draw_rows(const isk_canvas *c, const isk_sprite *s, cons
     if (pl->jb == 0 && pl->je == S && pl->ib == 0 && pl->ie == S) {
         /* wholly on the canvas: padded spans, no clipping, rows by pointer steps */
         const uint16_t *span = s->vspan[pl->p];
-        if (src_kind == SRC_INC_OVER && rows_over) { /* one call: constants built once per sprite */
-            uint8_t *d0 = c->pixels + (size_t)pl->y0 * stride + (size_t)pl->x0 * 4u;
+        uint8_t *drow = c->pixels + (size_t)pl->y0 * stride + (size_t)pl->x0 * 4u;
 #if defined(__GNUC__)
-            for (int j = 0; j < S && j < ROW_AHEAD; j++) {
-                __builtin_prefetch(d0 + (size_t)j * stride + 4u * span[2 * j], 1);
-                __builtin_prefetch(d0 + (size_t)j * stride + 4u * span[2 * j + 1] - 1, 1);
-            }
+        for (int j = 0; j < S && j < ROW_AHEAD; j++) {
+            __builtin_prefetch(drow + (size_t)j * stride + 4u * span[2 * j], 1);
+            __builtin_prefetch(drow + (size_t)j * stride + 4u * span[2 * j + 1] - 1, 1);
+        }
 #endif
-            rows_over(d0, stride, src, 4u * (size_t)S, span, S, col);
+        if (src_kind == SRC_INC_OVER && rows_over) { /* one call: constants built once per sprite */
+            rows_over(drow, stride, src, 4u * (size_t)S, span, S, col);
             return;
         }
         /* Additive rows of a size that is a multiple of 4 are drawn whole
@@ -224,13 +224,6 @@ static ISK__INLINE void draw_rows(const isk_canvas *c, const isk_sprite *s, cons
          * mispredict more than the extra bytes cost.  Source-over, heavier
          * per pixel, keeps the spans. */
         const int uniform = (S & 3) == 0 && src_kind == SRC_INC_ADD;
-        uint8_t *drow = c->pixels + (size_t)pl->y0 * stride + (size_t)pl->x0 * 4u;
-#if defined(__GNUC__)
-        for (int j = 0; j < S && j < ROW_AHEAD; j++) {
-            __builtin_prefetch(drow + (size_t)j * stride + 4u * span[2 * j], 1);
-            __builtin_prefetch(drow + (size_t)j * stride + 4u * span[2 * j + 1] - 1, 1);
-        }
-#endif
         for (int j = 0; j < S; j++, drow += stride, src += unit * (size_t)S) {
             int b = span[2 * j], n = span[2 * j + 1] - b;
             if (uniform) {
