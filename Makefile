@@ -258,6 +258,46 @@ bench: deps
 	@set -e; for b in $(BENCHES); do echo "== $$b"; $$b; done
 	@echo "== iskra bench accuracy"; $(TOOL) bench accuracy --out out/accuracy
 
+# ---- peer benchmark (bench_peers) ------------------------------------------
+# bench/bench_peers/ times iskra's primitives against cairo, pixman, AGG (a
+# small C++ file), SDL2 and SDL2_gfx from Debian.  `make bench` installs them
+# (not `make test`); when they cannot be had, it says so and skips the run.
+# A sub-make builds it, so packages installed a moment before are seen.
+PEER_PKGS := g++ libcairo2-dev libpixman-1-dev libagg-dev libsdl2-gfx-dev
+PEER_CXX  ?= g++
+PEER_MODS := cairo pixman-1 libagg SDL2_gfx sdl2
+PEER_OK   := $(shell pkg-config --exists $(PEER_MODS) 2>/dev/null && command -v $(PEER_CXX) >/dev/null 2>&1 && echo 1)
+PEER_BIN  := $(BUILD)/bench/bench_peers
+PEER_OBJ  := $(BUILD)/obj/bench/bench_peers/bench_peers.o $(BUILD)/obj/bench/bench_peers/peer_agg.o
+.PHONY: bench-peers peer-deps peer-run
+bench: bench-peers
+peer-deps: deps
+	@sh tools/deps.sh $(PEER_PKGS) || echo "bench_peers: could not install $(PEER_PKGS)"
+bench-peers: peer-deps
+	@$(MAKE) --no-print-directory peer-run
+ifeq ($(PEER_OK),1)
+# the peers' headers are system headers: their warnings are not ours
+PEER_CFLAGS := $(patsubst -I%,-isystem %,$(shell pkg-config --cflags $(PEER_MODS)))
+$(BUILD)/obj/bench/bench_peers/bench_peers.o: bench/bench_peers/bench_peers.c
+	@mkdir -p $(dir $@)
+	$(call say,CC,$<)
+	$(Q)$(CC) $(ALL_CFLAGS) $(PEER_CFLAGS) -MMD -MP -c $< -o $@
+$(BUILD)/obj/bench/bench_peers/peer_agg.o: bench/bench_peers/peer_agg.cpp bench/bench_peers/peer_agg.h
+	@mkdir -p $(dir $@)
+	$(call say,CXX,$<)
+	$(Q)$(PEER_CXX) -std=c++11 $(OPT) -Wall -Wextra $(WFLAGS) $(SANFLAGS) $(PEER_CFLAGS) -c $< -o $@
+$(PEER_BIN): $(PEER_OBJ) $(LIBA)
+	@mkdir -p $(dir $@)
+	$(call say,LD,$@)
+	$(Q)$(PEER_CXX) $(OPT) $(SANFLAGS) -o $@ $(PEER_OBJ) $(LIBA) $(LDFLAGS) \
+	    $(shell pkg-config --libs $(PEER_MODS)) $(LIBS_CORE)
+peer-run: $(PEER_BIN)
+	@echo "== $(PEER_BIN)"; $(PEER_BIN)
+else
+peer-run:
+	@echo "== bench_peers: skipped (needs the Debian packages $(PEER_PKGS))"
+endif
+
 # ---- fuzzing (clang + libFuzzer) -------------------------------------------
 # `make fuzz [FUZZ_TIME=600]`: the scene parser and runtime under libFuzzer
 # with ASan+UBSan, seeded with scenes/*.ini (the corpus grows in

@@ -416,12 +416,14 @@ Test(hostile, isk_blend_pixel)
     uint8_t px[4] = {1, 2, 3, 4};
     isk_blend_pixel(px, ISK_WHITE, (isk_blend)99); /* unknown mode: untouched */
     cr_assert(px[0] == 1 && px[3] == 4);
+    isk_blend_pixel(NUL, ISK_WHITE, ISK_BLEND_OVER);
 }
 Test(hostile, isk_blend_pixel_cov)
 {
     uint8_t px[4] = {1, 2, 3, 4};
     isk_blend_pixel_cov(px, ISK_WHITE, 255, (isk_blend)-1);
     cr_assert(px[0] == 1 && px[3] == 4);
+    isk_blend_pixel_cov(NUL, ISK_WHITE, 255, ISK_BLEND_ADD);
 }
 Test(hostile, isk_blend_name)
 {
@@ -492,6 +494,7 @@ Test(hostile, isk_dot_weights)
     }
     cr_assert_eq(isk_dot_weights(NAN, 0, w), 0);
     cr_assert(w[0] == 0 && w[1] == 0 && w[2] == 0 && w[3] == 0);
+    cr_assert_eq(isk_dot_weights(0.5, 0.5, NUL), 0);
 }
 Test(hostile, isk_dot_weights_browser)
 {
@@ -501,6 +504,9 @@ Test(hostile, isk_dot_weights_browser)
         for (int j = 0; j < NBAD; j++)
             isk_dot_weights_browser(BAD[i], BAD[j], &ix, &iy, w);
     cr_assert_eq(isk_dot_weights_browser(NAN, 0, &ix, &iy, w), 0);
+    cr_assert_eq(isk_dot_weights_browser(0.5, 0.5, NUL, &iy, w), 0);
+    cr_assert_eq(isk_dot_weights_browser(0.5, 0.5, &ix, NUL, w), 0);
+    cr_assert_eq(isk_dot_weights_browser(0.5, 0.5, &ix, &iy, NUL), 0);
 }
 
 /* ---- raster: text ---------------------------------------------------------- */

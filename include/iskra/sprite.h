@@ -47,7 +47,8 @@
  * pointer it returned stays valid until isk_sprite_cache_clear() or _destroy(),
  * so a frame can hold many.  When full, get() returns ISK_ERR_FULL and bakes
  * nothing; call clear() (e.g. between frames after a zoom change) and retry.
- * Memory per sprite is 4 S^2 bytes (four phase masks) plus about 1.6 KB.
+ * Memory per sprite is 20 S^2 + 32 S bytes (four phase masks, their
+ * additive increment images and row spans) plus about 1.1 KB.
  * No global state: caches are independent.
  */
 #ifndef ISKRA_SPRITE_H
@@ -88,9 +89,15 @@ typedef struct isk_sprite {
     /* span[p][2*row], span[p][2*row+1]: first and one-past-last column with a
      * non-zero mask in that row (equal when the row is empty). */
     uint16_t *span[4];
+    /* vspan[p]: the same spans grown over zero-mask pixels of the row to a
+     * multiple of 4 pixels where the row allows (the row kernels' step). */
+    uint16_t *vspan[4];
     /* For mask value m: the source alpha a' = div255(color.a * m) and the
      * additive increments div255(c * a') — what isk_blend_pixel_cov computes. */
     uint8_t lut[256][4];      /* r, g, b increments, a' */
+    /* inc[p]: S*S*4 bytes, lut[mask[p][k]] for every pixel k: the baked
+     * colour's additive increments, so an additive draw is a byte add. */
+    uint8_t *inc[4];
 } isk_sprite;
 
 /* Bakes a sprite into memory it owns (release with isk_sprite_free).

@@ -43,11 +43,14 @@ static inline double isk__clampd(double v, double lo, double hi)
     return v;
 }
 
-/* floor(v) as an int clamped into [lo, hi]; defined for every double. */
+/* floor(v) as an int clamped into [lo, hi]; defined for every double.
+ * The floor is the int conversion corrected by one below zero (exact for
+ * the clamped value, and no libm call on the primitives' hot paths). */
 static inline int isk__floor_clamp(double v, int lo, int hi)
 {
-    double f = floor(isk__clampd(v, (double)lo, (double)hi));
-    return (int)f;
+    double f = isk__clampd(v, (double)lo, (double)hi);
+    int i = (int)f;
+    return i - ((double)i > f);
 }
 
 /* Liang–Barsky: clips the segment (x0,y0)-(x1,y1) to [xmin,xmax]x[ymin,ymax].

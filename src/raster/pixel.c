@@ -1,14 +1,28 @@
 /* Integer-coordinate primitives: a single pixel and a filled rectangle.
- * All bounds arithmetic is 64-bit so INT_MIN/INT_MAX arguments are safe. */
+ * All bounds arithmetic is 64-bit so INT_MIN/INT_MAX arguments are safe.
+ * The blend mode is chosen once per call (raster/blend_px.h). */
 #include "iskra/draw.h"
 
+#include "raster/blend_px.h"
 #include "raster/clip.h"
 
 void isk_draw_pixel(isk_canvas *c, int x, int y, isk_color color, isk_blend mode)
 {
-    if (!isk__canvas_ok(c) || x < 0 || y < 0 || x >= c->width || y >= c->height)
+    /* Unsigned compares reject negative coordinates too; an empty or
+     * pixel-less canvas fails them as well. */
+    if (!c || !c->pixels || (unsigned)x >= (unsigned)c->width || (unsigned)y >= (unsigned)c->height)
         return;
-    isk_blend_pixel(isk_canvas_at(c, x, y), color, mode);
+    isk__px(isk_canvas_at(c, x, y), color, mode);
+}
+
+static ISK__INLINE void fill_rows(isk_canvas *c, int x0, int y0, int x1, int y1, isk_color color,
+                                  isk_blend mode)
+{
+    for (int j = y0; j < y1; j++) {
+        uint8_t *p = isk_canvas_at(c, x0, j);
+        for (int i = x0; i < x1; i++, p += 4)
+            isk__px(p, color, mode);
+    }
 }
 
 void isk_fill_rect(isk_canvas *c, int x, int y, int w, int h, isk_color color, isk_blend mode)
@@ -23,9 +37,7 @@ void isk_fill_rect(isk_canvas *c, int x, int y, int w, int h, isk_color color, i
     if (y0 < 0) y0 = 0;
     if (x1 > c->width) x1 = c->width;
     if (y1 > c->height) y1 = c->height;
-    for (long long j = y0; j < y1; j++) {
-        uint8_t *p = isk_canvas_at(c, (int)x0, (int)j);
-        for (long long i = x0; i < x1; i++, p += 4)
-            isk_blend_pixel(p, color, mode);
-    }
+    if (x0 >= x1 || y0 >= y1)
+        return;
+    ISK__BLEND_DISPATCH(mode, fill_rows, c, (int)x0, (int)y0, (int)x1, (int)y1, color);
 }

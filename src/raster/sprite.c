@@ -6,6 +6,8 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "raster/span_simd.h"
+
 double isk_sprite_alpha(isk_sprite_kind kind, double d, int size)
 {
     if (!(size > 0) || !(d >= 0.0))
@@ -72,6 +74,20 @@ static void bake_phase(isk_sprite *s, int p)
             first = last = 0;
         span[2 * j] = (uint16_t)first;
         span[2 * j + 1] = (uint16_t)last;
+        /* The padded span: grown over zero-mask pixels of the row to a
+         * multiple of 4 pixels, the row kernels' step (coverage 0 changes
+         * nothing, so the bytes are the same). */
+        int len = last - first, g = (len + 3) & ~3;
+        if (first + g <= S)
+            last = first + g;
+        else if (last - g >= 0)
+            first = last - g;
+        else
+            first = 0, last = S;
+        if (len == 0)
+            first = last = 0;
+        s->vspan[p][2 * j] = (uint16_t)first;
+        s->vspan[p][2 * j + 1] = (uint16_t)last;
     }
 }
 
@@ -85,8 +101,9 @@ isk_status isk_sprite_init(isk_sprite *s, isk_sprite_kind kind, int size, isk_co
         return ISK_ERR_SIZE;
     size_t area = (size_t)size * (size_t)size;
     size_t span_bytes = 2u * (size_t)size * sizeof(uint16_t);
-    /* one block: four span tables first (alignment), then four masks */
-    uint8_t *block = malloc(4u * (span_bytes + area));
+    /* one block: four span and four padded-span tables first (alignment),
+     * then four masks, then four increment images */
+    uint8_t *block = malloc(4u * (2u * span_bytes + area + 4u * area));
     if (!block)
         return ISK_ERR_NOMEM;
     memset(s, 0, sizeof *s);
@@ -95,7 +112,9 @@ isk_status isk_sprite_init(isk_sprite *s, isk_sprite_kind kind, int size, isk_co
     s->color = color;
     for (int p = 0; p < 4; p++) {
         s->span[p] = (uint16_t *)(void *)(block + (size_t)p * span_bytes);
-        s->mask[p] = block + 4u * span_bytes + (size_t)p * area;
+        s->vspan[p] = (uint16_t *)(void *)(block + (size_t)(4 + p) * span_bytes);
+        s->mask[p] = block + 8u * span_bytes + (size_t)p * area;
+        s->inc[p] = block + 4u * (2u * span_bytes + area) + (size_t)p * 4u * area;
         bake_phase(s, p);
     }
     for (uint32_t m = 0; m < 256u; m++) {
@@ -105,6 +124,9 @@ isk_status isk_sprite_init(isk_sprite *s, isk_sprite_kind kind, int size, isk_co
         s->lut[m][2] = (uint8_t)isk_div255((uint32_t)color.b * a);
         s->lut[m][3] = (uint8_t)a;
     }
+    for (int p = 0; p < 4; p++)
+        for (size_t k = 0; k < area; k++)
+            memcpy(s->inc[p] + 4u * k, s->lut[s->mask[p][k]], 4);
     return ISK_OK;
 }
 
@@ -117,20 +139,13 @@ void isk_sprite_free(isk_sprite *s)
 }
 
 /* 2 * (nearest multiple of 1/2 to v), halves up, computed without the
- * rounding of 2v + 0.5; NaN/Inf pass through. */
-static double twice_snapped(double v)
+ * rounding of 2v + 0.5, for |v| < 2^20 (so floor is an int conversion). */
+static inline int twice_snapped(double v)
 {
     double t = 2.0 * v;
-    double h = floor(t);
-    if (t - h >= 0.5)
-        h += 1.0;
-    return h;
-}
-
-static inline uint8_t sat_add(uint32_t a, uint32_t b)
-{
-    uint32_t s = a + b;
-    return (uint8_t)(s > 255u ? 255u : s);
+    int h = (int)t;
+    h -= (double)h > t;  /* floor */
+    return h + (t - h >= 0.5);
 }
 
 /* Where the sprite lands: mask phase, origin and the clipped row/column
@@ -139,21 +154,25 @@ typedef struct placement {
     int p, x0, y0, jb, je, ib, ie;
 } placement;
 
-static int place(const isk_canvas *c, const isk_sprite *s, double cx, double cy, isk_blend mode, placement *pl)
+static inline int place(const isk_canvas *c, const isk_sprite *s, double cx, double cy, isk_blend mode,
+                        placement *pl)
 {
     if (!c || !c->pixels || !s || !s->mask[0])
         return 0;
     if (mode != ISK_BLEND_REPLACE && mode != ISK_BLEND_OVER && mode != ISK_BLEND_ADD)
         return 0;
+    /* Anything this far out is off every canvas (<= 16384 px, S <= 256);
+     * the test also rejects NaN and Inf before any conversion. */
+    if (!(cx > -1e6 && cx < 1e6 && cy > -1e6 && cy < 1e6))
+        return 0;
     int S = s->size;
-    double tx = twice_snapped(cx) - S, ty = twice_snapped(cy) - S; /* 2 * mask origin */
-    double ox = floor(0.5 * tx), oy = floor(0.5 * ty);
-    /* Rejects NaN, Inf and anything off-canvas before converting to int. */
+    int tx = twice_snapped(cx) - S, ty = twice_snapped(cy) - S; /* 2 * mask origin */
+    int ox = tx >> 1, oy = ty >> 1; /* floor(tx / 2): arithmetic shift */
     if (!(ox > -S && ox < c->width && oy > -S && oy < c->height))
         return 0;
-    pl->x0 = (int)ox;
-    pl->y0 = (int)oy;
-    pl->p = (tx - 2.0 * ox != 0.0) + 2 * (ty - 2.0 * oy != 0.0);
+    pl->x0 = ox;
+    pl->y0 = oy;
+    pl->p = (tx & 1) + 2 * (ty & 1);
     pl->jb = pl->y0 < 0 ? -pl->y0 : 0;
     pl->je = c->height - pl->y0 < S ? c->height - pl->y0 : S;
     pl->ib = pl->x0 < 0 ? -pl->x0 : 0;
@@ -161,91 +180,146 @@ static int place(const isk_canvas *c, const isk_sprite *s, double cx, double cy,
     return 1;
 }
 
+/* Rows of a sprite are a canvas stride apart, too far for the hardware
+ * prefetcher: both ends of the first ROW_AHEAD rows are requested at once
+ * (sprites wholly on the canvas; clipped ones are rare).  Requests inside
+ * the row loop were tried and cost more than they saved. */
+#define ROW_AHEAD 6
+
+/* The sprite's rows, each one span of the mask blended by the row kernels
+ * of raster/span_simd.h, the mode a constant (one loop per mode).  inc != 0:
+ * the baked colour's premade additive increments (a saturating byte add of
+ * two arrays).  A sprite wholly on the canvas uses the padded spans (whole
+ * 4-pixel steps); a clipped one the exact spans cut to the canvas.  The
+ * row kernels are parameters so the loop is compiled once per SIMD level. */
+typedef void (*span_cov_fn)(uint8_t *, const uint8_t *, int, isk_color, isk_blend);
+typedef void (*span_add_fn)(uint8_t *, const uint8_t *, int);
+typedef void (*span_over_fn)(uint8_t *, const uint8_t *, int, isk_color);
+typedef void (*rows_over_fn)(uint8_t *, size_t, const uint8_t *, size_t, const uint16_t *, int, isk_color);
+
+/* What a row blends: the mask in a colour, or the baked colour's premade
+ * increments, added or (AVX2) taken as a' for source-over. */
+enum { SRC_MASK, SRC_INC_ADD, SRC_INC_OVER };
+
+static ISK__INLINE void draw_rows(const isk_canvas *c, const isk_sprite *s, const placement *pl, isk_color col,
+                                  int src_kind, isk_blend mode, span_cov_fn span_cov, span_add_fn span_add,
+                                  span_add_fn span_add16, span_over_fn span_over, rows_over_fn rows_over)
+{
+    const int inc = src_kind != SRC_MASK;
+    const int S = s->size;
+    const size_t stride = c->stride, unit = inc ? 4u : 1u; /* source bytes per pixel */
+    const uint8_t *src = inc ? s->inc[pl->p] : s->mask[pl->p];
+    if (pl->jb == 0 && pl->je == S && pl->ib == 0 && pl->ie == S) {
+        /* wholly on the canvas: padded spans, no clipping, rows by pointer steps */
+        const uint16_t *span = s->vspan[pl->p];
+        uint8_t *drow = c->pixels + (size_t)pl->y0 * stride + (size_t)pl->x0 * 4u;
+#if defined(__GNUC__)
+        for (int j = 0; j < S && j < ROW_AHEAD; j++) {
+            __builtin_prefetch(drow + (size_t)j * stride + 4u * span[2 * j], 1);
+            __builtin_prefetch(drow + (size_t)j * stride + 4u * span[2 * j + 1] - 1, 1);
+        }
+#endif
+        if (src_kind == SRC_INC_OVER && rows_over) { /* one call: constants built once per sprite */
+            rows_over(drow, stride, src, 4u * (size_t)S, span, S, col);
+            return;
+        }
+        /* Additive rows of a size that is a multiple of 4 are drawn whole
+         * (adding zeros is harmless): every row then has the same length,
+         * which the branch predictor keeps, where spans of four phases
+         * mispredict more than the extra bytes cost.  Source-over, heavier
+         * per pixel, keeps the spans. */
+        const int uniform = (S & 3) == 0 && src_kind == SRC_INC_ADD;
+        for (int j = 0; j < S; j++, drow += stride, src += unit * (size_t)S) {
+            int b = span[2 * j], n = span[2 * j + 1] - b;
+            if (uniform) {
+                b = 0;
+                n = S;
+            }
+#if defined(__GNUC__)
+
+#endif
+            if (src_kind == SRC_INC_ADD && !(n & 3))
+                span_add16(drow + 4 * b, src + 4 * b, 4 * n); /* padded: whole 16-byte steps */
+            else if (src_kind == SRC_INC_ADD) /* a row too short to pad (S not a multiple of 4) */
+                span_add(drow + 4 * b, src + 4 * b, 4 * n);
+            else if (src_kind == SRC_INC_OVER)
+                span_over(drow + 4 * b, src + 4 * b, n, col);
+            else
+                span_cov(drow + 4 * b, src + b, n, col, mode);
+        }
+        return;
+    }
+    const uint16_t *span = s->span[pl->p];
+    for (int j = pl->jb; j < pl->je; j++) {
+        int b = span[2 * j] > pl->ib ? span[2 * j] : pl->ib;
+        int e = span[2 * j + 1] < pl->ie ? span[2 * j + 1] : pl->ie;
+        if (b >= e)
+            continue;
+        uint8_t *d = c->pixels + (size_t)(pl->y0 + j) * stride + (size_t)(pl->x0 + b) * 4u;
+        const uint8_t *q = src + unit * ((size_t)j * (size_t)S + (size_t)b);
+        if (src_kind == SRC_INC_ADD)
+            span_add(d, q, 4 * (e - b));
+        else if (src_kind == SRC_INC_OVER)
+            span_over(d, q, e - b, col);
+        else
+            span_cov(d, q, e - b, col, mode);
+    }
+}
+
+/* One function per SIMD level: kind SRC_INC_ADD = premade increments
+ * (additive, baked colour), SRC_INC_OVER = the baked colour over (taken from
+ * the increments where the level has a kernel for it, else from the mask),
+ * SRC_MASK = the mask in col with the given mode. */
+#define SPRITE_ROWS(NAME, ATTR, SPAN_COV, SPAN_ADD, SPAN_ADD16, SPAN_OVER, ROWS_OVER, OVER_KIND)                          \
+    static ATTR void NAME(const isk_canvas *c, const isk_sprite *s, const placement *pl, isk_color col, \
+                          int kind, isk_blend mode)                                                  \
+    {                                                                                                \
+        if (kind == SRC_INC_ADD)                                                                     \
+            draw_rows(c, s, pl, col, SRC_INC_ADD, ISK_BLEND_ADD, SPAN_COV, SPAN_ADD, SPAN_ADD16, SPAN_OVER, ROWS_OVER);     \
+        else if (kind == SRC_INC_OVER)                                                               \
+            draw_rows(c, s, pl, col, OVER_KIND, ISK_BLEND_OVER, SPAN_COV, SPAN_ADD, SPAN_ADD16, SPAN_OVER, ROWS_OVER);      \
+        else if (mode == ISK_BLEND_ADD)                                                              \
+            draw_rows(c, s, pl, col, SRC_MASK, ISK_BLEND_ADD, SPAN_COV, SPAN_ADD, SPAN_ADD16, SPAN_OVER, ROWS_OVER);        \
+        else if (mode == ISK_BLEND_OVER)                                                             \
+            draw_rows(c, s, pl, col, SRC_MASK, ISK_BLEND_OVER, SPAN_COV, SPAN_ADD, SPAN_ADD16, SPAN_OVER, ROWS_OVER);       \
+        else                                                                                         \
+            draw_rows(c, s, pl, col, SRC_MASK, ISK_BLEND_REPLACE, SPAN_COV, SPAN_ADD, SPAN_ADD16, SPAN_OVER, ROWS_OVER);    \
+    }
+
+SPRITE_ROWS(rows_base, , isk__span_cov, isk__span_add_bytes, isk__span_add_bytes16, NULL, NULL, SRC_MASK)
+#if ISK__SPAN_AVX2
+SPRITE_ROWS(rows_avx2, ISK__AVX2_FN, isk__span_cov_avx2, isk__span_add_bytes_avx2, isk__span_add_bytes16_avx2,
+            isk__span_over_inc_avx2, isk__rows_over_inc_avx2, SRC_INC_OVER)
+#endif
+
+static void rows(const isk_canvas *c, const isk_sprite *s, const placement *pl, isk_color col, int kind,
+                 isk_blend mode)
+{
+#if ISK__SPAN_AVX2
+    if (isk__have_avx2()) {
+        rows_avx2(c, s, pl, col, kind, mode);
+        return;
+    }
+#endif
+    rows_base(c, s, pl, col, kind, mode);
+}
+
 void isk_draw_sprite_tinted(isk_canvas *c, const isk_sprite *s, double cx, double cy, isk_color color,
                             isk_blend mode)
 {
     placement pl;
-    if (!place(c, s, cx, cy, mode, &pl))
-        return;
-    const int S = s->size;
-    const uint8_t *mask = s->mask[pl.p];
-    const uint16_t *span = s->span[pl.p];
-    const uint32_t ca = color.a;
-    for (int j = pl.jb; j < pl.je; j++) {
-        int b = span[2 * j] > pl.ib ? span[2 * j] : pl.ib;
-        int e = span[2 * j + 1] < pl.ie ? span[2 * j + 1] : pl.ie;
-        const uint8_t *mrow = mask + (size_t)j * (size_t)S;
-        uint8_t *d = isk_canvas_at(c, pl.x0 + b, pl.y0 + j);
-        if (mode == ISK_BLEND_ADD) {
-            /* isk_blend_pixel_cov's arithmetic, inlined: a' = div255(a*m),
-             * then dst += div255(c*a') per channel, saturating. */
-            for (int i = b; i < e; i++, d += 4) {
-                uint32_t m = mrow[i];
-                if (!m)
-                    continue;
-                uint32_t a = isk_div255(ca * m);
-                d[0] = sat_add(d[0], isk_div255((uint32_t)color.r * a));
-                d[1] = sat_add(d[1], isk_div255((uint32_t)color.g * a));
-                d[2] = sat_add(d[2], isk_div255((uint32_t)color.b * a));
-                d[3] = sat_add(d[3], a);
-            }
-        } else {
-            for (int i = b; i < e; i++, d += 4)
-                if (mrow[i])
-                    isk_blend_pixel_cov(d, color, mrow[i], mode);
-        }
-    }
+    if (place(c, s, cx, cy, mode, &pl))
+        rows(c, s, &pl, color, SRC_MASK, mode);
 }
 
 void isk_draw_sprite(isk_canvas *c, const isk_sprite *s, double cx, double cy, isk_blend mode)
 {
     placement pl;
-    if (!place(c, s, cx, cy, mode, &pl))
-        return;
-    int S = s->size;
-    int x0 = pl.x0, y0 = pl.y0;
-    const uint8_t *mask = s->mask[pl.p];
-    const uint16_t *span = s->span[pl.p];
-    int jb = pl.jb, je = pl.je, ib = pl.ib, ie = pl.ie;
-    for (int j = jb; j < je; j++) {
-        int b = span[2 * j] > ib ? span[2 * j] : ib;
-        int e = span[2 * j + 1] < ie ? span[2 * j + 1] : ie;
-        const uint8_t *mrow = mask + (size_t)j * (size_t)S;
-        uint8_t *d = isk_canvas_at(c, x0 + b, y0 + j);
-        switch (mode) {
-        case ISK_BLEND_ADD:
-            for (int i = b; i < e; i++, d += 4) {
-                const uint8_t *v = s->lut[mrow[i]];
-                if (!mrow[i])
-                    continue;
-                d[0] = sat_add(d[0], v[0]);
-                d[1] = sat_add(d[1], v[1]);
-                d[2] = sat_add(d[2], v[2]);
-                d[3] = sat_add(d[3], v[3]);
-            }
-            break;
-        case ISK_BLEND_OVER:
-            for (int i = b; i < e; i++, d += 4) {
-                if (!mrow[i])
-                    continue;
-                isk_color src = {s->color.r, s->color.g, s->color.b, s->lut[mrow[i]][3]};
-                isk_blend_pixel(d, src, ISK_BLEND_OVER);
-            }
-            break;
-        case ISK_BLEND_REPLACE:
-            for (int i = b; i < e; i++, d += 4) {
-                if (!mrow[i])
-                    continue;
-                d[0] = s->color.r;
-                d[1] = s->color.g;
-                d[2] = s->color.b;
-                d[3] = s->lut[mrow[i]][3];
-            }
-            break;
-        default:
-            break;
-        }
-    }
+    /* additive: the premade increments; over and replace: the baked colour
+     * through the mask */
+    if (place(c, s, cx, cy, mode, &pl))
+        rows(c, s, &pl, s->color,
+             mode == ISK_BLEND_ADD ? SRC_INC_ADD : mode == ISK_BLEND_OVER ? SRC_INC_OVER : SRC_MASK, mode);
 }
 
 /* ---- cache ------------------------------------------------------------- */

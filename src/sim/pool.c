@@ -4,6 +4,7 @@
 #include "sim/pool.h"
 
 #include <pthread.h>
+#include <signal.h>
 #include <stdatomic.h>
 #include <stdlib.h>
 #include <unistd.h>
@@ -97,9 +98,17 @@ isk_status isk_pool_create(isk_pool **out, int threads)
     pthread_cond_init(&p->start, NULL);
     pthread_cond_init(&p->done, NULL);
     atomic_init(&p->next, 0);
-    for (int w = 1; w < threads; w++) {
+    /* Workers start with every signal blocked (they inherit this mask), so
+     * a process signal goes to one of the caller's threads: a program's
+     * handler and its own blocking (the CLI's removal of temporaries) keep
+     * working when a library thread exists. */
+    sigset_t all, caller;
+    sigfillset(&all);
+    pthread_sigmask(SIG_SETMASK, &all, &caller);
+    isk_status s = ISK_OK;
+    for (int w = 1; w < threads && s == ISK_OK; w++) {
         worker_arg *a = malloc(sizeof *a);
-        isk_status s = a ? ISK_OK : ISK_ERR_NOMEM;
+        s = a ? ISK_OK : ISK_ERR_NOMEM;
         if (a) {
             a->pool = p;
             a->worker = w;
@@ -108,11 +117,13 @@ isk_status isk_pool_create(isk_pool **out, int threads)
                 s = ISK_ERR_UNSUPPORTED;
             }
         }
-        if (s != ISK_OK) {
+        if (s != ISK_OK)
             p->threads = w; /* the ones started are joined */
-            isk_pool_destroy(p);
-            return s;
-        }
+    }
+    pthread_sigmask(SIG_SETMASK, &caller, NULL);
+    if (s != ISK_OK) {
+        isk_pool_destroy(p);
+        return s;
     }
     *out = p;
     return ISK_OK;

@@ -9,9 +9,12 @@
  * tests/run_all.sh runs it in every build, and CI builds it with
  * `make threads-check SANITIZE=thread`.  Exit status 0 when everything
  * matches. */
+#include <dirent.h>
+#include <signal.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <unistd.h>
 
 #include "iskra/effect.h"
 #include "iskra/scene.h"
@@ -86,8 +89,52 @@ static void scene_text(const char *text, const char *name, long frames)
     isk_effect_def_free(&d);
 }
 
+/* The library's workers block every signal, so a program's handler runs on
+ * its own threads (Linux: each task's SigBlk mask in /proc). */
+static void workers_block_signals(void)
+{
+    isk_effect_def d;
+    isk_error err = {0};
+    if (isk_scene_load(&d, "fig16_regular", &err) != ISK_OK) {
+        CHECK(0, "%s", err.message);
+        return;
+    }
+    d.threads = 3;
+    isk_effect *fx = NULL;
+    if (isk_effect_create(&fx, &d, &err) != ISK_OK) {
+        CHECK(0, "%s", err.message);
+        isk_effect_def_free(&d);
+        return;
+    }
+    int workers = 0;
+    DIR *dir = opendir("/proc/self/task");
+    struct dirent *e;
+    while (dir && (e = readdir(dir))) {
+        char path[300], line[256];
+        if (e->d_name[0] == '.' || atoi(e->d_name) == getpid())
+            continue;
+        snprintf(path, sizeof path, "/proc/self/task/%s/status", e->d_name);
+        FILE *f = fopen(path, "r");
+        while (f && fgets(line, sizeof line, f))
+            if (!strncmp(line, "SigBlk:", 7)) {
+                unsigned long long mask = strtoull(line + 7, NULL, 16);
+                CHECK((mask >> (SIGINT - 1) & 1) && (mask >> (SIGTERM - 1) & 1),
+                      "worker %s does not block SIGINT and SIGTERM (SigBlk %llx)", e->d_name, mask);
+                workers++;
+            }
+        if (f)
+            fclose(f);
+    }
+    if (dir)
+        closedir(dir);
+    CHECK(workers == 2, "found %d worker threads, expected 2", workers);
+    isk_effect_destroy(fx);
+    isk_effect_def_free(&d);
+}
+
 int main(int argc, char **argv)
 {
+    workers_block_signals();
     /* --quick: the large scenes only (ThreadSanitizer is slow) */
     int quick = argc > 1 && !strcmp(argv[1], "--quick");
     for (int i = 0; !quick && i < isk_scene_builtin_count(); i++) {

@@ -1,6 +1,7 @@
 /* Temporaries removed on signals (see cleanup.h). */
 #include "cleanup.h"
 
+#include <pthread.h>
 #include <signal.h>
 #include <stdio.h>
 #include <string.h>
@@ -96,12 +97,12 @@ static void block(sigset_t *old)
     sigemptyset(&all);
     for (int i = 0; i < NHANDLED; i++)
         sigaddset(&all, handled[i].sig);
-    sigprocmask(SIG_BLOCK, &all, old);
+    pthread_sigmask(SIG_BLOCK, &all, old); /* sigprocmask is unspecified with threads */
 }
 
 static void unblock(const sigset_t *old)
 {
-    sigprocmask(SIG_SETMASK, old, NULL);
+    pthread_sigmask(SIG_SETMASK, old, NULL);
 }
 
 void cleanup_install(const char *cmd)

@@ -1,0 +1,190 @@
+/* src/raster/dot_kernel.h — the coverage dot's weights and its 2x2 blend as
+ * inline kernels, shared by the single-dot calls (dot.c) and the batched
+ * draws over a particle store (src/view/world_draw.c, isk_draw_dots).
+ *
+ * The rules (documented in iskra/draw.h and dot.c) are stated once here;
+ * both the single call and the batch run exactly this code, so a batch is
+ * byte-identical to the loop of single calls.  Every kernel takes the blend
+ * mode as its last argument and is meant to be called with a constant one
+ * (ISK__BLEND_DISPATCH in raster/blend_px.h), so no per-pixel mode switch is
+ * left and no per-pixel function call.
+ */
+#ifndef ISKRA_RASTER_DOT_KERNEL_H
+#define ISKRA_RASTER_DOT_KERNEL_H
+
+#include <stdint.h>
+#include <string.h>
+
+#include "iskra/canvas.h"
+#include "raster/blend_px.h"
+
+/* Exact-area weights of the dot for fractional parts fx, fy in [0, 1).
+ * a_k = 255*gx*gy, 255*fx*gy, 255*gx*fy, 255*fx*fy (left to right, no
+ * contraction); w_k = floor(a_k); the 255 - sum(w) missing units go one
+ * each to the largest a_k - w_k, ties to the lower index.  The selection
+ * is written as ranks (how many weights come before k in that order, from
+ * the six pairwise comparisons) so it has no branches: k gets a unit when
+ * its rank is below the number missing.  The fractions are never NaN. */
+static ISK__INLINE void isk__dot_weights_frac(double fx, double fy, uint32_t w[4])
+{
+    double gx = 1.0 - fx, gy = 1.0 - fy;
+    double a0 = 255.0 * gx * gy, a1 = 255.0 * fx * gy, a2 = 255.0 * gx * fy, a3 = 255.0 * fx * fy;
+    /* a_k in [0, 255]: truncation is floor */
+    int i0 = (int)a0, i1 = (int)a1, i2 = (int)a2, i3 = (int)a3;
+    double f0 = a0 - i0, f1 = a1 - i1, f2 = a2 - i2, f3 = a3 - i3;
+    int left = 255 - (i0 + i1 + i2 + i3);
+    /* c_jk = (f_j >= f_k) for j < k: j comes first; the rank of k counts
+     * the j < k with c_jk and the j > k with f_j > f_k, i.e. !c_kj. */
+    int c01 = f0 >= f1, c02 = f0 >= f2, c03 = f0 >= f3, c12 = f1 >= f2, c13 = f1 >= f3, c23 = f2 >= f3;
+    int r0 = 3 - c01 - c02 - c03;
+    int r1 = 2 + c01 - c12 - c13;
+    int r2 = 1 + c02 + c12 - c23;
+    int r3 = c03 + c13 + c23;
+    w[0] = (uint32_t)(i0 + (r0 < left));
+    w[1] = (uint32_t)(i1 + (r1 < left));
+    w[2] = (uint32_t)(i2 + (r2 < left));
+    w[3] = (uint32_t)(i3 + (r3 < left));
+}
+
+/* floor(v) for v in (-2^31, 2^31), exactly (so v - floor(v) is exact too)
+ * and without a libm call. */
+static ISK__INLINE int isk__ifloor(double v)
+{
+    int i = (int)v;
+    return i - ((double)i > v);
+}
+
+/* One pixel at coverage w: from the batch's table when there is one
+ * (lut is a constant NULL for single dots, so this folds away). */
+static ISK__INLINE void isk__px_w(uint8_t *d, isk_color col, const isk__cov_lut *lut, uint32_t w, isk_blend mode)
+{
+    if (lut)
+        isk__px_lut(d, lut, w, mode);
+    else
+        isk__px_cov(d, col, w, mode);
+}
+
+#if defined(__SSE2__)
+/* One row of the block: two pixels at p with their a' spread over their
+ * channels (aa = [a0 x4, a1 x4]); isk__px_cov's bytes (see blend_px.h). */
+static ISK__INLINE void isk__row2_sse2(uint8_t *p, __m128i aa, __m128i C, isk_color col, const uint32_t *w,
+                                       isk_blend mode)
+{
+    const __m128i z = _mm_setzero_si128(), k128 = _mm_set1_epi16(128), k257 = _mm_set1_epi16(257);
+    __m128i v = _mm_loadl_epi64((const __m128i *)(const void *)p);
+    if (mode == ISK_BLEND_ADD) {
+        __m128i inc = _mm_mulhi_epu16(_mm_add_epi16(_mm_mullo_epi16(aa, C), k128), k257);
+        _mm_storel_epi64((__m128i *)(void *)p, _mm_adds_epu8(v, _mm_packus_epi16(inc, inc)));
+    } else if (p[3] == 255u && p[7] == 255u) {
+        __m128i x = _mm_add_epi16(_mm_mullo_epi16(_mm_unpacklo_epi8(v, z), _mm_sub_epi16(_mm_set1_epi16(255), aa)),
+                                  _mm_mullo_epi16(C, aa));
+        x = _mm_mulhi_epu16(_mm_add_epi16(x, k128), k257);
+        _mm_storel_epi64((__m128i *)(void *)p, _mm_packus_epi16(x, x));
+    } else {
+        isk__px_cov(p, col, w[0], mode);
+        isk__px_cov(p + 4, col, w[1], mode);
+    }
+}
+
+/* The whole 2x2 block (add or over): a' = div255(sa w) for the four
+ * weights at once, then a row of two pixels at a time. */
+static ISK__INLINE void isk__blend_2x2_sse2(uint8_t *p, size_t stride, const uint32_t w[4], isk_color col,
+                                            isk_blend mode)
+{
+    __m128i A = _mm_setr_epi16((short)w[0], (short)w[1], (short)w[2], (short)w[3], 0, 0, 0, 0);
+    A = _mm_mulhi_epu16(_mm_add_epi16(_mm_mullo_epi16(A, _mm_set1_epi16((short)col.a)), _mm_set1_epi16(128)),
+                        _mm_set1_epi16(257));
+    __m128i t = _mm_unpacklo_epi16(A, A);
+    uint32_t c32 = (uint32_t)col.r | (uint32_t)col.g << 8 | (uint32_t)col.b << 16 | 0xFF000000u;
+    __m128i C = _mm_unpacklo_epi8(_mm_cvtsi32_si128((int)c32), _mm_setzero_si128());
+    C = _mm_unpacklo_epi64(C, C);
+    isk__row2_sse2(p, _mm_unpacklo_epi32(t, t), C, col, w, mode);
+    isk__row2_sse2(p + stride, _mm_unpackhi_epi32(t, t), C, col, w + 2, mode);
+}
+#endif
+
+/* Blends the weights into the 2x2 block whose top-left pixel is (ix, iy),
+ * skipping pixels outside the canvas. */
+static ISK__INLINE void isk__blend_2x2(const isk_canvas *c, int ix, int iy, const uint32_t w[4], isk_color col,
+                                       const isk__cov_lut *lut, isk_blend mode)
+{
+    const size_t stride = c->stride;
+    if ((unsigned)ix < (unsigned)(c->width - 1) && (unsigned)iy < (unsigned)(c->height - 1)) {
+        uint8_t *p = c->pixels + (size_t)iy * stride + (size_t)ix * 4u;
+#if defined(__SSE2__)
+        if (!lut && mode != ISK_BLEND_REPLACE) {
+            isk__blend_2x2_sse2(p, stride, w, col, mode);
+            return;
+        }
+#endif
+        isk__px_w(p, col, lut, w[0], mode);
+        isk__px_w(p + 4, col, lut, w[1], mode);
+        isk__px_w(p + stride, col, lut, w[2], mode);
+        isk__px_w(p + stride + 4, col, lut, w[3], mode);
+        return;
+    }
+    int left = ix >= 0 && ix < c->width, right = ix + 1 >= 0 && ix + 1 < c->width;
+    int top = iy >= 0 && iy < c->height, bottom = iy + 1 >= 0 && iy + 1 < c->height;
+    if (top) {
+        uint8_t *p = c->pixels + (size_t)iy * stride;
+        if (left) isk__px_w(p + (size_t)ix * 4u, col, lut, w[0], mode);
+        if (right) isk__px_w(p + (size_t)(ix + 1) * 4u, col, lut, w[1], mode);
+    }
+    if (bottom) {
+        uint8_t *p = c->pixels + (size_t)(iy + 1) * stride;
+        if (left) isk__px_w(p + (size_t)ix * 4u, col, lut, w[2], mode);
+        if (right) isk__px_w(p + (size_t)(ix + 1) * 4u, col, lut, w[3], mode);
+    }
+}
+
+/* isk_draw_dot for a canvas known to have pixels. */
+static ISK__INLINE void isk__dot(const isk_canvas *c, double x, double y, isk_color col, const isk__cov_lut *lut,
+                                 isk_blend mode)
+{
+    /* The square [x, x+1) x [y, y+1) touches the canvas only for x in
+     * (-1, width) and y in (-1, height); the test also rejects NaN and keeps
+     * the conversions below defined. */
+    if (!(x > -1.0 && x < c->width && y > -1.0 && y < c->height))
+        return;
+    int ix = isk__ifloor(x), iy = isk__ifloor(y);
+    uint32_t w[4];
+    isk__dot_weights_frac(x - ix, y - iy, w);
+    isk__blend_2x2(c, ix, iy, w, col, lut, mode);
+}
+
+/* The browser's weights (see dot.c); 0 for non-finite or huge input. */
+static ISK__INLINE int isk__dot_weights_browser(double x, double y, int *ix, int *iy, uint32_t w[4])
+{
+    /* |x| < 16400 keeps x * 65536 inside int (and rejects NaN). */
+    if (!(x > -16400.0 && x < 16400.0 && y > -16400.0 && y < 16400.0)) {
+        w[0] = w[1] = w[2] = w[3] = 0;
+        return 0;
+    }
+    float xf = (float)x, yf = (float)y;
+    int L = (((int)(xf * 65536.0f)) + 0x80) >> 8;
+    int T = (((int)(yf * 65536.0f)) + 0x80) >> 8;
+    int l = L & 255, t = T & 255;
+    uint32_t c0 = l ? 256u - (uint32_t)l : 256u, c1 = (uint32_t)l;
+    uint32_t r0 = t ? 256u - (uint32_t)t : 255u, r1 = (uint32_t)t;
+    w[0] = c0 == 256u ? r0 : (r0 * c0) >> 8;
+    w[1] = (r0 * c1) >> 8;
+    w[2] = c0 == 256u ? r1 : (r1 * c0) >> 8;
+    w[3] = (r1 * c1) >> 8;
+    *ix = L >> 8; /* arithmetic shift: floor for negative values too */
+    *iy = T >> 8;
+    return 1;
+}
+
+/* isk_draw_dot_browser for a canvas known to have pixels. */
+static ISK__INLINE void isk__dot_browser(const isk_canvas *c, double x, double y, isk_color col,
+                                         const isk__cov_lut *lut, isk_blend mode)
+{
+    if (!(x > -2.0 && x < c->width + 1.0 && y > -2.0 && y < c->height + 1.0))
+        return;
+    int ix, iy;
+    uint32_t w[4];
+    if (isk__dot_weights_browser(x, y, &ix, &iy, w))
+        isk__blend_2x2(c, ix, iy, w, col, lut, mode);
+}
+
+#endif

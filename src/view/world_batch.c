@@ -1,0 +1,347 @@
+/* Batched drawing of a particle store through a view (isk_draw_dots,
+ * isk_draw_dots_browser, isk_draw_pixels in iskra/view.h).
+ *
+ * One loop per (view kind, dot rule, blend mode), chosen once per batch:
+ * the transform is isk_view_to_screen's arithmetic inlined (same operations,
+ * same order, so the same doubles), the dot weights are raster/dot_kernel.h's
+ * rules, the blend raster/blend_px.h's with the mode a constant and the
+ * colour prepared once (a coverage table).  The result is byte-identical to
+ * calling the single-dot functions in index order (tests/test_raster_fast.c).
+ */
+#include "iskra/view.h"
+
+#include <stddef.h>
+#include <stdint.h>
+#include <string.h>
+
+#include "raster/blend_px.h"
+#include "raster/dot_kernel.h"
+#include "raster/span_simd.h"
+
+typedef enum batch_rule { RULE_DOT, RULE_DOT_BROWSER, RULE_PIXEL } batch_rule;
+
+/* isk_draw_pixels, in blocks of PIXEL_BLOCK points: a first pass
+ * transforms each point and finds its pixel (prefetching it: a random
+ * access the hardware cannot guess), a second blends in index order.  The
+ * colour is prepared once: its coverage-255 table entry, since
+ * isk__px_lut(d, t, 255, mode) is isk__px(d, col, mode) (div255(a*255) = a). */
+#define PIXEL_BLOCK 64
+
+static ISK__INLINE void run_pixels(const isk_canvas *c, const isk_view *v, size_t n, const double *x,
+                                   const double *y, isk_color col, int camera, isk_blend mode)
+{
+    /* isk_view_to_screen: camera  X = w/2 + a*(x + tx),  Y = h/2 - a*(y + ty);
+     *                     window  X = sx*x + px,          Y = sy*y + py. */
+    const double hw = v->width / 2.0, hh = v->height / 2.0, a = v->a, tx = v->tx, ty = v->ty;
+    const double sx = v->sx, sy = v->sy, px = v->px, py = v->py;
+    const double W = c->width, H = c->height;
+    const size_t stride = c->stride;
+    isk__cov_lut t;
+    isk__cov_lut_entry(&t, col, 255);
+    size_t off[PIXEL_BLOCK];
+    for (size_t i0 = 0; i0 < n; i0 += PIXEL_BLOCK) {
+        const size_t m = n - i0 < PIXEL_BLOCK ? n - i0 : PIXEL_BLOCK;
+        size_t k = 0;
+        for (size_t i = 0; i < m; i++) {
+            double X, Y;
+            if (camera) {
+                X = hw + a * (x[i0 + i] + tx);
+                Y = hh - a * (y[i0 + i] + ty);
+            } else {
+                X = sx * x[i0 + i] + px;
+                Y = sy * y[i0 + i] + py;
+            }
+            if (X >= 0 && Y >= 0 && X < W && Y < H) {
+                off[k] = (size_t)(int)Y * stride + (size_t)(int)X * 4u;
+#if defined(__GNUC__)
+                __builtin_prefetch(c->pixels + off[k], 1);
+#endif
+                k++;
+            }
+        }
+        for (size_t i = 0; i < k; i++)
+            isk__px_lut(c->pixels + off[i], &t, 255, mode);
+    }
+}
+
+/* The exact-area dot over a batch, in blocks of BLOCK points:
+ *   1. transform the block (the view's arithmetic, as isk_view_to_screen);
+ *   2. for each point whose 2x2 block is wholly on the canvas, its top-left
+ *      pixel and four weights (raster/dot_kernel.h's rule; 4 points per
+ *      step with AVX2 when the CPU has it: the same IEEE operations in the
+ *      same order, so the same doubles), and prefetch its two rows;
+ *   3. blend in index order, two pixels of a row at a time (SSE2) from the
+ *      batch's coverage table; points near the edges or off the canvas go
+ *      through the single-dot kernel (clipping), in their turn.
+ * Pass 2 is pure arithmetic, independent from point to point, so the
+ * processor overlaps it freely; the blends then find their pixels loaded. */
+#define BLOCK 32
+
+typedef struct dot_block {
+    double x[BLOCK], y[BLOCK];
+    int32_t ix[BLOCK], iy[BLOCK];
+    uint8_t w[BLOCK][4];
+    uint8_t fast[BLOCK];
+} dot_block;
+
+typedef void (*weights_fn)(dot_block *b, int m, double W1, double H1);
+
+static ISK__INLINE void weight_one(dot_block *b, int k, double W1, double H1)
+{
+    double X = b->x[k], Y = b->y[k];
+    /* the whole 2x2 block on the canvas: floor(X) in [0, width-2] */
+    b->fast[k] = X >= 0.0 && X < W1 && Y >= 0.0 && Y < H1;
+    if (!b->fast[k])
+        return;
+    int ix = (int)X, iy = (int)Y; /* >= 0: truncation is floor */
+    uint32_t w[4];
+    isk__dot_weights_frac(X - ix, Y - iy, w);
+    b->ix[k] = ix;
+    b->iy[k] = iy;
+    for (int q = 0; q < 4; q++)
+        b->w[k][q] = (uint8_t)w[q];
+}
+
+static void weights_scalar(dot_block *b, int m, double W1, double H1)
+{
+    for (int k = 0; k < m; k++)
+        weight_one(b, k, W1, H1);
+}
+
+#if ISK__SPAN_AVX2
+/* weights_scalar for 4 points a step.  Each lane does the scalar code's
+ * operations: products left to right, floors by truncation of values
+ * >= 0, the rank selection as 0/1 doubles (small integers, exact). */
+static ISK__AVX2_FN void weights_avx2(dot_block *b, int m, double W1, double H1)
+{
+    const __m256d zero = _mm256_setzero_pd(), one = _mm256_set1_pd(1.0), k255 = _mm256_set1_pd(255.0);
+    const __m256d vW1 = _mm256_set1_pd(W1), vH1 = _mm256_set1_pd(H1);
+    int k = 0;
+    for (; k + 4 <= m; k += 4) {
+        __m256d X = _mm256_loadu_pd(b->x + k), Y = _mm256_loadu_pd(b->y + k);
+        __m256d ok = _mm256_and_pd(_mm256_and_pd(_mm256_cmp_pd(X, zero, _CMP_GE_OQ), _mm256_cmp_pd(X, vW1, _CMP_LT_OQ)),
+                                   _mm256_and_pd(_mm256_cmp_pd(Y, zero, _CMP_GE_OQ), _mm256_cmp_pd(Y, vH1, _CMP_LT_OQ)));
+        int okbits = _mm256_movemask_pd(ok);
+        for (int q = 0; q < 4; q++)
+            b->fast[k + q] = (uint8_t)((okbits >> q) & 1);
+        if (!okbits)
+            continue;
+        X = _mm256_and_pd(X, ok); /* other lanes: 0, harmless */
+        Y = _mm256_and_pd(Y, ok);
+        __m128i ix = _mm256_cvttpd_epi32(X), iy = _mm256_cvttpd_epi32(Y);
+        _mm_storeu_si128((__m128i *)(void *)(b->ix + k), ix);
+        _mm_storeu_si128((__m128i *)(void *)(b->iy + k), iy);
+        __m256d fx = _mm256_sub_pd(X, _mm256_cvtepi32_pd(ix)), fy = _mm256_sub_pd(Y, _mm256_cvtepi32_pd(iy));
+        __m256d gx = _mm256_sub_pd(one, fx), gy = _mm256_sub_pd(one, fy);
+        __m256d a0 = _mm256_mul_pd(_mm256_mul_pd(k255, gx), gy), a1 = _mm256_mul_pd(_mm256_mul_pd(k255, fx), gy);
+        __m256d a2 = _mm256_mul_pd(_mm256_mul_pd(k255, gx), fy), a3 = _mm256_mul_pd(_mm256_mul_pd(k255, fx), fy);
+        __m128i i0 = _mm256_cvttpd_epi32(a0), i1 = _mm256_cvttpd_epi32(a1);
+        __m128i i2 = _mm256_cvttpd_epi32(a2), i3 = _mm256_cvttpd_epi32(a3);
+        __m256d d0 = _mm256_cvtepi32_pd(i0), d1 = _mm256_cvtepi32_pd(i1);
+        __m256d d2 = _mm256_cvtepi32_pd(i2), d3 = _mm256_cvtepi32_pd(i3);
+        __m256d f0 = _mm256_sub_pd(a0, d0), f1 = _mm256_sub_pd(a1, d1);
+        __m256d f2 = _mm256_sub_pd(a2, d2), f3 = _mm256_sub_pd(a3, d3);
+        __m256d left = _mm256_sub_pd(k255, _mm256_add_pd(_mm256_add_pd(d0, d1), _mm256_add_pd(d2, d3)));
+#define GE01(p, q) _mm256_and_pd(_mm256_cmp_pd(p, q, _CMP_GE_OQ), one)
+        __m256d c01 = GE01(f0, f1), c02 = GE01(f0, f2), c03 = GE01(f0, f3);
+        __m256d c12 = GE01(f1, f2), c13 = GE01(f1, f3), c23 = GE01(f2, f3);
+#undef GE01
+        __m256d r0 = _mm256_sub_pd(_mm256_sub_pd(_mm256_sub_pd(_mm256_set1_pd(3.0), c01), c02), c03);
+        __m256d r1 = _mm256_sub_pd(_mm256_sub_pd(_mm256_add_pd(_mm256_set1_pd(2.0), c01), c12), c13);
+        __m256d r2 = _mm256_sub_pd(_mm256_add_pd(_mm256_add_pd(one, c02), c12), c23);
+        __m256d r3 = _mm256_add_pd(_mm256_add_pd(c03, c13), c23);
+#define BUMP(d, r) _mm256_cvttpd_epi32(_mm256_add_pd(d, _mm256_and_pd(_mm256_cmp_pd(r, left, _CMP_LT_OQ), one)))
+        __m128i w0 = BUMP(d0, r0), w1 = BUMP(d1, r1), w2 = BUMP(d2, r2), w3 = BUMP(d3, r3);
+#undef BUMP
+        /* bytes w0 w0 w0 w0 w1 ... w3 (4 points each), then per point */
+        __m128i bytes = _mm_packus_epi16(_mm_packs_epi32(w0, w1), _mm_packs_epi32(w2, w3));
+        bytes = _mm_shuffle_epi8(bytes, _mm_setr_epi8(0, 4, 8, 12, 1, 5, 9, 13, 2, 6, 10, 14, 3, 7, 11, 15));
+        _mm_storeu_si128((__m128i *)(void *)b->w[k], bytes);
+    }
+    for (; k < m; k++)
+        weight_one(b, k, W1, H1);
+}
+#endif
+
+/* The browser rule's weights (integer arithmetic, already cheap). */
+static void weights_browser(dot_block *b, int m, double W1, double H1)
+{
+    for (int k = 0; k < m; k++) {
+        double X = b->x[k], Y = b->y[k];
+        int ix, iy;
+        uint32_t w[4];
+        /* isk__dot_browser's range test, then its weights; fast when the
+         * 2x2 block is wholly on the canvas */
+        b->fast[k] = X > -2.0 && X < W1 + 2.0 && Y > -2.0 && Y < H1 + 2.0 &&
+                     isk__dot_weights_browser(X, Y, &ix, &iy, w) && ix >= 0 && ix < W1 && iy >= 0 && iy < H1;
+        if (!b->fast[k])
+            continue;
+        b->ix[k] = ix;
+        b->iy[k] = iy;
+        for (int q = 0; q < 4; q++)
+            b->w[k][q] = (uint8_t)w[q];
+    }
+}
+
+static weights_fn pick_weights(int browser)
+{
+    if (browser)
+        return weights_browser;
+#if ISK__SPAN_AVX2
+    if (isk__have_avx2())
+        return weights_avx2;
+#endif
+    return weights_scalar;
+}
+
+/* Two pixels of a row (8 bytes at p) at coverages wa, wb. */
+static ISK__INLINE void px2(uint8_t *p, isk_color col, const isk__cov_lut *lut, uint32_t wa, uint32_t wb,
+                            isk_blend mode)
+{
+#if ISK__SPAN_SSE2
+    if (mode == ISK_BLEND_ADD) {
+        uint32_t ia, ib;
+        memcpy(&ia, lut->add[wa], 4);
+        memcpy(&ib, lut->add[wb], 4);
+        __m128i inc = _mm_unpacklo_epi32(_mm_cvtsi32_si128((int)ia), _mm_cvtsi32_si128((int)ib));
+        __m128i v = _mm_loadl_epi64((const __m128i *)(const void *)p);
+        _mm_storel_epi64((__m128i *)(void *)p, _mm_adds_epu8(v, inc));
+        return;
+    }
+    if (mode == ISK_BLEND_OVER && p[3] == 255u && p[7] == 255u) {
+        /* div255(c a' + d (255 - a')) on both pixels' lanes */
+        __m128i P = _mm_set_epi64x((long long)lut->over_p[wb], (long long)lut->over_p[wa]);
+        __m128i I = _mm_set_epi64x((long long)lut->over_inv[wb], (long long)lut->over_inv[wa]);
+        __m128i v = _mm_loadl_epi64((const __m128i *)(const void *)p);
+        __m128i x = _mm_add_epi16(_mm_mullo_epi16(_mm_unpacklo_epi8(v, _mm_setzero_si128()), I), P);
+        _mm_storel_epi64((__m128i *)(void *)p, _mm_packus_epi16(isk__s_div255(x), x));
+        return;
+    }
+#endif
+    isk__px_w(p, col, lut, wa, mode);
+    isk__px_w(p + 4, col, lut, wb, mode);
+}
+
+static ISK__INLINE void run_dots_blocked(const isk_canvas *c, const isk_view *v, size_t n, const double *x,
+                                         const double *y, isk_color col, const isk__cov_lut *lut, int camera,
+                                         int browser, isk_blend mode)
+{
+    const double hw = v->width / 2.0, hh = v->height / 2.0, a = v->a, tx = v->tx, ty = v->ty;
+    const double sx = v->sx, sy = v->sy, px = v->px, py = v->py;
+    const double W1 = c->width - 1.0, H1 = c->height - 1.0;
+    const size_t stride = c->stride;
+    uint8_t *const pixels = c->pixels;
+    const weights_fn weights = pick_weights(browser);
+    dot_block b;
+    for (size_t i0 = 0; i0 < n; i0 += BLOCK) {
+        const int m = n - i0 < BLOCK ? (int)(n - i0) : BLOCK;
+        for (int k = 0; k < m; k++) {
+            if (camera) {
+                b.x[k] = hw + a * (x[i0 + k] + tx);
+                b.y[k] = hh - a * (y[i0 + k] + ty);
+            } else {
+                b.x[k] = sx * x[i0 + k] + px;
+                b.y[k] = sy * y[i0 + k] + py;
+            }
+        }
+        weights(&b, m, W1, H1);
+#if defined(__GNUC__)
+        for (int k = 0; k < m; k++)
+            if (b.fast[k]) {
+                const uint8_t *q = pixels + (size_t)b.iy[k] * stride + (size_t)b.ix[k] * 4u;
+                __builtin_prefetch(q, 1);
+                __builtin_prefetch(q + stride, 1);
+            }
+#endif
+        for (int k = 0; k < m; k++) {
+            if (b.fast[k]) {
+                uint8_t *p = pixels + (size_t)b.iy[k] * stride + (size_t)b.ix[k] * 4u;
+                if (lut) {
+                    px2(p, col, lut, b.w[k][0], b.w[k][1], mode);
+                    px2(p + stride, col, lut, b.w[k][2], b.w[k][3], mode);
+                } else {
+                    isk__px_cov(p, col, b.w[k][0], mode);
+                    isk__px_cov(p + 4, col, b.w[k][1], mode);
+                    isk__px_cov(p + stride, col, b.w[k][2], mode);
+                    isk__px_cov(p + stride + 4, col, b.w[k][3], mode);
+                }
+            } else if (browser) {
+                isk__dot_browser(c, b.x[k], b.y[k], col, lut, mode);
+            } else {
+                isk__dot(c, b.x[k], b.y[k], col, lut, mode);
+            }
+        }
+    }
+}
+
+static ISK__INLINE void run_kind(const isk_canvas *c, const isk_view *v, size_t n, const double *x, const double *y,
+                                 isk_color col, const isk__cov_lut *lut, batch_rule rule, isk_blend mode)
+{
+    if (rule == RULE_DOT && v->kind == ISK_VIEW_CAMERA)
+        run_dots_blocked(c, v, n, x, y, col, lut, 1, 0, mode);
+    else if (rule == RULE_DOT)
+        run_dots_blocked(c, v, n, x, y, col, lut, 0, 0, mode);
+    else if (rule == RULE_DOT_BROWSER && v->kind == ISK_VIEW_CAMERA)
+        run_dots_blocked(c, v, n, x, y, col, lut, 1, 1, mode);
+    else if (rule == RULE_DOT_BROWSER)
+        run_dots_blocked(c, v, n, x, y, col, lut, 0, 1, mode);
+    else if (v->kind == ISK_VIEW_CAMERA)
+        run_pixels(c, v, n, x, y, col, 1, mode);
+    else
+        run_pixels(c, v, n, x, y, col, 0, mode);
+}
+
+/* Batches this short skip the 256-entry table: building it would cost
+ * more than it saves. */
+#define LUT_MIN_BATCH 64
+
+static ISK__INLINE void run_rule(const isk_canvas *c, const isk_view *v, size_t n, const double *x, const double *y,
+                                 isk_color col, batch_rule rule, isk_blend mode)
+{
+    isk__cov_lut lut;
+    switch (rule) {
+    case RULE_DOT:
+    case RULE_DOT_BROWSER:
+        if (n >= LUT_MIN_BATCH) {
+            isk__cov_lut_init(&lut, col);
+            if (rule == RULE_DOT)
+                run_kind(c, v, n, x, y, col, &lut, RULE_DOT, mode);
+            else
+                run_kind(c, v, n, x, y, col, &lut, RULE_DOT_BROWSER, mode);
+        } else if (rule == RULE_DOT) {
+            run_kind(c, v, n, x, y, col, NULL, RULE_DOT, mode);
+        } else {
+            run_kind(c, v, n, x, y, col, NULL, RULE_DOT_BROWSER, mode);
+        }
+        break;
+    case RULE_PIXEL:
+        run_kind(c, v, n, x, y, col, NULL, RULE_PIXEL, mode);
+        break;
+    }
+}
+
+static void draw_batch(isk_canvas *c, const isk_view *v, size_t n, const double *x, const double *y,
+                       isk_color col, isk_blend mode, batch_rule rule)
+{
+    if (!c || !c->pixels || !v || !x || !y || n == 0)
+        return;
+    ISK__BLEND_DISPATCH(mode, run_rule, c, v, n, x, y, col, rule);
+}
+
+void isk_draw_dots(isk_canvas *c, const isk_view *v, size_t n, const double *x, const double *y,
+                   isk_color color, isk_blend mode)
+{
+    draw_batch(c, v, n, x, y, color, mode, RULE_DOT);
+}
+
+void isk_draw_dots_browser(isk_canvas *c, const isk_view *v, size_t n, const double *x, const double *y,
+                           isk_color color, isk_blend mode)
+{
+    draw_batch(c, v, n, x, y, color, mode, RULE_DOT_BROWSER);
+}
+
+void isk_draw_pixels(isk_canvas *c, const isk_view *v, size_t n, const double *x, const double *y,
+                     isk_color color, isk_blend mode)
+{
+    draw_batch(c, v, n, x, y, color, mode, RULE_PIXEL);
+}

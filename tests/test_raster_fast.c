@@ -1,0 +1,365 @@
+/* Byte identity of the rasterizer's fast paths (span kernels, tables, SWAR
+ * and vector code, batched draws) with the per-pixel reference
+ * implementation frozen in tests/raster_ref.h.
+ *
+ * Every test draws the same random input with both and compares every byte
+ * of the canvas, including pixels outside the drawn area: random canvas
+ * sizes (1x1 up), canvases that are views of a larger buffer (stride >
+ * 4*width, sentinel bytes around), positions clipped at every edge, huge,
+ * infinite and NaN coordinates, every blend mode, source alpha 0, 255 and in
+ * between, destinations opaque, transparent and in between.  The small
+ * arithmetic identities the kernels rely on are checked exhaustively. */
+#include <criterion/criterion.h>
+
+#include <float.h>
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "iskra/rng.h"
+#include "iskra/view.h"
+#include "raster/blend_px.h"
+#include "raster_ref.h"
+
+static const isk_blend MODES[3] = {ISK_BLEND_REPLACE, ISK_BLEND_OVER, ISK_BLEND_ADD};
+
+static uint8_t rnd_byte(isk_rng *r)
+{
+    switch (isk_rng_below(r, 6)) {
+    case 0: return 0;
+    case 1: return 255;
+    default: return (uint8_t)isk_rng_below(r, 256);
+    }
+}
+
+static isk_color rnd_color(isk_rng *r)
+{
+    isk_color c = {(uint8_t)isk_rng_below(r, 256), (uint8_t)isk_rng_below(r, 256), (uint8_t)isk_rng_below(r, 256),
+                   rnd_byte(r)};
+    return c;
+}
+
+/* Two identical canvases that are views into larger buffers (a margin of
+ * sentinel bytes around, a stride wider than the row), filled with random
+ * pixels whose alpha is opaque, transparent or anything (per canvas style). */
+typedef struct pair {
+    uint8_t *buf[2];
+    isk_canvas c[2];
+    size_t bytes;
+} pair;
+
+enum { MARGIN = 3 };
+
+static pair make_pair(isk_rng *r, int w, int h)
+{
+    pair p;
+    size_t stride = (size_t)(w + 2 * MARGIN) * 4u + isk_rng_below(r, 3);
+    p.bytes = stride * (size_t)(h + 2 * MARGIN);
+    int style = (int)isk_rng_below(r, 3); /* 0 opaque, 1 mixed alpha, 2 random alpha */
+    for (int k = 0; k < 2; k++) {
+        p.buf[k] = malloc(p.bytes);
+        cr_assert(p.buf[k]);
+    }
+    for (size_t b = 0; b < p.bytes; b++)
+        p.buf[0][b] = (uint8_t)isk_rng_below(r, 256);
+    for (size_t b = 3; b < p.bytes; b += 4)
+        if (style == 0 || (style == 1 && isk_rng_below(r, 2)))
+            p.buf[0][b] = 255;
+    memcpy(p.buf[1], p.buf[0], p.bytes);
+    for (int k = 0; k < 2; k++)
+        cr_assert_eq(isk_canvas_wrap(&p.c[k], p.buf[k] + MARGIN * stride + MARGIN * 4, w, h, stride), ISK_OK);
+    return p;
+}
+
+static void check_pair(pair *p, const char *what, int n)
+{
+    size_t at = 0;
+    while (at < p->bytes && p->buf[0][at] == p->buf[1][at])
+        at++;
+    cr_assert_eq(at, p->bytes, "%s (case %d): byte %zu differs: fast %d, reference %d", what, n, at,
+                 at < p->bytes ? p->buf[0][at] : 0, at < p->bytes ? p->buf[1][at] : 0);
+    free(p->buf[0]);
+    free(p->buf[1]);
+}
+
+static int rnd_size(isk_rng *r)
+{
+    return isk_rng_below(r, 5) == 0 ? 1 + (int)isk_rng_below(r, 3) : 1 + (int)isk_rng_below(r, 48);
+}
+
+/* A screen coordinate for a canvas dimension n: mostly on or near the
+ * canvas (edges included), sometimes wild. */
+static double rnd_coord(isk_rng *r, int n)
+{
+    switch (isk_rng_below(r, 24)) {
+    case 0: return NAN;
+    case 1: return isk_rng_below(r, 2) ? INFINITY : -INFINITY;
+    case 2: return isk_rng_below(r, 2) ? 1e300 : -1e300;
+    case 3: return isk_rng_below(r, 2) ? DBL_MAX : -DBL_MAX;
+    case 4: return isk_rng_range(r, -1e9, 1e9);
+    case 5: return (double)(int)isk_rng_below(r, (uint32_t)n + 4) - 2.0;            /* integers */
+    case 6: return ((double)(int)isk_rng_below(r, 2u * (uint32_t)n + 8) - 4.0) / 2.0; /* halves */
+    case 7: return (isk_rng_below(r, 2) ? -1.0 : (double)n) + isk_rng_range(r, -1e-9, 1e-9);
+    case 8: return isk_rng_below(r, 2) ? -0.0 : 1e-300;
+    case 9: return nextafter((double)(int)isk_rng_below(r, (uint32_t)n + 2), -INFINITY);
+    default: return isk_rng_range(r, -3.0, n + 3.0);
+    }
+}
+
+/* ---- arithmetic identities (exhaustive) ----------------------------------- */
+
+Test(raster_fast, div255_lanes_exact_for_every_product)
+{
+    for (uint64_t x = 0; x <= 255u * 255u; x++) {
+        uint64_t v = isk__div255_lanes(x | x << 16 | x << 32 | x << 48);
+        uint64_t want = isk_div255((uint32_t)x);
+        cr_assert_eq(v, want | want << 16 | want << 32 | want << 48, "x = %llu", (unsigned long long)x);
+    }
+}
+
+Test(raster_fast, swar_saturating_add_every_pair)
+{
+    for (uint32_t a = 0; a < 256u; a++)
+        for (uint32_t b = 0; b < 256u; b++) {
+            uint32_t s = a + b > 255u ? 255u : a + b;
+            /* each byte position, with other lanes near overflow too */
+            uint32_t va = a | (255u - a) << 8 | b << 16 | a << 24;
+            uint32_t vb = b | a << 8 | 255u << 16 | b << 24;
+            uint32_t got = isk__sat_add_u8x4(va, vb);
+            uint32_t s1 = (255u - a) + a > 255u ? 255u : 255u;
+            uint32_t s2 = b + 255u > 255u ? 255u : b + 255u;
+            cr_assert_eq(got, s | s1 << 8 | s2 << 16 | s << 24, "a=%u b=%u", a, b);
+        }
+}
+
+/* Every colour's table against the per-pixel rule, for every coverage. */
+Test(raster_fast, coverage_table_equals_blend_pixel_cov)
+{
+    isk_rng r;
+    isk_rng_seed(&r, 1);
+    for (int n = 0; n < 400; n++) {
+        isk_color col = rnd_color(&r);
+        isk__cov_lut lut;
+        isk__cov_lut_init(&lut, col);
+        for (uint32_t cov = 0; cov < 256u; cov++)
+            for (int mi = 0; mi < 3; mi++) {
+                uint8_t a[4], b[4];
+                for (int k = 0; k < 4; k++)
+                    a[k] = b[k] = rnd_byte(&r);
+                isk__px_lut(a, &lut, cov, MODES[mi]);
+                ref_blend_pixel_cov(b, col, (uint8_t)cov, MODES[mi]);
+                cr_assert(memcmp(a, b, 4) == 0, "colour %d cov %u mode %d", n, cov, mi);
+                isk_blend_pixel_cov(a, col, (uint8_t)cov, MODES[mi]);
+                ref_blend_pixel_cov(b, col, (uint8_t)cov, MODES[mi]);
+                cr_assert(memcmp(a, b, 4) == 0, "isk_blend_pixel_cov: colour %d cov %u mode %d", n, cov, mi);
+            }
+    }
+}
+
+Test(raster_fast, dot_weights_equal_reference)
+{
+    isk_rng r;
+    isk_rng_seed(&r, 2);
+    for (int n = 0; n < 200000; n++) {
+        double x = rnd_coord(&r, 64), y = rnd_coord(&r, 64);
+        if (n % 4 == 0) { /* fractions with few bits: many ties */
+            x = floor(x * 8) / 8;
+            y = floor(y * 4) / 4;
+        }
+        uint8_t a[4], b[4];
+        int ia, ib;
+        cr_assert_eq(isk_dot_weights(x, y, a), ref_dot_weights(x, y, b));
+        cr_assert(memcmp(a, b, 4) == 0, "isk_dot_weights(%a, %a)", x, y);
+        int ax = 7, ay = 7, bx = 7, by = 7;
+        ia = isk_dot_weights_browser(x, y, &ax, &ay, a);
+        ib = ref_dot_weights_browser(x, y, &bx, &by, b);
+        cr_assert_eq(ia, ib);
+        cr_assert(memcmp(a, b, 4) == 0 && ax == bx && ay == by, "browser weights (%a, %a)", x, y);
+    }
+}
+
+/* ---- primitives against the reference ---------------------------------- */
+
+Test(raster_fast, pixel_and_rect_equal_reference)
+{
+    isk_rng r;
+    isk_rng_seed(&r, 3);
+    for (int n = 0; n < 600; n++) {
+        int w = rnd_size(&r), h = rnd_size(&r);
+        pair p = make_pair(&r, w, h);
+        for (int k = 0; k < 30; k++) {
+            isk_color col = rnd_color(&r);
+            isk_blend mode = MODES[isk_rng_below(&r, 3)];
+            int x = (int)isk_rng_below(&r, (uint32_t)w + 4) - 2, y = (int)isk_rng_below(&r, (uint32_t)h + 4) - 2;
+            if (k % 2) {
+                isk_draw_pixel(&p.c[0], x, y, col, mode);
+                ref_draw_pixel(&p.c[1], x, y, col, mode);
+            } else {
+                int rw = (int)isk_rng_below(&r, 12) - 4, rh = (int)isk_rng_below(&r, 12) - 4;
+                isk_fill_rect(&p.c[0], x, y, rw, rh, col, mode);
+                for (int j = 0; j < abs(rh); j++) /* the rect rule, pixel by pixel */
+                    for (int i = 0; i < abs(rw); i++)
+                        ref_draw_pixel(&p.c[1], (rw < 0 ? x + rw : x) + i, (rh < 0 ? y + rh : y) + j, col, mode);
+            }
+        }
+        check_pair(&p, "pixel/rect", n);
+    }
+}
+
+Test(raster_fast, dot_equals_reference)
+{
+    isk_rng r;
+    isk_rng_seed(&r, 4);
+    for (int n = 0; n < 1500; n++) {
+        int w = rnd_size(&r), h = rnd_size(&r);
+        pair p = make_pair(&r, w, h);
+        int browser = n % 2;
+        for (int k = 0; k < 40; k++) {
+            isk_color col = rnd_color(&r);
+            isk_blend mode = MODES[isk_rng_below(&r, 3)];
+            double x = rnd_coord(&r, w), y = rnd_coord(&r, h);
+            if (browser) {
+                isk_draw_dot_browser(&p.c[0], x, y, col, mode);
+                ref_draw_dot_browser(&p.c[1], x, y, col, mode);
+            } else {
+                isk_draw_dot(&p.c[0], x, y, col, mode);
+                ref_draw_dot(&p.c[1], x, y, col, mode);
+            }
+        }
+        check_pair(&p, browser ? "browser dot" : "dot", n);
+    }
+}
+
+/* isk_draw_dots / _browser / isk_draw_pixels against the loop of single
+ * reference calls they replace, for both view kinds and batch sizes on both
+ * sides of the table threshold and the block size. */
+Test(raster_fast, batches_equal_loop_of_single_calls)
+{
+    isk_rng r;
+    isk_rng_seed(&r, 5);
+    static const size_t counts[] = {1, 2, 31, 32, 33, 63, 64, 65, 100, 1000};
+    double *x = malloc(1000 * sizeof *x), *y = malloc(1000 * sizeof *y);
+    cr_assert(x && y);
+    for (int n = 0; n < 900; n++) {
+        int w = rnd_size(&r), h = rnd_size(&r);
+        pair p = make_pair(&r, w, h);
+        isk_view v;
+        if (n % 2)
+            cr_assert_eq(isk_view_camera(&v, w, h, isk_rng_range(&r, 0.5, 20), isk_rng_range(&r, -2, 2),
+                                         isk_rng_range(&r, -2, 2)),
+                         ISK_OK);
+        else
+            cr_assert_eq(isk_view_window(&v, w, h, -3, 3 + isk_rng_uniform(&r), -2, 2), ISK_OK);
+        size_t m = counts[isk_rng_below(&r, sizeof counts / sizeof counts[0])];
+        for (size_t i = 0; i < m; i++) {
+            double X = rnd_coord(&r, w), Y = rnd_coord(&r, h);
+            isk_view_to_world(&v, X, Y, &x[i], &y[i]);
+            if (isk_rng_below(&r, 30) == 0) /* wild world values too */
+                x[i] = rnd_coord(&r, w) * 1e10;
+        }
+        isk_color col = rnd_color(&r);
+        isk_blend mode = MODES[isk_rng_below(&r, 3)];
+        int rule = (int)isk_rng_below(&r, 3);
+        if (rule == 0)
+            isk_draw_dots(&p.c[0], &v, m, x, y, col, mode);
+        else if (rule == 1)
+            isk_draw_dots_browser(&p.c[0], &v, m, x, y, col, mode);
+        else
+            isk_draw_pixels(&p.c[0], &v, m, x, y, col, mode);
+        for (size_t i = 0; i < m; i++) {
+            double X, Y;
+            isk_view_to_screen(&v, x[i], y[i], &X, &Y);
+            if (rule == 0)
+                ref_draw_dot(&p.c[1], X, Y, col, mode);
+            else if (rule == 1)
+                ref_draw_dot_browser(&p.c[1], X, Y, col, mode);
+            else if (X >= 0 && Y >= 0 && X < w && Y < h)
+                ref_draw_pixel(&p.c[1], (int)X, (int)Y, col, mode);
+        }
+        check_pair(&p, rule == 0 ? "isk_draw_dots" : rule == 1 ? "isk_draw_dots_browser" : "isk_draw_pixels", n);
+    }
+    /* NULL and empty arguments draw nothing */
+    isk_canvas c;
+    cr_assert_eq(isk_canvas_init(&c, 4, 4), ISK_OK);
+    isk_view v;
+    cr_assert_eq(isk_view_window(&v, 4, 4, 0, 4, 0, 4), ISK_OK);
+    x[0] = y[0] = 1.5;
+    isk_draw_dots(NULL, &v, 1, x, y, ISK_WHITE, ISK_BLEND_ADD);
+    isk_draw_dots(&c, NULL, 1, x, y, ISK_WHITE, ISK_BLEND_ADD);
+    isk_draw_dots(&c, &v, 1, NULL, y, ISK_WHITE, ISK_BLEND_ADD);
+    isk_draw_pixels(&c, &v, 0, x, y, ISK_WHITE, ISK_BLEND_ADD);
+    isk_draw_dots_browser(&c, &v, 1, x, NULL, ISK_WHITE, ISK_BLEND_ADD);
+    for (int i = 0; i < 4 * 4 * 4; i++)
+        cr_assert_eq(c.pixels[i], 0);
+    isk_canvas_free(&c);
+    free(x);
+    free(y);
+}
+
+static double rnd_radius(isk_rng *r)
+{
+    switch (isk_rng_below(r, 16)) {
+    case 0: return NAN;
+    case 1: return INFINITY;
+    case 2: return -isk_rng_range(r, 0, 5);
+    case 3: return 0.0;
+    case 4: return isk_rng_range(r, 1e-6, 0.2);
+    case 5: return isk_rng_range(r, 65536.0, 2e5); /* the tangent rule */
+    case 6: return 1.0;
+    case 7: return 3.0;
+    case 8: return 8.0;
+    case 9: return (double)(int)isk_rng_below(r, 12) / 2.0;
+    default: return isk_rng_range(r, 0.2, 30);
+    }
+}
+
+Test(raster_fast, aa_disc_equals_reference)
+{
+    isk_rng r;
+    isk_rng_seed(&r, 6);
+    for (int n = 0; n < 1200; n++) {
+        int w = rnd_size(&r), h = rnd_size(&r);
+        pair p = make_pair(&r, w, h);
+        for (int k = 0; k < 6; k++) {
+            isk_color col = rnd_color(&r);
+            isk_blend mode = MODES[isk_rng_below(&r, 3)];
+            double cx = rnd_coord(&r, w), cy = rnd_coord(&r, h), rad = rnd_radius(&r);
+            if (rad > 60000 && isk_rng_below(&r, 2)) /* a huge disc whose edge crosses the canvas */
+                cx = -rad + isk_rng_range(&r, 0, w);
+            isk_fill_circle_aa(&p.c[0], cx, cy, rad, col, mode);
+            ref_fill_circle_aa(&p.c[1], cx, cy, rad, col, mode);
+        }
+        check_pair(&p, "isk_fill_circle_aa", n);
+    }
+}
+
+Test(raster_fast, sprites_equal_reference)
+{
+    isk_rng r;
+    isk_rng_seed(&r, 7);
+    for (int n = 0; n < 1200; n++) {
+        int w = rnd_size(&r), h = rnd_size(&r);
+        pair p = make_pair(&r, w, h);
+        isk_sprite s;
+        int size = isk_rng_below(&r, 8) == 0 ? 1 + (int)isk_rng_below(&r, 256) : 1 + (int)isk_rng_below(&r, 40);
+        cr_assert_eq(isk_sprite_init(&s, (isk_sprite_kind)isk_rng_below(&r, 3), size, rnd_color(&r)), ISK_OK);
+        for (int k = 0; k < 8; k++) {
+            isk_blend mode = MODES[isk_rng_below(&r, 3)];
+            double cx = rnd_coord(&r, w), cy = rnd_coord(&r, h);
+            if (isk_rng_below(&r, 3) == 0) { /* far from the canvas but overlapping it */
+                cx = isk_rng_range(&r, -size, w + size);
+                cy = isk_rng_range(&r, -size, h + size);
+            }
+            if (k % 2) {
+                isk_color col = rnd_color(&r);
+                isk_draw_sprite_tinted(&p.c[0], &s, cx, cy, col, mode);
+                ref_draw_sprite_tinted(&p.c[1], &s, cx, cy, col, mode);
+            } else {
+                isk_draw_sprite(&p.c[0], &s, cx, cy, mode);
+                ref_draw_sprite(&p.c[1], &s, cx, cy, mode);
+            }
+        }
+        isk_sprite_free(&s);
+        check_pair(&p, "sprite", n);
+    }
+}
