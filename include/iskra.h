@@ -20,6 +20,8 @@
  *   iskra/keys.h     every scene key: type, range, default, meaning (one table)
  *   iskra/chart.h    line charts (work-precision diagrams, log/linear axes)
  *   iskra/problems.h closed-form reference problems (integrator accuracy)
+ *   iskra/ui.h       immediate-mode widgets drawn by the rasterizer (iskra/ui_sdl.h feeds
+ *                    them the window's events)
  * The SDL2 window lives in a separate library: #include "iskra/sdl.h" and
  * link libiskra-sdl (pkg-config iskra-sdl).  Every header can be used from
  * C++ (extern "C"; tests/cxx_link.cpp checks).
@@ -57,5 +59,6 @@
 #include "iskra/presets.h"
 #include "iskra/chart.h"
 #include "iskra/problems.h"
+#include "iskra/ui.h"
 
 #endif
