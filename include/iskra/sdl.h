@@ -108,6 +108,15 @@ isk_status isk_window_set_size(isk_window *w, int width, int height);
  * ISK_ERR_DISPLAY if SDL fails (the window then keeps its old size). */
 isk_status isk_window_resize_canvas(isk_window *w, int width, int height, isk_error *err);
 
+/* The usable size of the display the window is on (without task bars), for
+ * choosing how large to lay out; ISK_ERR_DISPLAY if SDL cannot tell. */
+isk_status isk_window_display_size(const isk_window *w, int *width, int *height);
+
+/* Whether isk_window_run sleeps out the rest of ~1/60 s after a quick
+ * frame (1, the default) or runs frames as fast as they come (0: scripted
+ * sessions with their own clock). */
+void isk_window_set_pacing(isk_window *w, int on);
+
 /* Whether Escape ends isk_window_run (1, the default) or reaches the frame
  * callback like any key (0: programs whose text fields use Escape to cancel
  * an edit, and quit on Escape themselves). */

@@ -214,6 +214,10 @@ void isk_ui_end(isk_ui *ui);
 /* 1 when `key` was pressed this frame and no focused field took it (see
  * the header comment); F1..F12 always reach the program. */
 int isk_ui_key(const isk_ui *ui, int key);
+/* This frame's keys that no field took, in order (typed text excluded):
+ * at most max into out, returns how many.  For shortcuts that must see a
+ * key pressed twice in one frame twice. */
+int isk_ui_keys(const isk_ui *ui, int *out, int max);
 /* 1 while a text field has the focus (keys go to it). */
 int isk_ui_editing(const isk_ui *ui);
 /* 1 when the pointer is over any widget drawn so far this frame. */

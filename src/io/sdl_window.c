@@ -44,6 +44,7 @@ struct isk_window {
     int has_carry;       /* an event polled but not yet delivered (full frame) */
     isk_event carry;
     int escape_keeps;    /* 1: Escape reaches the frame callback instead of ending the loop */
+    int unpaced;         /* 1: no sleep after a quick frame */
 };
 
 static isk_status display_error(isk_error *err, const char *what)
@@ -312,6 +313,25 @@ isk_status isk_window_resize_canvas(isk_window *w, int width, int height, isk_er
     return ISK_OK;
 }
 
+isk_status isk_window_display_size(const isk_window *w, int *width, int *height)
+{
+    if (!w || !width || !height)
+        return ISK_ERR_NULL;
+    SDL_Rect r;
+    int display = SDL_GetWindowDisplayIndex(w->win);
+    if (display < 0 || SDL_GetDisplayUsableBounds(display, &r) != 0 || r.w <= 0 || r.h <= 0)
+        return ISK_ERR_DISPLAY;
+    *width = r.w;
+    *height = r.h;
+    return ISK_OK;
+}
+
+void isk_window_set_pacing(isk_window *w, int on)
+{
+    if (w)
+        w->unpaced = !on;
+}
+
 void isk_window_set_escape_quits(isk_window *w, int quits)
 {
     if (w)
@@ -491,7 +511,7 @@ isk_status isk_window_run(isk_window *w, isk_canvas *canvas, isk_frame_fn frame,
         /* Without vsync (software or dummy renderer) nothing else would stop
          * an idle loop from spinning a core: sleep out the rest of ~1/60 s. */
         double spent_ms = (double)(SDL_GetPerformanceCounter() - now) * 1000.0 / freq;
-        if (spent_ms < MIN_FRAME_MS)
+        if (spent_ms < MIN_FRAME_MS && !w->unpaced)
             SDL_Delay((Uint32)(MIN_FRAME_MS - spent_ms));
     }
     return ISK_OK;

@@ -267,6 +267,15 @@ int isk_ui_key(const isk_ui *ui, int key)
     return 0;
 }
 
+int isk_ui_keys(const isk_ui *ui, int *out, int max)
+{
+    int m = 0;
+    for (int i = 0; ui && out && i < ui->nkeys && m < max; i++)
+        if (!(ui->keys_taken >> i & 1u) && ui->keys[i] < ISK_UI_TYPED)
+            out[m++] = ui->keys[i];
+    return m;
+}
+
 int isk_ui_editing(const isk_ui *ui) { return ui && ui->focus != 0; }
 
 int isk_ui_hovering(const isk_ui *ui) { return ui && ui->hot != 0; }

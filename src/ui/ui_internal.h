@@ -42,6 +42,8 @@ void ui_disc(isk_ui *ui, double cx, double cy, double r, isk_color c);
 /* One line of text placed in r (vertically centred on the capitals),
  * clipped to r. */
 void ui_text_line(isk_ui *ui, isk_ui_rect r, const char *s, isk_color c, isk_ui_align align);
+/* One line centred in r at another text scale. */
+void ui_text_scaled(isk_ui *ui, isk_ui_rect r, const char *s, isk_color c, int scale);
 /* Text with its first cell's top-left at (x, y), clipped to `clip`. */
 void ui_text_clip(isk_ui *ui, isk_ui_rect clip, int x, int y, const char *s, isk_color c);
 /* x of the text's first cell when placed in r with `align`. */

@@ -47,8 +47,13 @@ int isk_ui_icon_button(isk_ui *ui, const char *id, isk_ui_rect r, isk_ui_icon ic
     isk_ui_rect pic = r;
     const int line = ISK_FONT_CELL_H * s;
     if (label && *label && r.h >= 3 * line) {
-        isk_ui_rect under = isk_ui_cut_bottom(&pic, line + 2 * s);
-        ui_text_line(ui, isk_ui_cut_top(&under, line), label, text_colour(ui, ui->style.icon), ISK_UI_CENTER);
+        /* The label under the picture, a size smaller when it would not fit. */
+        int ts = s;
+        while (ts > 1 && isk_text_width(label, ts) - ts > r.w - 2 * s)
+            ts--;
+        isk_ui_rect under = isk_ui_cut_bottom(&pic, ISK_FONT_CELL_H * ts + 2 * s);
+        isk_ui_rect t = isk_ui_cut_top(&under, ISK_FONT_CELL_H * ts);
+        ui_text_scaled(ui, t, label, text_colour(ui, ui->style.icon), ts);
     }
     ui_icon(ui, pic, icon, text_colour(ui, ui->style.icon));
     return st.clicked;
@@ -166,10 +171,23 @@ int isk_ui_radio(isk_ui *ui, const char *id, isk_ui_rect r, const char *const *l
         return 0;
     ui_record(ui, id, r);
     const int cols = per_row > 0 && per_row < n ? per_row : n, rows = (n + cols - 1) / cols;
-    const int s = ui->scale, ring = 6 * s;
-    int changed = 0;
+    const int s = ui->scale, ring = 5 * s;
+    /* One row: each option as wide as its label, the room left shared out
+     * evenly (or, when short of room, equal cells). */
+    int natural = 0, extra = 0;
+    if (rows == 1) {
+        for (int i = 0; i < n; i++)
+            natural += 2 * ring + 3 * s + isk_ui_text_width(ui, labels[i] ? labels[i] : "") + 4 * s;
+        extra = natural <= r.w ? (r.w - natural) / n : -1;
+    }
+    int changed = 0, x = r.x;
     for (int i = 0; i < n; i++) {
         isk_ui_rect cell = isk_ui_cell(r, cols, rows, i % cols, i / cols, 0);
+        if (rows == 1 && extra >= 0) {
+            cell.x = x;
+            cell.w = 2 * ring + 3 * s + isk_ui_text_width(ui, labels[i] ? labels[i] : "") + 4 * s + extra;
+            x += cell.w;
+        }
         char name[ISK_UI_ID_MAX];
         ui_sub_name(name, sizeof name, id, labels[i], i);
         ui_record(ui, name, cell);
@@ -182,11 +200,11 @@ int isk_ui_radio(isk_ui *ui, const char *id, isk_ui_rect r, const char *const *l
         const double cx = cell.x + ring, cy = cell.y + cell.h / 2.0;
         isk_color edge = hover_shade(on ? ui->style.accent : ui->style.border, st);
         ui_disc(ui, cx, cy, ring, ui->disabled ? ui_dim(ui, edge) : edge);
-        ui_disc(ui, cx, cy, ring - 1.5 * s, on ? ui->style.track : ui->style.field);
+        ui_disc(ui, cx, cy, ring - 1.25 * s, on ? ui->style.track : ui->style.field);
         if (on)
-            ui_disc(ui, cx, cy, ring - 3 * s, ui->disabled ? ui_dim(ui, ui->style.accent) : ui->style.accent);
+            ui_disc(ui, cx, cy, ring - 2.5 * s, ui->disabled ? ui_dim(ui, ui->style.accent) : ui->style.accent);
         isk_ui_rect t = cell;
-        isk_ui_cut_left(&t, 2 * ring + 4 * s);
+        isk_ui_cut_left(&t, 2 * ring + 3 * s);
         ui_text_line(ui, t, labels[i], text_colour(ui, ui->style.label), ISK_UI_LEFT);
     }
     return changed;
