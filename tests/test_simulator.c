@@ -299,6 +299,33 @@ Test(simulator, reloads_when_the_file_changes)
     isk_effect_destroy(fx);
 }
 
+/* The keys `iskra play --help` lists (from the tool's one table of
+ * actions) are the keys docs/simulator.md lists. */
+Test(simulator, the_documented_keys_are_the_tools)
+{
+    cli_fresh(OUT "help");
+    cr_assert_eq(cli_run(OUT "help", "play --help"), 0);
+    char *help = cli_slurp(OUT "help/stdout.txt"), *doc = cli_slurp("docs/simulator.md");
+    char *from = strstr(help, "\n  keys ("), *to = strstr(help, "\n  --frames");
+    cr_assert(from && to && from < to, "%s", help);
+    from = strchr(from + 1, '\n');
+    *to = 0;
+    int keys = 0;
+    for (char *item = strtok(from, ";\n"); item; item = strtok(NULL, ";\n")) {
+        while (*item == ' ')
+            item++;
+        char key[16], cell[24];
+        if (sscanf(item, "%15s", key) != 1)
+            continue;
+        snprintf(cell, sizeof cell, "| %s |", key);
+        cr_expect(strstr(doc, cell), "docs/simulator.md does not list the key %s", key);
+        keys++;
+    }
+    cr_expect_geq(keys, 15);
+    free(help);
+    free(doc);
+}
+
 /* ---- refusals ------------------------------------------------------------------------------- */
 
 Test(simulator, bad_options_and_scripts)

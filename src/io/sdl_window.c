@@ -310,6 +310,18 @@ isk_status isk_window_resize_canvas(isk_window *w, int width, int height, isk_er
     w->width = width;
     w->height = height;
     SDL_SetWindowSize(w->win, width, height);
+    /* Grown past the screen's edge: back onto it (the top-left stays put
+     * otherwise, so a canvas at the window's corner does not move). */
+    SDL_Rect r;
+    int x, y, display = SDL_GetWindowDisplayIndex(w->win);
+    SDL_GetWindowPosition(w->win, &x, &y);
+    if (display >= 0 && SDL_GetDisplayUsableBounds(display, &r) == 0) {
+        int nx = x + width > r.x + r.w ? r.x + r.w - width : x, ny = y + height > r.y + r.h ? r.y + r.h - height : y;
+        nx = nx < r.x ? r.x : nx;
+        ny = ny < r.y ? r.y : ny;
+        if (nx != x || ny != y)
+            SDL_SetWindowPosition(w->win, nx, ny);
+    }
     return ISK_OK;
 }
 

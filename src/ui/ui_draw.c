@@ -50,11 +50,16 @@ void ui_fill(isk_ui *ui, isk_ui_rect r, isk_color c)
 {
     /* An opaque colour over anything is the colour itself: a plain fill of
      * the rectangle's view gives the same bytes as blending each pixel. */
-    isk_canvas v;
+    isk_canvas v, line;
     int ox, oy;
-    if (c.a == 255 && view_of(ui, r, &v, &ox, &oy))
-        isk_canvas_fill(&v, c);
-    else if (ui->canvas && r.w > 0 && r.h > 0)
+    if (c.a == 255 && view_of(ui, r, &v, &ox, &oy)) {
+        /* the first row filled, the others copied from it */
+        if (isk_canvas_view(&line, &v, 0, 0, v.width, 1) != ISK_OK)
+            return;
+        isk_canvas_fill(&line, c);
+        for (int y = 1; y < v.height; y++)
+            memcpy(isk_canvas_at(&v, 0, y), v.pixels, (size_t)v.width * 4);
+    } else if (ui->canvas && r.w > 0 && r.h > 0)
         isk_fill_rect(ui->canvas, r.x, r.y, r.w, r.h, c, ISK_BLEND_OVER);
 }
 
@@ -241,7 +246,7 @@ void ui_icon(isk_ui *ui, isk_ui_rect r, isk_ui_icon icon, isk_color c)
 void isk_ui_clear(isk_ui *ui)
 {
     if (ui && ui->canvas)
-        isk_canvas_fill(ui->canvas, ui->style.background);
+        ui_fill(ui, (isk_ui_rect){0, 0, ui->canvas->width, ui->canvas->height}, ui->style.background);
 }
 
 void isk_ui_panel(isk_ui *ui, isk_ui_rect r)

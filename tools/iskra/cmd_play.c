@@ -34,12 +34,12 @@ static void help(FILE *f)
                "                  [--no-panel] [--save PATH] [--seed N] [--size WxH] [--dt S] [--substeps N]\n"
                "  Runs the scene in a window with the thesis's simulator console beside it: every\n"
                "  control changes the running scene (iskra keys lists what each accepts).\n"
-               "  buttons and keys: P play  Space run/hold  S stop  R reset  F5 reload (also when the\n"
-               "        file changes)  N one frame  , . speed  + - precision  1-7 click mode\n"
-               "        F2 save the parameters (iskra-SCENE.ini, see --save)  F12 canvas screenshot\n"
-               "        (iskra-SCENE-FRAME.png)  F11 window screenshot  Tab hide the panel  H HUD  Esc quit\n"
                "  mouse: a click on the canvas sets off the chosen explosion or adds a potential;\n"
                "        a potential's disc is picked and dragged\n"
+               "  keys (each button's is written on it; F2 saves to iskra-SCENE.ini or --save,\n"
+               "  F12 / F11 write iskra-SCENE-FRAME.png / -window.png):\n");
+    play_keys_help(f);
+    fprintf(f,
                "  --frames N       quit after N shown frames (for scripts and tests)\n"
                "  --fixed-clock    every shown frame is one step of the scene's dt, as fast as the\n"
                "                   machine can: the same --script gives the same pixels (tests)\n"
@@ -94,13 +94,10 @@ static int frame(void *user, isk_canvas *canvas, double dt_seconds, const isk_ev
     if (p->quit || p->failed)
         return 1;
 
+    const double dropped = p->ts.dropped;
     int steps = p->paused || p->physics_off ? 0 : isk_timestep_advance(&p->ts, dt_seconds);
-    if (!p->paused && !p->physics_off && dt_seconds > 0) {
-        double pace = steps * p->ts.dt / dt_seconds;
-        p->pace = 0.9 * p->pace + 0.1 * (pace > 1 ? 1 : pace);
-        if (p->pace < 0.97)
-            p->behind_until = p->elapsed + 1.0;
-    }
+    if (!p->paused && !p->physics_off)
+        play_pace(p, dt_seconds, p->ts.dropped - dropped);
     play_simulate(p, steps);
     if (p->failed)
         return 1;

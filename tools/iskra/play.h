@@ -101,6 +101,7 @@ typedef struct player {
     double update_ms;          /* simulation time per shown frame (smoothed) */
     double pace;               /* simulated / intended time over the last frames (1: real time kept) */
     double behind_until;       /* real time until which the HUD says real time is not kept */
+    double pace_real, pace_dropped; /* this second's real time and the part of it dropped */
     /* the console's own state */
     double slider;             /* 1..1000, the thesis's speed slider */
     int click_mode;            /* an isk_explosion, or PLAY_CLICK_ADD_POTENTIAL / _NONE */
@@ -141,6 +142,8 @@ typedef struct play_action_info {
 } play_action_info;
 const play_action_info *play_action_at(play_action a);
 void play_do(player *p, play_action a);
+/* The keys and what they do, for --help (from the same table). */
+void play_keys_help(FILE *f);
 /* Runs the actions of this frame's shortcut keys (keys a field took are not shortcuts). */
 void play_shortcuts(player *p);
 /* Hides or shows the panel: the window's canvas changes size. */
@@ -205,6 +208,8 @@ void play_integrators(player *p, isk_ui_rect r);
 
 /* play_hud.c */
 void play_hud_draw(player *p);
+/* Counts a frame's real time and what the accumulator dropped of it. */
+void play_pace(player *p, double real_seconds, double dropped_seconds);
 /* The effective speed 1/f and whether real time is kept, as text. */
 void play_speed_text(const player *p, char *buf, size_t n);
 

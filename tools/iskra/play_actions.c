@@ -11,22 +11,22 @@
 
 static const play_action_info actions[PLAY_ACTION_COUNT] = {
     [PLAY_PLAY] = {"play", "Play", "P", 'p', 0, "run"},
-    [PLAY_PAUSE] = {"pause", "Pause", "Space", 0, 0, "hold still (Space: run / hold)"},
+    [PLAY_PAUSE] = {"pause", "Pause", "Space", 0, 0, "hold"},
+    [PLAY_TOGGLE_PAUSE] = {"run-hold", "Run/hold", "Space", ' ', 0, "run / hold"},
     [PLAY_STOP] = {"stop", "Stop", "S", 's', 0, "hold and start again"},
-    [PLAY_RESET] = {"reset", "Reset", "R", 'r', 0, "start again (keeps running or holding)"},
-    [PLAY_RELOAD] = {"reload", "Reload", "F5", ISK_UI_KEY_F1 + 4, 0, "read the scene file again"},
+    [PLAY_RESET] = {"reset", "Reset", "R", 'r', 0, "start again"},
+    [PLAY_RELOAD] = {"reload", "Reload", "F5", ISK_UI_KEY_F1 + 4, 0, "read the scene again (also when the file changes)"},
     [PLAY_STEP] = {"step", "Step", "N", 'n', 0, "one frame, then hold"},
     [PLAY_SLOWER] = {"slower", "Slower", ",", ',', 0, "slower"},
     [PLAY_FASTER] = {"faster", "Faster", ".", '.', 0, "faster"},
-    [PLAY_MORE_PRECISION] = {"finer", "+", "+", '+', '=', "more substeps"},
-    [PLAY_LESS_PRECISION] = {"coarser", "-", "-", '-', 0, "fewer"},
-    [PLAY_SAVE] = {"save", "Save", "F2", ISK_UI_KEY_F1 + 1, 0, "write the parameters as a scene file"},
+    [PLAY_MORE_PRECISION] = {"finer", "+", "+", '+', '=', "one substep more"},
+    [PLAY_LESS_PRECISION] = {"coarser", "-", "-", '-', 0, "one substep fewer"},
+    [PLAY_SAVE] = {"save", "Save", "F2", ISK_UI_KEY_F1 + 1, 0, "save the parameters as a scene"},
     [PLAY_SHOT] = {"shot", "Shot", "F12", ISK_UI_KEY_F12, 0, "PNG of the canvas"},
-    [PLAY_SHOT_WINDOW] = {"shot-window", "Shot all", "F11", ISK_UI_KEY_F1 + 10, 0, "PNG of the window, panel too"},
+    [PLAY_SHOT_WINDOW] = {"shot-window", "Shot all", "F11", ISK_UI_KEY_F1 + 10, 0, "PNG of the window"},
     [PLAY_PANEL] = {"panel", "Panel", "Tab", ISK_UI_KEY_TAB, 0, "hide / show the panel"},
     [PLAY_HUD] = {"hud", "HUD", "H", 'h', 0, "HUD"},
     [PLAY_QUIT] = {"quit", "Quit", "Esc", ISK_UI_KEY_ESCAPE, 0, "quit"},
-    [PLAY_TOGGLE_PAUSE] = {"run-hold", "Run/hold", "Space", ' ', 0, "run / hold"},
 };
 
 const play_action_info *play_action_at(play_action a)
@@ -190,6 +190,24 @@ void play_do(player *p, play_action a)
     case PLAY_QUIT: p->quit = 1; break;
     default: break;
     }
+}
+
+void play_keys_help(FILE *f)
+{
+    /* Only actions with a key of their own (Pause is Space's run / hold). */
+    int col = 0;
+    for (int a = 0; a < PLAY_ACTION_COUNT; a++) {
+        if (!actions[a].key)
+            continue;
+        char item[96];
+        int n = snprintf(item, sizeof item, "%s %s", actions[a].keys, actions[a].meaning);
+        if (col && col + 2 + n > 84) {
+            fputs("\n", f);
+            col = 0;
+        }
+        col += fprintf(f, "%s%s", col ? "; " : "        ", item);
+    }
+    fprintf(f, "%s1-%d click mode\n", col ? "; " : "        ", PLAY_CLICK_MODES);
 }
 
 void play_shortcuts(player *p)

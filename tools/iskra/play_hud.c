@@ -11,6 +11,20 @@
 #include "iskra/text.h"
 #include "play.h"
 
+void play_pace(player *p, double real_seconds, double dropped_seconds)
+{
+    /* Over windows of a second: the share of real time that was simulated
+     * (the accumulator drops what more than 5 steps a frame would need). */
+    p->pace_real += real_seconds;
+    p->pace_dropped += dropped_seconds;
+    if (p->pace_real >= 1.0) {
+        p->pace = 1.0 - p->pace_dropped / p->pace_real;
+        if (p->pace_dropped > 0)
+            p->behind_until = p->elapsed + 1.0;
+        p->pace_real = p->pace_dropped = 0;
+    }
+}
+
 void play_speed_text(const player *p, char *buf, size_t n)
 {
     const isk_effect_def *d = isk_effect_definition(p->fx);

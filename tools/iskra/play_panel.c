@@ -321,9 +321,11 @@ static void potentials(player *p, isk_ui_rect box)
         {"pot-p", "P", "exponent"},         {"pot-max", "Max", "max_distance"},
         {"pot-min", "Min", "min_distance"}, {"pot-xinf", "x infl.", "x_multiplier"},
     };
+    /* Where it is now (it may move, or have been dragged), to 6 digits: a
+     * field holds no more, and typing sets it exactly. */
     char live[80] = "";
     if (section)
-        snprintf(live, sizeof live, "%.17g, %.17g", pots[sel].r.x, pots[sel].r.y);
+        snprintf(live, sizeof live, "%.6g, %.6g", pots[sel].r.x, pots[sel].r.y);
     const int rowh = isk_ui_row_height(ui), gap = U(GAP);
     for (int i = 0; i < 8; i++) {
         isk_ui_rect c = isk_ui_cell(a, 2, 4, i % 2, i / 2, U(8));
