@@ -13,26 +13,30 @@
 #include "iskra/keys.h"
 #include "play.h"
 
-const char *play_force_section(const isk_effect *fx, isk_force_kind kind, char *buf, size_t n)
+/* "force NAME" / "emitter NAME" of the first force of a kind or the first
+ * emitter of a source, or NULL. */
+static const char *first_of(const isk_effect *fx, isk_section_kind s, int kind, char *buf, size_t n)
 {
     const isk_effect_def *d = isk_effect_definition(fx);
-    for (int i = 0; d && i < d->nforces; i++)
-        if (d->forces[i].kind == kind) {
-            snprintf(buf, n, "force %s", d->forces[i].name);
+    const int items = !d ? 0 : s == ISK_SECTION_FORCE ? d->nforces : d->nemitters;
+    for (int i = 0; i < items; i++) {
+        const int force = s == ISK_SECTION_FORCE;
+        if ((force ? (int)d->forces[i].kind : (int)d->emitters[i].source) == kind) {
+            snprintf(buf, n, "%s %s", isk_section_name(s), force ? d->forces[i].name : d->emitters[i].name);
             return buf;
         }
+    }
     return NULL;
+}
+
+const char *play_force_section(const isk_effect *fx, isk_force_kind kind, char *buf, size_t n)
+{
+    return first_of(fx, ISK_SECTION_FORCE, (int)kind, buf, n);
 }
 
 const char *play_layer_section(const isk_effect *fx, char *buf, size_t n)
 {
-    const isk_effect_def *d = isk_effect_definition(fx);
-    for (int i = 0; d && i < d->nemitters; i++)
-        if (d->emitters[i].source == ISK_SOURCE_LAYER) {
-            snprintf(buf, n, "emitter %s", d->emitters[i].name);
-            return buf;
-        }
-    return NULL;
+    return first_of(fx, ISK_SECTION_EMITTER, ISK_SOURCE_LAYER, buf, n);
 }
 
 int play_set(player *p, const char *section, const char *key, const char *value)

@@ -77,7 +77,8 @@ void play_hud_draw(player *p)
     if (!p->fixed_clock)
         snprintf(cost, sizeof cost, "\nstepping %.2f ms per shown frame", p->update_ms);
     snprintf(text, sizeof text, "%s\nt %.3f s, frame %ld, %zu particles%s%s%s", speed, isk_effect_time(p->fx),
-             isk_effect_frame(p->fx), isk_effect_particle_count(p->fx), cost, p->paused ? "\nHOLDING: P or Space runs" : "",
+             isk_effect_frame(p->fx), isk_effect_particle_count(p->fx), cost,
+             p->paused ? "\nHOLDING: P or Space runs" : "",
              p->physics_off ? "\nPHYSICS OFF: the precision is not a number" : "");
     const int s = p->ui.scale, y = 30 + 3 * s, w = isk_text_width(text, s), h = isk_text_height(text, s);
     isk_fill_rect(&v, 15 - 3 * s, y - 2 * s, w + 5 * s, h + 3 * s, isk_rgba(0, 0, 0, 170), ISK_BLEND_OVER);
