@@ -22,6 +22,8 @@
  *   iskra/problems.h closed-form reference problems (integrator accuracy)
  *   iskra/outfile.h  safe output files     iskra/refimg.h  reference-image checks
  *   iskra/anim.h     animated GIF, YUV4MPEG2, raw RGBA frames
+ *   iskra/ui.h       immediate-mode widgets drawn by the rasterizer (iskra/ui_sdl.h feeds
+ *                    them the window's events)
  * The SDL2 window lives in a separate library: #include "iskra/sdl.h" and
  * link libiskra-sdl (pkg-config iskra-sdl).  Every header can be used from
  * C++ (extern "C"; tests/cxx_link.cpp checks).
@@ -62,5 +64,6 @@
 #include "iskra/outfile.h"
 #include "iskra/refimg.h"
 #include "iskra/anim.h"
+#include "iskra/ui.h"
 
 #endif

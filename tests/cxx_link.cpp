@@ -3,6 +3,7 @@
 // header, and the symbols link.  tests/run_all.sh runs the result.
 #include <iskra.h>
 #include <iskra/sdl.h>
+#include <iskra/ui_sdl.h>
 
 #include <cstdio>
 #include <cstring>

@@ -1,8 +1,9 @@
 #!/bin/sh
-# `make run`: the main demo.  With a display (DISPLAY or WAYLAND_DISPLAY set
-# and a window that opens) it plays the campfire scene in a window; otherwise
-# it renders it to out/SCENE.png plus a short sequence in out/SCENE/
-# and says where.
+# `make run`: the main demo.  With a display it plays the campfire scene in
+# the simulator's window; with none (no DISPLAY or WAYLAND_DISPLAY, or one
+# that does not answer: `iskra play` then says so and exits 1) it renders
+# the scene to out/SCENE.png plus a short sequence in out/SCENE/ and says
+# where.
 set -u
 BUILD=${BUILD:-build}
 ISKRA="$BUILD/bin/iskra"
@@ -12,11 +13,15 @@ if [ ! -x "$ISKRA" ]; then
 fi
 scene=fire_campfire
 if [ -n "${DISPLAY:-}${WAYLAND_DISPLAY:-}" ]; then
-    echo "iskra: playing '$scene' (space pause, R reset, +/- substeps, F12 screenshot, H overlay, Esc quit)"
-    if "$ISKRA" play "$scene"; then
-        exit 0
+    echo "iskra: playing '$scene' (P play, Space run/hold, R reset, N one frame, Tab hides the panel, Esc quits)"
+    "$ISKRA" play "$scene"
+    rc=$?
+    if [ "$rc" -ne 1 ]; then
+        exit "$rc"
     fi
-    echo "iskra: no window could be opened; rendering instead" >&2
+    echo "iskra: no window could be shown (see above); rendering to out/ instead" >&2
+else
+    echo "iskra: no display (DISPLAY and WAYLAND_DISPLAY are not set); rendering to out/ instead" >&2
 fi
 mkdir -p out
 "$ISKRA" render "$scene" --out "out/$scene.png" || exit 1

@@ -275,6 +275,7 @@ typedef struct isk_click_def {
  * the effect itself never reads them. */
 typedef struct isk_show_def {
     long frames;               /* the frame `iskra render` shows by default (0) */
+    int start_paused;          /* 1: `iskra play` pauses after the first frame (the thesis's prviFrame) */
 } isk_show_def;
 
 /* Names as scene files spell them, indexed by value (one table per enum;

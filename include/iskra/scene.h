@@ -56,6 +56,20 @@ isk_status isk_scene_load_string(isk_effect_def *out, const char *text, const ch
  * Neither: ISK_ERR_IO with "NAME: no such file or built-in scene". */
 isk_status isk_scene_load(isk_effect_def *out, const char *name_or_path, isk_error *err);
 
+/* A definition as scene text that parses back to the same definition
+ * (every key of every item, written by its row of the key table: what a
+ * running effect's isk_effect_definition holds after live changes saves
+ * as a scene that reproduces them).  *text is malloc'd (free it).
+ * ISK_ERR_FORMAT names the key when a value cannot be written (longer than
+ * a scene line, text with blanks at an end or a ' ;' comment, a potential
+ * moved by a C function); ISK_ERR_NULL, ISK_ERR_NOMEM. */
+isk_status isk_scene_write(const isk_effect_def *def, char **text, isk_error *err);
+
+/* isk_scene_write into a file, through a temporary file in the same
+ * directory renamed over `path` (an existing file is replaced whole or
+ * not at all); ISK_ERR_IO when it cannot be written. */
+isk_status isk_scene_save(const isk_effect_def *def, const char *path, isk_error *err);
+
 /* The built-in scenes, sorted by name: count, name (NULL when out of range)
  * and scene text (NULL when out of range or unknown). */
 int isk_scene_builtin_count(void);

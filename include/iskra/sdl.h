@@ -19,9 +19,13 @@
  * Behaviour worth knowing:
  *   - Keys: printable keys give their lower-case ASCII whatever the Shift
  *     state (so '=' and '+' / '-' keys give '=', '+', '-' as the layout
- *     reports them); Escape, Space, Return (also keypad Enter), F1..F12, the
- *     arrows and keypad +/- have ISK_KEY_* codes; anything else is
- *     ISK_KEY_UNKNOWN.  Auto-repeat arrives as further KEY_DOWN events.
+ *     reports them); Escape, Space, Return (also keypad Enter), Backspace,
+ *     Tab, Delete, Home, End, F1..F12, the arrows and keypad +/- have
+ *     ISK_KEY_* codes; anything else is ISK_KEY_UNKNOWN.  Auto-repeat
+ *     arrives as further KEY_DOWN events.
+ *   - Text: what a key types (Shift and the layout applied: "A", "_", "+")
+ *     arrives as a separate ISK_EVENT_TEXT after its KEY_DOWN; text fields
+ *     read these, shortcuts read the keys.
  *   - Mouse: x, y are canvas pixels.  The window is resizable; the canvas is
  *     scaled to fit with its aspect ratio kept (black bars), and positions
  *     are mapped back to canvas pixels, so they can lie outside
@@ -33,6 +37,12 @@
  *     either of them (closing a window's close button gives ISK_EVENT_QUIT).
  *   - SDL is initialised on open and shut down when the last window closes
  *     (SDL's own subsystem reference count; no global state of ours).
+ *   - No display: when SDL could only start a driver that shows nothing
+ *     (its "offscreen" or "dummy" video driver) without being asked for it
+ *     through SDL_VIDEODRIVER, as happens with a stale DISPLAY over ssh or
+ *     in a container, isk_window_open fails with ISK_ERR_DISPLAY and says
+ *     so, instead of running invisibly.  SDL_VIDEODRIVER=dummy (how the
+ *     tests run) or =offscreen asks for it on purpose and works.
  *   - Nothing prints; failures fill the isk_error with SDL's message.
  */
 #ifndef ISKRA_SDL_H
@@ -50,13 +60,17 @@ typedef struct isk_window isk_window;
 /* Keys: printable ASCII keys are their lower-case character; others below. */
 enum {
     ISK_KEY_UNKNOWN = 0,
+    ISK_KEY_BACKSPACE = 8,
+    ISK_KEY_TAB = 9,
+    ISK_KEY_DELETE = 127,
     ISK_KEY_ESCAPE = 27,
     ISK_KEY_SPACE = ' ',
     ISK_KEY_RETURN = '\r',
     ISK_KEY_F1 = 0x101, ISK_KEY_F2, ISK_KEY_F3, ISK_KEY_F4, ISK_KEY_F5, ISK_KEY_F6,
     ISK_KEY_F7, ISK_KEY_F8, ISK_KEY_F9, ISK_KEY_F10, ISK_KEY_F11, ISK_KEY_F12,
     ISK_KEY_LEFT, ISK_KEY_RIGHT, ISK_KEY_UP, ISK_KEY_DOWN,
-    ISK_KEY_KP_PLUS, ISK_KEY_KP_MINUS
+    ISK_KEY_KP_PLUS, ISK_KEY_KP_MINUS,
+    ISK_KEY_HOME, ISK_KEY_END
 };
 
 typedef enum isk_event_type {
@@ -66,7 +80,8 @@ typedef enum isk_event_type {
     ISK_EVENT_MOUSE_DOWN,
     ISK_EVENT_MOUSE_UP,
     ISK_EVENT_MOUSE_MOVE,
-    ISK_EVENT_WHEEL
+    ISK_EVENT_WHEEL,
+    ISK_EVENT_TEXT    /* text typed (after the keyboard layout and Shift): `text` */
 } isk_event_type;
 
 typedef struct isk_event {
@@ -75,6 +90,7 @@ typedef struct isk_event {
     int button;       /* MOUSE_DOWN/UP: 1 left, 2 middle, 3 right */
     int x, y;         /* mouse position in canvas pixels */
     int wheel;        /* WHEEL: +1 away from the user, -1 towards */
+    char text[32];    /* TEXT: the characters, UTF-8, NUL-terminated */
 } isk_event;
 
 /* Opens a window of the given size (the canvas size shown 1:1).  Sizes
@@ -85,6 +101,26 @@ isk_status isk_window_open(isk_window **w, const char *title, int width, int hei
 /* Resizes the window on screen (e.g. a 2x zoom); the canvas keeps the size
  * given to isk_window_open and is scaled to fit. */
 isk_status isk_window_set_size(isk_window *w, int width, int height);
+
+/* Changes the canvas size the window shows (and resizes the window to it):
+ * from then on isk_window_present and isk_window_run take canvases of the
+ * new size.  ISK_ERR_SIZE for sizes outside 1..ISK_CANVAS_MAX_DIM,
+ * ISK_ERR_DISPLAY if SDL fails (the window then keeps its old size). */
+isk_status isk_window_resize_canvas(isk_window *w, int width, int height, isk_error *err);
+
+/* The usable size of the display the window is on (without task bars), for
+ * choosing how large to lay out; ISK_ERR_DISPLAY if SDL cannot tell. */
+isk_status isk_window_display_size(const isk_window *w, int *width, int *height);
+
+/* Whether isk_window_run sleeps out the rest of ~1/60 s after a quick
+ * frame (1, the default) or runs frames as fast as they come (0: scripted
+ * sessions with their own clock). */
+void isk_window_set_pacing(isk_window *w, int on);
+
+/* Whether Escape ends isk_window_run (1, the default) or reaches the frame
+ * callback like any key (0: programs whose text fields use Escape to cancel
+ * an edit, and quit on Escape themselves). */
+void isk_window_set_escape_quits(isk_window *w, int quits);
 
 /* Uploads the canvas and shows it.  The canvas must match the window's
  * canvas size (ISK_ERR_SIZE otherwise); any stride is fine. */
@@ -97,7 +133,8 @@ typedef int (*isk_frame_fn)(void *user, isk_canvas *canvas, double dt_seconds,
                             const isk_event *events, int nevents);
 
 /* Runs frames until the callback returns non-zero, the window is closed
- * (ISK_EVENT_QUIT or Escape: the loop ends before a callback sees them), or
+ * (ISK_EVENT_QUIT or Escape: the loop ends before a callback sees them;
+ * see isk_window_set_escape_quits), or
  * max_frames frames ran (0 = no limit, negative = ISK_ERR_RANGE).
  * Each frame: gathers pending events (at most 64; when more are waiting the
  * oldest mouse motions are dropped first, and keys and clicks that still do
@@ -112,7 +149,8 @@ isk_status isk_window_run(isk_window *w, isk_canvas *canvas, isk_frame_fn frame,
  * pushes the equivalent SDL event, so it travels through the same queue and
  * translation as real input.  Mouse x, y are canvas pixels and arrive
  * unchanged however the window is scaled.  Buttons outside 1..3, wheel values
- * other than +1/-1 and unknown types give ISK_ERR_RANGE. */
+ * other than +1/-1, text that is empty or does not fit, and unknown types give
+ * ISK_ERR_RANGE. */
 isk_status isk_window_push_event(isk_window *w, const isk_event *ev);
 
 void isk_window_close(isk_window *w);

@@ -43,6 +43,8 @@ struct isk_window {
     int video_ref;       /* 1 while we hold a reference on SDL's video subsystem */
     int has_carry;       /* an event polled but not yet delivered (full frame) */
     isk_event carry;
+    int escape_keeps;    /* 1: Escape reaches the frame callback instead of ending the loop */
+    int unpaced;         /* 1: no sleep after a quick frame */
 };
 
 static isk_status display_error(isk_error *err, const char *what)
@@ -64,11 +66,15 @@ static int key_from_sdl(SDL_Keycode k)
     case SDLK_KP_PLUS: return ISK_KEY_KP_PLUS;
     case SDLK_KP_MINUS: return ISK_KEY_KP_MINUS;
     case SDLK_KP_ENTER: return ISK_KEY_RETURN;
+    case SDLK_HOME: return ISK_KEY_HOME;
+    case SDLK_END: return ISK_KEY_END;
     default: break;
     }
-    /* SDL's keycodes for printable keys, Escape, Space and Return are their
-     * ASCII codes already (and lower case whatever the Shift state). */
-    if (k == SDLK_ESCAPE || k == SDLK_RETURN || (k >= 32 && k < 127))
+    /* SDL's keycodes for printable keys, Escape, Space, Return, Backspace,
+     * Tab and Delete are their ASCII codes already (and lower case whatever
+     * the Shift state). */
+    if (k == SDLK_ESCAPE || k == SDLK_RETURN || k == SDLK_BACKSPACE || k == SDLK_TAB || k == SDLK_DELETE ||
+        (k >= 32 && k < 127))
         return (k >= 'A' && k <= 'Z') ? (int)(k - 'A' + 'a') : (int)k;
     return ISK_KEY_UNKNOWN;
 }
@@ -86,6 +92,11 @@ static SDL_Keycode key_to_sdl(int key)
     case ISK_KEY_KP_MINUS: return SDLK_KP_MINUS;
     case ISK_KEY_ESCAPE: return SDLK_ESCAPE;
     case ISK_KEY_RETURN: return SDLK_RETURN;
+    case ISK_KEY_BACKSPACE: return SDLK_BACKSPACE;
+    case ISK_KEY_TAB: return SDLK_TAB;
+    case ISK_KEY_DELETE: return SDLK_DELETE;
+    case ISK_KEY_HOME: return SDLK_HOME;
+    case ISK_KEY_END: return SDLK_END;
     default: break;
     }
     if (key >= 32 && key < 127)
@@ -132,6 +143,11 @@ static int convert(const isk_window *w, const SDL_Event *e, isk_event *ev)
         ev->x = e->motion.x;
         ev->y = e->motion.y;
         return 1;
+    case SDL_TEXTINPUT:
+        ev->type = ISK_EVENT_TEXT;
+        memcpy(ev->text, e->text.text, sizeof ev->text < sizeof e->text.text ? sizeof ev->text : sizeof e->text.text);
+        ev->text[sizeof ev->text - 1] = 0;
+        return ev->text[0] != 0;
     case SDL_MOUSEWHEEL: {
         Sint32 dy = e->wheel.y;
         if (e->wheel.direction == SDL_MOUSEWHEEL_FLIPPED)
@@ -148,6 +164,49 @@ static int convert(const isk_window *w, const SDL_Event *e, isk_event *ev)
 }
 
 /* ---- open / close --------------------------------------------------------- */
+
+/* 1 when `list` (SDL_VIDEODRIVER: a name or a comma-separated list) names
+ * the driver. */
+static int names_driver(const char *list, const char *driver)
+{
+    size_t n = strlen(driver);
+    for (const char *p = list; p && *p;) {
+        const char *end = strchr(p, ',');
+        size_t len = end ? (size_t)(end - p) : strlen(p);
+        if (len == n && SDL_strncasecmp(p, driver, n) == 0)
+            return 1;
+        p = end ? end + 1 : NULL;
+    }
+    return 0;
+}
+
+/* SDL falls back to its "offscreen" driver when no window system answers
+ * (a stale DISPLAY over ssh, a container): a window would then run
+ * invisibly.  Refused unless SDL_VIDEODRIVER asked for that driver. */
+static int headless_driver(isk_error *err)
+{
+    static const char *const shows_nothing[] = {"offscreen", "dummy"};
+    const char *driver = SDL_GetCurrentVideoDriver();
+    const char *asked = SDL_GetHint(SDL_HINT_VIDEODRIVER);
+    for (size_t i = 0; driver && i < sizeof shows_nothing / sizeof shows_nothing[0]; i++) {
+        if (SDL_strcasecmp(driver, shows_nothing[i]) != 0 || names_driver(asked, driver))
+            continue;
+        const char *x11 = SDL_getenv("DISPLAY"), *wl = SDL_getenv("WAYLAND_DISPLAY");
+        char where[160];
+        if (x11 && *x11)
+            SDL_snprintf(where, sizeof where, "DISPLAY=%s did not answer", x11);
+        else if (wl && *wl)
+            SDL_snprintf(where, sizeof where, "WAYLAND_DISPLAY=%s did not answer", wl);
+        else
+            SDL_snprintf(where, sizeof where, "DISPLAY and WAYLAND_DISPLAY are not set");
+        isk_error_set(err, ISK_ERR_DISPLAY,
+                      "no display: %s, and SDL could only start its '%s' video driver, which shows nothing "
+                      "(set SDL_VIDEODRIVER=%s to run without a display on purpose)",
+                      where, driver, driver);
+        return 1;
+    }
+    return 0;
+}
 
 void isk_window_close(isk_window *w)
 {
@@ -183,6 +242,10 @@ isk_status isk_window_open(isk_window **out, const char *title, int width, int h
         return ISK_ERR_DISPLAY;
     }
     w->video_ref = 1;
+    if (headless_driver(err)) {
+        isk_window_close(w);
+        return ISK_ERR_DISPLAY;
+    }
 
     w->win = SDL_CreateWindow(title ? title : "iskra", SDL_WINDOWPOS_CENTERED, SDL_WINDOWPOS_CENTERED, width,
                               height, SDL_WINDOW_RESIZABLE);
@@ -223,6 +286,68 @@ isk_status isk_window_set_size(isk_window *w, int width, int height)
         return ISK_ERR_SIZE;
     SDL_SetWindowSize(w->win, width, height);
     return ISK_OK;
+}
+
+isk_status isk_window_resize_canvas(isk_window *w, int width, int height, isk_error *err)
+{
+    if (!w)
+        return isk_error_set(err, ISK_ERR_NULL, "window: NULL argument");
+    if (width < 1 || height < 1 || width > ISK_CANVAS_MAX_DIM || height > ISK_CANVAS_MAX_DIM)
+        return isk_error_set(err, ISK_ERR_SIZE, "window: bad size %dx%d (1..%d each)", width, height,
+                             ISK_CANVAS_MAX_DIM);
+    if (width == w->width && height == w->height)
+        return ISK_OK;
+    SDL_Texture *tex = SDL_CreateTexture(w->ren, SDL_PIXELFORMAT_RGBA32, SDL_TEXTUREACCESS_STREAMING, width, height);
+    if (!tex)
+        return display_error(err, "cannot create the texture");
+    if (SDL_RenderSetLogicalSize(w->ren, width, height) != 0) {
+        SDL_DestroyTexture(tex);
+        SDL_RenderSetLogicalSize(w->ren, w->width, w->height);
+        return display_error(err, "cannot set the logical size");
+    }
+    SDL_DestroyTexture(w->tex);
+    w->tex = tex;
+    w->width = width;
+    w->height = height;
+    SDL_SetWindowSize(w->win, width, height);
+    /* Grown past the screen's edge: back onto it (the top-left stays put
+     * otherwise, so a canvas at the window's corner does not move). */
+    SDL_Rect r;
+    int x, y, display = SDL_GetWindowDisplayIndex(w->win);
+    SDL_GetWindowPosition(w->win, &x, &y);
+    if (display >= 0 && SDL_GetDisplayUsableBounds(display, &r) == 0) {
+        int nx = x + width > r.x + r.w ? r.x + r.w - width : x, ny = y + height > r.y + r.h ? r.y + r.h - height : y;
+        nx = nx < r.x ? r.x : nx;
+        ny = ny < r.y ? r.y : ny;
+        if (nx != x || ny != y)
+            SDL_SetWindowPosition(w->win, nx, ny);
+    }
+    return ISK_OK;
+}
+
+isk_status isk_window_display_size(const isk_window *w, int *width, int *height)
+{
+    if (!w || !width || !height)
+        return ISK_ERR_NULL;
+    SDL_Rect r;
+    int display = SDL_GetWindowDisplayIndex(w->win);
+    if (display < 0 || SDL_GetDisplayUsableBounds(display, &r) != 0 || r.w <= 0 || r.h <= 0)
+        return ISK_ERR_DISPLAY;
+    *width = r.w;
+    *height = r.h;
+    return ISK_OK;
+}
+
+void isk_window_set_pacing(isk_window *w, int on)
+{
+    if (w)
+        w->unpaced = !on;
+}
+
+void isk_window_set_escape_quits(isk_window *w, int quits)
+{
+    if (w)
+        w->escape_keeps = !quits;
 }
 
 /* ---- present ---------------------------------------------------------------- */
@@ -315,6 +440,15 @@ isk_status isk_window_push_event(isk_window *w, const isk_event *ev)
         e.wheel.y = ev->wheel;
         e.wheel.direction = SDL_MOUSEWHEEL_NORMAL;
         break;
+    case ISK_EVENT_TEXT: {
+        size_t n = strnlen(ev->text, sizeof ev->text);
+        if (n == 0 || n >= sizeof ev->text || n >= sizeof e.text.text)
+            return ISK_ERR_RANGE;
+        e.type = SDL_TEXTINPUT;
+        e.text.windowID = w->id;
+        memcpy(e.text.text, ev->text, n + 1);
+        break;
+    }
     default:
         return ISK_ERR_RANGE;
     }
@@ -354,9 +488,9 @@ static int collect_events(isk_window *w, isk_event *ev)
     return n;
 }
 
-static int ends_loop(const isk_event *e)
+static int ends_loop(const isk_window *w, const isk_event *e)
 {
-    return e->type == ISK_EVENT_QUIT || (e->type == ISK_EVENT_KEY_DOWN && e->key == ISK_KEY_ESCAPE);
+    return e->type == ISK_EVENT_QUIT || (!w->escape_keeps && e->type == ISK_EVENT_KEY_DOWN && e->key == ISK_KEY_ESCAPE);
 }
 
 isk_status isk_window_run(isk_window *w, isk_canvas *canvas, isk_frame_fn frame, void *user, long max_frames,
@@ -376,7 +510,7 @@ isk_status isk_window_run(isk_window *w, isk_canvas *canvas, isk_frame_fn frame,
     for (long n = 0; max_frames == 0 || n < max_frames; n++) {
         int nev = collect_events(w, events);
         for (int i = 0; i < nev; i++)
-            if (ends_loop(&events[i]))
+            if (ends_loop(w, &events[i]))
                 return ISK_OK;
         Uint64 now = SDL_GetPerformanceCounter();
         double dt = (double)(now - last) / freq;
@@ -389,7 +523,7 @@ isk_status isk_window_run(isk_window *w, isk_canvas *canvas, isk_frame_fn frame,
         /* Without vsync (software or dummy renderer) nothing else would stop
          * an idle loop from spinning a core: sleep out the rest of ~1/60 s. */
         double spent_ms = (double)(SDL_GetPerformanceCounter() - now) * 1000.0 / freq;
-        if (spent_ms < MIN_FRAME_MS)
+        if (spent_ms < MIN_FRAME_MS && !w->unpaced)
             SDL_Delay((Uint32)(MIN_FRAME_MS - spent_ms));
     }
     return ISK_OK;

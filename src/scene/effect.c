@@ -61,6 +61,8 @@ static isk_status populate(isk_effect *e, fx_group *g)
             fx_adopt(e, g, 0);
         break;
     case ISK_SOURCE_LAYER: {
+        if (em->count == 0)
+            break; /* an empty layer (the thesis simulator's start): clicks fill it */
         size_t limit = em->limit ? em->limit : ISK_EXPLODE_THESIS_LIMIT;
         s = isk_explode_layer(p, &g->rng, em->rect[0], em->rect[1], em->rect[2], em->rect[3], em->count, limit);
         for (size_t i = 0; s == ISK_OK && i < p->count; i++)

@@ -129,14 +129,18 @@ static isk_status check_emitter(ctx *c)
     const isk_emitter_def *e = &d->emitters[c->index];
     switch (e->source) {
     case ISK_SOURCE_EXPLOSION:
-    case ISK_SOURCE_LAYER:
-        if (e->count < 1 || e->count > limit_of(e))
-            return bad_key(c, "count", "must be 1..%zu (raise limit for more)", limit_of(e));
+    case ISK_SOURCE_LAYER: {
+        /* An empty layer is the thesis simulator's own start ("Sloj" 0): the
+         * particles come from clicks. */
+        const size_t least = e->source == ISK_SOURCE_LAYER ? 0 : 1;
+        if (e->count < least || e->count > limit_of(e))
+            return bad_key(c, "count", "must be %zu..%zu (raise limit for more)", least, limit_of(e));
         if (e->count > e->capacity)
             return bad_key(c, "count", "%zu exceeds the capacity %zu (raise capacity for more)", e->count, e->capacity);
         if (e->source == ISK_SOURCE_LAYER && (e->rect[0] > e->rect[1] || e->rect[2] > e->rect[3]))
             return bad_key(c, "rect", "needs xmin <= xmax and ymin <= ymax");
         break;
+    }
     case ISK_SOURCE_STREAM: {
         isk_status s = check_stream(c, e);
         if (s != ISK_OK)

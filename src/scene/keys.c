@@ -110,6 +110,9 @@ static const isk_key keys[] = {
                 "force"},
     {SCENE("frames"), .type = ISK_KEY_LONG, DEF(show.frames), IN(0, 1e8), .dflt = "0", .live = ALL,
      .meaning = "the frame `iskra render` shows when --frames is not given (the effect ignores it)"},
+    {SCENE("start_paused"), .type = ISK_KEY_BOOL, DEF(show.start_paused), .dflt = "false", .live = ALL,
+     .meaning = "`iskra play` pauses after the first frame, as the thesis's simulator scenes do (prviFrame), so "
+                "the class sees the start (the effect ignores it)"},
     {SCENE("fidelity"), .type = ISK_KEY_ENUM, DEF(fidelity), NAMES(isk_fidelity_names), .dflt = "sound",
      .live = ALL,
      .meaning = "thesis: the thesis code's arithmetic everywhere (gravity as m*(-g) then dt/m, no "

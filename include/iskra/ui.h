@@ -1,0 +1,312 @@
+/* iskra/ui.h — a small immediate-mode widget layer, drawn by iskra's own
+ * rasterizer and bitmap font into any canvas (no other dependency).
+ *
+ * Immediate mode: there are no widget objects.  Every frame the program
+ * calls one function per widget, with a name, a rectangle and the value it
+ * shows; the function draws the widget and says what the user did to it.
+ * The program keeps its own values; the layer keeps only which widget is
+ * hovered, pressed or focused, and the text being edited.
+ *
+ *     isk_ui ui;
+ *     isk_ui_init(&ui, 2);                         // scale 2: text and metrics doubled
+ *     for (;;) {
+ *         ...feed input: isk_ui_input_button(&ui, x, y, 1), isk_ui_input_text(&ui, "7"), ...
+ *         isk_ui_begin(&ui, &canvas);
+ *         isk_ui_rect r = {0, 0, canvas.width, canvas.height}, row;
+ *         isk_ui_panel(&ui, r);
+ *         r = isk_ui_inset(r, isk_ui_px(&ui, 8));
+ *         row = isk_ui_cut_top(&r, isk_ui_row_height(&ui));
+ *         if (isk_ui_button(&ui, "reset", isk_ui_cut_left(&row, isk_ui_px(&ui, 60)), "Reset")) reset();
+ *         char typed[64];
+ *         if (isk_ui_field(&ui, "gravity", row, value_text, ISK_UI_FIELD_NUMBER, typed, sizeof typed)
+ *                 == ISK_UI_FIELD_APPLY && !accept(typed))
+ *             isk_ui_field_error(&ui, "gravity", "expected a number >= 0");
+ *         isk_ui_end(&ui);
+ *         ...show the canvas...
+ *     }
+ *
+ * Input.  The isk_ui_input_* functions queue events; each frame
+ * (isk_ui_begin) takes them in order up to and including one mouse-button
+ * change (a press and the release at the same spot count as one click), so
+ * a burst of clicks and typing between two frames is played out over the
+ * next frames exactly as it happened, and a scripted session gives the same
+ * result whatever the frame timing.  Keys are ISK_UI_KEY_* or printable
+ * ASCII (shortcuts); text is separate (what the keys typed).  While a text
+ * field has the focus it takes the text and the editing keys (printable
+ * keys, arrows, Home, End, Backspace, Delete, Return, Escape, Tab);
+ * isk_ui_key() tells the program about the other keys, so a shortcut never
+ * fires while the user types into a field.  include/iskra/ui_sdl.h feeds
+ * iskra/sdl.h's events in.
+ *
+ * Widgets and what they return:
+ *   button, icon button      1 when clicked (pressed and released over it)
+ *   toggle (check box), bar  1 when flipped; *on holds the new state
+ *   slider                   1 while dragged (or wheeled) to a new value
+ *   radio group              1 when another option is chosen
+ *   list                     1 when another row is selected (wheel scrolls)
+ *   field (text, number)     ISK_UI_FIELD_APPLY with the text typed (Return,
+ *                            Tab, or a click elsewhere), ISK_UI_FIELD_CANCEL
+ *                            (Escape: the text goes back to the value)
+ *   label, text, panel, box  drawing only
+ *   area                     where the pointer is and what the button does
+ *                            over a rectangle (a canvas, for clicks and drags)
+ * A refused value: call isk_ui_field_error after the APPLY; the field keeps
+ * the typed text and the focus and shows the message under itself, until
+ * the next apply, Escape, or a click elsewhere.
+ *
+ * Names: each widget's name is its identity (hover, focus) and its handle
+ * for scripts and tests: isk_ui_find("reset") gives the rectangle the
+ * widget had in the last frame.  Options of a radio group are named
+ * "NAME/label" (lower case, spaces as '-': "click/add-potential"), rows of
+ * a list "NAME/ROW" ("potentials/0").  Names are unique per frame; at most
+ * ISK_UI_ID_MAX - 1 characters are kept.
+ *
+ * Layout is by cutting rectangles (isk_ui_cut_top/bottom/left/right take a
+ * slice off a rectangle and shrink it); every size the layer draws is a
+ * multiple of `scale` (isk_ui_px), and isk_ui_fit_scale picks the largest
+ * scale at which a layout fits a window.
+ *
+ * Determinism: no clock and no global state (everything lives in the
+ * isk_ui the program owns); the cursor does not blink.  The same inputs
+ * and the same widget calls give the same pixels.
+ */
+#ifndef ISKRA_UI_H
+#define ISKRA_UI_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#include "iskra/canvas.h"
+#include "iskra/color.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+typedef struct isk_ui_rect {
+    int x, y, w, h;
+} isk_ui_rect;
+
+/* Keys the layer knows by name; printable ASCII (32..126) are themselves.
+ * (ISK_UI_TYPED marks a typed character in the frame's input.) */
+enum {
+    ISK_UI_KEY_NONE = 0,
+    ISK_UI_TYPED = 0x10000,
+    ISK_UI_KEY_BACKSPACE = 0x100,
+    ISK_UI_KEY_DELETE,
+    ISK_UI_KEY_RETURN,
+    ISK_UI_KEY_ESCAPE,
+    ISK_UI_KEY_TAB,
+    ISK_UI_KEY_LEFT,
+    ISK_UI_KEY_RIGHT,
+    ISK_UI_KEY_UP,
+    ISK_UI_KEY_DOWN,
+    ISK_UI_KEY_HOME,
+    ISK_UI_KEY_END,
+    ISK_UI_KEY_F1, /* F1 + n - 1 for Fn, n = 1..12 */
+    ISK_UI_KEY_F12 = ISK_UI_KEY_F1 + 11
+};
+
+typedef enum isk_ui_align { ISK_UI_LEFT = 0, ISK_UI_CENTER, ISK_UI_RIGHT } isk_ui_align;
+
+/* Pictures for icon buttons, drawn with the rasterizer's primitives. */
+typedef enum isk_ui_icon {
+    ISK_UI_ICON_PLAY = 0, /* triangle */
+    ISK_UI_ICON_PAUSE,    /* two bars */
+    ISK_UI_ICON_STOP,     /* square */
+    ISK_UI_ICON_STEP,     /* triangle and bar */
+    ISK_UI_ICON_RESET,    /* one turning arrow */
+    ISK_UI_ICON_RELOAD,   /* two turning arrows */
+    ISK_UI_ICON_COUNT
+} isk_ui_icon;
+
+/* Colours of everything the layer draws. */
+typedef struct isk_ui_style {
+    isk_color background;     /* isk_ui_clear */
+    isk_color panel;          /* isk_ui_panel */
+    isk_color box;            /* isk_ui_box: a group inside a panel */
+    isk_color label;          /* labels */
+    isk_color text;           /* values, button text */
+    isk_color dim;            /* read-only and disabled text */
+    isk_color field;          /* field background */
+    isk_color field_readonly; /* read-only field background */
+    isk_color border;         /* field, list and button outlines */
+    isk_color focus;          /* the focused field's outline, the cursor */
+    isk_color button;         /* plain buttons */
+    isk_color icon;           /* icons and text on coloured buttons */
+    isk_color accent;         /* slider fill, radio dot, check mark, selected row */
+    isk_color track;          /* the slider's track right of the knob */
+    isk_color knob;           /* the slider's knob */
+    isk_color bar_on;         /* toggle bars */
+    isk_color error;          /* a refused value's message and outline */
+} isk_ui_style;
+
+/* The thesis simulator's dark look (the default of isk_ui_init). */
+void isk_ui_style_dark(isk_ui_style *s);
+
+#define ISK_UI_ID_MAX 40
+#define ISK_UI_EDIT_MAX 128
+#define ISK_UI_MAX_ITEMS 512
+#define ISK_UI_QUEUE_MAX 256
+#define ISK_UI_FRAME_KEYS 64
+
+/* A queued input event (see isk_ui_input_*). */
+typedef struct isk_ui_event {
+    int type;
+    int x, y, value;
+    char text[8];
+} isk_ui_event;
+
+/* One widget of the last frame: its name and rectangle (isk_ui_find). */
+typedef struct isk_ui_item {
+    char id[ISK_UI_ID_MAX];
+    isk_ui_rect r;
+} isk_ui_item;
+
+/* The layer's state.  Set `scale` and `style` (isk_ui_init does); the rest
+ * is the layer's own, read through the functions below. */
+typedef struct isk_ui {
+    int scale;            /* 1, 2, 3, ...: text scale and every metric */
+    isk_ui_style style;
+
+    isk_canvas *canvas;
+    /* this frame's input */
+    int mouse_x, mouse_y, mouse_down, pressed, released, wheel;
+    int keys[ISK_UI_FRAME_KEYS], nkeys; /* keys and typed characters (ISK_UI_TYPED | c), in order */
+    uint64_t keys_taken;  /* bit i: keys[i] was used by a focused field */
+    isk_ui_event queue[ISK_UI_QUEUE_MAX];
+    int queue_len;
+    /* between frames */
+    uint32_t hot, active, focus, focus_next;
+    int press_taken, focus_seen, tab_pending, disabled;
+    char edit[ISK_UI_EDIT_MAX];
+    int cursor;
+    uint32_t edit_id;     /* the field whose text `edit` holds (kept after an apply) */
+    char error[240];
+    uint32_t error_id;
+    isk_ui_rect error_rect;
+    long frame;
+    isk_ui_item items[ISK_UI_MAX_ITEMS];
+    int nitems;
+} isk_ui;
+
+/* scale < 1 counts as 1; the dark style. */
+void isk_ui_init(isk_ui *ui, int scale);
+
+/* ---- input (queued; taken by the next isk_ui_begin) --------------------------- */
+
+void isk_ui_input_mouse(isk_ui *ui, int x, int y);            /* the pointer moved */
+void isk_ui_input_button(isk_ui *ui, int x, int y, int down); /* left button pressed (1) / released (0) */
+void isk_ui_input_wheel(isk_ui *ui, int dy);                  /* +1 away from the user, -1 towards */
+void isk_ui_input_key(isk_ui *ui, int key);                   /* ISK_UI_KEY_* or printable ASCII */
+void isk_ui_input_text(isk_ui *ui, const char *utf8);         /* typed text: printable ASCII is kept */
+/* Events still waiting (the program can run frames until it is 0). */
+int isk_ui_pending(const isk_ui *ui);
+
+/* ---- frames -------------------------------------------------------------------- */
+
+/* Starts a frame that draws into `canvas` (kept until isk_ui_end). */
+void isk_ui_begin(isk_ui *ui, isk_canvas *canvas);
+/* Ends it: drops the focus of a field that was not drawn, draws a refused
+ * value's message on top, forgets this frame's input. */
+void isk_ui_end(isk_ui *ui);
+
+/* 1 when `key` was pressed this frame and no focused field took it (see
+ * the header comment); F1..F12 always reach the program. */
+int isk_ui_key(const isk_ui *ui, int key);
+/* This frame's keys that no field took, in order (typed text excluded):
+ * at most max into out, returns how many.  For shortcuts that must see a
+ * key pressed twice in one frame twice. */
+int isk_ui_keys(const isk_ui *ui, int *out, int max);
+/* 1 while a text field has the focus (keys go to it). */
+int isk_ui_editing(const isk_ui *ui);
+/* 1 when the pointer is over any widget drawn so far this frame. */
+int isk_ui_hovering(const isk_ui *ui);
+/* Widgets drawn while disabled (1) are dimmed and ignore input. */
+void isk_ui_set_disabled(isk_ui *ui, int disabled);
+/* Gives a field the focus (as a click would), from the next frame. */
+void isk_ui_focus(isk_ui *ui, const char *id);
+
+/* The rectangle the widget `id` had in the last frame: 1, or 0 if none. */
+int isk_ui_find(const isk_ui *ui, const char *id, isk_ui_rect *out);
+
+/* ---- layout ------------------------------------------------------------------------ */
+
+int isk_ui_px(const isk_ui *ui, int units);        /* units * scale */
+int isk_ui_row_height(const isk_ui *ui);           /* a button's or field's height */
+int isk_ui_text_width(const isk_ui *ui, const char *s);
+int isk_ui_contains(isk_ui_rect r, int x, int y);
+isk_ui_rect isk_ui_inset(isk_ui_rect r, int d);    /* d off every side (never below 0 x 0) */
+/* A slice of `size` pixels off one side of *r (clamped to what is left);
+ * *r loses it. */
+isk_ui_rect isk_ui_cut_top(isk_ui_rect *r, int size);
+isk_ui_rect isk_ui_cut_bottom(isk_ui_rect *r, int size);
+isk_ui_rect isk_ui_cut_left(isk_ui_rect *r, int size);
+isk_ui_rect isk_ui_cut_right(isk_ui_rect *r, int size);
+/* Cell (col, row) of r split into cols x rows with `gap` pixels between. */
+isk_ui_rect isk_ui_cell(isk_ui_rect r, int cols, int rows, int col, int row, int gap);
+/* The largest scale (1..max_scale) at which a layout of need_w x need_h
+ * pixels at scale 1 fits avail_w x avail_h; 1 if none fits. */
+int isk_ui_fit_scale(int avail_w, int avail_h, int need_w, int need_h, int max_scale);
+
+/* ---- drawing --------------------------------------------------------------------------- */
+
+void isk_ui_clear(isk_ui *ui);                        /* the whole canvas in style.background */
+void isk_ui_panel(isk_ui *ui, isk_ui_rect r);         /* a rounded panel */
+void isk_ui_box(isk_ui *ui, isk_ui_rect r);           /* a group inside a panel */
+/* Text in the label colour, vertically centred in r (lines split at '\n'). */
+void isk_ui_label(isk_ui *ui, isk_ui_rect r, const char *text, isk_ui_align align);
+/* Text in any colour, top-aligned, clipped to r. */
+void isk_ui_text(isk_ui *ui, isk_ui_rect r, const char *text, isk_color color, isk_ui_align align);
+
+/* ---- widgets ------------------------------------------------------------------------- */
+
+int isk_ui_button(isk_ui *ui, const char *id, isk_ui_rect r, const char *label);
+/* A coloured button with a picture (the thesis's play/pause/stop/reload);
+ * `label` (may be NULL) is written under the icon when r is tall enough. */
+int isk_ui_icon_button(isk_ui *ui, const char *id, isk_ui_rect r, isk_ui_icon icon, isk_color color,
+                       const char *label);
+int isk_ui_toggle(isk_ui *ui, const char *id, isk_ui_rect r, const char *label, int *on);
+/* A bar that is solid when on and a dashed outline when off (the thesis's
+ * walls, drawn as the four sides of a square). */
+int isk_ui_toggle_bar(isk_ui *ui, const char *id, isk_ui_rect r, int *on);
+/* *value in [min, max], moved in multiples of step from min (step 0: any). */
+int isk_ui_slider(isk_ui *ui, const char *id, isk_ui_rect r, double *value, double min, double max, double step);
+/* n options in rows of per_row (n: one row); *selected is the chosen index. */
+int isk_ui_radio(isk_ui *ui, const char *id, isk_ui_rect r, const char *const *labels, int n, int per_row,
+                 int *selected);
+/* n rows; *selected (-1: none) and *scroll (the first row shown) are the
+ * program's.  A scroll bar appears when the rows do not fit. */
+int isk_ui_list(isk_ui *ui, const char *id, isk_ui_rect r, const char *const *rows, int n, int *selected,
+                int *scroll);
+
+enum {
+    ISK_UI_FIELD_NUMBER = 1u << 0,   /* only digits, sign, '.', 'e', '/' can be typed */
+    ISK_UI_FIELD_READONLY = 1u << 1, /* shows `value`, cannot be edited */
+};
+typedef enum isk_ui_field_result {
+    ISK_UI_FIELD_IDLE = 0,
+    ISK_UI_FIELD_APPLY,  /* the typed text is in out */
+    ISK_UI_FIELD_CANCEL
+} isk_ui_field_result;
+/* Shows `value`; a click edits it (cursor, Left/Right/Home/End, Backspace,
+ * Delete).  On APPLY the typed text is copied to out (out_size bytes). */
+isk_ui_field_result isk_ui_field(isk_ui *ui, const char *id, isk_ui_rect r, const char *value, unsigned flags,
+                                 char *out, size_t out_size);
+/* The value just applied in field `id` was refused: see the header comment. */
+void isk_ui_field_error(isk_ui *ui, const char *id, const char *message);
+
+typedef struct isk_ui_area_state {
+    int hover;     /* the pointer is over it */
+    int pressed;   /* the button went down over it this frame */
+    int down;      /* it holds the button (since a press over it): a drag */
+    int released;  /* the button it held came up this frame */
+    int x, y;      /* the pointer, relative to r's top-left */
+} isk_ui_area_state;
+isk_ui_area_state isk_ui_area(isk_ui *ui, const char *id, isk_ui_rect r);
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif

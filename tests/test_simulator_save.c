@@ -1,0 +1,239 @@
+/* The simulator's Save: isk_scene_write / isk_scene_save write a definition
+ * as a scene file that parses back to the very same definition (every
+ * built-in scene, and effects changed while running), and refuse what a
+ * scene line cannot hold. */
+#include <criterion/criterion.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+
+#include "iskra/effect.h"
+#include "iskra/scene.h"
+
+/* Byte for byte, except where a definition came from (the `line` fields)
+ * and where arrays live (pointers): those are compared by content. */
+static int same_item(const void *a, const void *b, size_t size, size_t line_offset, const char *what, int i)
+{
+    char *x = malloc(size), *y = malloc(size);
+    cr_assert(x && y);
+    memcpy(x, a, size);
+    memcpy(y, b, size);
+    memset(x + line_offset, 0, sizeof(int));
+    memset(y + line_offset, 0, sizeof(int));
+    int same = memcmp(x, y, size) == 0;
+    if (!same)
+        for (size_t k = 0; k < size; k++)
+            if (x[k] != y[k]) {
+                cr_log_error("%s %d differs from byte %zu", what, i, k);
+                break;
+            }
+    free(x);
+    free(y);
+    return same;
+}
+
+/* The parser fills ramps from arrays on its stack, so the padding after
+ * each stop's colour is whatever was there: ramps are compared by their
+ * values (copied into zeroed ramps). */
+static void canonical_ramps(isk_emitter_def *e)
+{
+    isk_color_ramp c;
+    memset(&c, 0, sizeof c);
+    c.n = e->color_over_life.n;
+    for (int i = 0; i < ISK_GRADIENT_MAX_STOPS; i++) {
+        c.stops[i].t = e->color_over_life.stops[i].t;
+        c.stops[i].color = e->color_over_life.stops[i].color;
+    }
+    e->color_over_life = c;
+    isk_scalar_ramp *r[2] = {&e->alpha_over_life, &e->size_over_life};
+    for (int k = 0; k < 2; k++) {
+        isk_scalar_ramp s;
+        memset(&s, 0, sizeof s);
+        s.n = r[k]->n;
+        for (int i = 0; i < ISK_GRADIENT_MAX_STOPS; i++) {
+            s.stops[i].t = r[k]->stops[i].t;
+            s.stops[i].value = r[k]->stops[i].value;
+        }
+        *r[k] = s;
+    }
+}
+
+static int same_definition(const isk_effect_def *a, const isk_effect_def *b)
+{
+    isk_effect_def x = *a, y = *b;
+    x.forces = y.forces = NULL;
+    x.deflectors = y.deflectors = NULL;
+    x.emitters = y.emitters = NULL;
+    x.drawings = y.drawings = NULL;
+    if (memcmp(&x, &y, sizeof x) != 0) {
+        cr_log_error("the [scene], [view], [bounds] or [click] fields differ");
+        return 0;
+    }
+    for (int i = 0; i < a->nforces; i++)
+        if (!same_item(&a->forces[i], &b->forces[i], sizeof *a->forces, offsetof(isk_force_def, line), "force", i))
+            return 0;
+    for (int i = 0; i < a->ndeflectors; i++)
+        if (!same_item(&a->deflectors[i], &b->deflectors[i], sizeof *a->deflectors,
+                       offsetof(isk_deflector_def, line), "deflector", i))
+            return 0;
+    for (int i = 0; i < a->nemitters; i++) {
+        isk_emitter_def p = a->emitters[i], q = b->emitters[i];
+        canonical_ramps(&p);
+        canonical_ramps(&q);
+        if (!same_item(&p, &q, sizeof p, offsetof(isk_emitter_def, line), "emitter", i))
+            return 0;
+    }
+    for (int i = 0; i < a->ndrawings; i++) {
+        isk_drawing_def p = a->drawings[i], q = b->drawings[i];
+        if (p.npoints != q.npoints || (p.npoints && memcmp(p.points, q.points, sizeof(double) * 2 * (size_t)p.npoints)))
+            return 0;
+        p.points = q.points = NULL;
+        if (!same_item(&p, &q, sizeof p, offsetof(isk_drawing_def, line), "drawing", i))
+            return 0;
+    }
+    return 1;
+}
+
+/* write -> parse -> compare, then write again: the same text. */
+static void round_trip(const isk_effect_def *d, const char *what)
+{
+    char *text = NULL, *again = NULL;
+    isk_error err;
+    cr_assert_eq(isk_scene_write(d, &text, &err), ISK_OK, "%s: %s", what, err.message);
+    isk_effect_def back;
+    cr_assert_eq(isk_scene_load_string(&back, text, what, &err), ISK_OK, "%s: %s\n%s", what, err.message, text);
+    cr_assert(same_definition(d, &back), "%s: the written scene reads back differently:\n%s", what, text);
+    cr_assert_eq(isk_scene_write(&back, &again, &err), ISK_OK);
+    cr_assert_str_eq(text, again, "%s: writing is not stable", what);
+    isk_effect *fx;
+    cr_assert_eq(isk_effect_create(&fx, &back, &err), ISK_OK, "%s: %s", what, err.message);
+    isk_effect_destroy(fx);
+    isk_effect_def_free(&back);
+    free(text);
+    free(again);
+}
+
+Test(save, every_builtin_scene_round_trips)
+{
+    int n = isk_scene_builtin_count();
+    cr_assert_gt(n, 10);
+    for (int i = 0; i < n; i++) {
+        const char *name = isk_scene_builtin_name(i);
+        isk_effect_def d;
+        isk_error err;
+        cr_assert_eq(isk_scene_load(&d, name, &err), ISK_OK, "%s", err.message);
+        round_trip(&d, name);
+        isk_effect_def_free(&d);
+    }
+}
+
+/* Same definition means same pixels: the saved scene renders as the
+ * running one does. */
+static void same_frames(isk_effect *fx, const isk_effect_def *saved, long frames)
+{
+    isk_effect *copy;
+    isk_error err;
+    cr_assert_eq(isk_effect_create(&copy, saved, &err), ISK_OK, "%s", err.message);
+    const isk_effect_def *d = isk_effect_definition(fx);
+    isk_canvas a, b;
+    cr_assert_eq(isk_canvas_init(&a, d->width, d->height), ISK_OK);
+    cr_assert_eq(isk_canvas_init(&b, d->width, d->height), ISK_OK);
+    cr_assert_eq(isk_effect_reset(fx), ISK_OK);
+    cr_assert_eq(isk_effect_run(fx, &a, frames), ISK_OK);
+    cr_assert_eq(isk_effect_run(copy, &b, frames), ISK_OK);
+    cr_assert(isk_canvas_equal(&a, &b));
+    isk_canvas_free(&a);
+    isk_canvas_free(&b);
+    isk_effect_destroy(copy);
+}
+
+Test(save, live_changes_are_saved)
+{
+    isk_effect_def d;
+    isk_error err;
+    cr_assert_eq(isk_scene_load(&d, "fig26_mushroom_one_potential", &err), ISK_OK, "%s", err.message);
+    isk_effect *fx;
+    cr_assert_eq(isk_effect_create(&fx, &d, &err), ISK_OK, "%s", err.message);
+    isk_effect_def_free(&d);
+    static const char *const sets[][3] = {
+        {"force gravity", "g", "10"},     {"force drag", "b", "0.3"},          {"bounds", "sides", "all"},
+        {"force A", "k", "650.5"},        {"force A", "position", "4.25, 6"}, {"force A", "enabled", "false"},
+        {"click", "explosion", "gauss"},  {"click", "count", "321"},           {"emitter layer", "count", "1200"},
+        {"emitter layer", "rect", "1, 9, 0, 1.5"}, {"scene", "speed_divisor", "30"}, {"scene", "substeps", "3"},
+        {"scene", "integrator", "rk4"},   {"scene", "start_paused", "true"},
+    };
+    for (size_t i = 0; i < sizeof sets / sizeof sets[0]; i++)
+        cr_assert_eq(isk_effect_set(fx, sets[i][0], sets[i][1], sets[i][2], &err), ISK_OK, "%s", err.message);
+    isk_potential p;
+    isk_potential_init(&p, 0.0, (isk_vec2){2.5, 7.5}, 1.0);
+    cr_assert_eq(isk_effect_add_potential(fx, "P2", &p, &err), ISK_OK, "%s", err.message);
+    cr_assert_eq(isk_effect_set(fx, "force P2", "k", "40", &err), ISK_OK, "%s", err.message);
+    round_trip(isk_effect_definition(fx), "live");
+
+    char *text;
+    cr_assert_eq(isk_scene_write(isk_effect_definition(fx), &text, &err), ISK_OK);
+    cr_assert(strstr(text, "\n[force P2]\nkind = potential\nk = 40\n"), "%s", text);
+    cr_assert(strstr(text, "\ng = 10\n"));
+    cr_assert(strstr(text, "\nstart_paused = true\n"));
+    isk_effect_def saved;
+    cr_assert_eq(isk_scene_load_string(&saved, text, "saved", &err), ISK_OK, "%s", err.message);
+    same_frames(fx, &saved, 40);
+    isk_effect_def_free(&saved);
+    free(text);
+    isk_effect_destroy(fx);
+}
+
+Test(save, a_file_is_written_whole_or_not_at_all)
+{
+    mkdir("out", 0777);
+    mkdir("out/test_simulator_save", 0777);
+    isk_effect_def d;
+    isk_error err;
+    cr_assert_eq(isk_scene_load(&d, "fig16_regular", &err), ISK_OK);
+    const char *path = "out/test_simulator_save/fig16.ini";
+    remove(path);
+    cr_assert_eq(isk_scene_save(&d, path, &err), ISK_OK, "%s", err.message);
+    isk_effect_def back;
+    cr_assert_eq(isk_scene_load_file(&back, path, &err), ISK_OK, "%s", err.message);
+    cr_assert(same_definition(&d, &back));
+    isk_effect_def_free(&back);
+    /* a directory that does not exist: an error, and nothing left behind */
+    cr_assert_eq(isk_scene_save(&d, "out/test_simulator_save/no/such/dir/x.ini", &err), ISK_ERR_IO);
+    cr_assert(strstr(err.message, "out/test_simulator_save/no/such/dir/x.ini"), "%s", err.message);
+    cr_assert_eq(isk_scene_save(&d, NULL, &err), ISK_ERR_NULL);
+    cr_assert_eq(isk_scene_save(NULL, path, &err), ISK_ERR_NULL);
+    char *t;
+    cr_assert_eq(isk_scene_write(&d, NULL, &err), ISK_ERR_NULL);
+    cr_assert_eq(isk_scene_write(NULL, &t, &err), ISK_ERR_NULL);
+    cr_assert_null(t);
+    isk_effect_def_free(&d);
+}
+
+Test(save, what_a_line_cannot_hold_is_refused)
+{
+    isk_effect_def d;
+    isk_effect_def_init(&d);
+    isk_drawing_def *t = isk_effect_def_add_drawing(&d, "label", ISK_DRAWING_TEXT);
+    snprintf(t->text, sizeof t->text, "a ; comment");
+    char *text;
+    isk_error err;
+    cr_assert_eq(isk_scene_write(&d, &text, &err), ISK_ERR_FORMAT);
+    cr_assert(strstr(err.message, "[drawing label] text"), "%s", err.message);
+    snprintf(t->text, sizeof t->text, " padded");
+    cr_assert_eq(isk_scene_write(&d, &text, &err), ISK_ERR_FORMAT);
+    snprintf(t->text, sizeof t->text, "a;b is fine");
+    cr_assert_eq(isk_scene_write(&d, &text, &err), ISK_OK, "%s", err.message);
+    free(text);
+    isk_effect_def_free(&d);
+    /* a polyline of 64 points at full precision does not fit on a line */
+    isk_effect_def_init(&d);
+    isk_drawing_def *l = isk_effect_def_add_drawing(&d, "path", ISK_DRAWING_POLYLINE);
+    l->npoints = 64;
+    l->points = malloc(sizeof(double) * 128);
+    for (int i = 0; i < 128; i++)
+        l->points[i] = 1.0 / (i + 3);
+    cr_assert_eq(isk_scene_write(&d, &text, &err), ISK_ERR_FORMAT);
+    cr_assert(strstr(err.message, "[drawing path] points"), "%s", err.message);
+    isk_effect_def_free(&d);
+}

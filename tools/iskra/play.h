@@ -1,0 +1,235 @@
+/* The simulator behind `iskra play` (internal to the tool): one player
+ * holds the running effect, the window's canvas and the widget layer; the
+ * play_*.c files each do one part of a frame.
+ *
+ *   cmd_play.c      options, the window, the frame callback gluing the parts
+ *   play_actions.c  the buttons and their shortcuts (one table: play, pause,
+ *                   stop, reset, reload, step, save, screenshots, panel)
+ *   play_panel.c    the thesis's console, control for control: a view of the
+ *                   key table, every edit through isk_effect_set
+ *   play_fields.c   what a field shows and how a typed value is applied (the
+ *                   table's messages, the thesis's replacement values)
+ *   play_charts.c   energy and particle count over time, the integrator
+ *                   table with measured cost and energy drift
+ *   play_energy.c   kinetic, gravitational and potential energy of the state
+ *   play_hud.c      the thesis's FPS text and the HUD over the canvas
+ *   play_files.c    reload (by hand and when the file changes), save,
+ *                   screenshots
+ *   play_script.c   --script: events played at given frames (tests, demos)
+ *
+ * A frame: input into the widget layer; the panel (its actions change the
+ * effect at once); shortcuts; the simulation steps of the frame; the
+ * canvas and the HUD into the window.  Everything but the clock is
+ * deterministic, and --fixed-clock replaces the clock (one step per frame),
+ * so a scripted session gives the same pixels every time. */
+#ifndef ISKRA_TOOL_PLAY_H
+#define ISKRA_TOOL_PLAY_H
+
+#include <stddef.h>
+#include <stdio.h>
+
+#include "iskra/effect.h"
+#include "iskra/sdl.h"
+#include "iskra/timestep.h"
+#include "iskra/ui.h"
+#include "scene_args.h"
+
+#define PLAY_HISTORY 600       /* samples kept for the charts */
+#define PLAY_SCRIPT_MAX 256    /* tokens of --script */
+#define PLAY_MAX_STEPS_PER_FRAME 5
+
+/* What a click on the canvas does besides the scene's explosions. */
+enum { PLAY_CLICK_ADD_POTENTIAL = ISK_EXPLOSION_COUNT, PLAY_CLICK_NONE, PLAY_CLICK_MODES };
+
+typedef struct play_layout {
+    isk_ui_rect window;        /* the whole window (0, 0, w, h) */
+    isk_ui_rect canvas;        /* the scene's canvas, at the top-left */
+    isk_ui_rect console;       /* buttons, speed, fields, walls: beside the canvas */
+    isk_ui_rect side;          /* charts, integrators, keys: beside the console */
+    isk_ui_rect bottom;        /* click modes, potentials, layer: below */
+} play_layout;
+
+typedef struct play_integrator_stats {
+    double ns;                 /* measured cost, ns per particle-step (smoothed) */
+    double drift;              /* relative change of total energy since it took over */
+    int have_ns, have_drift;
+} play_integrator_stats;
+
+typedef struct play_history {
+    int n;
+    double t[PLAY_HISTORY], kinetic[PLAY_HISTORY], potential[PLAY_HISTORY], total[PLAY_HISTORY],
+        count[PLAY_HISTORY];
+} play_history;
+
+typedef struct play_script {
+    char *tokens[PLAY_SCRIPT_MAX];
+    int n, next;
+    long wait_until;           /* frames_shown before which nothing more is played */
+    char *text;                /* the owned copy the tokens point into */
+} play_script;
+
+/* The charts' points, thinned for drawing (play_charts.c). */
+typedef struct play_chart_points {
+    double t[120], v[4][120];
+    size_t n;
+} play_chart_points;
+
+typedef struct player {
+    /* the scene */
+    scene_args args;
+    isk_effect *fx;
+    char name[64];             /* for screenshots and saves */
+    const char *shots;         /* screenshot directory (NULL: the current one) */
+    const char *path;          /* the scene file, or NULL for a built-in scene */
+    long long stamp;           /* the file's modification time and size when read */
+    long long stamp_size;
+    double base_dt;            /* the scene's dt when loaded (the thesis's precision quirk scales it) */
+    /* display */
+    isk_window *win;
+    isk_canvas sim;            /* what the effect draws (trails live here) */
+    isk_canvas *shown;         /* the window's canvas */
+    isk_ui ui;
+    play_layout lay;
+    int panel, hud;            /* 1: shown */
+    int panel_toggle;          /* hide/show the panel at the end of this frame */
+    int shot_pending;          /* 1: canvas, 2: window screenshot at the end of this frame */
+    /* time */
+    isk_timestep ts;
+    int fixed_clock;
+    int paused, physics_off, failed, quit;
+    long frames_shown;
+    double elapsed;            /* real seconds since start */
+    double update_ms;          /* simulation time per shown frame (smoothed) */
+    double pace;               /* simulated / intended time over the last frames (1: real time kept) */
+    double behind_until;       /* real time until which the HUD says real time is not kept */
+    double pace_real, pace_dropped; /* this second's real time and the part of it dropped */
+    /* the console's own state */
+    double slider;             /* 1..1000, the thesis's speed slider */
+    int click_mode;            /* an isk_explosion, or PLAY_CLICK_ADD_POTENTIAL / _NONE */
+    int selected, pot_scroll;  /* the selected potential (index into isk_effect_potentials), -1 none */
+    int dragging;              /* 1 while a potential follows the pointer */
+    int count_refused;         /* thesis: an explosion count that is not 1..limit makes clicks do nothing */
+    char precision_text[64];   /* thesis: the precision as typed ("2.5"), "" when it is the substeps */
+    char status[240];          /* the last message of an action, under the console */
+    /* charts */
+    play_history hist;
+    isk_canvas chart_cache;    /* the charts, drawn again every few frames */
+    int chart_drawn_n;         /* samples when they were drawn (-1: draw them) */
+    play_chart_points chart_points;
+    play_integrator_stats stats[ISK_INTEGRATOR_COUNT];
+    double energy_ref;         /* total energy when the current integrator's drift started */
+    double energy_scale;       /* the size of the energies then (kinetic + |potential|) */
+    int energy_ref_valid;
+    size_t count_ref;          /* particles then (a click restarts the drift) */
+    int ref_integrator;        /* the integrator then */
+    /* files */
+    const char *save_to;       /* --save PATH, or NULL: iskra-SCENE.ini */
+    play_script script;
+} player;
+
+/* play_actions.c */
+typedef enum play_action {
+    PLAY_PLAY = 0, PLAY_PAUSE, PLAY_STOP, PLAY_RESET, PLAY_RELOAD, PLAY_STEP,
+    PLAY_SLOWER, PLAY_FASTER, PLAY_MORE_PRECISION, PLAY_LESS_PRECISION,
+    PLAY_SAVE, PLAY_SHOT, PLAY_SHOT_WINDOW, PLAY_PANEL, PLAY_HUD, PLAY_QUIT, PLAY_TOGGLE_PAUSE,
+    PLAY_ACTION_COUNT
+} play_action;
+typedef struct play_action_info {
+    const char *id;            /* widget name, for scripts */
+    const char *label;         /* on the button */
+    const char *keys;          /* its shortcut(s) as listed in the panel */
+    int key, key2;             /* ISK_UI_KEY_* or ASCII (0: none) */
+    const char *meaning;
+} play_action_info;
+const play_action_info *play_action_at(play_action a);
+void play_do(player *p, play_action a);
+/* The keys and what they do, for --help (from the same table). */
+void play_keys_help(FILE *f);
+/* Runs the actions of this frame's shortcut keys (keys a field took are not shortcuts). */
+void play_shortcuts(player *p);
+/* Hides or shows the panel: the window's canvas changes size. */
+void play_toggle_panel(player *p);
+/* Runs `steps` simulation frames (with their timing, charts and drift). */
+void play_simulate(player *p, int steps);
+/* After anything that rebuilt the state (reset, reload): charts restart. */
+void play_restarted(player *p);
+/* The console's state for a freshly created effect (start, reload): the
+ * slider, the click mode, the time step; a start_paused scene runs its
+ * first frame and holds. */
+void play_begin_scene(player *p);
+void play_say(player *p, const char *fmt, ...)
+#if defined(__GNUC__)
+    __attribute__((format(printf, 2, 3)))
+#endif
+    ;
+
+/* play_panel.c */
+/* The window's size for the scene and the panel (scale from p->ui.scale). */
+void play_layout_compute(player *p, int width, int height);
+void play_layout_size(int canvas_w, int canvas_h, int scale, int panel, int *w, int *h);
+void play_panel(player *p);
+/* Chooses a click mode (an isk_explosion, PLAY_CLICK_ADD_POTENTIAL or _NONE). */
+void play_set_click_mode(player *p, int mode);
+/* The canvas as a widget: clicks explode / add potentials, potentials are
+ * picked and dragged. */
+void play_canvas(player *p);
+
+/* play_fields.c */
+/* The section of the first force of `kind` ("force gravity"), or NULL. */
+const char *play_force_section(const isk_effect *fx, isk_force_kind kind, char *buf, size_t n);
+/* The section of the first layer emitter ("emitter particles"), or NULL. */
+const char *play_layer_section(const isk_effect *fx, char *buf, size_t n);
+/* The field `id` showing key `key` of `section` (NULL: disabled, shows "-"),
+ * applying what is typed through isk_effect_set; returns 1 when applied. */
+int play_key_field(player *p, const char *id, isk_ui_rect r, const char *section, const char *key);
+/* One number of a list-valued key ("position" x or y, "rect" xmin..ymax);
+ * `current` (may be NULL: the key's value) is the list shown. */
+int play_key_part_field(player *p, const char *id, isk_ui_rect r, const char *section, const char *key, int part,
+                        const char *current);
+/* The thesis's precision field (substeps; its fractional quirk in thesis fidelity). */
+int play_precision_field(player *p, const char *id, isk_ui_rect r);
+/* isk_effect_set, the message into the status line when refused; 0 / -1. */
+int play_set(player *p, const char *section, const char *key, const char *value);
+/* The slider's value (1..1000) for the scene's speed_divisor and back. */
+double play_slider_of_divisor(double f);
+double play_divisor_of_slider(double s);
+
+/* play_energy.c */
+typedef struct play_energy {
+    double kinetic, gravity, potential; /* potential: of the potentials (x_multiplier 1 assumed) */
+} play_energy;
+play_energy play_energy_of(const isk_effect *fx);
+
+/* play_charts.c */
+void play_charts_sample(player *p, double step_seconds, long steps);
+void play_charts_reset(player *p);
+void play_charts_draw(player *p, isk_ui_rect r);
+/* The integrator table (a radio group with cost and drift beside). */
+void play_integrators(player *p, isk_ui_rect r);
+
+/* play_hud.c */
+void play_hud_draw(player *p);
+/* Counts a frame's real time and what the accumulator dropped of it. */
+void play_pace(player *p, double real_seconds, double dropped_seconds);
+/* The effective speed 1/f and whether real time is kept, as text. */
+void play_speed_text(const player *p, char *buf, size_t n);
+
+/* play_files.c */
+/* Reloads the scene (0), or keeps the running one and says why (-1). */
+int play_reload(player *p);
+/* Checks the file every half second; reloads when it changed. */
+void play_watch(player *p);
+void play_remember_file(player *p);
+void play_save(player *p);
+void play_screenshot(player *p, int whole_window, const char *path);
+
+/* play_script.c */
+/* Parses --script; 0, or 2 after a message on stderr. */
+int play_script_parse(play_script *s, const char *text);
+/* Plays the tokens due at this frame (events into the window's queue). */
+int play_script_run(player *p);
+void play_script_free(play_script *s);
+/* The script's help lines. */
+void play_script_help(FILE *f);
+
+#endif

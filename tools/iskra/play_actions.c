@@ -1,0 +1,228 @@
+/* The simulator's actions: one table gives each its widget name, label,
+ * shortcut and meaning, so the buttons, the keys and the list of shortcuts
+ * in the panel cannot disagree.  Also the simulation frames themselves
+ * (timing, charts), since stepping is an action too. */
+#include <stdarg.h>
+#include <stdio.h>
+#include <string.h>
+
+#include "play.h"
+#include "progress.h"
+
+static const play_action_info actions[PLAY_ACTION_COUNT] = {
+    [PLAY_PLAY] = {"play", "Play", "P", 'p', 0, "run"},
+    [PLAY_PAUSE] = {"pause", "Pause", "Space", 0, 0, "hold"},
+    [PLAY_TOGGLE_PAUSE] = {"run-hold", "Run/hold", "Space", ' ', 0, "run / hold"},
+    [PLAY_STOP] = {"stop", "Stop", "S", 's', 0, "hold and start again"},
+    [PLAY_RESET] = {"reset", "Reset", "R", 'r', 0, "start again"},
+    [PLAY_RELOAD] = {"reload", "Reload", "F5", ISK_UI_KEY_F1 + 4, 0,
+                     "read the scene again (also when the file changes)"},
+    [PLAY_STEP] = {"step", "Step", "N", 'n', 0, "one frame, then hold"},
+    [PLAY_SLOWER] = {"slower", "Slower", ",", ',', 0, "slower"},
+    [PLAY_FASTER] = {"faster", "Faster", ".", '.', 0, "faster"},
+    [PLAY_MORE_PRECISION] = {"finer", "+", "+", '+', '=', "one substep more"},
+    [PLAY_LESS_PRECISION] = {"coarser", "-", "-", '-', 0, "one substep fewer"},
+    [PLAY_SAVE] = {"save", "Save", "F2", ISK_UI_KEY_F1 + 1, 0, "save the parameters as a scene"},
+    [PLAY_SHOT] = {"shot", "Shot", "F12", ISK_UI_KEY_F12, 0, "PNG of the canvas"},
+    [PLAY_SHOT_WINDOW] = {"shot-window", "Shot all", "F11", ISK_UI_KEY_F1 + 10, 0, "PNG of the window"},
+    [PLAY_PANEL] = {"panel", "Panel", "Tab", ISK_UI_KEY_TAB, 0, "hide / show the panel"},
+    [PLAY_HUD] = {"hud", "HUD", "H", 'h', 0, "HUD"},
+    [PLAY_QUIT] = {"quit", "Quit", "Esc", ISK_UI_KEY_ESCAPE, 0, "quit"},
+};
+
+const play_action_info *play_action_at(play_action a)
+{
+    return (unsigned)a < PLAY_ACTION_COUNT ? &actions[a] : NULL;
+}
+
+void play_say(player *p, const char *fmt, ...)
+{
+    va_list ap;
+    va_start(ap, fmt);
+    vsnprintf(p->status, sizeof p->status, fmt, ap);
+    va_end(ap);
+    fprintf(stderr, "iskra play: %s\n", p->status);
+}
+
+void play_restarted(player *p)
+{
+    play_charts_reset(p);
+    p->dragging = 0;
+    size_t n;
+    isk_effect_potentials(p->fx, &n);
+    if (p->selected >= (int)n)
+        p->selected = n ? (int)n - 1 : -1;
+}
+
+void play_begin_scene(player *p)
+{
+    const isk_effect_def *d = isk_effect_definition(p->fx);
+    p->base_dt = d->dt;
+    p->slider = play_slider_of_divisor(d->speed_divisor);
+    p->click_mode = d->click.enabled ? (int)d->click.explosion : PLAY_CLICK_NONE;
+    p->precision_text[0] = 0;
+    p->physics_off = p->count_refused = 0;
+    size_t n;
+    isk_effect_potentials(p->fx, &n);
+    p->selected = n ? 0 : -1; /* the thesis's editor shows potential 1 */
+    p->pot_scroll = 0;
+    memset(p->stats, 0, sizeof p->stats);
+    isk_timestep_init(&p->ts, p->base_dt, PLAY_MAX_STEPS_PER_FRAME);
+    p->pace = 1;
+    play_restarted(p);
+    p->paused = 0;
+    if (d->show.start_paused) {
+        /* the thesis's prviFrame: one frame, then hold */
+        play_simulate(p, 1);
+        p->paused = 1;
+    }
+}
+
+static void reset(player *p)
+{
+    if (isk_effect_reset(p->fx) != ISK_OK || isk_effect_run(p->fx, &p->sim, 0) != ISK_OK) {
+        play_say(p, "reset failed (out of memory?)");
+        p->failed = 1;
+    }
+    isk_timestep_reset(&p->ts);
+    play_restarted(p);
+}
+
+void play_simulate(player *p, int steps)
+{
+    if (steps <= 0 || p->failed)
+        return;
+    const isk_effect_def *d = isk_effect_definition(p->fx);
+    const int trails = !d->clear;
+    size_t particles = isk_effect_particle_count(p->fx);
+    double t0 = progress_now();
+    for (int i = 0; i < steps; i++) {
+        isk_status s = trails ? isk_effect_step_render(p->fx, &p->sim) : isk_effect_step(p->fx);
+        if (s != ISK_OK) {
+            play_say(p, "frame %ld: %s", isk_effect_frame(p->fx), isk_status_str(s));
+            p->failed = 1;
+            return;
+        }
+    }
+    double seconds = progress_now() - t0;
+    if (!trails && isk_effect_render(p->fx, &p->sim) != ISK_OK) {
+        p->failed = 1;
+        return;
+    }
+    /* Cost per particle and substep of the stepping alone (not drawing). */
+    p->update_ms = p->update_ms > 0 ? 0.9 * p->update_ms + 0.1 * seconds * 1000.0 : seconds * 1000.0;
+    long particle_steps = (long)particles * d->substeps * steps;
+    play_charts_sample(p, particle_steps > 0 ? seconds / (double)particle_steps : 0.0, particle_steps);
+}
+
+static void set_slider(player *p, double s)
+{
+    s = s < 1 ? 1 : s > 1000 ? 1000 : s;
+    char v[40];
+    snprintf(v, sizeof v, "%.17g", play_divisor_of_slider(s));
+    if (play_set(p, "scene", "speed_divisor", v) == 0)
+        p->slider = s;
+}
+
+static void substeps_by(player *p, int delta)
+{
+    int n = isk_effect_definition(p->fx)->substeps + delta;
+    char v[16];
+    snprintf(v, sizeof v, "%d", n);
+    if (n >= 1)
+        play_set(p, "scene", "substeps", v);
+}
+
+void play_toggle_panel(player *p)
+{
+    int w, h;
+    const isk_effect_def *d = isk_effect_definition(p->fx);
+    play_layout_size(d->width, d->height, p->ui.scale, !p->panel, &w, &h);
+    isk_canvas c;
+    isk_error err;
+    if (isk_canvas_init(&c, w, h) != ISK_OK) {
+        play_say(p, "out of memory");
+        return;
+    }
+    if (p->win && isk_window_resize_canvas(p->win, w, h, &err) != ISK_OK) {
+        play_say(p, "cannot resize the window: %s", err.message);
+        isk_canvas_free(&c);
+        return;
+    }
+    isk_canvas_free(p->shown);
+    *p->shown = c;
+    p->panel = !p->panel;
+    p->chart_drawn_n = -1; /* not drawn while hidden */
+    play_layout_compute(p, w, h);
+}
+
+void play_do(player *p, play_action a)
+{
+    switch (a) {
+    case PLAY_PLAY:
+        p->paused = 0;
+        isk_timestep_reset(&p->ts);
+        break;
+    case PLAY_PAUSE: p->paused = 1; break;
+    case PLAY_TOGGLE_PAUSE:
+        p->paused = !p->paused;
+        isk_timestep_reset(&p->ts);
+        break;
+    case PLAY_STOP:
+        p->paused = 1;
+        reset(p);
+        break;
+    case PLAY_RESET: reset(p); break;
+    case PLAY_RELOAD: play_reload(p); break;
+    case PLAY_STEP:
+        p->paused = 1;
+        if (!p->physics_off)
+            play_simulate(p, 1);
+        break;
+    case PLAY_SLOWER: set_slider(p, p->slider - 100); break;
+    case PLAY_FASTER: set_slider(p, p->slider + 100); break;
+    case PLAY_MORE_PRECISION: substeps_by(p, +1); break;
+    case PLAY_LESS_PRECISION: substeps_by(p, -1); break;
+    case PLAY_SAVE: play_save(p); break;
+    case PLAY_SHOT: p->shot_pending |= 1; break; /* at the end of the frame, when it is drawn */
+    case PLAY_SHOT_WINDOW: p->shot_pending |= 2; break;
+    case PLAY_PANEL: p->panel_toggle = 1; break; /* the window changes size between frames */
+    case PLAY_HUD: p->hud = !p->hud; break;
+    case PLAY_QUIT: p->quit = 1; break;
+    default: break;
+    }
+}
+
+void play_keys_help(FILE *f)
+{
+    /* Only actions with a key of their own (Pause is Space's run / hold). */
+    int col = 0;
+    for (int a = 0; a < PLAY_ACTION_COUNT; a++) {
+        if (!actions[a].key)
+            continue;
+        char item[96];
+        int n = snprintf(item, sizeof item, "%s %s", actions[a].keys, actions[a].meaning);
+        if (col && col + 2 + n > 84) {
+            fputs("\n", f);
+            col = 0;
+        }
+        col += fprintf(f, "%s%s", col ? "; " : "        ", item);
+    }
+    fprintf(f, "%s1-%d click mode\n", col ? "; " : "        ", PLAY_CLICK_MODES);
+}
+
+void play_shortcuts(player *p)
+{
+    int keys[ISK_UI_FRAME_KEYS];
+    int n = isk_ui_keys(&p->ui, keys, ISK_UI_FRAME_KEYS);
+    for (int i = 0; i < n && !p->quit; i++) {
+        for (int a = 0; a < PLAY_ACTION_COUNT; a++)
+            if (actions[a].key && (keys[i] == actions[a].key || keys[i] == actions[a].key2)) {
+                play_do(p, (play_action)a);
+                break;
+            }
+        /* 1, 2, ...: the click modes in the order of the radio group */
+        if (keys[i] >= '1' && keys[i] < '1' + PLAY_CLICK_MODES)
+            play_set_click_mode(p, keys[i] - '1');
+    }
+}

@@ -1,0 +1,119 @@
+/* The simulator's files: reload (the button, F5, and by itself when the
+ * scene file changes, so a scene can be edited in any editor and watched),
+ * save (the parameters as they are now, as a scene file that reproduces
+ * them: isk_scene_save), screenshots of the canvas or of the whole window. */
+#include <stdio.h>
+#include <string.h>
+#include <sys/stat.h>
+
+#include "iskra/png.h"
+#include "iskra/scene.h"
+#include "outpath.h"
+#include "play.h"
+
+void play_remember_file(player *p)
+{
+    struct stat st;
+    if (p->path && stat(p->path, &st) == 0) {
+        p->stamp = (long long)st.st_mtime * 1000000000LL + (long long)st.st_mtim.tv_nsec;
+        p->stamp_size = (long long)st.st_size;
+    }
+}
+
+void play_watch(player *p)
+{
+    /* About twice a second; by frames, so a scripted run is the same. */
+    if (!p->path || p->frames_shown % 30 != 0)
+        return;
+    struct stat st;
+    if (stat(p->path, &st) != 0)
+        return;
+    long long stamp = (long long)st.st_mtime * 1000000000LL + (long long)st.st_mtim.tv_nsec;
+    if (stamp == p->stamp && (long long)st.st_size == p->stamp_size)
+        return;
+    if (play_reload(p) == 0)
+        play_say(p, "%s changed: reloaded", p->path);
+}
+
+static int resize_for(player *p, int width, int height)
+{
+    isk_canvas sim;
+    if (isk_canvas_init(&sim, width, height) != ISK_OK)
+        return -1;
+    int w, h;
+    play_layout_size(width, height, p->ui.scale, p->panel, &w, &h);
+    isk_canvas shown;
+    if (isk_canvas_init(&shown, w, h) != ISK_OK) {
+        isk_canvas_free(&sim);
+        return -1;
+    }
+    isk_error err;
+    if (p->win && isk_window_resize_canvas(p->win, w, h, &err) != ISK_OK) {
+        play_say(p, "reload: cannot resize the window: %s", err.message);
+        isk_canvas_free(&sim);
+        isk_canvas_free(&shown);
+        return -1;
+    }
+    isk_canvas_free(&p->sim);
+    p->sim = sim;
+    isk_canvas_free(p->shown);
+    *p->shown = shown;
+    return 0;
+}
+
+int play_reload(player *p)
+{
+    isk_effect_def def;
+    isk_effect *fx;
+    /* A file that does not load is not tried again until it changes. */
+    play_remember_file(p);
+    if (scene_args_open(&p->args, &def, &fx) != 0) {
+        play_say(p, "reload: %s has an error (printed above); the last version keeps running", p->args.scene);
+        return -1;
+    }
+    const isk_effect_def *old = isk_effect_definition(p->fx);
+    if ((def.width != old->width || def.height != old->height) && resize_for(p, def.width, def.height) != 0) {
+        isk_effect_destroy(fx);
+        isk_effect_def_free(&def);
+        return -1;
+    }
+    isk_effect_destroy(p->fx);
+    p->fx = fx;
+    isk_effect_def_free(&def);
+    play_layout_compute(p, p->shown->width, p->shown->height);
+    if (isk_effect_run(p->fx, &p->sim, 0) != ISK_OK)
+        p->failed = 1;
+    play_begin_scene(p);
+    return 0;
+}
+
+void play_save(player *p)
+{
+    char path[4200];
+    if (p->save_to)
+        snprintf(path, sizeof path, "%s", p->save_to);
+    else
+        snprintf(path, sizeof path, "iskra-%s.ini", p->name);
+    isk_error err;
+    if (isk_scene_save(isk_effect_definition(p->fx), path, &err) != ISK_OK)
+        play_say(p, "save failed: %s", err.message);
+    else
+        play_say(p, "saved %s (iskra play %s runs these parameters)", path, path);
+}
+
+void play_screenshot(player *p, int whole_window, const char *path)
+{
+    char name[4200];
+    if (!path) {
+        snprintf(name, sizeof name, "%s%siskra-%s-%06ld%s.png", p->shots ? p->shots : "", p->shots ? "/" : "",
+                 p->name, isk_effect_frame(p->fx), whole_window ? "-window" : "");
+        path = name;
+        if (p->shots && outpath_make_dirs("play", p->shots))
+            return;
+    }
+    isk_error err;
+    if (isk_png_write(whole_window ? p->shown : &p->sim, path, &err) == ISK_OK)
+        play_say(p, "saved %s", path);
+    else
+        play_say(p, "screenshot failed: %s", err.message);
+}
