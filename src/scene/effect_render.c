@@ -144,20 +144,8 @@ static inline isk_color style(const fx_group *g, const isk_particles *p, size_t 
 
 typedef void (*dot_fn)(isk_canvas *, double, double, isk_color, isk_blend);
 
-/* Dots of one constant colour: the view transform and the dot, nothing else. */
-static inline void dots_plain(isk_effect *e, isk_canvas *c, fx_group *g, const dot_fn dot)
-{
-    const isk_view *v = &e->view;
-    const isk_particles *p = &g->store;
-    const isk_color col = g->def->color;
-    const isk_blend blend = g->def->blend;
-    for (size_t i = 0; i < p->count; i++) {
-        double X, Y;
-        isk_view_to_screen(v, p->x[i], p->y[i], &X, &Y);
-        dot(c, X, Y, col, blend);
-    }
-}
-
+/* One colour per particle (a ramp or per-particle colours): the view
+ * transform and one dot each. */
 static inline void dots_styled(isk_effect *e, isk_canvas *c, fx_group *g, const dot_fn dot)
 {
     const isk_view *v = &e->view;
@@ -170,15 +158,17 @@ static inline void dots_styled(isk_effect *e, isk_canvas *c, fx_group *g, const 
     }
 }
 
+/* One colour for the whole group: the batched kernels (iskra/view.h), the
+ * same bytes as a loop of single dots. */
 static isk_status draw_dots(isk_effect *e, isk_canvas *c, fx_group *g)
 {
-    dots_plain(e, c, g, isk_draw_dot);
+    isk_draw_dots(c, &e->view, g->store.count, g->store.x, g->store.y, g->def->color, g->def->blend);
     return ISK_OK;
 }
 
 static isk_status draw_browser_dots(isk_effect *e, isk_canvas *c, fx_group *g)
 {
-    dots_plain(e, c, g, isk_draw_dot_browser);
+    isk_draw_dots_browser(c, &e->view, g->store.count, g->store.x, g->store.y, g->def->color, g->def->blend);
     return ISK_OK;
 }
 
@@ -197,11 +187,14 @@ static isk_status draw_styled_browser_dots(isk_effect *e, isk_canvas *c, fx_grou
 static isk_status draw_pixels(isk_effect *e, isk_canvas *c, fx_group *g)
 {
     const isk_particles *p = &g->store;
-    const int vary = varies(g);
+    if (!varies(g)) {
+        isk_draw_pixels(c, &e->view, p->count, p->x, p->y, g->def->color, g->def->blend);
+        return ISK_OK;
+    }
     for (size_t i = 0; i < p->count; i++) {
         double X, Y, mult;
         isk_view_to_screen(&e->view, p->x[i], p->y[i], &X, &Y);
-        isk_color col = style(g, p, i, vary, &mult);
+        isk_color col = style(g, p, i, 1, &mult);
         if (X >= 0 && Y >= 0 && X < c->width && Y < c->height)
             isk_draw_pixel(c, (int)X, (int)Y, col, g->def->blend);
     }

@@ -11,6 +11,7 @@
 #include <string.h>
 
 #include "iskra/scene.h"
+#include "scene_mutator.h"
 
 #define MAX_PARTICLES 20000u
 #define MAX_PIXELS (256 * 256)
@@ -68,4 +69,11 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     isk_effect_def_free(&d);
     free(text);
     return 0;
+}
+
+/* Mutations that know the scene format (scene_mutator.h). */
+size_t LLVMFuzzerCustomMutator(uint8_t *data, size_t size, size_t max_size, unsigned int seed);
+size_t LLVMFuzzerCustomMutator(uint8_t *data, size_t size, size_t max_size, unsigned int seed)
+{
+    return scene_mutate(data, size, max_size, seed);
 }
