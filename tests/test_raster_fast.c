@@ -20,6 +20,8 @@
 #include "iskra/view.h"
 #include "raster/blend_px.h"
 #include "raster_ref.h"
+#include "raster/sprite_rows.h"
+#include "view/world_batch.h"
 
 static const isk_blend MODES[3] = {ISK_BLEND_REPLACE, ISK_BLEND_OVER, ISK_BLEND_ADD};
 
@@ -296,6 +298,54 @@ Test(raster_fast, batches_equal_loop_of_single_calls)
     free(y);
 }
 
+/* A batch cut into bands of rows (isk__draw_batch_rows: the renderer's
+ * threads each draw one) gives the bytes of the whole batch, whatever the
+ * cuts and the order the bands are drawn in. */
+Test(raster_fast, bands_of_rows_equal_the_whole_batch)
+{
+    isk_rng r;
+    isk_rng_seed(&r, 11);
+    double *x = malloc(700 * sizeof *x), *y = malloc(700 * sizeof *y);
+    cr_assert(x && y);
+    for (int n = 0; n < 600; n++) {
+        int w = rnd_size(&r), h = rnd_size(&r);
+        pair p = make_pair(&r, w, h);
+        isk_view v;
+        if (n % 2)
+            cr_assert_eq(isk_view_camera(&v, w, h, isk_rng_range(&r, 0.5, 20), isk_rng_range(&r, -2, 2),
+                                         isk_rng_range(&r, -2, 2)),
+                         ISK_OK);
+        else
+            cr_assert_eq(isk_view_window(&v, w, h, -3, 3 + isk_rng_uniform(&r), -2, 2), ISK_OK);
+        size_t m = 1 + isk_rng_below(&r, 700);
+        for (size_t i = 0; i < m; i++) {
+            double X = rnd_coord(&r, w), Y = rnd_coord(&r, h);
+            isk_view_to_world(&v, X, Y, &x[i], &y[i]);
+        }
+        isk_color col = rnd_color(&r);
+        isk_blend mode = MODES[isk_rng_below(&r, 3)];
+        isk__batch_rule rule = (isk__batch_rule)isk_rng_below(&r, 3);
+        isk__draw_batch_rows(&p.c[0], &v, m, x, y, col, mode, rule, 0, h);
+        /* up to 6 cuts (repeats make empty bands), bands drawn last to first */
+        int cut[8], nc = 0;
+        cut[nc++] = 0;
+        for (int k = (int)isk_rng_below(&r, 7); k > 0; k--)
+            cut[nc++] = (int)isk_rng_below(&r, (uint32_t)h + 1);
+        cut[nc++] = h;
+        for (int i = 1; i < nc; i++) /* sort */
+            for (int j = i; j > 0 && cut[j - 1] > cut[j]; j--) {
+                int t = cut[j];
+                cut[j] = cut[j - 1];
+                cut[j - 1] = t;
+            }
+        for (int b = nc - 2; b >= 0; b--)
+            isk__draw_batch_rows(&p.c[1], &v, m, x, y, col, mode, rule, cut[b], cut[b + 1]);
+        check_pair(&p, "bands", n);
+    }
+    free(x);
+    free(y);
+}
+
 static double rnd_radius(isk_rng *r)
 {
     switch (isk_rng_below(r, 16)) {
@@ -361,5 +411,36 @@ Test(raster_fast, sprites_equal_reference)
         }
         isk_sprite_free(&s);
         check_pair(&p, "sprite", n);
+    }
+}
+
+/* Sprites cut into bands of rows (isk__draw_sprite_rows) give the bytes of
+ * the whole sprite, tinted or not, in every mode. */
+Test(raster_fast, sprite_bands_equal_the_whole_sprite)
+{
+    isk_rng r;
+    isk_rng_seed(&r, 13);
+    for (int n = 0; n < 800; n++) {
+        int w = rnd_size(&r), h = rnd_size(&r);
+        pair p = make_pair(&r, w, h);
+        isk_sprite s;
+        int size = 1 + (int)isk_rng_below(&r, 48);
+        cr_assert_eq(isk_sprite_init(&s, (isk_sprite_kind)isk_rng_below(&r, 3), size, rnd_color(&r)), ISK_OK);
+        int cut = (int)isk_rng_below(&r, (uint32_t)h + 1), cut2 = cut + (int)isk_rng_below(&r, (uint32_t)(h - cut) + 1);
+        for (int k = 0; k < 6; k++) {
+            isk_blend mode = MODES[isk_rng_below(&r, 3)];
+            double cx = isk_rng_range(&r, -size, w + size), cy = isk_rng_range(&r, -size, h + size);
+            isk_color col = rnd_color(&r);
+            const isk_color *tint = k % 2 ? &col : NULL;
+            if (tint)
+                isk_draw_sprite_tinted(&p.c[0], &s, cx, cy, col, mode);
+            else
+                isk_draw_sprite(&p.c[0], &s, cx, cy, mode);
+            isk__draw_sprite_rows(&p.c[1], &s, cx, cy, tint, mode, cut2, h);
+            isk__draw_sprite_rows(&p.c[1], &s, cx, cy, tint, mode, 0, cut);
+            isk__draw_sprite_rows(&p.c[1], &s, cx, cy, tint, mode, cut, cut2);
+        }
+        isk_sprite_free(&s);
+        check_pair(&p, "sprite bands", n);
     }
 }

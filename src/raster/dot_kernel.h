@@ -137,19 +137,34 @@ static ISK__INLINE void isk__blend_2x2(const isk_canvas *c, int ix, int iy, cons
     }
 }
 
-/* isk_draw_dot for a canvas known to have pixels. */
-static ISK__INLINE void isk__dot(const isk_canvas *c, double x, double y, isk_color col, const isk__cov_lut *lut,
-                                 isk_blend mode)
+/* The 2x2 block cut to the rows [r0, r1) of c (iy in canvas rows). */
+static ISK__INLINE void isk__blend_2x2_rows(const isk_canvas *c, int r0, int r1, int ix, int iy, const uint32_t w[4],
+                                            isk_color col, const isk__cov_lut *lut, isk_blend mode)
 {
-    /* The square [x, x+1) x [y, y+1) touches the canvas only for x in
-     * (-1, width) and y in (-1, height); the test also rejects NaN and keeps
-     * the conversions below defined. */
-    if (!(x > -1.0 && x < c->width && y > -1.0 && y < c->height))
+    const isk_canvas band = {c->pixels + (size_t)r0 * c->stride, c->width, r1 - r0, c->stride, 0};
+    isk__blend_2x2(&band, ix, iy - r0, w, col, lut, mode);
+}
+
+/* isk_draw_dot for a canvas known to have pixels, its blend cut to the
+ * rows [r0, r1) (0 and the height for the whole canvas). */
+static ISK__INLINE void isk__dot_rows(const isk_canvas *c, int r0, int r1, double x, double y, isk_color col,
+                                      const isk__cov_lut *lut, isk_blend mode)
+{
+    /* The square [x, x+1) x [y, y+1) touches the rows only for x in
+     * (-1, width) and y in (r0 - 1, r1); the test also rejects NaN and
+     * keeps the conversions below defined. */
+    if (!(x > -1.0 && x < c->width && y > r0 - 1.0 && y < r1))
         return;
     int ix = isk__ifloor(x), iy = isk__ifloor(y);
     uint32_t w[4];
     isk__dot_weights_frac(x - ix, y - iy, w);
-    isk__blend_2x2(c, ix, iy, w, col, lut, mode);
+    isk__blend_2x2_rows(c, r0, r1, ix, iy, w, col, lut, mode);
+}
+
+static ISK__INLINE void isk__dot(const isk_canvas *c, double x, double y, isk_color col, const isk__cov_lut *lut,
+                                 isk_blend mode)
+{
+    isk__dot_rows(c, 0, c->height, x, y, col, lut, mode);
 }
 
 /* The browser's weights (see dot.c); 0 for non-finite or huge input. */
@@ -175,16 +190,23 @@ static ISK__INLINE int isk__dot_weights_browser(double x, double y, int *ix, int
     return 1;
 }
 
-/* isk_draw_dot_browser for a canvas known to have pixels. */
-static ISK__INLINE void isk__dot_browser(const isk_canvas *c, double x, double y, isk_color col,
-                                         const isk__cov_lut *lut, isk_blend mode)
+/* isk_draw_dot_browser for a canvas known to have pixels, cut to the rows
+ * [r0, r1). */
+static ISK__INLINE void isk__dot_browser_rows(const isk_canvas *c, int r0, int r1, double x, double y,
+                                              isk_color col, const isk__cov_lut *lut, isk_blend mode)
 {
-    if (!(x > -2.0 && x < c->width + 1.0 && y > -2.0 && y < c->height + 1.0))
+    if (!(x > -2.0 && x < c->width + 1.0 && y > r0 - 2.0 && y < r1 + 1.0))
         return;
     int ix, iy;
     uint32_t w[4];
     if (isk__dot_weights_browser(x, y, &ix, &iy, w))
-        isk__blend_2x2(c, ix, iy, w, col, lut, mode);
+        isk__blend_2x2_rows(c, r0, r1, ix, iy, w, col, lut, mode);
+}
+
+static ISK__INLINE void isk__dot_browser(const isk_canvas *c, double x, double y, isk_color col,
+                                         const isk__cov_lut *lut, isk_blend mode)
+{
+    isk__dot_browser_rows(c, 0, c->height, x, y, col, lut, mode);
 }
 
 #endif

@@ -7,6 +7,7 @@
 #include <string.h>
 
 #include "raster/span_simd.h"
+#include "raster/sprite_rows.h"
 
 double isk_sprite_alpha(isk_sprite_kind kind, double d, int size)
 {
@@ -304,22 +305,38 @@ static void rows(const isk_canvas *c, const isk_sprite *s, const placement *pl, 
     rows_base(c, s, pl, col, kind, mode);
 }
 
+/* The sprite cut to the rows [r0, r1): the placement on the whole canvas,
+ * then its row range narrowed (raster/sprite_rows.h). */
+void isk__draw_sprite_rows(isk_canvas *c, const isk_sprite *s, double cx, double cy, const isk_color *tint,
+                           isk_blend mode, int r0, int r1)
+{
+    placement pl;
+    if (!place(c, s, cx, cy, mode, &pl))
+        return;
+    if (r0 - pl.y0 > pl.jb)
+        pl.jb = r0 - pl.y0;
+    if (r1 - pl.y0 < pl.je)
+        pl.je = r1 - pl.y0;
+    if (pl.jb >= pl.je)
+        return;
+    if (tint)
+        rows(c, s, &pl, *tint, SRC_MASK, mode);
+    else
+        rows(c, s, &pl, s->color,
+             mode == ISK_BLEND_ADD ? SRC_INC_ADD : mode == ISK_BLEND_OVER ? SRC_INC_OVER : SRC_MASK, mode);
+}
+
 void isk_draw_sprite_tinted(isk_canvas *c, const isk_sprite *s, double cx, double cy, isk_color color,
                             isk_blend mode)
 {
-    placement pl;
-    if (place(c, s, cx, cy, mode, &pl))
-        rows(c, s, &pl, color, SRC_MASK, mode);
+    isk__draw_sprite_rows(c, s, cx, cy, &color, mode, 0, c ? c->height : 0);
 }
 
 void isk_draw_sprite(isk_canvas *c, const isk_sprite *s, double cx, double cy, isk_blend mode)
 {
-    placement pl;
     /* additive: the premade increments; over and replace: the baked colour
      * through the mask */
-    if (place(c, s, cx, cy, mode, &pl))
-        rows(c, s, &pl, s->color,
-             mode == ISK_BLEND_ADD ? SRC_INC_ADD : mode == ISK_BLEND_OVER ? SRC_INC_OVER : SRC_MASK, mode);
+    isk__draw_sprite_rows(c, s, cx, cy, NULL, mode, 0, c ? c->height : 0);
 }
 
 /* ---- cache ------------------------------------------------------------- */

@@ -47,7 +47,13 @@ typedef struct fx_step_kind {
 
 /* Draws a group's store (effect_render.c picks one per group); ISK_ERR_NOMEM
  * when a sprite could not be baked. */
-typedef isk_status (*fx_draw_fn)(isk_effect *e, isk_canvas *c, fx_group *g);
+/* What one band of a group's draw needs (effect_bands.c). */
+typedef struct fx_band {
+    int r0, r1;                                       /* the canvas rows [r0, r1) it blends */
+    const isk_sprite *sprite[ISK_SPRITE_MAX_SIZE + 1]; /* by whole-pixel size (sprite groups) */
+} fx_band;
+
+typedef isk_status (*fx_draw_fn)(isk_effect *e, isk_canvas *c, fx_group *g, const fx_band *b);
 
 struct fx_group {
     int index;                     /* emitter index in the definition */
@@ -148,6 +154,12 @@ extern const fx_step_kind fx_step_spawn;      /* substep end: births in (t0, t0 
 /* effect_render.c */
 isk_status fx_render(isk_effect *e, isk_canvas *c);
 fx_draw_fn fx_choose_draw(const fx_group *g);
+/* 1 when the group's draw can be cut into bands of rows. */
+int fx_band_ok(const fx_group *g);
+/* Bakes every sprite a sprite group can need into b->sprite. */
+isk_status fx_prepare_sprites(isk_effect *e, fx_group *g, fx_band *b);
+/* effect_bands.c: a group's draw, on the effect's threads when it is big. */
+isk_status fx_render_group(isk_effect *e, isk_canvas *c, fx_group *g);
 isk_status fx_bake_ramps(fx_group *g, isk_error *err);
 void fx_free_ramps(fx_group *g);
 

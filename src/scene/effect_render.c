@@ -3,11 +3,15 @@
  * baked once per emitter at create and read per particle. */
 #include <math.h>
 #include <stdlib.h>
+#include <string.h>
 
 #include "effect_internal.h"
 #include "iskra/draw.h"
 #include "iskra/text.h"
 #include "raster/clip.h"
+#include "raster/dot_kernel.h"
+#include "raster/sprite_rows.h"
+#include "view/world_batch.h"
 
 isk_status fx_bake_ramps(fx_group *g, isk_error *err)
 {
@@ -142,67 +146,61 @@ static inline isk_color style(const fx_group *g, const isk_particles *p, size_t 
     return particle_color(g, p, i, t, mult);
 }
 
-typedef void (*dot_fn)(isk_canvas *, double, double, isk_color, isk_blend);
+/* ---- the groups' draws --------------------------------------------------
+ * Each draws the rows [b->r0, b->r1) of the canvas: the whole canvas on one
+ * thread, or one band per thread (fx_render_group).  Every primitive used
+ * here places its shape on the whole canvas and cuts only the blend to the
+ * band (view/world_batch.h, raster/sprite_rows.h, raster/dot_kernel.h), so
+ * the bands give the bytes of the whole draw for any number of threads. */
 
 /* One colour per particle (a ramp or per-particle colours): the view
  * transform and one dot each. */
-static inline void dots_styled(isk_effect *e, isk_canvas *c, fx_group *g, const dot_fn dot)
+static isk_status draw_styled_dots(isk_effect *e, isk_canvas *c, fx_group *g, const fx_band *b)
 {
     const isk_view *v = &e->view;
     const isk_particles *p = &g->store;
     const isk_blend blend = g->def->blend;
+    const int browser = g->def->draw == ISK_DRAW_DOT_BROWSER;
     for (size_t i = 0; i < p->count; i++) {
         double X, Y, mult;
         isk_view_to_screen(v, p->x[i], p->y[i], &X, &Y);
-        dot(c, X, Y, style(g, p, i, 1, &mult), blend);
+        isk_color col = style(g, p, i, 1, &mult);
+        if (browser)
+            ISK__BLEND_DISPATCH(blend, isk__dot_browser_rows, c, b->r0, b->r1, X, Y, col, NULL);
+        else
+            ISK__BLEND_DISPATCH(blend, isk__dot_rows, c, b->r0, b->r1, X, Y, col, NULL);
     }
-}
-
-/* One colour for the whole group: the batched kernels (iskra/view.h), the
- * same bytes as a loop of single dots. */
-static isk_status draw_dots(isk_effect *e, isk_canvas *c, fx_group *g)
-{
-    isk_draw_dots(c, &e->view, g->store.count, g->store.x, g->store.y, g->def->color, g->def->blend);
     return ISK_OK;
 }
 
-static isk_status draw_browser_dots(isk_effect *e, isk_canvas *c, fx_group *g)
+/* One colour for the whole group: the batched kernels (iskra/view.h). */
+static isk_status draw_dots(isk_effect *e, isk_canvas *c, fx_group *g, const fx_band *b)
 {
-    isk_draw_dots_browser(c, &e->view, g->store.count, g->store.x, g->store.y, g->def->color, g->def->blend);
+    isk__batch_rule rule = g->def->draw == ISK_DRAW_DOT_BROWSER ? ISK__BATCH_DOT_BROWSER
+                           : g->def->draw == ISK_DRAW_PIXEL     ? ISK__BATCH_PIXEL
+                                                                : ISK__BATCH_DOT;
+    isk__draw_batch_rows(c, &e->view, g->store.count, g->store.x, g->store.y, g->def->color, g->def->blend, rule,
+                         b->r0, b->r1);
     return ISK_OK;
 }
 
-static isk_status draw_styled_dots(isk_effect *e, isk_canvas *c, fx_group *g)
-{
-    dots_styled(e, c, g, isk_draw_dot);
-    return ISK_OK;
-}
-
-static isk_status draw_styled_browser_dots(isk_effect *e, isk_canvas *c, fx_group *g)
-{
-    dots_styled(e, c, g, isk_draw_dot_browser);
-    return ISK_OK;
-}
-
-static isk_status draw_pixels(isk_effect *e, isk_canvas *c, fx_group *g)
+static isk_status draw_styled_pixels(isk_effect *e, isk_canvas *c, fx_group *g, const fx_band *b)
 {
     const isk_particles *p = &g->store;
-    if (!varies(g)) {
-        isk_draw_pixels(c, &e->view, p->count, p->x, p->y, g->def->color, g->def->blend);
-        return ISK_OK;
-    }
     for (size_t i = 0; i < p->count; i++) {
         double X, Y, mult;
         isk_view_to_screen(&e->view, p->x[i], p->y[i], &X, &Y);
         isk_color col = style(g, p, i, 1, &mult);
-        if (X >= 0 && Y >= 0 && X < c->width && Y < c->height)
+        if (X >= 0 && Y >= b->r0 && X < c->width && Y < b->r1)
             isk_draw_pixel(c, (int)X, (int)Y, col, g->def->blend);
     }
     return ISK_OK;
 }
 
-static isk_status draw_discs(isk_effect *e, isk_canvas *c, fx_group *g)
+/* Discs are drawn whole (fx_band_ok says so): the disc kernel has no band. */
+static isk_status draw_discs(isk_effect *e, isk_canvas *c, fx_group *g, const fx_band *b)
 {
+    (void)b;
     const isk_particles *p = &g->store;
     const int vary = varies(g);
     const double scale = fabs(e->view.sx);
@@ -215,53 +213,72 @@ static isk_status draw_discs(isk_effect *e, isk_canvas *c, fx_group *g)
     return ISK_OK;
 }
 
+/* A sprite's whole-pixel size for a size multiplier. */
+static int sprite_px(const fx_group *g, double scale, double mult)
+{
+    double d = g->def->size * mult * scale;
+    if (!(d > 0))
+        return 0;
+    return d >= ISK_SPRITE_MAX_SIZE ? ISK_SPRITE_MAX_SIZE : (d >= 1.0 ? (int)(d + 0.5) : 1);
+}
+
+/* Every sprite the group can need, by whole-pixel size, baked before the
+ * draw: one size, or one per entry of the size ramp's table (the
+ * multipliers a particle can have).  The bands then only read the table;
+ * the cache is never touched from two threads.  ISK_ERR_FULL when the
+ * sizes do not fit the cache (the draw then runs whole, on one thread). */
+isk_status fx_prepare_sprites(isk_effect *e, fx_group *g, fx_band *b)
+{
+    const int tinted = g->has_color_ramp || g->has_alpha_ramp || g->store.color;
+    const isk_color bake_col = tinted ? ISK_WHITE : g->def->color;
+    const double scale = fabs(e->view.sx);
+    const int n = g->has_size_ramp ? g->size_ramp.res + 1 : 1;
+    for (int attempt = 0; attempt < 2; attempt++) {
+        isk_status s = ISK_OK;
+        memset(b->sprite, 0, sizeof b->sprite);
+        for (int k = 0; k < n && s == ISK_OK; k++) {
+            int px = sprite_px(g, scale, g->has_size_ramp ? g->size_ramp.table[k] : 1.0);
+            if (px && !b->sprite[px])
+                s = isk_sprite_cache_get(e->sprites, g->def->sprite, px, bake_col, &b->sprite[px]);
+        }
+        if (s == ISK_OK)
+            return ISK_OK;
+        if (s != ISK_ERR_FULL)
+            return s;
+        isk_sprite_cache_clear(e->sprites); /* full of other sizes: start over once */
+    }
+    return ISK_ERR_FULL;
+}
+
 /* Sprites: with a constant colour, one sprite baked in that colour (its
  * blend table makes drawing cheapest); when the colour or alpha varies per
- * particle (ramps), one mask per size baked in white and drawn tinted
- * (isk_draw_sprite_tinted), so a ramp of a thousand colours bakes nothing
- * more.  Both give isk_blend_pixel_cov's bytes exactly.  A size ramp gives
- * each particle its own whole-pixel size (one cached mask per size). */
-static isk_status draw_sprites(isk_effect *e, isk_canvas *c, fx_group *g)
+ * particle (ramps), one mask per size baked in white and drawn tinted, so a
+ * ramp of a thousand colours bakes nothing more.  Both give
+ * isk_blend_pixel_cov's bytes exactly.  A size ramp gives each particle its
+ * own whole-pixel size (the sprites fx_prepare_sprites baked). */
+static isk_status draw_sprites(isk_effect *e, isk_canvas *c, fx_group *g, const fx_band *b)
 {
-    const isk_emitter_def *em = g->def;
     const isk_particles *p = &g->store;
     const int vary = varies(g);
     const int tinted = g->has_color_ramp || g->has_alpha_ramp || p->color;
-    const isk_color bake_col = tinted ? ISK_WHITE : em->color;
     const double scale = fabs(e->view.sx);
-    const isk_sprite *spr = NULL;
-    int last_px = -1;
     for (size_t i = 0; i < p->count; i++) {
         double X, Y, mult;
         isk_view_to_screen(&e->view, p->x[i], p->y[i], &X, &Y);
         isk_color col = style(g, p, i, vary, &mult);
-        double d = em->size * mult * scale;
-        if (!(d > 0))
-            continue;
-        int px = d >= ISK_SPRITE_MAX_SIZE ? ISK_SPRITE_MAX_SIZE : (d >= 1.0 ? (int)(d + 0.5) : 1);
-        if (!spr || px != last_px) {
-            if (isk_sprite_cache_get(e->sprites, em->sprite, px, bake_col, &spr) != ISK_OK) {
-                /* A full cache: start over rather than stop drawing; if even
-                 * that fails, memory is out (never a silently missing sprite). */
-                isk_sprite_cache_clear(e->sprites);
-                if (isk_sprite_cache_get(e->sprites, em->sprite, px, bake_col, &spr) != ISK_OK)
-                    return ISK_ERR_NOMEM;
-            }
-            last_px = px;
-        }
-        if (tinted)
-            isk_draw_sprite_tinted(c, spr, X, Y, col, em->blend);
-        else
-            isk_draw_sprite(c, spr, X, Y, em->blend);
+        const isk_sprite *spr = b->sprite[sprite_px(g, scale, mult)];
+        if (spr)
+            isk__draw_sprite_rows(c, spr, X, Y, tinted ? &col : NULL, g->def->blend, b->r0, b->r1);
     }
     return ISK_OK;
 }
 
-static isk_status draw_nothing(isk_effect *e, isk_canvas *c, fx_group *g)
+static isk_status draw_nothing(isk_effect *e, isk_canvas *c, fx_group *g, const fx_band *b)
 {
     (void)e;
     (void)c;
     (void)g;
+    (void)b;
     return ISK_OK;
 }
 
@@ -269,13 +286,18 @@ fx_draw_fn fx_choose_draw(const fx_group *g)
 {
     const int vary = varies(g);
     switch (g->def->draw) {
-    case ISK_DRAW_DOT: return vary ? draw_styled_dots : draw_dots;
-    case ISK_DRAW_DOT_BROWSER: return vary ? draw_styled_browser_dots : draw_browser_dots;
-    case ISK_DRAW_PIXEL: return draw_pixels;
+    case ISK_DRAW_DOT:
+    case ISK_DRAW_DOT_BROWSER: return vary ? draw_styled_dots : draw_dots;
+    case ISK_DRAW_PIXEL: return vary ? draw_styled_pixels : draw_dots;
     case ISK_DRAW_DISC: return draw_discs;
     case ISK_DRAW_SPRITE: return draw_sprites;
     default: return draw_nothing;
     }
+}
+
+int fx_band_ok(const fx_group *g)
+{
+    return g->draw != draw_discs;
 }
 
 isk_status fx_render(isk_effect *e, isk_canvas *c)
@@ -290,7 +312,7 @@ isk_status fx_render(isk_effect *e, isk_canvas *c)
     }
     for (int k = 0; k < e->ngroups; k++) {
         fx_group *g = &e->groups[e->draw_order[k]];
-        isk_status s = g->draw(e, c, g);
+        isk_status s = fx_render_group(e, c, g);
         if (s != ISK_OK)
             return s;
     }

@@ -17,8 +17,8 @@
 #include "raster/blend_px.h"
 #include "raster/dot_kernel.h"
 #include "raster/span_simd.h"
+#include "view/world_batch.h"
 
-typedef enum batch_rule { RULE_DOT, RULE_DOT_BROWSER, RULE_PIXEL } batch_rule;
 
 /* isk_draw_pixels, in blocks of PIXEL_BLOCK points: a first pass
  * transforms each point and finds its pixel (prefetching it: a random
@@ -27,14 +27,14 @@ typedef enum batch_rule { RULE_DOT, RULE_DOT_BROWSER, RULE_PIXEL } batch_rule;
  * isk__px_lut(d, t, 255, mode) is isk__px(d, col, mode) (div255(a*255) = a). */
 #define PIXEL_BLOCK 64
 
-static ISK__INLINE void run_pixels(const isk_canvas *c, const isk_view *v, size_t n, const double *x,
-                                   const double *y, isk_color col, int camera, isk_blend mode)
+static ISK__INLINE void run_pixels(const isk_canvas *c, int r0, int r1, const isk_view *v, size_t n,
+                                   const double *x, const double *y, isk_color col, int camera, isk_blend mode)
 {
     /* isk_view_to_screen: camera  X = w/2 + a*(x + tx),  Y = h/2 - a*(y + ty);
      *                     window  X = sx*x + px,          Y = sy*y + py. */
     const double hw = v->width / 2.0, hh = v->height / 2.0, a = v->a, tx = v->tx, ty = v->ty;
     const double sx = v->sx, sy = v->sy, px = v->px, py = v->py;
-    const double W = c->width, H = c->height;
+    const double W = c->width, Y0 = r0, Y1 = r1;
     const size_t stride = c->stride;
     isk__cov_lut t;
     isk__cov_lut_entry(&t, col, 255);
@@ -51,7 +51,7 @@ static ISK__INLINE void run_pixels(const isk_canvas *c, const isk_view *v, size_
                 X = sx * x[i0 + i] + px;
                 Y = sy * y[i0 + i] + py;
             }
-            if (X >= 0 && Y >= 0 && X < W && Y < H) {
+            if (X >= 0 && Y >= Y0 && X < W && Y < Y1) {
                 off[k] = (size_t)(int)Y * stride + (size_t)(int)X * 4u;
 #if defined(__GNUC__)
                 __builtin_prefetch(c->pixels + off[k], 1);
@@ -84,13 +84,15 @@ typedef struct dot_block {
     uint8_t fast[BLOCK];
 } dot_block;
 
-typedef void (*weights_fn)(dot_block *b, int m, double W1, double H1);
+/* fast[k]: the point's whole 2x2 block lies on the canvas columns and on
+ * the rows [Y0, H1 + 1] (Y0 >= 0). */
+typedef void (*weights_fn)(dot_block *b, int m, double W1, double Y0, double H1);
 
-static ISK__INLINE void weight_one(dot_block *b, int k, double W1, double H1)
+static ISK__INLINE void weight_one(dot_block *b, int k, double W1, double Y0, double H1)
 {
     double X = b->x[k], Y = b->y[k];
     /* the whole 2x2 block on the canvas: floor(X) in [0, width-2] */
-    b->fast[k] = X >= 0.0 && X < W1 && Y >= 0.0 && Y < H1;
+    b->fast[k] = X >= 0.0 && X < W1 && Y >= Y0 && Y < H1;
     if (!b->fast[k])
         return;
     int ix = (int)X, iy = (int)Y; /* >= 0: truncation is floor */
@@ -102,25 +104,25 @@ static ISK__INLINE void weight_one(dot_block *b, int k, double W1, double H1)
         b->w[k][q] = (uint8_t)w[q];
 }
 
-static void weights_scalar(dot_block *b, int m, double W1, double H1)
+static void weights_scalar(dot_block *b, int m, double W1, double Y0, double H1)
 {
     for (int k = 0; k < m; k++)
-        weight_one(b, k, W1, H1);
+        weight_one(b, k, W1, Y0, H1);
 }
 
 #if ISK__SPAN_AVX2
 /* weights_scalar for 4 points a step.  Each lane does the scalar code's
  * operations: products left to right, floors by truncation of values
  * >= 0, the rank selection as 0/1 doubles (small integers, exact). */
-static ISK__AVX2_FN void weights_avx2(dot_block *b, int m, double W1, double H1)
+static ISK__AVX2_FN void weights_avx2(dot_block *b, int m, double W1, double Y0, double H1)
 {
     const __m256d zero = _mm256_setzero_pd(), one = _mm256_set1_pd(1.0), k255 = _mm256_set1_pd(255.0);
-    const __m256d vW1 = _mm256_set1_pd(W1), vH1 = _mm256_set1_pd(H1);
+    const __m256d vW1 = _mm256_set1_pd(W1), vY0 = _mm256_set1_pd(Y0), vH1 = _mm256_set1_pd(H1);
     int k = 0;
     for (; k + 4 <= m; k += 4) {
         __m256d X = _mm256_loadu_pd(b->x + k), Y = _mm256_loadu_pd(b->y + k);
         __m256d ok = _mm256_and_pd(_mm256_and_pd(_mm256_cmp_pd(X, zero, _CMP_GE_OQ), _mm256_cmp_pd(X, vW1, _CMP_LT_OQ)),
-                                   _mm256_and_pd(_mm256_cmp_pd(Y, zero, _CMP_GE_OQ), _mm256_cmp_pd(Y, vH1, _CMP_LT_OQ)));
+                                   _mm256_and_pd(_mm256_cmp_pd(Y, vY0, _CMP_GE_OQ), _mm256_cmp_pd(Y, vH1, _CMP_LT_OQ)));
         int okbits = _mm256_movemask_pd(ok);
         for (int q = 0; q < 4; q++)
             b->fast[k + q] = (uint8_t)((okbits >> q) & 1);
@@ -159,12 +161,12 @@ static ISK__AVX2_FN void weights_avx2(dot_block *b, int m, double W1, double H1)
         _mm_storeu_si128((__m128i *)(void *)b->w[k], bytes);
     }
     for (; k < m; k++)
-        weight_one(b, k, W1, H1);
+        weight_one(b, k, W1, Y0, H1);
 }
 #endif
 
 /* The browser rule's weights (integer arithmetic, already cheap). */
-static void weights_browser(dot_block *b, int m, double W1, double H1)
+static void weights_browser(dot_block *b, int m, double W1, double Y0, double H1)
 {
     for (int k = 0; k < m; k++) {
         double X = b->x[k], Y = b->y[k];
@@ -172,8 +174,8 @@ static void weights_browser(dot_block *b, int m, double W1, double H1)
         uint32_t w[4];
         /* isk__dot_browser's range test, then its weights; fast when the
          * 2x2 block is wholly on the canvas */
-        b->fast[k] = X > -2.0 && X < W1 + 2.0 && Y > -2.0 && Y < H1 + 2.0 &&
-                     isk__dot_weights_browser(X, Y, &ix, &iy, w) && ix >= 0 && ix < W1 && iy >= 0 && iy < H1;
+        b->fast[k] = X > -2.0 && X < W1 + 2.0 && Y > Y0 - 2.0 && Y < H1 + 2.0 &&
+                     isk__dot_weights_browser(X, Y, &ix, &iy, w) && ix >= 0 && ix < W1 && iy >= Y0 && iy < H1;
         if (!b->fast[k])
             continue;
         b->ix[k] = ix;
@@ -222,38 +224,45 @@ static ISK__INLINE void px2(uint8_t *p, isk_color col, const isk__cov_lut *lut, 
     isk__px_w(p + 4, col, lut, wb, mode);
 }
 
-static ISK__INLINE void run_dots_blocked(const isk_canvas *c, const isk_view *v, size_t n, const double *x,
-                                         const double *y, isk_color col, const isk__cov_lut *lut, int camera,
-                                         int browser, isk_blend mode)
+static ISK__INLINE void run_dots_blocked(const isk_canvas *c, int r0, int r1, const isk_view *v, size_t n,
+                                         const double *x, const double *y, isk_color col, const isk__cov_lut *lut,
+                                         int camera, int browser, isk_blend mode)
 {
     const double hw = v->width / 2.0, hh = v->height / 2.0, a = v->a, tx = v->tx, ty = v->ty;
     const double sx = v->sx, sy = v->sy, px = v->px, py = v->py;
-    const double W1 = c->width - 1.0, H1 = c->height - 1.0;
+    const double W1 = c->width - 1.0, Y0 = r0, H1 = r1 - 1.0;
+    /* A point whose dot cannot touch the rows [r0, r1) is dropped before
+     * anything else is computed for it: the single-dot kernels' own row
+     * test (so dropping it changes nothing), and on a band of a threaded
+     * draw most points are someone else's. */
+    const double lo = browser ? Y0 - 2.0 : Y0 - 1.0, hi = browser ? r1 + 1.0 : (double)r1;
     const size_t stride = c->stride;
     uint8_t *const pixels = c->pixels;
     const weights_fn weights = pick_weights(browser);
     dot_block b;
     for (size_t i0 = 0; i0 < n; i0 += BLOCK) {
         const int m = n - i0 < BLOCK ? (int)(n - i0) : BLOCK;
+        int kept = 0;
         for (int k = 0; k < m; k++) {
-            if (camera) {
-                b.x[k] = hw + a * (x[i0 + k] + tx);
-                b.y[k] = hh - a * (y[i0 + k] + ty);
-            } else {
-                b.x[k] = sx * x[i0 + k] + px;
-                b.y[k] = sy * y[i0 + k] + py;
-            }
+            const double Y = camera ? hh - a * (y[i0 + k] + ty) : sy * y[i0 + k] + py;
+            b.y[kept] = Y;
+            b.ix[kept] = k; /* the point's place in the block, until the weights overwrite it */
+            kept += Y > lo && Y < hi;
         }
-        weights(&b, m, W1, H1);
+        for (int k = 0; k < kept; k++) {
+            const double xi = x[i0 + (size_t)b.ix[k]];
+            b.x[k] = camera ? hw + a * (xi + tx) : sx * xi + px;
+        }
+        weights(&b, kept, W1, Y0, H1);
 #if defined(__GNUC__)
-        for (int k = 0; k < m; k++)
+        for (int k = 0; k < kept; k++)
             if (b.fast[k]) {
                 const uint8_t *q = pixels + (size_t)b.iy[k] * stride + (size_t)b.ix[k] * 4u;
                 __builtin_prefetch(q, 1);
                 __builtin_prefetch(q + stride, 1);
             }
 #endif
-        for (int k = 0; k < m; k++) {
+        for (int k = 0; k < kept; k++) {
             if (b.fast[k]) {
                 uint8_t *p = pixels + (size_t)b.iy[k] * stride + (size_t)b.ix[k] * 4u;
                 if (lut) {
@@ -266,82 +275,97 @@ static ISK__INLINE void run_dots_blocked(const isk_canvas *c, const isk_view *v,
                     isk__px_cov(p + stride + 4, col, b.w[k][3], mode);
                 }
             } else if (browser) {
-                isk__dot_browser(c, b.x[k], b.y[k], col, lut, mode);
+                isk__dot_browser_rows(c, r0, r1, b.x[k], b.y[k], col, lut, mode);
             } else {
-                isk__dot(c, b.x[k], b.y[k], col, lut, mode);
+                isk__dot_rows(c, r0, r1, b.x[k], b.y[k], col, lut, mode);
             }
         }
     }
 }
 
-static ISK__INLINE void run_kind(const isk_canvas *c, const isk_view *v, size_t n, const double *x, const double *y,
-                                 isk_color col, const isk__cov_lut *lut, batch_rule rule, isk_blend mode)
+static ISK__INLINE void run_kind(const isk_canvas *c, int r0, int r1, const isk_view *v, size_t n, const double *x,
+                                 const double *y, isk_color col, const isk__cov_lut *lut, isk__batch_rule rule,
+                                 isk_blend mode)
 {
-    if (rule == RULE_DOT && v->kind == ISK_VIEW_CAMERA)
-        run_dots_blocked(c, v, n, x, y, col, lut, 1, 0, mode);
-    else if (rule == RULE_DOT)
-        run_dots_blocked(c, v, n, x, y, col, lut, 0, 0, mode);
-    else if (rule == RULE_DOT_BROWSER && v->kind == ISK_VIEW_CAMERA)
-        run_dots_blocked(c, v, n, x, y, col, lut, 1, 1, mode);
-    else if (rule == RULE_DOT_BROWSER)
-        run_dots_blocked(c, v, n, x, y, col, lut, 0, 1, mode);
+    if (rule == ISK__BATCH_DOT && v->kind == ISK_VIEW_CAMERA)
+        run_dots_blocked(c, r0, r1, v, n, x, y, col, lut, 1, 0, mode);
+    else if (rule == ISK__BATCH_DOT)
+        run_dots_blocked(c, r0, r1, v, n, x, y, col, lut, 0, 0, mode);
+    else if (rule == ISK__BATCH_DOT_BROWSER && v->kind == ISK_VIEW_CAMERA)
+        run_dots_blocked(c, r0, r1, v, n, x, y, col, lut, 1, 1, mode);
+    else if (rule == ISK__BATCH_DOT_BROWSER)
+        run_dots_blocked(c, r0, r1, v, n, x, y, col, lut, 0, 1, mode);
     else if (v->kind == ISK_VIEW_CAMERA)
-        run_pixels(c, v, n, x, y, col, 1, mode);
+        run_pixels(c, r0, r1, v, n, x, y, col, 1, mode);
     else
-        run_pixels(c, v, n, x, y, col, 0, mode);
+        run_pixels(c, r0, r1, v, n, x, y, col, 0, mode);
 }
 
 /* Batches this short skip the 256-entry table: building it would cost
  * more than it saves. */
 #define LUT_MIN_BATCH 64
 
-static ISK__INLINE void run_rule(const isk_canvas *c, const isk_view *v, size_t n, const double *x, const double *y,
-                                 isk_color col, batch_rule rule, isk_blend mode)
+static ISK__INLINE void run_rule(const isk_canvas *c, int r0, int r1, const isk_view *v, size_t n, const double *x,
+                                 const double *y, isk_color col, isk__batch_rule rule, isk_blend mode)
 {
     isk__cov_lut lut;
     switch (rule) {
-    case RULE_DOT:
-    case RULE_DOT_BROWSER:
+    case ISK__BATCH_DOT:
+    case ISK__BATCH_DOT_BROWSER:
         if (n >= LUT_MIN_BATCH) {
             isk__cov_lut_init(&lut, col);
-            if (rule == RULE_DOT)
-                run_kind(c, v, n, x, y, col, &lut, RULE_DOT, mode);
+            if (rule == ISK__BATCH_DOT)
+                run_kind(c, r0, r1, v, n, x, y, col, &lut, ISK__BATCH_DOT, mode);
             else
-                run_kind(c, v, n, x, y, col, &lut, RULE_DOT_BROWSER, mode);
-        } else if (rule == RULE_DOT) {
-            run_kind(c, v, n, x, y, col, NULL, RULE_DOT, mode);
+                run_kind(c, r0, r1, v, n, x, y, col, &lut, ISK__BATCH_DOT_BROWSER, mode);
+        } else if (rule == ISK__BATCH_DOT) {
+            run_kind(c, r0, r1, v, n, x, y, col, NULL, ISK__BATCH_DOT, mode);
         } else {
-            run_kind(c, v, n, x, y, col, NULL, RULE_DOT_BROWSER, mode);
+            run_kind(c, r0, r1, v, n, x, y, col, NULL, ISK__BATCH_DOT_BROWSER, mode);
         }
         break;
-    case RULE_PIXEL:
-        run_kind(c, v, n, x, y, col, NULL, RULE_PIXEL, mode);
+    case ISK__BATCH_PIXEL:
+        run_kind(c, r0, r1, v, n, x, y, col, NULL, ISK__BATCH_PIXEL, mode);
+        break;
+    default:
         break;
     }
 }
 
-static void draw_batch(isk_canvas *c, const isk_view *v, size_t n, const double *x, const double *y,
-                       isk_color col, isk_blend mode, batch_rule rule)
+void isk__draw_batch_rows(isk_canvas *c, const isk_view *v, size_t n, const double *x, const double *y,
+                          isk_color col, isk_blend mode, isk__batch_rule rule, int r0, int r1)
 {
     if (!c || !c->pixels || !v || !x || !y || n == 0)
         return;
-    ISK__BLEND_DISPATCH(mode, run_rule, c, v, n, x, y, col, rule);
+    if (r0 < 0)
+        r0 = 0;
+    if (r1 > c->height)
+        r1 = c->height;
+    if (r0 >= r1)
+        return;
+    ISK__BLEND_DISPATCH(mode, run_rule, c, r0, r1, v, n, x, y, col, rule);
+}
+
+static void draw_batch(isk_canvas *c, const isk_view *v, size_t n, const double *x, const double *y,
+                       isk_color col, isk_blend mode, isk__batch_rule rule)
+{
+    isk__draw_batch_rows(c, v, n, x, y, col, mode, rule, 0, c ? c->height : 0);
 }
 
 void isk_draw_dots(isk_canvas *c, const isk_view *v, size_t n, const double *x, const double *y,
                    isk_color color, isk_blend mode)
 {
-    draw_batch(c, v, n, x, y, color, mode, RULE_DOT);
+    draw_batch(c, v, n, x, y, color, mode, ISK__BATCH_DOT);
 }
 
 void isk_draw_dots_browser(isk_canvas *c, const isk_view *v, size_t n, const double *x, const double *y,
                            isk_color color, isk_blend mode)
 {
-    draw_batch(c, v, n, x, y, color, mode, RULE_DOT_BROWSER);
+    draw_batch(c, v, n, x, y, color, mode, ISK__BATCH_DOT_BROWSER);
 }
 
 void isk_draw_pixels(isk_canvas *c, const isk_view *v, size_t n, const double *x, const double *y,
                      isk_color color, isk_blend mode)
 {
-    draw_batch(c, v, n, x, y, color, mode, RULE_PIXEL);
+    draw_batch(c, v, n, x, y, color, mode, ISK__BATCH_PIXEL);
 }

@@ -162,6 +162,21 @@ int main(int argc, char **argv)
                "spread = 40\nspeed_min = 5\nspeed_max = 9\nforces = gravity\ndeflectors = floor\n"
                "draw = sprite\nsize = 0.3\nblend = add\ncolor_over_life = 0:white, 1:#ff400000\n",
                "big", quick ? 10 : 40);
+    /* Every draw cut into bands: browser dots, pixels and sprites (one
+     * colour, and sized by a ramp), over and add, on more rows than
+     * particles' worth of bands. */
+    scene_text("[scene]\nwidth = 160\nheight = 120\n"
+               "[force gravity]\ng = 9.81\n"
+               "[emitter a]\nsource = explosion\nexplosion = uniform\ncount = 20000\nlimit = 20000\n"
+               "forces = gravity\ndraw = dot-browser\ncolor = #ff8040c0\n"
+               "[emitter b]\nsource = explosion\nexplosion = gauss\ncount = 20000\nlimit = 20000\n"
+               "draw = pixel\nblend = over\ncolor = #40ff80a0\n"
+               "[emitter c]\nsource = explosion\nexplosion = ring\ncount = 20000\nlimit = 20000\n"
+               "draw = sprite\nsize = 0.4\nblend = add\ncolor = #2040ff80\n"
+               "[emitter d]\nsource = stream\nrate = 30000\nlife = 1\nlaunch = cone\nangle = 90\n"
+               "spread = 60\nspeed_min = 2\nspeed_max = 6\nforces = gravity\ndraw = sprite\nsize = 0.5\n"
+               "blend = over\nsize_over_life = 0:1, 1:0.2\n",
+               "draws", quick ? 10 : 40);
     /* An order-dependent list: a potential that switches itself off. */
     scene_text("[force trap]\nkind = potential\nk = 80\nposition = 0, 0\nmax_distance = 0.2\n"
                "[emitter layer]\nsource = layer\ncount = 20000\nlimit = 20000\nrect = -5, 5, -5, 5\n"
