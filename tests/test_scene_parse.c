@@ -379,8 +379,8 @@ Test(scene_errors, numbers_and_ranges)
                "t.ini:2: [emitter p] position: expected 2 numbers \"x, y\": item 2 is not a number: \"x\"");
     load_fails("[emitter p]\nsource = explosion\ncount = 0\n",
                "t.ini:3: [emitter p] count: must be 1..10000 (raise limit for more)");
-    load_fails("[emitter p]\nsource = stream\ncount = 4000001\n",
-               "t.ini:3: [emitter p] count: expected a whole number between 0 and 4000000, got \"4000001\"");
+    load_fails("[emitter p]\nsource = stream\ncount = 268435457\n",
+               "t.ini:3: [emitter p] count: expected a whole number between 0 and 268435456, got \"268435457\"");
     load_fails("[scene]\nseed = -1\n",
                "t.ini:2: [scene] seed: expected a whole number between 0 and 18446744073709551615, got \"-1\"");
     load_fails("[emitter p]\nosc_omega = 2, 1\n", "t.ini:2: [emitter p] osc_omega: min (2) is greater than max (1)");

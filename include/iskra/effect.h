@@ -70,7 +70,9 @@ extern "C" {
 #define ISK_EFFECT_MAX_DEFLECTORS 256
 #define ISK_EFFECT_MAX_EMITTERS 64
 #define ISK_EFFECT_MAX_DRAWINGS 64
-#define ISK_EFFECT_MAX_PARTICLES 4000000u /* per emitter, a sanity bound */
+/* Per emitter: the store's own bound (2^28); what memory allows is the
+ * memory budget's to say (max_memory, isk_effect_def_memory). */
+#define ISK_EFFECT_MAX_PARTICLES 268435456u
 /* The memory an effect may need at its fullest unless isk_effect_def.max_memory says
  * otherwise: 4 GiB. */
 #define ISK_EFFECT_DEFAULT_MAX_MEMORY ((size_t)4 << 30)

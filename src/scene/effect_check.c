@@ -308,9 +308,6 @@ isk_status fx_check_def(const isk_effect_def *d, fx_report *r)
         return structure_fails(d, r, ISK_ERR_NULL, "a count is set but its array is NULL");
     if (d->threads < 0 || d->threads > 256)
         return structure_fails(d, r, ISK_ERR_RANGE, "threads must be 0 (the default) .. 256");
-    isk_status ms = memory_fits(d, r);
-    if (ms != ISK_OK)
-        return ms;
     for (int s = 0; s < ISK_SECTION_COUNT; s++) {
         isk_status st = unique_names(d, (isk_section_kind)s, r);
         for (int i = 0; st == ISK_OK && i < fx_section_items(d, (isk_section_kind)s); i++)
@@ -318,7 +315,8 @@ isk_status fx_check_def(const isk_effect_def *d, fx_report *r)
         if (st != ISK_OK)
             return st;
     }
-    return ISK_OK;
+    /* last: a value out of its key's range is reported by its key first */
+    return memory_fits(d, r);
 }
 
 /* ---- isk_effect_create's reporter ---------------------------------------------- */
