@@ -60,27 +60,21 @@ static void place_cuts(const isk_effect *e, const fx_group *g, const isk_canvas 
     }
 }
 
-isk_status fx_render_group(isk_effect *e, isk_canvas *c, fx_group *g)
+isk_status fx_draw_bands(isk_effect *e, isk_canvas *c, fx_group *g, const fx_band *whole)
 {
-    fx_band whole = {.r0 = 0, .r1 = c->height};
-    if (g->def->draw == ISK_DRAW_SPRITE) {
-        isk_status s = fx_prepare_sprites(e, g, &whole);
-        if (s != ISK_OK)
-            return s;
-    }
-    const int threads = isk_effect_threads(e);
-    if (threads < 2 || g->store.count < FX_BAND_MIN_PARTICLES || !fx_band_ok(g) || c->height < 2 * threads)
-        return g->draw(e, c, g, &whole);
+    const int threads = e->pool ? isk_pool_threads(e->pool) : 1;
+    if (threads < 2 || g->store.count < FX_BAND_MIN_PARTICLES || c->height < 2 * threads)
+        return g->draw(e, c, g, whole);
     band_job *j = malloc(sizeof *j);
     if (!j) /* the draw itself needs no memory: do it on one thread */
-        return g->draw(e, c, g, &whole);
+        return g->draw(e, c, g, whole);
     j->e = e;
     j->c = c;
     j->g = g;
     int cut[ISK_POOL_MAX_THREADS + 1];
     place_cuts(e, g, c, threads, cut);
     for (int k = 0; k < threads; k++) {
-        j->band[k] = whole;
+        j->band[k] = *whole;
         j->band[k].r0 = cut[k];
         j->band[k].r1 = cut[k + 1];
     }

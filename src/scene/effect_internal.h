@@ -154,12 +154,10 @@ extern const fx_step_kind fx_step_spawn;      /* substep end: births in (t0, t0 
 /* effect_render.c */
 isk_status fx_render(isk_effect *e, isk_canvas *c);
 fx_draw_fn fx_choose_draw(const fx_group *g);
-/* 1 when the group's draw can be cut into bands of rows. */
-int fx_band_ok(const fx_group *g);
-/* Bakes every sprite a sprite group can need into b->sprite. */
-isk_status fx_prepare_sprites(isk_effect *e, fx_group *g, fx_band *b);
-/* effect_bands.c: a group's draw, on the effect's threads when it is big. */
-isk_status fx_render_group(isk_effect *e, isk_canvas *c, fx_group *g);
+/* effect_bands.c: g->draw over the canvas, in bands of rows on the
+ * effect's threads when the group is big (whole: the band of the canvas,
+ * with anything prepared for the draw). */
+isk_status fx_draw_bands(isk_effect *e, isk_canvas *c, fx_group *g, const fx_band *whole);
 isk_status fx_bake_ramps(fx_group *g, isk_error *err);
 void fx_free_ramps(fx_group *g);
 

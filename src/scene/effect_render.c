@@ -227,7 +227,7 @@ static int sprite_px(const fx_group *g, double scale, double mult)
  * multipliers a particle can have).  The bands then only read the table;
  * the cache is never touched from two threads.  ISK_ERR_FULL when the
  * sizes do not fit the cache (the draw then runs whole, on one thread). */
-isk_status fx_prepare_sprites(isk_effect *e, fx_group *g, fx_band *b)
+static isk_status prepare_sprites(isk_effect *e, fx_group *g, fx_band *b)
 {
     const int tinted = g->has_color_ramp || g->has_alpha_ramp || g->store.color;
     const isk_color bake_col = tinted ? ISK_WHITE : g->def->color;
@@ -255,7 +255,7 @@ isk_status fx_prepare_sprites(isk_effect *e, fx_group *g, fx_band *b)
  * particle (ramps), one mask per size baked in white and drawn tinted, so a
  * ramp of a thousand colours bakes nothing more.  Both give
  * isk_blend_pixel_cov's bytes exactly.  A size ramp gives each particle its
- * own whole-pixel size (the sprites fx_prepare_sprites baked). */
+ * own whole-pixel size (the sprites prepare_sprites baked). */
 static isk_status draw_sprites(isk_effect *e, isk_canvas *c, fx_group *g, const fx_band *b)
 {
     const isk_particles *p = &g->store;
@@ -295,9 +295,19 @@ fx_draw_fn fx_choose_draw(const fx_group *g)
     }
 }
 
-int fx_band_ok(const fx_group *g)
+/* A group's draw: on the effect's threads in bands when it can be cut
+ * (discs cannot: their kernel has no band form). */
+static isk_status render_group(isk_effect *e, isk_canvas *c, fx_group *g)
 {
-    return g->draw != draw_discs;
+    fx_band whole = {.r0 = 0, .r1 = c->height};
+    if (g->def->draw == ISK_DRAW_SPRITE) {
+        isk_status s = prepare_sprites(e, g, &whole);
+        if (s != ISK_OK)
+            return s;
+    }
+    if (g->draw == draw_discs)
+        return g->draw(e, c, g, &whole);
+    return fx_draw_bands(e, c, g, &whole);
 }
 
 isk_status fx_render(isk_effect *e, isk_canvas *c)
@@ -312,7 +322,7 @@ isk_status fx_render(isk_effect *e, isk_canvas *c)
     }
     for (int k = 0; k < e->ngroups; k++) {
         fx_group *g = &e->groups[e->draw_order[k]];
-        isk_status s = fx_render_group(e, c, g);
+        isk_status s = render_group(e, c, g);
         if (s != ISK_OK)
             return s;
     }
