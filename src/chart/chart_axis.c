@@ -17,7 +17,7 @@
 #include <stdio.h>
 #include <string.h>
 
-#include "chart/chart_internal.h"
+#include "chart/chart_axis.h"
 #include "iskra/text.h"
 
 #define TOL 1e-9           /* in units of a step or a decade */
