@@ -74,6 +74,9 @@ typedef struct play_chart_points {
     size_t n;
 } play_chart_points;
 
+/* Sizes of the window's parts (play_layout.c, play_panel.c), in units of the widget scale. */
+enum { CONSOLE_W = 190, SIDE_W = 230, BOTTOM_H = 150, CONSOLE_MIN_H = 300, MARGIN = 6, GAP = 4, LABEL_W = 86 };
+
 typedef struct player {
     /* the scene */
     scene_args args;

@@ -2,8 +2,10 @@
  * frames shown divided by the seconds since the start, six decimals) and,
  * with H, the HUD: the effective speed and whether real time is kept, the
  * simulated time and frame, what the frame's stepping costs; and a ring
- * around the selected potential. */
+ * around the selected potential.  Also the status line every part of the
+ * simulator reports through (play_say). */
 #include <math.h>
+#include <stdarg.h>
 #include <stdio.h>
 #include <string.h>
 
@@ -83,4 +85,14 @@ void play_hud_draw(player *p)
     const int s = p->ui.scale, y = 30 + 3 * s, w = isk_text_width(text, s), h = isk_text_height(text, s);
     isk_fill_rect(&v, 15 - 3 * s, y - 2 * s, w + 5 * s, h + 3 * s, isk_rgba(0, 0, 0, 170), ISK_BLEND_OVER);
     isk_draw_text(&v, 15, y, text, s, ISK_WHITE, ISK_BLEND_OVER);
+}
+
+/* The status line (under the panel's keys) and stderr say the same. */
+void play_say(player *p, const char *fmt, ...)
+{
+    va_list ap;
+    va_start(ap, fmt);
+    vsnprintf(p->status, sizeof p->status, fmt, ap);
+    va_end(ap);
+    fprintf(stderr, "iskra play: %s\n", p->status);
 }

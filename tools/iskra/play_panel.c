@@ -24,36 +24,6 @@
 #include "iskra/text.h"
 #include "play.h"
 
-/* Sizes in units of the widget scale. */
-enum { CONSOLE_W = 190, SIDE_W = 230, BOTTOM_H = 150, CONSOLE_MIN_H = 300, MARGIN = 6, GAP = 4, LABEL_W = 86 };
-
-void play_layout_size(int canvas_w, int canvas_h, int scale, int panel, int *w, int *h)
-{
-    if (!panel) {
-        *w = canvas_w;
-        *h = canvas_h;
-        return;
-    }
-    int top = canvas_h > CONSOLE_MIN_H * scale ? canvas_h : CONSOLE_MIN_H * scale;
-    *w = canvas_w + (CONSOLE_W + SIDE_W) * scale;
-    *h = top + BOTTOM_H * scale;
-}
-
-void play_layout_compute(player *p, int width, int height)
-{
-    const isk_effect_def *d = isk_effect_definition(p->fx);
-    const int s = p->ui.scale;
-    play_layout *l = &p->lay;
-    memset(l, 0, sizeof *l);
-    l->window = (isk_ui_rect){0, 0, width, height};
-    l->canvas = (isk_ui_rect){0, 0, d->width, d->height};
-    if (!p->panel)
-        return;
-    const int top = height - BOTTOM_H * s;
-    l->console = (isk_ui_rect){d->width, 0, CONSOLE_W * s, top};
-    l->side = (isk_ui_rect){d->width + CONSOLE_W * s, 0, SIDE_W * s, top};
-    l->bottom = (isk_ui_rect){0, top, width, BOTTOM_H * s};
-}
 
 /* ---- small helpers -------------------------------------------------------------------- */
 
@@ -233,19 +203,6 @@ static const char *mode_label(int mode)
     if (mode == PLAY_CLICK_NONE)
         return "none";
     return isk_explosion_names[mode];
-}
-
-void play_set_click_mode(player *p, int mode)
-{
-    if (mode < 0 || mode >= PLAY_CLICK_MODES)
-        return;
-    if (mode < ISK_EXPLOSION_COUNT) {
-        if (play_set(p, "click", "explosion", isk_explosion_names[mode]) || play_set(p, "click", "enabled", "true"))
-            return;
-    } else if (play_set(p, "click", "enabled", "false")) {
-        return;
-    }
-    p->click_mode = mode;
 }
 
 static void click_modes(player *p, isk_ui_rect r)
