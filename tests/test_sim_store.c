@@ -1,9 +1,11 @@
 /* Particle store: growth, O(1) removal, stable cull, iteration order, checks. */
 #include <criterion/criterion.h>
 #include <math.h>
+#include <stdlib.h>
 #include <stdint.h>
 
 #include "iskra/particles.h"
+#include "iskra/rng.h"
 
 Test(sim_store, grows_from_empty_and_keeps_insertion_order)
 {
@@ -117,6 +119,60 @@ Test(sim_store, every_column_moves_with_its_particle)
     }
     cr_assert_eq(p.x[1], 299); /* slot 0 (x = 0) died, so 299 moved up to slot 1 */
     isk_particles_free(&p);
+}
+
+/* The unordered cull keeps exactly the particles the stable cull keeps,
+ * each whole (every column), moves at most as many as died, and keeps NaN
+ * ages as live; random patterns of deaths, including none and all. */
+Test(sim_store, unordered_cull_keeps_the_same_particles_moving_few)
+{
+    isk_rng r;
+    isk_rng_seed(&r, 3);
+    for (int trial = 0; trial < 400; trial++) {
+        isk_particles a, b;
+        cr_assert_eq(isk_particles_init(&a, 0, ISK_PARTICLES_FLAGS), ISK_OK);
+        cr_assert_eq(isk_particles_init(&b, 0, ISK_PARTICLES_FLAGS), ISK_OK);
+        const int n = (int)isk_rng_below(&r, 200);
+        const uint32_t odds = isk_rng_below(&r, 5); /* 0: nobody dies, 4: everybody */
+        for (int i = 0; i < n; i++) {
+            for (int k = 0; k < 2; k++) {
+                isk_particles *p = k ? &b : &a;
+                cr_assert_eq(isk_particles_add(p, i, -i, 2 * i, 3 * i, 1 + i, NULL), ISK_OK);
+                p->size[i] = 0.5 * i;
+                p->color[i] = isk_rgba((uint8_t)i, 1, 2, 3);
+                p->osc_amp[i] = 10.0 * i;
+                p->osc_offset[i] = 13.0 * i;
+            }
+            const uint32_t u = isk_rng_below(&r, 4);
+            const double life = u < odds ? 0.5 : i % 11 == 0 ? NAN : INFINITY;
+            a.life[i] = b.life[i] = life;
+        }
+        isk_particles_age(&a, 0, a.count, 1.0);
+        isk_particles_age(&b, 0, b.count, 1.0);
+        size_t dead = isk_particles_cull(&a);
+        /* count the moves: a slot below the new count whose particle changed */
+        size_t removed = isk_particles_cull_unordered(&b);
+        cr_assert_eq(removed, dead);
+        cr_assert_eq(b.count, a.count);
+        size_t moved = 0;
+        char *seen = calloc((size_t)n + 1, 1);
+        for (size_t k = 0; k < b.count; k++) {
+            const double i = b.x[k];
+            const int m = (int)i;
+            moved += i != (double)k;
+            cr_assert(b.y[k] == -i && b.vx[k] == 2 * i && b.vy[k] == 3 * i && b.m[k] == 1 + i);
+            cr_assert(b.size[k] == 0.5 * i && b.color[k].r == (uint8_t)m && b.osc_amp[k] == 10 * i &&
+                      b.osc_offset[k] == 13 * i);
+            seen[m] = 1;
+        }
+        for (size_t k = 0; k < a.count; k++)
+            cr_assert(seen[(int)a.x[k]], "particle %g kept by the stable cull only", a.x[k]);
+        cr_assert_leq(moved, dead, "%zu moved for %zu dead", moved, dead);
+        free(seen);
+        isk_particles_free(&a);
+        isk_particles_free(&b);
+    }
+    cr_assert_eq(isk_particles_cull_unordered(NULL), 0u);
 }
 
 Test(sim_store, validates_inputs_without_partial_state)

@@ -101,6 +101,12 @@ void isk_particles_remove(isk_particles *p, size_t i);
  * returns how many were removed. */
 size_t isk_particles_cull(isk_particles *p);
 
+/* The same removal without keeping the order: each hole takes the last
+ * live particle, so at most as many particles move as died (a fire whose
+ * oldest die first would otherwise move every particle every frame).  For
+ * stores whose order nothing observes, e.g. drawn additively. */
+size_t isk_particles_cull_unordered(isk_particles *p);
+
 /* Adds dt to the ages of [begin, end), end clamped to the count (a stage;
  * the system runs it only when ageing is on). */
 void isk_particles_age(isk_particles *p, size_t begin, size_t end, double dt);

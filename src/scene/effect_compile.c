@@ -87,6 +87,10 @@ isk_status fx_compile(isk_effect *e, fx_group *g)
         g->parallel &= !(e->pots[f->pick[k]].max_dist > 0.0);
     for (int k = 0; k < g->ndefl; k++)
         g->parallel &= !(g->defl[k].probability > 0.0 && g->defl[k].probability < 1.0);
+    /* The dead may be replaced by the last live particles (moving only as
+     * many as died) when nothing sees the order: the stages (as for
+     * threads) and the drawing (saturating adds commute; no draw). */
+    g->cull_unordered = g->parallel && (em->draw == ISK_DRAW_NONE || em->blend == ISK_BLEND_ADD);
 
     if (walls && em->draw_before_bounce)
         g->frame_start[g->nframe_start++] = &fx_step_late_walls;

@@ -143,15 +143,17 @@ static isk_status run_cull(isk_effect *e, fx_group *g, double t0, double h)
     (void)e;
     (void)t0;
     (void)h;
-    isk_particles_cull(&g->store);
+    if (g->cull_unordered)
+        isk_particles_cull_unordered(&g->store);
+    else
+        isk_particles_cull(&g->store);
     return ISK_OK;
 }
 
 static void describe_cull(const isk_effect *e, const fx_group *g, FILE *out)
 {
     (void)e;
-    (void)g;
-    fprintf(out, "age >= life");
+    fprintf(out, "age >= life%s", g->cull_unordered ? " (the last live particles fill the holes: nothing sees the order)" : "");
 }
 
 const fx_step_kind fx_step_cull = {"cull", run_cull, describe_cull};

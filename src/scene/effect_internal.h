@@ -76,6 +76,7 @@ struct fx_group {
     int substeps;
     double const_ax, const_ay;     /* the constant part of the acceleration (thesis jitter) */
     int parallel;                  /* its pipeline's blocks are independent: threads may share them */
+    int cull_unordered;            /* the order of its particles is seen by nothing (effect_compile.c) */
     fx_draw_fn draw;
 
     /* explosions (effect_group.c) */

@@ -314,6 +314,40 @@ size_t isk_particles_cull(isk_particles *p)
     return n - w;
 }
 
+/* Moves particle r into slot w, every present column. */
+static void move_row(isk_particles *p, size_t w, size_t r)
+{
+    for (int k = 0; k < NCOLUMNS; k++) {
+        unsigned char *a = col_get(p, &columns[k]);
+        size_t e = columns[k].elem;
+        if (a)
+            memcpy(a + w * e, a + r * e, e);
+    }
+}
+
+size_t isk_particles_cull_unordered(isk_particles *p)
+{
+    if (!p)
+        return 0;
+    const double *age = p->age, *life = p->life;
+    size_t n = p->count, i = 0;
+    while (i < n) {
+        if (!(age[i] >= life[i])) { /* NaN ages and lives are kept, as a live particle's */
+            i++;
+            continue;
+        }
+        while (n > i + 1 && age[n - 1] >= life[n - 1])
+            n--; /* dead at the end: dropped where they lie */
+        if (n > i + 1)
+            move_row(p, i, n - 1);
+        n--;
+        i++;
+    }
+    size_t removed = p->count - n;
+    p->count = n;
+    return removed;
+}
+
 void isk_particles_age(isk_particles *p, size_t begin, size_t end, double dt)
 {
     if (!p)
