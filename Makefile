@@ -227,6 +227,9 @@ $(BUILD)/gen/examples.txt: FORCE
 	@mkdir -p $(dir $@)
 	@printf '%s\n' $(EX_SRC:examples/%.c=%) > $@.tmp
 	@cmp -s $@.tmp $@ || mv $@.tmp $@; rm -f $@.tmp
+# Phony, or .SECONDARY would let it count as a missing intermediate file
+# that forces nothing (a new example would never reach examples.txt).
+.PHONY: FORCE
 FORCE:
 
 # ---- built-in scenes --------------------------------------------------------
