@@ -232,6 +232,16 @@ $(BUILD)/gen/examples.txt: FORCE
 .PHONY: FORCE
 FORCE:
 
+# The test suite's compiler and flags for tests/header_examples.sh, which
+# builds every public header's usage example as a user's program: the
+# public include path only, warnings always errors, linked like the tests.
+$(BUILD)/gen/header_examples.env: FORCE
+	@mkdir -p $(dir $@)
+	@printf "EX_CC='%s'\nEX_CFLAGS='%s'\nEX_LIBS='%s'\nEX_SDL_LIBS='%s'\n" "$(CC)" \
+	    "$(filter-out -Isrc -Werror,$(ALL_CFLAGS)) -Werror" "$(LIBA) $(LDFLAGS) $(LIBS_CORE)" \
+	    "$(SDLA) $(LIBA) $(LDFLAGS) $(LIBS_SDL) $(LIBS_CORE)" > $@.tmp
+	@cmp -s $@.tmp $@ || mv $@.tmp $@; rm -f $@.tmp
+
 # ---- built-in scenes --------------------------------------------------------
 # scenes/*.ini are embedded into libiskra (isk_scene_builtin_*, `iskra list`):
 # the generated header changes only when a scene does, and then the object,
@@ -249,7 +259,7 @@ $(BUILD)/obj/src/scene/scene_builtin.o: ALL_CFLAGS += -I$(BUILD)/gen
 test: deps
 	@$(MAKE) --no-print-directory test-run
 
-test-run: all $(BUILD)/gen/examples.txt
+test-run: all $(BUILD)/gen/examples.txt $(BUILD)/gen/header_examples.env
 	@BUILD=$(BUILD) sh tests/run_all.sh
 
 run: deps
