@@ -227,7 +227,20 @@ $(BUILD)/gen/examples.txt: FORCE
 	@mkdir -p $(dir $@)
 	@printf '%s\n' $(EX_SRC:examples/%.c=%) > $@.tmp
 	@cmp -s $@.tmp $@ || mv $@.tmp $@; rm -f $@.tmp
+# Phony, or .SECONDARY would let it count as a missing intermediate file
+# that forces nothing (a new example would never reach examples.txt).
+.PHONY: FORCE
 FORCE:
+
+# The test suite's compiler and flags for tests/header_examples.sh, which
+# builds every public header's usage example as a user's program: the
+# public include path only, warnings always errors, linked like the tests.
+$(BUILD)/gen/header_examples.env: FORCE
+	@mkdir -p $(dir $@)
+	@printf "EX_CC='%s'\nEX_CFLAGS='%s'\nEX_LIBS='%s'\nEX_SDL_LIBS='%s'\n" "$(CC)" \
+	    "$(filter-out -Isrc -Werror,$(ALL_CFLAGS)) -Werror" "$(LIBA) $(LDFLAGS) $(LIBS_CORE)" \
+	    "$(SDLA) $(LIBA) $(LDFLAGS) $(LIBS_SDL) $(LIBS_CORE)" > $@.tmp
+	@cmp -s $@.tmp $@ || mv $@.tmp $@; rm -f $@.tmp
 
 # ---- built-in scenes --------------------------------------------------------
 # scenes/*.ini are embedded into libiskra (isk_scene_builtin_*, `iskra list`):
@@ -246,7 +259,7 @@ $(BUILD)/obj/src/scene/scene_builtin.o: ALL_CFLAGS += -I$(BUILD)/gen
 test: deps
 	@$(MAKE) --no-print-directory test-run
 
-test-run: all $(BUILD)/gen/examples.txt
+test-run: all $(BUILD)/gen/examples.txt $(BUILD)/gen/header_examples.env
 	@BUILD=$(BUILD) sh tests/run_all.sh
 
 run: deps

@@ -27,6 +27,26 @@
  * The SDL2 window lives in a separate library: #include "iskra/sdl.h" and
  * link libiskra-sdl (pkg-config iskra-sdl).  Every header can be used from
  * C++ (extern "C"; tests/cxx_link.cpp checks).
+ *
+ * Example: frame 120 of a built-in scene, written to a PNG:
+ *
+ *     isk_effect_def d;
+ *     isk_error err = {0};
+ *     if (isk_scene_load(&d, "fire_campfire", &err) != ISK_OK) {   // a file or a built-in scene
+ *         fprintf(stderr, "%s\n", err.message);
+ *         return 1;
+ *     }
+ *     isk_effect *fx = NULL;
+ *     isk_canvas c = {0};
+ *     int ok = isk_effect_create(&fx, &d, &err) == ISK_OK
+ *           && isk_canvas_init(&c, d.width, d.height) == ISK_OK
+ *           && isk_effect_run(fx, &c, 120) == ISK_OK
+ *           && isk_png_write(&c, "campfire.png", &err) == ISK_OK;
+ *     if (!ok) fprintf(stderr, "campfire: %s\n", err.message[0] ? err.message : "out of memory");
+ *     isk_canvas_free(&c);
+ *     isk_effect_destroy(fx);
+ *     isk_effect_def_free(&d);
+ *     return !ok;
  */
 #ifndef ISKRA_H
 #define ISKRA_H

@@ -55,6 +55,16 @@ if [ -x "$BUILD/tests/cxx_link" ] && [ -z "${ISKRA_TEST_FILTER:-}" ]; then
         echo "---- cxx_link ----"; cat "$log"
     fi
 fi
+# Every public header's usage example and docs/hello_iskra.c, built with
+# this build's compiler and flags and run (a header without one fails).
+if [ -z "${ISKRA_TEST_FILTER:-}" ]; then
+    if BUILD="$BUILD" sh tests/header_examples.sh >"$log" 2>&1; then
+        passed=$((passed + 1)); echo "ok   header_examples: $(tail -n 1 "$log" | sed 's/.*: //')"
+    else
+        failed=$((failed + 1)); bad_bins="$bad_bins header_examples"
+        echo "---- header_examples ----"; cat "$log"
+    fi
+fi
 # The install check (make install + a pkg-config build) runs once, on the
 # normal build only: a sanitized libiskra would need sanitized users.
 if [ "$BUILD" = build ] && [ -z "${ISKRA_TEST_FILTER:-}" ]; then

@@ -2,13 +2,29 @@
  * YUV4MPEG2 (what ffmpeg, mpv and VLC read) and raw RGBA frames (for a
  * pipe into ffmpeg or anything else).
  *
+ * Example: a disc growing for 60 frames, as an animated GIF:
+ *
+ *     isk_canvas c;
+ *     if (isk_canvas_init(&c, 120, 100) != ISK_OK) return 1;
+ *     isk_error err;
  *     isk_outfile o;                                   // iskra/outfile.h
- *     isk_outfile_open(&o, "out/fire.gif", &err);
- *     isk_anim_opts ao = {ISK_ANIM_GIF, 480, 400, 30.0};
+ *     if (isk_outfile_open(&o, "disc.gif", &err) != ISK_OK) {
+ *         fprintf(stderr, "%s\n", err.message);
+ *         return 1;
+ *     }
+ *     isk_anim_opts ao = {ISK_ANIM_GIF, c.width, c.height, 30.0};   // format, size, fps
  *     isk_anim *a;
- *     isk_anim_begin(&a, o.f, &ao, &err);
- *     for (...) { draw(&canvas); isk_anim_frame(a, &canvas, &err); }
- *     isk_anim_end(a, &err);                           // then isk_outfile_commit(&o, &err)
+ *     isk_status s = isk_anim_begin(&a, o.f, &ao, &err);
+ *     for (int i = 0; i < 60 && s == ISK_OK; i++) {
+ *         isk_canvas_fill(&c, ISK_BLACK);
+ *         isk_fill_circle_aa(&c, 60, 50, 0.75 * i, ISK_YELLOW, ISK_BLEND_OVER);
+ *         s = isk_anim_frame(a, &c, &err);
+ *     }
+ *     if (s == ISK_OK) s = isk_anim_end(a, &err); else isk_anim_abort(a);
+ *     if (s == ISK_OK) s = isk_outfile_commit(&o, &err); else isk_outfile_abort(&o);
+ *     if (s != ISK_OK) fprintf(stderr, "%s\n", err.message);
+ *     isk_canvas_free(&c);
+ *     return s != ISK_OK;
  *
  * The writer only writes to the stream it is given (a file, a pipe,
  * stdout) and never closes it.  Every frame has the size given at begin.

@@ -20,6 +20,16 @@
  * Anti-aliased primitives first scale the source alpha by the pixel's coverage
  * (0..255): sa' = div255(sa*coverage), then blend as above.  With REPLACE the
  * pixel gets the source colour and alpha sa'.  Coverage 0 leaves the pixel alone.
+ *
+ * Example: half-transparent blue on opaque red, in each mode:
+ *
+ *     isk_color blue = isk_rgba(0, 0, 255, 128);
+ *     for (int m = 0; m < ISK_BLEND_COUNT; m++) {
+ *         uint8_t px[4] = {255, 0, 0, 255};            // R, G, B, A
+ *         isk_blend mode = (isk_blend)m;
+ *         isk_blend_pixel(px, blue, mode);
+ *         printf("%-7s %3d %3d %3d %3d\n", isk_blend_name(mode), px[0], px[1], px[2], px[3]);
+ *     }   // replace 0 0 255 128,  over 127 0 128 255,  add 255 0 128 255
  */
 #ifndef ISKRA_BLEND_H
 #define ISKRA_BLEND_H

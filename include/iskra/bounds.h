@@ -35,10 +35,20 @@
  * examples draw BEFORE zarobi, its simulator AFTER (isk_system has
  * bounce_in_step; isk_system_bounce() runs the stage alone).
  *
+ * Example: a particle below the thesis's floor, then outside a sound box:
+ *
+ *     isk_particles store;
+ *     if (isk_particles_init(&store, 16, 0) != ISK_OK) return 1;
+ *     isk_status s = isk_particles_add(&store, 0, -10.5, 1, -3, 1.0, NULL);   // x, y, vx, vy, m
  *     isk_bounds b;
- *     isk_bounds_thesis(&b, -10, 10, -10, 10, ISK_SIDE_BOTTOM);   // floor only
- *     isk_bounds_apply(&b, &store, 0, store.count);
- *     isk_bounds_reflect(&b, 0, 10, 0, 10, ISK_SIDE_ALL, 0.0, 0.5);  // margin 0, c = 0.5
+ *     if (s == ISK_OK) s = isk_bounds_thesis(&b, -10, 10, -10, 10, ISK_SIDE_BOTTOM);  // floor only
+ *     if (s == ISK_OK) isk_bounds_apply(&b, &store, 0, store.count);           // y = -9.9, vy = 3
+ *     if (s == ISK_OK)                                                         // margin 0, c = 0.5
+ *         s = isk_bounds_reflect(&b, 0, 10, 0, 10, ISK_SIDE_ALL, 0.0, 0.5);
+ *     if (s == ISK_OK) isk_bounds_apply(&b, &store, 0, store.count);           // y = 0.5 * 9.9
+ *     printf("y = %g, vy = %g\n", store.y[0], store.vy[0]);                   // 4.95, 3
+ *     isk_particles_free(&store);
+ *     return s != ISK_OK;
  */
 #ifndef ISKRA_BOUNDS_H
 #define ISKRA_BOUNDS_H

@@ -4,10 +4,14 @@
  * first — the layout of PNG and of SDL_PIXELFORMAT_RGBA32, so a canvas can be
  * written or uploaded without conversion.
  *
+ * Example:
+ *
  *     isk_canvas c;
  *     if (isk_canvas_init(&c, 600, 600) != ISK_OK) return 1;   // owns memory
  *     isk_canvas_fill(&c, ISK_BLACK);
- *     ...draw...
+ *     isk_fill_rect(&c, 100, 100, 50, 50, ISK_YELLOW, ISK_BLEND_OVER);   // iskra/draw.h
+ *     isk_color p = isk_canvas_get(&c, 120, 120);              // 255 255 0 255
+ *     printf("%d %d %d %d\n", p.r, p.g, p.b, p.a);
  *     isk_canvas_free(&c);
  *
  * isk_canvas_wrap() draws into memory the caller owns (olive.c style);

@@ -6,6 +6,8 @@
  * fill an isk_chart (start from isk_chart_defaults), point it at your
  * series, draw it into any canvas, write the canvas with iskra/png.h.
  *
+ * Example:
+ *
  *     double t[] = {1e-9, 2e-9, 4e-9}, e[] = {1e-2, 1e-4, 1e-6};
  *     isk_chart_series s = {"rk4", t, e, 3, isk_chart_style_default(3)};
  *     isk_chart ch;
@@ -15,8 +17,16 @@
  *     ch.y_label = "max position error";
  *     ch.x_log = ch.y_log = 1;
  *     ch.series = &s;  ch.nseries = 1;
- *     isk_canvas c;  isk_canvas_init(&c, 800, 600);
- *     if (isk_chart_draw(&ch, &c) != ISK_OK) ...
+ *     isk_canvas c;
+ *     if (isk_canvas_init(&c, 800, 600) != ISK_OK) return 1;
+ *     isk_error err;
+ *     isk_status st = isk_chart_draw(&ch, &c);
+ *     if (st != ISK_OK)
+ *         fprintf(stderr, "chart: %s\n", isk_status_str(st));
+ *     else if ((st = isk_png_write(&c, "chart.png", &err)) != ISK_OK)
+ *         fprintf(stderr, "%s\n", err.message);
+ *     isk_canvas_free(&c);
+ *     return st != ISK_OK;
  *
  * Ranges: an axis whose min and max are both NaN (the default) fits the
  * data — every point that can be placed on both axes, wherever the other

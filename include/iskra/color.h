@@ -1,8 +1,11 @@
 /* iskra/color.h — the straight (non-premultiplied) RGBA8 colour every layer
  * shares: the rasterizer draws it, particles carry it, ramps bake it.
  *
+ * Example:
+ *
  *     isk_color c = isk_rgba(255, 128, 0, 255);   // opaque orange
  *     isk_color k = ISK_YELLOW;
+ *     printf("orange %d %d %d %d, yellow %d %d %d %d\n", c.r, c.g, c.b, c.a, k.r, k.g, k.b, k.a);
  *
  * A core type (no dependencies), so the simulation can hold colours without
  * knowing about canvases.  How colours combine is iskra/blend.h.

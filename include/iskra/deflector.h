@@ -3,13 +3,20 @@
  *
  * Call it after the integrator has moved the particles: it looks at each
  * particle's path from its old position to its new one, finds the first
- * segment the path crosses, and reacts.  Plain functions over SoA arrays:
+ * segment the path crosses, and reacts.  Plain functions over SoA arrays.
+ *
+ * Example: a particle whose step takes it through a floor bounces off it:
  *
  *     isk_deflector floor = isk_deflector_segment(-1, 0, 1, 0);
  *     floor.restitution = 0.5;                      // c (or epsilon)
- *     // ... integrate: x_old = x; x += vx*dt; ...
- *     isk_status st = isk_deflect(&floor, 1, x, y, vx, vy, x_old, y_old, n,
+ *     double x[1] = {0.5}, y[1] = {0.1}, vx[1] = {0}, vy[1] = {-12}, x_old[1], y_old[1];
+ *     double dt = 1.0 / 60;
+ *     x_old[0] = x[0];  y_old[0] = y[0];            // integrate: x_old = x; x += vx*dt
+ *     x[0] += vx[0] * dt;  y[0] += vy[0] * dt;      // y = -0.1, below the floor
+ *     isk_status st = isk_deflect(&floor, 1, x, y, vx, vy, x_old, y_old, 1,
  *                                 NULL, NULL, NULL);  // rng/killed/stats optional
+ *     printf("y = %g, vy = %g\n", y[0], vy[0]);     // above the floor again, moving up
+ *     return st != ISK_OK;
  *
  * Geometry (the fire thesis §5.8, made exact and robust):
  *   - Segment endpoints are put in a canonical order (lexicographic on

@@ -12,9 +12,15 @@
  * Nothing here allocates or fails, so nothing returns a status: bad geometry
  * simply draws nothing.
  *
+ * Example:
+ *
+ *     isk_canvas c;
+ *     if (isk_canvas_init(&c, 600, 600) != ISK_OK) return 1;
+ *     isk_canvas_fill(&c, ISK_WHITE);
  *     isk_fill_circle(&c, 300, 300, 40, ISK_YELLOW, ISK_BLEND_OVER);
  *     isk_stroke_line(&c, 175, 300, 325, 300, ISK_BLACK, ISK_BLEND_OVER);
  *     isk_draw_dot(&c, 180.4, 420.7, ISK_YELLOW, ISK_BLEND_OVER);
+ *     isk_canvas_free(&c);
  *
  * Aliased (1-pixel) primitives:
  *   isk_draw_pixel, isk_fill_rect    integer pixel coordinates (64-bit bounds

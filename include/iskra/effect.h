@@ -9,19 +9,27 @@
  * set the table's defaults, and isk_effect_create validates every field
  * against the same rows, with the parser's messages, then compiles:
  *
+ * Example:
+ *
  *     isk_effect_def d;
  *     isk_effect_def_init(&d);                  // defaults: 600x600, view -10..10, dt 1/60
  *     int g = isk_effect_def_add_force(&d, "gravity", ISK_FORCE_GRAVITY);
- *     d.forces[g].g = 9.81;
  *     isk_emitter_def *e = isk_effect_def_add_emitter(&d, "sparks");
+ *     if (g < 0 || !e) { isk_effect_def_free(&d); return 1; }   // out of memory
+ *     d.forces[g].g = 9.81;
  *     e->source = ISK_SOURCE_EXPLOSION; e->explosion = ISK_EXPLOSION_GAUSS; e->count = 1000;
  *     isk_emitter_use_force(e, g);
  *     isk_effect *fx;  isk_error err;
- *     if (isk_effect_create(&fx, &d, &err) != ISK_OK) { puts(err.message); ... }
+ *     isk_status s = isk_effect_create(&fx, &d, &err);
  *     isk_effect_def_free(&d);                  // the effect keeps its own copy
- *     for (int i = 0; i < 100; i++) isk_effect_step(fx);
- *     isk_effect_render(fx, &canvas);
+ *     if (s != ISK_OK) { fprintf(stderr, "%s\n", err.message); return 1; }
+ *     isk_canvas canvas;
+ *     s = isk_canvas_init(&canvas, 600, 600);    // the definition's width x height
+ *     for (int i = 0; i < 100 && s == ISK_OK; i++) s = isk_effect_step(fx);
+ *     if (s == ISK_OK) s = isk_effect_render(fx, &canvas);
+ *     isk_canvas_free(&canvas);
  *     isk_effect_destroy(fx);
+ *     return s != ISK_OK;
  *
  * Only the effects a scene calls for are simulated.  Each emitter's stage list
  * holds exactly what that emitter needs, in this order:

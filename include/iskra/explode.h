@@ -13,7 +13,16 @@
  * replayed, so the random emitters match the thesis in distribution and
  * arithmetic, not in bits.  The ring and the kick arithmetic are bit-exact.)
  *
- *     isk_explode_gauss(&store, &rng, 0, -3, 10000, ISK_EXPLODE_THESIS_LIMIT);
+ * Example: the thesis's Gauss explosion of 10 000 particles at (0, -3):
+ *
+ *     isk_particles store;
+ *     if (isk_particles_init(&store, 10000, 0) != ISK_OK) return 1;
+ *     isk_rng rng;
+ *     isk_rng_seed(&rng, 42);
+ *     isk_status s = isk_explode_gauss(&store, &rng, 0, -3, 10000, ISK_EXPLODE_THESIS_LIMIT);
+ *     printf("%zu particles, the first at speed (%g, %g)\n", store.count, store.vx[0], store.vy[0]);
+ *     isk_particles_free(&store);
+ *     return s != ISK_OK;
  *
  * Counts: 1 <= count <= limit, else ISK_ERR_RANGE (the thesis accepts 1..10000;
  * pass ISK_EXPLODE_THESIS_LIMIT for that, or a larger limit on purpose; limit 0

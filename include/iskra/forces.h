@@ -17,12 +17,17 @@
  * particle sitting exactly on a switched-off or k=0 potential (0*n/0); we
  * give 0.
  *
+ * Example: the forces on two particles, one of them 3 units from a potential:
+ *
  *     isk_potential pot;
  *     isk_potential_init(&pot, 800, isk_vec2_make(5, 5), +1);   // k, r, Q
  *     isk_potential_set_law(&pot, ISK_COULOMB_LAW_CODE, 4);     // P = 4: |F| = 800/d^3
  *     pot.min_dist = 0.5;  pot.max_dist = 0.1;
  *     isk_forces f = { .gravity = 9.81, .drag = 0.47, .pot = &pot, .npot = 1 };
- *     isk_forces_eval(&f, n, x, y, vx, vy, m, fx, fy, px, py, 1);
+ *     double x[2] = {5, 0}, y[2] = {2, 0}, vx[2] = {0, 1}, vy[2] = {0, 0}, m[2] = {1, 2};
+ *     double fx[2], fy[2], px[2], py[2];            // the forces; scratch for the potentials
+ *     isk_forces_eval(&f, 2, x, y, vx, vy, m, fx, fy, px, py, 1);
+ *     printf("F0 = (%g, %g), F1 = (%g, %g)\n", fx[0], fy[0], fx[1], fy[1]);
  *
  * Coulomb law (CoulombovPotencijal.F, thesis code):
  *     n = r_pot - r,  n.x *= x_mult,  d = |r_pot - r| (Euclidean, x_mult NOT applied)

@@ -25,12 +25,16 @@
  *     ceil(max slope / R) levels, max slope = max |dc|/dt over the stops in
  *     levels per unit t (tests/test_gradient.c checks both claims).
  *
+ * Example:
+ *
  *     isk_color_stop fire[3] = {{0.0, {255, 240, 160, 255}},
  *                               {0.3, {255, 140, 20, 220}},
  *                               {1.0, {80, 10, 0, 0}}};
  *     isk_color_gradient g;
- *     if (isk_color_gradient_bake(&g, fire, 3, ISK_GRADIENT_DEFAULT_RES) != ISK_OK) ...
- *     isk_color c = isk_color_gradient_at(&g, age / lifetime);
+ *     if (isk_color_gradient_bake(&g, fire, 3, ISK_GRADIENT_DEFAULT_RES) != ISK_OK) return 1;
+ *     double age = 0.3, lifetime = 2.0;
+ *     isk_color c = isk_color_gradient_at(&g, age / lifetime);   // half-way to the second stop
+ *     printf("%d %d %d %d\n", c.r, c.g, c.b, c.a);
  *     isk_color_gradient_free(&g);
  *
  * Scalar gradients work the same way with doubles (no rounding: a table read

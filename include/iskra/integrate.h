@@ -47,8 +47,19 @@
  * accumulators and RK4 stage copies stay in L1 cache: every stage is still a
  * tight loop, just over 256 particles at a time.
  *
+ * Example: one RK4 step of a thrown particle under gravity:
+ *
+ *     isk_particles store;
+ *     if (isk_particles_init(&store, 16, 0) != ISK_OK) return 1;
+ *     isk_status st = isk_particles_add(&store, 0, 0, 1, 5, 1.0, NULL);   // x, y, vx, vy, m
+ *     isk_forces forces = { .gravity = 9.81 };
+ *     double dt = 1.0 / 60;
  *     isk_scratch s;                               // 24 KiB, no allocation
- *     isk_integrate_range(ISK_INTEGRATE_RK4, &forces, &s, &store, 0, store.count, dt);
+ *     if (st == ISK_OK)
+ *         st = isk_integrate_range(ISK_INTEGRATE_RK4, &forces, &s, &store, 0, store.count, dt);
+ *     if (st == ISK_OK) printf("(%.6f, %.6f)\n", store.x[0], store.y[0]);
+ *     isk_particles_free(&store);
+ *     return st != ISK_OK;
  */
 #ifndef ISKRA_INTEGRATE_H
 #define ISKRA_INTEGRATE_H

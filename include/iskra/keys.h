@@ -9,11 +9,14 @@
  * tables of docs/scene-format.md (generated from here; a test fails when
  * they differ) and the simulator's panel.  Adding a key is adding a row.
  *
+ * Example:
+ *
  *     for (int i = 0; i < isk_key_count(); i++) {
  *         const isk_key *k = isk_key_at(i);
  *         printf("[%s] %s = %s  ; %s\n", isk_section_name(k->section), k->name, k->dflt, k->meaning);
  *     }
- *     const isk_key *rate = isk_key_find(ISK_SECTION_EMITTER, "rate");   // rate->max == 1e7
+ *     const isk_key *rate = isk_key_find(ISK_SECTION_EMITTER, "rate");   // NULL: no such key
+ *     if (rate) printf("rate: %g to %g\n", rate->min, rate->max);           // 0 to 1e+07
  *
  * A row's `offset` is the field's offsetof in the section's item struct:
  * isk_effect_def for [scene] and [view], isk_force_def, isk_deflector_def,

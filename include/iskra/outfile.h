@@ -1,11 +1,21 @@
 /* iskra/outfile.h — writing a file without ever destroying what it replaces.
  *
+ * Example:
+ *
  *     isk_outfile o;
  *     isk_error err;
- *     if (isk_outfile_open(&o, "out/anim.gif", &err) != ISK_OK) { ...err.message... }
- *     ...write to o.f (or hand it to isk_png_write_stream, isk_anim_begin)...
- *     if (failed) isk_outfile_abort(&o);
- *     else if (isk_outfile_commit(&o, &err) != ISK_OK) { ... }
+ *     if (isk_make_parent_dirs("out/squares.txt", &err) != ISK_OK        // mkdir -p out
+ *             || isk_outfile_open(&o, "out/squares.txt", &err) != ISK_OK) {
+ *         fprintf(stderr, "%s\n", err.message);
+ *         return 1;
+ *     }
+ *     int failed = 0;         // write to o.f (or hand it to isk_png_write_stream, isk_anim_begin)
+ *     for (int i = 1; i <= 10; i++) failed |= fprintf(o.f, "%d\n", i * i) < 0;
+ *     if (failed) { isk_outfile_abort(&o); return 1; }           // out/squares.txt as it was
+ *     if (isk_outfile_commit(&o, &err) != ISK_OK) {
+ *         fprintf(stderr, "%s\n", err.message);                    // the file as it was too
+ *         return 1;
+ *     }
  *
  * What happens depends on what the path names when it is opened:
  *

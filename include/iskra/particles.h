@@ -9,12 +9,16 @@
  * phase, angular speed and the offset already applied).  Every column moves
  * with its particle: growth, removal and culling treat them all alike.
  *
+ * Example:
+ *
  *     isk_particles p;
- *     if (isk_particles_init(&p, 1024, 0) != ISK_OK) ...
+ *     if (isk_particles_init(&p, 1024, 0) != ISK_OK) return 1;
  *     size_t i;
- *     isk_particles_add(&p, 0, -3, 4, 4, 2.0, &i);   // x, y, vx, vy, m
+ *     isk_status s = isk_particles_add(&p, 0, -3, 4, 4, 2.0, &i);   // x, y, vx, vy, m
  *     for (size_t k = 0; k < p.count; k++) p.x[k] += 1;
+ *     if (s == ISK_OK) printf("particle %zu at (%g, %g)\n", i, p.x[i], p.y[i]);
  *     isk_particles_free(&p);
+ *     return s != ISK_OK;
  *
  * Iteration order (a contract: drawing composites in this order, and the
  * thesis's potentials switch off depending on it): index 0..count-1, which

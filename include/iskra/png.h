@@ -1,13 +1,20 @@
 /* iskra/png.h — write and read canvases as PNG files (libpng).
  *
- *     isk_error err;
- *     if (isk_png_write(&canvas, "out/frame.png", &err) != ISK_OK)
- *         fprintf(stderr, "%s\n", err.message);
+ * Example: a canvas written, then read back:
  *
- *     isk_canvas img;
- *     if (isk_png_read(&img, "refimg/x.png", &err) != ISK_OK) ...
- *     ...
+ *     isk_canvas canvas, img;
+ *     if (isk_canvas_init(&canvas, 64, 48) != ISK_OK) return 1;
+ *     isk_canvas_fill(&canvas, isk_rgba(255, 128, 0, 200));
+ *     isk_error err;
+ *     if (isk_png_write(&canvas, "frame.png", &err) != ISK_OK
+ *             || isk_png_read(&img, "frame.png", &err) != ISK_OK) {
+ *         fprintf(stderr, "%s\n", err.message);
+ *         return 1;
+ *     }
+ *     int same = isk_canvas_equal(&canvas, &img);      // 1: the very bytes
  *     isk_canvas_free(&img);
+ *     isk_canvas_free(&canvas);
+ *     return !same;
  *
  * Writing goes through iskra/outfile.h: to a temporary file renamed over
  * the target only when complete (a failure never leaves a half-written PNG

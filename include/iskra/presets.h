@@ -8,13 +8,22 @@
  * scale not a finite number > 0, or no room for another emitter/force).
  * Adjust the returned emitter freely afterwards:
  *
+ * Example:
+ *
  *     isk_effect_def d;
  *     isk_effect_def_init(&d);
  *     int f = isk_preset_fire(&d, NULL, isk_vec2_make(0, -6), 3.0);
  *     int s = isk_preset_smoke(&d, NULL, isk_vec2_make(0, -4), 3.0);
+ *     if (f < 0 || s < 0) { isk_effect_def_free(&d); return 1; }
  *     d.emitters[s].order = -1;           // smoke behind the flame
  *     isk_effect *fx; isk_error err;
- *     isk_effect_create(&fx, &d, &err);
+ *     isk_status st = isk_effect_create(&fx, &d, &err);
+ *     isk_effect_def_free(&d);
+ *     if (st != ISK_OK) { fprintf(stderr, "%s\n", err.message); return 1; }
+ *     for (int i = 0; i < 60 && st == ISK_OK; i++) st = isk_effect_step(fx);   // one second
+ *     printf("%zu particles after 1 s\n", isk_effect_particle_count(fx));
+ *     isk_effect_destroy(fx);
+ *     return st != ISK_OK;
  *
  * Units.  The numbers start from cocos2d-x's built-in presets
  * (CCParticleExamples.cpp: ParticleFire, ParticleSmoke, ParticleFireworks,

@@ -4,11 +4,21 @@
  * mismatch leave the actual image and a picture of the differences where
  * you can look at them; regenerate references on purpose.
  *
+ * Example: the first check writes the reference, as ISKRA_REFIMG_UPDATE=1 would:
+ *
+ *     isk_canvas canvas;
+ *     if (isk_canvas_init(&canvas, 64, 32) != ISK_OK) return 1;
+ *     isk_canvas_fill(&canvas, isk_rgba(250, 120, 40, 255));      // ...render the picture...
+ *     isk_error err;
+ *     isk_refimg_opts first = {0};
+ *     first.update = ISK_REFIMG_UPDATE_ALWAYS;
+ *     isk_status s = isk_refimg_check(&canvas, "tests/ref/sunset.png", &first, &err);
  *     isk_refimg_opts opts = {0};          // exact, ISKRA_REFIMG_UPDATE honoured
  *     opts.out_dir = "out/refimg";         // where NAME.actual/.diff.png go
- *     isk_error err;
- *     isk_status s = isk_refimg_check(&canvas, "tests/ref/sunset.png", &opts, &err);
+ *     if (s == ISK_OK) s = isk_refimg_check(&canvas, "tests/ref/sunset.png", &opts, &err);
  *     if (s != ISK_OK) fprintf(stderr, "%s\n", err.message);   // or cr_assert_eq(s, ISK_OK, ...)
+ *     isk_canvas_free(&canvas);
+ *     return s != ISK_OK;
  *
  * Outcomes (NAME is the reference's file name without ".png"):
  *   same pixels          ISK_OK.

@@ -5,11 +5,14 @@
  * step, each on 32-bit state.  Here the four words are state that advances
  * on every draw (the thesis's shader version recomputes from fixed keys).
  *
+ * Example:
+ *
  *     isk_rng r;
  *     isk_rng_seed(&r, 42);
  *     double u = isk_rng_uniform(&r);        // [0, 1)
  *     double z0, z1;
  *     isk_rng_normal2(&r, &z0, &z1);         // two N(0,1) draws
+ *     printf("%.17g %.17g %.17g\n", u, z0, z1);   // the same on every machine
  *
  * One generator per system, passed explicitly: no global state, so two
  * systems in one process never disturb each other, and the same seed gives

@@ -5,17 +5,22 @@
  * hand-writable INI format; docs/scene-format.md documents every section and
  * key with its units, default and valid range.  Parsing fills an
  * isk_effect_def (iskra/effect.h); isk_effect_create() then validates and
- * compiles it:
+ * compiles it.
+ *
+ * Example:
  *
  *     isk_effect_def d;
  *     isk_error err;
- *     if (isk_scene_load(&d, "scenes/fig12_gravity.ini", &err) != ISK_OK) {
+ *     if (isk_scene_load(&d, "fig12_gravity", &err) != ISK_OK) {   // a file or a built-in scene
  *         fprintf(stderr, "%s\n", err.message);  // "scenes/x.ini:12: [emitter smoke] rate: ..."
  *         return 2;
  *     }
  *     isk_effect *fx;
  *     isk_status s = isk_effect_create(&fx, &d, &err);
  *     isk_effect_def_free(&d);
+ *     if (s != ISK_OK) { fprintf(stderr, "%s\n", err.message); return 2; }
+ *     isk_effect_describe(fx, stdout);          // its emitters' stage lists
+ *     isk_effect_destroy(fx);
  *
  * Errors are "NAME:LINE: message" (NAME is the path, the built-in scene's
  * name or the name passed to isk_scene_load_string), naming the section and

@@ -6,15 +6,35 @@
  * so callers need not include SDL headers.  Works under
  * SDL_VIDEODRIVER=dummy, which is how the tests drive it without a display.
  *
+ * Example: a disc growing for 30 frames:
+ *
+ *     static int my_frame(void *user, isk_canvas *c, double dt, const isk_event *ev, int nev)
+ *     {
+ *         int *frames = user;                      // the program's own state
+ *         (void)dt; (void)ev; (void)nev;           // real seconds since the last frame; input
+ *         isk_canvas_fill(c, ISK_BLACK);
+ *         isk_fill_circle_aa(c, 300, 300, 10.0 * *frames, ISK_YELLOW, ISK_BLEND_OVER);
+ *         return ++*frames == 30;                  // non-zero: stop
+ *     }
+ *     // in main():
  *     isk_window *w;
  *     isk_error err;
- *     if (isk_window_open(&w, "demo", 600, 600, &err) != ISK_OK) { ... }
- *     isk_window_run(w, &canvas, my_frame, &state, 0);   // until closed
+ *     if (isk_window_open(&w, "demo", 600, 600, &err) != ISK_OK) {
+ *         fprintf(stderr, "%s\n", err.message);
+ *         return 1;
+ *     }
+ *     isk_canvas canvas;
+ *     int frames = 0;
+ *     isk_status s = isk_canvas_init(&canvas, 600, 600);
+ *     if (s == ISK_OK) s = isk_window_run(w, &canvas, my_frame, &frames, 0, &err);  // 0: no limit
+ *     if (s != ISK_OK) fprintf(stderr, "%s\n", s == ISK_ERR_NOMEM ? "out of memory" : err.message);
+ *     isk_canvas_free(&canvas);
  *     isk_window_close(w);
+ *     return s != ISK_OK;
  *
  * The frame callback gets the events of this frame and the real time since
  * the previous frame, draws into the canvas and returns 0 to go on, non-zero
- * to stop.
+ * to stop; closing the window or Escape stops too.
  *
  * Behaviour worth knowing:
  *   - Keys: printable keys give their lower-case ASCII whatever the Shift

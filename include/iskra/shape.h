@@ -9,11 +9,18 @@
  * it, and the _sample_n functions check, switch on the kind once and run a
  * tight loop.
  *
+ * Example: 100 births in a tilted ellipse, launched upwards:
+ *
+ *     isk_rng rng;
+ *     isk_rng_seed(&rng, 7);
+ *     double x[100], y[100], vx[100], vy[100];
+ *     size_t n = 100;
  *     isk_shape sh = isk_shape_ellipse(0, 0, 2, 1, ISK_ELLIPSE_UNIFORM);
  *     sh.angle = 0.3;                                   // radians, about (cx, cy)
  *     isk_velgen vg = isk_velgen_cone(1.5707963, 0.5, 2.0, 3.0);  // up +-0.25 rad
- *     if (isk_shape_sample_n(&sh, &rng, n, x, y) != ISK_OK) ...
- *     if (isk_velgen_sample_n(&vg, &rng, n, vx, vy) != ISK_OK) ...
+ *     if (isk_shape_sample_n(&sh, &rng, n, x, y) != ISK_OK) return 1;
+ *     if (isk_velgen_sample_n(&vg, &rng, n, vx, vy) != ISK_OK) return 1;
+ *     printf("first at (%g, %g), moving (%g, %g)\n", x[0], y[0], vx[0], vy[0]);
  *
  * Shapes (offsets from the centre (cx, cy) before rotation; u1, u2 are the
  * first and second uniform draws in [0, 1)):

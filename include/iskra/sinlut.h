@@ -33,10 +33,14 @@
  * for hot loops; isk_sinlut_eval is the checked call, NaN for NULL).  The
  * isk_sinlut struct is plain read-only data: share it freely.
  *
+ * Example:
+ *
  *     isk_sinlut lut;
  *     if (isk_sinlut_init(&lut, 4096) != ISK_OK) return 1;   // N = 4096
+ *     double amplitude = 0.5, phase = 1.0;
  *     double o = amplitude * isk_sinlut_lerp(&lut, phase);
  *     double c = isk_sinlut_cos_round(&lut, phase);           // cos, same table
+ *     printf("%.9f %.9f\n", o, c);                           // within 3e-7 and 8e-4 of libm
  *
  * For small N in a cache-hungry loop, isk_sinlut_init_copy() copies the N+1
  * entries into a caller buffer (stride 1, 8(N+1) bytes); the values and

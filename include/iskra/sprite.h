@@ -33,15 +33,24 @@
  * the sprite is clipped to the canvas; NaN, +-Inf and huge values draw
  * nothing (never an out-of-range float->int conversion).
  *
+ * Example: three glowing sprites, added:
+ *
+ *     isk_canvas canvas;
+ *     if (isk_canvas_init(&canvas, 200, 100) != ISK_OK) return 1;
+ *     isk_canvas_fill(&canvas, ISK_BLACK);
+ *     double sx[] = {50, 90, 150.25}, sy[] = {50, 50, 49.5};
+ *     size_t n = 3;
  *     isk_sprite_cache *cache;
- *     if (isk_sprite_cache_create(&cache, 64) != ISK_OK) return 1;
+ *     isk_status st = isk_sprite_cache_create(&cache, 64);
  *     const isk_sprite *spr;
- *     isk_status st = isk_sprite_cache_get(cache, ISK_SPRITE_LINEAR, 32,
- *                                          isk_rgba(255, 128, 0, 255), &spr);
+ *     if (st == ISK_OK) st = isk_sprite_cache_get(cache, ISK_SPRITE_LINEAR, 32,
+ *                                                 isk_rgba(255, 128, 0, 255), &spr);
  *     if (st == ISK_OK)
  *         for (size_t i = 0; i < n; i++)
  *             isk_draw_sprite(&canvas, spr, sx[i], sy[i], ISK_BLEND_ADD);
  *     isk_sprite_cache_destroy(cache);
+ *     isk_canvas_free(&canvas);
+ *     return st != ISK_OK;
  *
  * The cache holds at most `capacity` sprites (1..4096).  It never evicts: a
  * pointer it returned stays valid until isk_sprite_cache_clear() or _destroy(),

@@ -1,10 +1,21 @@
 /* iskra/status.h — error codes shared by every module.
  *
  * Every iskra function that can fail returns an isk_status; ISK_OK is 0, so
- *     if (isk_canvas_init(&c, 600, 600) != ISK_OK) ...
- * works.  Nothing in the library prints or aborts; isk_status_str() gives a
- * one-line English explanation.  Functions doing I/O also take an optional
- * isk_error* that receives a detailed message (file name, libpng's text).
+ * `if (isk_canvas_init(&c, 600, 600) != ISK_OK)` works.  Nothing in the
+ * library prints or aborts; isk_status_str() gives a one-line English
+ * explanation.  Functions doing I/O also take an optional isk_error* that
+ * receives a detailed message (file name, libpng's text).
+ *
+ * Example:
+ *
+ *     isk_canvas c;
+ *     isk_status s = isk_canvas_init(&c, 0, 600);             // a zero width
+ *     printf("%s\n", isk_status_str(s));                      // what ISK_ERR_SIZE means
+ *     isk_error err;
+ *     if (isk_png_read(&c, "missing.png", &err) != ISK_OK)    // I/O: a message too
+ *         printf("%s: %s\n", isk_status_str(err.status), err.message);
+ *     else
+ *         isk_canvas_free(&c);
  */
 #ifndef ISKRA_STATUS_H
 #define ISKRA_STATUS_H

@@ -4,14 +4,28 @@
  * Plain data: every field is public and documented, so a scene compiler (or
  * a test) can fill it directly; the setters below validate for you.
  *
+ * Example: a Coulomb explosion in a box open at the top, 120 frames drawn:
+ *
  *     isk_system s;
- *     isk_system_init(&s, 42, 0);                    // seed, initial capacity
+ *     if (isk_system_init(&s, 42, 0) != ISK_OK) return 1;     // seed, initial capacity
  *     s.forces.gravity = 9.81;  s.forces.drag = 0.47;
- *     isk_bounds_thesis(&s.bounds, 0, 10, 0, 10, ISK_SIDE_RIGHT | ISK_SIDE_BOTTOM | ISK_SIDE_LEFT);
+ *     unsigned sides = ISK_SIDE_RIGHT | ISK_SIDE_BOTTOM | ISK_SIDE_LEFT;
+ *     isk_status st = isk_bounds_thesis(&s.bounds, 0, 10, 0, 10, sides);
  *     s.bounce_in_step = 1;
- *     isk_system_explode(&s, ISK_EXPLOSION_COULOMB, 5, 5, 1000);
- *     for (;;) { isk_system_step(&s, 1.0 / 60); draw(&s.particles); }
+ *     if (st == ISK_OK) st = isk_system_explode(&s, ISK_EXPLOSION_COULOMB, 5, 5, 1000);
+ *     isk_view view;
+ *     isk_canvas c = {0};
+ *     if (st == ISK_OK) st = isk_view_window(&view, 300, 300, 0, 10, 0, 10);
+ *     if (st == ISK_OK) st = isk_canvas_init(&c, 300, 300);
+ *     for (int frame = 0; frame < 120 && st == ISK_OK; frame++) {
+ *         st = isk_system_step(&s, 1.0 / 60);
+ *         isk_canvas_fill(&c, ISK_BLACK);
+ *         const isk_particles *p = &s.particles;
+ *         isk_draw_dots(&c, &view, p->count, p->x, p->y, ISK_YELLOW, ISK_BLEND_OVER);
+ *     }
+ *     isk_canvas_free(&c);
  *     isk_system_free(&s);
+ *     return st != ISK_OK;
  *
  * isk_system_step(sys, dt) — one frame, the thesis simulator's order:
  *   1. release due multi-Coulomb batches (scheduler, simulated time)

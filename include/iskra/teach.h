@@ -12,8 +12,13 @@
  *   Cestica             isk_particle  + isk_particle_draw (iscrtaj)
  *                                     + isk_particle_zarobi (zarobi)
  *
- * Figure 13 (gravity 0.25 + drag 0.1), the thesis's loop line by line:
+ * Example: figure 13 (gravity 0.25 + drag 0.1), the thesis's loop line by line:
  *
+ *     isk_view view;                                         // the thesis's world window:
+ *     if (isk_view_window(&view, 600, 600, -10, 10, -10, 10) != ISK_OK) return 1;
+ *     isk_canvas canvas;
+ *     if (isk_canvas_init(&canvas, 600, 600) != ISK_OK) return 1;
+ *     isk_canvas_fill(&canvas, ISK_BLACK);
  *     isk_particle c;
  *     isk_particle_init(&c, 1, isk_vec2_make(-4, -4), isk_vec2_make(1, -2));
  *     for (int i = 0; i < 1000; i++) {
@@ -22,6 +27,11 @@
  *         isk_particle_draw(&c, &canvas, &view);          // draw BEFORE the bounce
  *         isk_particle_zarobi(&c, &view, 0, 0, 1, 0);     // top, right, bottom, left
  *     }
+ *     isk_error err;
+ *     isk_status s = isk_png_write(&canvas, "fig13.png", &err);
+ *     if (s != ISK_OK) fprintf(stderr, "%s\n", err.message);
+ *     isk_canvas_free(&canvas);
+ *     return s != ISK_OK;
  */
 #ifndef ISKRA_TEACH_H
 #define ISKRA_TEACH_H

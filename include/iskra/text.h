@@ -4,8 +4,14 @@
  * byte is drawn as a hollow box.  '\n' starts a new line.  Glyphs are scaled
  * by integer factors (1 = one font pixel per canvas pixel).  No font files.
  *
+ * Example:
+ *
+ *     isk_canvas c;
+ *     if (isk_canvas_init(&c, 200, 60) != ISK_OK) return 1;
  *     isk_draw_text(&c, 15, 30, "FPS: 60", 2, ISK_WHITE, ISK_BLEND_OVER);
  *     int w = isk_text_width("FPS: 60", 2);
+ *     printf("%d pixels wide\n", w);
+ *     isk_canvas_free(&c);
  *
  * (x, y) is the top-left corner of the first character cell.  Coordinates
  * and scale are clipped; scale < 1 draws nothing.

@@ -6,11 +6,17 @@
  * collects real time and hands out whole steps; when the machine cannot keep
  * up it drops time instead of queueing ever more steps (no spiral of death).
  *
+ * Example: three frames, the last one late:
+ *
  *     isk_timestep ts;
- *     isk_timestep_init(&ts, 1.0 / 60.0, 5);       // dt, at most 5 steps/frame
- *     ...each frame:
- *     int n = isk_timestep_advance(&ts, frame_seconds);
- *     for (int i = 0; i < n; i++) step(dt);
+ *     if (isk_timestep_init(&ts, 1.0 / 60.0, 5) != ISK_OK) return 1;   // dt, at most 5 steps/frame
+ *     double frame_seconds[3] = {0.016, 0.018, 0.5};    // measured by the caller's clock
+ *     long steps = 0;
+ *     for (int f = 0; f < 3; f++) {                     // each frame:
+ *         int n = isk_timestep_advance(&ts, frame_seconds[f]);
+ *         for (int i = 0; i < n; i++) steps++;          // step(ts.dt): isk_effect_step, ...
+ *     }
+ *     printf("%ld steps, %.3f s dropped\n", steps, ts.dropped);   // 7 steps, 0.417 s
  *
  * Plain data, no clock inside: the caller measures real time, so tests can
  * drive it with any sequence of frame times.

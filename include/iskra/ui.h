@@ -7,23 +7,44 @@
  * The program keeps its own values; the layer keeps only which widget is
  * hovered, pressed or focused, and the text being edited.
  *
+ * Example: a button and a number field, into which a script types a minus:
+ *
+ *     isk_canvas canvas;
+ *     if (isk_canvas_init(&canvas, 320, 100) != ISK_OK) return 1;
+ *     double gravity = 9.81;
  *     isk_ui ui;
  *     isk_ui_init(&ui, 2);                         // scale 2: text and metrics doubled
- *     for (;;) {
- *         ...feed input: isk_ui_input_button(&ui, x, y, 1), isk_ui_input_text(&ui, "7"), ...
+ *     for (int frame = 0; frame < 4; frame++) {
+ *         isk_ui_rect f;                           // input (iskra/ui_sdl.h feeds a window's):
+ *         if (frame == 1 && isk_ui_find(&ui, "gravity", &f)) {       // where the field was drawn
+ *             isk_ui_input_button(&ui, f.x + 4, f.y + 4, 1);
+ *             isk_ui_input_button(&ui, f.x + 4, f.y + 4, 0);           // a click on it,
+ *             isk_ui_input_key(&ui, ISK_UI_KEY_HOME);
+ *             isk_ui_input_text(&ui, "-");                             // "-9.81",
+ *             isk_ui_input_key(&ui, ISK_UI_KEY_RETURN);                // applied
+ *         }
  *         isk_ui_begin(&ui, &canvas);
  *         isk_ui_rect r = {0, 0, canvas.width, canvas.height}, row;
  *         isk_ui_panel(&ui, r);
  *         r = isk_ui_inset(r, isk_ui_px(&ui, 8));
  *         row = isk_ui_cut_top(&r, isk_ui_row_height(&ui));
- *         if (isk_ui_button(&ui, "reset", isk_ui_cut_left(&row, isk_ui_px(&ui, 60)), "Reset")) reset();
- *         char typed[64];
+ *         if (isk_ui_button(&ui, "reset", isk_ui_cut_left(&row, isk_ui_px(&ui, 60)), "Reset"))
+ *             gravity = 9.81;
+ *         char value_text[32], typed[64], rest;
+ *         snprintf(value_text, sizeof value_text, "%g", gravity);
+ *         double v;
  *         if (isk_ui_field(&ui, "gravity", row, value_text, ISK_UI_FIELD_NUMBER, typed, sizeof typed)
- *                 == ISK_UI_FIELD_APPLY && !accept(typed))
- *             isk_ui_field_error(&ui, "gravity", "expected a number >= 0");
- *         isk_ui_end(&ui);
- *         ...show the canvas...
+ *                 == ISK_UI_FIELD_APPLY) {
+ *             if (sscanf(typed, "%lf %c", &v, &rest) == 1 && v >= 0) gravity = v;
+ *             else isk_ui_field_error(&ui, "gravity", "expected a number >= 0");
+ *         }
+ *         isk_ui_end(&ui);                         // then show the canvas (iskra/sdl.h)
  *     }
+ *     isk_error err;
+ *     isk_status s = isk_png_write(&canvas, "ui.png", &err);   // the refusal, under the field
+ *     if (s != ISK_OK) fprintf(stderr, "%s\n", err.message);
+ *     isk_canvas_free(&canvas);
+ *     return s != ISK_OK;
  *
  * Input.  The isk_ui_input_* functions queue events; each frame
  * (isk_ui_begin) takes them in order up to and including one mouse-button

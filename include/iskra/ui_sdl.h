@@ -1,18 +1,43 @@
 /* iskra/ui_sdl.h — feeds the SDL window's events (iskra/sdl.h) to the
  * widget layer (iskra/ui.h).  Header-only, so neither library depends on
- * the other:
+ * the other.  Only the left button drives widgets; keypad + and - count as
+ * + and -.
  *
- *     static int frame(void *user, isk_canvas *c, double dt, const isk_event *ev, int n) {
+ * Example: a window with one button, until Escape (pressed by the program):
+ *
+ *     typedef struct app { isk_ui ui; int clicks; } app;
+ *     static int frame(void *user, isk_canvas *c, double dt, const isk_event *ev, int n)
+ *     {
  *         app *a = user;
+ *         (void)dt;
  *         for (int i = 0; i < n; i++) isk_ui_feed_event(&a->ui, &ev[i]);
  *         isk_ui_begin(&a->ui, c);
- *         ...widgets...
+ *         isk_ui_clear(&a->ui);
+ *         isk_ui_rect r = {20, 20, 160, isk_ui_row_height(&a->ui)};
+ *         if (isk_ui_button(&a->ui, "hello", r, "Hello")) a->clicks++;
  *         isk_ui_end(&a->ui);
  *         return isk_ui_key(&a->ui, ISK_UI_KEY_ESCAPE);   // quit on Escape outside a field
  *     }
- *
- * (with isk_window_set_escape_quits(w, 0), so Escape can cancel an edit).
- * Only the left button drives widgets; keypad + and - count as + and -. */
+ *     // in main():
+ *     app a = {.clicks = 0};
+ *     isk_ui_init(&a.ui, 1);
+ *     isk_window *w;
+ *     isk_error err;
+ *     if (isk_window_open(&w, "widgets", 200, 80, &err) != ISK_OK) {
+ *         fprintf(stderr, "%s\n", err.message);
+ *         return 1;
+ *     }
+ *     isk_window_set_escape_quits(w, 0);               // so Escape can cancel an edit
+ *     isk_event esc = {.type = ISK_EVENT_KEY_DOWN, .key = ISK_KEY_ESCAPE};
+ *     isk_status s = isk_window_push_event(w, &esc);   // as if the user pressed it
+ *     isk_canvas canvas = {0};
+ *     if (s == ISK_OK) s = isk_canvas_init(&canvas, 200, 80);
+ *     if (s == ISK_OK) s = isk_window_run(w, &canvas, frame, &a, 0, &err);
+ *     if (s != ISK_OK) fprintf(stderr, "%s\n", err.message);
+ *     isk_canvas_free(&canvas);
+ *     isk_window_close(w);
+ *     return s != ISK_OK;
+ */
 #ifndef ISKRA_UI_SDL_H
 #define ISKRA_UI_SDL_H
 

@@ -6,11 +6,15 @@
  * the floating-point operations of the thesis's JavaScript, in the same
  * order, so results are bit-identical under -ffp-contract=off:
  *
+ * Example:
+ *
  *     isk_vec2 r = isk_vec2_make(-4, -4), v = isk_vec2_make(1, -2);
  *     isk_vec2_add_scaled(&r, 0.25, v);          // dodajCputaV: r += 0.25*v
+ *     isk_vec2 g = isk_vec2_make(0, -0.25), drag = isk_vec2_scale(v, -0.1);
  *     isk_vec2 F = isk_vec2_add(g, drag);        // zbroji
- *     double d = isk_vec2_dist(a, b);            // udaljenost
+ *     double d = isk_vec2_dist(r, isk_vec2_make(0, 0));   // udaljenost
  *     isk_vec2 w = isk_vec2_rotate_thesis(isk_vec2_make(4, 4), 45);
+ *     printf("r (%g, %g)  F (%g, %g)  d %g  w (%g, %g)\n", r.x, r.y, F.x, F.y, d, w.x, w.y);
  *
  * Thesis name  ->  here
  *   zbroji(v2)            isk_vec2_add(a, b)        new (a.x+b.x, a.y+b.y)

@@ -1,5 +1,7 @@
 /* iskra/version.h — which iskra this is, at compile time and at run time.
  *
+ * Example:
+ *
  *     #if ISKRA_VERSION_MAJOR == 0 && ISKRA_VERSION_MINOR < 2
  *     #error "needs iskra 0.2 (isk_effect_set)"
  *     #endif

@@ -16,9 +16,18 @@
  *
  * Both are affine; isk_view_to_world() inverts either (for mouse clicks).
  *
+ * Example:
+ *
  *     isk_view v;
- *     if (isk_view_window(&v, 600, 600, -10, 10, -10, 10) != ISK_OK) ...
+ *     if (isk_view_window(&v, 600, 600, -10, 10, -10, 10) != ISK_OK) return 1;
+ *     isk_canvas canvas;
+ *     if (isk_canvas_init(&canvas, 600, 600) != ISK_OK) return 1;
  *     isk_world_dot(&canvas, &v, -4, -4, ISK_YELLOW, ISK_BLEND_OVER);
+ *     double px, py, wx, wy;
+ *     isk_view_to_screen(&v, -4, -4, &px, &py);         // (180, 420)
+ *     isk_view_to_world(&v, px, py, &wx, &wy);          // (-4, -4) again: a mouse click's point
+ *     printf("(%g, %g) -> (%g, %g)\n", wx, wy, px, py);
+ *     isk_canvas_free(&canvas);
  *
  * The isk_world_* helpers are the thesis's drawing methods in world units:
  * piksel -> isk_world_dot, puniKrug -> isk_world_disc, tekst -> isk_world_text.
