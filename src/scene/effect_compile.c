@@ -91,6 +91,13 @@ isk_status fx_compile(isk_effect *e, fx_group *g)
      * many as died) when nothing sees the order: the stages (as for
      * threads) and the drawing (saturating adds commute; no draw). */
     g->cull_unordered = g->parallel && (em->draw == ISK_DRAW_NONE || em->blend == ISK_BLEND_ADD);
+    /* Reflect walls (margin 0) leave a resting particle exactly on the floor
+     * line, which the view maps to y = height: one pixel outside the canvas.
+     * There the drawing moves a screen coordinate in (n - 1, n] to n - 1, so
+     * what the walls keep in the world stays in sight.  The thesis's walls
+     * keep the thesis's picture (its browser clipped them the same way), and
+     * without walls the view is a plain window. */
+    g->keep_on_canvas = walls && d->bounds.mode == ISK_BOUNCE_REFLECT;
 
     if (walls && em->draw_before_bounce)
         g->frame_start[g->nframe_start++] = &fx_step_late_walls;

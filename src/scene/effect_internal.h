@@ -77,6 +77,7 @@ struct fx_group {
     double const_ax, const_ay;     /* the constant part of the acceleration (thesis jitter) */
     int parallel;                  /* its pipeline's blocks are independent: threads may share them */
     int cull_unordered;            /* the order of its particles is seen by nothing (effect_compile.c) */
+    int keep_on_canvas;            /* reflect walls hold it: one on the far edge is drawn on it */
     fx_draw_fn draw;
 
     /* explosions (effect_group.c) */

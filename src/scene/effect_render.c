@@ -164,6 +164,10 @@ static isk_status draw_styled_dots(isk_effect *e, isk_canvas *c, fx_group *g, co
     for (size_t i = 0; i < p->count; i++) {
         double X, Y, mult;
         isk_view_to_screen(v, p->x[i], p->y[i], &X, &Y);
+        if (g->keep_on_canvas) {
+            X = isk__keep_on_canvas(X, c->width);
+            Y = isk__keep_on_canvas(Y, c->height);
+        }
         isk_color col = style(g, p, i, 1, &mult);
         if (browser)
             ISK__BLEND_DISPATCH(blend, isk__dot_browser_rows, c, b->r0, b->r1, X, Y, col, NULL);
@@ -176,11 +180,11 @@ static isk_status draw_styled_dots(isk_effect *e, isk_canvas *c, fx_group *g, co
 /* One colour for the whole group: the batched kernels (iskra/view.h). */
 static isk_status draw_dots(isk_effect *e, isk_canvas *c, fx_group *g, const fx_band *b)
 {
-    isk__batch_rule rule = g->def->draw == ISK_DRAW_DOT_BROWSER ? ISK__BATCH_DOT_BROWSER
-                           : g->def->draw == ISK_DRAW_PIXEL     ? ISK__BATCH_PIXEL
-                                                                : ISK__BATCH_DOT;
-    isk__draw_batch_rows(c, &e->view, g->store.count, g->store.x, g->store.y, g->def->color, g->def->blend, rule,
-                         b->r0, b->r1);
+    unsigned rule = g->def->draw == ISK_DRAW_DOT_BROWSER ? ISK__BATCH_DOT_BROWSER
+                    : g->def->draw == ISK_DRAW_PIXEL     ? ISK__BATCH_PIXEL
+                                                         : ISK__BATCH_DOT;
+    isk__draw_batch_rows(c, &e->view, g->store.count, g->store.x, g->store.y, g->def->color, g->def->blend,
+                         rule | (g->keep_on_canvas ? ISK__BATCH_KEEP_ON_CANVAS : 0u), b->r0, b->r1);
     return ISK_OK;
 }
 
@@ -190,6 +194,10 @@ static isk_status draw_styled_pixels(isk_effect *e, isk_canvas *c, fx_group *g, 
     for (size_t i = 0; i < p->count; i++) {
         double X, Y, mult;
         isk_view_to_screen(&e->view, p->x[i], p->y[i], &X, &Y);
+        if (g->keep_on_canvas) {
+            X = isk__keep_on_canvas(X, c->width);
+            Y = isk__keep_on_canvas(Y, c->height);
+        }
         isk_color col = style(g, p, i, 1, &mult);
         if (X >= 0 && Y >= b->r0 && X < c->width && Y < b->r1)
             isk_draw_pixel(c, (int)X, (int)Y, col, g->def->blend);

@@ -28,7 +28,8 @@
 #define PIXEL_BLOCK 64
 
 static ISK__INLINE void run_pixels(const isk_canvas *c, int r0, int r1, const isk_view *v, size_t n,
-                                   const double *x, const double *y, isk_color col, int camera, isk_blend mode)
+                                   const double *x, const double *y, isk_color col, int camera, int keep,
+                                   isk_blend mode)
 {
     /* isk_view_to_screen: camera  X = w/2 + a*(x + tx),  Y = h/2 - a*(y + ty);
      *                     window  X = sx*x + px,          Y = sy*y + py. */
@@ -50,6 +51,10 @@ static ISK__INLINE void run_pixels(const isk_canvas *c, int r0, int r1, const is
             } else {
                 X = sx * x[i0 + i] + px;
                 Y = sy * y[i0 + i] + py;
+            }
+            if (keep) { /* a batch constant: the branch is hoisted */
+                X = isk__keep_on_canvas(X, c->width);
+                Y = isk__keep_on_canvas(Y, c->height);
             }
             if (X >= 0 && Y >= Y0 && X < W && Y < Y1) {
                 off[k] = (size_t)(int)Y * stride + (size_t)(int)X * 4u;
@@ -226,7 +231,7 @@ static ISK__INLINE void px2(uint8_t *p, isk_color col, const isk__cov_lut *lut, 
 
 static ISK__INLINE void run_dots_blocked(const isk_canvas *c, int r0, int r1, const isk_view *v, size_t n,
                                          const double *x, const double *y, isk_color col, const isk__cov_lut *lut,
-                                         int camera, int browser, isk_blend mode)
+                                         int camera, int browser, int keep, isk_blend mode)
 {
     const double hw = v->width / 2.0, hh = v->height / 2.0, a = v->a, tx = v->tx, ty = v->ty;
     const double sx = v->sx, sy = v->sy, px = v->px, py = v->py;
@@ -244,14 +249,16 @@ static ISK__INLINE void run_dots_blocked(const isk_canvas *c, int r0, int r1, co
         const int m = n - i0 < BLOCK ? (int)(n - i0) : BLOCK;
         int kept = 0;
         for (int k = 0; k < m; k++) {
-            const double Y = camera ? hh - a * (y[i0 + k] + ty) : sy * y[i0 + k] + py;
+            const double Y0k = camera ? hh - a * (y[i0 + k] + ty) : sy * y[i0 + k] + py;
+            const double Y = keep ? isk__keep_on_canvas(Y0k, c->height) : Y0k;
             b.y[kept] = Y;
             b.ix[kept] = k; /* the point's place in the block, until the weights overwrite it */
             kept += Y > lo && Y < hi;
         }
         for (int k = 0; k < kept; k++) {
             const double xi = x[i0 + (size_t)b.ix[k]];
-            b.x[k] = camera ? hw + a * (xi + tx) : sx * xi + px;
+            const double X = camera ? hw + a * (xi + tx) : sx * xi + px;
+            b.x[k] = keep ? isk__keep_on_canvas(X, c->width) : X;
         }
         weights(&b, kept, W1, Y0, H1);
 #if defined(__GNUC__)
@@ -285,20 +292,20 @@ static ISK__INLINE void run_dots_blocked(const isk_canvas *c, int r0, int r1, co
 
 static ISK__INLINE void run_kind(const isk_canvas *c, int r0, int r1, const isk_view *v, size_t n, const double *x,
                                  const double *y, isk_color col, const isk__cov_lut *lut, isk__batch_rule rule,
-                                 isk_blend mode)
+                                 int keep, isk_blend mode)
 {
     if (rule == ISK__BATCH_DOT && v->kind == ISK_VIEW_CAMERA)
-        run_dots_blocked(c, r0, r1, v, n, x, y, col, lut, 1, 0, mode);
+        run_dots_blocked(c, r0, r1, v, n, x, y, col, lut, 1, 0, keep, mode);
     else if (rule == ISK__BATCH_DOT)
-        run_dots_blocked(c, r0, r1, v, n, x, y, col, lut, 0, 0, mode);
+        run_dots_blocked(c, r0, r1, v, n, x, y, col, lut, 0, 0, keep, mode);
     else if (rule == ISK__BATCH_DOT_BROWSER && v->kind == ISK_VIEW_CAMERA)
-        run_dots_blocked(c, r0, r1, v, n, x, y, col, lut, 1, 1, mode);
+        run_dots_blocked(c, r0, r1, v, n, x, y, col, lut, 1, 1, keep, mode);
     else if (rule == ISK__BATCH_DOT_BROWSER)
-        run_dots_blocked(c, r0, r1, v, n, x, y, col, lut, 0, 1, mode);
+        run_dots_blocked(c, r0, r1, v, n, x, y, col, lut, 0, 1, keep, mode);
     else if (v->kind == ISK_VIEW_CAMERA)
-        run_pixels(c, r0, r1, v, n, x, y, col, 1, mode);
+        run_pixels(c, r0, r1, v, n, x, y, col, 1, keep, mode);
     else
-        run_pixels(c, r0, r1, v, n, x, y, col, 0, mode);
+        run_pixels(c, r0, r1, v, n, x, y, col, 0, keep, mode);
 }
 
 /* Batches this short skip the 256-entry table: building it would cost
@@ -306,8 +313,10 @@ static ISK__INLINE void run_kind(const isk_canvas *c, int r0, int r1, const isk_
 #define LUT_MIN_BATCH 64
 
 static ISK__INLINE void run_rule(const isk_canvas *c, int r0, int r1, const isk_view *v, size_t n, const double *x,
-                                 const double *y, isk_color col, isk__batch_rule rule, isk_blend mode)
+                                 const double *y, isk_color col, unsigned rule, isk_blend mode)
 {
+    const int keep = (rule & ISK__BATCH_KEEP_ON_CANVAS) != 0;
+    rule &= ~(unsigned)ISK__BATCH_KEEP_ON_CANVAS;
     isk__cov_lut lut;
     switch (rule) {
     case ISK__BATCH_DOT:
@@ -315,17 +324,17 @@ static ISK__INLINE void run_rule(const isk_canvas *c, int r0, int r1, const isk_
         if (n >= LUT_MIN_BATCH) {
             isk__cov_lut_init(&lut, col);
             if (rule == ISK__BATCH_DOT)
-                run_kind(c, r0, r1, v, n, x, y, col, &lut, ISK__BATCH_DOT, mode);
+                run_kind(c, r0, r1, v, n, x, y, col, &lut, ISK__BATCH_DOT, keep, mode);
             else
-                run_kind(c, r0, r1, v, n, x, y, col, &lut, ISK__BATCH_DOT_BROWSER, mode);
+                run_kind(c, r0, r1, v, n, x, y, col, &lut, ISK__BATCH_DOT_BROWSER, keep, mode);
         } else if (rule == ISK__BATCH_DOT) {
-            run_kind(c, r0, r1, v, n, x, y, col, NULL, ISK__BATCH_DOT, mode);
+            run_kind(c, r0, r1, v, n, x, y, col, NULL, ISK__BATCH_DOT, keep, mode);
         } else {
-            run_kind(c, r0, r1, v, n, x, y, col, NULL, ISK__BATCH_DOT_BROWSER, mode);
+            run_kind(c, r0, r1, v, n, x, y, col, NULL, ISK__BATCH_DOT_BROWSER, keep, mode);
         }
         break;
     case ISK__BATCH_PIXEL:
-        run_kind(c, r0, r1, v, n, x, y, col, NULL, ISK__BATCH_PIXEL, mode);
+        run_kind(c, r0, r1, v, n, x, y, col, NULL, ISK__BATCH_PIXEL, keep, mode);
         break;
     default:
         break;
@@ -333,7 +342,7 @@ static ISK__INLINE void run_rule(const isk_canvas *c, int r0, int r1, const isk_
 }
 
 void isk__draw_batch_rows(isk_canvas *c, const isk_view *v, size_t n, const double *x, const double *y,
-                          isk_color col, isk_blend mode, isk__batch_rule rule, int r0, int r1)
+                          isk_color col, isk_blend mode, unsigned rule, int r0, int r1)
 {
     if (!c || !c->pixels || !v || !x || !y || n == 0)
         return;
@@ -347,7 +356,7 @@ void isk__draw_batch_rows(isk_canvas *c, const isk_view *v, size_t n, const doub
 }
 
 static void draw_batch(isk_canvas *c, const isk_view *v, size_t n, const double *x, const double *y,
-                       isk_color col, isk_blend mode, isk__batch_rule rule)
+                       isk_color col, isk_blend mode, unsigned rule)
 {
     isk__draw_batch_rows(c, v, n, x, y, col, mode, rule, 0, c ? c->height : 0);
 }

@@ -20,7 +20,19 @@ typedef enum isk__batch_rule {
     ISK__BATCH_PIXEL        /* isk_draw_pixels */
 } isk__batch_rule;
 
+/* Or-ed into the rule: a screen coordinate in (n - 1, n] (n the canvas's
+ * width or height) is moved to n - 1 first, so a particle exactly on the
+ * right or bottom edge is drawn in the last column or row instead of just
+ * outside (isk__keep_on_canvas; the effects' particles use it). */
+#define ISK__BATCH_KEEP_ON_CANVAS 0x100u
+
+/* What ISK__BATCH_KEEP_ON_CANVAS does to one coordinate. */
+static inline double isk__keep_on_canvas(double v, int n)
+{
+    return v > n - 1.0 && v <= (double)n ? n - 1.0 : v;
+}
+
 void isk__draw_batch_rows(isk_canvas *c, const isk_view *v, size_t n, const double *x, const double *y,
-                          isk_color col, isk_blend mode, isk__batch_rule rule, int r0, int r1);
+                          isk_color col, isk_blend mode, unsigned rule, int r0, int r1);
 
 #endif

@@ -89,8 +89,23 @@ static void scene_text(const char *text, const char *name, long frames)
     isk_effect_def_free(&d);
 }
 
+/* The thread ids of this process (Linux: /proc/self/task); at most cap. */
+static int list_tasks(int *ids, int cap)
+{
+    int n = 0;
+    DIR *dir = opendir("/proc/self/task");
+    struct dirent *e;
+    while (dir && (e = readdir(dir)))
+        if (e->d_name[0] != '.' && n < cap)
+            ids[n++] = atoi(e->d_name);
+    if (dir)
+        closedir(dir);
+    return n;
+}
+
 /* The library's workers block every signal, so a program's handler runs on
- * its own threads (Linux: each task's SigBlk mask in /proc). */
+ * its own threads (Linux: each task's SigBlk mask in /proc). Threads that
+ * were there before the effect (a sanitizer's own) are not its workers. */
 static void workers_block_signals(void)
 {
     isk_effect_def d;
@@ -100,34 +115,36 @@ static void workers_block_signals(void)
         return;
     }
     d.threads = 3;
+    int before[64], after[64];
+    const int nbefore = list_tasks(before, 64);
     isk_effect *fx = NULL;
     if (isk_effect_create(&fx, &d, &err) != ISK_OK) {
         CHECK(0, "%s", err.message);
         isk_effect_def_free(&d);
         return;
     }
+    const int nafter = list_tasks(after, 64);
     int workers = 0;
-    DIR *dir = opendir("/proc/self/task");
-    struct dirent *e;
-    while (dir && (e = readdir(dir))) {
-        char path[300], line[256];
-        if (e->d_name[0] == '.' || atoi(e->d_name) == getpid())
+    for (int t = 0; t < nafter; t++) {
+        int old = 0;
+        for (int u = 0; u < nbefore; u++)
+            old |= before[u] == after[t];
+        if (old)
             continue;
-        snprintf(path, sizeof path, "/proc/self/task/%s/status", e->d_name);
+        char path[64], line[256];
+        snprintf(path, sizeof path, "/proc/self/task/%d/status", after[t]);
         FILE *f = fopen(path, "r");
         while (f && fgets(line, sizeof line, f))
             if (!strncmp(line, "SigBlk:", 7)) {
                 unsigned long long mask = strtoull(line + 7, NULL, 16);
                 CHECK((mask >> (SIGINT - 1) & 1) && (mask >> (SIGTERM - 1) & 1),
-                      "worker %s does not block SIGINT and SIGTERM (SigBlk %llx)", e->d_name, mask);
+                      "worker %d does not block SIGINT and SIGTERM (SigBlk %llx)", after[t], mask);
                 workers++;
             }
         if (f)
             fclose(f);
     }
-    if (dir)
-        closedir(dir);
-    CHECK(workers == 2, "found %d worker threads, expected 2", workers);
+    CHECK(workers == 2, "found %d new threads, expected 2 workers", workers);
     isk_effect_destroy(fx);
     isk_effect_def_free(&d);
 }
