@@ -10,6 +10,7 @@
  * `make threads-check SANITIZE=thread`.  Exit status 0 when everything
  * matches. */
 #include <dirent.h>
+#include <pthread.h>
 #include <signal.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -103,9 +104,15 @@ static int list_tasks(int *ids, int cap)
     return n;
 }
 
+static void *nothing(void *arg)
+{
+    return arg;
+}
+
 /* The library's workers block every signal, so a program's handler runs on
- * its own threads (Linux: each task's SigBlk mask in /proc). Threads that
- * were there before the effect (a sanitizer's own) are not its workers. */
+ * its own threads (Linux: each task's SigBlk mask in /proc).  Threads that
+ * were there before the effect are not its workers: ThreadSanitizer starts
+ * its own at the process's first pthread_create, so one is made first. */
 static void workers_block_signals(void)
 {
     isk_effect_def d;
@@ -115,6 +122,9 @@ static void workers_block_signals(void)
         return;
     }
     d.threads = 3;
+    pthread_t t0;
+    if (pthread_create(&t0, NULL, nothing, NULL) == 0)
+        pthread_join(t0, NULL);
     int before[64], after[64];
     const int nbefore = list_tasks(before, 64);
     isk_effect *fx = NULL;
