@@ -56,13 +56,18 @@ static ISK__INLINE void run_pixels(const isk_canvas *c, int r0, int r1, const is
                 X = isk__keep_on_canvas(X, c->width);
                 Y = isk__keep_on_canvas(Y, c->height);
             }
-            if (X >= 0 && Y >= Y0 && X < W && Y < Y1) {
-                off[k] = (size_t)(int)Y * stride + (size_t)(int)X * 4u;
+            /* Without branches: on a band of a threaded draw about half
+             * the points are someone else's, in no order a predictor can
+             * learn.  An outside point writes a harmless offset and is not
+             * counted (the select also keeps NaN and huge values out of the
+             * conversions). */
+            const int in = (X >= 0) & (Y >= Y0) & (X < W) & (Y < Y1);
+            const double Xs = in ? X : 0.0, Ys = in ? Y : Y0;
+            off[k] = (size_t)(int)Ys * stride + (size_t)(int)Xs * 4u;
 #if defined(__GNUC__)
-                __builtin_prefetch(c->pixels + off[k], 1);
+            __builtin_prefetch(c->pixels + off[k], 1);
 #endif
-                k++;
-            }
+            k += (size_t)in;
         }
         for (size_t i = 0; i < k; i++)
             isk__px_lut(c->pixels + off[i], &t, 255, mode);
@@ -97,7 +102,7 @@ static ISK__INLINE void weight_one(dot_block *b, int k, double W1, double Y0, do
 {
     double X = b->x[k], Y = b->y[k];
     /* the whole 2x2 block on the canvas: floor(X) in [0, width-2] */
-    b->fast[k] = X >= 0.0 && X < W1 && Y >= Y0 && Y < H1;
+    b->fast[k] = (X >= 0.0) & (X < W1) & (Y >= Y0) & (Y < H1);
     if (!b->fast[k])
         return;
     int ix = (int)X, iy = (int)Y; /* >= 0: truncation is floor */
@@ -253,7 +258,7 @@ static ISK__INLINE void run_dots_blocked(const isk_canvas *c, int r0, int r1, co
             const double Y = keep ? isk__keep_on_canvas(Y0k, c->height) : Y0k;
             b.y[kept] = Y;
             b.ix[kept] = k; /* the point's place in the block, until the weights overwrite it */
-            kept += Y > lo && Y < hi;
+            kept += (Y > lo) & (Y < hi); /* no branch: which points a band keeps is random */
         }
         for (int k = 0; k < kept; k++) {
             const double xi = x[i0 + (size_t)b.ix[k]];
