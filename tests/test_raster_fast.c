@@ -346,6 +346,90 @@ Test(raster_fast, bands_of_rows_equal_the_whole_batch)
     free(y);
 }
 
+/* A threaded draw's sorting (isk__batch_bin): each band drawing only the
+ * points binned to it, the store split in shares binned one after the other,
+ * gives the bytes of the whole batch, for every rule, with and without
+ * keeping points on the canvas, on views that put points on, near and far
+ * off the canvas (and NaN: rnd_coord). */
+Test(raster_fast, binned_bands_equal_the_whole_batch)
+{
+    isk_rng r;
+    isk_rng_seed(&r, 12);
+    enum { MAXN = 700, MAXB = 8 };
+    double *x = malloc(MAXN * sizeof *x), *y = malloc(MAXN * sizeof *y);
+    uint16_t *code = malloc(MAXN * sizeof *code);
+    uint32_t *idx = malloc(MAXN * 5 * sizeof *idx); /* a point reaches at most 5 rows */
+    cr_assert(x && y && code && idx);
+    for (int n = 0; n < 600; n++) {
+        int w = rnd_size(&r), h = rnd_size(&r);
+        pair p = make_pair(&r, w, h);
+        isk_view v;
+        if (n % 2)
+            cr_assert_eq(isk_view_camera(&v, w, h, isk_rng_range(&r, 0.5, 20), isk_rng_range(&r, -2, 2),
+                                         isk_rng_range(&r, -2, 2)),
+                         ISK_OK);
+        else
+            cr_assert_eq(isk_view_window(&v, w, h, -3, 3 + isk_rng_uniform(&r), -2, 2), ISK_OK);
+        size_t m = 1 + isk_rng_below(&r, MAXN);
+        for (size_t i = 0; i < m; i++) {
+            double X = rnd_coord(&r, w), Y = rnd_coord(&r, h);
+            isk_view_to_world(&v, X, Y, &x[i], &y[i]);
+        }
+        isk_color col = rnd_color(&r);
+        isk_blend mode = MODES[isk_rng_below(&r, 3)];
+        unsigned rule = isk_rng_below(&r, 3) | (isk_rng_below(&r, 2) ? ISK__BATCH_KEEP_ON_CANVAS : 0u);
+        isk__draw_batch_rows(&p.c[0], &v, m, x, y, col, mode, rule, 0, h);
+        /* nb bands from sorted random cuts (repeats make empty bands) */
+        int cut[MAXB + 1], nb = 1 + (int)isk_rng_below(&r, MAXB);
+        cut[0] = 0;
+        cut[nb] = h;
+        for (int k = 1; k < nb; k++)
+            cut[k] = (int)isk_rng_below(&r, (uint32_t)h + 1);
+        for (int i = 1; i < nb; i++)
+            for (int j = i; j > 1 && cut[j - 1] > cut[j]; j--) {
+                int t = cut[j];
+                cut[j] = cut[j - 1];
+                cut[j - 1] = t;
+            }
+        for (int i = 2; i < nb; i++)
+            cr_assert_leq(cut[i - 1], cut[i]);
+        uint8_t *band_of_row = malloc((size_t)h);
+        cr_assert(band_of_row);
+        for (int b = 0; b < nb; b++)
+            for (int row = cut[b]; row < cut[b + 1]; row++)
+                band_of_row[row] = (uint8_t)b;
+        /* two shares, binned apart; band b's list: share 0's, then share 1's */
+        size_t count[2][MAXB] = {{0}}, split = isk_rng_below(&r, (uint32_t)m + 1);
+        isk__batch_bin(&v, h, y, 0, split, band_of_row, code, count[0]);
+        isk__batch_bin(&v, h, y, split, m, band_of_row, code, count[1]);
+        size_t pos[2][MAXB], start[MAXB + 1], total = 0;
+        for (int b = 0; b < nb; b++) {
+            start[b] = total;
+            for (int t = 0; t < 2; t++) {
+                pos[t][b] = total;
+                total += count[t][b];
+            }
+        }
+        start[nb] = total;
+        cr_assert_leq(total, (size_t)MAXN * 5);
+        for (size_t i = 0; i < m; i++) {
+            const int t = i >= split;
+            if (code[i] != ISK__BIN_NONE)
+                for (unsigned b = code[i] & 255u; b <= (unsigned)code[i] >> 8; b++)
+                    idx[pos[t][b]++] = (uint32_t)i;
+        }
+        for (int b = nb - 1; b >= 0; b--) /* last to first: bands are independent */
+            isk__draw_batch_list_rows(&p.c[1], &v, idx + start[b], start[b + 1] - start[b], x, y, col, mode,
+                                      rule, cut[b], cut[b + 1]);
+        free(band_of_row);
+        check_pair(&p, "binned bands", n);
+    }
+    free(x);
+    free(y);
+    free(code);
+    free(idx);
+}
+
 static double rnd_radius(isk_rng *r)
 {
     switch (isk_rng_below(r, 16)) {

@@ -195,6 +195,7 @@ void isk_effect_destroy(isk_effect *e)
     free(e->pots);
     free(e->pot_force);
     isk_sprite_cache_destroy(e->sprites);
+    fx_bins_free(&e->bins);
     isk_pool_destroy(e->pool);
     isk_effect_def_free(&e->def);
     free(e);

@@ -1,26 +1,43 @@
 /* A group's draw on the effect's threads: the canvas cut into bands of
- * rows, one per thread, each drawing every particle but blending only its
- * own rows (the draw functions of effect_render.c).  Each pixel then sees
- * the same particles in the same order as on one thread, so the bytes are
- * the same for every thread count and every choice of cuts; the cuts are
- * only chosen to share the work evenly. */
+ * rows, one per thread, each blending only its own rows (the draw functions
+ * of effect_render.c).  Each pixel then sees the same particles in the same
+ * order as on one thread, so the bytes are the same for every thread count
+ * and every choice of cuts; the cuts are only chosen to share the work
+ * evenly.
+ *
+ * Dots and pixels reach at most a row beyond their own, so their particles
+ * are first sorted into the bands (world_batch.h's isk__batch_bin, on the
+ * threads, each over its share of the store; stable, so each band keeps
+ * index order), and a band's thread then reads only its own particles
+ * instead of every particle of the store.  Sprites, and any group when the
+ * sorting's memory cannot be had, give every band the whole store. */
 #include <stdlib.h>
+#include <string.h>
 
 #include "effect_internal.h"
 #include "sim/pool.h"
+#include "view/world_batch.h"
 
 /* Below this many particles a group is drawn on the caller alone (the
  * threads' start costs more than they save). */
 #define FX_BAND_MIN_PARTICLES 16384
 /* Particles sampled to place the cuts. */
 #define FX_BAND_SAMPLES 1024
+/* isk__batch_bin's codes hold band numbers up to 254. */
+#define FX_BIN_MAX_BANDS 255
 
 typedef struct band_job {
     isk_effect *e;
     isk_canvas *c;
     fx_group *g;
+    int nb;
     fx_band band[ISK_POOL_MAX_THREADS];
     isk_status status[ISK_POOL_MAX_THREADS];
+    /* sorting into bands: share t of the store is [t n / nb, (t+1) n / nb)
+     * (as many shares as bands, one per thread) */
+    uint8_t *band_of_row;          /* the canvas's height */
+    size_t *count;                 /* [t * nb + b]: share t's particles in band b */
+    size_t *pos;                   /* [t * nb + b]: where share t writes them in band b */
 } band_job;
 
 static void run_band(void *ctx, int worker, size_t item)
@@ -28,6 +45,36 @@ static void run_band(void *ctx, int worker, size_t item)
     (void)worker;
     band_job *j = ctx;
     j->status[item] = j->g->draw(j->e, j->c, j->g, &j->band[item]);
+}
+
+static size_t share_start(const band_job *j, size_t t)
+{
+    return (size_t)((unsigned long long)j->g->store.count * t / (size_t)j->nb);
+}
+
+static void bin_share(void *ctx, int worker, size_t t)
+{
+    (void)worker;
+    band_job *j = ctx;
+    isk__batch_bin(&j->e->view, j->c->height, j->g->store.y, share_start(j, t), share_start(j, t + 1),
+                   j->band_of_row, j->e->bins.code, j->count + t * (size_t)j->nb);
+}
+
+static void fill_share(void *ctx, int worker, size_t t)
+{
+    (void)worker;
+    band_job *j = ctx;
+    const uint16_t *code = j->e->bins.code;
+    uint32_t *idx = j->e->bins.idx;
+    size_t pos[FX_BIN_MAX_BANDS]; /* a copy: the shares' positions share cache lines */
+    memcpy(pos, j->pos + t * (size_t)j->nb, (size_t)j->nb * sizeof *pos);
+    for (size_t i = share_start(j, t), end = share_start(j, t + 1); i < end; i++) {
+        const unsigned k = code[i];
+        if (k == ISK__BIN_NONE)
+            continue;
+        for (unsigned b = k & 255u; b <= k >> 8; b++)
+            idx[pos[b]++] = (uint32_t)i;
+    }
 }
 
 static int cmp_double(const void *a, const void *b)
@@ -60,12 +107,74 @@ static void place_cuts(const isk_effect *e, const fx_group *g, const isk_canvas 
     }
 }
 
-isk_status fx_draw_bands(isk_effect *e, isk_canvas *c, fx_group *g, const fx_band *whole)
+static int grow(void **p, size_t *cap, size_t n, size_t size)
+{
+    if (*cap >= n)
+        return 1;
+    void *q = n <= SIZE_MAX / size ? realloc(*p, n * size) : NULL;
+    if (!q)
+        return 0;
+    *p = q;
+    *cap = n;
+    return 1;
+}
+
+void fx_bins_free(fx_bins *b)
+{
+    free(b->code);
+    free(b->idx);
+    memset(b, 0, sizeof *b);
+}
+
+/* Sorts the group's particles into the job's bands and points each band at
+ * its list.  0 when the memory cannot be had (then every band reads the
+ * whole store, as without sorting: same bytes). */
+static int sort_into_bands(band_job *j)
+{
+    fx_bins *bins = &j->e->bins;
+    const size_t n = j->g->store.count, nb = (size_t)j->nb;
+    if (j->nb > FX_BIN_MAX_BANDS || n > UINT32_MAX || !grow((void **)&bins->code, &bins->code_cap, n, 2))
+        return 0;
+    j->band_of_row = malloc((size_t)j->c->height);
+    j->count = calloc(nb * nb, sizeof *j->count);
+    j->pos = malloc(nb * nb * sizeof *j->pos);
+    int ok = j->band_of_row && j->count && j->pos;
+    if (ok) {
+        for (int b = 0; b < j->nb; b++)
+            memset(j->band_of_row + j->band[b].r0, b, (size_t)(j->band[b].r1 - j->band[b].r0));
+        isk_pool_for(j->e->pool, nb, 1, bin_share, j);
+        /* band b's list: share 0's particles, then share 1's, ...: index order */
+        size_t total = 0;
+        for (size_t b = 0; b < nb; b++) {
+            j->band[b].nlist = 0;
+            for (size_t t = 0; t < nb; t++) {
+                j->pos[t * nb + b] = total;
+                total += j->count[t * nb + b];
+                j->band[b].nlist += j->count[t * nb + b];
+            }
+        }
+        ok = grow((void **)&bins->idx, &bins->idx_cap, total ? total : 1, 4);
+        if (ok) {
+            size_t start = 0;
+            for (size_t b = 0; b < nb; b++) {
+                j->band[b].list = bins->idx + start;
+                start += j->band[b].nlist;
+            }
+            isk_pool_for(j->e->pool, nb, 1, fill_share, j);
+        }
+    }
+    free(j->band_of_row);
+    free(j->count);
+    free(j->pos);
+    return ok;
+}
+
+isk_status fx_draw_bands(isk_effect *e, isk_canvas *c, fx_group *g, const fx_band *whole, int sortable)
 {
     const int threads = e->pool ? isk_pool_threads(e->pool) : 1;
     if (threads < 2 || g->store.count < FX_BAND_MIN_PARTICLES || c->height < 2 * threads)
         return g->draw(e, c, g, whole);
-    band_job *j = malloc(sizeof *j);
+    band_job *j = calloc(1, sizeof *j);
     if (!j) /* the draw itself needs no memory: do it on one thread */
         return g->draw(e, c, g, whole);
     j->e = e;
@@ -73,14 +182,21 @@ isk_status fx_draw_bands(isk_effect *e, isk_canvas *c, fx_group *g, const fx_ban
     j->g = g;
     int cut[ISK_POOL_MAX_THREADS + 1];
     place_cuts(e, g, c, threads, cut);
-    for (int k = 0; k < threads; k++) {
-        j->band[k] = *whole;
-        j->band[k].r0 = cut[k];
-        j->band[k].r1 = cut[k + 1];
-    }
-    isk_pool_for(e->pool, (size_t)threads, 2, run_band, j);
+    /* empty bands (cuts that coincide where the particles crowd into a
+     * few rows) are dropped: a point then reaches at most 5 bands */
+    for (int k = 0; k < threads; k++)
+        if (cut[k] < cut[k + 1]) {
+            j->band[j->nb] = *whole;
+            j->band[j->nb].r0 = cut[k];
+            j->band[j->nb].r1 = cut[k + 1];
+            j->nb++;
+        }
+    if (!(sortable && sort_into_bands(j)))
+        for (int k = 0; k < j->nb; k++)
+            j->band[k].list = NULL;
+    isk_pool_for(e->pool, (size_t)j->nb, 2, run_band, j);
     isk_status s = ISK_OK;
-    for (int k = 0; k < threads && s == ISK_OK; k++)
+    for (int k = 0; k < j->nb && s == ISK_OK; k++)
         s = j->status[k];
     free(j);
     return s;

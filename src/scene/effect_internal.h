@@ -50,8 +50,18 @@ typedef struct fx_step_kind {
 /* What one band of a group's draw needs (effect_bands.c). */
 typedef struct fx_band {
     int r0, r1;                                       /* the canvas rows [r0, r1) it blends */
+    const uint32_t *list;                             /* NULL: every particle; else these, */
+    size_t nlist;                                     /* in this order (effect_bands.c) */
     const isk_sprite *sprite[ISK_SPRITE_MAX_SIZE + 1]; /* by whole-pixel size (sprite groups) */
 } fx_band;
+
+/* The threaded draw's sorting of particles into bands (effect_bands.c):
+ * kept between frames, grown as needed. */
+typedef struct fx_bins {
+    uint16_t *code;                /* per particle: its first and last band */
+    uint32_t *idx;                 /* every band's particles, band after band */
+    size_t code_cap, idx_cap;
+} fx_bins;
 
 typedef isk_status (*fx_draw_fn)(isk_effect *e, isk_canvas *c, fx_group *g, const fx_band *b);
 
@@ -113,6 +123,7 @@ struct isk_effect {
     long frame;
     double last_frame_time;        /* potentials move by this at the next step */
     isk_sprite_cache *sprites;
+    fx_bins bins;
 };
 
 /* effect_check.c: validates a whole definition; messages name the item. */
@@ -159,7 +170,8 @@ fx_draw_fn fx_choose_draw(const fx_group *g);
 /* effect_bands.c: g->draw over the canvas, in bands of rows on the
  * effect's threads when the group is big (whole: the band of the canvas,
  * with anything prepared for the draw). */
-isk_status fx_draw_bands(isk_effect *e, isk_canvas *c, fx_group *g, const fx_band *whole);
+isk_status fx_draw_bands(isk_effect *e, isk_canvas *c, fx_group *g, const fx_band *whole, int sortable);
+void fx_bins_free(fx_bins *b);
 isk_status fx_bake_ramps(fx_group *g, isk_error *err);
 void fx_free_ramps(fx_group *g);
 

@@ -161,7 +161,9 @@ static isk_status draw_styled_dots(isk_effect *e, isk_canvas *c, fx_group *g, co
     const isk_particles *p = &g->store;
     const isk_blend blend = g->def->blend;
     const int browser = g->def->draw == ISK_DRAW_DOT_BROWSER;
-    for (size_t i = 0; i < p->count; i++) {
+    const size_t n = b->list ? b->nlist : p->count;
+    for (size_t k = 0; k < n; k++) {
+        const size_t i = b->list ? b->list[k] : k;
         double X, Y, mult;
         isk_view_to_screen(v, p->x[i], p->y[i], &X, &Y);
         if (g->keep_on_canvas) {
@@ -183,15 +185,23 @@ static isk_status draw_dots(isk_effect *e, isk_canvas *c, fx_group *g, const fx_
     unsigned rule = g->def->draw == ISK_DRAW_DOT_BROWSER ? ISK__BATCH_DOT_BROWSER
                     : g->def->draw == ISK_DRAW_PIXEL     ? ISK__BATCH_PIXEL
                                                          : ISK__BATCH_DOT;
-    isk__draw_batch_rows(c, &e->view, g->store.count, g->store.x, g->store.y, g->def->color, g->def->blend,
-                         rule | (g->keep_on_canvas ? ISK__BATCH_KEEP_ON_CANVAS : 0u), b->r0, b->r1);
+    if (g->keep_on_canvas)
+        rule |= ISK__BATCH_KEEP_ON_CANVAS;
+    if (b->list)
+        isk__draw_batch_list_rows(c, &e->view, b->list, b->nlist, g->store.x, g->store.y, g->def->color,
+                                  g->def->blend, rule, b->r0, b->r1);
+    else
+        isk__draw_batch_rows(c, &e->view, g->store.count, g->store.x, g->store.y, g->def->color, g->def->blend,
+                             rule, b->r0, b->r1);
     return ISK_OK;
 }
 
 static isk_status draw_styled_pixels(isk_effect *e, isk_canvas *c, fx_group *g, const fx_band *b)
 {
     const isk_particles *p = &g->store;
-    for (size_t i = 0; i < p->count; i++) {
+    const size_t n = b->list ? b->nlist : p->count;
+    for (size_t k = 0; k < n; k++) {
+        const size_t i = b->list ? b->list[k] : k;
         double X, Y, mult;
         isk_view_to_screen(&e->view, p->x[i], p->y[i], &X, &Y);
         if (g->keep_on_canvas) {
@@ -315,7 +325,10 @@ static isk_status render_group(isk_effect *e, isk_canvas *c, fx_group *g)
     }
     if (g->draw == draw_discs)
         return g->draw(e, c, g, &whole);
-    return fx_draw_bands(e, c, g, &whole);
+    /* dots and pixels reach at most a row beyond their own (the margin
+     * world_batch.h's binning keeps), so their bands can take only their
+     * own particles; sprites reach far and read them all */
+    return fx_draw_bands(e, c, g, &whole, g->def->draw != ISK_DRAW_SPRITE);
 }
 
 isk_status fx_render(isk_effect *e, isk_canvas *c)

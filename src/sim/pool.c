@@ -9,8 +9,10 @@
 #include <stdlib.h>
 #include <unistd.h>
 
-/* Items a thread takes at a time: small enough to balance the load, large
- * enough that the counter is rarely contended. */
+/* Items a thread takes at a time, at most: small enough to balance the
+ * load, large enough that the counter is rarely contended.  A job of few
+ * items (a draw's bands: one per thread) is handed out one at a time, or
+ * the first thread to come would take them all. */
 enum { CHUNK = 4 };
 
 struct isk_pool {
@@ -22,7 +24,7 @@ struct isk_pool {
     /* the current job (set under the lock before generation moves on) */
     isk_pool_fn fn;
     void *ctx;
-    size_t n;
+    size_t n, chunk;
     atomic_size_t next;        /* the first item nobody has taken */
     int generation;            /* a new job bumps it */
     int running;               /* workers still inside the current job */
@@ -37,10 +39,10 @@ typedef struct worker_arg {
 static void take_items(isk_pool *p, int worker)
 {
     for (;;) {
-        size_t i = atomic_fetch_add_explicit(&p->next, CHUNK, memory_order_relaxed);
+        size_t i = atomic_fetch_add_explicit(&p->next, p->chunk, memory_order_relaxed);
         if (i >= p->n)
             return;
-        size_t end = i + CHUNK < p->n ? i + CHUNK : p->n;
+        size_t end = i + p->chunk < p->n ? i + p->chunk : p->n;
         for (; i < end; i++)
             p->fn(p->ctx, worker, i);
     }
@@ -164,6 +166,10 @@ void isk_pool_for(isk_pool *p, size_t n, size_t min_items, isk_pool_fn fn, void 
     p->fn = fn;
     p->ctx = ctx;
     p->n = n;
+    /* every thread can get at least four chunks */
+    p->chunk = n / ((size_t)p->threads * 4) < CHUNK ? n / ((size_t)p->threads * 4) : CHUNK;
+    if (p->chunk < 1)
+        p->chunk = 1;
     atomic_store_explicit(&p->next, 0, memory_order_relaxed);
     p->running = p->threads - 1;
     p->generation++;

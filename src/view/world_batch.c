@@ -27,9 +27,14 @@
  * isk__px_lut(d, t, 255, mode) is isk__px(d, col, mode) (div255(a*255) = a). */
 #define PIXEL_BLOCK 64
 
+/* The batch's k-th point: k itself, or the k-th entry of a list of indices
+ * (a band's points, isk__draw_batch_list_rows).  `list` is a constant of
+ * each inlined copy, so the plain batch pays nothing for it. */
+#define POINT(list, k) ((list) ? (size_t)(list)[k] : (size_t)(k))
+
 static ISK__INLINE void run_pixels(const isk_canvas *c, int r0, int r1, const isk_view *v, size_t n,
-                                   const double *x, const double *y, isk_color col, int camera, int keep,
-                                   isk_blend mode)
+                                   const uint32_t *list, const double *x, const double *y, isk_color col,
+                                   int camera, int keep, isk_blend mode)
 {
     /* isk_view_to_screen: camera  X = w/2 + a*(x + tx),  Y = h/2 - a*(y + ty);
      *                     window  X = sx*x + px,          Y = sy*y + py. */
@@ -44,13 +49,14 @@ static ISK__INLINE void run_pixels(const isk_canvas *c, int r0, int r1, const is
         const size_t m = n - i0 < PIXEL_BLOCK ? n - i0 : PIXEL_BLOCK;
         size_t k = 0;
         for (size_t i = 0; i < m; i++) {
+            const size_t j = POINT(list, i0 + i);
             double X, Y;
             if (camera) {
-                X = hw + a * (x[i0 + i] + tx);
-                Y = hh - a * (y[i0 + i] + ty);
+                X = hw + a * (x[j] + tx);
+                Y = hh - a * (y[j] + ty);
             } else {
-                X = sx * x[i0 + i] + px;
-                Y = sy * y[i0 + i] + py;
+                X = sx * x[j] + px;
+                Y = sy * y[j] + py;
             }
             if (keep) { /* a batch constant: the branch is hoisted */
                 X = isk__keep_on_canvas(X, c->width);
@@ -235,8 +241,9 @@ static ISK__INLINE void px2(uint8_t *p, isk_color col, const isk__cov_lut *lut, 
 }
 
 static ISK__INLINE void run_dots_blocked(const isk_canvas *c, int r0, int r1, const isk_view *v, size_t n,
-                                         const double *x, const double *y, isk_color col, const isk__cov_lut *lut,
-                                         int camera, int browser, int keep, isk_blend mode)
+                                         const uint32_t *list, const double *x, const double *y, isk_color col,
+                                         const isk__cov_lut *lut, int camera, int browser, int keep,
+                                         isk_blend mode)
 {
     const double hw = v->width / 2.0, hh = v->height / 2.0, a = v->a, tx = v->tx, ty = v->ty;
     const double sx = v->sx, sy = v->sy, px = v->px, py = v->py;
@@ -254,14 +261,15 @@ static ISK__INLINE void run_dots_blocked(const isk_canvas *c, int r0, int r1, co
         const int m = n - i0 < BLOCK ? (int)(n - i0) : BLOCK;
         int kept = 0;
         for (int k = 0; k < m; k++) {
-            const double Y0k = camera ? hh - a * (y[i0 + k] + ty) : sy * y[i0 + k] + py;
+            const double yk = y[POINT(list, i0 + k)];
+            const double Y0k = camera ? hh - a * (yk + ty) : sy * yk + py;
             const double Y = keep ? isk__keep_on_canvas(Y0k, c->height) : Y0k;
             b.y[kept] = Y;
             b.ix[kept] = k; /* the point's place in the block, until the weights overwrite it */
             kept += (Y > lo) & (Y < hi); /* no branch: which points a band keeps is random */
         }
         for (int k = 0; k < kept; k++) {
-            const double xi = x[i0 + (size_t)b.ix[k]];
+            const double xi = x[POINT(list, i0 + (size_t)b.ix[k])];
             const double X = camera ? hw + a * (xi + tx) : sx * xi + px;
             b.x[k] = keep ? isk__keep_on_canvas(X, c->width) : X;
         }
@@ -295,30 +303,32 @@ static ISK__INLINE void run_dots_blocked(const isk_canvas *c, int r0, int r1, co
     }
 }
 
-static ISK__INLINE void run_kind(const isk_canvas *c, int r0, int r1, const isk_view *v, size_t n, const double *x,
-                                 const double *y, isk_color col, const isk__cov_lut *lut, isk__batch_rule rule,
-                                 int keep, isk_blend mode)
+static ISK__INLINE void run_kind(const isk_canvas *c, int r0, int r1, const isk_view *v, size_t n,
+                                 const uint32_t *list, const double *x, const double *y, isk_color col,
+                                 const isk__cov_lut *lut, isk__batch_rule rule, int keep, isk_blend mode)
 {
-    if (rule == ISK__BATCH_DOT && v->kind == ISK_VIEW_CAMERA)
-        run_dots_blocked(c, r0, r1, v, n, x, y, col, lut, 1, 0, keep, mode);
+    const int camera = v->kind == ISK_VIEW_CAMERA;
+    if (rule == ISK__BATCH_DOT && camera)
+        run_dots_blocked(c, r0, r1, v, n, list, x, y, col, lut, 1, 0, keep, mode);
     else if (rule == ISK__BATCH_DOT)
-        run_dots_blocked(c, r0, r1, v, n, x, y, col, lut, 0, 0, keep, mode);
-    else if (rule == ISK__BATCH_DOT_BROWSER && v->kind == ISK_VIEW_CAMERA)
-        run_dots_blocked(c, r0, r1, v, n, x, y, col, lut, 1, 1, keep, mode);
+        run_dots_blocked(c, r0, r1, v, n, list, x, y, col, lut, 0, 0, keep, mode);
+    else if (rule == ISK__BATCH_DOT_BROWSER && camera)
+        run_dots_blocked(c, r0, r1, v, n, list, x, y, col, lut, 1, 1, keep, mode);
     else if (rule == ISK__BATCH_DOT_BROWSER)
-        run_dots_blocked(c, r0, r1, v, n, x, y, col, lut, 0, 1, keep, mode);
-    else if (v->kind == ISK_VIEW_CAMERA)
-        run_pixels(c, r0, r1, v, n, x, y, col, 1, keep, mode);
+        run_dots_blocked(c, r0, r1, v, n, list, x, y, col, lut, 0, 1, keep, mode);
+    else if (camera)
+        run_pixels(c, r0, r1, v, n, list, x, y, col, 1, keep, mode);
     else
-        run_pixels(c, r0, r1, v, n, x, y, col, 0, keep, mode);
+        run_pixels(c, r0, r1, v, n, list, x, y, col, 0, keep, mode);
 }
 
 /* Batches this short skip the 256-entry table: building it would cost
  * more than it saves. */
 #define LUT_MIN_BATCH 64
 
-static ISK__INLINE void run_rule(const isk_canvas *c, int r0, int r1, const isk_view *v, size_t n, const double *x,
-                                 const double *y, isk_color col, unsigned rule, isk_blend mode)
+static ISK__INLINE void run_rule(const isk_canvas *c, int r0, int r1, const isk_view *v, size_t n,
+                                 const uint32_t *list, const double *x, const double *y, isk_color col,
+                                 unsigned rule, isk_blend mode)
 {
     const int keep = (rule & ISK__BATCH_KEEP_ON_CANVAS) != 0;
     rule &= ~(unsigned)ISK__BATCH_KEEP_ON_CANVAS;
@@ -329,17 +339,17 @@ static ISK__INLINE void run_rule(const isk_canvas *c, int r0, int r1, const isk_
         if (n >= LUT_MIN_BATCH) {
             isk__cov_lut_init(&lut, col);
             if (rule == ISK__BATCH_DOT)
-                run_kind(c, r0, r1, v, n, x, y, col, &lut, ISK__BATCH_DOT, keep, mode);
+                run_kind(c, r0, r1, v, n, list, x, y, col, &lut, ISK__BATCH_DOT, keep, mode);
             else
-                run_kind(c, r0, r1, v, n, x, y, col, &lut, ISK__BATCH_DOT_BROWSER, keep, mode);
+                run_kind(c, r0, r1, v, n, list, x, y, col, &lut, ISK__BATCH_DOT_BROWSER, keep, mode);
         } else if (rule == ISK__BATCH_DOT) {
-            run_kind(c, r0, r1, v, n, x, y, col, NULL, ISK__BATCH_DOT, keep, mode);
+            run_kind(c, r0, r1, v, n, list, x, y, col, NULL, ISK__BATCH_DOT, keep, mode);
         } else {
-            run_kind(c, r0, r1, v, n, x, y, col, NULL, ISK__BATCH_DOT_BROWSER, keep, mode);
+            run_kind(c, r0, r1, v, n, list, x, y, col, NULL, ISK__BATCH_DOT_BROWSER, keep, mode);
         }
         break;
     case ISK__BATCH_PIXEL:
-        run_kind(c, r0, r1, v, n, x, y, col, NULL, ISK__BATCH_PIXEL, keep, mode);
+        run_kind(c, r0, r1, v, n, list, x, y, col, NULL, ISK__BATCH_PIXEL, keep, mode);
         break;
     default:
         break;
@@ -357,7 +367,52 @@ void isk__draw_batch_rows(isk_canvas *c, const isk_view *v, size_t n, const doub
         r1 = c->height;
     if (r0 >= r1)
         return;
-    ISK__BLEND_DISPATCH(mode, run_rule, c, r0, r1, v, n, x, y, col, rule);
+    ISK__BLEND_DISPATCH(mode, run_rule, c, r0, r1, v, n, NULL, x, y, col, rule);
+}
+
+void isk__draw_batch_list_rows(isk_canvas *c, const isk_view *v, const uint32_t *list, size_t m, const double *x,
+                               const double *y, isk_color col, isk_blend mode, unsigned rule, int r0, int r1)
+{
+    if (!c || !c->pixels || !v || !list || !x || !y || m == 0)
+        return;
+    if (r0 < 0)
+        r0 = 0;
+    if (r1 > c->height)
+        r1 = c->height;
+    if (r0 >= r1)
+        return;
+    ISK__BLEND_DISPATCH(mode, run_rule, c, r0, r1, v, m, list, x, y, col, rule);
+}
+
+void isk__batch_bin(const isk_view *v, int height, const double *y, size_t i0, size_t i1,
+                    const uint8_t *band_of_row, uint16_t *code, size_t *count)
+{
+    const double hh = v->height / 2.0, a = v->a, ty = v->ty, sy = v->sy, py = v->py;
+    const int camera = v->kind == ISK_VIEW_CAMERA;
+    const double lo = -(ISK__BIN_MARGIN + 1.0), hi = height + (double)ISK__BIN_MARGIN;
+    /* counted here and added at the end: the threads' count arrays share
+     * cache lines, and a store to one every point would bounce them */
+    size_t mine[256] = {0};
+    unsigned nb = 0;
+    for (size_t i = i0; i < i1; i++) {
+        const double Y = camera ? hh - a * (y[i] + ty) : sy * y[i] + py;
+        uint16_t k = ISK__BIN_NONE;
+        if (Y > lo && Y < hi) { /* also false for NaN; keeps the conversion defined */
+            const int fy = (int)(Y + (ISK__BIN_MARGIN + 1.0)) - (ISK__BIN_MARGIN + 1); /* floor */
+            const int rlo = fy - ISK__BIN_MARGIN < 0 ? 0 : fy - ISK__BIN_MARGIN;
+            const int rhi = fy + ISK__BIN_MARGIN >= height ? height - 1 : fy + ISK__BIN_MARGIN;
+            if (rlo <= rhi) {
+                const unsigned first = band_of_row[rlo], last = band_of_row[rhi];
+                k = (uint16_t)(first | last << 8);
+                nb = last + 1 > nb ? last + 1 : nb;
+                for (unsigned b = first; b <= last; b++)
+                    mine[b]++;
+            }
+        }
+        code[i] = k;
+    }
+    for (unsigned b = 0; b < nb; b++)
+        count[b] += mine[b];
 }
 
 static void draw_batch(isk_canvas *c, const isk_view *v, size_t n, const double *x, const double *y,

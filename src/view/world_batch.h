@@ -12,6 +12,8 @@
 #ifndef ISKRA_VIEW_WORLD_BATCH_H
 #define ISKRA_VIEW_WORLD_BATCH_H
 
+#include <stdint.h>
+
 #include "iskra/view.h"
 
 typedef enum isk__batch_rule {
@@ -34,5 +36,26 @@ static inline double isk__keep_on_canvas(double v, int n)
 
 void isk__draw_batch_rows(isk_canvas *c, const isk_view *v, size_t n, const double *x, const double *y,
                           isk_color col, isk_blend mode, unsigned rule, int r0, int r1);
+
+/* The same for the points list[0..m) only, in that order (a band's points,
+ * which isk__batch_bin found). */
+void isk__draw_batch_list_rows(isk_canvas *c, const isk_view *v, const uint32_t *list, size_t m, const double *x,
+                               const double *y, isk_color col, isk_blend mode, unsigned rule, int r0, int r1);
+
+/* ---- binning a batch by bands of rows (a threaded draw) ------------------
+ * So that a band's thread reads only its own points, the points are first
+ * sorted into bands (stably: each band keeps index order).  A point goes to
+ * every band holding one of the rows floor(Y) - ISK__BIN_MARGIN ..
+ * floor(Y) + ISK__BIN_MARGIN (Y its screen row, the kernels' arithmetic):
+ * a superset of the rows any dot rule or pixel can touch, so the kernels'
+ * own row test, run again on the band, decides exactly as on the whole
+ * batch, and the bytes are the same.  band_of_row[r] is the band of canvas
+ * row r (bands in row order, at most 255 of them).  code[i] gets
+ * first | last << 8, the bands the point goes to, or ISK__BIN_NONE;
+ * count[b] grows by the points band b gets. */
+#define ISK__BIN_MARGIN 2
+#define ISK__BIN_NONE 0xFFFFu
+void isk__batch_bin(const isk_view *v, int height, const double *y, size_t i0, size_t i1,
+                    const uint8_t *band_of_row, uint16_t *code, size_t *count);
 
 #endif

@@ -12,13 +12,16 @@
 #include <dirent.h>
 #include <pthread.h>
 #include <signal.h>
+#include <stdatomic.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <time.h>
 #include <unistd.h>
 
 #include "iskra/effect.h"
 #include "iskra/scene.h"
+#include "sim/pool.h"
 
 static const int THREADS[] = {1, 2, 3, 7};
 #define NT (int)(sizeof THREADS / sizeof THREADS[0])
@@ -159,9 +162,49 @@ static void workers_block_signals(void)
     isk_effect_def_free(&d);
 }
 
+/* A job of as many items as threads runs them all at once, one a thread
+ * (a draw's bands): each item waits until every item has started.  Handed
+ * out in chunks of several, the first thread took them all, so the draw's
+ * bands ran one after the other. */
+typedef struct together {
+    atomic_int started;
+    int ok[3];
+} together;
+
+static double seconds(void)
+{
+    struct timespec t;
+    clock_gettime(CLOCK_MONOTONIC, &t);
+    return (double)t.tv_sec + 1e-9 * (double)t.tv_nsec;
+}
+
+static void wait_for_all(void *ctx, int worker, size_t item)
+{
+    (void)worker;
+    together *t = ctx;
+    atomic_fetch_add(&t->started, 1);
+    const double t0 = seconds();
+    while (atomic_load(&t->started) < 3 && seconds() - t0 < 10.0)
+        ;
+    t->ok[item] = atomic_load(&t->started) == 3;
+}
+
+static void items_run_together(void)
+{
+    isk_pool *pool = NULL;
+    CHECK(isk_pool_create(&pool, 3) == ISK_OK, "pool of 3");
+    if (!pool)
+        return;
+    together t = {.started = 0};
+    isk_pool_for(pool, 3, 2, wait_for_all, &t);
+    CHECK(t.ok[0] && t.ok[1] && t.ok[2], "3 items on 3 threads did not run at the same time");
+    isk_pool_destroy(pool);
+}
+
 int main(int argc, char **argv)
 {
     workers_block_signals();
+    items_run_together();
     /* --quick: the large scenes only (ThreadSanitizer is slow) */
     int quick = argc > 1 && !strcmp(argv[1], "--quick");
     for (int i = 0; !quick && i < isk_scene_builtin_count(); i++) {
