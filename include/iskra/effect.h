@@ -444,11 +444,11 @@ isk_status isk_effect_remove_force(isk_effect *e, const char *name, isk_error *e
 
 /* Threads: how many the effect steps and draws on, and a new number
  * (1..256; 0: the default as isk_effect_def.threads says).  Changing it
- * never changes a byte of the result.  On two or more, a group of dots or
- * pixels of 16384 particles or more is drawn in bands of rows after its
- * particles are sorted into the bands, which keeps about 6 bytes per
- * particle of the largest such group between frames (when they cannot be
- * had, every band reads the whole group: slower, the same bytes).
+ * never changes a byte of the result.  On two or more, a group of 16384
+ * particles or more is drawn in bands of rows, one per thread; on four or
+ * more, dots and pixels are first sorted into the bands, which keeps about
+ * 6 bytes per particle of the largest such group between frames (when they
+ * cannot be had, every band reads the whole group: slower, the same bytes).
  * ISK_ERR_RANGE, ISK_ERR_NOMEM, ISK_ERR_UNSUPPORTED. */
 int isk_effect_threads(const isk_effect *e);
 isk_status isk_effect_set_threads(isk_effect *e, int threads);
