@@ -298,6 +298,59 @@ Test(raster_fast, batches_equal_loop_of_single_calls)
     free(y);
 }
 
+/* ISK__BATCH_KEEP_ON_CANVAS (reflect walls' particles on the far edge):
+ * the batch equals single calls at coordinates moved by isk__keep_on_canvas,
+ * with many points exactly on and just inside the far edges. */
+Test(raster_fast, kept_batches_equal_single_calls_at_kept_coordinates)
+{
+    isk_rng r;
+    isk_rng_seed(&r, 6);
+    static const size_t counts[] = {1, 3, 4, 5, 31, 32, 33, 64, 100, 1000};
+    double *x = malloc(1000 * sizeof *x), *y = malloc(1000 * sizeof *y);
+    cr_assert(x && y);
+    for (int n = 0; n < 600; n++) {
+        int w = rnd_size(&r), h = rnd_size(&r);
+        pair p = make_pair(&r, w, h);
+        isk_view v;
+        if (n % 2)
+            cr_assert_eq(isk_view_camera(&v, w, h, isk_rng_range(&r, 0.5, 20), isk_rng_range(&r, -2, 2),
+                                         isk_rng_range(&r, -2, 2)),
+                         ISK_OK);
+        else
+            cr_assert_eq(isk_view_window(&v, w, h, -3, 3 + isk_rng_uniform(&r), -2, 2), ISK_OK);
+        size_t m = counts[isk_rng_below(&r, sizeof counts / sizeof counts[0])];
+        for (size_t i = 0; i < m; i++) {
+            double X = rnd_coord(&r, w), Y = rnd_coord(&r, h);
+            switch (isk_rng_below(&r, 4)) {
+            case 0: X = w; break;                                /* on the right edge */
+            case 1: Y = h; break;                                /* on the bottom edge */
+            case 2: Y = h - isk_rng_uniform(&r); break;          /* within the last row */
+            default: break;
+            }
+            isk_view_to_world(&v, X, Y, &x[i], &y[i]);
+        }
+        isk_color col = rnd_color(&r);
+        isk_blend mode = MODES[isk_rng_below(&r, 3)];
+        unsigned rule = isk_rng_below(&r, 3);
+        isk__draw_batch_rows(&p.c[0], &v, m, x, y, col, mode, rule | ISK__BATCH_KEEP_ON_CANVAS, 0, h);
+        for (size_t i = 0; i < m; i++) {
+            double X, Y;
+            isk_view_to_screen(&v, x[i], y[i], &X, &Y);
+            X = isk__keep_on_canvas(X, w);
+            Y = isk__keep_on_canvas(Y, h);
+            if (rule == ISK__BATCH_DOT)
+                ref_draw_dot(&p.c[1], X, Y, col, mode);
+            else if (rule == ISK__BATCH_DOT_BROWSER)
+                ref_draw_dot_browser(&p.c[1], X, Y, col, mode);
+            else if (X >= 0 && Y >= 0 && X < w && Y < h)
+                ref_draw_pixel(&p.c[1], (int)X, (int)Y, col, mode);
+        }
+        check_pair(&p, "kept batch", n);
+    }
+    free(x);
+    free(y);
+}
+
 /* A batch cut into bands of rows (isk__draw_batch_rows: the renderer's
  * threads each draw one) gives the bytes of the whole batch, whatever the
  * cuts and the order the bands are drawn in. */

@@ -240,6 +240,115 @@ static ISK__INLINE void px2(uint8_t *p, isk_color col, const isk__cov_lut *lut, 
     isk__px_w(p + 4, col, lut, wb, mode);
 }
 
+/* Step 1 of a block without a list: the points whose dot can touch the
+ * rows, their screen Y in b->y and their place in the block in b->ix, in
+ * block order; returns how many.  Without branches (on a band most points
+ * may be another band's, in an order no predictor learns). */
+typedef struct select_view {
+    int camera, keep;
+    double hh, a, ty, sy, py;   /* the view's Y arithmetic (isk_view_to_screen) */
+    double lo, hi;              /* kept: lo < Y < hi */
+    int height;                 /* keep: (height - 1, height] -> height - 1 */
+} select_view;
+
+typedef int (*select_fn)(const select_view *s, const double *y, int m, double *oy, int32_t *oix);
+
+static int select_scalar(const select_view *s, const double *y, int m, double *oy, int32_t *oix)
+{
+    int kept = 0;
+    for (int k = 0; k < m; k++) {
+        const double Y0k = s->camera ? s->hh - s->a * (y[k] + s->ty) : s->sy * y[k] + s->py;
+        const double Y = s->keep ? isk__keep_on_canvas(Y0k, s->height) : Y0k;
+        oy[kept] = Y;
+        oix[kept] = k;
+        kept += (Y > s->lo) & (Y < s->hi);
+    }
+    return kept;
+}
+
+#if ISK__SPAN_AVX2
+/* Four points a step: the same IEEE operations as select_scalar, lanes
+ * compressed by a permutation looked up from the comparison's mask (oy and
+ * oix may be written up to 4 entries past what is kept: the block's arrays
+ * hold BLOCK entries and kept + 4 <= k + 4 <= m). */
+static const int32_t SELECT_PERM[16][8] = {
+    {0, 0, 0, 0, 0, 0, 0, 0},
+    {0, 1, 0, 0, 0, 0, 0, 0},
+    {2, 3, 0, 0, 0, 0, 0, 0},
+    {0, 1, 2, 3, 0, 0, 0, 0},
+    {4, 5, 0, 0, 0, 0, 0, 0},
+    {0, 1, 4, 5, 0, 0, 0, 0},
+    {2, 3, 4, 5, 0, 0, 0, 0},
+    {0, 1, 2, 3, 4, 5, 0, 0},
+    {6, 7, 0, 0, 0, 0, 0, 0},
+    {0, 1, 6, 7, 0, 0, 0, 0},
+    {2, 3, 6, 7, 0, 0, 0, 0},
+    {0, 1, 2, 3, 6, 7, 0, 0},
+    {4, 5, 6, 7, 0, 0, 0, 0},
+    {0, 1, 4, 5, 6, 7, 0, 0},
+    {2, 3, 4, 5, 6, 7, 0, 0},
+    {0, 1, 2, 3, 4, 5, 6, 7},
+};
+static const int32_t SELECT_LANE[16][8] = {
+    {0, 0, 0, 0, 0, 0, 0, 0},
+    {0, 0, 0, 0, 0, 0, 0, 0},
+    {1, 0, 0, 0, 0, 0, 0, 0},
+    {0, 1, 0, 0, 0, 0, 0, 0},
+    {2, 0, 0, 0, 0, 0, 0, 0},
+    {0, 2, 0, 0, 0, 0, 0, 0},
+    {1, 2, 0, 0, 0, 0, 0, 0},
+    {0, 1, 2, 0, 0, 0, 0, 0},
+    {3, 0, 0, 0, 0, 0, 0, 0},
+    {0, 3, 0, 0, 0, 0, 0, 0},
+    {1, 3, 0, 0, 0, 0, 0, 0},
+    {0, 1, 3, 0, 0, 0, 0, 0},
+    {2, 3, 0, 0, 0, 0, 0, 0},
+    {0, 2, 3, 0, 0, 0, 0, 0},
+    {1, 2, 3, 0, 0, 0, 0, 0},
+    {0, 1, 2, 3, 0, 0, 0, 0},
+};
+
+static ISK__AVX2_FN int select_avx2(const select_view *s, const double *y, int m, double *oy, int32_t *oix)
+{
+    const __m256d hh = _mm256_set1_pd(s->hh), a = _mm256_set1_pd(s->a), ty = _mm256_set1_pd(s->ty);
+    const __m256d sy = _mm256_set1_pd(s->sy), py = _mm256_set1_pd(s->py);
+    const __m256d lo = _mm256_set1_pd(s->lo), hi = _mm256_set1_pd(s->hi);
+    const __m256d n1 = _mm256_set1_pd(s->height - 1.0), n = _mm256_set1_pd((double)s->height);
+    int kept = 0, k = 0;
+    for (; k + 4 <= m; k += 4) {
+        const __m256d v = _mm256_loadu_pd(y + k);
+        __m256d Y = s->camera ? _mm256_sub_pd(hh, _mm256_mul_pd(a, _mm256_add_pd(v, ty)))
+                              : _mm256_add_pd(_mm256_mul_pd(sy, v), py);
+        if (s->keep)
+            Y = _mm256_blendv_pd(Y, n1, _mm256_and_pd(_mm256_cmp_pd(Y, n1, _CMP_GT_OQ), _mm256_cmp_pd(Y, n, _CMP_LE_OQ)));
+        const int mask =
+            _mm256_movemask_pd(_mm256_and_pd(_mm256_cmp_pd(Y, lo, _CMP_GT_OQ), _mm256_cmp_pd(Y, hi, _CMP_LT_OQ)));
+        const __m256i perm = _mm256_loadu_si256((const __m256i *)(const void *)SELECT_PERM[mask]);
+        const __m256i lane = _mm256_loadu_si256((const __m256i *)(const void *)SELECT_LANE[mask]);
+        _mm256_storeu_pd(oy + kept, _mm256_castps_pd(_mm256_permutevar8x32_ps(_mm256_castpd_ps(Y), perm)));
+        _mm_storeu_si128((__m128i *)(void *)(oix + kept),
+                         _mm256_castsi256_si128(_mm256_add_epi32(lane, _mm256_set1_epi32(k))));
+        kept += __builtin_popcount((unsigned)mask);
+    }
+    if (k < m) {
+        const int t = select_scalar(s, y + k, m - k, oy + kept, oix + kept);
+        for (int q = kept; q < kept + t; q++)
+            oix[q] += k;
+        kept += t;
+    }
+    return kept;
+}
+#endif
+
+static select_fn pick_select(void)
+{
+#if ISK__SPAN_AVX2
+    if (isk__have_avx2())
+        return select_avx2;
+#endif
+    return select_scalar;
+}
+
 static ISK__INLINE void run_dots_blocked(const isk_canvas *c, int r0, int r1, const isk_view *v, size_t n,
                                          const uint32_t *list, const double *x, const double *y, isk_color col,
                                          const isk__cov_lut *lut, int camera, int browser, int keep,
@@ -256,17 +365,23 @@ static ISK__INLINE void run_dots_blocked(const isk_canvas *c, int r0, int r1, co
     const size_t stride = c->stride;
     uint8_t *const pixels = c->pixels;
     const weights_fn weights = pick_weights(browser);
+    const select_fn select = pick_select();
+    const select_view sv = {camera, keep, hh, a, ty, sy, py, lo, hi, c->height};
     dot_block b;
     for (size_t i0 = 0; i0 < n; i0 += BLOCK) {
         const int m = n - i0 < BLOCK ? (int)(n - i0) : BLOCK;
         int kept = 0;
-        for (int k = 0; k < m; k++) {
-            const double yk = y[POINT(list, i0 + k)];
-            const double Y0k = camera ? hh - a * (yk + ty) : sy * yk + py;
-            const double Y = keep ? isk__keep_on_canvas(Y0k, c->height) : Y0k;
-            b.y[kept] = Y;
-            b.ix[kept] = k; /* the point's place in the block, until the weights overwrite it */
-            kept += (Y > lo) & (Y < hi); /* no branch: which points a band keeps is random */
+        if (!list) { /* b.ix: the point's place in the block, until the weights overwrite it */
+            kept = select(&sv, y + i0, m, b.y, b.ix);
+        } else {
+            for (int k = 0; k < m; k++) {
+                const double yk = y[list[i0 + k]];
+                const double Y0k = camera ? hh - a * (yk + ty) : sy * yk + py;
+                const double Y = keep ? isk__keep_on_canvas(Y0k, c->height) : Y0k;
+                b.y[kept] = Y;
+                b.ix[kept] = k;
+                kept += (Y > lo) & (Y < hi); /* no branch: which points a band keeps is random */
+            }
         }
         for (int k = 0; k < kept; k++) {
             const double xi = x[POINT(list, i0 + (size_t)b.ix[k])];
