@@ -235,6 +235,17 @@ Test(raster_fast, dot_equals_reference)
 /* isk_draw_dots / _browser / isk_draw_pixels against the loop of single
  * reference calls they replace, for both view kinds and batch sizes on both
  * sides of the table threshold and the block size. */
+/* A random camera (odd cases) or window view of a w x h canvas. */
+static void rnd_view(isk_rng *r, int camera, int w, int h, isk_view *v)
+{
+    if (camera)
+        cr_assert_eq(isk_view_camera(v, w, h, isk_rng_range(r, 0.5, 20), isk_rng_range(r, -2, 2),
+                                     isk_rng_range(r, -2, 2)),
+                     ISK_OK);
+    else
+        cr_assert_eq(isk_view_window(v, w, h, -3, 3 + isk_rng_uniform(r), -2, 2), ISK_OK);
+}
+
 Test(raster_fast, batches_equal_loop_of_single_calls)
 {
     isk_rng r;
@@ -246,12 +257,7 @@ Test(raster_fast, batches_equal_loop_of_single_calls)
         int w = rnd_size(&r), h = rnd_size(&r);
         pair p = make_pair(&r, w, h);
         isk_view v;
-        if (n % 2)
-            cr_assert_eq(isk_view_camera(&v, w, h, isk_rng_range(&r, 0.5, 20), isk_rng_range(&r, -2, 2),
-                                         isk_rng_range(&r, -2, 2)),
-                         ISK_OK);
-        else
-            cr_assert_eq(isk_view_window(&v, w, h, -3, 3 + isk_rng_uniform(&r), -2, 2), ISK_OK);
+        rnd_view(&r, n % 2, w, h, &v);
         size_t m = counts[isk_rng_below(&r, sizeof counts / sizeof counts[0])];
         for (size_t i = 0; i < m; i++) {
             double X = rnd_coord(&r, w), Y = rnd_coord(&r, h);
@@ -312,12 +318,7 @@ Test(raster_fast, kept_batches_equal_single_calls_at_kept_coordinates)
         int w = rnd_size(&r), h = rnd_size(&r);
         pair p = make_pair(&r, w, h);
         isk_view v;
-        if (n % 2)
-            cr_assert_eq(isk_view_camera(&v, w, h, isk_rng_range(&r, 0.5, 20), isk_rng_range(&r, -2, 2),
-                                         isk_rng_range(&r, -2, 2)),
-                         ISK_OK);
-        else
-            cr_assert_eq(isk_view_window(&v, w, h, -3, 3 + isk_rng_uniform(&r), -2, 2), ISK_OK);
+        rnd_view(&r, n % 2, w, h, &v);
         size_t m = counts[isk_rng_below(&r, sizeof counts / sizeof counts[0])];
         for (size_t i = 0; i < m; i++) {
             double X = rnd_coord(&r, w), Y = rnd_coord(&r, h);
@@ -364,12 +365,7 @@ Test(raster_fast, bands_of_rows_equal_the_whole_batch)
         int w = rnd_size(&r), h = rnd_size(&r);
         pair p = make_pair(&r, w, h);
         isk_view v;
-        if (n % 2)
-            cr_assert_eq(isk_view_camera(&v, w, h, isk_rng_range(&r, 0.5, 20), isk_rng_range(&r, -2, 2),
-                                         isk_rng_range(&r, -2, 2)),
-                         ISK_OK);
-        else
-            cr_assert_eq(isk_view_window(&v, w, h, -3, 3 + isk_rng_uniform(&r), -2, 2), ISK_OK);
+        rnd_view(&r, n % 2, w, h, &v);
         size_t m = 1 + isk_rng_below(&r, 700);
         for (size_t i = 0; i < m; i++) {
             double X = rnd_coord(&r, w), Y = rnd_coord(&r, h);
@@ -417,12 +413,7 @@ Test(raster_fast, binned_bands_equal_the_whole_batch)
         int w = rnd_size(&r), h = rnd_size(&r);
         pair p = make_pair(&r, w, h);
         isk_view v;
-        if (n % 2)
-            cr_assert_eq(isk_view_camera(&v, w, h, isk_rng_range(&r, 0.5, 20), isk_rng_range(&r, -2, 2),
-                                         isk_rng_range(&r, -2, 2)),
-                         ISK_OK);
-        else
-            cr_assert_eq(isk_view_window(&v, w, h, -3, 3 + isk_rng_uniform(&r), -2, 2), ISK_OK);
+        rnd_view(&r, n % 2, w, h, &v);
         size_t m = 1 + isk_rng_below(&r, MAXN);
         for (size_t i = 0; i < m; i++) {
             double X = rnd_coord(&r, w), Y = rnd_coord(&r, h);

@@ -471,32 +471,31 @@ static ISK__INLINE void run_rule(const isk_canvas *c, int r0, int r1, const isk_
     }
 }
 
+/* Whether there is anything to draw, the rows clamped to the canvas. */
+static int drawable(const isk_canvas *c, const isk_view *v, size_t n, const double *x, const double *y, int *r0,
+                    int *r1)
+{
+    if (!c || !c->pixels || !v || !x || !y || n == 0)
+        return 0;
+    if (*r0 < 0)
+        *r0 = 0;
+    if (*r1 > c->height)
+        *r1 = c->height;
+    return *r0 < *r1;
+}
+
 void isk__draw_batch_rows(isk_canvas *c, const isk_view *v, size_t n, const double *x, const double *y,
                           isk_color col, isk_blend mode, unsigned rule, int r0, int r1)
 {
-    if (!c || !c->pixels || !v || !x || !y || n == 0)
-        return;
-    if (r0 < 0)
-        r0 = 0;
-    if (r1 > c->height)
-        r1 = c->height;
-    if (r0 >= r1)
-        return;
-    ISK__BLEND_DISPATCH(mode, run_rule, c, r0, r1, v, n, NULL, x, y, col, rule);
+    if (drawable(c, v, n, x, y, &r0, &r1))
+        ISK__BLEND_DISPATCH(mode, run_rule, c, r0, r1, v, n, NULL, x, y, col, rule);
 }
 
 void isk__draw_batch_list_rows(isk_canvas *c, const isk_view *v, const uint32_t *list, size_t m, const double *x,
                                const double *y, isk_color col, isk_blend mode, unsigned rule, int r0, int r1)
 {
-    if (!c || !c->pixels || !v || !list || !x || !y || m == 0)
-        return;
-    if (r0 < 0)
-        r0 = 0;
-    if (r1 > c->height)
-        r1 = c->height;
-    if (r0 >= r1)
-        return;
-    ISK__BLEND_DISPATCH(mode, run_rule, c, r0, r1, v, m, list, x, y, col, rule);
+    if (list && drawable(c, v, m, x, y, &r0, &r1))
+        ISK__BLEND_DISPATCH(mode, run_rule, c, r0, r1, v, m, list, x, y, col, rule);
 }
 
 void isk__batch_bin(const isk_view *v, int height, const double *y, size_t i0, size_t i1,
