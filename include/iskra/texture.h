@@ -3,15 +3,18 @@
  *
  * A texture is made once from a canvas (isk_texture_from_canvas), a PNG file
  * (isk_texture_load, or a cache that loads each file once) or a round sprite
- * kind (isk_texture_from_sprite, for streaks), and drawn any number of times:
+ * kind (isk_texture_from_sprite, for streaks), and drawn any number of times.
+ *
+ * Example (a sheet of two frames, the second drawn stretched and turned):
  *
  *     isk_canvas img, c;
  *     if (isk_canvas_init(&img, 32, 16) != ISK_OK) return 1;
  *     isk_canvas_fill(&img, isk_rgba(255, 160, 40, 255));  // two 16x16 frames
  *     isk_texture tex;
- *     if (isk_texture_from_canvas(&tex, &img, 2, 1) != ISK_OK) return 1;
- *     isk_canvas_free(&img);
- *     if (isk_canvas_init(&c, 64, 64) != ISK_OK) return 1;
+ *     isk_status st = isk_texture_from_canvas(&tex, &img, 2, 1);
+ *     isk_canvas_free(&img);  // the texture holds its own copy
+ *     if (st != ISK_OK) return 1;
+ *     if (isk_canvas_init(&c, 64, 64) != ISK_OK) { isk_texture_free(&tex); return 1; }
  *     isk_canvas_fill(&c, ISK_BLACK);
  *     isk_draw_texture(&c, &tex, 1, 32.0, 32.0, 24.0, 8.0, 0.5, ISK_WHITE, ISK_BLEND_ADD);
  *     isk_texture_free(&tex);
