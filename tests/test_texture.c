@@ -16,6 +16,7 @@
 
 #include "iskra/png.h"
 #include "iskra/rng.h"
+#include "canvas_pair.h"
 #include "iskra/texture.h"
 #include "raster/texture_rows.h"
 
@@ -121,25 +122,9 @@ static void ref_draw_texture(isk_canvas *c, const isk_texture *t, int frame, dou
 
 /* ---- random inputs ---------------------------------------------------------------- */
 
-static uint8_t rnd_byte(isk_rng *r)
-{
-    switch (isk_rng_below(r, 6)) {
-    case 0: return 0;
-    case 1: return 255;
-    default: return (uint8_t)isk_rng_below(r, 256);
-    }
-}
-
-static isk_color rnd_color(isk_rng *r)
-{
-    isk_color c = {(uint8_t)isk_rng_below(r, 256), (uint8_t)isk_rng_below(r, 256), (uint8_t)isk_rng_below(r, 256),
-                   rnd_byte(r)};
-    return c;
-}
-
 static isk_color rnd_tint(isk_rng *r)
 {
-    return isk_rng_below(r, 3) == 0 ? ISK_WHITE : rnd_color(r);
+    return isk_rng_below(r, 3) == 0 ? ISK_WHITE : canvas_pair_rnd_color(r);
 }
 
 /* An image with opaque, transparent and translucent regions (blocks, so
@@ -151,7 +136,7 @@ static isk_canvas rnd_image(isk_rng *r, int w, int h)
     int bs = 1 + (int)isk_rng_below(r, 4);
     for (int y = 0; y < h; y += bs)
         for (int x = 0; x < w; x += bs) {
-            isk_color col = rnd_color(r);
+            isk_color col = canvas_pair_rnd_color(r);
             for (int yy = y; yy < y + bs && yy < h; yy++)
                 for (int xx = x; xx < x + bs && xx < w; xx++)
                     memcpy(isk_canvas_at(&img, xx, yy), &col, 4);
@@ -171,51 +156,6 @@ static isk_texture rnd_texture(isk_rng *r)
     return t;
 }
 
-/* Two identical canvases viewing larger buffers (sentinel margins, a wide
- * stride), pixels opaque, mixed or random in alpha. */
-typedef struct pair {
-    uint8_t *buf[2];
-    isk_canvas c[2];
-    size_t bytes;
-} pair;
-
-enum { MARGIN = 3 };
-
-static pair make_pair(isk_rng *r, int w, int h)
-{
-    pair p;
-    size_t stride = (size_t)(w + 2 * MARGIN) * 4u + isk_rng_below(r, 3);
-    p.bytes = stride * (size_t)(h + 2 * MARGIN);
-    int style = (int)isk_rng_below(r, 3);
-    for (int k = 0; k < 2; k++) {
-        p.buf[k] = malloc(p.bytes);
-        cr_assert(p.buf[k]);
-    }
-    for (size_t b = 0; b < p.bytes; b++)
-        p.buf[0][b] = (uint8_t)isk_rng_below(r, 256);
-    for (size_t b = 3; b < p.bytes; b += 4)
-        if (style == 0 || (style == 1 && isk_rng_below(r, 2)))
-            p.buf[0][b] = 255;
-    memcpy(p.buf[1], p.buf[0], p.bytes);
-    for (int k = 0; k < 2; k++)
-        cr_assert_eq(isk_canvas_wrap(&p.c[k], p.buf[k] + MARGIN * stride + MARGIN * 4, w, h, stride), ISK_OK);
-    return p;
-}
-
-static int pair_equal(const pair *p, size_t *at)
-{
-    size_t k = 0;
-    while (k < p->bytes && p->buf[0][k] == p->buf[1][k])
-        k++;
-    *at = k;
-    return k == p->bytes;
-}
-
-static void pair_free(pair *p)
-{
-    free(p->buf[0]);
-    free(p->buf[1]);
-}
 
 static double rnd_coord(isk_rng *r, int n)
 {
@@ -285,19 +225,19 @@ static void check_against_reference(unsigned seed, int cases, int paths)
     for (int n = 0; n < cases; n++) {
         isk_texture t = rnd_texture(&r);
         int w = 1 + (int)isk_rng_below(&r, 40), h = 1 + (int)isk_rng_below(&r, 40);
-        pair p = make_pair(&r, w, h);
+        canvas_pair p = canvas_pair_make(&r, w, h);
         for (int k = 0; k < 4; k++) {
             draw_args a = rnd_args(&r, &t, w, h);
             isk__draw_texture_rows(&p.c[0], &t, a.frame, a.cx, a.cy, a.w, a.h, a.angle, a.tint, a.mode, 0, h, paths);
             ref_draw_texture(&p.c[1], &t, a.frame, a.cx, a.cy, a.w, a.h, a.angle, a.tint, a.mode);
             size_t at;
-            cr_assert(pair_equal(&p, &at),
+            cr_assert(canvas_pair_equal(&p, &at),
                       "case %d.%d (paths %d): byte %zu differs: library %d, rule %d; texture %dx%d grid %dx%d, frame %d, "
                       "centre (%.17g, %.17g), size %.17g x %.17g, angle %.17g, tint %d %d %d %d, mode %d, canvas %dx%d",
                       n, k, paths, at, p.buf[0][at], p.buf[1][at], t.width, t.height, t.cols, t.rows, a.frame, a.cx, a.cy,
                       a.w, a.h, a.angle, a.tint.r, a.tint.g, a.tint.b, a.tint.a, a.mode, w, h);
         }
-        pair_free(&p);
+        canvas_pair_free(&p);
         isk_texture_free(&t);
     }
 }
@@ -334,7 +274,7 @@ Test(texture_draw, angle_zero_through_the_rotated_code_equals_the_blit)
     for (int n = 0; n < 3000; n++) {
         isk_texture t = rnd_texture(&r);
         int w = 1 + (int)isk_rng_below(&r, 64), h = 1 + (int)isk_rng_below(&r, 64);
-        pair p = make_pair(&r, w, h);
+        canvas_pair p = canvas_pair_make(&r, w, h);
         for (int k = 0; k < 4; k++) {
             draw_args a = rnd_args(&r, &t, w, h);
             a.angle = isk_rng_below(&r, 4) ? 0.0 : PI; /* pi: sin(pi) rounds away in fixed point */
@@ -343,9 +283,10 @@ Test(texture_draw, angle_zero_through_the_rotated_code_equals_the_blit)
                                    ISK__TEXTURE_GENERAL);
         }
         size_t at;
-        cr_assert(pair_equal(&p, &at), "case %d: byte %zu differs (blit %d, rotated code %d)", n, at, p.buf[0][at],
+        cr_assert(canvas_pair_equal(&p, &at),
+                  "case %d: byte %zu differs (blit %d, rotated code %d)", n, at, p.buf[0][at],
                   p.buf[1][at]);
-        pair_free(&p);
+        canvas_pair_free(&p);
         isk_texture_free(&t);
     }
 }
@@ -358,7 +299,7 @@ Test(texture_draw, bands_of_rows_equal_the_whole_call)
     for (int n = 0; n < 1500; n++) {
         isk_texture t = rnd_texture(&r);
         int w = 1 + (int)isk_rng_below(&r, 48), h = 1 + (int)isk_rng_below(&r, 48);
-        pair p = make_pair(&r, w, h);
+        canvas_pair p = canvas_pair_make(&r, w, h);
         int cut = (int)isk_rng_below(&r, (uint32_t)h + 1);
         int cut2 = cut + (int)isk_rng_below(&r, (uint32_t)(h - cut) + 1);
         for (int k = 0; k < 4; k++) {
@@ -370,9 +311,9 @@ Test(texture_draw, bands_of_rows_equal_the_whole_call)
             isk__draw_texture_rows(&p.c[1], &t, a.frame, a.cx, a.cy, a.w, a.h, a.angle, a.tint, a.mode, cut, cut2, paths);
         }
         size_t at;
-        cr_assert(pair_equal(&p, &at), "case %d: byte %zu differs (whole %d, bands %d)", n, at, p.buf[0][at],
+        cr_assert(canvas_pair_equal(&p, &at), "case %d: byte %zu differs (whole %d, bands %d)", n, at, p.buf[0][at],
                   p.buf[1][at]);
-        pair_free(&p);
+        canvas_pair_free(&p);
         isk_texture_free(&t);
     }
 }
@@ -412,7 +353,7 @@ Test(texture_draw, quarter_turns_equal_rotations_in_memory)
         isk_texture rt;
         cr_assert_eq(isk_texture_from_canvas(&rt, &rimg, 1, 1), ISK_OK);
         int w = S + 8 + (int)isk_rng_below(&r, 8), h = S + 8 + (int)isk_rng_below(&r, 8);
-        pair p = make_pair(&r, w, h);
+        canvas_pair p = canvas_pair_make(&r, w, h);
         double off = isk_rng_below(&r, 2) ? 0.0 : 1.0;
         double cx = 4 + 0.5 * S + (double)(int)isk_rng_below(&r, 4) + off * (double)(int)isk_rng_below(&r, 128) / 128.0;
         double cy = 4 + 0.5 * S + (double)(int)isk_rng_below(&r, 4) + off * (double)(int)isk_rng_below(&r, 128) / 128.0;
@@ -421,9 +362,10 @@ Test(texture_draw, quarter_turns_equal_rotations_in_memory)
         isk_draw_texture(&p.c[0], &t, 0, cx, cy, S, S, quarter * PI / 2, tint, mode);
         isk_draw_texture(&p.c[1], &rt, 0, cx, cy, S, S, 0.0, tint, mode);
         size_t at;
-        cr_assert(pair_equal(&p, &at), "case %d: %dx%d, %d quarter turns, centre (%.10g, %.10g): byte %zu differs", n, S,
+        cr_assert(canvas_pair_equal(&p, &at),
+                  "case %d: %dx%d, %d quarter turns, centre (%.10g, %.10g): byte %zu differs", n, S,
                   S, quarter, cx, cy, at);
-        pair_free(&p);
+        canvas_pair_free(&p);
         isk_texture_free(&t);
         isk_texture_free(&rt);
         isk_canvas_free(&img);
@@ -480,14 +422,14 @@ Test(texture_draw, sprite_texture_equals_the_tinted_sprite)
         isk_texture t;
         cr_assert_eq(isk_texture_from_sprite(&t, kind, S), ISK_OK);
         int w = S + 10, h = S + 10;
-        pair p = make_pair(&r, w, h);
+        canvas_pair p = canvas_pair_make(&r, w, h);
         double cx = 0.5 * S + (double)(int)isk_rng_below(&r, 12) - 1.0;
         double cy = 0.5 * S + (double)(int)isk_rng_below(&r, 12) - 1.0;
-        isk_color col = rnd_color(&r);
+        isk_color col = canvas_pair_rnd_color(&r);
         isk_draw_sprite_tinted(&p.c[0], &s, cx, cy, col, ISK_BLEND_ADD);
         isk_draw_texture(&p.c[1], &t, 0, cx, cy, S, S, 0.0, col, ISK_BLEND_ADD);
         size_t at;
-        cr_assert(pair_equal(&p, &at), "case %d: kind %d size %d: byte %zu differs", n, kind, S, at);
+        cr_assert(canvas_pair_equal(&p, &at), "case %d: kind %d size %d: byte %zu differs", n, kind, S, at);
         /* over, onto opaque pixels: within one level */
         isk_canvas_fill(&p.c[0], isk_rgba(30, 60, 90, 255));
         isk_canvas_fill(&p.c[1], isk_rgba(30, 60, 90, 255));
@@ -500,7 +442,7 @@ Test(texture_draw, sprite_texture_equals_the_tinted_sprite)
                     cr_assert(abs(a - b) <= 1, "over, case %d: pixel (%d, %d) channel %d: sprite %d, texture %d", n, x, y,
                               k, a, b);
                 }
-        pair_free(&p);
+        canvas_pair_free(&p);
         isk_sprite_free(&s);
         isk_texture_free(&t);
     }

@@ -13,6 +13,7 @@
 
 #include "iskra/draw.h"
 #include "iskra/rng.h"
+#include "canvas_pair.h"
 #include "raster/clip.h"
 #include "raster/trail_rows.h"
 
@@ -105,49 +106,7 @@ static void ref_trail(isk_canvas *c, const double *xy, int n, double width, isk_
 
 /* ---- random inputs ------------------------------------------------------------------- */
 
-typedef struct pair {
-    uint8_t *buf[2];
-    isk_canvas c[2];
-    size_t bytes;
-} pair;
-
-enum { MARGIN = 3, MAXP = 48 };
-
-static pair make_pair(isk_rng *r, int w, int h)
-{
-    pair p;
-    size_t stride = (size_t)(w + 2 * MARGIN) * 4u + isk_rng_below(r, 3);
-    p.bytes = stride * (size_t)(h + 2 * MARGIN);
-    for (int k = 0; k < 2; k++) {
-        p.buf[k] = malloc(p.bytes);
-        cr_assert(p.buf[k]);
-    }
-    int style = (int)isk_rng_below(r, 3);
-    for (size_t b = 0; b < p.bytes; b++)
-        p.buf[0][b] = (uint8_t)isk_rng_below(r, 256);
-    for (size_t b = 3; b < p.bytes; b += 4)
-        if (style == 0 || (style == 1 && isk_rng_below(r, 2)))
-            p.buf[0][b] = 255;
-    memcpy(p.buf[1], p.buf[0], p.bytes);
-    for (int k = 0; k < 2; k++)
-        cr_assert_eq(isk_canvas_wrap(&p.c[k], p.buf[k] + MARGIN * stride + MARGIN * 4, w, h, stride), ISK_OK);
-    return p;
-}
-
-static int pair_equal(const pair *p, size_t *at)
-{
-    size_t k = 0;
-    while (k < p->bytes && p->buf[0][k] == p->buf[1][k])
-        k++;
-    *at = k;
-    return k == p->bytes;
-}
-
-static void pair_free(pair *p)
-{
-    free(p->buf[0]);
-    free(p->buf[1]);
-}
+enum { MAXP = 48 }; /* points of a random trail, at most */
 
 static isk_color rnd_color(isk_rng *r)
 {
@@ -214,7 +173,7 @@ Test(trail, equals_the_rule)
     double xy[2 * MAXP];
     for (int n = 0; n < 2500; n++) {
         int w = 1 + (int)isk_rng_below(&r, 40), h = 1 + (int)isk_rng_below(&r, 40);
-        pair p = make_pair(&r, w, h);
+        canvas_pair p = canvas_pair_make(&r, w, h);
         for (int k = 0; k < 2; k++) {
             int m = rnd_trail(&r, xy, w, h);
             double width = rnd_width(&r), fade = rnd_fade(&r);
@@ -223,11 +182,12 @@ Test(trail, equals_the_rule)
             isk_stroke_trail(&p.c[0], xy, m, width, col, fade, mode);
             ref_trail(&p.c[1], xy, m, width, col, fade, mode);
             size_t at;
-            cr_assert(pair_equal(&p, &at), "case %d.%d: byte %zu differs (library %d, rule %d): %d points, width %.17g, "
-                                           "fade %.17g, mode %d, canvas %dx%d",
+            cr_assert(canvas_pair_equal(&p, &at),
+                      "case %d.%d: byte %zu differs (library %d, rule %d): %d points, width %.17g, fade %.17g, mode %d, "
+                      "canvas %dx%d",
                       n, k, at, p.buf[0][at], p.buf[1][at], m, width, fade, mode, w, h);
         }
-        pair_free(&p);
+        canvas_pair_free(&p);
     }
 }
 
@@ -240,7 +200,7 @@ Test(trail, equals_the_rule_across_tiles)
     double xy[2 * MAXP];
     for (int n = 0; n < 150; n++) {
         int w = 40 + (int)isk_rng_below(&r, 60), h = 20 + (int)isk_rng_below(&r, 40);
-        pair p = make_pair(&r, w, h);
+        canvas_pair p = canvas_pair_make(&r, w, h);
         int m = 2 + (int)isk_rng_below(&r, MAXP - 1);
         for (int k = 0; k < m; k++) {
             xy[2 * k] = isk_rng_range(&r, -10, w + 10);
@@ -252,8 +212,8 @@ Test(trail, equals_the_rule_across_tiles)
         isk_stroke_trail(&p.c[0], xy, m, width, col, fade, mode);
         ref_trail(&p.c[1], xy, m, width, col, fade, mode);
         size_t at;
-        cr_assert(pair_equal(&p, &at), "case %d: byte %zu differs", n, at);
-        pair_free(&p);
+        cr_assert(canvas_pair_equal(&p, &at), "case %d: byte %zu differs", n, at);
+        canvas_pair_free(&p);
     }
 }
 
@@ -264,7 +224,7 @@ Test(trail, bands_of_rows_equal_the_whole_call)
     double xy[2 * MAXP];
     for (int n = 0; n < 2000; n++) {
         int w = 1 + (int)isk_rng_below(&r, 48), h = 1 + (int)isk_rng_below(&r, 48);
-        pair p = make_pair(&r, w, h);
+        canvas_pair p = canvas_pair_make(&r, w, h);
         int cut = (int)isk_rng_below(&r, (uint32_t)h + 1);
         int cut2 = cut + (int)isk_rng_below(&r, (uint32_t)(h - cut) + 1);
         for (int k = 0; k < 3; k++) {
@@ -278,9 +238,9 @@ Test(trail, bands_of_rows_equal_the_whole_call)
             isk__stroke_trail_rows(&p.c[1], xy, m, width, col, fade, mode, cut, cut2);
         }
         size_t at;
-        cr_assert(pair_equal(&p, &at), "case %d: byte %zu differs (whole %d, bands %d)", n, at, p.buf[0][at],
+        cr_assert(canvas_pair_equal(&p, &at), "case %d: byte %zu differs (whole %d, bands %d)", n, at, p.buf[0][at],
                   p.buf[1][at]);
-        pair_free(&p);
+        canvas_pair_free(&p);
     }
 }
 
