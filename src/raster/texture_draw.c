@@ -361,6 +361,17 @@ static ISK__INLINE int blit_span(const tex_draw *t, int j0, int j1, int *ka, int
     return *ka < *kb && *ra < *rb;
 }
 
+/* Row j of the blit: its upper texel row and weight fy (the same for the
+ * whole row), and *d, the destination of the chunk starting at column k0. */
+static ISK__INLINE const uint8_t *blit_row(isk_canvas *c, const tex_draw *t, int j, int k0, uint32_t *fy,
+                                           uint8_t **d)
+{
+    uint64_t y = (uint64_t)(t->pv0 + (int64_t)(j - t->j0) * t->dvy);
+    *fy = (uint32_t)(y >> 25) & 127u;
+    *d = c->pixels + (size_t)j * c->stride + 4u * (size_t)(t->bi0 + k0);
+    return t->base + (size_t)(y >> 32) * t->ts;
+}
+
 /* A row of the rotated walker: its exact span [*ka, *kb) and U, V (+ 1/2)
  * at the span's first pixel; 0 when empty. */
 static ISK__INLINE int row_span(const tex_draw *t, int j, int64_t *pu, int64_t *pv, int *ka, int *kb)
@@ -591,11 +602,9 @@ static ISK__INLINE ISK__AVX2_FN void walk_blit_avx2(isk_canvas *c, const tex_dra
     for (int k0 = ka; k0 < kb; k0 += BLIT_CHUNK) {
         blit_columns(t, k0, kb - k0 < BLIT_CHUNK ? kb - k0 : BLIT_CHUNK, &bc);
         for (int r = ra; r < rb; r++) {
-            int j = j0 + r;
-            uint64_t y = (uint64_t)(t->pv0 + (int64_t)(j - t->j0) * t->dvy);
-            const uint8_t *row = t->base + (size_t)(y >> 32) * ts;
-            uint32_t fy = (uint32_t)(y >> 25) & 127u;
-            uint8_t *d = c->pixels + (size_t)j * c->stride + 4u * (size_t)(t->bi0 + k0);
+            uint32_t fy;
+            uint8_t *d;
+            const uint8_t *row = blit_row(c, t, j0 + r, k0, &fy, &d);
             int wide = bc.nt > VROW_MAX; /* far beyond 2 texels per pixel: the taps per pixel */
             if (!wide)
                 a_vrow(vrow, row, ts, bc.xa, bc.nt, fy);
@@ -675,11 +684,9 @@ static ISK__INLINE void walk_blit(isk_canvas *c, const tex_draw *t, int j0, int 
     for (int k0 = ka; k0 < kb; k0 += BLIT_CHUNK) {
         blit_columns(t, k0, kb - k0 < BLIT_CHUNK ? kb - k0 : BLIT_CHUNK, &bc);
         for (int r = ra; r < rb; r++) {
-            int j = j0 + r;
-            uint64_t y = (uint64_t)(t->pv0 + (int64_t)(j - t->j0) * t->dvy);
-            const uint8_t *row = t->base + (size_t)(y >> 32) * ts;
-            uint32_t fy = (uint32_t)(y >> 25) & 127u;
-            uint8_t *d = c->pixels + (size_t)j * c->stride + 4u * (size_t)(t->bi0 + k0);
+            uint32_t fy;
+            uint8_t *d;
+            const uint8_t *row = blit_row(c, t, j0 + r, k0, &fy, &d);
 #if TEX_SSE2
             if (level != LV_SCALAR && bc.nt <= VROW_MAX) {
                 s_vrow(vrow, row, ts, bc.xa, bc.nt, fy);
