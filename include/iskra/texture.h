@@ -3,7 +3,8 @@
  *
  * A texture is made once from a canvas (isk_texture_from_canvas), a PNG file
  * (isk_texture_load, or a cache that loads each file once) or a round sprite
- * kind (isk_texture_from_sprite, for streaks), and drawn any number of times.
+ * kind (isk_texture_from_sprite, for streaks), and drawn any number of times
+ * (docs/textures.md: the API together, memory, costs).
  *
  * Example (a sheet of two frames, the second drawn stretched and turned):
  *
