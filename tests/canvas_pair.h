@@ -82,8 +82,11 @@ static inline uint8_t canvas_pair_rnd_byte(isk_rng *r)
 
 static inline isk_color canvas_pair_rnd_color(isk_rng *r)
 {
-    isk_color c = {(uint8_t)isk_rng_below(r, 256), (uint8_t)isk_rng_below(r, 256), (uint8_t)isk_rng_below(r, 256),
-                   canvas_pair_rnd_byte(r)};
+    isk_color c; /* one draw a statement: an initializer list's order is unspecified */
+    c.r = (uint8_t)isk_rng_below(r, 256);
+    c.g = (uint8_t)isk_rng_below(r, 256);
+    c.b = (uint8_t)isk_rng_below(r, 256);
+    c.a = canvas_pair_rnd_byte(r);
     return c;
 }
 

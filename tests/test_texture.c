@@ -355,8 +355,9 @@ Test(texture_draw, quarter_turns_equal_rotations_in_memory)
         int w = S + 8 + (int)isk_rng_below(&r, 8), h = S + 8 + (int)isk_rng_below(&r, 8);
         canvas_pair p = canvas_pair_make(&r, w, h);
         double off = isk_rng_below(&r, 2) ? 0.0 : 1.0;
-        double cx = 4 + 0.5 * S + (double)(int)isk_rng_below(&r, 4) + off * (double)(int)isk_rng_below(&r, 128) / 128.0;
-        double cy = 4 + 0.5 * S + (double)(int)isk_rng_below(&r, 4) + off * (double)(int)isk_rng_below(&r, 128) / 128.0;
+        double ix = (double)(int)isk_rng_below(&r, 4), fx = (double)(int)isk_rng_below(&r, 128) / 128.0;
+        double iy = (double)(int)isk_rng_below(&r, 4), fy = (double)(int)isk_rng_below(&r, 128) / 128.0;
+        double cx = 4 + 0.5 * S + ix + off * fx, cy = 4 + 0.5 * S + iy + off * fy;
         isk_color tint = rnd_tint(&r);
         isk_blend mode = MODES[isk_rng_below(&r, 3)];
         isk_draw_texture(&p.c[0], &t, 0, cx, cy, S, S, quarter * PI / 2, tint, mode);

@@ -110,8 +110,11 @@ enum { MAXP = 48 }; /* points of a random trail, at most */
 
 static isk_color rnd_color(isk_rng *r)
 {
-    isk_color c = {(uint8_t)isk_rng_below(r, 256), (uint8_t)isk_rng_below(r, 256), (uint8_t)isk_rng_below(r, 256),
-                   (uint8_t)(isk_rng_below(r, 3) == 0 ? 255 : isk_rng_below(r, 256))};
+    isk_color c; /* one draw a statement: an initializer list's order is unspecified */
+    c.r = (uint8_t)isk_rng_below(r, 256);
+    c.g = (uint8_t)isk_rng_below(r, 256);
+    c.b = (uint8_t)isk_rng_below(r, 256);
+    c.a = (uint8_t)(isk_rng_below(r, 3) == 0 ? 255 : isk_rng_below(r, 256));
     return c;
 }
 
@@ -140,8 +143,10 @@ static int rnd_trail(isk_rng *r, double *xy, int w, int h)
         const double wild[6] = {1e300, -1e300, 1e9, -3e7, DBL_MAX, 2e7};
         xy[k] = wild[isk_rng_below(r, 6)];
     }
-    if (isk_rng_below(r, 40) == 0)
-        xy[isk_rng_below(r, (uint32_t)(2 * n))] = isk_rng_below(r, 2) ? NAN : INFINITY;
+    if (isk_rng_below(r, 40) == 0) {
+        uint32_t at = isk_rng_below(r, (uint32_t)(2 * n));
+        xy[at] = isk_rng_below(r, 2) ? NAN : INFINITY;
+    }
     return n;
 }
 
@@ -326,8 +331,11 @@ Test(trail, doubling_back_paints_nothing_twice)
     isk_rng r;
     isk_rng_seed(&r, 26);
     for (int n = 0; n < 200; n++) {
-        double a[2] = {isk_rng_range(&r, 5, 35), isk_rng_range(&r, 5, 35)};
-        double b[2] = {isk_rng_range(&r, 5, 35), isk_rng_range(&r, 5, 35)};
+        double a[2], b[2];
+        a[0] = isk_rng_range(&r, 5, 35);
+        a[1] = isk_rng_range(&r, 5, 35);
+        b[0] = isk_rng_range(&r, 5, 35);
+        b[1] = isk_rng_range(&r, 5, 35);
         double once[4] = {a[0], a[1], b[0], b[1]};
         double thrice[8] = {a[0], a[1], b[0], b[1], a[0], a[1], b[0], b[1]};
         double w = isk_rng_range(&r, 0.5, 4);
@@ -546,7 +554,9 @@ Test(trail, lone_dots_area_as_documented)
     const double widths[3] = {1.0, 2.0, 4.0}, lo[3] = {1.19, 1.05, 1.01}, hi[3] = {1.41, 1.12, 1.03};
     for (int k = 0; k < 3; k++)
         for (int n = 0; n < 300; n++) {
-            const double xy[2] = {isk_rng_range(&r, 10, 11), isk_rng_range(&r, 10, 11)};
+            double xy[2];
+            xy[0] = isk_rng_range(&r, 10, 11);
+            xy[1] = isk_rng_range(&r, 10, 11);
             isk_canvas c;
             cr_assert_eq(isk_canvas_init(&c, 24, 24), ISK_OK);
             isk_stroke_trail(&c, xy, 1, widths[k], ISK_WHITE, 0.0, ISK_BLEND_ADD);
