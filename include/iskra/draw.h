@@ -137,12 +137,13 @@ void isk_fill_circle_aa(isk_canvas *c, double cx, double cy, double r, isk_color
  *             anti-aliased primitive (isk_blend_pixel_cov with color)
  * Width: at least 0.5 px is drawn; a thinner trail (width > 0) is drawn
  * 0.5 px wide with its alpha scaled by width / 0.5, so a trail thinning to
- * nothing fades out.  Nothing is drawn for n < 1, a NaN or infinite point,
- * width NaN, <= 0 or above 4096, fade NaN.  Segments reaching beyond 2^24 px
- * from the canvas are first clipped to that guard box (arc lengths are
- * those of the clipped segments).  Cost: per segment, the pixels within
- * width/2 + 1 of it, then one pass over the trail's pixels; nothing is
- * allocated. */
+ * nothing fades out.  Nothing is drawn for n < 1 or n > 2^28, a NaN or
+ * infinite point, width NaN, <= 0 or above 4096, fade NaN, a mode that is
+ * not a blend mode.  Segments reaching beyond 2^24 px from the canvas are
+ * first clipped to that guard box (arc lengths are those of the clipped
+ * segments).  Cost: per segment, the pixels within width/2 + 1 of it, then
+ * one pass over the trail's pixels; nothing is allocated.  The texture
+ * primitives and trails together: docs/textures.md. */
 void isk_stroke_trail(isk_canvas *c, const double *xy, int n, double width, isk_color color, double fade,
                       isk_blend mode);
 
