@@ -442,6 +442,16 @@ static ISK__INLINE ISK__AVX2_FN __m128i a_two8(const uint8_t *a, const uint8_t *
     return _mm_castpd_si128(_mm_loadh_pd(_mm_castsi128_pd(x), (const double *)(const void *)b));
 }
 
+/* The samples' one rounding, (sum + 8192) >> 14, of two vectors of 32-bit
+ * sums, packed into 16-bit lanes (lo's pixels first in each half). */
+static ISK__INLINE ISK__AVX2_FN __m256i a_round_pack(__m256i lo, __m256i hi)
+{
+    const __m256i rnd = _mm256_set1_epi32(8192);
+    lo = _mm256_srli_epi32(_mm256_add_epi32(lo, rnd), 14);
+    hi = _mm256_srli_epi32(_mm256_add_epi32(hi, rnd), 14);
+    return _mm256_packs_epi32(lo, hi);
+}
+
 /* Four samples of the rotated walker: left taps at base + off[0..3] (the
  * next row ts further), weights fx, fy in the low 32 bits of 64-bit lanes. */
 static ISK__INLINE ISK__AVX2_FN __m256i a_sample4(const uint8_t *base, const int64_t *off, size_t ts, __m256i fx,
@@ -472,10 +482,7 @@ static ISK__INLINE ISK__AVX2_FN __m256i a_sample4(const uint8_t *base, const int
     /* vertical: (row 0, row 1) per channel against (128 - fy, fy) */
     __m256i vl = _mm256_madd_epi16(_mm256_or_si256(hl0, _mm256_slli_epi32(hl1, 16)), wyl);
     __m256i vh = _mm256_madd_epi16(_mm256_or_si256(hh0, _mm256_slli_epi32(hh1, 16)), wyh);
-    const __m256i rnd = _mm256_set1_epi32(8192);
-    vl = _mm256_srli_epi32(_mm256_add_epi32(vl, rnd), 14);
-    vh = _mm256_srli_epi32(_mm256_add_epi32(vh, rnd), 14);
-    return _mm256_packs_epi32(vl, vh);
+    return a_round_pack(vl, vh);
 }
 
 /* Four samples of the blit from the filtered row v: left taps at v + 4 x[q],
@@ -488,10 +495,7 @@ static ISK__INLINE ISK__AVX2_FN __m256i a_hsample4(const uint16_t *v, const int 
     __m256i wh = _mm256_permutevar8x32_epi32(w4, _mm256_setr_epi32(1, 1, 1, 1, 3, 3, 3, 3));
     __m256i sl = _mm256_madd_epi16(_mm256_unpacklo_epi16(pl, _mm256_srli_si256(pl, 8)), wl);
     __m256i sh = _mm256_madd_epi16(_mm256_unpacklo_epi16(ph, _mm256_srli_si256(ph, 8)), wh);
-    const __m256i rnd = _mm256_set1_epi32(8192);
-    sl = _mm256_srli_epi32(_mm256_add_epi32(sl, rnd), 14);
-    sh = _mm256_srli_epi32(_mm256_add_epi32(sh, rnd), 14);
-    return _mm256_packs_epi32(sl, sh);
+    return a_round_pack(sl, sh);
 }
 
 /* The AVX2 blit's vertical pass (4 texels a step; reads up to 3 texels past
