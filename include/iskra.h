@@ -14,6 +14,7 @@
  *   iskra/teach.h    the thesis's classes, one particle at a time
  *   iskra/sinlut.h   sine lookup table     iskra/gradient.h  baked colour/scalar ramps
  *   iskra/sprite.h   baked round sprites   iskra/deflector.h  bouncing segments
+ *   iskra/texture.h  image sprites: scaled, rotated, tinted, sprite-sheet frames
  *   iskra/shape.h    spawn shapes, velocity generators
  *   iskra/timestep.h fixed-step accumulator  iskra/effect.h  whole effects (stage lists)
  *   iskra/scene.h    INI scene files      iskra/presets.h  fire, smoke, sparks, ...
@@ -59,6 +60,7 @@
 #include "iskra/blend.h"
 #include "iskra/draw.h"
 #include "iskra/text.h"
+#include "iskra/texture.h"
 #include "iskra/view.h"
 #include "iskra/png.h"
 #include "iskra/vec2.h"

@@ -67,6 +67,7 @@
  *   isk_fill_circle_aa     a disc, coverage by exact area (analytic; beyond
  *                          r = 2^16 the edge inside a pixel is taken as its
  *                          tangent, < 1e-5 px off)
+ *   isk_stroke_trail       a fading ribbon for particle trails (below)
  *
  * Note on the thesis's figure 1: the browser (Skia) draws width-1 strokes as
  * anti-aliased hairlines (coverage 255 split between the two pixels across
@@ -103,6 +104,48 @@ void isk_stroke_line(isk_canvas *c, double x0, double y0, double x1, double y1,
 void isk_stroke_polyline(isk_canvas *c, const double *xy, int n, int closed,
                          isk_color color, isk_blend mode);
 void isk_fill_circle_aa(isk_canvas *c, double cx, double cy, double r, isk_color color, isk_blend mode);
+
+/* A particle's trail: a ribbon through n screen points xy (x0,y0,x1,y1,...,
+ * oldest first, newest last), `width` px wide, anti-aliased, its alpha
+ * color.a at the newest point falling linearly along the ribbon's length to
+ * color.a * (1 - fade) at the oldest; fade is clamped into [0, 1].
+ *
+ *     const double xy[8] = {10, 40, 14, 37, 19, 36, 25, 37};
+ *     isk_stroke_trail(&c, xy, 4, 2.0, ISK_YELLOW, 1.0, ISK_BLEND_ADD);
+ *
+ * The shape is every point within width/2 of the polyline: round caps and
+ * round joins, one shape (each pixel is blended once, so a trail crossing
+ * or doubling back over itself is not painted twice there).  One point, or
+ * points all equal, give a disc of diameter `width`.  Per pixel, with p its
+ * centre:
+ *   nearest   the segment nearest p (squared distance to its nearest point
+ *             q; a later, newer segment wins a tie); beyond width/2 +
+ *             sqrt(2)/2 nothing is drawn
+ *   coverage  the exact area of the pixel inside the straight band of the
+ *             ribbon's width through q, perpendicular to p - q (or to the
+ *             segment, when p is on it): exact wherever the ribbon is
+ *             straight across the pixel; at caps, joins and crossings the
+ *             band stands for the curved or broken edge, so thin round ends
+ *             come out too bright (measured, tests/test_trail.c: a lone dot
+ *             of width 1 gets 1.20-1.40x its area, width 2 1.06-1.11x,
+ *             width 4 1.02x; short random trails of width 1 / 2 / 4 get
+ *             1.06 / 1.03 / 1.01x the exact shape's area in total)
+ *   fade      t = arc length from the oldest point to q over the whole
+ *             length (1 for a trail of length 0); alpha factor
+ *             1 - fade (1 - t)
+ *   byte      floor(255 * area * factor + 0.5), blended as every
+ *             anti-aliased primitive (isk_blend_pixel_cov with color)
+ * Width: at least 0.5 px is drawn; a thinner trail (width > 0) is drawn
+ * 0.5 px wide with its alpha scaled by width / 0.5, so a trail thinning to
+ * nothing fades out.  Nothing is drawn for n < 1 or n > 2^28, a NaN or
+ * infinite point, width NaN, <= 0 or above 4096, fade NaN, a mode that is
+ * not a blend mode.  Segments reaching beyond 2^24 px from the canvas are
+ * first clipped to that guard box (arc lengths are those of the clipped
+ * segments).  Cost: per segment, the pixels within width/2 + 1 of it, then
+ * one pass over the trail's pixels; nothing is allocated.  The texture
+ * primitives and trails together: docs/textures.md. */
+void isk_stroke_trail(isk_canvas *c, const double *xy, int n, double width, isk_color color, double fade,
+                      isk_blend mode);
 
 /* Anti-aliased hairlines, the browser's canvas stroke() at width 1 (faithful
  * mode): Chrome's Skia draws strokes no wider than a pixel as hairlines,

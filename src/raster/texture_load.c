@@ -1,0 +1,141 @@
+/* Textures from PNG files (isk_texture_load) and the cache that loads each
+ * file once (iskra/texture.h).  The one part of the texture module that
+ * reads files: it uses the bounded PNG reader of iskra/png.h (src/io). */
+#include "iskra/texture.h"
+
+#include <stdlib.h>
+#include <string.h>
+
+#include "iskra/png.h"
+
+isk_status isk_texture_load(isk_texture *t, const char *png_path, int cols, int rows, isk_error *err)
+{
+    if (t)
+        memset(t, 0, sizeof *t);
+    if (!t || !png_path)
+        return isk_error_set(err, ISK_ERR_NULL, "texture: NULL %s", t ? "path" : "texture");
+    if (cols < 1 || cols > ISK_TEXTURE_MAX_GRID || rows < 1 || rows > ISK_TEXTURE_MAX_GRID)
+        return isk_error_set(err, ISK_ERR_RANGE, "texture %s: a grid of %d x %d frames (cols and rows must be 1..%d)",
+                             png_path, cols, rows, ISK_TEXTURE_MAX_GRID);
+    isk_png_info info;
+    isk_status st = isk_png_read_info(png_path, &info, err);
+    if (st != ISK_OK)
+        return st;
+    if (info.width > ISK_TEXTURE_MAX_DIM || info.height > ISK_TEXTURE_MAX_DIM)
+        return isk_error_set(err, ISK_ERR_SIZE, "texture %s: %d x %d pixels, larger than %d a side", png_path,
+                             info.width, info.height, ISK_TEXTURE_MAX_DIM);
+    if (info.width % cols != 0 || info.height % rows != 0)
+        return isk_error_set(err, ISK_ERR_RANGE,
+                             "texture %s: %d x %d pixels do not divide into %d x %d frames (cols must divide the "
+                             "width, rows the height)",
+                             png_path, info.width, info.height, cols, rows);
+    isk_canvas img;
+    st = isk_png_read_max(&img, png_path, (long long)ISK_TEXTURE_MAX_DIM * ISK_TEXTURE_MAX_DIM, err);
+    if (st != ISK_OK)
+        return st;
+    st = isk_texture_from_canvas(t, &img, cols, rows);
+    isk_canvas_free(&img);
+    if (st != ISK_OK)
+        return isk_error_set(err, st, "texture %s: %s", png_path, isk_status_str(st));
+    return ISK_OK;
+}
+
+/* ---- cache --------------------------------------------------------------
+ * A handful of textures per scene: a linear search over (path, grid). */
+
+typedef struct entry {
+    char *path;
+    int cols, rows;
+    isk_texture *tex;
+} entry;
+
+struct isk_texture_cache {
+    int capacity, count;
+    long loads;
+    entry *items;
+};
+
+isk_status isk_texture_cache_create(isk_texture_cache **out, int capacity)
+{
+    if (!out)
+        return ISK_ERR_NULL;
+    *out = NULL;
+    if (capacity < 1 || capacity > ISK_TEXTURE_CACHE_MAX)
+        return ISK_ERR_SIZE;
+    isk_texture_cache *c = calloc(1, sizeof *c);
+    if (!c)
+        return ISK_ERR_NOMEM;
+    c->items = calloc((size_t)capacity, sizeof *c->items);
+    if (!c->items) {
+        free(c);
+        return ISK_ERR_NOMEM;
+    }
+    c->capacity = capacity;
+    *out = c;
+    return ISK_OK;
+}
+
+void isk_texture_cache_clear(isk_texture_cache *c)
+{
+    if (!c)
+        return;
+    for (int i = 0; i < c->count; i++) {
+        isk_texture_free(c->items[i].tex);
+        free(c->items[i].tex);
+        free(c->items[i].path);
+    }
+    memset(c->items, 0, (size_t)c->capacity * sizeof *c->items);
+    c->count = 0;
+}
+
+void isk_texture_cache_destroy(isk_texture_cache *c)
+{
+    if (!c)
+        return;
+    isk_texture_cache_clear(c);
+    free(c->items);
+    free(c);
+}
+
+isk_status isk_texture_cache_get(isk_texture_cache *c, const char *png_path, int cols, int rows,
+                                 const isk_texture **out, isk_error *err)
+{
+    if (!c || !png_path || !out)
+        return isk_error_set(err, ISK_ERR_NULL, "texture cache: NULL %s", !c ? "cache" : !png_path ? "path" : "out");
+    for (int i = 0; i < c->count; i++)
+        if (c->items[i].cols == cols && c->items[i].rows == rows && strcmp(c->items[i].path, png_path) == 0) {
+            *out = c->items[i].tex;
+            return ISK_OK;
+        }
+    if (c->count >= c->capacity)
+        return isk_error_set(err, ISK_ERR_FULL, "texture %s: the cache already holds its %d textures", png_path,
+                             c->capacity);
+    size_t len = strlen(png_path);
+    entry e = {malloc(len + 1), cols, rows, malloc(sizeof(isk_texture))};
+    if (!e.path || !e.tex) {
+        free(e.path);
+        free(e.tex);
+        return isk_error_set(err, ISK_ERR_NOMEM, "texture %s: out of memory", png_path);
+    }
+    memcpy(e.path, png_path, len + 1);
+    isk_status st = isk_texture_load(e.tex, png_path, cols, rows, err);
+    if (st != ISK_OK) {
+        free(e.path);
+        free(e.tex);
+        return st;
+    }
+    c->loads++;
+    c->items[c->count++] = e;
+    *out = e.tex;
+    return ISK_OK;
+}
+
+int isk_texture_cache_count(const isk_texture_cache *c)
+{
+    return c ? c->count : 0;
+}
+
+long isk_texture_cache_loads(const isk_texture_cache *c)
+{
+    return c ? c->loads : 0;
+}
