@@ -16,20 +16,36 @@
  *   Restitution 1, unconditional flip: a particle still beyond a left/right/top
  *   wall next step flips again (it can jitter or stay out, as in the thesis).
  *
- * ISK_BOUNCE_REFLECT — sound: a particle beyond a wall is reflected about it
- * with restitution c in [0, 1]: position x' = wall + c*(wall - x) (the
- * overshoot mirrored and scaled by c, i.e. what it would have travelled after
- * the hit at the reflected speed c*|v|), velocity v' = -c*v but only if v
- * points outward (an inward-moving particle is never turned around, so it
- * never sticks).  If the mirrored point is beyond the opposite wall (huge
- * speed) it is reflected again, one reflection at a time up to 16 times;
- * beyond that (10^6 units per step in a box of 10 needs 10^5) the rest of the
- * path between the two walls is folded in closed form, with the same result
- * the reflections would give (exact fmod fold for c = 1, a geometric series
- * for c < 1), so a fast particle lands where it should instead of sitting on
- * a wall.  A NaN or infinite position or velocity is clamped onto the wall
- * as a last safety net.  After the stage every particle is inside
- * [left, right] x [bottom, top] for the enabled sides.
+ * ISK_BOUNCE_REFLECT — sound: walls with restitution c in [0, 1] that bounce
+ * a particle at the time of impact (iskra/impact.h): the block runner tells
+ * the stage how each particle moved in the step (isk_bounds_apply_step), the
+ * stage finds when the particle met the wall, reflects the velocity it had
+ * THEN (its normal part scaled by c, so c = 1 keeps the energy exactly),
+ * and carries it on for the rest of the step along its reflected flight,
+ * which may meet the other wall or the same one again; a particle pressed
+ * into a wall whose hops would all fit in the step comes to rest on it.
+ * The axes are independent (a corner is two bounces).  Nothing is touched
+ * for a particle that ends the step inside.
+ *
+ * Without the motion (isk_bounds_apply, isk_bounds_apply_arrays: the end
+ * state alone, e.g. the thesis examples' draw-before-bounce order, or a
+ * particle that starts the step outside) a particle beyond a wall is
+ * mirrored about it: position x' = wall + c*(wall - x), velocity v' = -c*v
+ * but only if v points outward (an inward-moving particle is never turned
+ * around, so it never sticks).  That reflects the END-of-step velocity,
+ * which the particle had below the wall, not at it: under gravity it adds
+ * energy at every bounce, which is why the block runner never uses it.
+ * Both forms share the fast-particle rule: a particle still beyond the
+ * opposite wall is reflected again, one reflection at a time up to 16
+ * times; beyond that (10^6 units per step in a box of 10 needs 10^5) the
+ * rest of the path between the two walls is folded in closed form, with the
+ * same result the reflections would give (exact fmod fold for c = 1, a
+ * geometric series for c < 1), so a fast particle lands where it should
+ * instead of sitting on a wall.  The end-state form clamps a NaN or
+ * infinite position onto the wall as a last safety net; the step form
+ * leaves a non-finite particle alone for the runner to remove and count.
+ * After the stage every finite particle is inside [left, right] x
+ * [bottom, top] for the enabled sides.
  *
  * The bounce is its own stage so callers choose the order: the thesis's
  * examples draw BEFORE zarobi, its simulator AFTER (isk_system has
@@ -46,8 +62,16 @@
  *     if (s == ISK_OK)                                                         // margin 0, c = 0.5
  *         s = isk_bounds_reflect(&b, 0, 10, 0, 10, ISK_SIDE_ALL, 0.0, 0.5);
  *     if (s == ISK_OK) isk_bounds_apply(&b, &store, 0, store.count);           // y = 0.5 * 9.9
- *     printf("y = %g, vy = %g\n", store.y[0], store.vy[0]);                   // 4.95, 3
+ *     printf("y = %g, vy = %g
+", store.y[0], store.vy[0]);                   // 4.95, 3
  *     isk_particles_free(&store);
+ *     // the step form: a particle that left y = 0.1 at vy = -12 for h = 1/60
+ *     double x0[1] = {5}, y0[1] = {0.1}, vx0[1] = {0}, vy0[1] = {-12};
+ *     double x[1] = {5}, y[1] = {0.1 - 12.0 / 60}, vx[1] = {0}, vy[1] = {-12};
+ *     isk_step_motion mo = {x0, y0, vx0, vy0, NULL, 0.0, 1.0 / 60};    // the step's start
+ *     if (s == ISK_OK) isk_bounds_apply_step(&b, &mo, 1, x, y, vx, vy);
+ *     printf("y = %g, vy = %g
+", y[0], vy[0]);     // hit at t = 1/120: 0.05, 6
  *     return s != ISK_OK;
  */
 #ifndef ISKRA_BOUNDS_H
@@ -55,6 +79,7 @@
 
 #include <stddef.h>
 
+#include "iskra/impact.h"
 #include "iskra/particles.h"
 #include "iskra/status.h"
 
@@ -107,6 +132,14 @@ void isk_bounds_apply(const isk_bounds *b, isk_particles *p, size_t begin, size_
 
 /* The same on raw arrays of n particles. */
 void isk_bounds_apply_arrays(const isk_bounds *b, size_t n, double *x, double *y, double *vx, double *vy);
+
+/* The bounce at the time of impact on raw arrays: (x, y, vx, vy) is the
+ * state at the end of the step mo describes (iskra/impact.h).  The thesis
+ * mode ignores mo (its arithmetic is the thesis's); a NULL or incomplete mo
+ * (no start state, h not > 0, drag without masses) falls back to the
+ * end-state rule of isk_bounds_apply_arrays. */
+void isk_bounds_apply_step(const isk_bounds *b, const isk_step_motion *mo, size_t n, double *x, double *y,
+                           double *vx, double *vy);
 
 #ifdef __cplusplus
 }

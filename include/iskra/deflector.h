@@ -13,10 +13,24 @@
  *     double dt = 1.0 / 60;
  *     x_old[0] = x[0];  y_old[0] = y[0];            // integrate: x_old = x; x += vx*dt
  *     x[0] += vx[0] * dt;  y[0] += vy[0] * dt;      // y = -0.1, below the floor
- *     isk_status st = isk_deflect(&floor, 1, x, y, vx, vy, x_old, y_old, 1,
- *                                 NULL, NULL, NULL);  // rng/killed/stats optional
- *     printf("y = %g, vy = %g\n", y[0], vy[0]);     // above the floor again, moving up
+ *     double vx_old[1] = {vx[0]}, vy_old[1] = {vy[0]};  // the step's start state
+ *     isk_step_motion mo = {x_old, y_old, vx_old, vy_old, NULL, 0.0, dt};
+ *     isk_status st = isk_deflect_step(&floor, 1, x, y, vx, vy, &mo, 1,
+ *                                      NULL, NULL, NULL);  // rng/killed/stats optional
+ *     printf("y = %g, vy = %g
+", y[0], vy[0]);     // hit at t = dt/2: 0.05, 6
  *     return st != ISK_OK;
+ *
+ * isk_deflect_step bounces at the time of impact (iskra/impact.h): the hit
+ * is found on the chord from the old position to the new one (below), then
+ * the time of impact on the particle's flight within the step, the
+ * velocity it has there is reflected, and it flies on for the rest of the
+ * step; pressed back into the segment with all further hops fitting in
+ * the step, it rests on it (and slides along it with normal restitution).
+ * isk_deflect(defs, ndef, x, y, vx, vy, x_old, y_old, n, rng, killed,
+ * stats), given only the old positions, reflects the end-of-step velocity
+ * and the rest of the straight path (adds energy under gravity: kept for
+ * callers without a start state).
  *
  * Geometry (the fire thesis §5.8, made exact and robust):
  *   - Segment endpoints are put in a canonical order (lexicographic on
@@ -36,16 +50,25 @@
  *     does not hit it.  Paths collinear with a segment never hit it.  The
  *     library itself never leaves a particle exactly on a segment line.
  *   - Several segments crossed: the smallest t wins; equal t, the lower index.
- *   - Precision: side tests are taken relative to endpoint A, so they carry
- *     the rounding of coordinates of the size of |P - A|; keep segments
- *     within a sane range of the particles (a segment with an endpoint at
- *     1e12 resolves positions near the origin only to about 1e-4).
+ *   - Precision: a side test relative to endpoint A would carry the
+ *     rounding of |P - A| (a segment reaching to 1e12 would resolve points
+ *     near the origin only to 1e-4, and one to 1e150 not at all, so short
+ *     paths tunnelled).  Each side test is the direct formula where its
+ *     error bound shows it accurate, and otherwise the same determinant in
+ *     twice the working precision (exact B - A and cross(A, B), exact
+ *     products): a point is then resolved as finely as on a segment through
+ *     the origin, wherever the endpoints are.  Endpoint coordinates are
+ *     limited to |c| <= ISK_DEFLECT_COORD_MAX (1e150) so every product of
+ *     coordinates stays finite.
  *
  * Response at the hit point H, for the hit segment's reaction:
- *   BOUNCE  velocity v -> M(v); the particle continues from H with the rest of
- *           its path, (1 - t)(P1 - P0), also mapped by M; that new path is
- *           tested again (up to ISK_DEFLECT_MAX_HITS hits per particle per
- *           call).  M is
+ *   BOUNCE  velocity v -> M(v) (isk_deflect_step: the velocity at the time
+ *           of impact, and the particle flies on from H for the rest of the
+ *           step; isk_deflect: the end-of-step velocity, and the rest of its
+ *           straight path, (1 - t)(P1 - P0), is also mapped by M); that new
+ *           path is tested again (up to ISK_DEFLECT_MAX_HITS hits per
+ *           particle per call).  A restitution above 1 (a bumper) never
+ *           leaves a speed above ISK_SPEED_LIMIT (iskra/impact.h).  M is
  *             ISK_RESTITUTION_UNIFORM  M(v) = c (v - 2 (v.n) n)   (fire thesis
  *                                      eq. 5.6 applied to -v, times its damping:
  *                                      both components scaled)
@@ -83,6 +106,7 @@
 #include <stddef.h>
 #include <stdint.h>
 
+#include "iskra/impact.h"
 #include "iskra/rng.h"
 #include "iskra/status.h"
 
@@ -92,6 +116,11 @@ extern "C" {
 
 /* Most hits handled for one particle in one call (bounces plus passes). */
 #define ISK_DEFLECT_MAX_HITS 8
+
+/* Largest |coordinate| of an endpoint, and largest restitution (see above;
+ * the scene key table's ranges are these). */
+#define ISK_DEFLECT_COORD_MAX 1e150
+#define ISK_DEFLECT_RESTITUTION_MAX 1000.0
 
 typedef enum isk_deflect_reaction {
     ISK_DEFLECT_BOUNCE = 0,
@@ -112,7 +141,7 @@ extern const char *const isk_restitution_mode_names[ISK_RESTITUTION_MODE_COUNT];
 
 typedef struct isk_deflector {
     double x0, y0, x1, y1;         /* the segment; order does not matter */
-    double restitution;            /* c >= 0, finite (> 1 gains energy) */
+    double restitution;            /* 0 <= c <= 1000 (> 1 gains energy: speeds capped) */
     double probability;            /* p in [0, 1] */
     isk_deflect_reaction reaction;
     isk_restitution_mode mode;
@@ -129,7 +158,9 @@ isk_deflector isk_deflector_segment(double x0, double y0, double x1, double y1);
 
 /* ISK_OK, or why the deflector is unusable: ISK_ERR_NULL, ISK_ERR_NAN
  * (non-finite coordinate, restitution or probability), ISK_ERR_RANGE
- * (zero-length segment, restitution < 0, p outside [0, 1], bad enum). */
+ * (zero-length segment, a coordinate beyond ISK_DEFLECT_COORD_MAX,
+ * restitution outside [0, ISK_DEFLECT_RESTITUTION_MAX], p outside [0, 1],
+ * bad enum). */
 isk_status isk_deflector_check(const isk_deflector *d);
 
 /* Deflects particles 0..n-1 (see above).  x, y, vx, vy are updated in place;
@@ -141,6 +172,15 @@ isk_status isk_deflector_check(const isk_deflector *d);
 isk_status isk_deflect(const isk_deflector *defs, int ndef, double *x, double *y, double *vx, double *vy,
                        const double *x_old, const double *y_old, size_t n, isk_rng *rng, uint8_t *killed,
                        isk_deflect_stats *stats);
+
+/* The same with the bounce at the time of impact: mo gives the state at the
+ * start of the step (its x0, y0 are the old positions), the step and the
+ * drag (iskra/impact.h).  Errors: as isk_deflect, ISK_ERR_NULL for a NULL
+ * mo or missing start velocities (masses, with drag), ISK_ERR_RANGE for
+ * mo->h not > 0 or a negative or non-finite drag. */
+isk_status isk_deflect_step(const isk_deflector *defs, int ndef, double *x, double *y, double *vx, double *vy,
+                            const isk_step_motion *mo, size_t n, isk_rng *rng, uint8_t *killed,
+                            isk_deflect_stats *stats);
 
 /* The velocity map M of one deflector, applied to (vx, vy) (for emitters
  * and tests; no validation). */

@@ -97,8 +97,9 @@ typedef enum isk_integrator {
 #define ISK_FLUSH_TINY 1e-200
 
 /* Per-block working arrays of every stage of the block runner: force
- * accumulators, potential sum, RK4 copies, and the positions before the move
- * with the deflectors' kill flags. */
+ * accumulators, potential sum, RK4 copies, the state before the move (for
+ * bounces at the time of impact, iskra/impact.h) with the deflectors' kill
+ * flags. */
 typedef struct isk_scratch {
     ISK_ALIGN64 double fx[ISK_SIM_BLOCK];
     ISK_ALIGN64 double fy[ISK_SIM_BLOCK];
@@ -114,6 +115,8 @@ typedef struct isk_scratch {
     ISK_ALIGN64 double svy[ISK_SIM_BLOCK];
     ISK_ALIGN64 double x_old[ISK_SIM_BLOCK];
     ISK_ALIGN64 double y_old[ISK_SIM_BLOCK];
+    ISK_ALIGN64 double vx_old[ISK_SIM_BLOCK];
+    ISK_ALIGN64 double vy_old[ISK_SIM_BLOCK];
     unsigned char killed[ISK_SIM_BLOCK];
 } isk_scratch;
 

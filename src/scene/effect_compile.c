@@ -3,7 +3,7 @@
  * only order they ever run:
  *
  *   frame start:  late walls (draw_before_bounce) -> release (timed explosions)
- *   pipeline:     remember (deflectors) -> drift | integrate -> slow ->
+ *   pipeline:     remember (deflectors, sound walls) -> drift | integrate -> slow ->
  *                 oscillate -> walls -> deflect -> age
  *   substep end:  spawn (streams) -> cull (finite lives, killing deflectors)
  *
@@ -98,13 +98,16 @@ isk_status fx_compile(isk_effect *e, fx_group *g)
      * keep the thesis's picture (its browser clipped them the same way), and
      * without walls the view is a plain window. */
     g->keep_on_canvas = walls && d->bounds.mode == ISK_BOUNCE_REFLECT;
+    /* Sound walls and deflectors bounce at the time of impact: they need the
+     * state before the move (iskra/impact.h). */
+    const int step_walls = walls && !em->draw_before_bounce && d->bounds.mode == ISK_BOUNCE_REFLECT;
 
     if (walls && em->draw_before_bounce)
         g->frame_start[g->nframe_start++] = &fx_step_late_walls;
     if (em->source == ISK_SOURCE_EXPLOSION && (em->start > 0 || em->explosion == ISK_EXPLOSION_MULTI_COULOMB))
         g->frame_start[g->nframe_start++] = &fx_step_release;
 
-    if (g->ndefl && !ADD(isk_stage_remember))
+    if ((g->ndefl || step_walls) && !ADD(isk_stage_remember))
         return ISK_ERR_FULL;
     /* Constant accelerations with the thesis's integrator fold into one
      * drift loop that reads no mass (gravity becomes a = -g). */
@@ -152,7 +155,8 @@ isk_status fx_compile(isk_effect *e, fx_group *g)
     if (walls && !em->draw_before_bounce) {
         if (!ADD(isk_stage_walls))
             return ISK_ERR_FULL;
-        st->u.walls = &d->bounds;
+        st->u.walls.b = &d->bounds;
+        st->u.walls.drag = f->drag;
     }
     if (g->ndefl) {
         if (!ADD(isk_stage_deflect))
@@ -161,6 +165,7 @@ isk_status fx_compile(isk_effect *e, fx_group *g)
         st->u.deflect.n = g->ndefl;
         st->u.deflect.rng = &g->rng;
         st->u.deflect.can_kill = can_kill;
+        st->u.deflect.drag = f->drag;
     }
     const int mortal = isfinite(em->life) || can_kill;
     if (mortal && !ADD(isk_stage_age))

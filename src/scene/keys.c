@@ -172,10 +172,12 @@ static const isk_key keys[] = {
 
     /* [deflector NAME] */
     {DEFL("segment"), .type = ISK_KEY_NUMBERS4, SEG(x0), .required = ALL, .what = "x0, y0, x1, y1",
-     .dflt = "0, 0, 1, 0", .live = ALL,
-     .meaning = "the end points x0, y0, x1, y1, which must differ"},
-    {DEFL("restitution"), .type = ISK_KEY_NUMBER, SEG(restitution), IN(0, 1000), .dflt = "1", .live = ALL,
-     .meaning = "c: the velocity is scaled by c at a bounce"},
+     IN(-ISK_DEFLECT_COORD_MAX, ISK_DEFLECT_COORD_MAX), .dflt = "0, 0, 1, 0", .live = ALL,
+     .meaning = "the end points x0, y0, x1, y1, which must differ (side tests keep their precision at any reach)"},
+    {DEFL("restitution"), .type = ISK_KEY_NUMBER, SEG(restitution), IN(0, ISK_DEFLECT_RESTITUTION_MAX), .dflt = "1",
+     .live = ALL,
+     .meaning = "c: the velocity at impact is scaled by c at a bounce; above 1 a bumper, which never leaves a speed "
+                "above 1e150"},
     {DEFL("probability"), .type = ISK_KEY_NUMBER, SEG(probability), IN(0, 1), .dflt = "1", .live = ALL,
      .meaning = "chance that a hit reacts (otherwise the particle passes)"},
     {DEFL("reaction"), .type = ISK_KEY_ENUM, SEG(reaction), NAMES(isk_deflect_reaction_names), .dflt = "bounce",
@@ -187,8 +189,8 @@ static const isk_key keys[] = {
 
     /* [bounds] */
     {BOUNDS("mode"), .type = ISK_KEY_ENUM, BND(mode), NAMES(isk_bounce_mode_names), .dflt = "reflect", .live = ALL,
-     .meaning = "thesis: the thesis's zarobi (sign flip, only the floor clamps); reflect: mirror about the wall "
-                "with restitution, never tunnels or sticks"},
+     .meaning = "thesis: the thesis's zarobi (sign flip, only the floor clamps); reflect: the bounce at the time "
+                "of impact with restitution (include/iskra/impact.h), never tunnels or sticks"},
     {BOUNDS("sides"), .type = ISK_KEY_SIDES, BND(sides), NAMES(isk_side_names), .dflt = "none",
      .dflt_doc = "all when the scene has a [bounds] section", .live = ALL, .meaning = "which walls exist"},
     {BOUNDS("margin"), .type = ISK_KEY_NUMBER, BND(margin), GE(0), .dflt = "0",

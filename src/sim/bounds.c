@@ -2,7 +2,10 @@
 #include "iskra/bounds.h"
 
 #include <math.h>
+#include <stdint.h>
+#include <string.h>
 
+#include "sim/flight.h"
 #include "sim/kernels.h"
 
 const char *const isk_bounce_mode_names[ISK_BOUNCE_MODE_COUNT] = {"thesis", "reflect"};
@@ -160,6 +163,35 @@ static void fold_between(double *pos, double *vel, double lo, double hi, double 
     *vel = isk_k_flush(last_is_first ? -u * ck : u * ck);
 }
 
+/* One particle still outside after the vector pass: reflections one at a
+ * time, then the closed-form fold, then the clamp of the last safety net
+ * (a NaN or infinite coordinate lands on a wall). */
+static void settle_one(double *pos, double *vel, double lo, double hi, double c)
+{
+    double p = *pos, u = *vel;
+    for (int k = 0; k < ISK_BOUNCE_MAX_REFLECTIONS && !(p >= lo && p <= hi); k++) {
+        if (p < lo)
+            isk_k_reflect_lo(&p, &u, lo, c);
+        else if (p > hi)
+            isk_k_reflect_hi(&p, &u, hi, c);
+        else
+            break; /* NaN: handled by the clamp below */
+    }
+    if ((p < lo || p > hi) && isfinite(p) && isfinite(lo) && isfinite(hi) && isfinite(u))
+        fold_between(&p, &u, lo, hi, c);
+    if (!(p >= lo)) { /* also catches NaN */
+        p = lo;
+        if (!(u >= 0.0))
+            u = u < 0.0 ? -c * u : 0.0;
+    } else if (p > hi) {
+        p = hi;
+        if (u > 0.0)
+            u = -c * u;
+    }
+    *pos = p;
+    *vel = u;
+}
+
 static void settle_axis(size_t n, double *restrict pos, double *restrict v, double lo, double hi,
                         double c)
 {
@@ -167,28 +199,7 @@ static void settle_axis(size_t n, double *restrict pos, double *restrict v, doub
         double p = pos[i];
         if (islessequal(p, hi) & isgreaterequal(p, lo)) /* inside; NaN falls through */
             continue;
-        double u = v[i];
-        for (int k = 0; k < ISK_BOUNCE_MAX_REFLECTIONS && !(p >= lo && p <= hi); k++) {
-            if (p < lo)
-                isk_k_reflect_lo(&p, &u, lo, c);
-            else if (p > hi)
-                isk_k_reflect_hi(&p, &u, hi, c);
-            else
-                break; /* NaN: handled by the clamp below */
-        }
-        if ((p < lo || p > hi) && isfinite(p) && isfinite(lo) && isfinite(hi) && isfinite(u))
-            fold_between(&p, &u, lo, hi, c);
-        if (!(p >= lo)) { /* also catches NaN */
-            p = lo;
-            if (!(u >= 0.0))
-                u = u < 0.0 ? -c * u : 0.0;
-        } else if (p > hi) {
-            p = hi;
-            if (u > 0.0)
-                u = -c * u;
-        }
-        pos[i] = p;
-        v[i] = u;
+        settle_one(&pos[i], &v[i], lo, hi, c);
     }
 }
 
@@ -212,6 +223,163 @@ static void reflect_apply(const isk_bounds *b, size_t n, double *x, double *y, d
                  right, c);
     reflect_axis(n, y, vy, (b->sides & ISK_SIDE_BOTTOM) != 0, (b->sides & ISK_SIDE_TOP) != 0, bottom,
                  top, c);
+}
+
+/* ---- sound reflection at the time of impact (iskra/impact.h) ---- */
+
+/* 1 when some particle of the chunk is outside [lo, hi] (or NaN): the sign
+ * bits of pos - lo and hi - pos, or-ed as integers, so the loop vectorizes
+ * (an exact wall hit, pos == lo, gives +0 and is inside). */
+static int any_outside(size_t n, const double *restrict pos, double lo, double hi)
+{
+    uint64_t acc = 0;
+    for (size_t i = 0; i < n; i++) {
+        double a = pos[i] - lo, b = hi - pos[i];
+        uint64_t ua, ub;
+        memcpy(&ua, &a, sizeof ua);
+        memcpy(&ub, &b, sizeof ub);
+        acc |= ua | ub;
+    }
+    return (int)(acc >> 63);
+}
+
+/* When a flight on the inside of a wall (f = signed distance, > 0 inside:
+ * f(t) = c0 + U D1(t) + a D2(t)) meets it within (0, s], given that it does
+ * (its end f_end or its turning point f_turn at t_turn is outside). */
+static double hit_time(double c0, double U, double a, double k, double s, double t_turn, int turn_in,
+                       double f_turn, double f_end)
+{
+    if (!(c0 > 0.0)) {
+        if (U < 0.0 || (U == 0.0 && a <= 0.0))
+            return 0.0; /* on the wall and leaving (or pressed into it) at once */
+        /* on the wall moving in: it meets it again after turning back */
+        return turn_in && f_end < 0.0 ? isk_fl_root(c0, U, a, k, t_turn, s) : s;
+    }
+    if (turn_in && f_turn < 0.0)
+        return isk_fl_root(c0, U, a, k, 0.0, t_turn);
+    return isk_fl_root(c0, U, a, k, 0.0, s);
+}
+
+/* One axis of one particle whose step ended outside [lo, hi] (a disabled
+ * wall is at -inf / +inf): the bounces of iskra/impact.h.  (p0, v0) is the
+ * state at the start of the step, (*pos, *vel) the integrator's end state,
+ * k the drag rate b/m. */
+static void impact_axis(double *pos, double *vel, double p0, double v0, double k, double h, double lo,
+                        double hi, double c)
+{
+    const double p1 = *pos, v1 = *vel;
+    if (!(isfinite(p1) && isfinite(v1) && isfinite(p0) && isfinite(v0)))
+        return; /* not finite: the runner removes and counts it */
+    if (!(p0 >= lo && p0 <= hi)) {
+        settle_one(pos, vel, lo, hi, c); /* started outside (born there): no crossing to find */
+        return;
+    }
+    double U, a, delta;
+    isk_fl_fit(p0, v0, p1, v1, k, h, &U, &a, &delta);
+    if (!(isfinite(U) && isfinite(a) && isfinite(delta))) {
+        settle_one(pos, vel, lo, hi, c);
+        return;
+    }
+    double P = p0, s = h, end = p1, uend = v1 - delta;
+    int last = 0, same = 0;
+    for (int n = 0;; n++) {
+        double t_turn = isk_fl_turn(U, a, k), p_turn = P;
+        const int turn_in = t_turn > 0.0 && t_turn < s;
+        if (turn_in) {
+            double e, d1, d2;
+            isk_fl_basis(k, t_turn, &e, &d1, &d2);
+            p_turn = P + U * d1 + a * d2;
+        }
+        const int out_lo = end < lo || (turn_in && p_turn < lo);
+        const int out_hi = end > hi || (turn_in && p_turn > hi);
+        if (!out_lo && !out_hi)
+            break;
+        if (n == ISK_BOUNCE_MAX_REFLECTIONS) {
+            if (same >= 2) { /* hopping on one wall ever more often: it rests there */
+                *pos = last < 0 ? lo : hi;
+                *vel = delta;
+                return;
+            }
+            settle_one(&end, &uend, lo, hi, c); /* wall to wall, fast: fold the rest */
+            break;
+        }
+        double tau = INFINITY;
+        int wall = 0;
+        if (out_lo) {
+            tau = hit_time(P - lo, U, a, k, s, t_turn, turn_in, p_turn - lo, end - lo);
+            wall = -1;
+        }
+        if (out_hi) {
+            double t = hit_time(hi - P, -U, -a, k, s, t_turn, turn_in, hi - p_turn, hi - end);
+            if (t < tau) {
+                tau = t;
+                wall = 1;
+            }
+        }
+        const double W = wall < 0 ? lo : hi, sigma = wall < 0 ? 1.0 : -1.0; /* sigma: into the box */
+        double e, d1, d2;
+        isk_fl_basis(k, tau, &e, &d1, &d2);
+        const double ui = U * e + a * d1;
+        P = W;
+        U = sigma * ui < 0.0 ? -c * ui : ui; /* only an outward velocity is turned */
+        s = s - tau > 0.0 ? s - tau : 0.0;
+        /* Pressed back into the wall, with all further hops fitting in the
+         * rest of the step (2 V / (|a| (1 - c)) for rebound speed V): rest. */
+        if (sigma * a < 0.0 && (!(sigma * U > 0.0) || (c < 1.0 && 2.0 * sigma * U <= -sigma * a * (1.0 - c) * s))) {
+            *pos = W;
+            *vel = delta;
+            return;
+        }
+        same = wall == last ? same + 1 : 0;
+        last = wall;
+        isk_fl_basis(k, s, &e, &d1, &d2);
+        end = P + U * d1 + a * d2;
+        uend = U * e + a * d1;
+    }
+    if (!(end >= lo && end <= hi)) /* rounding at a wall: it is on it */
+        end = end < lo ? lo : hi;
+    *pos = end;
+    *vel = uend + delta;
+}
+
+static void impact_pass(size_t n, double *restrict pos, double *restrict v, const double *restrict p0,
+                        const double *restrict v0, const double *restrict m, double drag, double h, double lo,
+                        double hi, double c)
+{
+    for (size_t o = 0; o < n; o += CHUNK) {
+        const size_t cn = n - o < CHUNK ? n - o : CHUNK;
+        if (!any_outside(cn, pos + o, lo, hi))
+            continue;
+        for (size_t i = o; i < o + cn; i++)
+            if (!(pos[i] >= lo && pos[i] <= hi))
+                impact_axis(&pos[i], &v[i], p0[i], v0[i], drag > 0.0 ? drag / m[i] : 0.0, h, lo, hi, c);
+    }
+}
+
+void isk_bounds_apply_step(const isk_bounds *b, const isk_step_motion *mo, size_t n, double *x, double *y,
+                           double *vx, double *vy)
+{
+    if (!b || !x || !y || !vx || !vy || b->sides == 0)
+        return;
+    if (b->mode == ISK_BOUNCE_THESIS) {
+        thesis_apply(b, n, x, y, vx, vy); /* the thesis's arithmetic, whatever the motion */
+        return;
+    }
+    if (!mo || !mo->x0 || !mo->y0 || !mo->vx0 || !mo->vy0 || !(mo->h > 0.0) || !isfinite(mo->h) ||
+        (mo->drag != 0.0 && !mo->m)) {
+        reflect_apply(b, n, x, y, vx, vy); /* no motion to solve: the end-of-step rule */
+        return;
+    }
+    const unsigned sd = b->sides;
+    const double c = b->restitution, drag = mo->drag > 0.0 ? mo->drag : 0.0;
+    const double left = sd & ISK_SIDE_LEFT ? b->xmin + b->margin : -INFINITY;
+    const double right = sd & ISK_SIDE_RIGHT ? b->xmax - b->margin : INFINITY;
+    const double bottom = sd & ISK_SIDE_BOTTOM ? b->ymin + b->margin : -INFINITY;
+    const double top = sd & ISK_SIDE_TOP ? b->ymax - b->margin : INFINITY;
+    if (sd & (ISK_SIDE_LEFT | ISK_SIDE_RIGHT))
+        impact_pass(n, x, vx, mo->x0, mo->vx0, mo->m, drag, mo->h, left, right, c);
+    if (sd & (ISK_SIDE_BOTTOM | ISK_SIDE_TOP))
+        impact_pass(n, y, vy, mo->y0, mo->vy0, mo->m, drag, mo->h, bottom, top, c);
 }
 
 void isk_bounds_apply_arrays(const isk_bounds *b, size_t n, double *x, double *y, double *vx, double *vy)

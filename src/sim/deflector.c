@@ -1,18 +1,87 @@
-/* Segment deflectors: exact path-crossing tests and the bounce / kill /
- * stick responses.  Conventions are documented in iskra/deflector.h. */
+/* Segment deflectors: exact path-crossing tests, side tests that keep
+ * their precision for segments of any length, and the bounce / kill /
+ * stick responses, with the bounce at the time of impact when the motion
+ * of the step is known.  Conventions are documented in iskra/deflector.h
+ * and iskra/impact.h. */
 #include "iskra/deflector.h"
 
 #include <math.h>
+#include <string.h>
 
-/* A segment in canonical form: endpoint A first (lexicographic on x, y),
- * d = B - A.  Adding 0.0 turns -0 into +0 so reversed input is bit-identical
- * even there. */
-typedef struct seg {
-    double ax, ay, bx, by, dx, dy;
-} seg;
+#include "sim/flight.h"
 
 const char *const isk_deflect_reaction_names[ISK_DEFLECT_REACTION_COUNT] = {"bounce", "kill", "stick"};
 const char *const isk_restitution_mode_names[ISK_RESTITUTION_MODE_COUNT] = {"uniform", "normal"};
+
+/* ---- error-free transformations (round to nearest, no fused multiply-add:
+ * the build uses -ffp-contract=off) ---------------------------------------- */
+
+static inline void two_sum(double a, double b, double *s, double *e)
+{
+    double x = a + b, bv = x - a, av = x - bv;
+    *s = x;
+    *e = (a - av) + (b - bv);
+}
+
+/* Veltkamp's split: a = hi + lo, each half 26 bits (|a| < 1e300). */
+static inline void split(double a, double *hi, double *lo)
+{
+    double c = 134217729.0 * a; /* 2^27 + 1 */
+    double h = c - (c - a);
+    *hi = h;
+    *lo = a - h;
+}
+
+/* Dekker's product: a*b = p + e exactly. */
+static inline void two_prod(double a, double b, double *p, double *e)
+{
+    double ah, al, bh, bl;
+    split(a, &ah, &al);
+    split(b, &bh, &bl);
+    double x = a * b;
+    *p = x;
+    *e = ((ah * bh - x) + ah * bl + al * bh) + al * bl;
+}
+
+/* The sum of four doubles, exactly as a nonoverlapping expansion (Shewchuk's
+ * grow-expansion), then added from the smallest part: within an ulp of the
+ * exact sum however much it cancels. */
+static double sum4(double a, double b, double c, double d)
+{
+    double e[8], h[8], in[4] = {a, b, c, d};
+    int n = 0;
+    for (int j = 0; j < 4; j++) {
+        double q = in[j];
+        int m = 0;
+        for (int i = 0; i < n; i++) {
+            double s, t;
+            two_sum(q, e[i], &s, &t);
+            q = s;
+            if (t != 0.0)
+                h[m++] = t;
+        }
+        if (q != 0.0 || m == 0)
+            h[m++] = q;
+        memcpy(e, h, (size_t)m * sizeof *e);
+        n = m;
+    }
+    double s = 0.0;
+    for (int i = 0; i < n; i++)
+        s += e[i];
+    return s;
+}
+
+/* ---- segments ------------------------------------------------------------ */
+
+/* A segment in canonical form: endpoint A first (lexicographic on x, y),
+ * d = B - A (rounded; dl its exact remainder), K = cross(A, B) rounded
+ * from its exact value, and the unit normal n = (-dy, dx)/|d|.  Adding 0.0
+ * turns -0 into +0 so reversed input is bit-identical even there. */
+typedef struct seg {
+    double ax, ay, bx, by, dx, dy;
+    double dlx, dly, K;
+    double nx, ny, len;
+} seg;
 
 static seg canon(const isk_deflector *d)
 {
@@ -22,15 +91,40 @@ static seg canon(const isk_deflector *d)
     s.ay = (keep ? d->y0 : d->y1) + 0.0;
     s.bx = (keep ? d->x1 : d->x0) + 0.0;
     s.by = (keep ? d->y1 : d->y0) + 0.0;
-    s.dx = s.bx - s.ax;
-    s.dy = s.by - s.ay;
+    two_sum(s.bx, -s.ax, &s.dx, &s.dlx);
+    two_sum(s.by, -s.ay, &s.dy, &s.dly);
+    double k1, f1, k2, f2;
+    two_prod(s.ax, s.by, &k1, &f1);
+    two_prod(s.ay, s.bx, &k2, &f2);
+    s.K = sum4(k1, f1, -k2, -f2);
+    s.len = hypot(s.dx, s.dy);
+    s.nx = -s.dy / s.len;
+    s.ny = s.dx / s.len;
     return s;
 }
 
-/* Side of P relative to the line through the segment: cross(B - A, P - A). */
-static inline double side(const seg *s, double px, double py)
+/* Side of P relative to the line through the segment, cross(B - A, P - A).
+ * The direct formula relative to A carries the rounding of |P - A|: for a
+ * segment reaching to 1e12 a point near the origin is resolved only to
+ * 1e-4, and at 1e150 not at all.  So it is used only where its error bound
+ * (Shewchuk's orient2d bound) shows it accurate to 2^-32 of its value;
+ * otherwise the same determinant is evaluated as cross(B - A, P) + K in
+ * twice the working precision (exact products, exact B - A and K), whose
+ * error is that of a point at |P| on a segment through the origin: the
+ * precision no longer depends on where the endpoints are. */
+static double side(const seg *s, double px, double py)
 {
-    return s->dx * (py - s->ay) - s->dy * (px - s->ax);
+    double l = s->dx * (py - s->ay), r = s->dy * (px - s->ax);
+    double o = l - r;
+    const double bound = 0x1p32 * 3.3306690738754716e-16 * (fabs(l) + fabs(r)); /* (3 + 16 eps) eps */
+    if (fabs(o) > bound || !(fabs(px) < 1e300 && fabs(py) < 1e300))
+        return o;
+    double p1, e1, p2, e2, u, eu, w, ew;
+    two_prod(s->dx, py, &p1, &e1);
+    two_prod(s->dy, px, &p2, &e2);
+    two_sum(p1, -p2, &u, &eu);
+    two_sum(u, s->K, &w, &ew);
+    return w + (((e1 - e2) + (eu + ew)) + (s->dlx * py - s->dly * px));
 }
 
 static inline int sgn(double v)
@@ -74,10 +168,11 @@ isk_status isk_deflector_check(const isk_deflector *d)
         return ISK_ERR_NAN;
     if (d->x0 == d->x1 && d->y0 == d->y1)
         return ISK_ERR_RANGE;
-    seg s = canon(d);
-    if (!isfinite(s.dx) || !isfinite(s.dy) || !isfinite(hypot(s.dx, s.dy)))
-        return ISK_ERR_RANGE; /* endpoints so far apart that d overflows */
-    if (d->restitution < 0.0 || d->probability < 0.0 || d->probability > 1.0)
+    if (!(fabs(d->x0) <= ISK_DEFLECT_COORD_MAX && fabs(d->y0) <= ISK_DEFLECT_COORD_MAX &&
+          fabs(d->x1) <= ISK_DEFLECT_COORD_MAX && fabs(d->y1) <= ISK_DEFLECT_COORD_MAX))
+        return ISK_ERR_RANGE;
+    if (d->restitution < 0.0 || d->restitution > ISK_DEFLECT_RESTITUTION_MAX || d->probability < 0.0 ||
+        d->probability > 1.0)
         return ISK_ERR_RANGE;
     if (d->reaction != ISK_DEFLECT_BOUNCE && d->reaction != ISK_DEFLECT_KILL && d->reaction != ISK_DEFLECT_STICK)
         return ISK_ERR_RANGE;
@@ -86,10 +181,10 @@ isk_status isk_deflector_check(const isk_deflector *d)
     return ISK_OK;
 }
 
+/* The velocity map M (iskra/deflector.h). */
 static void reflect(const isk_deflector *d, const seg *s, double *vx, double *vy)
 {
-    double len = hypot(s->dx, s->dy);
-    double nx = -s->dy / len, ny = s->dx / len;
+    double nx = s->nx, ny = s->ny;
     double vn = *vx * nx + *vy * ny;
     double c = d->restitution;
     if (d->mode == ISK_RESTITUTION_UNIFORM) {
@@ -102,18 +197,42 @@ static void reflect(const isk_deflector *d, const seg *s, double *vx, double *vy
     }
 }
 
+/* A bumper (c > 1) never leaves a speed above ISK_SPEED_LIMIT. */
+static void cap_speed(double *vx, double *vy)
+{
+    double v = hypot(*vx, *vy);
+    if (v > ISK_SPEED_LIMIT) {
+        double f = ISK_SPEED_LIMIT / v;
+        *vx *= f;
+        *vy *= f;
+    }
+}
+
 void isk_deflector_reflect(const isk_deflector *d, double *vx, double *vy)
 {
     seg s = canon(d);
     reflect(d, &s, vx, vy);
 }
 
+/* ---- one call: the segments in canonical form, the paths ----------------- */
+
+enum { SEG_CACHE = 64 }; /* more segments than this are put in canonical form on the fly */
+
 typedef struct ctx {
     const isk_deflector *defs;
     int ndef;
+    seg cache[SEG_CACHE];
     int passed[ISK_DEFLECT_MAX_HITS];
     int npassed;
 } ctx;
+
+static const seg *get_seg(const ctx *c, int k, seg *tmp)
+{
+    if (k < SEG_CACHE)
+        return &c->cache[k];
+    *tmp = canon(&c->defs[k]);
+    return tmp;
+}
 
 static int was_passed(const ctx *c, int k)
 {
@@ -132,8 +251,8 @@ static int nearest(const ctx *c, double sx, double sy, double ex, double ey, dou
     for (int k = 0; k < c->ndef; k++) {
         if (c->npassed && was_passed(c, k))
             continue;
-        seg s = canon(&c->defs[k]);
-        double tk = crossing(&s, sx, sy, ex, ey);
+        seg tmp;
+        double tk = crossing(get_seg(c, k, &tmp), sx, sy, ex, ey);
         if (tk >= 0.0 && tk < bt) {
             bt = tk;
             best = k;
@@ -141,6 +260,17 @@ static int nearest(const ctx *c, double sx, double sy, double ex, double ey, dou
     }
     *t = bt;
     return best;
+}
+
+/* 1 when (x, y) is on no segment's line. */
+static int off_every_line(const ctx *c, double x, double y)
+{
+    for (int k = 0; k < c->ndef; k++) {
+        seg tmp;
+        if (side(get_seg(c, k, &tmp), x, y) == 0.0)
+            return 0;
+    }
+    return 1;
 }
 
 /* A point Q = S + tau (E - S), tau just below t, strictly on S's side of the
@@ -152,21 +282,15 @@ static int nearest(const ctx *c, double sx, double sy, double ex, double ey, dou
 static void safe_point(const ctx *c, int hit, double sx, double sy, double ex, double ey, double t, double *qx,
                       double *qy)
 {
-    seg h = canon(&c->defs[hit]);
-    int want = sgn(side(&h, sx, sy));
+    seg tmp;
+    const seg *h = get_seg(c, hit, &tmp);
+    int want = sgn(side(h, sx, sy));
     double dx = ex - sx, dy = ey - sy;
     double delta = t * 0x1p-50;
     for (int iter = 0; iter < 64 && delta < t; iter++, delta *= 2.0) {
         double tau = t - delta;
         double x = sx + tau * dx, y = sy + tau * dy;
-        if (sgn(side(&h, x, y)) != want)
-            continue;
-        int on_line = 0;
-        for (int k = 0; k < c->ndef && !on_line; k++) {
-            seg s = canon(&c->defs[k]);
-            on_line = side(&s, x, y) == 0.0;
-        }
-        if (on_line)
+        if (sgn(side(h, x, y)) != want || !off_every_line(c, x, y))
             continue;
         double tq;
         if (nearest(c, sx, sy, x, y, &tq) >= 0)
@@ -179,9 +303,124 @@ static void safe_point(const ctx *c, int hit, double sx, double sy, double ex, d
     *qy = sy;
 }
 
-isk_status isk_deflect(const isk_deflector *defs, int ndef, double *x, double *y, double *vx, double *vy,
-                       const double *x_old, const double *y_old, size_t n, isk_rng *rng, uint8_t *killed,
-                       isk_deflect_stats *stats)
+/* ---- the motion of one particle in the step (iskra/impact.h) ------------- */
+
+/* The flight since the last bounce: start S, velocity U, acceleration A,
+ * drag rate k, time left s; the integrator's velocity offset (dx, dy). */
+typedef struct flight {
+    double sx, sy, ux, uy, ax, ay, k, s;
+    double delx, dely;
+} flight;
+
+static void flight_at(const flight *f, double t, double *x, double *y, double *vx, double *vy)
+{
+    double e, d1, d2;
+    isk_fl_basis(f->k, t, &e, &d1, &d2);
+    *x = f->sx + f->ux * d1 + f->ax * d2;
+    *y = f->sy + f->uy * d1 + f->ay * d2;
+    *vx = f->ux * e + f->ax * d1;
+    *vy = f->uy * e + f->ay * d1;
+}
+
+/* When the flight meets the line of segment s (S strictly on one side);
+ * t_chord: where the chord S -> E crossed it (the answer when the curve and
+ * the chord disagree, by rounding or near an end of the segment). */
+static double flight_hit(const flight *f, const seg *s, double t_chord)
+{
+    double o = side(s, f->sx, f->sy) / s->len; /* signed distance of S from the line */
+    double sg = o > 0.0 ? 1.0 : -1.0;
+    double c0 = sg * o;
+    double un = sg * (s->nx * f->ux + s->ny * f->uy), an = sg * (s->nx * f->ax + s->ny * f->ay);
+    double e, d1, d2;
+    isk_fl_basis(f->k, f->s, &e, &d1, &d2);
+    double f_end = c0 + un * d1 + an * d2;
+    double t_turn = isk_fl_turn(un, an, f->k);
+    if (t_turn > 0.0 && t_turn < f->s) {
+        isk_fl_basis(f->k, t_turn, &e, &d1, &d2);
+        if (c0 + un * d1 + an * d2 < 0.0)
+            return isk_fl_root(c0, un, an, f->k, 0.0, t_turn);
+    }
+    if (f_end < 0.0)
+        return isk_fl_root(c0, un, an, f->k, 0.0, f->s);
+    return t_chord * f->s;
+}
+
+/* Bounce of a flight on segment `hit` (deflector d): the impact point on the
+ * curve, the safe point Q before it, the reflected velocity, the rest of
+ * the flight from Q; resting contact per iskra/impact.h.  Returns the new
+ * chord end in (*ex, *ey). */
+static void bounce_flight(const ctx *c, int hit, const isk_deflector *d, flight *f, double t_chord, double *ex,
+                          double *ey)
+{
+    seg tmp;
+    const seg *s = get_seg(c, hit, &tmp);
+    const double tau = flight_hit(f, s, t_chord);
+    double hx, hy, uix, uiy;
+    flight_at(f, tau, &hx, &hy, &uix, &uiy);
+    double qx, qy;
+    double th = crossing(s, f->sx, f->sy, hx, hy);
+    if (th >= 0.0)
+        safe_point(c, hit, f->sx, f->sy, hx, hy, th, &qx, &qy);
+    else if (sgn(side(s, hx, hy)) == sgn(side(s, f->sx, f->sy)) && off_every_line(c, hx, hy) &&
+             nearest(c, f->sx, f->sy, hx, hy, &th) < 0) {
+        qx = hx; /* the curve met the line a hair off the chord: H itself is safe */
+        qy = hy;
+    } else
+        safe_point(c, hit, f->sx, f->sy, *ex, *ey, t_chord, &qx, &qy);
+    /* Reflect the velocity at impact; only one moving into the segment. */
+    double nsg = side(s, f->sx, f->sy) > 0.0 ? 1.0 : -1.0; /* n_out = nsg * n points back to the start */
+    double nox = nsg * s->nx, noy = nsg * s->ny;
+    if (uix * nox + uiy * noy < 0.0) {
+        reflect(d, s, &uix, &uiy);
+        cap_speed(&uix, &uiy);
+    }
+    f->s = f->s - tau > 0.0 ? f->s - tau : 0.0;
+    f->sx = qx;
+    f->sy = qy;
+    f->ux = uix;
+    f->uy = uiy;
+    /* Pressed back into the segment with every further hop fitting in the
+     * step: it rests on it (uniform restitution scales the tangential part
+     * at every hop too, so it stops; normal restitution lets it slide) and
+     * the segment holds it against the normal acceleration. */
+    const double V = f->ux * nox + f->uy * noy, an = f->ax * nox + f->ay * noy, cr = d->restitution;
+    if (an < 0.0 && (!(V > 0.0) || (cr < 1.0 && 2.0 * V <= -an * (1.0 - cr) * f->s))) {
+        if (d->mode == ISK_RESTITUTION_UNIFORM && cr < 1.0) {
+            f->ux = f->uy = 0.0;
+        } else {
+            f->ux -= V * nox;
+            f->uy -= V * noy;
+        }
+        f->ax -= an * nox;
+        f->ay -= an * noy;
+    }
+    double vx, vy;
+    flight_at(f, f->s, ex, ey, &vx, &vy);
+}
+
+/* Bounce of a straight path with the end-of-step velocity (isk_deflect):
+ * the rest of the path, (1 - t)(E - S), and the velocity are both mapped by
+ * M from the safe point. */
+static void bounce_linear(const ctx *c, int hit, const isk_deflector *d, double *sx, double *sy, double *ex,
+                          double *ey, double *ux, double *uy, double t)
+{
+    seg tmp;
+    const seg *s = get_seg(c, hit, &tmp);
+    double qx, qy;
+    safe_point(c, hit, *sx, *sy, *ex, *ey, t, &qx, &qy);
+    double rx = (1.0 - t) * (*ex - *sx), ry = (1.0 - t) * (*ey - *sy); /* rest of the path */
+    reflect(d, s, ux, uy);
+    cap_speed(ux, uy);
+    reflect(d, s, &rx, &ry);
+    *sx = qx;
+    *sy = qy;
+    *ex = qx + rx;
+    *ey = qy + ry;
+}
+
+static isk_status deflect(const isk_deflector *defs, int ndef, double *x, double *y, double *vx, double *vy,
+                          const double *x_old, const double *y_old, const isk_step_motion *mo, size_t n,
+                          isk_rng *rng, uint8_t *killed, isk_deflect_stats *stats)
 {
     if (ndef < 0)
         return ISK_ERR_SIZE;
@@ -197,6 +436,10 @@ isk_status isk_deflect(const isk_deflector *defs, int ndef, double *x, double *y
     }
     if (n > 0 && (!x || !y || !vx || !vy || !x_old || !y_old))
         return ISK_ERR_NULL;
+    if (mo && n > 0 && (!mo->vx0 || !mo->vy0 || (mo->drag != 0.0 && !mo->m)))
+        return ISK_ERR_NULL;
+    if (mo && (!isfinite(mo->h) || !(mo->h > 0.0) || !isfinite(mo->drag) || mo->drag < 0.0))
+        return ISK_ERR_RANGE;
     if ((need_rng && !rng) || (need_killed && !killed))
         return ISK_ERR_NULL;
     if (ndef == 0)
@@ -206,12 +449,16 @@ isk_status isk_deflect(const isk_deflector *defs, int ndef, double *x, double *y
     ctx c;
     c.defs = defs;
     c.ndef = ndef;
+    for (int k = 0; k < ndef && k < SEG_CACHE; k++)
+        c.cache[k] = canon(&defs[k]);
     for (size_t i = 0; i < n; i++) {
         if (killed && killed[i])
             continue;
         double sx = x_old[i], sy = y_old[i], ex = x[i], ey = y[i], ux = vx[i], uy = vy[i];
         if (!isfinite(sx) || !isfinite(sy) || !isfinite(ex) || !isfinite(ey) || !isfinite(ux) || !isfinite(uy))
             continue;
+        flight f;
+        int fitted = 0, bounced = 0, linear = mo == NULL;
         c.npassed = 0;
         int hits = 0, done = 0;
         while (!done) {
@@ -223,6 +470,11 @@ isk_status isk_deflect(const isk_deflector *defs, int ndef, double *x, double *y
                 ex = sx; /* out of hits: stay at the last safe point */
                 ey = sy;
                 local.last_resort++;
+                if (bounced) { /* with the velocity the flight has there */
+                    ux = f.ux + f.delx;
+                    uy = f.uy + f.dely;
+                    bounced = 0;
+                }
                 break;
             }
             hits++;
@@ -235,38 +487,54 @@ isk_status isk_deflect(const isk_deflector *defs, int ndef, double *x, double *y
                 c.passed[c.npassed++] = k;
                 continue;
             }
-            double qx, qy;
-            safe_point(&c, k, sx, sy, ex, ey, t, &qx, &qy);
-            switch (d->reaction) {
-            case ISK_DEFLECT_KILL:
-                killed[i] = 1;
-                local.kills++;
+            if (d->reaction != ISK_DEFLECT_BOUNCE) {
+                double qx, qy;
+                safe_point(&c, k, sx, sy, ex, ey, t, &qx, &qy);
+                if (d->reaction == ISK_DEFLECT_KILL) {
+                    killed[i] = 1;
+                    local.kills++;
+                } else {
+                    ux = uy = 0.0;
+                    bounced = 0;
+                    local.sticks++;
+                }
                 ex = qx;
                 ey = qy;
                 done = 1;
                 break;
-            case ISK_DEFLECT_STICK:
-                ux = uy = 0.0;
-                local.sticks++;
-                ex = qx;
-                ey = qy;
-                done = 1;
-                break;
-            default: /* validated: ISK_DEFLECT_BOUNCE */
-            case ISK_DEFLECT_BOUNCE: {
-                seg s = canon(d);
-                double rx = (1.0 - t) * (ex - sx), ry = (1.0 - t) * (ey - sy); /* rest of the path */
-                reflect(d, &s, &ux, &uy);
-                reflect(d, &s, &rx, &ry);
-                local.bounces++;
-                sx = qx;
-                sy = qy;
-                ex = qx + rx;
-                ey = qy + ry;
-                c.npassed = 0; /* a new path */
-                break;
             }
+            local.bounces++;
+            c.npassed = 0; /* a new path */
+            if (linear) {
+                bounce_linear(&c, k, d, &sx, &sy, &ex, &ey, &ux, &uy, t);
+                continue;
             }
+            if (!fitted) {
+                const double kk = mo->drag > 0.0 ? mo->drag / mo->m[i] : 0.0;
+                f.sx = sx;
+                f.sy = sy;
+                f.k = kk;
+                f.s = mo->h;
+                isk_fl_fit(sx, mo->vx0[i], ex, ux, kk, mo->h, &f.ux, &f.ax, &f.delx);
+                isk_fl_fit(sy, mo->vy0[i], ey, uy, kk, mo->h, &f.uy, &f.ay, &f.dely);
+                fitted = 1;
+                if (!(isfinite(f.ux) && isfinite(f.uy) && isfinite(f.ax) && isfinite(f.ay))) {
+                    /* no usable motion (a start velocity not finite): the path rule */
+                    bounce_linear(&c, k, d, &sx, &sy, &ex, &ey, &ux, &uy, t);
+                    linear = 1;
+                    continue;
+                }
+            }
+            bounce_flight(&c, k, d, &f, t, &ex, &ey);
+            sx = f.sx;
+            sy = f.sy;
+            bounced = 1;
+        }
+        if (bounced) {
+            double px, py, wx, wy;
+            flight_at(&f, f.s, &px, &py, &wx, &wy);
+            ux = wx + f.delx;
+            uy = wy + f.dely;
         }
         x[i] = ex;
         y[i] = ey;
@@ -282,4 +550,20 @@ isk_status isk_deflect(const isk_deflector *defs, int ndef, double *x, double *y
         stats->last_resort += local.last_resort;
     }
     return ISK_OK;
+}
+
+isk_status isk_deflect(const isk_deflector *defs, int ndef, double *x, double *y, double *vx, double *vy,
+                       const double *x_old, const double *y_old, size_t n, isk_rng *rng, uint8_t *killed,
+                       isk_deflect_stats *stats)
+{
+    return deflect(defs, ndef, x, y, vx, vy, x_old, y_old, NULL, n, rng, killed, stats);
+}
+
+isk_status isk_deflect_step(const isk_deflector *defs, int ndef, double *x, double *y, double *vx, double *vy,
+                            const isk_step_motion *mo, size_t n, isk_rng *rng, uint8_t *killed,
+                            isk_deflect_stats *stats)
+{
+    if (!mo)
+        return ISK_ERR_NULL;
+    return deflect(defs, ndef, x, y, vx, vy, mo->x0, mo->y0, mo, n, rng, killed, stats);
 }

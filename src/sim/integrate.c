@@ -5,6 +5,7 @@
 #include <math.h>
 #include <string.h>
 
+#include "sim/flight.h"
 #include "sim/kernels.h"
 
 void isk_integrate_semi_euler(size_t n, double *restrict x, double *restrict y, double *restrict vx,
@@ -23,20 +24,6 @@ void isk_integrate_euler(size_t n, double *restrict x, double *restrict y, doubl
         isk_k_euler(&x[i], &y[i], &vx[i], &vy[i], m[i], fx[i], fy[i], dt);
 }
 
-/* (h - 1 + e^-h)/h^2 for 0 <= h < 0.1 by its Taylor series
- * sum_{j>=0} (-h)^j / (j+2)!; 10 terms leave < 1e-18 relative error. */
-static double phi2_series(double h)
-{
-    static const double inv_fact[10] = {
-        1.0 / 2, 1.0 / 6, 1.0 / 24, 1.0 / 120, 1.0 / 720, 1.0 / 5040, 1.0 / 40320,
-        1.0 / 362880, 1.0 / 3628800, 1.0 / 39916800,
-    };
-    double acc = 0.0;
-    for (int j = 9; j >= 0; j--)
-        acc = inv_fact[j] - h * acc;
-    return acc;
-}
-
 void isk_integrate_exact_drag(size_t n, double *restrict x, double *restrict y, double *restrict vx,
                               double *restrict vy, const double *restrict m, const double *restrict fx,
                               const double *restrict fy, double b, double dt)
@@ -48,7 +35,7 @@ void isk_integrate_exact_drag(size_t n, double *restrict x, double *restrict y, 
         double em = expm1(-h);          /* e^-h - 1, accurate for small h */
         double e = 1.0 + em;            /* e^-h */
         double g1 = h > 0.0 ? -em / h : 1.0;
-        double g2 = h < 0.1 ? phi2_series(h) : (h + em) / (h * h);
+        double g2 = h < 0.1 ? isk_fl_phi2_series(h) : (h + em) / (h * h);
         double ax = fx[i] / m[i], ay = fy[i] / m[i];
         double ovx = vx[i], ovy = vy[i];
         x[i] = x[i] + ovx * (dt * g1) + ax * (dt2 * g2);

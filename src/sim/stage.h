@@ -75,12 +75,16 @@ struct isk_stage {
             int faithful;                                    /* 1: also add the offset change to vx */
             double omega_min, omega_max, amp_min, amp_max;   /* for describe only */
         } osc;
-        const isk_bounds *walls;
+        struct {
+            const isk_bounds *b;
+            double drag;                                     /* the motion's linear drag b (impact.h) */
+        } walls;                                             /* reflect mode needs the remember stage */
         struct {
             const isk_deflector *segs;
             int n;
             isk_rng *rng;                                    /* the owner's stream (probabilities) */
             int can_kill;                                    /* some segment kills: life = -inf */
+            double drag;                                     /* the motion's linear drag b */
         } deflect;
     } u;
 };
@@ -114,13 +118,13 @@ void isk_pipeline_run_pool(const isk_pipeline *pl, isk_particles *p, size_t begi
 void isk_pipeline_describe(const isk_pipeline *pl, FILE *out);
 
 /* The stage kinds, in the only order they ever appear in a list. */
-extern const isk_stage_kind isk_stage_remember;   /* x_old, y_old = x, y (deflectors need the path) */
+extern const isk_stage_kind isk_stage_remember;   /* the state before the move (bounces at impact) */
 extern const isk_stage_kind isk_stage_drift;      /* constant acceleration + semi-implicit Euler, no mass */
 extern const isk_stage_kind isk_stage_drift_slow; /* the same with the fire thesis's slowing in between */
 extern const isk_stage_kind isk_stage_motion;     /* forces + an integrator (isk_integrate_block) */
 extern const isk_stage_kind isk_stage_slow;       /* v *= max(0, 1 - slowing*h) */
 extern const isk_stage_kind isk_stage_oscillate;  /* the fire thesis's horizontal sway (ISK_PARTICLES_OSC) */
-extern const isk_stage_kind isk_stage_walls;      /* isk_bounds_apply */
+extern const isk_stage_kind isk_stage_walls;      /* isk_bounds_apply_step (after remember) */
 extern const isk_stage_kind isk_stage_deflect;    /* deflector segments */
 extern const isk_stage_kind isk_stage_age;        /* age += h */
 

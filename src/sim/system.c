@@ -226,14 +226,21 @@ isk_status isk_system_step(isk_system *s, double dt)
         return st;
 
     /* The system's fields compile into the block runner's list (the same
-     * runner the effect steps through): motion, walls, ageing. */
+     * runner the effect steps through): (remember,) motion, walls, ageing.
+     * Sound walls bounce at the time of impact, from the state before the
+     * move (iskra/impact.h). */
     isk_pipeline pl;
     isk_pipeline_init(&pl);
+    if (bounce && s->bounds.mode == ISK_BOUNCE_REFLECT)
+        isk_pipeline_add(&pl, &isk_stage_remember);
     isk_stage *motion = isk_pipeline_add(&pl, &isk_stage_motion);
     motion->u.motion.method = s->integrator;
     motion->u.motion.forces = &s->forces;
-    if (bounce)
-        isk_pipeline_add(&pl, &isk_stage_walls)->u.walls = &s->bounds;
+    if (bounce) {
+        isk_stage *w = isk_pipeline_add(&pl, &isk_stage_walls);
+        w->u.walls.b = &s->bounds;
+        w->u.walls.drag = s->forces.drag;
+    }
     if (s->ageing)
         isk_pipeline_add(&pl, &isk_stage_age);
 

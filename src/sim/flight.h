@@ -1,0 +1,52 @@
+/* src/sim/flight.h — the motion of one particle within one step, for
+ * bounces at the time of impact (internal; iskra/impact.h documents the
+ * model for users).
+ *
+ * Per axis, a particle that moved from (p0, v0) to (p1, v1) over the step h
+ * under a linear drag k = b/m (0: none) is described by the flight
+ *
+ *     p(t) = P + U D1(t) + a D2(t),      u(t) = U e(t) + a D1(t)
+ *     e(t) = e^{-kt},  D1(t) = (1 - e^{-kt})/k,  D2(t) = (t - D1(t))/k
+ *
+ * (k = 0: D1 = t, D2 = t^2/2, the parabola).  This is the exact motion
+ * under a constant acceleration a and the drag, started at P with velocity
+ * U.  isk_fl_fit chooses a from the step's velocity change and U from its
+ * displacement, so the flight passes through both positions; for gravity,
+ * wind and drag that is the exact motion with every integrator whose
+ * positions lie on it (Verlet, RK4, exact drag: then U = v0), and for the
+ * Euler forms it is the parabola their positions lie on, whose velocity is
+ * the stored one shifted by -+a h/2 (`delta`, the integrator's own offset,
+ * kept across a bounce).  With other forces (potentials) it is the
+ * second-order approximation the step's two end states define.
+ *
+ * Nothing here allocates or branches on scene-level choices; everything
+ * runs only for the few particles that hit something in a step. */
+#ifndef ISKRA_SIM_FLIGHT_H
+#define ISKRA_SIM_FLIGHT_H
+
+/* e(t), D1(t), D2(t) for drag k >= 0 and time t >= 0. */
+void isk_fl_basis(double k, double t, double *e, double *d1, double *d2);
+
+/* (h - 1 + e^-h)/h^2 for 0 <= h < 0.1 by its Taylor series (the exact-drag
+ * update uses it too: one series, one place). */
+double isk_fl_phi2_series(double h);
+
+/* The flight of one axis through (p0, v0) -> (p1, v1) over h with drag k:
+ * its start velocity U, acceleration a, and the integrator's velocity
+ * offset delta = v1 - u(h).  Without acceleration or drag (v1 == v0, k = 0)
+ * the flight is the straight line at v1 itself (U = v1, delta = 0). */
+void isk_fl_fit(double p0, double v0, double p1, double v1, double k, double h, double *U, double *a,
+                double *delta);
+
+/* The time in (0, +inf) at which u(t) = 0 (the flight's turning point), or
+ * -1 when it has none (U and a not of opposite signs). */
+double isk_fl_turn(double U, double a, double k);
+
+/* A root of f(t) = c0 + U D1(t) + a D2(t) in [t0, t1], given f(t0) >= 0 and
+ * f(t1) < 0 (the flight leaves the side where f > 0 in that interval, and f
+ * has no other root there).  Exact for k = 0 (the quadratic's stable root),
+ * safeguarded Newton for k > 0; when rounding has put no sign change in the
+ * interval it returns the end where |f| is smaller. */
+double isk_fl_root(double c0, double U, double a, double k, double t0, double t1);
+
+#endif
