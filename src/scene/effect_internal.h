@@ -160,7 +160,6 @@ extern const fx_step_kind fx_step_late_walls; /* frame start: draw_before_bounce
 extern const fx_step_kind fx_step_cull;       /* substep end: age >= life */
 
 /* effect_stream.c */
-isk_status fx_stream_validate(const isk_emitter_def *e, char *why, size_t n);
 void fx_stream_reset(fx_group *g, double time);
 extern const fx_step_kind fx_step_spawn;      /* substep end: births in (t0, t0 + h] */
 

@@ -15,11 +15,10 @@
  * (omega then amplitude, then the phase with osc_random_phase; only with
  * oscillation), jitter (one, only in the thesis jitter mode). */
 #include <math.h>
+#include <stdint.h>
 
 #include "effect_internal.h"
 #include "iskra/shape.h"
-
-#define FX_MAX_RATE 1e7 /* particles per second */
 
 static isk_shape shape_of(const isk_emitter_def *em)
 {
@@ -42,45 +41,6 @@ static isk_velgen velgen_of(const isk_emitter_def *em)
     case ISK_VELGEN_CONE: return isk_velgen_cone(em->angle, em->spread, em->speed_min, em->speed_max);
     default: return isk_velgen_constant(em->vel.x, em->vel.y);
     }
-}
-
-isk_status fx_stream_validate(const isk_emitter_def *em, char *why, size_t n)
-{
-    if ((unsigned)em->shape >= ISK_SHAPE_COUNT || (unsigned)em->launch >= ISK_VELGEN_COUNT) {
-        snprintf(why, n, "unknown spawn shape or velocity kind");
-        return ISK_ERR_RANGE;
-    }
-    isk_shape s = shape_of(em);
-    if (isk_shape_check(&s) != ISK_OK) {
-        snprintf(why, n, "spawn shape parameters invalid (radii >= 0, inner <= outer, all finite)");
-        return ISK_ERR_RANGE;
-    }
-    isk_velgen v = velgen_of(em);
-    if (isk_velgen_check(&v) != ISK_OK) {
-        snprintf(why, n, "velocity parameters invalid (speeds finite, 0 <= min <= max, spread 0..360 degrees)");
-        return ISK_ERR_RANGE;
-    }
-    if (!isfinite(em->rate) || em->rate < 0 || em->rate > FX_MAX_RATE) {
-        snprintf(why, n, "rate must be 0..%g particles per second", FX_MAX_RATE);
-        return ISK_ERR_RANGE;
-    }
-    if ((unsigned)em->rate_mode > ISK_RATE_THESIS || (unsigned)em->birth > ISK_BIRTH_FRAME) {
-        snprintf(why, n, "unknown rate or birth mode");
-        return ISK_ERR_RANGE;
-    }
-    if (em->count > em->capacity) {
-        snprintf(why, n, "burst count %zu exceeds capacity %zu", em->count, em->capacity);
-        return ISK_ERR_RANGE;
-    }
-    if (!isfinite(em->burst_every) || em->burst_every < 0) {
-        snprintf(why, n, "burst interval must be >= 0 seconds");
-        return ISK_ERR_RANGE;
-    }
-    if (em->rate == 0 && em->count == 0) {
-        snprintf(why, n, "a stream needs rate > 0 or a burst count > 0");
-        return ISK_ERR_RANGE;
-    }
-    return ISK_OK;
 }
 
 void fx_stream_reset(fx_group *g, double time)
@@ -146,8 +106,69 @@ static isk_status birth(isk_effect *e, fx_group *g, const launcher *l, double ag
     return ISK_OK;
 }
 
+/* Births lost to a full pool are counted, not looped over: n more of them. */
+static void drop(fx_group *g, double n)
+{
+    double room = (double)(SIZE_MAX - g->dropped);
+    g->dropped = n >= room ? SIZE_MAX : g->dropped + (size_t)n;
+}
+
+/* Places left in the pool. */
+static size_t room_left(const fx_group *g)
+{
+    return g->store.count < g->def->capacity ? g->def->capacity - g->store.count : 0;
+}
+
+/* Bursts due up to t1_tol: how many are due is computed, not counted one
+ * by one, so an interval below the clock's resolution (1e-300) cannot stall
+ * the schedule and a tiny one (1e-8: 10^6 bursts a frame) costs at most one
+ * turn per particle the pool can still take; the rest are dropped and
+ * counted.  Bursts older than the longest life are never born (as single
+ * births). */
+static isk_status run_bursts(isk_effect *e, fx_group *g, const launcher *l, double t1, double t1_tol, double h)
+{
+    const isk_emitter_def *em = g->def;
+    const double every = em->burst_every, nb = g->next_burst;
+    double due = every > 0 ? floor((t1_tol - nb) / every) + 1.0 : 1.0;
+    if (!(due >= 1.0))
+        due = 1.0; /* rounding at the edge: the one that made the test true */
+    double next = every > 0 ? nb + due * every : INFINITY;
+    if (!(next > t1_tol))
+        next = nextafter(t1_tol, INFINITY); /* the schedule is finer than the clock: never back in time */
+    g->next_burst = next;
+    if (em->count == 0)
+        return ISK_OK;
+    const double life_max = em->life + em->life_range;
+    double first = 0.0; /* the first burst young enough to live */
+    if (isfinite(life_max) && every > 0 && t1 - life_max > nb)
+        first = floor((t1 - life_max - nb) / every);
+    int doa = 0;
+    for (double j = first; j < due; j++) { /* ends: each turn fills the pool or is one of <= 3 dead ones */
+        if (room_left(g) == 0) {
+            drop(g, (due - j) * (double)em->count);
+            break;
+        }
+        double age = t1 - (nb + j * every);
+        if (age < 0)
+            age = 0;
+        if (isfinite(em->life) && age >= life_max) {
+            if (++doa > 2)
+                break; /* j no longer moves (beyond 2^53): nothing younger is representable */
+            continue; /* dead on arrival: the whole burst */
+        }
+        for (size_t k = 0; k < em->count; k++) {
+            isk_status s = birth(e, g, l, em->birth == ISK_BIRTH_THESIS_JITTER ? h : age);
+            if (s != ISK_OK)
+                return s;
+        }
+    }
+    return ISK_OK;
+}
+
 /* The births due in (t0, t0 + h], each created at t0 + h and advanced by
- * its age. */
+ * its age.  Every loop here ends after at most (places left in the pool +
+ * 1) turns, whatever the rate, interval and step: births beyond the pool's
+ * room are counted as dropped in one addition. */
 static isk_status run_spawn(isk_effect *e, fx_group *g, double t0, double h)
 {
     const isk_emitter_def *em = g->def;
@@ -159,39 +180,53 @@ static isk_status run_spawn(isk_effect *e, fx_group *g, double t0, double h)
     isk_status s;
 
     /* Bursts first: they are scheduled events. */
-    while (g->next_burst <= t1_tol) {
-        double age = t1 - g->next_burst;
-        if (age < 0) age = 0;
-        for (size_t k = 0; k < em->count; k++) {
-            if (isfinite(em->life) && age >= em->life + em->life_range)
-                break; /* dead on arrival: the whole burst */
-            if ((s = birth(e, g, &l, em->birth == ISK_BIRTH_THESIS_JITTER ? h : age)) != ISK_OK)
-                return s;
-        }
-        g->next_burst = em->burst_every > 0 ? g->next_burst + em->burst_every : INFINITY;
-    }
+    if (g->next_burst <= t1_tol && (s = run_bursts(e, g, &l, t1, t1_tol, h)) != ISK_OK)
+        return s;
     if (!(em->rate > 0))
         return ISK_OK;
     if (em->rate_mode == ISK_RATE_THESIS) {
         /* The fire thesis: (unsigned)(dt*rate + 0.5) per frame, no carry;
          * at 60 frames/s a rate of 20/s gives 0.833 -> nothing, ever. */
-        unsigned k = (unsigned)(h * em->rate + 0.5);
-        for (unsigned j = 0; j < k; j++)
+        double want = floor(h * em->rate + 0.5); /* <= 10^10: clamped before any integer cast */
+        double take = fmin(want, (double)room_left(g));
+        for (size_t j = 0; j < (size_t)take; j++)
             if ((s = birth(e, g, &l, em->birth == ISK_BIRTH_THESIS_JITTER ? h : 0.0)) != ISK_OK)
                 return s;
+        drop(g, want - take);
         return ISK_OK;
     }
     /* Accumulator: the k-th particle is due at start + k/rate. */
-    for (;;) {
+    const double life_max = em->life + em->life_range;
+    if (isfinite(life_max)) {
+        /* Skip those that would be dead already (never created): all but
+         * the last life_max*rate + 1 of a long step. */
+        double oldest = floor((t1 - life_max - g->origin) * em->rate);
+        if (oldest > (double)g->emitted + 1.0)
+            g->emitted = oldest - 1.0 >= 18446744073709549568.0 ? UINT64_MAX : (uint64_t)(oldest - 1.0);
+    }
+    int doa = 0;
+    for (;;) { /* ends: each turn is a birth, the pool's end, or one of <= 3 dead ones */
         double tb = g->origin + (double)(g->emitted + 1) / em->rate;
         if (tb > t1_tol)
             break;
+        if (room_left(g) == 0) {
+            /* The rest of this step's births find no room: counted, skipped. */
+            double n = floor((t1_tol - g->origin) * em->rate) - (double)g->emitted;
+            if (n < 1)
+                n = 1; /* at least the one found due (a rounded-off last one comes next step) */
+            g->emitted += n >= 18446744073709549568.0 ? 0 : (uint64_t)n;
+            drop(g, n);
+            break;
+        }
         g->emitted++;
         double age = t1 - tb;
         if (age < 0)
             age = 0;
-        if (isfinite(em->life) && age >= em->life + em->life_range)
+        if (isfinite(em->life) && age >= life_max) {
+            if (++doa > 2)
+                break; /* the clock no longer resolves single births here */
             continue; /* would be dead already: never created */
+        }
         double a = em->birth == ISK_BIRTH_BACKDATE ? age : (em->birth == ISK_BIRTH_THESIS_JITTER ? h : 0.0);
         if ((s = birth(e, g, &l, a)) != ISK_OK)
             return s;
