@@ -67,6 +67,7 @@
 #include "iskra/particles.h"
 #include "iskra/forces.h"
 #include "iskra/integrate.h"
+#include "iskra/limits.h"
 #include "iskra/impact.h"
 #include "iskra/bounds.h"
 #include "iskra/explode.h"

@@ -79,7 +79,7 @@ Test(deflector_far, endpoints_beyond_the_limit_are_refused)
 {
     isk_deflector d = isk_deflector_segment(-1e151, 0, 1, 0);
     cr_assert_eq(isk_deflector_check(&d), ISK_ERR_RANGE);
-    d = isk_deflector_segment(-ISK_DEFLECT_COORD_MAX, 0, ISK_DEFLECT_COORD_MAX, 1);
+    d = isk_deflector_segment(-ISK_COORD_MAX, 0, ISK_COORD_MAX, 1);
     cr_assert_eq(isk_deflector_check(&d), ISK_OK);
     d.restitution = ISK_DEFLECT_RESTITUTION_MAX * 1.5;
     cr_assert_eq(isk_deflector_check(&d), ISK_ERR_RANGE);

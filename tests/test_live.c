@@ -139,7 +139,7 @@ Test(live, refused_values_change_nothing)
     set_fails(b, "emitter sparks", "source", "layer",
               "[emitter sparks] source: is fixed when the effect is created (change the definition and create the "
               "effect again)");
-    set_fails(b, "force air", "b", "nan", "[force air] b: expected a number >= 0, got \"nan\"");
+    set_fails(b, "force air", "b", "nan", "[force air] b: expected a number between 0 and 1000000000000, got \"nan\"");
     /* checked with the whole definition: a burst larger than the pool */
     set_fails(b, "emitter sparks", "count", "5000", "[emitter sparks] count: a burst of 5000 exceeds the capacity 2000");
     set_fails(b, "emitter sparks", "speed_min", "10", "[emitter sparks] speed_max: must be >= speed_min (10)");

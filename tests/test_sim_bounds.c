@@ -215,6 +215,11 @@ Test(sim_bounds, reflect_with_open_sides_and_nan_safety_net)
     y = NAN;
     isk_bounds_apply_arrays(&b, 1, &x, &y, &vx, &vy);
     cr_assert_eq(y, 0.0);
+    /* an infinite velocity is not left to throw the particle out again */
+    y = -1;
+    vy = -INFINITY;
+    isk_bounds_apply_arrays(&b, 1, &x, &y, &vx, &vy);
+    cr_assert(y >= 0.0 && isfinite(y) && vy == 0.0, "y %g vy %g", y, vy);
 }
 
 Test(sim_bounds, validation)

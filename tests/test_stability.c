@@ -7,6 +7,7 @@
 #include <criterion/criterion.h>
 #include <float.h>
 #include <math.h>
+#include <stdio.h>
 #include <string.h>
 
 #include "iskra/bounds.h"
@@ -175,23 +176,31 @@ static double stiff_run(isk_integrator method, int steps, double *v_out, int *si
     return x;
 }
 
-Test(stability, stiff_drag_explicit_euler_diverges_exact_decays)
+/* The explicit forms used to multiply v by 1 - b*dt/m = -9 every step and
+ * overflow (dt = 1000 with an ordinary drag did it in a hundred frames).
+ * The drag now saturates at m/h (iskra/limits.h): it stops the particle
+ * within the step and never reverses it. */
+Test(stability, stiff_drag_saturates_explicit_methods_exact_decays)
 {
     double v;
     int flips, mono;
-    /* Explicit Euler multiplies v by 1 - b*dt/m = -9 every step: the lesson. */
-    stiff_run(ISK_INTEGRATE_EULER, 20, &v, &flips, &mono);
-    cr_assert(fabs(v / pow(-9, 20) - 1) < 1e-12, "v = %g", v);
-    cr_assert_eq(flips, 20);
-    /* The thesis's semi-implicit Euler has the same velocity factor. */
-    stiff_run(ISK_INTEGRATE_SEMI_EULER, 20, &v, &flips, &mono);
-    cr_assert(fabs(v / pow(-9, 20) - 1) < 1e-12);
-    /* RK4's amplification 1 - h + h^2/2 - h^3/6 + h^4/24 at h = 10 is 291. */
+    /* Explicit and semi-implicit Euler: 1 - min(b dt/m, 1) = 0, at once. */
+    double x = stiff_run(ISK_INTEGRATE_EULER, 20, &v, &flips, &mono);
+    cr_assert(v == 0 && flips == 0 && mono, "v = %g", v);
+    cr_assert(x == 1.0 / 60, "x = %.17g", x); /* the old velocity for one step, then at rest */
+    x = stiff_run(ISK_INTEGRATE_SEMI_EULER, 20, &v, &flips, &mono);
+    cr_assert(v == 0 && flips == 0 && mono && x == 0, "v = %g x = %g", v, x);
+    /* RK4's amplification at the saturation (z = 1): 1 - 1 + 1/2 - 1/6 + 1/24. */
     stiff_run(ISK_INTEGRATE_RK4, 10, &v, &flips, &mono);
-    cr_assert(fabs(v / pow(1 - 10 + 50 - 1000.0 / 6 + 10000.0 / 24, 10) - 1) < 1e-9, "v = %g", v);
-    /* The exponential update: e^-10 per step, monotone, never a sign flip,
-     * and after enough steps exactly 0 (flushed, never subnormal). */
-    double x = stiff_run(ISK_INTEGRATE_EXACT_DRAG, 200, &v, &flips, &mono);
+    cr_assert(fabs(v / pow(0.375, 10) - 1) < 1e-12, "v = %g", v);
+    cr_assert(flips == 0 && mono);
+    /* Verlet: two half kicks, (1 - 1/2)^2 a step. */
+    stiff_run(ISK_INTEGRATE_VERLET, 10, &v, &flips, &mono);
+    cr_assert(fabs(v / pow(0.25, 10) - 1) < 1e-12 && flips == 0 && mono, "v = %g", v);
+    /* The exponential update needs no cap: e^-10 per step, monotone, never
+     * a sign flip, and after enough steps exactly 0 (flushed, never
+     * subnormal). */
+    x = stiff_run(ISK_INTEGRATE_EXACT_DRAG, 200, &v, &flips, &mono);
     cr_assert_eq(flips, 0);
     cr_assert(mono);
     cr_assert(v == 0);
@@ -199,6 +208,27 @@ Test(stability, stiff_drag_explicit_euler_diverges_exact_decays)
     cr_assert(fabs(x - 1.0 / 600) < 1e-15, "x = %.17g", x);
     stiff_run(ISK_INTEGRATE_EXACT_DRAG, 3, &v, &flips, &mono);
     cr_assert(fabs(v / exp(-30) - 1) < 1e-12);
+}
+
+/* The issue's case: dt = 1000 with drag and semi-implicit Euler, every
+ * integrator, and the drag's largest value: finite, at rest. */
+Test(stability, a_long_step_with_drag_stays_finite)
+{
+    const double bs[2] = {0.47, ISK_STRENGTH_MAX};
+    for (int m = 0; m < ISK_INTEGRATOR_COUNT; m++)
+        for (int k = 0; k < 2; k++) {
+            isk_system s;
+            cr_assert_eq(isk_system_init(&s, 1, 0), ISK_OK);
+            isk_system_set_integrator(&s, (isk_integrator)m);
+            cr_assert_eq(isk_system_set_drag(&s, bs[k]), ISK_OK);
+            cr_assert_eq(isk_system_set_gravity(&s, 9.81), ISK_OK);
+            isk_particles_add(&s.particles, 0, 0, 3, 4, 1, NULL);
+            for (int i = 0; i < 1000; i++)
+                cr_assert_eq(isk_system_step(&s, ISK_DT_MAX), ISK_OK);
+            cr_assert(store_finite(&s.particles), "%s b=%g", isk_integrator_name((isk_integrator)m), bs[k]);
+            cr_assert_eq(s.removed_nonfinite, 0);
+            isk_system_free(&s);
+        }
 }
 
 Test(stability, slowing_factor_never_goes_negative)
@@ -456,7 +486,7 @@ Test(stability, bad_inputs_get_a_status_not_a_crash)
               "%s", err.message);
     cr_assert_eq(isk_scene_load_string(&d, "[emitter a]\nsource = particle\nmass = -1\n", "neg_mass", &err),
                  ISK_ERR_FORMAT);
-    cr_assert(!strcmp(err.message, "neg_mass:3: [emitter a] mass: expected a number > 0, got \"-1\""), "%s",
+    cr_assert(!strcmp(err.message, "neg_mass:3: [emitter a] mass: expected a number between 1e-12 and 1000000000000, got \"-1\""), "%s",
               err.message);
     cr_assert_eq(isk_scene_load_string(&d, "[scene]\ndt = 0\n", "zero_dt", &err), ISK_ERR_FORMAT);
     cr_assert(strstr(err.message, "zero_dt:2: [scene] dt: expected a number > 0"), "%s", err.message);
@@ -491,4 +521,111 @@ Test(stability, a_full_pool_drops_and_counts)
     cr_assert_eq(isk_effect_dropped(e, 0), 600 - 5);
     isk_effect_destroy(e);
     isk_effect_def_free(&d);
+}
+
+/* ---- accepted inputs never give a non-finite state (iskra/limits.h) ------- */
+
+/* The C API validates what scene files validate (dt = 1e300 used to return
+ * success with y = -inf). */
+Test(stability, the_c_api_refuses_what_scene_files_refuse)
+{
+    isk_system s;
+    cr_assert_eq(isk_system_init(&s, 1, 0), ISK_OK);
+    isk_particles_add(&s.particles, 0, 0, 1, 1, 1, NULL);
+    cr_assert_eq(isk_system_step(&s, 1e300), ISK_ERR_RANGE);
+    cr_assert_eq(isk_system_step(&s, ISK_DT_MAX * 1.001), ISK_ERR_RANGE);
+    cr_assert_eq(isk_system_step(&s, ISK_DT_MAX), ISK_OK);
+    cr_assert_eq(isk_system_set_gravity(&s, 1e13), ISK_ERR_RANGE);
+    cr_assert_eq(isk_system_set_gravity(&s, -ISK_STRENGTH_MAX), ISK_OK);
+    cr_assert_eq(isk_system_set_drag(&s, 1e13), ISK_ERR_RANGE);
+    cr_assert_eq(isk_system_set_substeps(&s, ISK_SUBSTEPS_MAX + 1), ISK_ERR_RANGE);
+    /* plain data set directly is checked by the step */
+    s.forces.gravity = 1e308;
+    cr_assert_eq(isk_system_step(&s, 0.01), ISK_ERR_RANGE);
+    s.forces.gravity = 9.81;
+    s.forces.ax = 1e308;
+    cr_assert_eq(isk_system_step(&s, 0.01), ISK_ERR_RANGE);
+    s.forces.ax = 0;
+    s.speed_divisor = 1e-300;
+    cr_assert_eq(isk_system_step(&s, 0.01), ISK_ERR_RANGE);
+    s.speed_divisor = 1;
+    isk_potential pot;
+    isk_potential_init(&pot, 1, isk_vec2_make(0, 0), 1);
+    pot.P = 1000;
+    cr_assert_eq(isk_system_add_potential(&s, &pot, NULL), ISK_ERR_RANGE);
+    pot.P = 1 + ISK_POWER_MAX;
+    cr_assert_eq(isk_system_add_potential(&s, &pot, NULL), ISK_OK);
+    s.forces.pot[0].P = -1000; /* edited in place: the step refuses it */
+    cr_assert_eq(isk_system_step(&s, 0.01), ISK_ERR_RANGE);
+    isk_system_free(&s);
+
+    isk_scratch sc;
+    isk_particles p;
+    isk_particles_init(&p, 1, 0);
+    isk_particles_add(&p, 0, 0, 0, 0, 1, NULL);
+    isk_forces f = {.gravity = 9.81};
+    cr_assert_eq(isk_integrate_range(ISK_INTEGRATE_RK4, &f, &sc, &p, 0, 1, 1e300), ISK_ERR_RANGE);
+    isk_particles_free(&p);
+    isk_bounds b;
+    cr_assert_eq(isk_bounds_reflect(&b, -1e308, 1e308, 0, 1, ISK_SIDE_ALL, 0, 1), ISK_ERR_RANGE);
+}
+
+/* The thesis's centre rule makes a particle exactly on a potential NaN (the
+ * JavaScript does): the step removes it and counts it, nothing else. */
+Test(stability, the_system_removes_and_counts_a_non_finite_state)
+{
+    isk_system s;
+    cr_assert_eq(isk_system_init(&s, 1, 0), ISK_OK);
+    s.forces.centre = ISK_FIDELITY_THESIS;
+    isk_potential pot;
+    isk_potential_init(&pot, 800, isk_vec2_make(0, 0), 1);
+    cr_assert_eq(isk_system_add_potential(&s, &pot, NULL), ISK_OK);
+    isk_particles_add(&s.particles, 1, 1, 0, 0, 1, NULL);
+    isk_particles_add(&s.particles, 0, 0, 0, 0, 1, NULL); /* on it */
+    isk_particles_add(&s.particles, -1, 2, 0, 0, 1, NULL);
+    cr_assert_eq(isk_system_step(&s, 1.0 / 60), ISK_OK);
+    cr_assert_eq(s.removed_nonfinite, 1);
+    cr_assert_eq(s.particles.count, 2);
+    cr_assert(s.particles.x[0] > 0 && s.particles.x[1] < 0, "the order of the others is kept");
+    cr_assert(store_finite(&s.particles));
+    isk_system_free(&s);
+}
+
+/* A deflector restitution above 1 (a pinball bumper) in a closed box: the
+ * speed grows by c at every bounce until ISK_SPEED_LIMIT, where it is
+ * capped; nothing goes non-finite (c = 1.5 gave NaN by frame 333). */
+Test(stability, bumpers_in_a_closed_box_cap_the_speed, .timeout = 60)
+{
+    const double cs[2] = {1.5, 1000};
+    for (int k = 0; k < 2; k++) {
+        char text[1200];
+        snprintf(text, sizeof text,
+                 "[scene]\ndt = 1/60\n[force gravity]\ng = 9.81\n"
+                 "[deflector a]\nsegment = -5, -5, 5, -5\nrestitution = %g\n"
+                 "[deflector b]\nsegment = 5, -5, 5, 5\nrestitution = %g\n"
+                 "[deflector c]\nsegment = 5, 5, -5, 5\nrestitution = %g\n"
+                 "[deflector d]\nsegment = -5, 5, -5, -5\nrestitution = %g\n"
+                 "[emitter e]\nsource = explosion\nexplosion = gauss\ncount = 200\nforces = gravity\n"
+                 "deflectors = a, b, c, d\nbounded = false\ndraw = none\n",
+                 cs[k], cs[k], cs[k], cs[k]);
+        isk_effect_def d;
+        isk_error err;
+        isk_effect *fx = NULL;
+        cr_assert_eq(isk_scene_load_string(&d, text, "bumper", &err), ISK_OK, "%s", err.message);
+        cr_assert_eq(isk_effect_create(&fx, &d, &err), ISK_OK, "%s", err.message);
+        isk_effect_def_free(&d);
+        const isk_particles *p = isk_effect_particles(fx, 0);
+        double top = 0;
+        for (int f = 0; f < 2000; f++) {
+            cr_assert_eq(isk_effect_step(fx), ISK_OK);
+            cr_assert(store_finite(p), "c = %g, frame %d", cs[k], f);
+        }
+        for (size_t i = 0; i < p->count; i++)
+            top = fmax(top, hypot(p->vx[i], p->vy[i]));
+        cr_assert_eq(isk_effect_removed_nonfinite(fx, 0), 0);
+        cr_assert_eq(p->count, 200);
+        /* the speed rose to the cap (plus at most the last step's gravity) */
+        cr_assert(top > 1e100 && top <= ISK_SPEED_LIMIT * (1 + 1e-12), "c = %g: top speed %g", cs[k], top);
+        isk_effect_destroy(fx);
+    }
 }

@@ -42,7 +42,8 @@
  * same result the reflections would give (exact fmod fold for c = 1, a
  * geometric series for c < 1), so a fast particle lands where it should
  * instead of sitting on a wall.  The end-state form clamps a NaN or
- * infinite position onto the wall as a last safety net; the step form
+ * infinite position onto the wall (a velocity that is not finite becomes 0)
+ * as a last safety net; the step form
  * leaves a non-finite particle alone for the runner to remove and count.
  * After the stage every finite particle is inside [left, right] x
  * [bottom, top] for the enabled sides.
@@ -120,7 +121,8 @@ isk_status isk_bounds_thesis(isk_bounds *b, double xmin, double xmax, double ymi
                              unsigned sides);
 
 /* Sound reflection.  Errors: ISK_ERR_NULL, ISK_ERR_NAN, ISK_ERR_RANGE
- * (restitution outside [0,1], margin < 0, walls not strictly ordered). */
+ * (restitution outside [0,1], margin < 0, walls not strictly ordered, a
+ * width or height that overflows a double). */
 isk_status isk_bounds_reflect(isk_bounds *b, double xmin, double xmax, double ymin, double ymax,
                               unsigned sides, double margin, double restitution);
 

@@ -58,7 +58,7 @@
  *     twice the working precision (exact B - A and cross(A, B), exact
  *     products): a point is then resolved as finely as on a segment through
  *     the origin, wherever the endpoints are.  Endpoint coordinates are
- *     limited to |c| <= ISK_DEFLECT_COORD_MAX (1e150) so every product of
+ *     limited to |c| <= ISK_COORD_MAX (1e150, iskra/limits.h) so every product of
  *     coordinates stays finite.
  *
  * Response at the hit point H, for the hit segment's reaction:
@@ -117,9 +117,8 @@ extern "C" {
 /* Most hits handled for one particle in one call (bounces plus passes). */
 #define ISK_DEFLECT_MAX_HITS 8
 
-/* Largest |coordinate| of an endpoint, and largest restitution (see above;
- * the scene key table's ranges are these). */
-#define ISK_DEFLECT_COORD_MAX 1e150
+/* Largest restitution (see above; endpoints are within ISK_COORD_MAX of
+ * iskra/limits.h; the scene key table's ranges are these). */
 #define ISK_DEFLECT_RESTITUTION_MAX 1000.0
 
 typedef enum isk_deflect_reaction {
@@ -158,7 +157,7 @@ isk_deflector isk_deflector_segment(double x0, double y0, double x1, double y1);
 
 /* ISK_OK, or why the deflector is unusable: ISK_ERR_NULL, ISK_ERR_NAN
  * (non-finite coordinate, restitution or probability), ISK_ERR_RANGE
- * (zero-length segment, a coordinate beyond ISK_DEFLECT_COORD_MAX,
+ * (zero-length segment, a coordinate beyond ISK_COORD_MAX,
  * restitution outside [0, ISK_DEFLECT_RESTITUTION_MAX], p outside [0, 1],
  * bad enum). */
 isk_status isk_deflector_check(const isk_deflector *d);

@@ -473,6 +473,10 @@ const isk_effect_def *isk_effect_definition(const isk_effect *e);
 int isk_effect_emitter_count(const isk_effect *e);
 const isk_particles *isk_effect_particles(const isk_effect *e, int emitter);
 size_t isk_effect_dropped(const isk_effect *e, int emitter); /* spawns lost to a full pool */
+/* Particles removed since create or reset because their state went NaN or
+ * infinite (no accepted scene does that, iskra/limits.h; the thesis
+ * fidelity modes can): they are neither drawn nor kept in silence. */
+size_t isk_effect_removed_nonfinite(const isk_effect *e, int emitter);
 
 #ifdef __cplusplus
 }

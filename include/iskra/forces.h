@@ -75,6 +75,7 @@
 
 #include <stddef.h>
 
+#include "iskra/limits.h" /* ISK_FORCE_LIMIT: the largest force component (see the top) */
 #include "iskra/status.h"
 #include "iskra/vec2.h"
 
@@ -83,10 +84,6 @@ extern "C" {
 #endif
 
 #define ISK_DIST_OFF (-1.0)
-
-/* Largest force component the sound centre rule lets a potential produce
- * (see the top: saturation). */
-#define ISK_FORCE_LIMIT 1e150
 
 typedef enum isk_fidelity {
     ISK_FIDELITY_SOUND = 0,  /* physically sound, never NaN (default) */
@@ -130,8 +127,10 @@ void isk_potential_init(isk_potential *pot, double k, isk_vec2 r, double charge)
  * exponent), ISK_ERR_RANGE (unknown law). */
 isk_status isk_potential_set_law(isk_potential *pot, isk_coulomb_law law, double exponent);
 
-/* Checks every field (finite numbers, enabled 0/1).  Errors: ISK_ERR_NULL,
- * ISK_ERR_NAN, ISK_ERR_RANGE. */
+/* Checks every field (finite numbers, enabled 0/1, and the limits of
+ * iskra/limits.h: |1 - P| <= ISK_POWER_MAX, position within ISK_COORD_MAX,
+ * velocity within ISK_SPEED_LIMIT).  Errors: ISK_ERR_NULL, ISK_ERR_NAN,
+ * ISK_ERR_RANGE. */
 isk_status isk_potential_validate(const isk_potential *pot);
 
 /* Force on one particle at (x, y); may switch the potential off (max_dist).
@@ -172,6 +171,16 @@ void isk_force_potential(isk_potential *pot, size_t n, const double *x, const do
  * why), which is why vx, vy are not const. */
 void isk_forces_eval(isk_forces *f, size_t n, const double *x, const double *y, double *vx, double *vy,
                      const double *m, double *fx, double *fy, double *px, double *py, int with_drag);
+
+/* The same for a step of h > 0 (what the integrators call): the drag
+ * saturates at m/h per particle, so b*h/m never exceeds 1 and an explicit
+ * step can stop a particle but never reverse its velocity (without it,
+ * b*h/m = 10 multiplies v by -9 every step: the explicit methods' (1 -
+ * b h/m)^n overflows; iskra/limits.h).  Where b*h <= m, which is every
+ * ordinary scene, the forces are the bits of isk_forces_eval. */
+void isk_forces_eval_step(isk_forces *f, size_t n, const double *x, const double *y, double *vx, double *vy,
+                          const double *m, double *fx, double *fy, double *px, double *py, int with_drag,
+                          double h);
 
 #ifdef __cplusplus
 }

@@ -53,18 +53,17 @@
  *
  * Speeds.  A deflector's restitution may exceed 1 (a pinball bumper); a
  * bounce then never leaves a speed above ISK_SPEED_LIMIT (the velocity is
- * scaled down to it, direction kept).  1e150 is far beyond any scene and
- * keeps v^2, v*dt and b*v finite for every accepted parameter.
+ * scaled down to it, direction kept; iskra/limits.h).  1e150 is far beyond
+ * any scene and keeps v^2, v*dt and b*v finite for every accepted parameter.
  */
 #ifndef ISKRA_IMPACT_H
 #define ISKRA_IMPACT_H
 
+#include "iskra/limits.h" /* ISK_SPEED_LIMIT */
+
 #ifdef __cplusplus
 extern "C" {
 #endif
-
-/* No bounce leaves a particle faster than this (see the top). */
-#define ISK_SPEED_LIMIT 1e150
 
 /* The motion of the step a wall or deflector corrects: the state at its
  * start (arrays of the same n particles as the end state), the step h > 0,

@@ -67,6 +67,7 @@
 #include <stddef.h>
 
 #include "iskra/forces.h"
+#include "iskra/limits.h"
 #include "iskra/particles.h"
 
 #ifdef __cplusplus
@@ -118,6 +119,8 @@ typedef struct isk_scratch {
     ISK_ALIGN64 double vx_old[ISK_SIM_BLOCK];
     ISK_ALIGN64 double vy_old[ISK_SIM_BLOCK];
     unsigned char killed[ISK_SIM_BLOCK];
+    int nonfinite; /* set by a motion stage whose block came out with a NaN or an infinity; the
+                      runner's owner removes and counts those particles and clears it */
 } isk_scratch;
 
 /* Stage kernels given precomputed forces (n particles, any n). */
@@ -134,8 +137,8 @@ void isk_integrate_block(isk_integrator method, isk_forces *f, isk_scratch *s, s
                          double *y, double *vx, double *vy, const double *m, double dt);
 
 /* One step of `method` for particles [begin, end) of a store, block by block
- * in index order.  Errors: ISK_ERR_NULL, ISK_ERR_RANGE (bad method or range),
- * ISK_ERR_NAN (non-finite dt). */
+ * in index order.  Errors: ISK_ERR_NULL, ISK_ERR_RANGE (bad method or range,
+ * |dt| > ISK_DT_MAX), ISK_ERR_NAN (non-finite dt). */
 isk_status isk_integrate_range(isk_integrator method, isk_forces *f, isk_scratch *s, isk_particles *p,
                                size_t begin, size_t end, double dt);
 

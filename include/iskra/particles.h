@@ -111,6 +111,13 @@ size_t isk_particles_cull(isk_particles *p);
  * stores whose order nothing observes, e.g. drawn additively. */
 size_t isk_particles_cull_unordered(isk_particles *p);
 
+/* Removes every particle whose position, velocity, mass or age is not
+ * finite (or whose life is NaN), keeping the order of the others; returns
+ * how many were removed.  The block runner's owners call it when a motion
+ * stage reports a non-finite state (iskra/limits.h): they count what it
+ * removes. */
+size_t isk_particles_remove_nonfinite(isk_particles *p);
+
 /* Adds dt to the ages of [begin, end), end clamped to the count (a stage;
  * the system runs it only when ageing is on). */
 void isk_particles_age(isk_particles *p, size_t begin, size_t end, double dt);

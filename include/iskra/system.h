@@ -59,6 +59,7 @@
 #include "iskra/explode.h"
 #include "iskra/forces.h"
 #include "iskra/integrate.h"
+#include "iskra/limits.h"
 #include "iskra/particles.h"
 #include "iskra/rng.h"
 #include "iskra/status.h"
@@ -83,6 +84,8 @@ typedef struct isk_system {
     isk_kick_target coulomb_kick;
     size_t explode_limit;       /* largest accepted explosion count */
     double time;                /* simulated seconds */
+    size_t removed_nonfinite;   /* particles removed because their state went NaN or infinite
+                                   (the thesis centre rule can; iskra/limits.h) */
     isk_multi_coulomb *jobs;    /* multi-Coulomb explosions in progress */
     size_t njobs, job_capacity;
     isk_scratch scratch;
@@ -92,9 +95,11 @@ typedef struct isk_system {
 isk_status isk_system_init(isk_system *s, uint64_t seed, size_t capacity);
 void isk_system_free(isk_system *s);
 
-/* Validating setters.  ISK_ERR_NAN for non-finite, ISK_ERR_RANGE for a
- * negative drag b, an unknown integrator, substeps < 1.  Gravity may be
- * negative (it then pulls upwards): only a non-finite g is refused. */
+/* Validating setters, with the ranges scene files have (iskra/limits.h).
+ * ISK_ERR_NAN for non-finite, ISK_ERR_RANGE for |g| or b beyond
+ * ISK_STRENGTH_MAX, a negative drag b, an unknown integrator, substeps
+ * outside 1..ISK_SUBSTEPS_MAX.  Gravity may be negative (it then pulls
+ * upwards). */
 isk_status isk_system_set_gravity(isk_system *s, double g);
 isk_status isk_system_set_drag(isk_system *s, double b);
 isk_status isk_system_set_integrator(isk_system *s, isk_integrator method);
@@ -116,9 +121,14 @@ isk_status isk_system_explode(isk_system *s, isk_explosion kind, double cx, doub
 isk_status isk_system_add_layer(isk_system *s, double xmin, double xmax, double ymin, double ymax,
                                 size_t count);
 
-/* One frame (see the top).  Errors: ISK_ERR_NULL, ISK_ERR_NAN (dt not
- * finite), ISK_ERR_RANGE (dt < 0 or a bad field), ISK_ERR_NOMEM from a
- * multi-Coulomb release. */
+/* One frame (see the top).  The fields are plain data, so the step checks
+ * them against what scene files accept (iskra/limits.h): dt in [0,
+ * ISK_DT_MAX] (0 is an empty step), speed divisor, substeps, the strengths
+ * of gravity, acceleration and drag, every potential (isk_potential_validate).
+ * Errors: ISK_ERR_NULL, ISK_ERR_NAN (dt or a field not finite),
+ * ISK_ERR_RANGE (dt or a field out of range), ISK_ERR_NOMEM from a
+ * multi-Coulomb release.  A particle whose state goes non-finite is removed
+ * and counted in removed_nonfinite. */
 isk_status isk_system_step(isk_system *s, double dt);
 
 /* The bounce stage alone, on the whole store (for draw-before-bounce). */

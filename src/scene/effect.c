@@ -266,6 +266,10 @@ static isk_status step_group(isk_effect *e, fx_group *g)
         else
             isk_pipeline_run(&g->pipeline, &g->store, 0, g->store.count, h, &e->scratch);
         s = run_steps(e, g, g->substep_end, g->nsubstep_end, e->time + h * j, h);
+        if (e->scratch.nonfinite) { /* never kept or drawn: removed and counted (iskra/limits.h) */
+            g->removed_nonfinite += isk_particles_remove_nonfinite(&g->store);
+            e->scratch.nonfinite = 0;
+        }
     }
     if (g->mc_active)
         isk_multi_coulomb_advance(&g->mc, h * (double)N);
@@ -421,4 +425,9 @@ const isk_particles *isk_effect_particles(const isk_effect *e, int emitter)
 size_t isk_effect_dropped(const isk_effect *e, int emitter)
 {
     return e && emitter >= 0 && emitter < e->ngroups ? e->groups[emitter].dropped : 0;
+}
+
+size_t isk_effect_removed_nonfinite(const isk_effect *e, int emitter)
+{
+    return e && emitter >= 0 && emitter < e->ngroups ? e->groups[emitter].removed_nonfinite : 0;
 }

@@ -74,8 +74,13 @@ static isk_status check_force(ctx *c)
     if (f->kind != ISK_FORCE_POTENTIAL)
         return ISK_OK;
     isk_potential p = f->pot;
-    if (isk_potential_set_law(&p, f->law, f->exponent) != ISK_OK || isk_potential_validate(&p) != ISK_OK)
+    if (isk_potential_set_law(&p, f->law, f->exponent) != ISK_OK || isk_potential_validate(&p) != ISK_OK) {
+        if (isfinite(p.P) && !(fabs(1.0 - p.P) <= ISK_POWER_MAX))
+            return bad_key(c, "exponent", "%.15g read as the %s law is P = %.15g; the force goes as d^(1-P) and "
+                                          "|1 - P| must be at most %g",
+                           f->exponent, isk_coulomb_law_names[f->law], p.P, ISK_POWER_MAX);
         return bad_key(c, "exponent", "gives no usable potential");
+    }
     return ISK_OK;
 }
 
@@ -95,6 +100,8 @@ static isk_status check_bounds(ctx *c)
     if (!(b->xmin < b->xmax) || !(b->ymin < b->ymax))
         return bad_key(c, "window", "needs xmin < xmax and ymin < ymax, got %.15g, %.15g, %.15g, %.15g", b->xmin,
                        b->xmax, b->ymin, b->ymax);
+    if (!isfinite(b->xmax - b->xmin) || !isfinite(b->ymax - b->ymin))
+        return bad_key(c, "window", "is too large: its width or height overflows a double");
     if (!(b->xmin + b->margin < b->xmax - b->margin) || !(b->ymin + b->margin < b->ymax - b->margin))
         return bad_item(c, "margin", "margin %.15g leaves no room between the walls", b->margin);
     return ISK_OK;

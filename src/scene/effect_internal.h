@@ -100,6 +100,7 @@ struct fx_group {
     uint64_t emitted;              /* accumulator births since origin */
     double next_burst;             /* time of the next burst */
     size_t dropped;                /* spawns lost to a full pool */
+    size_t removed_nonfinite;      /* particles removed because their state went non-finite */
 
     /* baked over-life tables (effect_render.c) */
     isk_color_gradient color_ramp;

@@ -12,6 +12,7 @@
 #include <string.h>
 
 #include "iskra/effect.h"
+#include "iskra/limits.h"
 
 #define N(a) ((int)(sizeof(a) / sizeof((a)[0])))
 #define BIT(k) (1u << (k))
@@ -83,6 +84,12 @@ static const isk_key_word inherit_words[] = {{"scene", ISK_INTEGRATE_INHERIT}, {
 
 #define MAXP ((double)ISK_EFFECT_MAX_PARTICLES)
 
+/* The limits of iskra/limits.h, as ranges (no accepted value may ever
+ * give a NaN or an infinity: that header says why each is where it is). */
+#define COORD IN(-ISK_COORD_MAX, ISK_COORD_MAX)
+#define SPEED IN(-ISK_SPEED_LIMIT, ISK_SPEED_LIMIT)
+#define STRENGTH IN(-ISK_STRENGTH_MAX, ISK_STRENGTH_MAX)
+
 static const isk_key keys[] = {
     /* [scene] */
     {SCENE("width"), .type = ISK_KEY_WHOLE, DEF(width), IN(1, ISK_CANVAS_MAX_DIM), .dflt = "600", .create_only = 1,
@@ -94,15 +101,16 @@ static const isk_key keys[] = {
     {SCENE("clear"), .type = ISK_KEY_BOOL, DEF(clear), .dflt = "true", .live = ALL,
      .meaning = "clear every frame; false = trails (every step draws over the last, as the thesis's static "
                 "trajectory figures)"},
-    {SCENE("dt"), .type = ISK_KEY_NUMBER, DEF(dt), GT_LE(0, 1000), .dflt = "1/60", .live = ALL,
+    {SCENE("dt"), .type = ISK_KEY_NUMBER, DEF(dt), GT_LE(0, ISK_DT_MAX), .dflt = "1/60", .live = ALL,
      .meaning = "simulated seconds per frame"},
-    {SCENE("substeps"), .type = ISK_KEY_WHOLE, DEF(substeps), IN(1, 1000), .dflt = "1", .live = ALL,
+    {SCENE("substeps"), .type = ISK_KEY_WHOLE, DEF(substeps), IN(1, ISK_SUBSTEPS_MAX), .dflt = "1", .live = ALL,
      .meaning = "steps of dt/substeps per frame (the thesis's precision)"},
     {SCENE("integrator"), .type = ISK_KEY_ENUM, DEF(integrator), NAMES(isk_integrator_names), .dflt = "semi-euler",
      .live = ALL, .meaning = "time integrator (include/iskra/integrate.h)"},
     {SCENE("seed"), .type = ISK_KEY_SEED, DEF(seed), .dflt = "1",
      .meaning = "random seed; each emitter draws from its own stream seeded from (seed, emitter index)"},
-    {SCENE("speed_divisor"), .type = ISK_KEY_NUMBER, DEF(speed_divisor), GT_LE(0, 1e6), .dflt = "1", .live = ALL,
+    {SCENE("speed_divisor"), .type = ISK_KEY_NUMBER, DEF(speed_divisor),
+     IN(ISK_SPEED_DIVISOR_MIN, ISK_SPEED_DIVISOR_MAX), .dflt = "1", .live = ALL,
      .meaning = "the thesis simulator's speed slider f: each frame simulates dt/f seconds, so the whole "
                 "simulation (particles and moving potentials) runs f times slower"},
     {SCENE("centre"), .type = ISK_KEY_ENUM, DEF(centre), NAMES(isk_fidelity_names), .dflt = "sound", .live = ALL,
@@ -136,20 +144,21 @@ static const isk_key keys[] = {
     {FORCE("kind"), .type = ISK_KEY_ENUM, FRC(kind), NAMES(isk_force_kind_names), .dflt = "gravity",
      .dflt_doc = "the section's NAME when it is a kind ([force drag])", .create_only = 1,
      .meaning = "what the force is"},
-    {FORCE("g"), .type = ISK_KEY_NUMBER, FRC(g), .applies = GRAV, GE(0), .dflt = "0", .live = ALL,
+    {FORCE("g"), .type = ISK_KEY_NUMBER, FRC(g), .applies = GRAV, IN(0, ISK_STRENGTH_MAX), .dflt = "0", .live = ALL,
      .meaning = "F = (0, -m*g*gravity_multiplier)"},
-    {FORCE("b"), .type = ISK_KEY_NUMBER, FRC(b), .applies = DRAG, GE(0), .dflt = "0", .live = ALL,
-     .meaning = "F = -b*v"},
-    {FORCE("acceleration"), .type = ISK_KEY_VECTOR, FRC(accel), .applies = WIND, .dflt = "0, 0", .live = ALL,
+    {FORCE("b"), .type = ISK_KEY_NUMBER, FRC(b), .applies = DRAG, IN(0, ISK_STRENGTH_MAX), .dflt = "0",
+     .live = ALL, .meaning = "F = -b*v (never more than stops a particle within one step)"},
+    {FORCE("acceleration"), .type = ISK_KEY_VECTOR, FRC(accel), .applies = WIND, STRENGTH, .dflt = "0, 0", .live = ALL,
      .meaning = "a constant acceleration, F = m*a"},
     {FORCE("k"), .type = ISK_KEY_NUMBER, FRC(pot.k), .applies = POT, .required = POT, .dflt = "0", .live = ALL,
      .meaning = "the potential's strength"},
     {FORCE("charge"), .type = ISK_KEY_NUMBER, FRC(pot.charge), .applies = POT, .dflt = "1", .live = ALL,
      .meaning = "Q; k*Q > 0 attracts"},
-    {FORCE("position"), .type = ISK_KEY_VECTOR, FRC(pot.r), .applies = POT, .required = POT, .dflt = "0, 0",
+    {FORCE("position"), .type = ISK_KEY_VECTOR, FRC(pot.r), .applies = POT, .required = POT, COORD, .dflt = "0, 0",
      .live = ALL, .meaning = "x, y of the potential"},
-    {FORCE("exponent"), .type = ISK_KEY_NUMBER, FRC(exponent), .applies = POT, IN(-1000, 1000), .dflt = "2",
-     .live = ALL, .meaning = "the distance exponent, read by law"},
+    {FORCE("exponent"), .type = ISK_KEY_NUMBER, FRC(exponent), .applies = POT,
+     IN(-ISK_POWER_MAX - 1, ISK_POWER_MAX + 1), .dflt = "2", .live = ALL,
+     .meaning = "the distance exponent, read by law; the code's P must have |1 - P| <= 16 (|F| ~ d^(1-P))"},
     {FORCE("law"), .type = ISK_KEY_ENUM, FRC(law), .applies = POT, NAMES(isk_coulomb_law_names), .dflt = "code",
      .live = ALL,
      .meaning = "code: exponent is the code's P, |F| = k|Q| d^(1-P); text: the thesis text's p, P = p + 2"},
@@ -165,14 +174,14 @@ static const isk_key keys[] = {
     {FORCE("enabled"), .type = ISK_KEY_BOOL, FRC(pot.enabled), .applies = POT, .dflt = "true", .live = ALL,
      .meaning = "a disabled potential is not simulated at all (setting it true also revives one that "
                 "switched itself off)"},
-    {FORCE("velocity"), .type = ISK_KEY_VECTOR, FRC(pot.vel), .applies = POT, .dflt = "0, 0", .live = ALL,
+    {FORCE("velocity"), .type = ISK_KEY_VECTOR, FRC(pot.vel), .applies = POT, SPEED, .dflt = "0, 0", .live = ALL,
      .meaning = "the potential moves by velocity*dt/speed_divisor per frame"},
     {FORCE("draw"), .type = ISK_KEY_BOOL, FRC(draw), .applies = POT, .dflt = "true", .live = ALL,
      .meaning = "draw it as a disc of radius 0.1 with its number, while it is on"},
 
     /* [deflector NAME] */
     {DEFL("segment"), .type = ISK_KEY_NUMBERS4, SEG(x0), .required = ALL, .what = "x0, y0, x1, y1",
-     IN(-ISK_DEFLECT_COORD_MAX, ISK_DEFLECT_COORD_MAX), .dflt = "0, 0, 1, 0", .live = ALL,
+     IN(-ISK_COORD_MAX, ISK_COORD_MAX), .dflt = "0, 0, 1, 0", .live = ALL,
      .meaning = "the end points x0, y0, x1, y1, which must differ (side tests keep their precision at any reach)"},
     {DEFL("restitution"), .type = ISK_KEY_NUMBER, SEG(restitution), IN(0, ISK_DEFLECT_RESTITUTION_MAX), .dflt = "1",
      .live = ALL,
@@ -207,13 +216,17 @@ static const isk_key keys[] = {
     {EMITTER("source"), .type = ISK_KEY_ENUM, EM(source), NAMES(isk_source_names), .dflt = "particle",
      .create_only = 1,
      .meaning = "one particle; a thesis explosion; the stationary layer; continuous emission"},
-    {EMITTER("position"), .type = ISK_KEY_VECTOR, EM(pos), .applies = S_P | S_E | S_S, .dflt = "0, 0", .live = S_S,
+    {EMITTER("position"), .type = ISK_KEY_VECTOR, EM(pos), .applies = S_P | S_E | S_S, COORD, .dflt = "0, 0",
+     .live = S_S,
      .meaning = "the particle / explosion centre / stream origin"},
-    {EMITTER("velocity"), .type = ISK_KEY_VECTOR, EM(vel), .applies = S_P | S_S, .dflt = "0, 0", .live = S_S,
+    {EMITTER("velocity"), .type = ISK_KEY_VECTOR, EM(vel), .applies = S_P | S_S, SPEED, .dflt = "0, 0",
+     .live = S_S,
      .meaning = "the particle's velocity; a stream's constant (or disc-centre) velocity"},
-    {EMITTER("mass"), .type = ISK_KEY_NUMBER, EM(mass), .applies = S_P | S_L | S_S, GT(0), .dflt = "1", .live = S_S,
+    {EMITTER("mass"), .type = ISK_KEY_NUMBER, EM(mass), .applies = S_P | S_L | S_S, IN(ISK_MASS_MIN, ISK_MASS_MAX),
+     .dflt = "1", .live = S_S,
      .meaning = "(explosions set their own masses: 2 or 2 + U)"},
-    {EMITTER("mass_range"), .type = ISK_KEY_NUMBER, EM(mass_range), .applies = S_S, GE(0), .dflt = "0", .live = S_S,
+    {EMITTER("mass_range"), .type = ISK_KEY_NUMBER, EM(mass_range), .applies = S_S, IN(0, ISK_MASS_MAX), .dflt = "0",
+     .live = S_S,
      .meaning = "mass = mass + U*mass_range"},
     {EMITTER("explosion"), .type = ISK_KEY_ENUM, EM(explosion), .applies = S_E, NAMES(isk_explosion_names),
      .dflt = "gauss", .meaning = "the thesis's explosion types"},
@@ -228,15 +241,15 @@ static const isk_key keys[] = {
      .meaning = "which particles a Coulomb kick pushes: the whole emitter (thesis) or only the new ones"},
     {EMITTER("start"), .type = ISK_KEY_NUMBER, EM(start), .applies = S_E | S_S, GE(0), .dflt = "0",
      .what = "a number of seconds", .meaning = "time of the explosion / first burst and of the stream's start"},
-    {EMITTER("rect"), .type = ISK_KEY_NUMBERS4, EM(rect), .applies = S_L, .required = S_L,
+    {EMITTER("rect"), .type = ISK_KEY_NUMBERS4, EM(rect), .applies = S_L, .required = S_L, COORD,
      .what = "xmin, xmax, ymin, ymax", .dflt = "0, 0, 0, 0",
      .meaning = "xmin, xmax, ymin, ymax of the layer"},
     {EMITTER("shape"), .type = ISK_KEY_ENUM, EM(shape), .applies = S_S, NAMES(isk_shape_names), .dflt = "point",
      .live = S_S, .meaning = "where new particles appear around position"},
-    {EMITTER("shape_a"), .type = ISK_KEY_NUMBER, EM(shape_a), .applies = S_S, .dflt = "0", .live = S_S,
+    {EMITTER("shape_a"), .type = ISK_KEY_NUMBER, EM(shape_a), .applies = S_S, COORD, .dflt = "0", .live = S_S,
      .meaning = "radius (disc, circle); inner radius (ring); x offset (segment); half-width (rect); semi-axis "
                 "(ellipse)"},
-    {EMITTER("shape_b"), .type = ISK_KEY_NUMBER, EM(shape_b), .applies = S_S, .dflt = "0", .live = S_S,
+    {EMITTER("shape_b"), .type = ISK_KEY_NUMBER, EM(shape_b), .applies = S_S, COORD, .dflt = "0", .live = S_S,
      .meaning = "outer radius (ring); y offset (segment); half-height (rect); semi-axis (ellipse)"},
     {EMITTER("shape_angle"), .type = ISK_KEY_ANGLE, EM(shape_angle), .applies = S_S, IN(-3600, 3600), .dflt = "0",
      .live = S_S, .meaning = "rotation of the shape"},
@@ -248,9 +261,11 @@ static const isk_key keys[] = {
      .meaning = "direction of direction/cone launches"},
     {EMITTER("spread"), .type = ISK_KEY_ANGLE, EM(spread), .applies = S_S, IN(0, 360), .dflt = "0", .live = S_S,
      .meaning = "opening of a cone launch"},
-    {EMITTER("speed_min"), .type = ISK_KEY_NUMBER, EM(speed_min), .applies = S_S, GE(0), .dflt = "0", .live = S_S,
+    {EMITTER("speed_min"), .type = ISK_KEY_NUMBER, EM(speed_min), .applies = S_S, IN(0, ISK_SPEED_LIMIT), .dflt = "0",
+     .live = S_S,
      .meaning = "slowest launch speed"},
-    {EMITTER("speed_max"), .type = ISK_KEY_NUMBER, EM(speed_max), .applies = S_S, GE(0), .dflt = "0", .live = S_S,
+    {EMITTER("speed_max"), .type = ISK_KEY_NUMBER, EM(speed_max), .applies = S_S, IN(0, ISK_SPEED_LIMIT), .dflt = "0",
+     .live = S_S,
      .meaning = "fastest launch speed (>= speed_min; disc: its radius)"},
     {EMITTER("rate"), .type = ISK_KEY_NUMBER, EM(rate), .applies = S_S, IN(0, 1e7), .dflt = "0", .live = S_S,
      .meaning = "particles per second (0: bursts only)"},
@@ -278,18 +293,20 @@ static const isk_key keys[] = {
      .meaning = "the walls of [bounds] apply"},
     {EMITTER("draw_before_bounce"), .type = ISK_KEY_BOOL, EM(draw_before_bounce), .dflt = "false", .live = ALL,
      .meaning = "the thesis examples' order: draw, then the walls"},
-    {EMITTER("gravity_multiplier"), .type = ISK_KEY_NUMBER, EM(gravity_mult), .dflt = "1", .live = ALL,
+    {EMITTER("gravity_multiplier"), .type = ISK_KEY_NUMBER, EM(gravity_mult), STRENGTH, .dflt = "1", .live = ALL,
      .meaning = "scales gravity forces for these particles"},
-    {EMITTER("weight"), .type = ISK_KEY_NUMBER, EM(weight), .dflt = "0", .live = ALL,
+    {EMITTER("weight"), .type = ISK_KEY_NUMBER, EM(weight), STRENGTH, .dflt = "0", .live = ALL,
      .meaning = "buoyancy: an upward acceleration (fire thesis)"},
     {EMITTER("slowing"), .type = ISK_KEY_NUMBER, EM(slowing), GE(0), .dflt = "0", .live = ALL,
      .meaning = "damping per second: v *= max(0, 1 - slowing*dt)"},
     {EMITTER("slow_faithful"), .type = ISK_KEY_BOOL, EM(slow_faithful), .dflt = "false", .live = ALL,
      .meaning = "the fire thesis's order: v += a*dt; v *= (1 - slowing*dt); p += v*dt (only with constant "
                 "accelerations and semi-euler)"},
-    {EMITTER("osc_omega"), .type = ISK_KEY_PAIR, EM(osc_omega_min), .what = "min, max", .dflt = "0, 0", .live = ALL,
+    {EMITTER("osc_omega"), .type = ISK_KEY_PAIR, EM(osc_omega_min), STRENGTH, .what = "min, max", .dflt = "0, 0",
+     .live = ALL,
      .meaning = "oscillation angular speed range, rad/s (0, 0: off; negative: the sway starts towards -x)"},
-    {EMITTER("osc_amplitude"), .type = ISK_KEY_PAIR, EM(osc_amp_min), GE(0), .what = "min, max", .dflt = "0, 0",
+    {EMITTER("osc_amplitude"), .type = ISK_KEY_PAIR, EM(osc_amp_min), IN(0, ISK_COORD_MAX), .what = "min, max",
+     .dflt = "0, 0",
      .live = ALL,
      .meaning = "initial horizontal amplitude range, world units"},
     {EMITTER("osc_decay"), .type = ISK_KEY_NUMBER, EM(osc_decay), GE(0), .dflt = "0", .live = ALL,
@@ -366,7 +383,8 @@ static const isk_key keys[] = {
      .meaning = "particles per click (at most the receiving emitter's limit)"},
     {CLICK("emitter"), .type = ISK_KEY_REF, CLK(emitter), .refers = ISK_SECTION_EMITTER, .dflt = "", .dflt_doc = "the first emitter",
      .live = ALL, .meaning = "the emitter whose particles the click adds to (they get its forces, walls, drawing)"},
-    {CLICK("at_start"), .type = ISK_KEY_POINT, CLK(x), .aux = offsetof(isk_click_def, at_start), .dflt = "none",
+    {CLICK("at_start"), .type = ISK_KEY_POINT, CLK(x), .aux = offsetof(isk_click_def, at_start), COORD,
+     .dflt = "none",
      .meaning = "also click once at this world point when the scene starts (the thesis's simulator scenes "
                 "start with a click)"},
     {CLICK("after_frames"), .type = ISK_KEY_LONG, CLK(after_frames), IN(0, 1e8), .dflt = "0",

@@ -1,6 +1,7 @@
 /* Bounce stages: the thesis's zarobi and a sound reflection. */
 #include "iskra/bounds.h"
 
+#include <float.h>
 #include <math.h>
 #include <stdint.h>
 #include <string.h>
@@ -20,8 +21,9 @@ isk_status isk_bounds_validate(const isk_bounds *b)
         return ISK_ERR_NAN;
     if (b->sides & ~(unsigned)ISK_SIDE_ALL)
         return ISK_ERR_RANGE;
-    if (!(b->xmin < b->xmax) || !(b->ymin < b->ymax))
-        return ISK_ERR_RANGE;
+    if (!(b->xmin < b->xmax) || !(b->ymin < b->ymax) || !isfinite(b->xmax - b->xmin) ||
+        !isfinite(b->ymax - b->ymin))
+        return ISK_ERR_RANGE; /* (a width that overflows would make the fold meaningless) */
     if (b->mode == ISK_BOUNCE_THESIS)
         return ISK_OK; /* the thesis accepts any margin */
     if (b->mode != ISK_BOUNCE_REFLECT)
@@ -188,6 +190,8 @@ static void settle_one(double *pos, double *vel, double lo, double hi, double c)
         if (u > 0.0)
             u = -c * u;
     }
+    if (!isfinite(u))
+        u = 0.0; /* an infinite velocity would throw it out again (and to NaN) at the next step */
     *pos = p;
     *vel = u;
 }
@@ -197,7 +201,7 @@ static void settle_axis(size_t n, double *restrict pos, double *restrict v, doub
 {
     for (size_t i = 0; i < n; i++) {
         double p = pos[i];
-        if (islessequal(p, hi) & isgreaterequal(p, lo)) /* inside; NaN falls through */
+        if (islessequal(p, hi) & isgreaterequal(p, lo) & (fabs(v[i]) <= DBL_MAX)) /* inside; NaN falls through */
             continue;
         settle_one(&pos[i], &v[i], lo, hi, c);
     }

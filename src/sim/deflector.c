@@ -168,8 +168,8 @@ isk_status isk_deflector_check(const isk_deflector *d)
         return ISK_ERR_NAN;
     if (d->x0 == d->x1 && d->y0 == d->y1)
         return ISK_ERR_RANGE;
-    if (!(fabs(d->x0) <= ISK_DEFLECT_COORD_MAX && fabs(d->y0) <= ISK_DEFLECT_COORD_MAX &&
-          fabs(d->x1) <= ISK_DEFLECT_COORD_MAX && fabs(d->y1) <= ISK_DEFLECT_COORD_MAX))
+    if (!(fabs(d->x0) <= ISK_COORD_MAX && fabs(d->y0) <= ISK_COORD_MAX &&
+          fabs(d->x1) <= ISK_COORD_MAX && fabs(d->y1) <= ISK_COORD_MAX))
         return ISK_ERR_RANGE;
     if (d->restitution < 0.0 || d->restitution > ISK_DEFLECT_RESTITUTION_MAX || d->probability < 0.0 ||
         d->probability > 1.0)

@@ -56,6 +56,11 @@ isk_status isk_potential_validate(const isk_potential *pot)
         return ISK_ERR_NAN;
     if (pot->enabled != 0 && pot->enabled != 1)
         return ISK_ERR_RANGE;
+    /* iskra/limits.h: where the law means something, where it is placed. */
+    if (!(fabs(1.0 - pot->P) <= ISK_POWER_MAX) || !(fabs(pot->r.x) <= ISK_COORD_MAX) ||
+        !(fabs(pot->r.y) <= ISK_COORD_MAX) || !(fabs(pot->vel.x) <= ISK_SPEED_LIMIT) ||
+        !(fabs(pot->vel.y) <= ISK_SPEED_LIMIT))
+        return ISK_ERR_RANGE;
     return ISK_OK;
 }
 
@@ -194,21 +199,37 @@ void isk_force_accel(size_t n, const double *m, double ax, double ay, double *fx
 }
 
 /* The pipeline's drag stage: flush decayed components (isk_k_flush), then
- * add -b*v; one pass over the velocities. */
-static void drag_stage(size_t n, double *restrict vx, double *restrict vy, double b, double *restrict fx,
-                       double *restrict fy)
+ * add -b*v; one pass over the velocities.  With a step h > 0 the drag
+ * saturates at m/h (iskra/limits.h): b*h/m never exceeds 1, so an explicit
+ * step can stop a particle but never reverse it; below that it is b itself
+ * (the same bits as without a step). */
+static void drag_stage(size_t n, double *restrict vx, double *restrict vy, const double *restrict m, double b,
+                       double h, double *restrict fx, double *restrict fy)
 {
+    if (!(h > 0.0)) {
+        for (size_t i = 0; i < n; i++) {
+            double ux = isk_k_flush(vx[i]), uy = isk_k_flush(vy[i]);
+            vx[i] = ux;
+            vy[i] = uy;
+            fx[i] = fx[i] + isk_k_drag(ux, b);
+            fy[i] = fy[i] + isk_k_drag(uy, b);
+        }
+        return;
+    }
+    const double inv_h = 1.0 / h;
     for (size_t i = 0; i < n; i++) {
         double ux = isk_k_flush(vx[i]), uy = isk_k_flush(vy[i]);
+        double lim = m[i] * inv_h;
+        double be = isless(lim, b) ? lim : b;
         vx[i] = ux;
         vy[i] = uy;
-        fx[i] = fx[i] + isk_k_drag(ux, b);
-        fy[i] = fy[i] + isk_k_drag(uy, b);
+        fx[i] = fx[i] + isk_k_drag(ux, be);
+        fy[i] = fy[i] + isk_k_drag(uy, be);
     }
 }
 
-void isk_forces_eval(isk_forces *f, size_t n, const double *x, const double *y, double *vx, double *vy,
-                     const double *m, double *fx, double *fy, double *px, double *py, int with_drag)
+void isk_forces_eval_step(isk_forces *f, size_t n, const double *x, const double *y, double *vx, double *vy,
+                          const double *m, double *fx, double *fy, double *px, double *py, int with_drag, double h)
 {
     memset(fx, 0, n * sizeof *fx); /* all-bits-zero is +0.0 */
     memset(fy, 0, n * sizeof *fy);
@@ -217,7 +238,7 @@ void isk_forces_eval(isk_forces *f, size_t n, const double *x, const double *y, 
     if (f->ax != 0.0 || f->ay != 0.0)
         isk_force_accel(n, m, f->ax, f->ay, fx, fy);
     if (with_drag && f->drag != 0.0)
-        drag_stage(n, vx, vy, f->drag, fx, fy);
+        drag_stage(n, vx, vy, m, f->drag, h, fx, fy);
     const size_t np = f->pick ? f->npick : f->npot;
     int any = 0;
     for (size_t k = 0; k < np; k++)
@@ -229,4 +250,10 @@ void isk_forces_eval(isk_forces *f, size_t n, const double *x, const double *y, 
     for (size_t k = 0; k < np; k++)
         isk_force_potential(&f->pot[f->pick ? f->pick[k] : k], n, x, y, px, py, f->centre);
     add_into(n, fx, fy, px, py);
+}
+
+void isk_forces_eval(isk_forces *f, size_t n, const double *x, const double *y, double *vx, double *vy,
+                     const double *m, double *fx, double *fy, double *px, double *py, int with_drag)
+{
+    isk_forces_eval_step(f, n, x, y, vx, vy, m, fx, fy, px, py, with_drag, 0.0);
 }

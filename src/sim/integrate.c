@@ -105,10 +105,11 @@ static void rk4_stage(size_t n, isk_scratch *restrict s, double *restrict x, dou
     }
 }
 
+/* The forces of a step of dt (drag saturated for that step: forces.h). */
 static void eval(isk_forces *f, isk_scratch *s, size_t n, const double *x, const double *y, double *vx,
-                 double *vy, const double *m, int with_drag)
+                 double *vy, const double *m, int with_drag, double dt)
 {
-    isk_forces_eval(f, n, x, y, vx, vy, m, s->fx, s->fy, s->px, s->py, with_drag);
+    isk_forces_eval_step(f, n, x, y, vx, vy, m, s->fx, s->fy, s->px, s->py, with_drag, fabs(dt));
 }
 
 void isk_integrate_block(isk_integrator method, isk_forces *f, isk_scratch *s, size_t n, double *x,
@@ -116,17 +117,17 @@ void isk_integrate_block(isk_integrator method, isk_forces *f, isk_scratch *s, s
 {
     switch (method) {
     case ISK_INTEGRATE_SEMI_EULER:
-        eval(f, s, n, x, y, vx, vy, m, 1);
+        eval(f, s, n, x, y, vx, vy, m, 1, dt);
         isk_integrate_semi_euler(n, x, y, vx, vy, m, s->fx, s->fy, dt);
         break;
     case ISK_INTEGRATE_EULER:
-        eval(f, s, n, x, y, vx, vy, m, 1);
+        eval(f, s, n, x, y, vx, vy, m, 1, dt);
         isk_integrate_euler(n, x, y, vx, vy, m, s->fx, s->fy, dt);
         break;
     case ISK_INTEGRATE_VERLET:
-        eval(f, s, n, x, y, vx, vy, m, 1);
+        eval(f, s, n, x, y, vx, vy, m, 1, dt);
         verlet_drift(n, x, y, vx, vy, m, s->fx, s->fy, dt);
-        eval(f, s, n, x, y, vx, vy, m, 1);
+        eval(f, s, n, x, y, vx, vy, m, 1, dt);
         verlet_kick(n, vx, vy, m, s->fx, s->fy, dt);
         break;
     case ISK_INTEGRATE_RK4: {
@@ -141,13 +142,13 @@ void isk_integrate_block(isk_integrator method, isk_forces *f, isk_scratch *s, s
         static const double w[4] = {1.0, 2.0, 2.0, 1.0};
         const double a[4] = {0.5 * dt, 0.5 * dt, dt, dt};
         for (int k = 0; k < 4; k++) {
-            eval(f, s, n, x, y, vx, vy, m, 1);
+            eval(f, s, n, x, y, vx, vy, m, 1, dt);
             rk4_stage(n, s, x, y, vx, vy, m, w[k], a[k], k == 3);
         }
         break;
     }
     case ISK_INTEGRATE_EXACT_DRAG:
-        eval(f, s, n, x, y, vx, vy, m, 0);
+        eval(f, s, n, x, y, vx, vy, m, 0, dt);
         isk_integrate_exact_drag(n, x, y, vx, vy, m, s->fx, s->fy, f->drag, dt);
         break;
     default:
@@ -164,6 +165,8 @@ isk_status isk_integrate_range(isk_integrator method, isk_forces *f, isk_scratch
         return ISK_ERR_RANGE;
     if (!isfinite(dt))
         return ISK_ERR_NAN;
+    if (!(fabs(dt) <= ISK_DT_MAX))
+        return ISK_ERR_RANGE;
     for (size_t o = begin; o < end; o += ISK_SIM_BLOCK) {
         size_t n = end - o < ISK_SIM_BLOCK ? end - o : ISK_SIM_BLOCK;
         isk_integrate_block(method, f, s, n, p->x + o, p->y + o, p->vx + o, p->vy + o, p->m + o, dt);

@@ -15,6 +15,8 @@
 #define ISKRA_SIM_KERNELS_H
 
 #include <math.h>
+#include <stdint.h>
+#include <string.h>
 
 #include "iskra/forces.h"
 #include "iskra/integrate.h"
@@ -114,6 +116,26 @@ static inline void isk_k_coulomb_saturated(double cx, double cy, double x, doubl
  * zero below ISK_FLUSH_TINY (see iskra/integrate.h): quiet compare, so the
  * loops stay vectorized. */
 static inline double isk_k_flush(double v) { return isless(fabs(v), ISK_FLUSH_TINY) ? 0.0 : v; }
+
+/* Non-finite detection that vectorizes: the exponent field of an infinity
+ * or a NaN is all ones, so adding one to it carries into the sign bit.
+ * Or-ing these words over a loop and testing bit 63 says whether any value
+ * was not finite (integer operations only, no compare, no branch). */
+static inline uint64_t isk_k_nonfinite_bits(double v)
+{
+    uint64_t u;
+    memcpy(&u, &v, sizeof u);
+    return (u & 0x7FF0000000000000ull) + 0x0010000000000000ull;
+}
+
+/* 1 when some value of the n in a or b is not finite. */
+static inline int isk_k_any_nonfinite2(size_t n, const double *restrict a, const double *restrict b)
+{
+    uint64_t acc = 0;
+    for (size_t i = 0; i < n; i++)
+        acc |= isk_k_nonfinite_bits(a[i]) | isk_k_nonfinite_bits(b[i]);
+    return (int)(acc >> 63);
+}
 
 /* The distance the max-distance switch tests (same operations as above). */
 static inline double isk_k_coulomb_dist(double cx, double cy, double x, double y)

@@ -269,14 +269,25 @@ void isk_particles_remove(isk_particles *p, size_t i)
     p->count = last;
 }
 
-size_t isk_particles_cull(isk_particles *p)
+/* What a compaction removes: dead particles (age >= life) or particles
+ * whose state is not finite. */
+enum { DROP_DEAD = 0, DROP_NONFINITE = 1 };
+
+static int drops(const isk_particles *p, size_t r, const int what)
 {
-    if (!p)
-        return 0;
+    if (what == DROP_DEAD)
+        return p->age[r] >= p->life[r]; /* NaN ages and lives are kept, as a live particle's */
+    return !(isfinite(p->x[r]) && isfinite(p->y[r]) && isfinite(p->vx[r]) && isfinite(p->vy[r]) &&
+             isfinite(p->m[r]) && isfinite(p->age[r]) && !isnan(p->life[r]));
+}
+
+/* Removes the particles `drops` picks, keeping the order of the others:
+ * column by column from the first one removed. */
+static inline size_t compact(isk_particles *p, const int what)
+{
     const size_t n = p->count;
-    const double *age = p->age, *life = p->life;
     size_t first = 0;
-    while (first < n && !(age[first] >= life[first]))
+    while (first < n && !drops(p, first, what))
         first++;
     if (first == n)
         return 0;
@@ -300,8 +311,8 @@ size_t isk_particles_cull(isk_particles *p)
     double *pa = p->age, *pl = p->life;
     size_t w = first;
     for (size_t r = first; r < n; r++) {
-        if (pa[r] >= pl[r])
-            continue; /* NaN ages and lives are kept, as a live particle's */
+        if (drops(p, r, what))
+            continue;
         for (int k = 0; k < nd; k++)
             dcol[k][w] = dcol[k][r];
         for (int k = 0; k < no; k++)
@@ -312,6 +323,16 @@ size_t isk_particles_cull(isk_particles *p)
     }
     p->count = w;
     return n - w;
+}
+
+size_t isk_particles_cull(isk_particles *p)
+{
+    return p ? compact(p, DROP_DEAD) : 0;
+}
+
+size_t isk_particles_remove_nonfinite(isk_particles *p)
+{
+    return p ? compact(p, DROP_NONFINITE) : 0;
 }
 
 /* Moves particle r into slot w, every present column. */

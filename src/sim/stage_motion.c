@@ -2,6 +2,7 @@
  * ageing (see stage.h). */
 #include <math.h>
 
+#include "sim/kernels.h"
 #include "sim/stage.h"
 
 /* v += a*h; r += h*v: semi-implicit Euler with a constant acceleration.
@@ -48,10 +49,16 @@ static void describe_drift(const isk_stage *st, FILE *out)
 
 const isk_stage_kind isk_stage_drift = {"drift", run_drift, describe_drift};
 
+/* Forces are where a finite state can turn non-finite (the thesis's centre
+ * rule gives NaN on a potential, iskra/limits.h): the block is checked
+ * after the step, in L1, and the runner's owner removes and counts.  The
+ * drift above needs no check: with the accepted accelerations and steps it
+ * cannot leave the finite numbers. */
 static void run_motion(const isk_stage *st, isk_block *b, double h)
 {
     isk_integrate_block(st->u.motion.method, st->u.motion.forces, b->s, b->n, b->x, b->y, b->vx, b->vy,
                         b->m, h);
+    b->s->nonfinite |= isk_k_any_nonfinite2(b->n, b->x, b->y) | isk_k_any_nonfinite2(b->n, b->vx, b->vy);
 }
 
 /* Names only what acts. */

@@ -44,29 +44,30 @@ void isk_system_free(isk_system *s)
     s->njobs = s->job_capacity = 0;
 }
 
-static isk_status check_strength(double v)
+/* A strength within [lo, ISK_STRENGTH_MAX] (iskra/limits.h). */
+static isk_status check_strength(double v, double lo)
 {
     if (!isfinite(v))
         return ISK_ERR_NAN;
-    return v >= 0.0 ? ISK_OK : ISK_ERR_RANGE;
+    return v >= lo && v <= ISK_STRENGTH_MAX ? ISK_OK : ISK_ERR_RANGE;
 }
 
 isk_status isk_system_set_gravity(isk_system *s, double g)
 {
     if (!s)
         return ISK_ERR_NULL;
-    /* Negative gravity (upwards) is a legitimate scene: only finiteness. */
-    if (!isfinite(g))
-        return ISK_ERR_NAN;
-    s->forces.gravity = g;
-    return ISK_OK;
+    /* Negative gravity (upwards) is a legitimate scene. */
+    isk_status st = check_strength(g, -ISK_STRENGTH_MAX);
+    if (st == ISK_OK)
+        s->forces.gravity = g;
+    return st;
 }
 
 isk_status isk_system_set_drag(isk_system *s, double b)
 {
     if (!s)
         return ISK_ERR_NULL;
-    isk_status st = check_strength(b);
+    isk_status st = check_strength(b, 0.0);
     if (st == ISK_OK)
         s->forces.drag = b;
     return st;
@@ -86,7 +87,7 @@ isk_status isk_system_set_substeps(isk_system *s, int substeps)
 {
     if (!s)
         return ISK_ERR_NULL;
-    if (substeps < 1)
+    if (substeps < 1 || substeps > ISK_SUBSTEPS_MAX)
         return ISK_ERR_RANGE;
     s->substeps = substeps;
     return ISK_OK;
@@ -208,15 +209,41 @@ static isk_status release_jobs(isk_system *s)
     return st;
 }
 
+/* The fields a step reads, against what scene files accept (iskra/limits.h):
+ * the system is plain data, so they are checked where they are used. */
+static isk_status check_fields(const isk_system *s)
+{
+    const isk_forces *f = &s->forces;
+    if (!isfinite(s->speed_divisor) || !isfinite(f->gravity) || !isfinite(f->ax) || !isfinite(f->ay) ||
+        !isfinite(f->drag))
+        return ISK_ERR_NAN;
+    if (s->substeps < 1 || s->substeps > ISK_SUBSTEPS_MAX || !(s->speed_divisor >= ISK_SPEED_DIVISOR_MIN) ||
+        !(s->speed_divisor <= ISK_SPEED_DIVISOR_MAX) || (unsigned)s->integrator >= ISK_INTEGRATOR_COUNT)
+        return ISK_ERR_RANGE;
+    if (check_strength(f->gravity, -ISK_STRENGTH_MAX) != ISK_OK || check_strength(f->ax, -ISK_STRENGTH_MAX) != ISK_OK ||
+        check_strength(f->ay, -ISK_STRENGTH_MAX) != ISK_OK || check_strength(f->drag, 0.0) != ISK_OK)
+        return ISK_ERR_RANGE;
+    if (f->npot && !f->pot)
+        return ISK_ERR_NULL;
+    for (size_t k = 0; k < f->npot; k++) {
+        isk_status st = isk_potential_validate(&f->pot[k]);
+        if (st != ISK_OK)
+            return st;
+    }
+    return ISK_OK;
+}
+
 isk_status isk_system_step(isk_system *s, double dt)
 {
     if (!s)
         return ISK_ERR_NULL;
-    if (!isfinite(dt) || !isfinite(s->speed_divisor))
+    if (!isfinite(dt))
         return ISK_ERR_NAN;
-    if (dt < 0.0 || s->substeps < 1 || !(s->speed_divisor > 0.0) ||
-        (unsigned)s->integrator >= ISK_INTEGRATOR_COUNT)
+    if (dt < 0.0 || dt > ISK_DT_MAX)
         return ISK_ERR_RANGE;
+    isk_status fs = check_fields(s);
+    if (fs != ISK_OK)
+        return fs;
     int bounce = s->bounce_in_step && s->bounds.sides != 0;
     if (bounce && isk_bounds_validate(&s->bounds) != ISK_OK)
         return ISK_ERR_RANGE;
@@ -245,14 +272,18 @@ isk_status isk_system_step(isk_system *s, double dt)
         isk_pipeline_add(&pl, &isk_stage_age);
 
     isk_particles *p = &s->particles;
-    const size_t n = p->count;
     const int N = s->substeps;
     const double h = dt / (double)N / s->speed_divisor;
     /* Substeps outer, particles inner, like the thesis: a potential switched
      * off by particle i in substep j is off for every particle in substep
-     * j+1. */
-    for (int j = 0; j < N; j++)
-        isk_pipeline_run(&pl, p, 0, n, h, &s->scratch);
+     * j+1.  A state gone non-finite is removed and counted (limits.h). */
+    for (int j = 0; j < N; j++) {
+        isk_pipeline_run(&pl, p, 0, p->count, h, &s->scratch);
+        if (s->scratch.nonfinite) {
+            s->removed_nonfinite += isk_particles_remove_nonfinite(p);
+            s->scratch.nonfinite = 0;
+        }
+    }
     const double frame = h * (double)N; /* the thesis's vremenskiPomak*preciznost */
     s->time += frame;
     for (size_t k = 0; k < s->njobs; k++)

@@ -4,7 +4,8 @@
  * iskra render SCENE [--frames N] [--every K] --out-dir DIR [--resume]
  * Renders frame N (frame 0 = the initial state, frame N = after N steps) to
  * a PNG, and/or frames 0, K, 2K, ... <= N as a numbered PNG sequence, an
- * animated GIF, a YUV4MPEG2 video or raw RGBA frames (render_out.h).
+ * animated GIF, a YUV4MPEG2 video or raw RGBA frames (render_out.h);
+ * --state / --state-every write the particles as CSV (state_csv.h).
  * Everything is validated before anything is written; a signal removes
  * the temporaries and says what was written (cleanup.h). */
 #include <stdio.h>
@@ -20,6 +21,7 @@
 #include "progress.h"
 #include "render_out.h"
 #include "scene_args.h"
+#include "state_csv.h"
 
 static void help(FILE *f)
 {
@@ -46,7 +48,11 @@ static void help(FILE *f)
                "  --resume         with --out-dir: keep the frames already there (after an\n"
                "                   interrupted render; the simulation still runs from 0)\n"
                "  --every K        sequence and animation step, >= 1 (default 1)\n"
-               "  Missing directories of every output are created.\n");
+               "  --state FILE.csv every live particle at frame N: emitter,index,x,y,vx,vy,\n"
+               "                   mass,age,life, values in round-trip precision (%%.17g)\n"
+               "  --state-every K  with --out-dir: DIR/state_000000.csv ... every K frames\n"
+               "  Missing directories of every output are created.  Particles removed\n"
+               "  because their state went non-finite are reported.\n");
     scene_args_help(f);
     fprintf(f, "  A progress bar appears on stderr when it is a terminal and the render\n"
                "  takes a while.  SIGINT, SIGTERM, SIGHUP or SIGPIPE removes the temporary\n"
@@ -61,6 +67,7 @@ typedef struct render_args {
     double fps;      /* 0: 1 / (dt * every) */
     int raw, have_every;
     render_out o;
+    state_opts so;
 } render_args;
 
 /* 0, or 2 after printing the usage error. */
@@ -95,6 +102,9 @@ static int parse(render_args *r, int argc, char **argv)
             if (k < 0)
                 return 2;
             r->out = v;
+        } else if ((k = state_args_take(&r->so, argc, argv, &i)) != 0) {
+            if (k < 0)
+                return 2;
         } else if (scene_args_take(&r->scene, argc, argv, &i) < 0) {
             return 2;
         }
@@ -108,8 +118,8 @@ static int check(render_args *r)
     const char *why = NULL;
     if (!r->scene.scene)
         why = "which scene?";
-    else if (!r->out && !r->o.dir)
-        why = "say where: --out FILE (.png, .gif, .y4m; --raw), or --out-dir DIR";
+    else if (!r->out && !r->o.dir && !r->so.path)
+        why = "say where: --out FILE (.png, .gif, .y4m; --raw), --out-dir DIR or --state FILE.csv";
     else if ((r->out && !*r->out) || (r->o.dir && !*r->o.dir))
         why = "empty output name";
     if (why) {
@@ -141,7 +151,10 @@ static int check(render_args *r)
         fprintf(stderr, "iskra render: %s\n", why);
         return 2;
     }
-    if (outpath_refuse_input("render", r->out, r->scene.scene))
+    if (state_args_check(&r->so, r->o.dir))
+        return 2;
+    if (outpath_refuse_input("render", r->out, r->scene.scene) ||
+        outpath_refuse_input("render", r->so.path, r->scene.scene))
         return 2;
     return 0;
 }
@@ -210,6 +223,10 @@ int cmd_render(int argc, char **argv)
                 goto done;
             }
         }
+        if (state_after_frame(&r.so, fx, r.o.dir, f)) {
+            rc = 1;
+            goto done;
+        }
         progress_update(&pg, f);
         if (f == frames)
             break;
@@ -225,6 +242,8 @@ int cmd_render(int argc, char **argv)
     }
     progress_end(&pg);
     rc = render_out_end(&r.o, &canvas);
+    if (state_finish(&r.so, fx))
+        rc = 1;
 done:
     render_out_abort(&r.o);
     isk_canvas_free(&canvas);

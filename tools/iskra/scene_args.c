@@ -3,6 +3,7 @@
 #include "scene/scene_values.h"
 
 #include <errno.h>
+#include <limits.h>
 #include <math.h>
 #include <stdint.h>
 #include <stdlib.h>
@@ -35,6 +36,14 @@ int arg_long(const char *cmd, const char *opt, const char *s, long lo, long hi, 
     char *end;
     errno = 0;
     long v = strtol(s, &end, 10);
+    if (*s && *end && !errno && !strpbrk(s, "xX")) {
+        /* "1e7" or "2.5e1", as scene files write whole numbers: the value, if whole */
+        double d = strtod(s, &end);
+        int whole = !*end && isfinite(d) && d == floor(d) && d >= (double)lo && d <= (double)hi;
+        v = whole ? (long)d : lo - 1 + (lo == LONG_MIN); /* out of range: refused below */
+        if (!whole)
+            end = (char *)"x";
+    }
     if (!*s || *end || errno || v < lo || v > hi || s[0] == '+' || s[0] == ' ') {
         fprintf(stderr, "iskra %s: %s: expected a whole number between %ld and %ld, got \"%s\"\n", cmd, opt, lo,
                 hi, s);

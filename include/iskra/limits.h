@@ -1,0 +1,64 @@
+/* iskra/limits.h — the largest numbers iskra accepts, and why: no accepted
+ * input may ever give a NaN or an infinity.
+ *
+ * Each quantity either has a range (scene keys read these constants into
+ * their rows of the key table, iskra/keys.h; the C setters and
+ * isk_system_step check the same ones) or saturates where the law itself
+ * would overflow:
+ *
+ *   quantity                          decision
+ *   --------------------------------  ------------------------------------------
+ *   step dt                           range (0, ISK_DT_MAX], substeps 1..ISK_SUBSTEPS_MAX,
+ *                                     speed divisor [ISK_SPEED_DIVISOR_MIN, _MAX]
+ *   accelerations (gravity, wind,     range |a| <= ISK_STRENGTH_MAX; gravity multipliers
+ *   buoyancy), drag b, oscillation    and |omega| too
+ *   frequencies
+ *   drag at a long step               saturates: b*h/m is capped at 1, so drag can stop a
+ *                                     particle within a step but never reverse it (the
+ *                                     explicit integrators' (1 - b h/m)^n no longer grows;
+ *                                     exact drag and the splitting are exact and need no cap)
+ *   mass                              range [ISK_MASS_MIN, ISK_MASS_MAX]
+ *   positions of anything placed      range |x| <= ISK_COORD_MAX (emitters, layers, shapes,
+ *   (emitters, potentials, segments)  amplitudes, potentials, deflector endpoints, clicks)
+ *   launch speeds, velocities         range |v| <= ISK_SPEED_LIMIT
+ *   a potential's force               saturates at ISK_FORCE_LIMIT (iskra/forces.h)
+ *   a potential's exponent P          range |1 - P| <= ISK_POWER_MAX: |F| ~ d^(1-P), so the
+ *                                     force changes by at most 10^96 over six decades of
+ *                                     distance; beyond, every particle sits at the
+ *                                     saturation limit and the motion means nothing
+ *   a bounce with restitution > 1     saturates: the speed is capped at ISK_SPEED_LIMIT
+ *                                     (iskra/impact.h)
+ *
+ * With these, every sum and product the simulation forms stays finite for
+ * any run of up to 10^8 frames of the longest step (10^14 simulated
+ * seconds): the worst case, 64 saturated potentials on the lightest
+ * particle, moves it by at most ~1e195 units.  A state that still goes
+ * non-finite (the thesis fidelity modes reproduce the thesis's NaN at a
+ * potential's centre) is removed by the block runner and counted
+ * (isk_effect_removed_nonfinite, isk_system.removed_nonfinite; `iskra
+ * render` reports it): nothing non-finite is drawn or kept in silence.
+ */
+#ifndef ISKRA_LIMITS_H
+#define ISKRA_LIMITS_H
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+#define ISK_DT_MAX 1000.0            /* seconds per frame (or per isk_system_step) */
+#define ISK_SUBSTEPS_MAX 1000
+#define ISK_SPEED_DIVISOR_MIN 1e-3   /* at most a thousand times faster than real time */
+#define ISK_SPEED_DIVISOR_MAX 1e6
+#define ISK_STRENGTH_MAX 1e12        /* |acceleration|, drag b, |gravity multiplier|, |omega| */
+#define ISK_MASS_MIN 1e-12
+#define ISK_MASS_MAX 1e12
+#define ISK_COORD_MAX 1e150          /* |coordinate| of anything placed in the world */
+#define ISK_SPEED_LIMIT 1e150        /* |launch velocity|; no bounce leaves a particle faster */
+#define ISK_FORCE_LIMIT 1e150        /* a potential's force saturates here (iskra/forces.h) */
+#define ISK_POWER_MAX 16.0           /* |1 - P| of a potential's law */
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif

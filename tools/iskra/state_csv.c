@@ -1,0 +1,130 @@
+/* iskra render's particle state as CSV, and the removal report (see
+ * state_csv.h). */
+#include "state_csv.h"
+
+#include <errno.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include "outpath.h"
+#include "scene_args.h"
+
+int state_args_take(state_opts *o, int argc, char **argv, int *i)
+{
+    const char *v;
+    int r;
+    if ((r = arg_value("render", argc, argv, i, "--state-every", &v)) != 0) {
+        if (r < 0 || !arg_long("render", "--state-every", v, 1, 100000000, &o->every))
+            return -1;
+        return 1;
+    }
+    if ((r = arg_value("render", argc, argv, i, "--state", &v)) != 0) {
+        if (r < 0)
+            return -1;
+        if (!*v) {
+            fprintf(stderr, "iskra render: --state: empty file name\n");
+            return -1;
+        }
+        o->path = v;
+        return 1;
+    }
+    return 0;
+}
+
+int state_args_check(const state_opts *o, const char *out_dir)
+{
+    if (o->every && !out_dir) {
+        fprintf(stderr, "iskra render: --state-every needs --out-dir (the states go beside the frames)\n");
+        return 2;
+    }
+    return 0;
+}
+
+static int rows(FILE *f, const isk_effect *fx)
+{
+    const isk_effect_def *d = isk_effect_definition(fx);
+    if (fprintf(f, "emitter,index,x,y,vx,vy,mass,age,life\n") < 0)
+        return 0;
+    for (int g = 0; g < isk_effect_emitter_count(fx); g++) {
+        const isk_particles *p = isk_effect_particles(fx, g);
+        for (size_t i = 0; i < p->count; i++)
+            if (fprintf(f, "%s,%zu,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g\n", d->emitters[g].name, i, p->x[i],
+                        p->y[i], p->vx[i], p->vy[i], p->m[i], p->age[i], p->life[i]) < 0)
+                return 0;
+    }
+    return 1;
+}
+
+int state_csv_write(const isk_effect *fx, const char *path)
+{
+    if (outpath_make_parents("render", path))
+        return 1;
+    size_t n = strlen(path);
+    char *tmp = malloc(n + 16);
+    if (!tmp) {
+        fprintf(stderr, "iskra render: %s: out of memory\n", path);
+        return 1;
+    }
+    memcpy(tmp, path, n);
+    memcpy(tmp + n, ".tmp.XXXXXX", 12);
+    int fd = mkstemp(tmp);
+    if (fd < 0) {
+        fprintf(stderr, "iskra render: %s: cannot create a temporary file: %s\n", path, strerror(errno));
+        free(tmp);
+        return 1;
+    }
+    struct stat st;
+    fchmod(fd, stat(path, &st) == 0 ? (st.st_mode & 07777) : 0644); /* mkstemp makes 0600 */
+    FILE *f = fdopen(fd, "wb");
+    if (!f) {
+        fprintf(stderr, "iskra render: %s: %s\n", path, strerror(errno));
+        close(fd);
+        unlink(tmp);
+        free(tmp);
+        return 1;
+    }
+    int ok = rows(f, fx);
+    ok = fflush(f) == 0 && ok;
+    ok = fclose(f) == 0 && ok;
+    if (!ok || rename(tmp, path) != 0) {
+        fprintf(stderr, "iskra render: %s: %s\n", path, !ok ? "write failed (disk full?)" : strerror(errno));
+        unlink(tmp);
+        free(tmp);
+        return 1;
+    }
+    free(tmp);
+    return 0;
+}
+
+int state_after_frame(const state_opts *o, const isk_effect *fx, const char *out_dir, long f)
+{
+    if (!o->every || !out_dir || f % o->every != 0)
+        return 0;
+    char path[4200];
+    snprintf(path, sizeof path, "%s/state_%06ld.csv", out_dir, f);
+    return state_csv_write(fx, path);
+}
+
+size_t state_report_removed(const isk_effect *fx)
+{
+    const isk_effect_def *d = isk_effect_definition(fx);
+    size_t all = 0;
+    for (int g = 0; g < isk_effect_emitter_count(fx); g++) {
+        size_t k = isk_effect_removed_nonfinite(fx, g);
+        if (k)
+            fprintf(stderr, "iskra render: emitter '%s': %zu particle%s removed: %s state went non-finite\n",
+                    d->emitters[g].name, k, k == 1 ? "" : "s", k == 1 ? "its" : "their");
+        all += k;
+    }
+    return all;
+}
+
+int state_finish(const state_opts *o, const isk_effect *fx)
+{
+    int rc = o->path ? state_csv_write(fx, o->path) : 0;
+    state_report_removed(fx);
+    return rc;
+}
