@@ -102,6 +102,31 @@ Test(convergence, oscillator_orders)
     ASSERT_ORDER("oscillator energy", verlet_e, energy, 4.0);
 }
 
+/* The symplectic and splitting methods: leapfrog (kick-drift-kick with the
+ * drag split symmetrically) is second order with drag too, where velocity
+ * Verlet is first; Yoshida's composition of it fourth; the Strang splitting
+ * with the exact drag flight second.  Projectile (gravity + drag) and
+ * oscillator (a position-only force), position and velocity. */
+Test(convergence, symplectic_and_splitting_orders)
+{
+    isk_problem proj = small(ISK_PROBLEM_PROJECTILE), osc = small(ISK_PROBLEM_OSCILLATOR);
+    const isk_integrator second[2] = {ISK_INTEGRATE_LEAPFROG, ISK_INTEGRATE_STRANG};
+    for (int i = 0; i < 2; i++) {
+        halving p = halve(&proj, second[i], 40), o = halve(&osc, second[i], 480);
+        ASSERT_ORDER("projectile position", p, position, 4.0);
+        ASSERT_ORDER("projectile velocity", p, velocity, 4.0);
+        ASSERT_ORDER("oscillator position", o, position, 4.0);
+        ASSERT_ORDER("oscillator velocity", o, velocity, 4.0);
+        ASSERT_ORDER("oscillator energy", o, energy, 4.0);
+    }
+    halving p = halve(&proj, ISK_INTEGRATE_YOSHIDA4, 40), o = halve(&osc, ISK_INTEGRATE_YOSHIDA4, 480);
+    ASSERT_ORDER("projectile position", p, position, 16.0);
+    ASSERT_ORDER("projectile velocity", p, velocity, 16.0);
+    ASSERT_ORDER("oscillator position", o, position, 16.0);
+    ASSERT_ORDER("oscillator energy", o, energy, 16.0);
+    cr_assert(o.fine.position > 1e-9, "Yoshida error %.3e: the test would be measuring rounding", o.fine.position);
+}
+
 /* Radial motion through the Coulomb core: the kink in |F| at d = min
  * costs RK4 its order.  Measured with `iskra bench accuracy`: energy drift
  * ratios per halving scatter between 2^1.3 and 2^2.6 (median order 2): a

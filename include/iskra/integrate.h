@@ -1,6 +1,7 @@
 /* iskra/integrate.h — time integrators over the particle arrays.
  *
- * Five methods, selectable per system (isk_system.integrator):
+ * Eight methods, selectable per system (isk_system.integrator) and per scene
+ * (`integrator = ...`):
  *
  *   ISK_INTEGRATE_SEMI_EULER  the thesis CODE (MaterijalnaTocka.pomakni):
  *                             c = dt/m; v += c*F; r += dt*v (new v).  1st order,
@@ -26,6 +27,24 @@
  *                             h < 0.1, where the direct form cancels).
  *                             Stable and monotone for every b*dt/m >= 0.
  *                             Not vectorized (expm1 is a libm call).
+ *   ISK_INTEGRATE_LEAPFROG    Stormer-Verlet, kick-drift-kick: v += (dt/2) a(r);
+ *                             r += dt v; v += (dt/2) a(r').  The linear drag is split
+ *                             symmetrically (explicit in the first half kick, solved
+ *                             for the new velocity in the second), so it is second
+ *                             order with drag too, and time-reversible; symplectic
+ *                             without drag.  The force at r' is kept for the next
+ *                             stage: one evaluation per step plus one.
+ *   ISK_INTEGRATE_YOSHIDA4    Yoshida's fourth-order composition of three leapfrog
+ *                             steps of w1 dt, w0 dt, w1 dt (w1 = 1/(2 - 2^(1/3)),
+ *                             w0 = 1 - 2 w1 < 0): fourth order, symplectic without
+ *                             drag, four force evaluations.
+ *   ISK_INTEGRATE_STRANG      Strang splitting: the exact flight under the linear drag
+ *                             alone for dt/2 (v e^-kt, r + v (1 - e^-kt)/k), a kick
+ *                             v += dt F(r)/m by every other force, the flight for dt/2
+ *                             again: drift-kick-drift with the drift solved exactly.
+ *                             Second order with drag, symmetric, symplectic without
+ *                             it, one force evaluation per step (e^-kt by its series
+ *                             for k t < 0.1: no libm call, it vectorizes; expm1 beyond).
  *
  * Decaying speeds and subnormal numbers: linear drag shrinks a velocity by
  * a factor each step, so without gravity it sinks through the subnormal
@@ -82,6 +101,9 @@ typedef enum isk_integrator {
     ISK_INTEGRATE_VERLET,
     ISK_INTEGRATE_RK4,
     ISK_INTEGRATE_EXACT_DRAG,
+    ISK_INTEGRATE_LEAPFROG,
+    ISK_INTEGRATE_YOSHIDA4,
+    ISK_INTEGRATE_STRANG,
     ISK_INTEGRATOR_COUNT
 } isk_integrator;
 
@@ -143,7 +165,7 @@ isk_status isk_integrate_range(isk_integrator method, isk_forces *f, isk_scratch
                                size_t begin, size_t end, double dt);
 
 /* Names as scene files spell them, indexed by method: "semi-euler", "euler",
- * "verlet", "rk4", "exact-drag". */
+ * "verlet", "rk4", "exact-drag", "leapfrog", "yoshida4", "strang". */
 extern const char *const isk_integrator_names[ISK_INTEGRATOR_COUNT];
 /* isk_integrator_names[method], or "?" if unknown. */
 const char *isk_integrator_name(isk_integrator method);
