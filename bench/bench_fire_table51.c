@@ -6,7 +6,7 @@
  * force (wind + weight against gravity), slowing, position step, horizontal
  * oscillation with the thesis's vx coupling and amplitude decay.  The two
  * columns run the same stage list; only the oscillation's sine differs
- * (osc_use_table: isk_sinlut_floor on a 4096-entry table, or libm sin).
+ * (osc_table: isk_sinlut_floor on a 4096-entry table, or libm sin).
  * The two effects are stepped alternately, repetition by repetition, so
  * drift in the machine's speed affects both alike.  Times are medians of
  * REPS repetitions, each long enough (>= ~15 ms) to time reliably.
@@ -53,7 +53,7 @@ static isk_effect *fire(size_t n, int table)
     e->osc_amp_max = 0.2;
     e->osc_decay = 0.1;
     e->osc_faithful = 1;
-    e->osc_use_table = table;
+    e->osc_table = table ? ISK_SINLUT_FLOOR : ISK_SINLUT_LIBM;
     e->draw = ISK_DRAW_NONE;
     isk_emitter_use_force(e, g);
     isk_emitter_use_force(e, w);

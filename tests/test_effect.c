@@ -336,7 +336,7 @@ Test(effect, oscillation_random_phase_starts_without_a_jump)
     e->osc_omega_max = 6;
     e->osc_amp_min = 0.5;
     e->osc_amp_max = 0.5;
-    e->osc_use_table = 0;
+    e->osc_table = ISK_SINLUT_LIBM;
     for (int random = 0; random < 2; random++) {
         e->osc_random_phase = random;
         isk_effect *fx = make(&d);

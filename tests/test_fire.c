@@ -465,7 +465,7 @@ static void osc_run(int faithful, int table, double out[4])
     e->osc_omega_min = e->osc_omega_max = 2 * PI;
     e->osc_amp_min = e->osc_amp_max = 1;
     e->osc_faithful = faithful;
-    e->osc_use_table = table;
+    e->osc_table = table ? ISK_SINLUT_FLOOR : ISK_SINLUT_LIBM;
     isk_effect *fx = make(&d);
     for (int k = 0; k < 4; k++) {
         steps(fx, 1);
@@ -505,7 +505,7 @@ Test(fire, oscillation_amplitude_decay)
     e->osc_omega_min = e->osc_omega_max = (PI / 2) / 1.1;
     e->osc_amp_min = e->osc_amp_max = 1;
     e->osc_decay = 0.5;
-    e->osc_use_table = 0;
+    e->osc_table = ISK_SINLUT_LIBM;
     isk_effect *fx = make(&d);
     steps(fx, 10);
     cr_assert_float_eq(fx->groups[0].store.osc_amp[0], pow(0.95, 10), 1e-12);
@@ -527,7 +527,7 @@ Test(fire, oscillation_faithful_drift_term)
         e->osc_omega_min = e->osc_omega_max = 2 * PI;
         e->osc_amp_min = e->osc_amp_max = 1;
         e->osc_faithful = faithful;
-        e->osc_use_table = 0;
+        e->osc_table = ISK_SINLUT_LIBM;
         isk_effect *fx = make(&d);
         steps(fx, 150);
         double want = sin(PI / 2) + (faithful ? (1 - cos(PI / 2)) / (2 * PI) : 0);

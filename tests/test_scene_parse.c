@@ -261,7 +261,7 @@ Test(scene_parse, emitter_every_key)
                                "burst_every = 2\nlife = 3\nlife_range = 0.5\ncapacity = 5000\nforces = w, g\n"
                                "deflectors = all\nbounded = false\ndraw_before_bounce = true\n"
                                "gravity_multiplier = -0.5\nweight = 2\nslowing = 0.1\nosc_omega = 1, 2\n"
-                               "osc_amplitude = 0.1, 0.2\nosc_decay = 0.3\nosc_faithful = on\nosc_table = off\n"
+                               "osc_amplitude = 0.1, 0.2\nosc_decay = 0.3\nosc_faithful = on\nosc_table = libm\n"
                                "integrator = verlet\nsubsteps = 3\ndraw = sprite\nsprite = smooth\nsize = 0.4\n"
                                "color = #ff800080\nblend = add\n"
                                "color_over_life = 0:white, 0.5:#ff8000, 1:#00000000\n"
@@ -313,7 +313,7 @@ Test(scene_parse, emitter_every_key)
     cr_assert_eq(e->osc_amp_max, 0.2);
     cr_assert_eq(e->osc_decay, 0.3);
     cr_assert_eq(e->osc_faithful, 1);
-    cr_assert_eq(e->osc_use_table, 0);
+    cr_assert_eq(e->osc_table, ISK_SINLUT_LIBM);
     cr_assert_eq(e->integrator, ISK_INTEGRATE_VERLET);
     cr_assert_eq(e->substeps, 3);
     cr_assert_eq(e->draw, ISK_DRAW_SPRITE);

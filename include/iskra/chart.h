@@ -68,6 +68,16 @@
  * stretch of its line, its marker, its name); for work-precision diagrams
  * ISK_LEGEND_BOTTOM_LEFT is usually empty.  Output is deterministic: the
  * same chart gives the same bytes (tested against refimg/chart_*.png).
+ *
+ * Extras, off by default (isk_chart_defaults):
+ *   notes     short texts at data points, each with an optional marker of
+ *             its own drawn larger than the series' (a point singled out,
+ *             "dt = 1/60"), the text up and to the right of the point, in
+ *             the note's colour; a note outside the range is not drawn;
+ *   x2_label  a second x axis along the top, for a quantity that is
+ *             x2_scale / x (x2_inverse) or x2_scale * x, ticked like a log
+ *             axis (only when the x axis is log, and x2_scale > 0): a cost
+ *             per particle on the bottom, particles per frame on the top.
  */
 #ifndef ISKRA_CHART_H
 #define ISKRA_CHART_H
@@ -114,6 +124,14 @@ typedef struct isk_chart_series {
     isk_chart_style style;
 } isk_chart_series;
 
+/* A text at a data point (see Extras). */
+typedef struct isk_chart_note {
+    double x, y;
+    const char *text;        /* NULL or "": the marker alone */
+    isk_color color;
+    isk_chart_marker marker; /* ISK_MARKER_NONE: the text alone */
+} isk_chart_note;
+
 typedef enum isk_chart_legend {
     ISK_LEGEND_TOP_RIGHT = 0,
     ISK_LEGEND_TOP_LEFT,
@@ -131,10 +149,15 @@ typedef struct isk_chart {
     size_t nseries;
     isk_chart_legend legend;
     isk_color background, ink, grid;       /* white, black, light grey by default */
+    const isk_chart_note *notes;           /* caller-owned, nnotes entries (see Extras) */
+    size_t nnotes;
+    const char *x2_label;                  /* NULL: no top axis (see Extras) */
+    double x2_scale;
+    int x2_inverse;
 } isk_chart;
 
 /* No title or labels, linear axes fitted to the data, legend top right,
- * black on white. */
+ * black on white, no notes, no top axis. */
 void isk_chart_defaults(isk_chart *ch);
 
 /* A style for series number i (0, 1, 2, ...; negative counts as 0):
@@ -149,15 +172,18 @@ isk_chart_style isk_chart_style_default(int index);
 /* Draws the whole chart over the canvas (it fills it with the background).
  * Errors, checked in this order (nothing is drawn):
  *   ISK_ERR_NULL   chart or canvas NULL, a canvas without pixels, series
- *                  NULL with nseries > 0, a series with n > 0 and NULL x/y;
+ *                  NULL with nseries > 0, a series with n > 0 and NULL x/y,
+ *                  notes NULL with nnotes > 0;
  *   ISK_ERR_SIZE   canvas smaller than 160 x 120;
  *   then for the x axis, then the y axis:
  *   ISK_ERR_RANGE  only one of the axis's min/max set (the other NaN);
  *   ISK_ERR_NAN    an explicit range bound is +-Inf;
  *   ISK_ERR_RANGE  min >= max, or a log axis with min <= 0;
  *   and last:
- *   ISK_ERR_RANGE  an unknown legend, dash or marker value; a data-fitted
- *                  axis with no placeable point (see Ranges above). */
+ *   ISK_ERR_RANGE  an unknown legend, dash or marker value (of a series or
+ *                  a note); a top axis with x2_scale not finite and > 0;
+ *                  a data-fitted axis with no placeable point (see Ranges
+ *                  above). */
 isk_status isk_chart_draw(const isk_chart *ch, isk_canvas *c);
 
 #ifdef __cplusplus

@@ -64,6 +64,7 @@
 #include "iskra/gradient.h"
 #include "iskra/integrate.h"
 #include "iskra/shape.h"
+#include "iskra/sinlut.h"
 #include "iskra/sprite.h"
 #include "iskra/status.h"
 #include "iskra/vec2.h"
@@ -220,7 +221,7 @@ typedef struct isk_emitter_def {
     double osc_amp_min, osc_amp_max;     /* initial amplitude range, world units */
     double osc_decay;          /* amplitude *= max(0, 1 - decay*dt) */
     int osc_faithful;          /* 1: also add the offset change to vx (the thesis code) */
-    int osc_use_table;         /* 1: sine lookup table (iskra/sinlut.h), 0: libm sin */
+    isk_sinlut_mode osc_table; /* the sine: table floor (the fire thesis), round, lerp, or libm */
     int osc_random_phase;      /* 1: each particle starts at a random phase (offset preset to
                                   A*sin(phase), so no jump); 0: phase 0 (the thesis, presumably) */
     isk_integrator integrator; /* ISK_INTEGRATE_INHERIT (default): the scene's */

@@ -62,6 +62,32 @@
  *   the conserved energy.  |F| has a kink at d = min (its slope jumps from
  *   +kQ/min^2 to -kQ/min^2): high-order methods lose order there.
  *
+ * ISK_PROBLEM_BOUNCE — gravity g onto a reflecting floor at y = 0 (the
+ *   sound walls, restitution c, bouncing at the time of impact,
+ *   iskra/impact.h).  Particle i is dropped at rest from h0 = lerp(w) at
+ *   x = 0.  The exact motion: a fall of t_f = sqrt(2 h0/g) to speed
+ *   V0 = g t_f, then flights of 2 V_k/g with V_k = c^k V0 (for c = 1 a
+ *   period of 2 t_f: every apex is h0; for c < 1 the hops end at rest after
+ *   t_f (1 + 2c/(1 - c))).  E = m (|v|^2/2 + g y) is m g h0 c^(2k) after k
+ *   bounces.  Errors: position, velocity, relative energy |E - E_k| / E0.
+ *   Before bounces were found at their time of impact (with the
+ *   end-of-step velocity reflected) this problem's energy grew at every
+ *   bounce with every integrator but the Euler forms.
+ *
+ * ISK_PROBLEM_KEPLER — the library's own P = 3 law (|F| = kQ/d^2, the
+ *   inverse square: iskra/forces.h) from a potential at the origin, no
+ *   core: every particle is on a Kepler ellipse of semi-major axis
+ *   a = lerp(w) and eccentricity e (0.6 by default), periapsis towards
+ *   angle 2 pi u, starting at mean anomaly 2 pi w.  With mu = kQ/m and the
+ *   mean motion n = sqrt(mu/a^3) the exact position at t solves Kepler's
+ *   equation E - e sin E = M0 + n t (Newton, to rounding):
+ *       r' = (a (cos E - e), b sin E),  v' = (-a sin E, b cos E) n / (1 - e cos E)
+ *   with b = a sqrt(1 - e^2), turned by the periapsis angle.  Conserved:
+ *   E = m|v|^2/2 - kQ/d = -kQ/(2a) and L = m (x vy - y vx) =
+ *   m sqrt(mu a (1 - e^2)).  Errors: position, velocity, relative energy,
+ *   relative angular momentum, and the relative error of the period the
+ *   numerical orbit has, (E0/E)^(3/2) - 1 (period ~ a^(3/2) ~ (-E)^(-3/2)).
+ *
  * Errors are maxima over all particles.  A particle whose state is not
  * finite makes every error that applies +INFINITY and is counted in
  * `nonfinite`; errors that do not apply to the kind are NaN.
@@ -83,6 +109,8 @@ typedef enum isk_problem_kind {
     ISK_PROBLEM_PROJECTILE = 0, /* gravity + linear drag: exact r(t), v(t) */
     ISK_PROBLEM_OSCILLATOR,     /* P = 0 potential: harmonic, exact r, v, E, phase */
     ISK_PROBLEM_RADIAL,         /* P = 2 potential with a core: energy conserved */
+    ISK_PROBLEM_BOUNCE,         /* gravity onto a reflecting floor: exact bounces */
+    ISK_PROBLEM_KEPLER,         /* the P = 3 inverse-square law: Kepler ellipses */
     ISK_PROBLEM_COUNT
 } isk_problem_kind;
 
@@ -95,8 +123,11 @@ typedef struct isk_problem {
     double drag;       /* projectile: b >= 0 */
     double kq;         /* oscillator, radial: k*Q > 0 (attracting) */
     double min_dist;   /* radial: core radius > 0 */
-    double start_min;  /* spread of the start: launch speed (projectile), */
-    double start_max;  /* amplitude (oscillator), release distance (radial); 0 < min <= max */
+    double start_min;  /* spread of the start: launch speed (projectile), amplitude */
+    double start_max;  /* (oscillator), release distance (radial), drop height (bounce),
+                          semi-major axis (kepler); 0 < min <= max */
+    double restitution; /* bounce: the floor's c in [0, 1] */
+    double eccentricity; /* kepler: e in [0, 1) */
 } isk_problem;
 
 /* One particle's state. */
@@ -111,6 +142,8 @@ typedef struct isk_problem_error {
     double energy;    /* max |E - E0| / E0              (oscillator, radial) */
     double phase;     /* max |phase error| in radians   (oscillator) */
     size_t nonfinite; /* particles with a NaN or infinite coordinate */
+    double angular_momentum; /* max |L - L0| / |L0|        (kepler) */
+    double period;    /* max |(E0/E)^(3/2) - 1|          (kepler) */
 } isk_problem_error;
 
 /* The parameters the accuracy study uses (count 1024; the study runs the
@@ -120,16 +153,20 @@ typedef struct isk_problem_error {
  *               number of periods would sample the symplectic methods'
  *               bounded energy wobble at its zero and hide it)
  *   radial      kQ 4, min 0.1, m 1, T 5 s, d0 0.5..2 (periods 1.3..5 s)
+ *   bounce      g 9.81, c 1, m 1, T 10 s, drop heights 1..4 m (4 to 11 bounces)
+ *   kepler      kQ 4 pi^2, m 1, e 0.6, a 0.8..1.25 (periods 0.72..1.4 s), T 10.25 s
  * An unknown kind gives count 0 (which fails validation). */
 isk_problem isk_problem_defaults(isk_problem_kind kind);
 
-/* "projectile", "oscillator", "radial"; "?" if unknown. */
+/* "projectile", "oscillator", "radial", "bounce", "kepler"; "?" if unknown. */
 const char *isk_problem_name(isk_problem_kind kind);
 
 /* Checks the fields the kind uses (others are ignored).  Errors:
  * ISK_ERR_NULL; ISK_ERR_RANGE (unknown kind; T, mass, kq, min_dist,
- * start_min <= 0; drag < 0; start_max < start_min); ISK_ERR_SIZE (count 0
- * or > ISK_PARTICLES_MAX); ISK_ERR_NAN (a used field not finite). */
+ * start_min <= 0; drag < 0; start_max < start_min; restitution outside
+ * [0, 1]; eccentricity outside [0, 1); bounce gravity <= 0); ISK_ERR_SIZE
+ * (count 0 or > ISK_PARTICLES_MAX); ISK_ERR_NAN (a used field not
+ * finite). */
 isk_status isk_problem_validate(const isk_problem *p);
 
 /* State of particle i (< count) at t = 0.  Errors: validation, ISK_ERR_NULL,
@@ -139,17 +176,20 @@ isk_status isk_problem_initial(const isk_problem *p, size_t i, isk_problem_state
 /* Exact state of particle i at time t >= 0.  Errors as isk_problem_initial,
  * ISK_ERR_NAN / ISK_ERR_RANGE for a non-finite / negative t, and
  * ISK_ERR_UNSUPPORTED for ISK_PROBLEM_RADIAL (no closed form for r(t)). */
+/* (For ISK_PROBLEM_BOUNCE the energy isk_problem_energy gives is the
+ * state's; the exact one after k bounces is m g h0 c^(2k).) */
 isk_status isk_problem_exact(const isk_problem *p, size_t i, double t, isk_problem_state *out);
 
-/* Conserved energy of a state (oscillator, radial; see the top).  Errors:
+/* Energy of a state (oscillator, radial, bounce, kepler; see the top).  Errors:
  * validation, ISK_ERR_NULL, ISK_ERR_UNSUPPORTED (projectile: drag removes
  * energy).  A non-finite state gives a non-finite *E, not an error. */
 isk_status isk_problem_energy(const isk_problem *p, const isk_problem_state *st, double *E);
 
 /* Makes the initialised system `s` run problem p: clears its particles and
  * adds p->count of them, replaces its forces (gravity, drag, potentials;
- * no acceleration), turns walls, ageing and pending multi-Coulomb batches
- * off and sets time to 0.  Keeps the integrator, substeps, speed divisor
+ * no acceleration), turns walls off (bounce: on, the floor alone, sound,
+ * in the step), ageing and pending multi-Coulomb batches off and sets time
+ * to 0.  Keeps the integrator, substeps, speed divisor
  * and rng: those are the caller's to choose.  All-or-nothing.  Errors:
  * validation, ISK_ERR_NULL, ISK_ERR_NOMEM. */
 isk_status isk_problem_setup(const isk_problem *p, isk_system *s);
@@ -158,6 +198,16 @@ isk_status isk_problem_setup(const isk_problem *p, isk_system *s);
  * exact answer at s->time.  Errors: validation, ISK_ERR_NULL, ISK_ERR_SIZE
  * (the particle count is not p->count), ISK_ERR_NAN (s->time not finite). */
 isk_status isk_problem_measure(const isk_problem *p, const isk_system *s, isk_problem_error *out);
+
+/* The conserved-quantity errors now (energy; kepler: also angular momentum
+ * and period), raised into *acc's running maxima, so that calling it after
+ * every step gives their maxima over [0, T] instead of their values at T
+ * (a bounded wobble sampled at T can sit at its zero).  Cheap: no exact
+ * solve (the references are closed forms: E0, L0, and the bouncing ball's
+ * E0 c^(2k)).  Start with acc's fields at 0.  Non-finite states raise them
+ * to +INFINITY.  Errors as isk_problem_measure, ISK_ERR_UNSUPPORTED for the
+ * projectile (it has no conserved quantity). */
+isk_status isk_problem_track(const isk_problem *p, const isk_system *s, isk_problem_error *acc);
 
 #ifdef __cplusplus
 }

@@ -68,8 +68,14 @@ extern const double isk_sinlut_table[ISK_SINLUT_MAX_N + 1];
 typedef enum isk_sinlut_mode {
     ISK_SINLUT_FLOOR = 0,
     ISK_SINLUT_ROUND = 1,
-    ISK_SINLUT_LERP = 2
+    ISK_SINLUT_LERP = 2,
+    ISK_SINLUT_LIBM = 3,  /* no table: libm's sin (where a choice of sine is offered) */
+    ISK_SINLUT_MODE_COUNT
 } isk_sinlut_mode;
+
+/* Names as scene files spell them (an emitter's osc_table): "floor",
+ * "round", "lerp", "libm". */
+extern const char *const isk_sinlut_mode_names[ISK_SINLUT_MODE_COUNT];
 
 typedef struct isk_sinlut {
     const double *table; /* entry i (0..n) at table[i * stride]; entry n == entry 0 */
@@ -87,7 +93,8 @@ isk_status isk_sinlut_init(isk_sinlut *lut, int n);
 isk_status isk_sinlut_init_copy(isk_sinlut *lut, int n, double *buf, size_t buf_len);
 
 /* The documented error bound of a mode for a table of n entries (without the
- * rounding slack): 2pi/n, pi/n or (2pi/n)^2/8.  0 for an invalid n or mode. */
+ * rounding slack): 2pi/n, pi/n or (2pi/n)^2/8.  0 for an invalid n or mode
+ * (and for libm, which has no table error). */
 double isk_sinlut_bound(int n, isk_sinlut_mode mode);
 
 /* Lookup by mode through a switch (for code that picks the mode at run

@@ -30,6 +30,11 @@ void isk_chart_defaults(isk_chart *ch)
     ch->background = ISK_WHITE;
     ch->ink = ISK_BLACK;
     ch->grid = isk_rgba(225, 225, 225, 255);
+    ch->notes = NULL;
+    ch->nnotes = 0;
+    ch->x2_label = NULL;
+    ch->x2_scale = 1.0;
+    ch->x2_inverse = 0;
 }
 
 static isk_status check_range(double mn, double mx, int log)
@@ -48,7 +53,7 @@ static isk_status check_range(double mn, double mx, int log)
 
 static isk_status validate(const isk_chart *ch, const isk_canvas *c)
 {
-    if (!ch || !c || !c->pixels || (ch->nseries > 0 && !ch->series))
+    if (!ch || !c || !c->pixels || (ch->nseries > 0 && !ch->series) || (ch->nnotes > 0 && !ch->notes))
         return ISK_ERR_NULL;
     for (size_t k = 0; k < ch->nseries; k++)
         if (ch->series[k].n > 0 && (!ch->series[k].x || !ch->series[k].y))
@@ -67,6 +72,11 @@ static isk_status validate(const isk_chart *ch, const isk_canvas *c)
         if ((unsigned)s->dash >= (unsigned)ISK_DASH_COUNT || (unsigned)s->marker >= (unsigned)ISK_MARKER_COUNT)
             return ISK_ERR_RANGE;
     }
+    for (size_t k = 0; k < ch->nnotes; k++)
+        if ((unsigned)ch->notes[k].marker >= (unsigned)ISK_MARKER_COUNT)
+            return ISK_ERR_RANGE;
+    if (ch->x2_label && !(isfinite(ch->x2_scale) && ch->x2_scale > 0.0))
+        return ISK_ERR_RANGE;
     return ISK_OK;
 }
 
@@ -136,7 +146,11 @@ isk_status chart_prepare(const isk_chart *ch, const isk_canvas *c, chart_axis *x
     int xlab_h = (ch->x_label && *ch->x_label) ? isk_text_height(ch->x_label, s) + 2 * s : 0;
     title_h = title_h > H / 6 ? H / 6 : title_h;
     xlab_h = xlab_h > H / 6 ? H / 6 : xlab_h;
-    lay.T = pad + title_h + lay.chh / 2 + s;
+    /* A top axis: its label line and its tick labels above the frame. */
+    lay.top2 = ch->x2_label && *ch->x2_label && ch->x_log;
+    int top2_h = lay.top2 ? isk_text_height(ch->x2_label, s) + lay.chh + (CHART_GAP + CHART_TICK + 2) * s : 0;
+    top2_h = top2_h > H / 6 ? H / 6 : top2_h;
+    lay.T = pad + title_h + top2_h + lay.chh / 2 + s;
     lay.B = H - pad - xlab_h - lay.chh - (CHART_GAP + CHART_TICK + 1) * s;
 
     chart_axis ax, ay;
@@ -180,6 +194,15 @@ isk_status chart_prepare(const isk_chart *ch, const isk_canvas *c, chart_axis *x
         lay.R -= over;
     }
 
+    if (lay.top2) {
+        /* The top axis's range in its own t space: t2 = log10(scale) -+ t. */
+        const double ls = log10(ch->x2_scale);
+        chart_axis *a2 = &lay.x2;
+        a2->log = 1;
+        a2->tlo = ch->x2_inverse ? ls - ax.thi : ls + ax.tlo;
+        a2->thi = ch->x2_inverse ? ls - ax.tlo : ls + ax.thi;
+        chart_axis_setup(a2, 0, 0.0, 0.0, lay.R - lay.L, 1, s);
+    }
     *xa = ax;
     *ya = ay;
     *out = lay;
@@ -198,6 +221,7 @@ isk_status isk_chart_draw(const isk_chart *ch, isk_canvas *c)
     chart_draw_lines(ch, &ax, &ay, &lay, c);
     chart_draw_frame(ch, &ax, &ay, &lay, c);
     chart_draw_markers(ch, &ax, &ay, &lay, c);
+    chart_draw_notes(ch, &ax, &ay, &lay, c);
     chart_draw_text(ch, &ax, &ay, &lay, c);
     chart_draw_legend(ch, &lay, c);
     return ISK_OK;

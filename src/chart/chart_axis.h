@@ -39,7 +39,17 @@ typedef struct chart_layout {
     int L, R, T, B;   /* frame columns L, R and rows T (top), B (bottom) */
     double spread;    /* extra stroke offset for series lines (thickness) */
     int mark_r;       /* marker half size in pixels */
+    int top2;         /* a second x axis along the top (isk_chart.x2_label) */
+    chart_axis x2;    /* its ticks, in its own t space (see chart_x2_frac) */
 } chart_layout;
+
+/* Fraction across the plot of top-axis coordinate t2 (x2_inverse: the top
+ * axis runs the other way). */
+static inline double chart_x2_frac(const isk_chart *ch, const chart_layout *l, double t2)
+{
+    double f = (t2 - l->x2.tlo) / (l->x2.thi - l->x2.tlo);
+    return ch->x2_inverse ? 1.0 - f : f;
+}
 
 /* Pixel coordinates of axis fractions: f = 0 and f = 1 fall on the centres
  * of the frame's columns L, R (rows B, T). */

@@ -108,6 +108,11 @@ void chart_draw_frame(const isk_chart *ch, const chart_axis *x, const chart_axis
     for (int k = 0; k < y->n; k++)
         if (tick_frac(y, k, &f))
             tick_y(ch, lay, c, f, CHART_TICK);
+    for (int k = 0; lay->top2 && k < lay->x2.n; k++) { /* the top axis, ticks outside the frame */
+        f = chart_x2_frac(ch, lay, lay->x2.t[k]);
+        if (f >= -FEPS && f <= 1.0 + FEPS)
+            isk_fill_rect(c, col_of(lay, f), lay->T - s - CHART_TICK * s, s, CHART_TICK * s, ch->ink, ISK_BLEND_OVER);
+    }
 }
 
 /* Text drawn turned 90 degrees anticlockwise (read bottom to top), glyph by
@@ -172,6 +177,21 @@ void chart_draw_text(const isk_chart *ch, const chart_axis *x, const chart_axis 
         isk_draw_text(c, right - iw, row_of(lay, f) - 3 * s, y->label[k], s, ch->ink, ISK_BLEND_OVER);
     }
     int mid = (lay->L + lay->R + 1) / 2;
+    if (lay->top2) {
+        int ly2 = lay->T - s - (CHART_TICK + CHART_GAP) * s - lay->chh;
+        for (int k = 0; k < lay->x2.n; k++) {
+            f = chart_x2_frac(ch, lay, lay->x2.t[k]);
+            if (!(f >= -FEPS && f <= 1.0 + FEPS))
+                continue;
+            int w = isk_text_width(lay->x2.label[k], s), iw = ink_width(lay->x2.label[k], s);
+            int lx = clampi(col_of(lay, f) - (iw - s) / 2, 0, c->width - w);
+            isk_draw_text(c, lx, ly2, lay->x2.label[k], s, ch->ink, ISK_BLEND_OVER);
+        }
+        int w = isk_text_width(ch->x2_label, s), iw = ink_width(ch->x2_label, s);
+        int tx = clampi(mid - iw / 2, pad, c->width - pad - w);
+        isk_draw_text(c, tx, ly2 - 2 * s - isk_text_height(ch->x2_label, s), ch->x2_label, s, ch->ink,
+                      ISK_BLEND_OVER);
+    }
     if (ch->title && *ch->title) {
         int w = isk_text_width(ch->title, s), iw = ink_width(ch->title, s);
         int tx = clampi(mid - iw / 2, pad, c->width - pad - w);

@@ -26,6 +26,9 @@ void chart_draw_lines(const isk_chart *ch, const chart_axis *x, const chart_axis
 /* Markers of every series at points inside the range. */
 void chart_draw_markers(const isk_chart *ch, const chart_axis *x, const chart_axis *y,
                         const chart_layout *lay, isk_canvas *c);
+/* The notes: markers and texts at their points (inside the range). */
+void chart_draw_notes(const isk_chart *ch, const chart_axis *x, const chart_axis *y, const chart_layout *lay,
+                      isk_canvas *c);
 /* A legend sample: a horizontal stretch of the series' line from x0 to x1
  * at row y with its marker in the middle. */
 void chart_draw_sample(const isk_chart_style *st, double x0, double x1, double y, const chart_layout *lay,

@@ -13,6 +13,7 @@
 
 #include "chart/chart_internal.h"
 #include "iskra/draw.h"
+#include "iskra/text.h"
 
 #define PEN_MAX 128 /* points per stroked polyline (stroke cost grows with it) */
 
@@ -343,6 +344,29 @@ void chart_draw_markers(const isk_chart *ch, const chart_axis *x, const chart_ax
                 continue;
             draw_marker(c, s->style.marker, chart_px(lay, fx), chart_py(lay, fy), lay, s->style.color);
         }
+    }
+}
+
+void chart_draw_notes(const isk_chart *ch, const chart_axis *x, const chart_axis *y, const chart_layout *lay,
+                      isk_canvas *c)
+{
+    const double eps = 1e-9;
+    chart_layout big = *lay;
+    big.mark_r = lay->mark_r + 2 * lay->s; /* a note's marker stands out from the series' */
+    for (size_t k = 0; k < ch->nnotes; k++) {
+        const isk_chart_note *n = &ch->notes[k];
+        double tx, ty;
+        if (!chart_axis_place(x->log, n->x, &tx) || !chart_axis_place(y->log, n->y, &ty))
+            continue;
+        double fx = chart_axis_frac(x, tx), fy = chart_axis_frac(y, ty);
+        if (fx < -eps || fx > 1.0 + eps || fy < -eps || fy > 1.0 + eps)
+            continue;
+        double px = chart_px(lay, fx), py = chart_py(lay, fy);
+        if (n->marker != ISK_MARKER_NONE)
+            draw_marker(c, n->marker, px, py, &big, n->color);
+        if (n->text && *n->text) /* up and to the right, at scale 1 (small beside the data) */
+            isk_draw_text(c, (int)floor(px) + big.mark_r + 1, (int)floor(py) - big.mark_r - ISK_FONT_CELL_H,
+                          n->text, 1, n->color, ISK_BLEND_OVER);
     }
 }
 

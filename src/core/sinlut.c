@@ -63,6 +63,8 @@ double isk_sinlut_reduce_slow(const isk_sinlut *lut, double theta)
     return fmod(theta, TWO_PI) * lut->scale;
 }
 
+const char *const isk_sinlut_mode_names[ISK_SINLUT_MODE_COUNT] = {"floor", "round", "lerp", "libm"};
+
 double isk_sinlut_bound(int n, isk_sinlut_mode mode)
 {
     if (table_log2(n) < 0)
@@ -72,8 +74,8 @@ double isk_sinlut_bound(int n, isk_sinlut_mode mode)
     case ISK_SINLUT_FLOOR: return h;
     case ISK_SINLUT_ROUND: return h / 2.0;
     case ISK_SINLUT_LERP: return h * h / 8.0;
+    default: return 0.0;
     }
-    return 0.0;
 }
 
 double isk_sinlut_eval(const isk_sinlut *lut, isk_sinlut_mode mode, double theta)
@@ -84,6 +86,7 @@ double isk_sinlut_eval(const isk_sinlut *lut, isk_sinlut_mode mode, double theta
     case ISK_SINLUT_FLOOR: return isk_sinlut_floor(lut, theta);
     case ISK_SINLUT_ROUND: return isk_sinlut_round(lut, theta);
     case ISK_SINLUT_LERP: return isk_sinlut_lerp(lut, theta);
+    case ISK_SINLUT_LIBM: return sin(theta);
+    default: return NAN;
     }
-    return NAN;
 }

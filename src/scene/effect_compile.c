@@ -145,7 +145,8 @@ isk_status fx_compile(isk_effect *e, fx_group *g)
         if (!ADD(isk_stage_oscillate))
             return ISK_ERR_FULL;
         st->u.osc.decay = em->osc_decay;
-        st->u.osc.table = em->osc_use_table ? &e->sin_table : NULL;
+        st->u.osc.table = &e->sin_table;
+        st->u.osc.mode = em->osc_table;
         st->u.osc.faithful = em->osc_faithful;
         st->u.osc.omega_min = em->osc_omega_min;
         st->u.osc.omega_max = em->osc_omega_max;

@@ -35,7 +35,7 @@ void fx_adopt(isk_effect *e, fx_group *g, size_t from)
         if (em->osc_random_phase) {
             double ph = isk_rng_range(&g->rng, 0.0, 6.283185307179586);
             p->osc_phase[i] = ph;
-            p->osc_offset[i] = p->osc_amp[i] * (em->osc_use_table ? isk_sinlut_floor(&e->sin_table, ph) : sin(ph));
+            p->osc_offset[i] = p->osc_amp[i] * isk_sinlut_eval(&e->sin_table, em->osc_table, ph);
         }
     }
 }

@@ -30,6 +30,7 @@ static const isk_key_word forever_words[] = {{"forever", INFINITY}, {"inf", INFI
 static const isk_key_word off_words[] = {{"off", ISK_DIST_OFF}, {"none", ISK_DIST_OFF}, {NULL, 0}};
 static const isk_key_word scene_words[] = {{"scene", 0}, {NULL, 0}};
 static const isk_key_word inherit_words[] = {{"scene", ISK_INTEGRATE_INHERIT}, {NULL, 0}};
+static const isk_key_word table_words[] = {{"true", ISK_SINLUT_FLOOR}, {"false", ISK_SINLUT_LIBM}, {NULL, 0}};
 
 /* ---- [scene] and [view]: fields of isk_effect_def ------------------------- */
 
@@ -313,8 +314,10 @@ static const isk_key keys[] = {
      .meaning = "amplitude *= max(0, 1 - decay*dt)"},
     {EMITTER("osc_faithful"), .type = ISK_KEY_BOOL, EM(osc_faithful), .dflt = "false", .live = ALL,
      .meaning = "also add the offset change to vx (the fire thesis's code)"},
-    {EMITTER("osc_table"), .type = ISK_KEY_BOOL, EM(osc_use_table), .dflt = "true", .live = ALL,
-     .meaning = "sine from a lookup table (as the thesis) or libm"},
+    {EMITTER("osc_table"), .type = ISK_KEY_ENUM, EM(osc_table), NAMES(isk_sinlut_mode_names), .words = table_words,
+     .dflt = "floor", .live = ALL,
+     .meaning = "the sine: a 4096-entry table read by floor (the fire thesis), nearest entry (round), linear "
+                "interpolation (lerp: 1e-6), or libm (true and false: the old spellings of floor and libm)"},
     {EMITTER("osc_random_phase"), .type = ISK_KEY_BOOL, EM(osc_random_phase), .dflt = "false", .live = ALL,
      .meaning = "start each particle at a random phase (its offset preset, so it does not jump)"},
     {EMITTER("integrator"), .type = ISK_KEY_ENUM, EM(integrator), NAMES(isk_integrator_names),

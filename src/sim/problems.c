@@ -34,6 +34,20 @@ isk_problem isk_problem_defaults(isk_problem_kind kind)
         p.start_min = 0.5;
         p.start_max = 2.0;
         break;
+    case ISK_PROBLEM_BOUNCE:
+        p.T = 10.0;
+        p.gravity = 9.81;
+        p.restitution = 1.0;
+        p.start_min = 1.0;
+        p.start_max = 4.0;
+        break;
+    case ISK_PROBLEM_KEPLER:
+        p.T = 10.25;
+        p.kq = TWO_PI * TWO_PI;
+        p.eccentricity = 0.6;
+        p.start_min = 0.8;
+        p.start_max = 1.25;
+        break;
     default:
         p.count = 0;
         break;
@@ -47,6 +61,8 @@ const char *isk_problem_name(isk_problem_kind kind)
     case ISK_PROBLEM_PROJECTILE: return "projectile";
     case ISK_PROBLEM_OSCILLATOR: return "oscillator";
     case ISK_PROBLEM_RADIAL: return "radial";
+    case ISK_PROBLEM_BOUNCE: return "bounce";
+    case ISK_PROBLEM_KEPLER: return "kepler";
     default: return "?";
     }
 }
@@ -80,7 +96,7 @@ isk_status isk_problem_validate(const isk_problem *p)
         return ISK_ERR_RANGE;
     if (p->count == 0 || p->count > ISK_PARTICLES_MAX)
         return ISK_ERR_SIZE;
-    isk_status st[6];
+    isk_status st[8];
     int n = 0;
     st[n++] = positive(p->T);
     st[n++] = positive(p->mass);
@@ -90,10 +106,17 @@ isk_status isk_problem_validate(const isk_problem *p)
     if (p->kind == ISK_PROBLEM_PROJECTILE) {
         st[n++] = isfinite(p->gravity) ? ISK_OK : ISK_ERR_NAN;
         st[n++] = !isfinite(p->drag) ? ISK_ERR_NAN : (p->drag >= 0.0 ? ISK_OK : ISK_ERR_RANGE);
+    } else if (p->kind == ISK_PROBLEM_BOUNCE) {
+        st[n++] = positive(p->gravity);
+        st[n++] = !isfinite(p->restitution) ? ISK_ERR_NAN
+                  : (p->restitution >= 0.0 && p->restitution <= 1.0 ? ISK_OK : ISK_ERR_RANGE);
     } else {
         st[n++] = positive(p->kq);
         if (p->kind == ISK_PROBLEM_RADIAL)
             st[n++] = positive(p->min_dist);
+        if (p->kind == ISK_PROBLEM_KEPLER)
+            st[n++] = !isfinite(p->eccentricity) ? ISK_ERR_NAN
+                      : (p->eccentricity >= 0.0 && p->eccentricity < 1.0 ? ISK_OK : ISK_ERR_RANGE);
     }
     return first_error(st, n);
 }
@@ -108,6 +131,65 @@ static void spreads(const isk_problem *p, size_t i, double *u, double *w)
 }
 
 static double omega(const isk_problem *p) { return sqrt(p->kq / p->mass); }
+
+/* The Kepler ellipse of particle i at time t (see the header). */
+static void kepler_at(const isk_problem *p, size_t i, double t, isk_problem_state *out)
+{
+    double u, w;
+    spreads(p, i, &u, &w);
+    const double a = p->start_min + (p->start_max - p->start_min) * w, e = p->eccentricity;
+    const double mu = p->kq / p->mass, n = sqrt(mu / (a * a * a)), b = a * sqrt(1.0 - e * e);
+    double M = fmod(TWO_PI * w + n * t, TWO_PI);
+    /* Newton on E - e sin E = M from E = M + e sin M (e < 1: it converges,
+     * quadratically once close); stop when a step no longer changes E. */
+    double E = M + e * sin(M);
+    for (int it = 0; it < 60; it++) {
+        double dE = (E - e * sin(E) - M) / (1.0 - e * cos(E));
+        E -= dE;
+        if (fabs(dE) <= 1e-16 * (1.0 + fabs(E)))
+            break;
+    }
+    const double c = cos(E), s = sin(E), Ed = n / (1.0 - e * c);
+    const double xo = a * (c - e), yo = b * s, vxo = -a * s * Ed, vyo = b * c * Ed;
+    const double th = TWO_PI * u, ct = cos(th), st = sin(th);
+    out->r = isk_vec2_make(ct * xo - st * yo, st * xo + ct * yo);
+    out->v = isk_vec2_make(ct * vxo - st * vyo, st * vxo + ct * vyo);
+}
+
+/* The bouncing ball dropped from h0 at time t: its height, vertical speed
+ * and how many bounces it has made (see the header). */
+static void bounce_at(const isk_problem *p, double h0, double t, double *y, double *v, int *bounces)
+{
+    const double g = p->gravity, c = p->restitution, V0 = sqrt(2.0 * g * h0), tf = V0 / g;
+    *bounces = 0;
+    if (t <= tf) {
+        *y = h0 - 0.5 * g * t * t;
+        *v = -g * t;
+        return;
+    }
+    double tau = t - tf, V = c * V0;
+    int k = 1;
+    if (c == 1.0) { /* periodic: the same hop every 2 V0/g */
+        double per = 2.0 * V0 / g, hops = floor(tau / per);
+        tau -= hops * per;
+        k = 1 + (int)fmin(hops, 1e9);
+    } else {
+        while (V > 0.0 && tau >= 2.0 * V / g && k < 100000) {
+            tau -= 2.0 * V / g;
+            V *= c;
+            k++;
+        }
+        if (!(V > 0.0) || k >= 100000) { /* the hops have ended: at rest on the floor */
+            *y = 0.0;
+            *v = 0.0;
+            *bounces = k;
+            return;
+        }
+    }
+    *y = V * tau - 0.5 * g * tau * tau;
+    *v = V - g * tau;
+    *bounces = k;
+}
 
 static void initial(const isk_problem *p, size_t i, isk_problem_state *out)
 {
@@ -127,6 +209,13 @@ static void initial(const isk_problem *p, size_t i, isk_problem_state *out)
         out->v = isk_vec2_make(-s * om * sn, 0.5 * s * om * c);
         break;
     }
+    case ISK_PROBLEM_BOUNCE:
+        out->r = isk_vec2_make(0.0, s);
+        out->v = isk_vec2_make(0.0, 0.0);
+        break;
+    case ISK_PROBLEM_KEPLER:
+        kepler_at(p, i, 0.0, out);
+        break;
     default: { /* radial */
         double th = TWO_PI * u;
         out->r = isk_vec2_make(s * cos(th), s * sin(th));
@@ -192,9 +281,12 @@ isk_status isk_problem_exact(const isk_problem *p, size_t i, double t, isk_probl
     if (t < 0.0)
         return ISK_ERR_RANGE;
     isk_problem_state s0 = *out;
+    int k;
     switch (p->kind) {
     case ISK_PROBLEM_PROJECTILE: exact_projectile(p, &s0, t, out); return ISK_OK;
     case ISK_PROBLEM_OSCILLATOR: exact_oscillator(p, &s0, t, out); return ISK_OK;
+    case ISK_PROBLEM_BOUNCE: bounce_at(p, s0.r.y, t, &out->r.y, &out->v.y, &k); return ISK_OK;
+    case ISK_PROBLEM_KEPLER: kepler_at(p, i, t, out); return ISK_OK;
     default: return ISK_ERR_UNSUPPORTED;
     }
 }
@@ -205,6 +297,10 @@ static double energy(const isk_problem *p, const isk_problem_state *st)
     double d2 = st->r.x * st->r.x + st->r.y * st->r.y;
     if (p->kind == ISK_PROBLEM_OSCILLATOR)
         return kin + 0.5 * p->kq * d2;
+    if (p->kind == ISK_PROBLEM_BOUNCE)
+        return kin + p->mass * p->gravity * st->r.y;
+    if (p->kind == ISK_PROBLEM_KEPLER)
+        return kin - p->kq / sqrt(d2);
     double mn = p->min_dist, d = sqrt(d2);
     double U = d <= mn ? p->kq * d2 / (2.0 * mn * mn) : p->kq * (0.5 + log(d / mn));
     return kin + U;
@@ -235,10 +331,10 @@ isk_status isk_problem_setup(const isk_problem *p, isk_system *s)
     if (st != ISK_OK)
         return st;
     size_t npot = 0;
-    if (p->kind != ISK_PROBLEM_PROJECTILE) {
+    if (p->kind != ISK_PROBLEM_PROJECTILE && p->kind != ISK_PROBLEM_BOUNCE) {
         isk_potential pot;
         isk_potential_init(&pot, p->kq, isk_vec2_make(0.0, 0.0), 1.0);
-        pot.P = p->kind == ISK_PROBLEM_OSCILLATOR ? 0.0 : 2.0;
+        pot.P = p->kind == ISK_PROBLEM_OSCILLATOR ? 0.0 : (p->kind == ISK_PROBLEM_KEPLER ? 3.0 : 2.0);
         pot.min_dist = p->kind == ISK_PROBLEM_RADIAL ? p->min_dist : ISK_DIST_OFF;
         st = isk_system_add_potential(s, &pot, NULL); /* appended: the old list is intact */
         if (st != ISK_OK)
@@ -250,13 +346,20 @@ isk_status isk_problem_setup(const isk_problem *p, isk_system *s)
     f.pot = s->forces.pot;
     f.npot = npot;
     f.centre = ISK_FIDELITY_SOUND;
-    if (p->kind == ISK_PROBLEM_PROJECTILE) {
+    if (p->kind == ISK_PROBLEM_PROJECTILE || p->kind == ISK_PROBLEM_BOUNCE) {
         f.gravity = p->gravity;
-        f.drag = p->drag;
+        f.drag = p->kind == ISK_PROBLEM_PROJECTILE ? p->drag : 0.0;
     }
     s->forces = f;
     s->bounds.sides = 0;
     s->bounce_in_step = 0;
+    if (p->kind == ISK_PROBLEM_BOUNCE) {
+        /* the floor alone (the window's other sides are off) */
+        isk_bounds floor;
+        isk_bounds_reflect(&floor, -1.0, 1.0, 0.0, 2.0 * p->start_max, ISK_SIDE_BOTTOM, 0.0, p->restitution);
+        s->bounds = floor;
+        s->bounce_in_step = 1;
+    }
     s->ageing = 0;
     s->njobs = 0;
     s->time = 0.0;
@@ -287,6 +390,67 @@ static double phase_error(double c, double v, double ce, double ve, double om)
 
 static double max_of(double acc, double v) { return v > acc ? v : acc; }
 
+/* Particle i's conserved references without an exact solve: E0 (and for
+ * the ellipse L0 = m sqrt(mu a (1 - e^2)), counterclockwise). */
+static void references(const isk_problem *p, size_t i, double *E0, double *L0)
+{
+    double u, w;
+    spreads(p, i, &u, &w);
+    const double s = p->start_min + (p->start_max - p->start_min) * w;
+    *L0 = 0.0;
+    if (p->kind == ISK_PROBLEM_KEPLER) {
+        *E0 = -p->kq / (2.0 * s);
+        *L0 = p->mass * sqrt(p->kq / p->mass * s * (1.0 - p->eccentricity * p->eccentricity));
+    } else if (p->kind == ISK_PROBLEM_BOUNCE) {
+        *E0 = p->mass * p->gravity * s;
+    } else {
+        isk_problem_state s0;
+        initial(p, i, &s0);
+        *E0 = energy(p, &s0);
+    }
+}
+
+isk_status isk_problem_track(const isk_problem *p, const isk_system *s, isk_problem_error *acc)
+{
+    isk_status st = isk_problem_validate(p);
+    if (st != ISK_OK)
+        return st;
+    if (!s || !acc)
+        return ISK_ERR_NULL;
+    if (p->kind == ISK_PROBLEM_PROJECTILE)
+        return ISK_ERR_UNSUPPORTED;
+    if (s->particles.count != p->count)
+        return ISK_ERR_SIZE;
+    if (!isfinite(s->time))
+        return ISK_ERR_NAN;
+    const isk_particles *q = &s->particles;
+    const int kepler = p->kind == ISK_PROBLEM_KEPLER;
+    for (size_t i = 0; i < p->count; i++) {
+        isk_problem_state now = {{q->x[i], q->y[i]}, {q->vx[i], q->vy[i]}};
+        if (!state_finite(&now)) {
+            acc->energy = acc->angular_momentum = acc->period = INFINITY;
+            continue;
+        }
+        double E0, L0;
+        references(p, i, &E0, &L0);
+        double Ek = E0;
+        if (p->kind == ISK_PROBLEM_BOUNCE && p->restitution != 1.0) {
+            double y, v;
+            int k;
+            bounce_at(p, E0 / (p->mass * p->gravity), s->time, &y, &v, &k);
+            Ek = E0 * pow(p->restitution, 2.0 * k);
+        }
+        double E = energy(p, &now);
+        acc->energy = max_of(acc->energy, fabs(E - Ek) / fabs(E0));
+        if (kepler) {
+            double L = p->mass * (now.r.x * now.v.y - now.r.y * now.v.x);
+            acc->angular_momentum = max_of(acc->angular_momentum, fabs(L - L0) / fabs(L0));
+            acc->period = max_of(acc->period, E < 0.0 ? fabs(pow(E0 / E, 1.5) - 1.0) : INFINITY);
+        }
+    }
+    return ISK_OK;
+}
+
 isk_status isk_problem_measure(const isk_problem *p, const isk_system *s, isk_problem_error *out)
 {
     isk_status st = isk_problem_validate(p);
@@ -302,13 +466,16 @@ isk_status isk_problem_measure(const isk_problem *p, const isk_system *s, isk_pr
     const int has_exact = p->kind != ISK_PROBLEM_RADIAL;
     const int has_energy = p->kind != ISK_PROBLEM_PROJECTILE;
     const int has_phase = p->kind == ISK_PROBLEM_OSCILLATOR;
-    isk_problem_error e = {t, NAN, NAN, NAN, NAN, 0};
+    const int kepler = p->kind == ISK_PROBLEM_KEPLER;
+    isk_problem_error e = {t, NAN, NAN, NAN, NAN, 0, NAN, NAN};
     if (has_exact)
         e.position = e.velocity = 0.0;
     if (has_energy)
         e.energy = 0.0;
     if (has_phase)
         e.phase = 0.0;
+    if (kepler)
+        e.angular_momentum = e.period = 0.0;
     const isk_particles *q = &s->particles;
     const double om = has_phase ? omega(p) : 1.0;
     for (size_t i = 0; i < p->count; i++) {
@@ -318,17 +485,30 @@ isk_status isk_problem_measure(const isk_problem *p, const isk_system *s, isk_pr
             continue;
         }
         initial(p, i, &s0);
+        int bounces = 0;
         if (has_exact) {
+            ex = s0;
             if (p->kind == ISK_PROBLEM_PROJECTILE)
                 exact_projectile(p, &s0, t, &ex);
-            else
+            else if (p->kind == ISK_PROBLEM_OSCILLATOR)
                 exact_oscillator(p, &s0, t, &ex);
+            else if (p->kind == ISK_PROBLEM_BOUNCE)
+                bounce_at(p, s0.r.y, t, &ex.r.y, &ex.v.y, &bounces);
+            else
+                kepler_at(p, i, t, &ex);
             e.position = max_of(e.position, hypot(now.r.x - ex.r.x, now.r.y - ex.r.y));
             e.velocity = max_of(e.velocity, hypot(now.v.x - ex.v.x, now.v.y - ex.v.y));
         }
         if (has_energy) {
             double E0 = energy(p, &s0), E = energy(p, &now);
-            e.energy = max_of(e.energy, fabs(E - E0) / E0);
+            /* the bouncing ball's energy is c^2k of its start after k bounces */
+            double Ek = p->kind == ISK_PROBLEM_BOUNCE ? E0 * pow(p->restitution, 2.0 * bounces) : E0;
+            e.energy = max_of(e.energy, fabs(E - Ek) / fabs(E0));
+            if (kepler) {
+                double L0 = s0.r.x * s0.v.y - s0.r.y * s0.v.x, L = now.r.x * now.v.y - now.r.y * now.v.x;
+                e.angular_momentum = max_of(e.angular_momentum, fabs(L - L0) / fabs(L0));
+                e.period = max_of(e.period, E < 0.0 ? fabs(pow(E0 / E, 1.5) - 1.0) : INFINITY);
+            }
         }
         if (has_phase) {
             double px = phase_error(now.r.x, now.v.x, ex.r.x, ex.v.x, om);
@@ -344,6 +524,8 @@ isk_status isk_problem_measure(const isk_problem *p, const isk_system *s, isk_pr
             e.energy = INFINITY;
         if (has_phase)
             e.phase = INFINITY;
+        if (kepler)
+            e.angular_momentum = e.period = INFINITY;
     }
     *out = e;
     return ISK_OK;

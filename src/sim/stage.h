@@ -71,7 +71,8 @@ struct isk_stage {
         struct { double slowing; } slow;
         struct {
             double decay;                                    /* amplitude *= max(0, 1 - decay*h) */
-            const isk_sinlut *table;                         /* NULL: libm sin */
+            const isk_sinlut *table;
+            isk_sinlut_mode mode;                            /* how the sine is read (ISK_SINLUT_LIBM: sin) */
             int faithful;                                    /* 1: also add the offset change to vx */
             double omega_min, omega_max, amp_min, amp_max;   /* for describe only */
         } osc;

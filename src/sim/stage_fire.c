@@ -54,15 +54,26 @@ static void describe_drift_slow(const isk_stage *st, FILE *out)
 
 const isk_stage_kind isk_stage_drift_slow = {"drift", run_drift_slow, describe_drift_slow};
 
-/* One loop per (table, faithful) choice: `use_table` and `faithful` are
- * constants at each call below, so no loop branches per particle. */
+/* The sine of the sway, read as the emitter asks: `mode` is a constant at
+ * every call of osc_loop below, so the loop has no per-particle branch. */
+static inline double osc_sine(const isk_sinlut *t, const int mode, double ph)
+{
+    switch (mode) {
+    case ISK_SINLUT_FLOOR: return isk_sinlut_floor(t, ph);
+    case ISK_SINLUT_ROUND: return isk_sinlut_round(t, ph);
+    case ISK_SINLUT_LERP: return isk_sinlut_lerp(t, ph);
+    default: return sin(ph);
+    }
+}
+
+/* One loop per (sine, faithful) choice: both are constants at each call. */
 static inline void osc_loop(size_t n, double *restrict x, double *restrict vx, double *restrict amp,
                             double *restrict ph, const double *restrict om, double *restrict off, double decay,
-                            const isk_sinlut *table, const int use_table, const int faithful, double h)
+                            const isk_sinlut *table, const int mode, const int faithful, double h)
 {
     for (size_t i = 0; i < n; i++) {
         ph[i] += om[i] * h;
-        double s = amp[i] * (use_table ? isk_sinlut_floor(table, ph[i]) : sin(ph[i]));
+        double s = amp[i] * osc_sine(table, mode, ph[i]);
         double dx = s - off[i];
         x[i] += dx;
         if (faithful)
@@ -72,6 +83,22 @@ static inline void osc_loop(size_t n, double *restrict x, double *restrict vx, d
     }
 }
 
+#define OSC_LOOP(mode, faithful)                                                                                 \
+    static void osc_##mode##_##faithful(size_t n, double *x, double *vx, double *amp, double *ph, const double *om, \
+                                        double *off, double decay, const isk_sinlut *t, double h)                  \
+    {                                                                                                            \
+        osc_loop(n, x, vx, amp, ph, om, off, decay, t, mode, faithful, h);                                       \
+    }
+OSC_LOOP(0, 0) OSC_LOOP(0, 1) OSC_LOOP(1, 0) OSC_LOOP(1, 1) OSC_LOOP(2, 0) OSC_LOOP(2, 1) OSC_LOOP(3, 0) OSC_LOOP(3, 1)
+#undef OSC_LOOP
+
+typedef void (*osc_fn)(size_t, double *, double *, double *, double *, const double *, double *, double,
+                       const isk_sinlut *, double);
+/* [mode][faithful], modes in isk_sinlut_mode order. */
+static const osc_fn osc_loops[ISK_SINLUT_MODE_COUNT][2] = {
+    {osc_0_0, osc_0_1}, {osc_1_0, osc_1_1}, {osc_2_0, osc_2_1}, {osc_3_0, osc_3_1},
+};
+
 static void run_oscillate(const isk_stage *st, isk_block *b, double h)
 {
     isk_particles *p = b->p;
@@ -80,22 +107,17 @@ static void run_oscillate(const isk_stage *st, isk_block *b, double h)
     if (!(decay > 0.0))
         decay = 0.0;
     double *amp = p->osc_amp + o, *ph = p->osc_phase + o, *om = p->osc_omega + o, *off = p->osc_offset + o;
-    const isk_sinlut *t = st->u.osc.table;
-    if (t && st->u.osc.faithful)
-        osc_loop(b->n, b->x, b->vx, amp, ph, om, off, decay, t, 1, 1, h);
-    else if (t)
-        osc_loop(b->n, b->x, b->vx, amp, ph, om, off, decay, t, 1, 0, h);
-    else if (st->u.osc.faithful)
-        osc_loop(b->n, b->x, b->vx, amp, ph, om, off, decay, NULL, 0, 1, h);
-    else
-        osc_loop(b->n, b->x, b->vx, amp, ph, om, off, decay, NULL, 0, 0, h);
+    const unsigned mode = (unsigned)st->u.osc.mode < ISK_SINLUT_MODE_COUNT ? (unsigned)st->u.osc.mode : ISK_SINLUT_LIBM;
+    osc_loops[mode][st->u.osc.faithful != 0](b->n, b->x, b->vx, amp, ph, om, off, decay, st->u.osc.table, h);
 }
 
 static void describe_oscillate(const isk_stage *st, FILE *out)
 {
-    fprintf(out, "x, omega %g..%g rad/s, amplitude %g..%g, decay %g/s%s%s", st->u.osc.omega_min, st->u.osc.omega_max,
-            st->u.osc.amp_min, st->u.osc.amp_max, st->u.osc.decay, st->u.osc.faithful ? ", thesis vx coupling" : "",
-            st->u.osc.table ? ", sine table" : ", libm sin");
+    const unsigned mode = (unsigned)st->u.osc.mode < ISK_SINLUT_MODE_COUNT ? (unsigned)st->u.osc.mode : ISK_SINLUT_LIBM;
+    fprintf(out, "x, omega %g..%g rad/s, amplitude %g..%g, decay %g/s%s, sine %s%s", st->u.osc.omega_min,
+            st->u.osc.omega_max, st->u.osc.amp_min, st->u.osc.amp_max, st->u.osc.decay,
+            st->u.osc.faithful ? ", thesis vx coupling" : "", isk_sinlut_mode_names[mode],
+            mode == ISK_SINLUT_LIBM ? "" : " (4096-entry table)");
 }
 
 const isk_stage_kind isk_stage_oscillate = {"oscillate", run_oscillate, describe_oscillate};
