@@ -127,13 +127,15 @@ static int integrator_index(const char *name)
     return -1;
 }
 
-static void check_csv(isk_problem_kind kind, const char *errors)
+static void check_csv(isk_problem_kind kind, const char *errors, int nsub)
 {
     char path[256], header[512];
     snprintf(path, sizeof path, QUICK "/acc/%s.csv", isk_problem_name(kind));
     csv *c = malloc(sizeof *c);
     csv_read(c, path);
-    snprintf(header, sizeof header, "problem,integrator,substeps,dt,steps,%s,diverged,ns_per_particle_step,ns_per_particle_run",
+    snprintf(header, sizeof header,
+             "problem,integrator,substeps,dt,steps,%s,diverged,ns_per_particle_step,ns_per_particle_run,timing_runs,"
+             "timing_spread",
              errors);
     char joined[512] = "";
     for (int i = 0; i < c->ncols; i++)
@@ -151,7 +153,7 @@ static void check_csv(isk_problem_kind kind, const char *errors)
         cr_assert_str_eq(row[0], isk_problem_name(kind));
         int m = integrator_index(row[ci]);
         int sub = (int)num(row[cs]);
-        cr_assert(sub == 1 || sub == 2 || sub == 4, "substeps %d", sub);
+        cr_assert(sub == 1 || (nsub == 3 && (sub == 2 || sub == 4)), "substeps %d", sub);
         int j = sub == 1 ? 0 : sub == 2 ? 1 : 2;
         double dt = num(row[cdt]), steps = num(row[cn]);
         cr_assert(steps >= 1 && steps == floor(steps));
@@ -177,13 +179,13 @@ static void check_csv(isk_problem_kind kind, const char *errors)
     int per = nseen[0][0];
     cr_assert_geq(per, 6, "%s: %d step sizes", path, per);
     for (int m = 0; m < ISK_INTEGRATOR_COUNT; m++)
-        for (int j = 0; j < 3; j++) {
+        for (int j = 0; j < nsub; j++) {
             cr_assert_eq(nseen[m][j], per, "%s: %s substeps group %d has %d rows, not %d", path,
                          isk_integrator_name((isk_integrator)m), j, nseen[m][j], per);
             for (int k = 0; k < per; k++)
                 cr_assert_eq(seen[m][j][k], seen[0][0][k]);
         }
-    cr_assert_eq(c->nrows, ISK_INTEGRATOR_COUNT * 3 * per);
+    cr_assert_eq(c->nrows, ISK_INTEGRATOR_COUNT * nsub * per);
     free(c->text);
     free(c);
 }
@@ -208,10 +210,74 @@ Test(bench_cli, quick_integrator_study_writes_csv_and_charts, .timeout = 120)
     cr_assert_not_null(strstr(out, "bit-identical"));
     cr_assert_null(strstr(out, "== knobs"), "--only ran one study");
     free(out);
-    check_csv(ISK_PROBLEM_PROJECTILE, "position_error,velocity_error");
-    check_csv(ISK_PROBLEM_OSCILLATOR, "position_error,velocity_error,energy_error,phase_error");
-    check_csv(ISK_PROBLEM_RADIAL, "energy_error");
-    const char *charts[5] = {"projectile.png", "oscillator.png", "oscillator_phase.png", "radial.png", "substeps.png"};
-    for (int i = 0; i < 5; i++)
+    check_csv(ISK_PROBLEM_PROJECTILE, "position_error,velocity_error", 3);
+    check_csv(ISK_PROBLEM_OSCILLATOR, "position_error,velocity_error,energy_error,phase_error", 3);
+    check_csv(ISK_PROBLEM_RADIAL, "energy_error", 3);
+    check_csv(ISK_PROBLEM_BOUNCE, "position_error,velocity_error,energy_error", 1);
+    check_csv(ISK_PROBLEM_KEPLER, "position_error,velocity_error,energy_error,angular_momentum_error,period_error", 1);
+    const char *charts[9] = {"projectile.png", "oscillator.png", "oscillator_phase.png", "radial.png", "substeps.png",
+                             "bounce.png",     "bounce_energy.png", "kepler.png",        "kepler_period.png"};
+    for (int i = 0; i < 9; i++)
         check_png(charts[i]);
+}
+
+/* The long run: 10^3 Kepler periods in the quick run.  The symplectic
+ * methods' energy error stays bounded; RK4's grows with the time. */
+Test(bench_cli, quick_long_run_shows_bounded_against_drifting, .timeout = 120)
+{
+    cli_fresh(OUT "/longrun");
+    cr_assert_eq(cli_run(OUT "/longrun", "bench accuracy --quick --only longrun --out " OUT "/longrun/acc"), 0);
+    csv *c = malloc(sizeof *c);
+    csv_read(c, OUT "/longrun/acc/longrun.csv");
+    const int ci = col(c, "integrator"), cp = col(c, "periods"), ce = col(c, "max_relative_energy_error");
+    double first[ISK_INTEGRATOR_COUNT] = {0}, last[ISK_INTEGRATOR_COUNT] = {0};
+    for (int r = 0; r < c->nrows; r++) {
+        int m = integrator_index(c->cell[r][ci]);
+        double p = num(c->cell[r][cp]), e = num(c->cell[r][ce]);
+        if (p == 10)
+            first[m] = e;
+        if (p == 1000)
+            last[m] = e;
+    }
+    const isk_integrator bounded[4] = {ISK_INTEGRATE_VERLET, ISK_INTEGRATE_LEAPFROG, ISK_INTEGRATE_YOSHIDA4,
+                                       ISK_INTEGRATE_SEMI_EULER};
+    for (int i = 0; i < 4; i++)
+        cr_assert(last[bounded[i]] < 2 * first[bounded[i]], "%s: %g -> %g", isk_integrator_name(bounded[i]),
+                  first[bounded[i]], last[bounded[i]]);
+    cr_assert(last[ISK_INTEGRATE_RK4] > 50 * first[ISK_INTEGRATE_RK4], "rk4: %g -> %g", first[ISK_INTEGRATE_RK4],
+              last[ISK_INTEGRATE_RK4]);
+    free(c->text);
+    free(c);
+    cli_check_chart(OUT "/longrun/acc/longrun.png", 1200, 800);
+}
+
+/* The thesis's figure 29 against its reference: the files, a row per
+ * setting, fractions in [0, 1], the switch-off frames in the scene. */
+Test(bench_cli, quick_thesis_scene_study, .timeout = 300)
+{
+    cli_fresh(OUT "/thesis");
+    cr_assert_eq(cli_run(OUT "/thesis", "bench accuracy --quick --only thesis --out " OUT "/thesis/acc"), 0);
+    csv *c = malloc(sizeof *c);
+    csv_read(c, OUT "/thesis/acc/thesis_fig29.csv");
+    cr_assert_eq(c->nrows, 5, "4 substep settings and the reference");
+    const int cf = col(c, "fraction_over_1px"), cs = col(c, "substeps");
+    for (int r = 0; r < 4; r++) {
+        double f = num(c->cell[r][cf]);
+        cr_assert(f >= 0 && f <= 1, "row %d: %g", r, f);
+    }
+    cr_assert_eq(num(c->cell[4][cs]), 32);
+    for (int k = 0; k < c->ncols; k++)
+        if (strstr(c->head[k], "switch_off_frame"))
+            for (int r = 0; r < c->nrows; r++) {
+                double v = num(c->cell[r][k]);
+                cr_assert(v == -2 || v == -1 || (v >= 1 && v <= 121), "%s = %g", c->head[k], v);
+            }
+    free(c->text);
+    free(c);
+    const char *charts[3] = {"thesis_fig29.png", "thesis_fig29_time.png", "thesis_fig29_switch.png"};
+    for (int i = 0; i < 3; i++) {
+        char path[256];
+        snprintf(path, sizeof path, OUT "/thesis/acc/%s", charts[i]);
+        cli_check_chart(path, 1200, 800);
+    }
 }

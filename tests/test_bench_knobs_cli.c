@@ -79,6 +79,12 @@ Test(bench_knobs_cli, quick_run_writes_every_csv_and_chart)
      * (6 + 6 + 3) step sizes x 3 implementations */
     free(out);
     free(check_csv("sine", "mode,size,max_abs_error,bound,error_over_bound,ns_per_call,libm_ns_per_call", 33, 1, -1));
+    /* the campfire: floor is the review's 3/255, lerp is libm's picture */
+    char *camp = check_csv("campfire_sine",
+                           "lookup,pixels_differing,max_channel_difference,max_x_offset_units,max_x_offset_px", 3, 1, -1);
+    cr_assert_not_null(strstr(camp, "\nfloor,1256,3,"), "%s", camp);
+    cr_assert_not_null(strstr(camp, "\nlerp,0,0,"), "%s", camp);
+    free(camp);
     char *rate = check_csv("emission_rate",
                            "rate,steps_per_s,mode,count_at_1s,expected_at_1s,error_at_1s_percent,"
                            "max_abs_count_error,ns_per_step,ns_per_particle",
@@ -99,7 +105,7 @@ Test(bench_knobs_cli, quick_run_writes_every_csv_and_chart)
     for (int i = 0; i < 5; i++)
         check_png(charts[i]);
 
-    /* Only the ten outputs: the temporary names were all renamed. */
+    /* Only the eleven outputs: the temporary names were all renamed. */
     DIR *d = opendir(RES);
     cr_assert_not_null(d);
     int files = 0;
@@ -109,5 +115,5 @@ Test(bench_knobs_cli, quick_run_writes_every_csv_and_chart)
             cr_expect_null(strstr(e->d_name, ".tmp"), "left behind: %s", e->d_name);
         }
     closedir(d);
-    cr_assert_eq(files, 10);
+    cr_assert_eq(files, 11);
 }

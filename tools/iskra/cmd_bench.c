@@ -15,8 +15,10 @@ typedef struct study_entry {
 } study_entry;
 
 static const study_entry studies[] = {
-    {"integrators", "integrator x step x substeps on three closed-form problems", study_integrators},
-    {"knobs", "sine table, emission modes, ellipse sampler, float vs double", study_knobs},
+    {"integrators", "integrator x step x substeps on five closed-form problems", study_integrators},
+    {"longrun", "energy over 10^5 Kepler periods: symplectic bounded, RK4 drifting", study_longrun},
+    {"thesis", "fig 29 against a 256-substep reference: pixels off, switch-off frames, seeds", study_thesis},
+    {"knobs", "sine table (and on the campfire), emission modes, ellipse sampler, float vs double", study_knobs},
 };
 enum { NSTUDIES = sizeof studies / sizeof studies[0] };
 

@@ -50,6 +50,8 @@ int study_write_chart(const study_opts *o, const char *name, const isk_chart *ch
 
 /* The studies (one file each). */
 int study_integrators(const study_opts *o); /* study_integrators.c */
+int study_longrun(const study_opts *o);     /* study_longrun.c */
+int study_thesis(const study_opts *o);      /* study_thesis.c */
 int study_knobs(const study_opts *o);       /* study_knobs.c */
 
 #endif

@@ -2,6 +2,7 @@
  * cost and buy, each measured against a known answer:
  *
  *   sine            the sine table's sizes and lookups against libm sin
+ *   campfire        the same lookups on the campfire's picture
  *   emission_rate   the fire thesis's per-frame count rounding against the
  *                   fractional accumulator
  *   emission_birth  back-dated births against the thesis's jitter and
@@ -23,14 +24,15 @@
 /* Defined in the part files.  Declared here rather than in study.h, which
  * is shared by every study and names only their entry points. */
 int study_knobs_sine(const study_opts *o);
+int study_knobs_campfire(const study_opts *o);
 int study_knobs_emission(const study_opts *o);
 int study_knobs_ellipse(const study_opts *o);
 int study_knobs_float(const study_opts *o);
 
 int study_knobs(const study_opts *o)
 {
-    int (*const parts[])(const study_opts *) = {study_knobs_sine, study_knobs_emission, study_knobs_ellipse,
-                                                 study_knobs_float};
+    int (*const parts[])(const study_opts *) = {study_knobs_sine, study_knobs_campfire, study_knobs_emission,
+                                                 study_knobs_ellipse, study_knobs_float};
     int rc = 0;
     for (size_t i = 0; i < sizeof parts / sizeof parts[0]; i++) {
         if (parts[i](o) != 0)

@@ -24,8 +24,8 @@
 
 enum { NSIZES = 11, NMODES = 3, LIBM = NMODES };
 static const int SIZES[NSIZES] = {64, 128, 256, 512, 1024, 2048, 4096, 8192, 16384, 32768, 65536};
-static const char *const MODE_NAME[NMODES] = {"floor", "round", "lerp"};
 static const isk_sinlut_mode MODES[NMODES] = {ISK_SINLUT_FLOOR, ISK_SINLUT_ROUND, ISK_SINLUT_LERP};
+#define MODE_NAME isk_sinlut_mode_names /* indexed by mode: the first three are the table's */
 static const double RANGE = 1e4; /* angles in [-RANGE, RANGE] rad */
 
 /* Seconds for one pass of `mode` (or libm sin) over the angles. */
