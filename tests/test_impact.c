@@ -319,7 +319,7 @@ Test(impact, thesis_walls_ignore_the_motion)
     double x2[3], y2[3], vx2[3], vy2[3];
     memcpy(x2, x, sizeof x), memcpy(y2, y, sizeof y), memcpy(vx2, vx, sizeof vx), memcpy(vy2, vy, sizeof vy);
     double z[3] = {5, 5, 5}, zv[3] = {0, 0, 0};
-    isk_step_motion mo = {z, z, zv, zv, NULL, 0.0, 0.1};
+    isk_step_motion mo = {z, z, zv, zv, NULL, 0.0, 0.1, 0.0, 0.0, 0.0};
     isk_bounds_apply_arrays(&b, 3, x, y, vx, vy);
     isk_bounds_apply_step(&b, &mo, 3, x2, y2, vx2, vy2);
     cr_assert(!memcmp(x, x2, sizeof x) && !memcmp(y, y2, sizeof y) && !memcmp(vx, vx2, sizeof vx) &&
@@ -334,7 +334,7 @@ Test(impact, a_particle_born_outside_is_mirrored_in)
     cr_assert_eq(isk_bounds_reflect(&b, 0, 10, 0, 10, ISK_SIDE_ALL, 0, 0.5), ISK_OK);
     double x0 = 12, y0 = 5, vx0 = 1, vy0 = 0;
     double x = 12.1, y = 5, vx = 1, vy = 0;
-    isk_step_motion mo = {&x0, &y0, &vx0, &vy0, NULL, 0.0, 0.1};
+    isk_step_motion mo = {&x0, &y0, &vx0, &vy0, NULL, 0.0, 0.1, 0.0, 0.0, 0.0};
     isk_bounds_apply_step(&b, &mo, 1, &x, &y, &vx, &vy);
     double xe = 12.1, ye = 5, vxe = 1, vye = 0;
     isk_bounds_apply_arrays(&b, 1, &xe, &ye, &vxe, &vye);

@@ -63,16 +63,14 @@
  *     if (s == ISK_OK)                                                         // margin 0, c = 0.5
  *         s = isk_bounds_reflect(&b, 0, 10, 0, 10, ISK_SIDE_ALL, 0.0, 0.5);
  *     if (s == ISK_OK) isk_bounds_apply(&b, &store, 0, store.count);           // y = 0.5 * 9.9
- *     printf("y = %g, vy = %g
-", store.y[0], store.vy[0]);                   // 4.95, 3
+ *     printf("y = %g, vy = %g\n", store.y[0], store.vy[0]);                   // 4.95, 3
  *     isk_particles_free(&store);
  *     // the step form: a particle that left y = 0.1 at vy = -12 for h = 1/60
  *     double x0[1] = {5}, y0[1] = {0.1}, vx0[1] = {0}, vy0[1] = {-12};
  *     double x[1] = {5}, y[1] = {0.1 - 12.0 / 60}, vx[1] = {0}, vy[1] = {-12};
- *     isk_step_motion mo = {x0, y0, vx0, vy0, NULL, 0.0, 1.0 / 60};    // the step's start
+ *     isk_step_motion mo = {x0, y0, vx0, vy0, NULL, 0.0, 1.0 / 60, 0, 0, 0};  // the step's start
  *     if (s == ISK_OK) isk_bounds_apply_step(&b, &mo, 1, x, y, vx, vy);
- *     printf("y = %g, vy = %g
-", y[0], vy[0]);     // hit at t = 1/120: 0.05, 6
+ *     printf("y = %g, vy = %g\n", y[0], vy[0]);     // hit at t = 1/120: 0.05, 6
  *     return s != ISK_OK;
  */
 #ifndef ISKRA_BOUNDS_H
@@ -136,10 +134,12 @@ void isk_bounds_apply(const isk_bounds *b, isk_particles *p, size_t begin, size_
 void isk_bounds_apply_arrays(const isk_bounds *b, size_t n, double *x, double *y, double *vx, double *vy);
 
 /* The bounce at the time of impact on raw arrays: (x, y, vx, vy) is the
- * state at the end of the step mo describes (iskra/impact.h).  The thesis
- * mode ignores mo (its arithmetic is the thesis's); a NULL or incomplete mo
- * (no start state, h not > 0, drag without masses) falls back to the
- * end-state rule of isk_bounds_apply_arrays. */
+ * state at the end of the step mo describes (iskra/impact.h: from its
+ * start state, or, without one, from the constant acceleration and the
+ * integrator's velocity offset).  The thesis mode ignores mo (its
+ * arithmetic is the thesis's); a NULL or incomplete mo (h not > 0, drag
+ * without masses, no start state and no finite acceleration) falls back to
+ * the end-state rule of isk_bounds_apply_arrays. */
 void isk_bounds_apply_step(const isk_bounds *b, const isk_step_motion *mo, size_t n, double *x, double *y,
                            double *vx, double *vy);
 

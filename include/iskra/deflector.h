@@ -14,11 +14,10 @@
  *     x_old[0] = x[0];  y_old[0] = y[0];            // integrate: x_old = x; x += vx*dt
  *     x[0] += vx[0] * dt;  y[0] += vy[0] * dt;      // y = -0.1, below the floor
  *     double vx_old[1] = {vx[0]}, vy_old[1] = {vy[0]};  // the step's start state
- *     isk_step_motion mo = {x_old, y_old, vx_old, vy_old, NULL, 0.0, dt};
+ *     isk_step_motion mo = {x_old, y_old, vx_old, vy_old, NULL, 0.0, dt, 0, 0, 0};
  *     isk_status st = isk_deflect_step(&floor, 1, x, y, vx, vy, &mo, 1,
  *                                      NULL, NULL, NULL);  // rng/killed/stats optional
- *     printf("y = %g, vy = %g
-", y[0], vy[0]);     // hit at t = dt/2: 0.05, 6
+ *     printf("y = %g, vy = %g\n", y[0], vy[0]);     // hit at t = dt/2: 0.05, 6
  *     return st != ISK_OK;
  *
  * isk_deflect_step bounces at the time of impact (iskra/impact.h): the hit

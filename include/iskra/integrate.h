@@ -170,6 +170,14 @@ extern const char *const isk_integrator_names[ISK_INTEGRATOR_COUNT];
 /* isk_integrator_names[method], or "?" if unknown. */
 const char *isk_integrator_name(isk_integrator method);
 
+/* How far the method's stored velocity is from the velocity of the curve
+ * its positions lie on, under a constant acceleration a, in units of a*dt:
+ * semi-implicit Euler -1/2 (its velocity is the curve's half a step
+ * later), explicit Euler +1/2, every other method 0 (their positions lie
+ * on the exact flight).  The walls use it to bounce from the end state
+ * alone (iskra/impact.h).  0 for an unknown method. */
+double isk_integrator_velocity_offset(isk_integrator method);
+
 #ifdef __cplusplus
 }
 #endif

@@ -98,9 +98,12 @@ isk_status fx_compile(isk_effect *e, fx_group *g)
      * keep the thesis's picture (its browser clipped them the same way), and
      * without walls the view is a plain window. */
     g->keep_on_canvas = walls && d->bounds.mode == ISK_BOUNCE_REFLECT;
-    /* Sound walls and deflectors bounce at the time of impact: they need the
-     * state before the move (iskra/impact.h). */
-    const int step_walls = walls && !em->draw_before_bounce && d->bounds.mode == ISK_BOUNCE_REFLECT;
+    /* Sound walls and deflectors bounce at the time of impact: deflectors
+     * need the state before the move, walls only when potentials act (with
+     * constant forces alone the step's flight is known from its end:
+     * iskra/impact.h). */
+    const int step_walls =
+        walls && !em->draw_before_bounce && d->bounds.mode == ISK_BOUNCE_REFLECT && f->npick > 0;
 
     if (walls && em->draw_before_bounce)
         g->frame_start[g->nframe_start++] = &fx_step_late_walls;
@@ -158,6 +161,10 @@ isk_status fx_compile(isk_effect *e, fx_group *g)
             return ISK_ERR_FULL;
         st->u.walls.b = &d->bounds;
         st->u.walls.drag = f->drag;
+        st->u.walls.start = g->ndefl || step_walls;
+        st->u.walls.ax = g->const_ax;
+        st->u.walls.ay = g->const_ay;
+        st->u.walls.offset = isk_integrator_velocity_offset(g->integrator);
     }
     if (g->ndefl) {
         if (!ADD(isk_stage_deflect))

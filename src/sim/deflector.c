@@ -384,7 +384,7 @@ static void bounce_flight(const ctx *c, int hit, const isk_deflector *d, flight 
      * at every hop too, so it stops; normal restitution lets it slide) and
      * the segment holds it against the normal acceleration. */
     const double V = f->ux * nox + f->uy * noy, an = f->ax * nox + f->ay * noy, cr = d->restitution;
-    if (an < 0.0 && (!(V > 0.0) || (cr < 1.0 && 2.0 * V <= -an * (1.0 - cr) * f->s))) {
+    if (an < 0.0 && (!(V > 0.0) || (cr < 1.0 && 2.0 * V <= -an * (1.0 - cr) * f->s * (1.0 + 1e-9)))) {
         if (d->mode == ISK_RESTITUTION_UNIFORM && cr < 1.0) {
             f->ux = f->uy = 0.0;
         } else {

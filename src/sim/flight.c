@@ -52,6 +52,16 @@ void isk_fl_fit(double p0, double v0, double p1, double v1, double k, double h, 
     *delta = v1 - (u0 * e + acc * d1);
 }
 
+void isk_fl_from_end(double p1, double v1, double a, double k, double h, double delta, double *P, double *U)
+{
+    double e, d1, d2;
+    isk_fl_basis(k, h, &e, &d1, &d2);
+    /* u(h) = U e + a D1 = v1 - delta;  p(h) = P + U D1 + a D2 = p1 */
+    double u0 = ((v1 - delta) - a * d1) / e;
+    *U = u0;
+    *P = p1 - u0 * d1 - a * d2;
+}
+
 double isk_fl_turn(double U, double a, double k)
 {
     if (!(U * a < 0.0))
@@ -112,9 +122,14 @@ double isk_fl_root(double c0, double U, double a, double k, double t0, double t1
         return fabs(fb) < fa ? t1 : t0;
     /* Safeguarded Newton: the bracket [lo, hi] always has f(lo) >= 0 >
      * f(hi); a Newton step that leaves it is replaced by bisection.  f is
-     * smooth with a simple root here, so this converges in a few steps. */
+     * smooth with a simple root here, so this converges in a few steps from
+     * the root the flight would have without drag (k t is small in every
+     * ordinary step), else from the chord's. */
     double lo = t0, hi = t1;
     t = lo + (hi - lo) * (fa / (fa - fb)); /* regula falsi start */
+    double tq;
+    if (quadratic_root(c0, U, a, t0, t1, &tq) && tq > lo && tq < hi)
+        t = tq;
     for (int it = 0; it < 200; it++) {
         double f = f_at(c0, U, a, k, t, &fp);
         if (f >= 0.0)

@@ -38,6 +38,11 @@ double isk_fl_phi2_series(double h);
 void isk_fl_fit(double p0, double v0, double p1, double v1, double k, double h, double *U, double *a,
                 double *delta);
 
+/* The flight of one axis that ends at (p1, v1) after h with acceleration
+ * a, drag k and the integrator's velocity offset delta (v1 = u(h) +
+ * delta): its start P and start velocity U. */
+void isk_fl_from_end(double p1, double v1, double a, double k, double h, double delta, double *P, double *U);
+
 /* The time in (0, +inf) at which u(t) = 0 (the flight's turning point), or
  * -1 when it has none (U and a not of opposite signs). */
 double isk_fl_turn(double U, double a, double k);

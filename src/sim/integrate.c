@@ -301,3 +301,16 @@ const char *isk_integrator_name(isk_integrator method)
 {
     return (unsigned)method < ISK_INTEGRATOR_COUNT ? isk_integrator_names[method] : "?";
 }
+
+/* x_n lies on the parabola whose velocity at t_n is v_n - offset*a*dt
+ * (semi-implicit: x_{n+1} = x_n + dt (v_n + a dt), the parabola of
+ * v_n + a dt/2; explicit: x_{n+1} = x_n + dt v_n, of v_n - a dt/2). */
+static const double velocity_offsets[ISK_INTEGRATOR_COUNT] = {
+    [ISK_INTEGRATE_SEMI_EULER] = -0.5,
+    [ISK_INTEGRATE_EULER] = 0.5,
+};
+
+double isk_integrator_velocity_offset(isk_integrator method)
+{
+    return (unsigned)method < ISK_INTEGRATOR_COUNT ? velocity_offsets[method] : 0.0;
+}

@@ -79,7 +79,10 @@ struct isk_stage {
         struct {
             const isk_bounds *b;
             double drag;                                     /* the motion's linear drag b (impact.h) */
-        } walls;                                             /* reflect mode needs the remember stage */
+            int start;                                       /* 1: the remember stage ran (potentials act) */
+            double ax, ay, offset;                           /* else: the constant acceleration and the
+                                                                integrator's velocity offset */
+        } walls;
         struct {
             const isk_deflector *segs;
             int n;

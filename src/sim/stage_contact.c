@@ -22,11 +22,13 @@ static void describe_remember(const isk_stage *st, FILE *out)
     fprintf(out, "positions and velocities (for bounces at the time of impact)");
 }
 
-/* The step the block just made, as the contact stages see it. */
+/* The step the block just made, as the contact stages see it: from the
+ * remembered start state, or (walls without potentials) from the constant
+ * acceleration alone. */
 static isk_step_motion motion_of(const isk_block *b, double drag, double h)
 {
     const isk_scratch *s = b->s;
-    isk_step_motion mo = {s->x_old, s->y_old, s->vx_old, s->vy_old, b->m, drag, h};
+    isk_step_motion mo = {s->x_old, s->y_old, s->vx_old, s->vy_old, b->m, drag, h, 0.0, 0.0, 0.0};
     return mo;
 }
 
@@ -34,7 +36,13 @@ const isk_stage_kind isk_stage_remember = {"remember", run_remember, describe_re
 
 static void run_walls(const isk_stage *st, isk_block *b, double h)
 {
-    const isk_step_motion mo = motion_of(b, st->u.walls.drag, h);
+    isk_step_motion mo = motion_of(b, st->u.walls.drag, h);
+    if (!st->u.walls.start) {
+        mo.x0 = mo.y0 = mo.vx0 = mo.vy0 = NULL;
+        mo.ax = st->u.walls.ax;
+        mo.ay = st->u.walls.ay;
+        mo.offset = st->u.walls.offset;
+    }
     isk_bounds_apply_step(st->u.walls.b, &mo, b->n, b->x, b->y, b->vx, b->vy);
 }
 

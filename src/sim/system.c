@@ -258,7 +258,11 @@ isk_status isk_system_step(isk_system *s, double dt)
      * move (iskra/impact.h). */
     isk_pipeline pl;
     isk_pipeline_init(&pl);
-    if (bounce && s->bounds.mode == ISK_BOUNCE_REFLECT)
+    int potentials = 0;
+    for (size_t k = 0; k < s->forces.npot; k++)
+        potentials |= s->forces.pot[k].enabled;
+    const int start = bounce && s->bounds.mode == ISK_BOUNCE_REFLECT && potentials;
+    if (start)
         isk_pipeline_add(&pl, &isk_stage_remember);
     isk_stage *motion = isk_pipeline_add(&pl, &isk_stage_motion);
     motion->u.motion.method = s->integrator;
@@ -267,6 +271,10 @@ isk_status isk_system_step(isk_system *s, double dt)
         isk_stage *w = isk_pipeline_add(&pl, &isk_stage_walls);
         w->u.walls.b = &s->bounds;
         w->u.walls.drag = s->forces.drag;
+        w->u.walls.start = start;
+        w->u.walls.ax = s->forces.ax;
+        w->u.walls.ay = s->forces.ay - s->forces.gravity;
+        w->u.walls.offset = isk_integrator_velocity_offset(s->integrator);
     }
     if (s->ageing)
         isk_pipeline_add(&pl, &isk_stage_age);

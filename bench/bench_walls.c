@@ -1,0 +1,203 @@
+/* bench_walls — the walls against the memory-bandwidth limit, and the
+ * bounce at the time of impact (iskra/impact.h) against the end-of-step
+ * rule it replaced, measured in one run.
+ *
+ * The limit: the bytes a particle-step must move (read x, y, vx, vy, m;
+ * write x, y, vx, vy: 72 B) over the best STREAM kernel (copy, scale, add,
+ * triad) measured in the same process on arrays whose total footprint is
+ * the store's (40 B per particle), so both sit in the same level of the
+ * memory.  Issue 12's goal for every stage set: within 1.5x of the limit.
+ *
+ * Variants, each a pipeline of the library's block runner over the same
+ * store (semi-implicit Euler, gravity 9.81 + linear drag 0.47, dt = 1/600,
+ * particles uniform in a 10 x 10 box with speeds up to 5 per axis: the
+ * bench_integrators setup; reflect walls on all four sides, c = 0.8):
+ *   motion         forces + integrator, no walls
+ *   walls, end     + the walls with the end-of-step rule (the old stage)
+ *   walls, impact  forces + integrator + the walls at the time of impact,
+ *                  the flight known from the end state (what scenes and
+ *                  isk_system run with constant forces and drag)
+ *   + remember     the same with the start state remembered and fitted
+ *                  (what runs when potentials act)
+ *   resting        the impact walls with every particle resting on the
+ *                  floor (c = 0.5): every particle hits every step, the
+ *                  worst case of the scalar path
+ * at 10^6 and 10^7 particles.  Rounds interleave the variants; each figure
+ * is the fastest of ROUNDS (the least disturbed) with the median beside
+ * it.  The machine is shared: read the ratios, not the nanoseconds. */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "bench_util.h"
+#include "iskra/system.h"
+#include "sim/stage.h"
+
+enum { ROUNDS = 7 };
+static const double DT = 1.0 / 600, G = 9.81, DRAG = 0.47;
+
+/* ---- the bandwidth limit ---------------------------------------------------- */
+
+/* Best bytes per ns over copy, scale, add and triad, each on arrays whose
+ * total size is `bytes`. */
+static double stream_limit(size_t bytes)
+{
+    size_t n2 = bytes / 16, n3 = bytes / 24; /* two or three arrays */
+    double *a = malloc(n2 * sizeof *a), *b = malloc(n2 * sizeof *b), *c = malloc(n3 * sizeof *c);
+    if (!a || !b || !c) {
+        free(a), free(b), free(c);
+        return 0;
+    }
+    for (size_t i = 0; i < n2; i++)
+        a[i] = 1.0, b[i] = 2.0;
+    for (size_t i = 0; i < n3; i++)
+        c[i] = 0.5;
+    double best = 0;
+    for (int r = 0; r < ROUNDS; r++)
+        for (int k = 0; k < 4; k++) {
+            double t0 = bench_now(), moved;
+            double *restrict A = a, *restrict B = b, *restrict C = c;
+            const double s = 1.0000001;
+            switch (k) {
+            case 0: for (size_t i = 0; i < n2; i++) A[i] = B[i]; moved = 16.0 * (double)n2; break;
+            case 1: for (size_t i = 0; i < n2; i++) A[i] = s * B[i]; moved = 16.0 * (double)n2; break;
+            case 2: for (size_t i = 0; i < n3; i++) A[i] = B[i] + C[i]; moved = 24.0 * (double)n3; break;
+            default: for (size_t i = 0; i < n3; i++) A[i] = B[i] + s * C[i]; moved = 24.0 * (double)n3; break;
+            }
+            double t = bench_now() - t0;
+            if (t > 0 && moved / (t * 1e9) > best)
+                best = moved / (t * 1e9);
+        }
+    volatile double sink = a[n2 / 2] + c[n3 / 3];
+    (void)sink;
+    free(a), free(b), free(c);
+    return best;
+}
+
+/* ---- the variants ------------------------------------------------------------- */
+
+/* The walls as they were: the end-of-step rule, no start state. */
+static void run_end_walls(const isk_stage *st, isk_block *b, double h)
+{
+    (void)h;
+    isk_bounds_apply_arrays(st->u.walls.b, b->n, b->x, b->y, b->vx, b->vy);
+}
+static void describe_end_walls(const isk_stage *st, FILE *out)
+{
+    (void)st;
+    fprintf(out, "end-of-step rule");
+}
+static const isk_stage_kind end_walls = {"walls", run_end_walls, describe_end_walls};
+
+enum { V_MOTION, V_END, V_IMPACT, V_START, V_REST, NV };
+static const char *const VNAME[NV] = {"motion", "walls, end-of-step rule", "walls, at the time of impact",
+                                      "  the same from a remembered start", "impact, all resting on the floor"};
+
+typedef struct world {
+    isk_particles p;
+    isk_forces f;
+    isk_bounds box, floor;
+    isk_pipeline pl[NV];
+    isk_scratch *s;
+} world;
+
+static void fill(world *w, size_t n, int resting)
+{
+    isk_particles_clear(&w->p);
+    isk_rng r;
+    isk_rng_seed(&r, 1);
+    for (size_t i = 0; i < n; i++) {
+        double x = isk_rng_range(&r, 0, 10), y = isk_rng_range(&r, 0, 10);
+        double vx = isk_rng_range(&r, -5, 5), vy = isk_rng_range(&r, -5, 5), m = 1 + isk_rng_uniform(&r);
+        if (resting)
+            y = 0, vx *= 0.1, vy = 0;
+        isk_particles_add(&w->p, x, y, vx, vy, m, NULL);
+    }
+}
+
+static int build(world *w, size_t n)
+{
+    memset(w, 0, sizeof *w);
+    if (isk_particles_init(&w->p, n, 0) != ISK_OK)
+        return 1;
+    w->s = aligned_alloc(64, (sizeof(isk_scratch) + 63) / 64 * 64);
+    if (!w->s)
+        return 1;
+    w->f.gravity = G;
+    w->f.drag = DRAG;
+    isk_bounds_reflect(&w->box, 0, 10, 0, 10, ISK_SIDE_ALL, 0, 0.8);
+    isk_bounds_reflect(&w->floor, 0, 10, 0, 10, ISK_SIDE_ALL, 0, 0.5);
+    for (int v = 0; v < NV; v++) {
+        isk_pipeline *pl = &w->pl[v];
+        isk_pipeline_init(pl);
+        if (v == V_START)
+            isk_pipeline_add(pl, &isk_stage_remember);
+        isk_stage *m = isk_pipeline_add(pl, &isk_stage_motion);
+        m->u.motion.method = ISK_INTEGRATE_SEMI_EULER;
+        m->u.motion.forces = &w->f;
+        if (v == V_MOTION)
+            continue;
+        isk_stage *st = isk_pipeline_add(pl, v == V_END ? &end_walls : &isk_stage_walls);
+        st->u.walls.b = v == V_REST ? &w->floor : &w->box;
+        st->u.walls.drag = DRAG;
+        st->u.walls.start = v == V_START;
+        st->u.walls.ay = -G; /* the constant acceleration, and semi-implicit Euler's offset */
+        st->u.walls.offset = isk_integrator_velocity_offset(ISK_INTEGRATE_SEMI_EULER);
+    }
+    fill(w, n, 0);
+    return 0;
+}
+
+static int cmp(const void *a, const void *b)
+{
+    double x = *(const double *)a, y = *(const double *)b;
+    return (x > y) - (x < y);
+}
+
+static int measure(size_t n, int steps)
+{
+    world w;
+    if (build(&w, n)) {
+        fprintf(stderr, "bench_walls: out of memory at %zu particles\n", n);
+        return 1;
+    }
+    const double limit = stream_limit(40 * n); /* bytes per ns */
+    const double floor_ns = 72.0 / limit;      /* the least a particle-step can cost */
+    double t[NV][ROUNDS];
+    for (int r = 0; r < ROUNDS; r++)
+        for (int k = 0; k < NV; k++) {
+            int v = (k + r) % NV; /* a different order every round */
+            fill(&w, n, v == V_REST);
+            isk_pipeline_run(&w.pl[v], &w.p, 0, w.p.count, DT, w.s); /* warm */
+            double t0 = bench_now();
+            for (int s = 0; s < steps; s++)
+                isk_pipeline_run(&w.pl[v], &w.p, 0, w.p.count, DT, w.s);
+            t[v][r] = (bench_now() - t0) / ((double)steps * (double)n) * 1e9;
+        }
+    printf("%zu particles (store %zu MB), %d steps per timing, fastest (median) of %d rounds\n", n, n * 56 >> 20,
+           steps, ROUNDS);
+    printf("  bandwidth limit: best STREAM kernel %.2f GB/s -> 72 B per particle-step = %.3f ns\n", limit,
+           floor_ns);
+    double best[NV];
+    for (int v = 0; v < NV; v++) {
+        qsort(t[v], ROUNDS, sizeof t[v][0], cmp);
+        best[v] = t[v][0];
+        printf("  %-34s %7.3f ns (%7.3f)  %5.2fx the limit\n", VNAME[v], t[v][0], t[v][ROUNDS / 2],
+               t[v][0] / floor_ns);
+    }
+    printf("  impact / end-of-step rule: %.3f   impact / motion alone: %.3f   (goal: every stage set <= 1.5x "
+           "the limit)\n\n",
+           best[V_IMPACT] / best[V_END], best[V_IMPACT] / best[V_MOTION]);
+    free(w.s);
+    isk_particles_free(&w.p);
+    return 0;
+}
+
+int main(void)
+{
+    printf("bench_walls: gravity %.2f + drag %.2f + reflect walls, semi-implicit Euler, dt 1/600\n\n", G, DRAG);
+    if (measure(1000000, 10))
+        return 1;
+    return measure(10000000, 2);
+}
