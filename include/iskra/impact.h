@@ -38,9 +38,9 @@
  * the step, the particle comes to rest: on the wall, with normal velocity
  * equal to the integrator's offset (0 for Verlet and RK4; a h/2 away from
  * the wall for semi-implicit Euler, which is the velocity whose next step
- * lands it on the wall again).  A particle within |a| h^2 / 8 of a wall
- * it is pressed into, no faster than |a| h, rests at once (any hops left
- * would be lower than that: 3.4e-6 m at g = 9.81, h = 1/600).  A particle
+ * lands it on the wall again).  A particle within |a| h^2 / 64 of a wall
+ * it is pressed into, no faster than |a| h / 64, rests at once (any hops
+ * left would be lower than |a| h^2 / 60: 2.7e-7 m at g = 9.81, h = 1/600).  A particle
  * never leaves a wall or a segment by rounding, and a resting one costs a
  * few operations a step, not a root solve.
  *

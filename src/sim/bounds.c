@@ -308,13 +308,15 @@ static void impact_axis(double *pos, double *vel, const axis_motion *am, size_t 
      * (else its 1e-18 "upward" speed costs a root solve every step). */
     if (fabs(U) <= 64 * 2.220446049250313e-16 * (fabs(v1) + fabs(a) * h))
         U = 0.0;
-    /* Resting contact at once: within a half step's fall of a wall it is
-     * pressed into (|a| h^2 / 8), no faster than a step's worth of that
-     * acceleration: whatever hops remain are lower than g h^2/8 (3.4e-6 m at
-     * g = 9.81, h = 1/600), so it rests without a root solve.  (With drag
-     * and the Euler forms the flight is not exactly theirs, and a resting
-     * particle would otherwise make a real hop, with Newton, every step.) */
-    const double near = 0.125 * fabs(a) * h * h, slow = fabs(a) * h;
+    /* Resting contact at once: within |a| h^2 / 64 of a wall it is pressed
+     * into, no faster than |a| h / 64: whatever hops remain are lower than
+     * |a| h^2 / 60 (2.7e-7 m at g = 9.81, h = 1/600), below what the step
+     * resolves, so it rests without a root solve.  (With drag and the
+     * Euler forms the flight is not exactly theirs: a resting particle
+     * comes back with a speed of ~ (b h/m) |a| h and would otherwise make a
+     * real hop, with Newton, every step.  A ball in flight is never this
+     * slow this close to the floor, whatever the step.) */
+    const double near = fabs(a) * h * h / 64.0, slow = fabs(a) * h / 64.0;
     if (a < 0.0 && P - lo <= near && fabs(U) <= slow) {
         *pos = lo;
         *vel = delta;
