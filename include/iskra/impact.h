@@ -58,6 +58,24 @@
  * bounce then never leaves a speed above ISK_SPEED_LIMIT (the velocity is
  * scaled down to it, direction kept; iskra/limits.h).  1e150 is far beyond
  * any scene and keeps v^2, v*dt and b*v finite for every accepted parameter.
+ *
+ * Example: a ball dropped onto a restitution-1 floor keeps its apex:
+ *
+ *     double x[1] = {0}, y[1] = {4}, vx[1] = {0}, vy[1] = {0}, m[1] = {1};
+ *     isk_bounds b;
+ *     if (isk_bounds_reflect(&b, -10, 10, 0, 10, ISK_SIDE_BOTTOM, 0.0, 1.0) != ISK_OK) return 1;
+ *     const double g = 9.81, h = 1.0 / 60;
+ *     double apex = 0;
+ *     for (int i = 0; i < 60 * 20; i++) {           // 20 s: about ten bounces
+ *         double x0[1] = {x[0]}, y0[1] = {y[0]}, vx0[1] = {vx[0]}, vy0[1] = {vy[0]};
+ *         y[0] += h * vy[0] - 0.5 * g * h * h;      // the exact parabola of the step
+ *         vy[0] -= g * h;
+ *         isk_step_motion mo = {x0, y0, vx0, vy0, m, 0.0, h, 0, 0, 0};
+ *         isk_bounds_apply_step(&b, &mo, 1, x, y, vx, vy);   // bounce at the time of impact
+ *         if (i > 60 * 10 && y[0] > apex) apex = y[0];
+ *     }
+ *     printf("apex after ten seconds: %.6f (dropped from 4)\n", apex);
+ *     return !(apex > 3.99 && apex <= 4.0 + 1e-9);
  */
 #ifndef ISKRA_IMPACT_H
 #define ISKRA_IMPACT_H

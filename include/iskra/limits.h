@@ -37,6 +37,17 @@
  * potential's centre) is removed by the block runner and counted
  * (isk_effect_removed_nonfinite, isk_system.removed_nonfinite; `iskra
  * render` reports it): nothing non-finite is drawn or kept in silence.
+ *
+ * Example: the limits, and a step iskra refuses:
+ *
+ *     printf("coordinates up to %g, speeds up to %g, dt up to %g s\n",
+ *            ISK_COORD_MAX, ISK_SPEED_LIMIT, ISK_DT_MAX);
+ *     isk_system sys;
+ *     if (isk_system_init(&sys, 1, 16) != ISK_OK) return 1;
+ *     isk_status s = isk_system_step(&sys, 1e300);   // beyond ISK_DT_MAX
+ *     printf("dt = 1e300: %s\n", isk_status_str(s));  // refused, nothing moved
+ *     isk_system_free(&sys);
+ *     return s == ISK_OK;
  */
 #ifndef ISKRA_LIMITS_H
 #define ISKRA_LIMITS_H

@@ -262,7 +262,7 @@ static isk_status step_group(isk_effect *e, fx_group *g)
     isk_status s = run_steps(e, g, g->frame_start, g->nframe_start, e->time, h * (double)N);
     for (int j = 0; s == ISK_OK && j < N; j++) {
         if (g->parallel)
-            isk_pipeline_run_pool(&g->pipeline, &g->store, 0, g->store.count, h, e->pool);
+            e->scratch.nonfinite |= isk_pipeline_run_pool(&g->pipeline, &g->store, 0, g->store.count, h, e->pool);
         else
             isk_pipeline_run(&g->pipeline, &g->store, 0, g->store.count, h, &e->scratch);
         s = run_steps(e, g, g->substep_end, g->nsubstep_end, e->time + h * j, h);

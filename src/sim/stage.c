@@ -51,14 +51,22 @@ static void run_item(void *ctx, int worker, size_t item)
               isk_pool_scratch(r->pool, worker));
 }
 
-void isk_pipeline_run_pool(const isk_pipeline *pl, isk_particles *p, size_t begin, size_t end, double h,
-                           isk_pool *pool)
+int isk_pipeline_run_pool(const isk_pipeline *pl, isk_particles *p, size_t begin, size_t end, double h,
+                          isk_pool *pool)
 {
     if (end <= begin)
-        return;
+        return 0;
     pool_run r = {pl, p, begin, end, h, pool};
     size_t blocks = (end - begin + ISK_SIM_BLOCK - 1) / ISK_SIM_BLOCK;
     isk_pool_for(pool, blocks, ISK_PIPELINE_MIN_PARALLEL_BLOCKS, run_item, &r);
+    /* what the workers' motion stages found, combined after the join */
+    int nonfinite = 0;
+    for (int w = 0; w < isk_pool_threads(pool); w++) {
+        isk_scratch *s = isk_pool_scratch(pool, w);
+        nonfinite |= s->nonfinite;
+        s->nonfinite = 0;
+    }
+    return nonfinite;
 }
 
 void isk_pipeline_describe(const isk_pipeline *pl, FILE *out)

@@ -113,11 +113,13 @@ void isk_pipeline_run(const isk_pipeline *pl, isk_particles *p, size_t begin, si
  * list decides: a potential that can switch itself off, or a deflector
  * that draws from the owner's random stream, makes the order of particles
  * matter); then the bytes are the same for every number of threads.  Below
- * ISK_PIPELINE_MIN_PARALLEL_BLOCKS blocks it runs on the caller. */
+ * ISK_PIPELINE_MIN_PARALLEL_BLOCKS blocks it runs on the caller.  Returns
+ * 1 when a motion stage found a non-finite state (the workers' scratch
+ * flags, combined and cleared; isk_scratch.nonfinite), else 0. */
 #define ISK_PIPELINE_MIN_PARALLEL_BLOCKS 8
 struct isk_pool;
-void isk_pipeline_run_pool(const isk_pipeline *pl, isk_particles *p, size_t begin, size_t end, double h,
-                           struct isk_pool *pool);
+int isk_pipeline_run_pool(const isk_pipeline *pl, isk_particles *p, size_t begin, size_t end, double h,
+                          struct isk_pool *pool);
 /* One line per stage: "  NAME      parameters". */
 void isk_pipeline_describe(const isk_pipeline *pl, FILE *out);
 
