@@ -115,3 +115,33 @@ Test(births, an_ordinary_full_pool_counts_each_lost_birth)
     cr_assert(d >= 600 - 50 - 1 && d <= 600 - 50 + 1, "dropped %zu", d);
     isk_effect_destroy(fx);
 }
+
+/* The scene the fuzzer kept (tests/fuzz/regressions/hang-burst_every-1e-300.ini)
+ * as it stands, every key else at its default, and the same at 1e-8 (10^6
+ * loop turns a frame before): frames end, rendered, with the births bounded
+ * by the pool and the rest counted as dropped. */
+Test(births, the_fuzzers_burst_every_scene_ends_its_frames, .timeout = 30)
+{
+    static const char *const every[] = {"1e-300", "1e-8"};
+    for (int k = 0; k < 2; k++) {
+        char text[200];
+        snprintf(text, sizeof text, "[emitter s]\nsource = stream\ncount = 5\nburst_every = %s\n", every[k]);
+        isk_effect_def d;
+        isk_error err;
+        isk_effect *fx = NULL;
+        cr_assert_eq(isk_scene_load_string(&d, text, "regression", &err), ISK_OK, "%s", err.message);
+        const size_t capacity = d.emitters[0].capacity;
+        cr_assert_eq(isk_effect_create(&fx, &d, &err), ISK_OK, "%s", err.message);
+        isk_canvas c;
+        cr_assert_eq(isk_canvas_init(&c, d.width, d.height), ISK_OK);
+        isk_effect_def_free(&d);
+        for (int f = 0; f < 3; f++) {
+            cr_assert_eq(isk_effect_step_render(fx, &c), ISK_OK);
+            cr_assert_leq(isk_effect_particle_count(fx), capacity, "every %s", every[k]);
+        }
+        cr_assert_eq(isk_effect_particle_count(fx), capacity, "every %s: the pool is full", every[k]);
+        cr_assert_gt(isk_effect_dropped(fx, 0), 0, "every %s: the rest is counted", every[k]);
+        isk_canvas_free(&c);
+        isk_effect_destroy(fx);
+    }
+}
