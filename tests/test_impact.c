@@ -261,27 +261,36 @@ static isk_effect *box(int segments, const char *integrator, double c, const cha
 
 /* The issue: 500 particles in a closed box, restitution 1, gained 16x their
  * energy in 10^4 frames with walls and deflectors alike. */
+/* Every integrator (the CLI check in docs/accuracy.md: within 0.07 %).  The
+ * sanitizer builds run 1000 frames, for time; the plain build the issue's
+ * 10^4. */
+#if defined(__SANITIZE_ADDRESS__)
+enum { BOX_FRAMES = 1000 };
+#else
+enum { BOX_FRAMES = 10000 };
+#endif
+
 Test(impact, a_closed_box_of_500_particles_keeps_its_energy, .timeout = 120)
 {
-    const char *methods[3] = {"semi-euler", "verlet", "rk4"};
     for (int segments = 0; segments < 2; segments++)
-        for (int m = 0; m < 3; m++) {
-            isk_effect *fx = box(segments, methods[m], 1.0,
+        for (int m = 0; m < ISK_INTEGRATOR_COUNT; m++) {
+            const char *method = isk_integrator_names[m];
+            isk_effect *fx = box(segments, method, 1.0,
                                  "source = explosion\nexplosion = gauss\nposition = 0, 5\ncount = 500\n");
             const isk_particles *p = isk_effect_particles(fx, 0);
             double e0 = energy(p);
-            for (int f = 0; f < 10000; f++)
+            for (int f = 0; f < BOX_FRAMES; f++)
                 cr_assert_eq(isk_effect_step(fx), ISK_OK);
             double e1 = energy(p);
             size_t outside = 0;
             for (size_t i = 0; i < p->count; i++)
                 outside += !(p->x[i] >= -5 && p->x[i] <= 5 && p->y[i] >= 0 && p->y[i] <= 10);
-            cr_log_info("%s, %s: energy %.6g -> %.6g (ratio %.6f)", segments ? "segments" : "walls", methods[m], e0,
-                        e1, e1 / e0);
+            cr_log_info("%s, %s: energy %.6g -> %.6g (ratio %.6f)", segments ? "segments" : "walls", method, e0, e1,
+                        e1 / e0);
             cr_assert_eq(p->count, 500);
             cr_assert_eq(outside, 0);
-            cr_assert(fabs(e1 / e0 - 1) < 0.01, "%s, %s: energy ratio %.6f after 10^4 frames",
-                      segments ? "segments" : "walls", methods[m], e1 / e0);
+            cr_assert(fabs(e1 / e0 - 1) < 0.01, "%s, %s: energy ratio %.6f after %d frames",
+                      segments ? "segments" : "walls", method, e1 / e0, (int)BOX_FRAMES);
             isk_effect_destroy(fx);
         }
 }
