@@ -229,3 +229,20 @@ Test(finite_sweep, every_numeric_key_at_its_extremes_with_every_integrator, .tim
     cr_assert_gt(rows, 40);
     cr_assert_eq(failures, 0, "%ld accepted settings produced a non-finite state (see the log)", failures);
 }
+
+/* Issue 13.7: a view of +-1.7e308 is refused for its width, which
+ * overflows, with the line of the key (it used to say "value out of range"
+ * with no line). */
+Test(finite_sweep, a_window_whose_width_overflows_names_its_line)
+{
+    isk_effect_def d;
+    isk_error err = {0};
+    cr_assert_neq(isk_scene_load_string(&d,
+                                        "[scene]\ndt = 1/60\n[view]\nxmin = -1.7e308\nxmax = 1.7e308\n"
+                                        "ymin = -1\nymax = 1\n[emitter e]\nsource = particle\n",
+                                        "wide", &err),
+                  ISK_OK);
+    cr_assert(strstr(err.message, "wide:5:"), "%s", err.message);
+    cr_assert(strstr(err.message, "too large"), "%s", err.message);
+    cr_assert(strstr(err.message, "overflows"), "%s", err.message);
+}
