@@ -162,18 +162,54 @@ void fx_whole_set(const isk_key *k, void *item, double v)
 
 /* ---- expectations and ranges (one wording for the parser and the check) ------- */
 
+/* An exponent as people write it: 1e+12 -> 1e12, 1.5e-07 -> 1.5e-7. */
+static void tidy_exponent(char *s)
+{
+    char *x = strchr(s, 'e');
+    if (!x)
+        return;
+    char *d = x + 1, *src = x + 1;
+    if (*src == '+')
+        src++;
+    else if (*src == '-')
+        *d++ = *src++;
+    while (*src == '0' && src[1])
+        src++;
+    memmove(d, src, strlen(src) + 1);
+}
+
+/* A bound as a message shows it: %.15g, or where that takes more than six
+ * characters the shortest exponent form that reads back the same if it is
+ * shorter (1e12, not 1000000000000; 1000 and 2^28 = 268435456 stay), so a
+ * message fits a field's error box. */
+static void bound_words(double v, char *buf, size_t n)
+{
+    char plain[32], e[32];
+    snprintf(plain, sizeof plain, "%.15g", v);
+    int p = 0;
+    do
+        snprintf(e, sizeof e, "%.*e", p, v);
+    while (strtod(e, NULL) != v && ++p < 17);
+    tidy_exponent(plain);
+    tidy_exponent(e);
+    snprintf(buf, n, "%s", strlen(plain) > 6 && strlen(e) < strlen(plain) ? e : plain);
+}
+
 void fx_range_words(const isk_key *k, const char *what, char *buf, size_t n)
 {
     const char *op_lo = k->lo_bound == ISK_BOUND_INCL ? ">=" : ">";
     const char *op_hi = k->hi_bound == ISK_BOUND_INCL ? "<=" : "<";
+    char lo[32], hi[32];
+    bound_words(k->min, lo, sizeof lo);
+    bound_words(k->max, hi, sizeof hi);
     if (k->lo_bound == ISK_BOUND_INCL && k->hi_bound == ISK_BOUND_INCL)
-        snprintf(buf, n, "%s between %.15g and %.15g", what, k->min, k->max);
+        snprintf(buf, n, "%s between %s and %s", what, lo, hi);
     else if (k->lo_bound && k->hi_bound)
-        snprintf(buf, n, "%s %s %.15g and %s %.15g", what, op_lo, k->min, op_hi, k->max);
+        snprintf(buf, n, "%s %s %s and %s %s", what, op_lo, lo, op_hi, hi);
     else if (k->lo_bound)
-        snprintf(buf, n, "%s %s %.15g", what, op_lo, k->min);
+        snprintf(buf, n, "%s %s %s", what, op_lo, lo);
     else if (k->hi_bound)
-        snprintf(buf, n, "%s %s %.15g", what, op_hi, k->max);
+        snprintf(buf, n, "%s %s %s", what, op_hi, hi);
     else
         snprintf(buf, n, "%s", what);
 }

@@ -139,7 +139,9 @@ static void render_charts(player *p, isk_canvas *c)
     thin(&p->hist, t);
     isk_canvas_fill(c, p->ui.style.panel);
     isk_ui_rect r = {0, 0, c->width, c->height};
-    isk_ui_rect top = isk_ui_cut_top(&r, r.h * 5 / 8);
+    /* halves: with the eight integrators' table below, a 5/8 split left the
+     * particle chart under the 120 px a chart needs */
+    isk_ui_rect top = isk_ui_cut_top(&r, r.h / 2);
     isk_ui_cut_top(&r, isk_ui_px(&p->ui, 4));
     isk_chart ch;
     chart_look(&ch, p);
