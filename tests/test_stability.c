@@ -553,7 +553,11 @@ Test(stability, the_c_api_refuses_what_scene_files_refuse)
     isk_potential_init(&pot, 1, isk_vec2_make(0, 0), 1);
     pot.P = 1000;
     cr_assert_eq(isk_system_add_potential(&s, &pot, NULL), ISK_ERR_RANGE);
-    pot.P = 1 + ISK_POWER_MAX;
+    pot.P = -15; /* |F| ~ d^16: flung out to 1e146 in three frames before the range was narrowed */
+    cr_assert_eq(isk_system_add_potential(&s, &pot, NULL), ISK_ERR_RANGE);
+    pot.P = ISK_P_MIN - 1e-9;
+    cr_assert_eq(isk_system_add_potential(&s, &pot, NULL), ISK_ERR_RANGE);
+    pot.P = ISK_P_MAX;
     cr_assert_eq(isk_system_add_potential(&s, &pot, NULL), ISK_OK);
     s.forces.pot[0].P = -1000; /* edited in place: the step refuses it */
     cr_assert_eq(isk_system_step(&s, 0.01), ISK_ERR_RANGE);
@@ -627,5 +631,47 @@ Test(stability, bumpers_in_a_closed_box_cap_the_speed, .timeout = 60)
         /* the speed rose to the cap (plus at most the last step's gravity) */
         cr_assert(top > 1e100 && top <= ISK_SPEED_LIMIT * (1 + 1e-12), "c = %g: top speed %g", cs[k], top);
         isk_effect_destroy(fx);
+    }
+}
+
+/* Issue 13.6: the exponent's range is where the law means something, P in
+ * 0..17 (iskra/limits.h).  P = -15 (|F| ~ d^16), which flung every particle
+ * to 1e146 within three frames, is refused with its line; at the range's
+ * ends the motion is bounded: a spring (P = 0) keeps a particle oscillating
+ * within its amplitude, and d^-16 (P = 17) stays finite. */
+Test(stability, exponent_range_is_where_the_law_means_something)
+{
+    static const char *const scene = "[force well]\nkind = potential\nk = 1\nposition = 0, 0\nexponent = %s\n"
+                                     "[emitter p]\nsource = particle\nposition = 1, 0\nvelocity = 0, 0\n"
+                                     "forces = well\n";
+    char text[400];
+    isk_effect_def d;
+    isk_error err = {0};
+    snprintf(text, sizeof text, scene, "-15");
+    cr_assert_eq(isk_scene_load_string(&d, text, "steep", &err), ISK_ERR_FORMAT);
+    cr_expect(strstr(err.message, "steep:5: [force well] exponent:") != NULL, "%s", err.message);
+    snprintf(text, sizeof text, scene, "1e-9"); /* just above a spring: still fine */
+    cr_assert_eq(isk_scene_load_string(&d, text, "s", &err), ISK_OK, "%s", err.message);
+    isk_effect_def_free(&d);
+    snprintf(text, sizeof text, scene, "-1e-9");
+    cr_assert_eq(isk_scene_load_string(&d, text, "s", &err), ISK_ERR_FORMAT);
+    const char *const ends[] = {"0", "17"};
+    for (int k = 0; k < 2; k++) {
+        snprintf(text, sizeof text, scene, ends[k]);
+        cr_assert_eq(isk_scene_load_string(&d, text, "edge", &err), ISK_OK, "%s", err.message);
+        isk_effect *fx = NULL;
+        cr_assert_eq(isk_effect_create(&fx, &d, &err), ISK_OK, "%s", err.message);
+        double reach = 0;
+        for (int f = 0; f < 2000; f++) {
+            cr_assert_eq(isk_effect_step(fx), ISK_OK);
+            const isk_particles *p = isk_effect_particles(fx, 0);
+            cr_assert_eq(p->count, 1);
+            cr_assert(isfinite(p->x[0]) && isfinite(p->y[0]) && isfinite(p->vx[0]) && isfinite(p->vy[0]));
+            reach = fmax(reach, hypot(p->x[0], p->y[0]));
+        }
+        if (k == 0) /* a spring of k = 1 at 60 steps a second: within 2 % of its amplitude */
+            cr_expect(reach < 1.02, "the spring's particle reached %g", reach);
+        isk_effect_destroy(fx);
+        isk_effect_def_free(&d);
     }
 }

@@ -128,7 +128,7 @@ void isk_potential_init(isk_potential *pot, double k, isk_vec2 r, double charge)
 isk_status isk_potential_set_law(isk_potential *pot, isk_coulomb_law law, double exponent);
 
 /* Checks every field (finite numbers, enabled 0/1, and the limits of
- * iskra/limits.h: |1 - P| <= ISK_POWER_MAX, position within ISK_COORD_MAX,
+ * iskra/limits.h: P in [ISK_P_MIN, ISK_P_MAX], position within ISK_COORD_MAX,
  * velocity within ISK_SPEED_LIMIT).  Errors: ISK_ERR_NULL, ISK_ERR_NAN,
  * ISK_ERR_RANGE. */
 isk_status isk_potential_validate(const isk_potential *pot);

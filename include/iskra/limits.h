@@ -22,10 +22,14 @@
  *   (emitters, potentials, segments)  amplitudes, potentials, deflector endpoints, clicks)
  *   launch speeds, velocities         range |v| <= ISK_SPEED_LIMIT
  *   a potential's force               saturates at ISK_FORCE_LIMIT (iskra/forces.h)
- *   a potential's exponent P          range |1 - P| <= ISK_POWER_MAX: |F| ~ d^(1-P), so the
- *                                     force changes by at most 10^96 over six decades of
- *                                     distance; beyond, every particle sits at the
- *                                     saturation limit and the motion means nothing
+ *   a potential's exponent P          range [ISK_P_MIN, ISK_P_MAX]: |F| ~ d^(1-P), from a
+ *                                     spring's force growing as d (P = 0) to d^-16 (P = 17).
+ *                                     A force that grows faster than d pulls the farthest
+ *                                     particles hardest: no step is stable, every particle
+ *                                     is flung to the saturation limit within a few frames
+ *                                     (P = -15: out to 1e146 in three), and the motion means
+ *                                     nothing; past d^-16 the force changes by more than
+ *                                     10^96 over six decades of distance
  *   a bounce with restitution > 1     saturates: the speed is capped at ISK_SPEED_LIMIT
  *                                     (iskra/impact.h)
  *
@@ -66,7 +70,8 @@ extern "C" {
 #define ISK_COORD_MAX 1e150          /* |coordinate| of anything placed in the world */
 #define ISK_SPEED_LIMIT 1e150        /* |launch velocity|; no bounce leaves a particle faster */
 #define ISK_FORCE_LIMIT 1e150        /* a potential's force saturates here (iskra/forces.h) */
-#define ISK_POWER_MAX 16.0           /* |1 - P| of a potential's law */
+#define ISK_P_MIN 0.0                /* a potential's P: |F| ~ d^(1-P), at most a spring's d */
+#define ISK_P_MAX 17.0               /* ... at least d^-16 */
 
 #ifdef __cplusplus
 }

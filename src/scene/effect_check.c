@@ -75,10 +75,10 @@ static isk_status check_force(ctx *c)
         return ISK_OK;
     isk_potential p = f->pot;
     if (isk_potential_set_law(&p, f->law, f->exponent) != ISK_OK || isk_potential_validate(&p) != ISK_OK) {
-        if (isfinite(p.P) && !(fabs(1.0 - p.P) <= ISK_POWER_MAX))
+        if (isfinite(p.P) && !(p.P >= ISK_P_MIN && p.P <= ISK_P_MAX))
             return bad_key(c, "exponent", "%.15g read as the %s law is P = %.15g; the force goes as d^(1-P) and "
-                                          "|1 - P| must be at most %g",
-                           f->exponent, isk_coulomb_law_names[f->law], p.P, ISK_POWER_MAX);
+                                          "P must be %g..%g (from a spring's d to d^-16)",
+                           f->exponent, isk_coulomb_law_names[f->law], p.P, ISK_P_MIN, ISK_P_MAX);
         return bad_key(c, "exponent", "gives no usable potential");
     }
     return ISK_OK;

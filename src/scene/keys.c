@@ -158,8 +158,9 @@ static const isk_key keys[] = {
     {FORCE("position"), .type = ISK_KEY_VECTOR, FRC(pot.r), .applies = POT, .required = POT, COORD, .dflt = "0, 0",
      .live = ALL, .meaning = "x, y of the potential"},
     {FORCE("exponent"), .type = ISK_KEY_NUMBER, FRC(exponent), .applies = POT,
-     IN(-ISK_POWER_MAX - 1, ISK_POWER_MAX + 1), .dflt = "2", .live = ALL,
-     .meaning = "the distance exponent, read by law; the code's P must have |1 - P| <= 16 (|F| ~ d^(1-P))"},
+     IN(ISK_P_MIN - 2, ISK_P_MAX), .dflt = "2", .live = ALL,
+     .meaning = "the distance exponent, read by law; the code's P must be 0..17 (|F| ~ d^(1-P): from a "
+                "spring's d to d^-16)"},
     {FORCE("law"), .type = ISK_KEY_ENUM, FRC(law), .applies = POT, NAMES(isk_coulomb_law_names), .dflt = "code",
      .live = ALL,
      .meaning = "code: exponent is the code's P, |F| = k|Q| d^(1-P); text: the thesis text's p, P = p + 2"},

@@ -57,7 +57,7 @@ isk_status isk_potential_validate(const isk_potential *pot)
     if (pot->enabled != 0 && pot->enabled != 1)
         return ISK_ERR_RANGE;
     /* iskra/limits.h: where the law means something, where it is placed. */
-    if (!(fabs(1.0 - pot->P) <= ISK_POWER_MAX) || !(fabs(pot->r.x) <= ISK_COORD_MAX) ||
+    if (!(pot->P >= ISK_P_MIN && pot->P <= ISK_P_MAX) || !(fabs(pot->r.x) <= ISK_COORD_MAX) ||
         !(fabs(pot->r.y) <= ISK_COORD_MAX) || !(fabs(pot->vel.x) <= ISK_SPEED_LIMIT) ||
         !(fabs(pot->vel.y) <= ISK_SPEED_LIMIT))
         return ISK_ERR_RANGE;
