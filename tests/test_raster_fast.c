@@ -16,6 +16,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "canvas_pair.h"
 #include "iskra/rng.h"
 #include "iskra/view.h"
 #include "raster/blend_px.h"
@@ -41,47 +42,17 @@ static isk_color rnd_color(isk_rng *r)
     return c;
 }
 
-/* Two identical canvases that are views into larger buffers (a margin of
- * sentinel bytes around, a stride wider than the row), filled with random
- * pixels whose alpha is opaque, transparent or anything (per canvas style). */
-typedef struct pair {
-    uint8_t *buf[2];
-    isk_canvas c[2];
-    size_t bytes;
-} pair;
-
-enum { MARGIN = 3 };
-
-static pair make_pair(isk_rng *r, int w, int h)
-{
-    pair p;
-    size_t stride = (size_t)(w + 2 * MARGIN) * 4u + isk_rng_below(r, 3);
-    p.bytes = stride * (size_t)(h + 2 * MARGIN);
-    int style = (int)isk_rng_below(r, 3); /* 0 opaque, 1 mixed alpha, 2 random alpha */
-    for (int k = 0; k < 2; k++) {
-        p.buf[k] = malloc(p.bytes);
-        cr_assert(p.buf[k]);
-    }
-    for (size_t b = 0; b < p.bytes; b++)
-        p.buf[0][b] = (uint8_t)isk_rng_below(r, 256);
-    for (size_t b = 3; b < p.bytes; b += 4)
-        if (style == 0 || (style == 1 && isk_rng_below(r, 2)))
-            p.buf[0][b] = 255;
-    memcpy(p.buf[1], p.buf[0], p.bytes);
-    for (int k = 0; k < 2; k++)
-        cr_assert_eq(isk_canvas_wrap(&p.c[k], p.buf[k] + MARGIN * stride + MARGIN * 4, w, h, stride), ISK_OK);
-    return p;
-}
+/* Two identical random canvases with sentinel margins (tests/canvas_pair.h). */
+typedef canvas_pair pair;
+#define make_pair canvas_pair_make
 
 static void check_pair(pair *p, const char *what, int n)
 {
-    size_t at = 0;
-    while (at < p->bytes && p->buf[0][at] == p->buf[1][at])
-        at++;
-    cr_assert_eq(at, p->bytes, "%s (case %d): byte %zu differs: fast %d, reference %d", what, n, at,
-                 at < p->bytes ? p->buf[0][at] : 0, at < p->bytes ? p->buf[1][at] : 0);
-    free(p->buf[0]);
-    free(p->buf[1]);
+    size_t at;
+    const int same = canvas_pair_equal(p, &at);
+    cr_assert(same, "%s (case %d): byte %zu differs: fast %d, reference %d", what, n, at,
+              at < p->bytes ? p->buf[0][at] : 0, at < p->bytes ? p->buf[1][at] : 0);
+    canvas_pair_free(p);
 }
 
 static int rnd_size(isk_rng *r)

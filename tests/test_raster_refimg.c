@@ -6,27 +6,14 @@
 #include <math.h>
 
 #include "iskra/draw.h"
-#include "refimg.h"
+#include "refimg_scene.h"
 
 #define PI 3.14159265358979323846
 
-static isk_canvas make(int w, int h, isk_color bg)
-{
-    isk_canvas c;
-    cr_assert_eq(isk_canvas_init(&c, w, h), ISK_OK);
-    isk_canvas_fill(&c, bg);
-    return c;
-}
-
-static void check(const char *name, isk_canvas *c)
-{
-    cr_assert(refimg_check(name, c), "refimg %s differs", name);
-    isk_canvas_free(c);
-}
 
 Test(refimg, pixel_rect)
 {
-    isk_canvas c = make(64, 64, isk_rgba(20, 20, 40, 255));
+    isk_canvas c = refimg_canvas(64, 64, isk_rgba(20, 20, 40, 255));
     for (int i = 0; i < 16; i++)
         isk_draw_pixel(&c, 2 + 2 * i, 2, isk_rgba((uint8_t)(16 * i), 255, 128, 255), ISK_BLEND_REPLACE);
     isk_fill_rect(&c, 4, 8, 20, 12, ISK_RED, ISK_BLEND_REPLACE);
@@ -35,12 +22,12 @@ Test(refimg, pixel_rect)
     isk_fill_rect(&c, 56, 30, 100, 10, ISK_GREEN, ISK_BLEND_REPLACE);  /* clipped right */
     isk_fill_rect(&c, -5, 50, 20, 100, ISK_WHITE, ISK_BLEND_REPLACE);  /* clipped left/bottom */
     isk_fill_rect(&c, 30, 48, 20, 10, isk_rgba(255, 0, 0, 160), ISK_BLEND_ADD);
-    check("pixel_rect", &c);
+    refimg_expect("pixel_rect", &c);
 }
 
 Test(refimg, line_bresenham)
 {
-    isk_canvas c = make(128, 128, ISK_BLACK);
+    isk_canvas c = refimg_canvas(128, 128, ISK_BLACK);
     for (int k = 0; k < 32; k++) {
         double a = 2.0 * PI * k / 32.0;
         isk_color col = isk_rgba((uint8_t)(128 + 127 * cos(a)), (uint8_t)(128 + 127 * sin(a)), 255, 255);
@@ -50,12 +37,12 @@ Test(refimg, line_bresenham)
     }
     isk_draw_line(&c, 2.5, 125.5, 125.5, 125.5, ISK_WHITE, ISK_BLEND_REPLACE);
     isk_draw_line(&c, 2.5, 2.5, 2.5, 125.5, ISK_WHITE, ISK_BLEND_REPLACE);
-    check("line_bresenham", &c);
+    refimg_expect("line_bresenham", &c);
 }
 
 Test(refimg, stroke_line)
 {
-    isk_canvas c = make(128, 128, ISK_WHITE);
+    isk_canvas c = refimg_canvas(128, 128, ISK_WHITE);
     /* integer end points (straddling pixel edges) on the left half,
      * fractional ones on the right half */
     for (int k = 0; k <= 8; k++) {
@@ -70,12 +57,12 @@ Test(refimg, stroke_line)
     isk_stroke_line(&c, 80, 72, 80, 124, ISK_RED, ISK_BLEND_OVER);
     isk_stroke_line(&c, 90.5, 72.3, 90.5, 123.6, ISK_RED, ISK_BLEND_OVER);
     isk_stroke_line(&c, 100.2, 75.1, 124.9, 120.4, ISK_BLUE, ISK_BLEND_OVER);
-    check("stroke_line", &c);
+    refimg_expect("stroke_line", &c);
 }
 
 Test(refimg, stroke_polyline)
 {
-    isk_canvas c = make(200, 120, ISK_WHITE);
+    isk_canvas c = refimg_canvas(200, 120, ISK_WHITE);
     /* the thesis's figure 1 triangle, scaled down: open, start/end with butt caps */
     const double tri[8] = {50, 10, 20, 50, 80, 50, 50, 10};
     isk_stroke_polyline(&c, tri, 4, 0, ISK_BLACK, ISK_BLEND_OVER);
@@ -93,22 +80,22 @@ Test(refimg, stroke_polyline)
         star[2 * k + 1] = 88 + 30 * sin(a);
     }
     isk_stroke_polyline(&c, star, 5, 1, isk_rgba(200, 0, 0, 160), ISK_BLEND_OVER);
-    check("stroke_polyline", &c);
+    refimg_expect("stroke_polyline", &c);
 }
 
 Test(refimg, triangle_outline)
 {
-    isk_canvas c = make(96, 96, ISK_BLACK);
+    isk_canvas c = refimg_canvas(96, 96, ISK_BLACK);
     isk_draw_triangle(&c, 10.5, 10.5, 85.5, 20.5, 30.5, 85.5, ISK_YELLOW, ISK_BLEND_REPLACE);
     isk_draw_triangle(&c, 50, 40, 90, 90, 40, 70, isk_rgba(0, 255, 255, 128), ISK_BLEND_ADD);
     isk_draw_triangle(&c, 5, 90, 20, 60, 35, 91, ISK_RED, ISK_BLEND_REPLACE);
     isk_draw_triangle(&c, 70, -20, 120, 10, 60, 30, ISK_GREEN, ISK_BLEND_REPLACE); /* clipped */
-    check("triangle_outline", &c);
+    refimg_expect("triangle_outline", &c);
 }
 
 Test(refimg, triangle_fill)
 {
-    isk_canvas c = make(96, 96, ISK_BLACK);
+    isk_canvas c = refimg_canvas(96, 96, ISK_BLACK);
     /* a translucent additive fan: a shared edge drawn twice would show as a
      * brighter seam */
     const double cx = 48.3, cy = 47.6;
@@ -120,49 +107,49 @@ Test(refimg, triangle_fill)
     }
     isk_fill_triangle(&c, -10, 80, 20, 120, 30, 70, ISK_WHITE, ISK_BLEND_REPLACE); /* clipped */
     isk_fill_triangle(&c, 80.5, 2.5, 94.5, 2.5, 94.5, 16.5, ISK_YELLOW, ISK_BLEND_REPLACE);
-    check("triangle_fill", &c);
+    refimg_expect("triangle_fill", &c);
 }
 
 Test(refimg, fill_circle)
 {
-    isk_canvas c = make(160, 48, ISK_BLACK);
+    isk_canvas c = refimg_canvas(160, 48, ISK_BLACK);
     for (int r = 1; r <= 8; r++) {
         isk_fill_circle(&c, 10 + 19 * (r - 1), 12, r, ISK_WHITE, ISK_BLEND_REPLACE);      /* integer centre */
         isk_fill_circle(&c, 10.5 + 19 * (r - 1), 34.5, r, ISK_YELLOW, ISK_BLEND_REPLACE); /* pixel centre */
     }
-    check("fill_circle", &c);
+    refimg_expect("fill_circle", &c);
 }
 
 Test(refimg, fill_circle_aa)
 {
-    isk_canvas c = make(128, 64, ISK_BLACK);
+    isk_canvas c = refimg_canvas(128, 64, ISK_BLACK);
     const double rs[6] = {0.5, 1.3, 2.75, 5.0, 9.6, 14.2};
     for (int k = 0; k < 6; k++)
         isk_fill_circle_aa(&c, 8 + k * 20 + 0.1 * k, 16.3, rs[k], ISK_WHITE, ISK_BLEND_OVER);
     isk_fill_circle_aa(&c, 40, 48, 12, isk_rgba(255, 0, 0, 200), ISK_BLEND_OVER);
     isk_fill_circle_aa(&c, 52.5, 48.5, 12, isk_rgba(0, 255, 0, 200), ISK_BLEND_ADD);
     isk_fill_circle_aa(&c, 120, 60, 20, ISK_BLUE, ISK_BLEND_OVER); /* clipped */
-    check("fill_circle_aa", &c);
+    refimg_expect("fill_circle_aa", &c);
 }
 
 Test(refimg, coverage_dot)
 {
     /* Dot (i, j) of an 8x8 grid sits at offset (i/8, j/8) from its cell. */
-    isk_canvas c = make(64, 64, ISK_BLACK);
+    isk_canvas c = refimg_canvas(64, 64, ISK_BLACK);
     for (int j = 0; j < 8; j++)
         for (int i = 0; i < 8; i++)
             isk_draw_dot(&c, 2 + 8 * i + i / 8.0, 2 + 8 * j + j / 8.0, ISK_YELLOW, ISK_BLEND_OVER);
     /* dots half off each edge */
     isk_draw_dot(&c, -0.5, 30.25, ISK_WHITE, ISK_BLEND_OVER);
     isk_draw_dot(&c, 63.5, 30.75, ISK_WHITE, ISK_BLEND_OVER);
-    check("coverage_dot", &c);
+    refimg_expect("coverage_dot", &c);
 }
 
 Test(refimg, blend_modes)
 {
     /* Three panels (replace, over, add), each with overlapping translucent
      * red, green and blue discs and rectangles on a grey background. */
-    isk_canvas c = make(192, 64, isk_rgba(64, 64, 64, 255));
+    isk_canvas c = refimg_canvas(192, 64, isk_rgba(64, 64, 64, 255));
     for (int m = 0; m < 3; m++) {
         isk_blend mode = (isk_blend)m;
         double ox = 64.0 * m;
@@ -174,5 +161,5 @@ Test(refimg, blend_modes)
         for (int k = 0; k < 6; k++)
             isk_draw_dot(&c, ox + 50 + k * 1.5, 54.5, isk_rgba(255, 255, 255, 255), mode);
     }
-    check("blend_modes", &c);
+    refimg_expect("blend_modes", &c);
 }

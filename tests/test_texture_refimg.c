@@ -11,23 +11,10 @@
 #include "iskra/draw.h"
 #include "iskra/text.h"
 #include "iskra/texture.h"
-#include "refimg.h"
+#include "refimg_scene.h"
 
 #define PI 3.14159265358979323846
 
-static isk_canvas make(int w, int h, isk_color bg)
-{
-    isk_canvas c;
-    cr_assert_eq(isk_canvas_init(&c, w, h), ISK_OK);
-    isk_canvas_fill(&c, bg);
-    return c;
-}
-
-static void check(const char *name, isk_canvas *c)
-{
-    cr_assert(refimg_check(name, c), "refimg %s differs", name);
-    isk_canvas_free(c);
-}
 
 static void set(isk_canvas *c, int x, int y, isk_color col)
 {
@@ -41,7 +28,7 @@ static void set(isk_canvas *c, int x, int y, isk_color col)
  * transparent elsewhere. */
 static isk_texture arrow(void)
 {
-    isk_canvas img = make(32, 32, ISK_TRANSPARENT);
+    isk_canvas img = refimg_canvas(32, 32, ISK_TRANSPARENT);
     for (int y = 0; y < 32; y++)
         for (int x = 0; x < 32; x++) {
             int shaft = x >= 3 && x < 21 && y >= 13 && y < 19;
@@ -52,7 +39,7 @@ static isk_texture arrow(void)
                 set(&img, x, y, isk_rgba(40, 120, 255, 255));
         }
     /* a rim of alpha 128 around everything drawn */
-    isk_canvas rim = make(32, 32, ISK_TRANSPARENT);
+    isk_canvas rim = refimg_canvas(32, 32, ISK_TRANSPARENT);
     for (int y = 0; y < 32; y++)
         for (int x = 0; x < 32; x++) {
             if (isk_canvas_get(&img, x, y).a)
@@ -82,7 +69,7 @@ static isk_texture arrow(void)
  * with the digit k. */
 static isk_texture digits(void)
 {
-    isk_canvas img = make(64, 32, ISK_TRANSPARENT);
+    isk_canvas img = refimg_canvas(64, 32, ISK_TRANSPARENT);
     for (int k = 0; k < 8; k++) {
         int fx = (k % 4) * 16, fy = (k / 4) * 16;
         isk_color col = isk_rgba((uint8_t)(k & 1 ? 230 : 60), (uint8_t)(k & 2 ? 200 : 70), (uint8_t)(k & 4 ? 240 : 50), 255);
@@ -108,13 +95,13 @@ static const double DEG = PI / 180.0;
 Test(refimg, texture_rotations)
 {
     isk_texture t = arrow();
-    isk_canvas c = make(200, 112, isk_rgba(24, 28, 40, 255));
+    isk_canvas c = refimg_canvas(200, 112, isk_rgba(24, 28, 40, 255));
     const double deg[4] = {0, 30, 90, 180};
     for (int k = 0; k < 4; k++) {
         isk_draw_texture(&c, &t, 0, 25 + 50 * k, 26, 32, 32, deg[k] * DEG, ISK_WHITE, ISK_BLEND_OVER);
         isk_draw_texture(&c, &t, 0, 25.5 + 50 * k, 82.25, 48, 24, deg[k] * DEG, ISK_WHITE, ISK_BLEND_OVER);
     }
-    check("texture_rotations", &c);
+    refimg_expect("texture_rotations", &c);
     isk_texture_free(&t);
 }
 
@@ -123,7 +110,7 @@ Test(refimg, texture_rotations)
 Test(refimg, texture_scales)
 {
     isk_texture t = arrow();
-    isk_canvas c = make(260, 200, isk_rgba(24, 28, 40, 255));
+    isk_canvas c = refimg_canvas(260, 200, isk_rgba(24, 28, 40, 255));
     const double size[6] = {4, 8, 16, 24, 48, 96};
     double x = 6;
     for (int k = 0; k < 6; k++) {
@@ -132,7 +119,7 @@ Test(refimg, texture_scales)
         isk_draw_texture(&c, &t, 0, cx, k < 5 ? 90 : 150, s, s, 30 * DEG, ISK_WHITE, ISK_BLEND_OVER);
         x += s + 6;
     }
-    check("texture_scales", &c);
+    refimg_expect("texture_scales", &c);
     isk_texture_free(&t);
 }
 
@@ -141,7 +128,7 @@ Test(refimg, texture_scales)
 Test(refimg, texture_flipbook)
 {
     isk_texture t = digits();
-    isk_canvas c = make(208, 96, isk_rgba(16, 16, 16, 255));
+    isk_canvas c = refimg_canvas(208, 96, isk_rgba(16, 16, 16, 255));
     for (int k = 0; k < 8; k++) {
         isk_draw_texture(&c, &t, k, 12 + 20 * k, 12, 16, 16, 0.0, ISK_WHITE, ISK_BLEND_OVER);
         isk_draw_texture(&c, &t, k, 12 + 20 * k, 34, 8, 8, 0.0, ISK_WHITE, ISK_BLEND_OVER);
@@ -151,7 +138,7 @@ Test(refimg, texture_flipbook)
     isk_draw_texture(&c, &t, 3, 40, 70, 40, 40, 0.0, ISK_WHITE, ISK_BLEND_OVER);
     isk_draw_texture(&c, &t, 5, 100, 70, 40, 40, 20 * DEG, ISK_WHITE, ISK_BLEND_OVER);
     isk_draw_texture(&c, &t, 6, 160, 70, 40, 20, -45 * DEG, ISK_WHITE, ISK_BLEND_OVER);
-    check("texture_flipbook", &c);
+    refimg_expect("texture_flipbook", &c);
     isk_texture_free(&t);
 }
 
@@ -160,14 +147,14 @@ Test(refimg, texture_flipbook)
 Test(refimg, texture_tint)
 {
     isk_texture t = arrow();
-    isk_canvas c = make(230, 48, isk_rgba(24, 28, 40, 255));
+    isk_canvas c = refimg_canvas(230, 48, isk_rgba(24, 28, 40, 255));
     for (int x = 0; x < 230; x += 8)
         isk_fill_rect(&c, x, 0, 4, 48, isk_rgba(60, 60, 70, 255), ISK_BLEND_REPLACE);
     const isk_color tints[6] = {ISK_WHITE, {255, 64, 64, 255}, {64, 255, 255, 255}, {128, 128, 128, 255},
                                 {255, 255, 255, 160}, {255, 255, 255, 64}};
     for (int k = 0; k < 6; k++)
         isk_draw_texture(&c, &t, 0, 22 + 37 * k, 24, 32, 32, -15 * DEG, tints[k], ISK_BLEND_OVER);
-    check("texture_tint", &c);
+    refimg_expect("texture_tint", &c);
     isk_texture_free(&t);
 }
 
@@ -179,7 +166,7 @@ Test(refimg, texture_tint)
 Test(refimg, texture_blend_modes)
 {
     isk_texture t = arrow();
-    isk_canvas c = make(240, 84, ISK_TRANSPARENT);
+    isk_canvas c = refimg_canvas(240, 84, ISK_TRANSPARENT);
     for (int y = 0; y < 84; y++)
         for (int x = 0; x < 240; x++)
             if ((x / 40) % 2 == 0)
@@ -190,7 +177,7 @@ Test(refimg, texture_blend_modes)
         isk_draw_texture(&c, &t, 0, x0 + 40, 21, 40, 36, 0.0, isk_rgba(255, 255, 255, 220), modes[k]);
         isk_draw_texture(&c, &t, 0, x0 + 40, 62, 32, 32, 45 * DEG, ISK_WHITE, modes[k]);
     }
-    check("texture_blend_modes", &c);
+    refimg_expect("texture_blend_modes", &c);
     isk_texture_free(&t);
 }
 
@@ -202,7 +189,7 @@ Test(refimg, texture_streaks)
     isk_texture lin, smo;
     cr_assert_eq(isk_texture_from_sprite(&lin, ISK_SPRITE_LINEAR, 32), ISK_OK);
     cr_assert_eq(isk_texture_from_sprite(&smo, ISK_SPRITE_SMOOTH, 32), ISK_OK);
-    isk_canvas c = make(200, 120, isk_rgba(8, 8, 16, 255));
+    isk_canvas c = refimg_canvas(200, 120, isk_rgba(8, 8, 16, 255));
     for (int k = 0; k < 12; k++) {
         double a = 2 * PI * k / 12, len = 6 + 34 * (k % 4) / 3.0;
         double vx = cos(a), vy = sin(a);
@@ -212,7 +199,7 @@ Test(refimg, texture_streaks)
     for (int k = 0; k < 10; k++) /* rain falling down and to the right */
         isk_draw_texture(&c, &smo, 0, 130 + 6.3 * k, 20 + 9.7 * k, 24, 3, atan2(5.0, 1.0),
                          isk_rgba(150, 190, 255, 200), ISK_BLEND_ADD);
-    check("texture_streaks", &c);
+    refimg_expect("texture_streaks", &c);
     isk_texture_free(&lin);
     isk_texture_free(&smo);
 }

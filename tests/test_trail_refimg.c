@@ -9,23 +9,10 @@
 
 #include "iskra/draw.h"
 #include "iskra/rng.h"
-#include "refimg.h"
+#include "refimg_scene.h"
 
 #define PI 3.14159265358979323846
 
-static isk_canvas make(int w, int h, isk_color bg)
-{
-    isk_canvas c;
-    cr_assert_eq(isk_canvas_init(&c, w, h), ISK_OK);
-    isk_canvas_fill(&c, bg);
-    return c;
-}
-
-static void check(const char *name, isk_canvas *c)
-{
-    cr_assert(refimg_check(name, c), "refimg %s differs", name);
-    isk_canvas_free(c);
-}
 
 /* n points of a curve through a cell: kind 0 straight, 1 an arc turning
  * 270 degrees, 2 a figure eight (crossing itself), 3 a spiral. */
@@ -52,7 +39,7 @@ static int curve(int kind, double x0, double y0, double *xy)
  * translucent colour, so a pixel painted twice would show. */
 Test(refimg, trail_shapes)
 {
-    isk_canvas c = make(320, 224, isk_rgba(18, 20, 30, 255));
+    isk_canvas c = refimg_canvas(320, 224, isk_rgba(18, 20, 30, 255));
     const double widths[4] = {1, 1, 3, 3}, fades[4] = {0, 1, 0, 1};
     double xy[96];
     for (int row = 0; row < 4; row++)
@@ -60,14 +47,14 @@ Test(refimg, trail_shapes)
             int n = curve(col, 80 * col, 56 * row, xy);
             isk_stroke_trail(&c, xy, n, widths[row], isk_rgba(255, 200, 90, 190), fades[row], ISK_BLEND_OVER);
         }
-    check("trail_shapes", &c);
+    refimg_expect("trail_shapes", &c);
 }
 
 /* Widths 0.25 (drawn at 0.5 px, half alpha), 0.5, 1.5, 6 and one point (a
  * disc) of widths 1 and 6, added in white. */
 Test(refimg, trail_widths)
 {
-    isk_canvas c = make(200, 80, ISK_BLACK);
+    isk_canvas c = refimg_canvas(200, 80, ISK_BLACK);
     const double widths[4] = {0.25, 0.5, 1.5, 6};
     for (int k = 0; k < 4; k++) {
         const double xy[6] = {10, 10.3 + 16 * k, 60, 14 + 16 * k, 110, 9.7 + 16 * k};
@@ -76,14 +63,14 @@ Test(refimg, trail_widths)
     const double dot1[2] = {140.5, 20.25}, dot6[2] = {170.3, 40.6};
     isk_stroke_trail(&c, dot1, 1, 1.0, ISK_WHITE, 0.0, ISK_BLEND_ADD);
     isk_stroke_trail(&c, dot6, 1, 6.0, ISK_WHITE, 0.0, ISK_BLEND_ADD);
-    check("trail_widths", &c);
+    refimg_expect("trail_widths", &c);
 }
 
 /* Replace, over and add, each over an opaque striped ground (left) and
  * transparent black (right), a figure eight of width 4, fading. */
 Test(refimg, trail_blend_modes)
 {
-    isk_canvas c = make(240, 64, ISK_TRANSPARENT);
+    isk_canvas c = refimg_canvas(240, 64, ISK_TRANSPARENT);
     for (int y = 0; y < 64; y++)
         for (int x = 0; x < 240; x++)
             if ((x / 40) % 2 == 0) {
@@ -96,7 +83,7 @@ Test(refimg, trail_blend_modes)
         int n = curve(2, 80 * k, 4, xy);
         isk_stroke_trail(&c, xy, n, 4.0, isk_rgba(120, 255, 160, 220), 0.8, modes[k]);
     }
-    check("trail_blend_modes", &c);
+    refimg_expect("trail_blend_modes", &c);
 }
 
 /* A burst: 240 sparks flying out under gravity, each with a trail of its
@@ -104,7 +91,7 @@ Test(refimg, trail_blend_modes)
  * added. */
 Test(refimg, trail_sparks)
 {
-    isk_canvas c = make(240, 160, isk_rgba(6, 6, 12, 255));
+    isk_canvas c = refimg_canvas(240, 160, isk_rgba(6, 6, 12, 255));
     isk_rng r;
     isk_rng_seed(&r, 31);
     double xy[48];
@@ -125,5 +112,5 @@ Test(refimg, trail_sparks)
         isk_color col = isk_rgba(255, green, blue, 230);
         isk_stroke_trail(&c, xy, n, isk_rng_range(&r, 1.0, 2.0), col, 1.0, ISK_BLEND_ADD);
     }
-    check("trail_sparks", &c);
+    refimg_expect("trail_sparks", &c);
 }
