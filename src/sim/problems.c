@@ -7,64 +7,43 @@ static const double PI = 3.141592653589793;
 static const double TWO_PI = 6.283185307179586;
 static const double INV_GOLDEN = 0.6180339887498949; /* 1/phi */
 
+/* (2 pi)^2: the oscillator's and the ellipse's kq, one period a second. */
+#define FOUR_PI_SQ (6.283185307179586 * 6.283185307179586)
+
+/* Each problem's name and defaults, by kind (count and mass are every
+ * problem's: isk_problem_defaults adds them). */
+static const struct {
+    const char *name;
+    isk_problem p;
+} PROBLEMS[ISK_PROBLEM_COUNT] = {
+    [ISK_PROBLEM_PROJECTILE] = {"projectile", {.T = 2.0, .gravity = 9.81, .drag = 0.8, .start_min = 5.0,
+                                                .start_max = 15.0}},
+    [ISK_PROBLEM_OSCILLATOR] = {"oscillator", {.T = 10.25, .kq = FOUR_PI_SQ, .start_min = 0.5, .start_max = 2.0}},
+    [ISK_PROBLEM_RADIAL] = {"radial", {.T = 5.0, .kq = 4.0, .min_dist = 0.1, .start_min = 0.5, .start_max = 2.0}},
+    [ISK_PROBLEM_BOUNCE] = {"bounce", {.T = 10.0, .gravity = 9.81, .restitution = 1.0, .start_min = 1.0,
+                                        .start_max = 4.0}},
+    [ISK_PROBLEM_KEPLER] = {"kepler", {.T = 10.25, .kq = FOUR_PI_SQ, .eccentricity = 0.6, .start_min = 0.8,
+                                        .start_max = 1.25}},
+};
+
 isk_problem isk_problem_defaults(isk_problem_kind kind)
 {
-    isk_problem p = {0};
+    if ((unsigned)kind >= ISK_PROBLEM_COUNT) {
+        isk_problem none = {0};
+        none.kind = kind;
+        none.mass = 1.0;
+        return none; /* count 0 */
+    }
+    isk_problem p = PROBLEMS[kind].p;
     p.kind = kind;
     p.count = 1024;
     p.mass = 1.0;
-    switch (kind) {
-    case ISK_PROBLEM_PROJECTILE:
-        p.T = 2.0;
-        p.gravity = 9.81;
-        p.drag = 0.8;
-        p.start_min = 5.0;
-        p.start_max = 15.0;
-        break;
-    case ISK_PROBLEM_OSCILLATOR:
-        p.T = 10.25;
-        p.kq = TWO_PI * TWO_PI;
-        p.start_min = 0.5;
-        p.start_max = 2.0;
-        break;
-    case ISK_PROBLEM_RADIAL:
-        p.T = 5.0;
-        p.kq = 4.0;
-        p.min_dist = 0.1;
-        p.start_min = 0.5;
-        p.start_max = 2.0;
-        break;
-    case ISK_PROBLEM_BOUNCE:
-        p.T = 10.0;
-        p.gravity = 9.81;
-        p.restitution = 1.0;
-        p.start_min = 1.0;
-        p.start_max = 4.0;
-        break;
-    case ISK_PROBLEM_KEPLER:
-        p.T = 10.25;
-        p.kq = TWO_PI * TWO_PI;
-        p.eccentricity = 0.6;
-        p.start_min = 0.8;
-        p.start_max = 1.25;
-        break;
-    default:
-        p.count = 0;
-        break;
-    }
     return p;
 }
 
 const char *isk_problem_name(isk_problem_kind kind)
 {
-    switch (kind) {
-    case ISK_PROBLEM_PROJECTILE: return "projectile";
-    case ISK_PROBLEM_OSCILLATOR: return "oscillator";
-    case ISK_PROBLEM_RADIAL: return "radial";
-    case ISK_PROBLEM_BOUNCE: return "bounce";
-    case ISK_PROBLEM_KEPLER: return "kepler";
-    default: return "?";
-    }
+    return (unsigned)kind < ISK_PROBLEM_COUNT ? PROBLEMS[kind].name : "?";
 }
 
 /* ISK_OK, ISK_ERR_NAN or ISK_ERR_RANGE for a value that must be > 0. */
