@@ -217,6 +217,28 @@ static void rnd_view(isk_rng *r, int camera, int w, int h, isk_view *v)
         cr_assert_eq(isk_view_window(v, w, h, -3, 3 + isk_rng_uniform(r), -2, 2), ISK_OK);
 }
 
+/* What a batch of `rule` (isk__batch_rule) must draw: the per-pixel
+ * reference of each point in index order, at coordinates kept on the canvas
+ * when `keep` (isk__keep_on_canvas). */
+static void ref_draw_batch(isk_canvas *c, const isk_view *v, size_t m, const double *x, const double *y,
+                           isk_color col, isk_blend mode, unsigned rule, int keep)
+{
+    for (size_t i = 0; i < m; i++) {
+        double X, Y;
+        isk_view_to_screen(v, x[i], y[i], &X, &Y);
+        if (keep) {
+            X = isk__keep_on_canvas(X, c->width);
+            Y = isk__keep_on_canvas(Y, c->height);
+        }
+        if (rule == ISK__BATCH_DOT)
+            ref_draw_dot(c, X, Y, col, mode);
+        else if (rule == ISK__BATCH_DOT_BROWSER)
+            ref_draw_dot_browser(c, X, Y, col, mode);
+        else if (X >= 0 && Y >= 0 && X < c->width && Y < c->height)
+            ref_draw_pixel(c, (int)X, (int)Y, col, mode);
+    }
+}
+
 Test(raster_fast, batches_equal_loop_of_single_calls)
 {
     isk_rng r;
@@ -245,16 +267,7 @@ Test(raster_fast, batches_equal_loop_of_single_calls)
             isk_draw_dots_browser(&p.c[0], &v, m, x, y, col, mode);
         else
             isk_draw_pixels(&p.c[0], &v, m, x, y, col, mode);
-        for (size_t i = 0; i < m; i++) {
-            double X, Y;
-            isk_view_to_screen(&v, x[i], y[i], &X, &Y);
-            if (rule == 0)
-                ref_draw_dot(&p.c[1], X, Y, col, mode);
-            else if (rule == 1)
-                ref_draw_dot_browser(&p.c[1], X, Y, col, mode);
-            else if (X >= 0 && Y >= 0 && X < w && Y < h)
-                ref_draw_pixel(&p.c[1], (int)X, (int)Y, col, mode);
-        }
+        ref_draw_batch(&p.c[1], &v, m, x, y, col, mode, (unsigned)rule, 0);
         check_pair(&p, rule == 0 ? "isk_draw_dots" : rule == 1 ? "isk_draw_dots_browser" : "isk_draw_pixels", n);
     }
     /* NULL and empty arguments draw nothing */
@@ -305,18 +318,7 @@ Test(raster_fast, kept_batches_equal_single_calls_at_kept_coordinates)
         isk_blend mode = MODES[isk_rng_below(&r, 3)];
         unsigned rule = isk_rng_below(&r, 3);
         isk__draw_batch_rows(&p.c[0], &v, m, x, y, col, mode, rule | ISK__BATCH_KEEP_ON_CANVAS, 0, h);
-        for (size_t i = 0; i < m; i++) {
-            double X, Y;
-            isk_view_to_screen(&v, x[i], y[i], &X, &Y);
-            X = isk__keep_on_canvas(X, w);
-            Y = isk__keep_on_canvas(Y, h);
-            if (rule == ISK__BATCH_DOT)
-                ref_draw_dot(&p.c[1], X, Y, col, mode);
-            else if (rule == ISK__BATCH_DOT_BROWSER)
-                ref_draw_dot_browser(&p.c[1], X, Y, col, mode);
-            else if (X >= 0 && Y >= 0 && X < w && Y < h)
-                ref_draw_pixel(&p.c[1], (int)X, (int)Y, col, mode);
-        }
+        ref_draw_batch(&p.c[1], &v, m, x, y, col, mode, rule, 1);
         check_pair(&p, "kept batch", n);
     }
     free(x);

@@ -153,11 +153,22 @@ static inline isk_color style(const fx_group *g, const isk_particles *p, size_t 
  * band (view/world_batch.h, raster/sprite_rows.h, raster/dot_kernel.h), so
  * the bands give the bytes of the whole draw for any number of threads. */
 
+/* Particle i's screen point, kept on the canvas where the group's walls
+ * hold it (as the batched kernels' ISK__BATCH_KEEP_ON_CANVAS does). */
+static void screen_point(const isk_effect *e, const isk_canvas *c, const fx_group *g, size_t i, double *X,
+                         double *Y)
+{
+    isk_view_to_screen(&e->view, g->store.x[i], g->store.y[i], X, Y);
+    if (g->keep_on_canvas) {
+        *X = isk__keep_on_canvas(*X, c->width);
+        *Y = isk__keep_on_canvas(*Y, c->height);
+    }
+}
+
 /* One colour per particle (a ramp or per-particle colours): the view
  * transform and one dot each. */
 static isk_status draw_styled_dots(isk_effect *e, isk_canvas *c, fx_group *g, const fx_band *b)
 {
-    const isk_view *v = &e->view;
     const isk_particles *p = &g->store;
     const isk_blend blend = g->def->blend;
     const int browser = g->def->draw == ISK_DRAW_DOT_BROWSER;
@@ -165,11 +176,7 @@ static isk_status draw_styled_dots(isk_effect *e, isk_canvas *c, fx_group *g, co
     for (size_t k = 0; k < n; k++) {
         const size_t i = b->list ? b->list[k] : k;
         double X, Y, mult;
-        isk_view_to_screen(v, p->x[i], p->y[i], &X, &Y);
-        if (g->keep_on_canvas) {
-            X = isk__keep_on_canvas(X, c->width);
-            Y = isk__keep_on_canvas(Y, c->height);
-        }
+        screen_point(e, c, g, i, &X, &Y);
         isk_color col = style(g, p, i, 1, &mult);
         if (browser)
             ISK__BLEND_DISPATCH(blend, isk__dot_browser_rows, c, b->r0, b->r1, X, Y, col, NULL);
@@ -203,11 +210,7 @@ static isk_status draw_styled_pixels(isk_effect *e, isk_canvas *c, fx_group *g, 
     for (size_t k = 0; k < n; k++) {
         const size_t i = b->list ? b->list[k] : k;
         double X, Y, mult;
-        isk_view_to_screen(&e->view, p->x[i], p->y[i], &X, &Y);
-        if (g->keep_on_canvas) {
-            X = isk__keep_on_canvas(X, c->width);
-            Y = isk__keep_on_canvas(Y, c->height);
-        }
+        screen_point(e, c, g, i, &X, &Y);
         isk_color col = style(g, p, i, 1, &mult);
         if (X >= 0 && Y >= b->r0 && X < c->width && Y < b->r1)
             isk_draw_pixel(c, (int)X, (int)Y, col, g->def->blend);

@@ -253,11 +253,17 @@ typedef struct select_view {
 
 typedef int (*select_fn)(const select_view *s, const double *y, int m, double *oy, int32_t *oix);
 
+/* isk_view_to_screen's Y, its operations in its order. */
+static ISK__INLINE double screen_y(const select_view *s, double y)
+{
+    return s->camera ? s->hh - s->a * (y + s->ty) : s->sy * y + s->py;
+}
+
 static int select_scalar(const select_view *s, const double *y, int m, double *oy, int32_t *oix)
 {
     int kept = 0;
     for (int k = 0; k < m; k++) {
-        const double Y0k = s->camera ? s->hh - s->a * (y[k] + s->ty) : s->sy * y[k] + s->py;
+        const double Y0k = screen_y(s, y[k]);
         const double Y = s->keep ? isk__keep_on_canvas(Y0k, s->height) : Y0k;
         oy[kept] = Y;
         oix[kept] = k;
@@ -370,19 +376,15 @@ static ISK__INLINE void run_dots_blocked(const isk_canvas *c, int r0, int r1, co
     dot_block b;
     for (size_t i0 = 0; i0 < n; i0 += BLOCK) {
         const int m = n - i0 < BLOCK ? (int)(n - i0) : BLOCK;
-        int kept = 0;
-        if (!list) { /* b.ix: the point's place in the block, until the weights overwrite it */
-            kept = select(&sv, y + i0, m, b.y, b.ix);
-        } else {
-            for (int k = 0; k < m; k++) {
-                const double yk = y[list[i0 + k]];
-                const double Y0k = camera ? hh - a * (yk + ty) : sy * yk + py;
-                const double Y = keep ? isk__keep_on_canvas(Y0k, c->height) : Y0k;
-                b.y[kept] = Y;
-                b.ix[kept] = k;
-                kept += (Y > lo) & (Y < hi); /* no branch: which points a band keeps is random */
-            }
+        /* b.ix: the point's place in the block, until the weights overwrite it */
+        const double *yb = y + i0;
+        double gathered[BLOCK];
+        if (list) { /* a band's points: their y gathered into the block first */
+            for (int k = 0; k < m; k++)
+                gathered[k] = y[list[i0 + k]];
+            yb = gathered;
         }
+        const int kept = select(&sv, yb, m, b.y, b.ix);
         for (int k = 0; k < kept; k++) {
             const double xi = x[POINT(list, i0 + (size_t)b.ix[k])];
             const double X = camera ? hw + a * (xi + tx) : sx * xi + px;
@@ -501,15 +503,15 @@ void isk__draw_batch_list_rows(isk_canvas *c, const isk_view *v, const uint32_t 
 void isk__batch_bin(const isk_view *v, int height, const double *y, size_t i0, size_t i1,
                     const uint8_t *band_of_row, uint16_t *code, size_t *count)
 {
-    const double hh = v->height / 2.0, a = v->a, ty = v->ty, sy = v->sy, py = v->py;
-    const int camera = v->kind == ISK_VIEW_CAMERA;
+    const select_view sv = {.camera = v->kind == ISK_VIEW_CAMERA, .hh = v->height / 2.0, .a = v->a, .ty = v->ty,
+                            .sy = v->sy, .py = v->py};
     const double lo = -(ISK__BIN_MARGIN + 1.0), hi = height + (double)ISK__BIN_MARGIN;
     /* counted here and added at the end: the threads' count arrays share
      * cache lines, and a store to one every point would bounce them */
     size_t mine[256] = {0};
     unsigned nb = 0;
     for (size_t i = i0; i < i1; i++) {
-        const double Y = camera ? hh - a * (y[i] + ty) : sy * y[i] + py;
+        const double Y = screen_y(&sv, y[i]);
         uint16_t k = ISK__BIN_NONE;
         if (Y > lo && Y < hi) { /* also false for NaN; keeps the conversion defined */
             const int fy = (int)(Y + (ISK__BIN_MARGIN + 1.0)) - (ISK__BIN_MARGIN + 1); /* floor */
