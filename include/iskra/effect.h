@@ -237,6 +237,11 @@ typedef struct isk_emitter_def {
     isk_scalar_ramp alpha_over_life;  /* multiplies colour alpha */
     isk_scalar_ramp size_over_life;   /* multiplies size */
     int order;                 /* draw order key (ties: definition order) */
+
+    /* what it started from */
+    char preset[ISK_NAME_MAX]; /* the preset (iskra/presets.h) that filled it, "" for none; set by
+                                  isk_preset_apply (scene files: `preset = NAME`); only a record:
+                                  the fields hold what the preset set */
 } isk_emitter_def;
 
 /* Static drawings (the triangles of figures 1-8, labels): drawn each frame

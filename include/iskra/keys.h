@@ -106,6 +106,8 @@ typedef struct isk_key {
     unsigned live;            /* kinds for which isk_effect_set applies it from the next step; other
                                  kinds: stored at once, used from the next isk_effect_reset */
     int create_only;          /* 1: only at creation (isk_effect_set refuses it) */
+    int directive;            /* 1: acts where it stands in a scene file (`preset`); what it did is in
+                                 the other fields, so scene files are written without it */
     const char *meaning;      /* one line */
 } isk_key;
 

@@ -72,6 +72,9 @@ extern "C" {
 #define ISK_FORCE_LIMIT 1e150        /* a potential's force saturates here (iskra/forces.h) */
 #define ISK_P_MIN 0.0                /* a potential's P: |F| ~ d^(1-P), at most a spring's d */
 #define ISK_P_MAX 17.0               /* ... at least d^-16 */
+#define ISK_PRESET_SCALE_MAX 1e6     /* a preset's scale (iskra/presets.h): its largest length, speed
+                                        or acceleration, 300 cocos2d points x 1e4, stays far inside
+                                        every limit above */
 
 #ifdef __cplusplus
 }

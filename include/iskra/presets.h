@@ -5,7 +5,7 @@
  * needs gravity, one GRAVITY force named "<name>_gravity" that only this
  * emitter uses, created or updated), fills every field the effect needs and
  * returns the emitter's index, or -1 (NULL definition, non-finite position,
- * scale not a finite number > 0, or no room for another emitter/force).
+ * scale not a finite number in (0, ISK_PRESET_SCALE_MAX], or no room for another emitter/force).
  * Adjust the returned emitter freely afterwards:
  *
  * Example:
@@ -55,6 +55,7 @@
 #define ISKRA_PRESETS_H
 
 #include "iskra/effect.h"
+#include "iskra/limits.h"
 
 #ifdef __cplusplus
 extern "C" {
@@ -64,6 +65,25 @@ extern "C" {
  * life 3 +- 0.25 s, 250 particles at 83.3/s from a 0.8 x 0.4 rectangle,
  * speed 0.6 +- 0.2 straight up +- 10 degrees, size 0.54, no gravity.  (Times
  * scale/100 for lengths, as above.) */
+/* The presets by name (the names scene files give `preset`): how many,
+ * the i-th's name (NULL out of range), the index of a name (-1: none). */
+int isk_preset_count(void);
+const char *isk_preset_name(int i);
+int isk_preset_find(const char *name);
+
+/* Appends the preset `preset` as an emitter named `name` (NULL: the
+ * preset's name) at pos, as the functions below do; -1 on bad input. */
+int isk_preset_add(isk_effect_def *d, const char *preset, const char *name, isk_vec2 pos, double scale);
+
+/* Refills the existing emitter d->emitters[emitter] from the preset: every
+ * field back to its default, then the preset's, keeping the emitter's name,
+ * line, draw order and position (what `preset = NAME, SCALE` does in a
+ * scene file); e->preset records the name.  Errors: ISK_ERR_NULL,
+ * ISK_ERR_RANGE (unknown preset, emitter out of range, scale not in
+ * (0, ISK_PRESET_SCALE_MAX]), ISK_ERR_FULL (no room for its force; the
+ * emitter is then as it was). */
+isk_status isk_preset_apply(isk_effect_def *d, int emitter, const char *preset, double scale);
+
 int isk_preset_fire(isk_effect_def *d, const char *name, isk_vec2 pos, double scale);
 
 /* cocos2d ParticleSmoke: overpaint, grey (204) darkening to black over life

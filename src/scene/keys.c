@@ -215,6 +215,11 @@ static const isk_key keys[] = {
      .meaning = "xmin, xmax, ymin, ymax the walls follow (min < max)"},
 
     /* [emitter NAME] */
+    {EMITTER("preset"), .type = ISK_KEY_TEXT, EM(preset), .aux = sizeof(((isk_emitter_def *)0)->preset),
+     .what = "a preset's name, or NAME, SCALE", .dflt = "", .create_only = 1, .directive = 1,
+     .meaning = "the section's first key: starts the emitter from a preset (fire, smoke, sparks, fountain, snow, "
+                "explosion; iskra/presets.h) at SCALE world units per 100 cocos2d points (default 1); keys after "
+                "it override it"},
     {EMITTER("source"), .type = ISK_KEY_ENUM, EM(source), NAMES(isk_source_names), .dflt = "particle",
      .create_only = 1,
      .meaning = "one particle; a thesis explosion; the stationary layer; continuous emission"},

@@ -6,24 +6,18 @@
 #include <stdio.h>
 #include <string.h>
 
+#include "iskra/limits.h"
+#include "key_value.h"
+
 #define DEG (3.14159265358979323846 / 180.0)
 
-/* The common part: a stream emitter with sprites; NULL on bad input. */
-static isk_emitter_def *start(isk_effect_def *d, const char *name, const char *dflt, isk_vec2 pos, double scale,
-                              int *index)
+/* The common part of every preset: a stream emitter with sprites. */
+static void base(isk_emitter_def *e)
 {
-    if (!d || !isfinite(pos.x) || !isfinite(pos.y) || !isfinite(scale) || !(scale > 0))
-        return NULL;
-    isk_emitter_def *e = isk_effect_def_add_emitter(d, name ? name : dflt);
-    if (!e)
-        return NULL;
-    *index = d->nemitters - 1;
     e->source = ISK_SOURCE_STREAM;
-    e->pos = pos;
     e->draw = ISK_DRAW_SPRITE;
     e->sprite = ISK_SPRITE_LINEAR;
     e->launch = ISK_VELGEN_CONE;
-    return e;
 }
 
 /* Adds (or updates) the emitter's own gravity force "<name>_gravity". */
@@ -40,13 +34,6 @@ static int own_gravity(isk_effect_def *d, int index, double g)
     return isk_emitter_use_force(&d->emitters[index], f) == ISK_OK;
 }
 
-/* Removes the emitter just added (when its force could not be added). */
-static int undo(isk_effect_def *d)
-{
-    d->nemitters--;
-    return -1;
-}
-
 static void ramp2(isk_color_ramp *r, isk_color a, isk_color b)
 {
     r->n = 2;
@@ -56,13 +43,10 @@ static void ramp2(isk_color_ramp *r, isk_color a, isk_color b)
     r->stops[1].color = b;
 }
 
-int isk_preset_fire(isk_effect_def *d, const char *name, isk_vec2 pos, double scale)
+static int fill_fire(isk_effect_def *d, int i, double u)
 {
-    int i;
-    isk_emitter_def *e = start(d, name, "fire", pos, scale, &i);
-    if (!e)
-        return -1;
-    const double u = scale / 100.0; /* world units per cocos2d point */
+    isk_emitter_def *e = &d->emitters[i];
+    base(e);
     e->shape = ISK_SHAPE_RECT;      /* posVar (40, 20) */
     e->shape_a = 40 * u;
     e->shape_b = 20 * u;
@@ -78,16 +62,13 @@ int isk_preset_fire(isk_effect_def *d, const char *name, isk_vec2 pos, double sc
     e->color = isk_rgba(194, 64, 31, 255);  /* (0.76, 0.25, 0.12, 1) */
     ramp2(&e->color_over_life, e->color, isk_rgba(0, 0, 0, 255));
     e->blend = ISK_BLEND_ADD;
-    return i;
+    return 1;
 }
 
-int isk_preset_smoke(isk_effect_def *d, const char *name, isk_vec2 pos, double scale)
+static int fill_smoke(isk_effect_def *d, int i, double u)
 {
-    int i;
-    isk_emitter_def *e = start(d, name, "smoke", pos, scale, &i);
-    if (!e)
-        return -1;
-    const double u = scale / 100.0;
+    isk_emitter_def *e = &d->emitters[i];
+    base(e);
     e->shape = ISK_SHAPE_RECT;      /* posVar (20, 0) */
     e->shape_a = 20 * u;
     e->shape_b = 0;
@@ -107,16 +88,13 @@ int isk_preset_smoke(isk_effect_def *d, const char *name, isk_vec2 pos, double s
     e->alpha_over_life.stops[0] = (isk_scalar_stop){0.0, 0.5};
     e->alpha_over_life.stops[1] = (isk_scalar_stop){1.0, 0.0};
     e->blend = ISK_BLEND_OVER;
-    return i;
+    return 1;
 }
 
-int isk_preset_sparks(isk_effect_def *d, const char *name, isk_vec2 pos, double scale)
+static int fill_sparks(isk_effect_def *d, int i, double u)
 {
-    int i;
-    isk_emitter_def *e = start(d, name, "sparks", pos, scale, &i);
-    if (!e)
-        return -1;
-    const double u = scale / 100.0;
+    isk_emitter_def *e = &d->emitters[i];
+    base(e);
     e->shape = ISK_SHAPE_DISC;
     e->shape_a = 15 * u;
     e->angle = 90 * DEG;
@@ -134,18 +112,13 @@ int isk_preset_sparks(isk_effect_def *d, const char *name, isk_vec2 pos, double 
     e->color_over_life.stops[1] = (isk_color_stop){0.4, isk_rgba(255, 150, 40, 255)};
     e->color_over_life.stops[2] = (isk_color_stop){1.0, isk_rgba(180, 30, 0, 0)};
     e->blend = ISK_BLEND_ADD;
-    if (!own_gravity(d, i, 300 * u))
-        return undo(d);
-    return i;
+    return own_gravity(d, i, 300 * u);
 }
 
-int isk_preset_fountain(isk_effect_def *d, const char *name, isk_vec2 pos, double scale)
+static int fill_fountain(isk_effect_def *d, int i, double u)
 {
-    int i;
-    isk_emitter_def *e = start(d, name, "fountain", pos, scale, &i);
-    if (!e)
-        return -1;
-    const double u = scale / 100.0;
+    isk_emitter_def *e = &d->emitters[i];
+    base(e);
     e->shape = ISK_SHAPE_POINT;
     e->angle = 90 * DEG;            /* 90 +- 20 */
     e->spread = 40 * DEG;
@@ -159,18 +132,13 @@ int isk_preset_fountain(isk_effect_def *d, const char *name, isk_vec2 pos, doubl
     e->color = isk_rgba(140, 200, 255, 255);
     ramp2(&e->color_over_life, e->color, isk_rgba(40, 90, 200, 51)); /* end alpha 0.2 */
     e->blend = ISK_BLEND_OVER;
-    if (!own_gravity(d, i, 90 * u))
-        return undo(d);
-    return i;
+    return own_gravity(d, i, 90 * u);
 }
 
-int isk_preset_snow(isk_effect_def *d, const char *name, isk_vec2 pos, double scale)
+static int fill_snow(isk_effect_def *d, int i, double u)
 {
-    int i;
-    isk_emitter_def *e = start(d, name, "snow", pos, scale, &i);
-    if (!e)
-        return -1;
-    const double u = scale / 100.0;
+    isk_emitter_def *e = &d->emitters[i];
+    base(e);
     e->shape = ISK_SHAPE_RECT;      /* posVar (w/2, 0) of a 480-point screen */
     e->shape_a = 240 * u;
     e->shape_b = 0;
@@ -191,18 +159,13 @@ int isk_preset_snow(isk_effect_def *d, const char *name, isk_vec2 pos, double sc
     e->osc_amp_min = 5 * u;
     e->osc_amp_max = 15 * u;
     e->blend = ISK_BLEND_OVER;
-    if (!own_gravity(d, i, 1 * u))
-        return undo(d);
-    return i;
+    return own_gravity(d, i, 1 * u);
 }
 
-int isk_preset_explosion(isk_effect_def *d, const char *name, isk_vec2 pos, double scale)
+static int fill_explosion(isk_effect_def *d, int i, double u)
 {
-    int i;
-    isk_emitter_def *e = start(d, name, "explosion", pos, scale, &i);
-    if (!e)
-        return -1;
-    const double u = scale / 100.0;
+    isk_emitter_def *e = &d->emitters[i];
+    base(e);
     e->shape = ISK_SHAPE_POINT;
     e->angle = 90 * DEG;            /* 90 +- 360: every direction */
     e->spread = 360 * DEG;
@@ -218,5 +181,96 @@ int isk_preset_explosion(isk_effect_def *d, const char *name, isk_vec2 pos, doub
     e->color = isk_rgba(178, 25, 51, 255);
     ramp2(&e->color_over_life, e->color, isk_rgba(128, 128, 128, 0));
     e->blend = ISK_BLEND_OVER;
-    return i;
+    return 1;
+}
+
+/* ---- the table: one row per preset -------------------------------------- */
+
+typedef struct preset_row {
+    const char *name;
+    /* Fills emitter i (already at the key table's defaults) with lengths in
+     * units of u = scale/100; 0 when a force it needs found no room. */
+    int (*fill)(isk_effect_def *d, int i, double u);
+} preset_row;
+
+static const preset_row presets[] = {
+    {"fire", fill_fire},         {"smoke", fill_smoke}, {"sparks", fill_sparks},
+    {"fountain", fill_fountain}, {"snow", fill_snow},   {"explosion", fill_explosion},
+};
+#define NPRESETS ((int)(sizeof presets / sizeof presets[0]))
+
+int isk_preset_count(void) { return NPRESETS; }
+
+const char *isk_preset_name(int i) { return i >= 0 && i < NPRESETS ? presets[i].name : NULL; }
+
+int isk_preset_find(const char *name)
+{
+    for (int i = 0; name && i < NPRESETS; i++)
+        if (!strcmp(presets[i].name, name))
+            return i;
+    return -1;
+}
+
+static int valid_scale(double scale) { return isfinite(scale) && scale > 0 && scale <= ISK_PRESET_SCALE_MAX; }
+
+isk_status isk_preset_apply(isk_effect_def *d, int emitter, const char *preset, double scale)
+{
+    if (!d || !preset)
+        return ISK_ERR_NULL;
+    const int p = isk_preset_find(preset);
+    if (p < 0 || emitter < 0 || emitter >= d->nemitters || !valid_scale(scale))
+        return ISK_ERR_RANGE;
+    isk_emitter_def *e = &d->emitters[emitter];
+    isk_emitter_def keep = *e;
+    fx_section_defaults(ISK_SECTION_EMITTER, e);
+    memcpy(e->name, keep.name, sizeof e->name);
+    e->line = keep.line;
+    e->order = keep.order;
+    e->pos = keep.pos;
+    snprintf(e->preset, sizeof e->preset, "%s", presets[p].name);
+    if (!presets[p].fill(d, emitter, scale / 100.0)) {
+        *e = keep;
+        return ISK_ERR_FULL;
+    }
+    return ISK_OK;
+}
+
+int isk_preset_add(isk_effect_def *d, const char *preset, const char *name, isk_vec2 pos, double scale)
+{
+    if (!d || isk_preset_find(preset) < 0 || !isfinite(pos.x) || !isfinite(pos.y) || !valid_scale(scale))
+        return -1;
+    isk_emitter_def *e = isk_effect_def_add_emitter(d, name ? name : preset);
+    if (!e)
+        return -1;
+    e->pos = pos;
+    if (isk_preset_apply(d, d->nemitters - 1, preset, scale) != ISK_OK) {
+        d->nemitters--; /* the force it needed found no room */
+        return -1;
+    }
+    return d->nemitters - 1;
+}
+
+int isk_preset_fire(isk_effect_def *d, const char *name, isk_vec2 pos, double scale)
+{
+    return isk_preset_add(d, "fire", name, pos, scale);
+}
+int isk_preset_smoke(isk_effect_def *d, const char *name, isk_vec2 pos, double scale)
+{
+    return isk_preset_add(d, "smoke", name, pos, scale);
+}
+int isk_preset_sparks(isk_effect_def *d, const char *name, isk_vec2 pos, double scale)
+{
+    return isk_preset_add(d, "sparks", name, pos, scale);
+}
+int isk_preset_fountain(isk_effect_def *d, const char *name, isk_vec2 pos, double scale)
+{
+    return isk_preset_add(d, "fountain", name, pos, scale);
+}
+int isk_preset_snow(isk_effect_def *d, const char *name, isk_vec2 pos, double scale)
+{
+    return isk_preset_add(d, "snow", name, pos, scale);
+}
+int isk_preset_explosion(isk_effect_def *d, const char *name, isk_vec2 pos, double scale)
+{
+    return isk_preset_add(d, "explosion", name, pos, scale);
 }

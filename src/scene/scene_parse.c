@@ -26,6 +26,8 @@
 
 #include "effect_check.h"
 #include "effect_internal.h"
+#include "iskra/limits.h"
+#include "iskra/presets.h"
 #include "iskra/scene.h"
 #include "key_value.h"
 #include "scene/ini_read.h"
@@ -261,6 +263,48 @@ static isk_status unknown_key(parser *P, const section *s, const char *key, int 
                    isk_section_name(s->type));
 }
 
+/* `preset = NAME[, SCALE]`, the one directive: it fills the emitter where
+ * it stands, so it must come before every other key of its section (which
+ * then override it). */
+static isk_status apply_preset(parser *P, section *s, const isk_key *k, int line)
+{
+    for (int i = 0; i < P->nkeys; i++)
+        if (s->key_line[i] && s->key_line[i] != line)
+            return fail_at(P, s, line, k->name, "must be the section's first key (line %d sets %s before it, "
+                           "which the preset would overwrite)", s->key_line[i], isk_key_at(i)->name);
+    isk_emitter_def *e = &P->d->emitters[s->index];
+    char name[ISK_NAME_MAX];
+    snprintf(name, sizeof name, "%s", e->preset);
+    double scale = 1.0;
+    char *comma = strchr(name, ',');
+    if (comma) {
+        *comma = 0;
+        char *end;
+        scale = strtod(comma + 1, &end);
+        while (*end == ' ' || *end == '\t')
+            end++;
+        if (end == comma + 1 || *end || !(scale > 0) || scale > ISK_PRESET_SCALE_MAX)
+            return fail_at(P, s, line, k->name, "the scale after the name must be a number in (0, %g], not '%s'",
+                           ISK_PRESET_SCALE_MAX, comma + 1);
+    }
+    for (char *t = name + strlen(name); t > name && (t[-1] == ' ' || t[-1] == '\t');)
+        *--t = 0;
+    if (isk_preset_find(name) < 0) {
+        char list[200] = "";
+        for (int i = 0; i < isk_preset_count(); i++)
+            snprintf(list + strlen(list), sizeof list - strlen(list), "%s%s", i ? ", " : "", isk_preset_name(i));
+        return fail_at(P, s, line, k->name, "no preset '%s' (the presets: %s)", name, list);
+    }
+    isk_status st = isk_preset_apply(P->d, s->index, name, scale);
+    if (st == ISK_ERR_FULL)
+        return fail_at(P, s, line, k->name, "the preset's own force finds no room (at most %d forces)",
+                       ISK_EFFECT_MAX_FORCES);
+    if (st != ISK_OK)
+        return fail_at(P, s, line, k->name, "%s", isk_status_str(st));
+    e->line = s->line;
+    return ISK_OK;
+}
+
 static isk_status on_key(void *user, const char *section_name, const char *key, const char *value, int line,
                   isk_error *err)
 {
@@ -294,6 +338,8 @@ static isk_status on_key(void *user, const char *section_name, const char *key, 
         return isk_error_set(P->err, st, "%s: out of memory", P->name);
     if (st != ISK_OK)
         return fail_at(P, s, line, key, "%s", why);
+    if (k->directive)
+        return apply_preset(P, s, k, line);
     return ISK_OK;
 }
 

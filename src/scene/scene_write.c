@@ -78,7 +78,7 @@ static isk_status write_item(out *o, const isk_effect_def *d, isk_section_kind s
         return isk_error_set(err, ISK_ERR_FORMAT, "%s moves by a C function, which a scene file cannot hold", label);
     for (int i = 0; i < isk_key_count(); i++) {
         const isk_key *k = isk_key_at(i);
-        if (k->section != s || !fx_key_applies(k, kind))
+        if (k->section != s || !fx_key_applies(k, kind) || k->directive)
             continue;
         if (k->type == ISK_KEY_REF && *(const int *)((const char *)item + k->offset) < 0)
             continue; /* "the first emitter" is the default, and has no name to write */
