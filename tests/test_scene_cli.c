@@ -96,6 +96,26 @@ Test(scene_cli, render_one_frame_equals_the_example)
     isk_canvas_free(&b);
 }
 
+/* --strip: the panels are the example's (its --strip, the gallery's strip),
+ * byte for byte; a strip of no panel or too many is refused before any
+ * file is written. */
+Test(scene_cli, render_strip_equals_the_examples_strip, .timeout = 120)
+{
+    cr_assert_eq(run("render fire_campfire --frames 60 --every 10 --strip " OUT "/strip/s.png"), 0, "%s",
+                 slurp("stderr.txt"));
+    isk_canvas a, b;
+    cr_assert_eq(isk_png_read(&a, OUT "/strip/s.png", NULL), ISK_OK);
+    cr_assert_eq(isk_png_read(&b, "refimg/fire_campfire_strip.png", NULL), ISK_OK);
+    cr_assert(a.width == b.width && a.height == b.height);
+    cr_assert_eq(memcmp(a.pixels, b.pixels, (size_t)a.width * a.height * 4), 0);
+    isk_canvas_free(&a);
+    isk_canvas_free(&b);
+    cr_assert_eq(run("render fire_campfire --frames 60 --every 2 --strip " OUT "/strip/t.png"), 2);
+    cr_assert(strstr(slurp("stderr.txt"), "30 panels, not 1..12"), "%s", slurp("stderr.txt"));
+    cr_assert_eq(run("render fire_campfire --frames 5 --every 10 --strip " OUT "/strip/t.png"), 2);
+    cr_assert_not(cli_exists(OUT "/strip/t.png"));
+}
+
 Test(scene_cli, render_sequence)
 {
     cr_assert_eq(run("render fig16_regular --frames 5 --every 2 --out-dir " OUT "/seq/deep"), 0, "%s",

@@ -2,6 +2,7 @@
  * iskra render SCENE [--frames N] [--every K] [--fps F] --out FILE.gif|FILE.y4m
  * iskra render SCENE [--frames N] [--every K] --raw --out FILE|-
  * iskra render SCENE [--frames N] [--every K] --out-dir DIR [--resume]
+ * iskra render SCENE --frames N --every K --strip FILE.png
  * Renders frame N (frame 0 = the initial state, frame N = after N steps) to
  * a PNG, and/or frames 0, K, 2K, ... <= N as a numbered PNG sequence, an
  * animated GIF, a YUV4MPEG2 video or raw RGBA frames (render_out.h);
@@ -20,6 +21,7 @@
 #include "outpath.h"
 #include "progress.h"
 #include "render_out.h"
+#include "render_strip.h"
 #include "scene_args.h"
 #include "state_csv.h"
 
@@ -30,6 +32,7 @@ static void help(FILE *f)
                "                    (or --out FILE.y4m)\n"
                "       iskra render SCENE [--frames N] [--every K] --raw --out FILE|-\n"
                "       iskra render SCENE [--frames N] [--every K] --out-dir DIR [--resume]\n"
+               "       iskra render SCENE --frames N --every K --strip FILE.png\n"
                "  Renders frame N of the scene (0 = the initial state; N steps of dt).\n"
                "  --frames N       the last frame, 0..100000000 (default: the scene's\n"
                "                   [scene] frames, else 0)\n"
@@ -47,7 +50,9 @@ static void help(FILE *f)
                "  --out-dir DIR    write frames 0, K, 2K, ... <= N as DIR/frame_000000.png ...\n"
                "  --resume         with --out-dir: keep the frames already there (after an\n"
                "                   interrupted render; the simulation still runs from 0)\n"
-               "  --every K        sequence and animation step, >= 1 (default 1)\n"
+               "  --strip FILE.png frames K, 2K, ... <= N side by side at half size, each\n"
+               "                   labelled with its time (1..12 panels: frame 0 is left out)\n"
+               "  --every K        sequence, animation and strip step, >= 1 (default 1)\n"
                "  --state FILE.csv every live particle at frame N: emitter,index,x,y,vx,vy,\n"
                "                   mass,age,life, values in round-trip precision (%%.17g)\n"
                "  --state-every K  with --out-dir: DIR/state_000000.csv ... every K frames\n"
@@ -63,6 +68,7 @@ static void help(FILE *f)
 typedef struct render_args {
     scene_args scene;
     const char *out;
+    const char *strip;
     long frames;     /* -1: the scene's */
     double fps;      /* 0: 1 / (dt * every) */
     int raw, have_every;
@@ -98,6 +104,10 @@ static int parse(render_args *r, int argc, char **argv)
             if (k < 0)
                 return 2;
             r->o.dir = v;
+        } else if ((k = arg_value("render", argc, argv, &i, "--strip", &v)) != 0) {
+            if (k < 0)
+                return 2;
+            r->strip = v;
         } else if ((k = arg_value("render", argc, argv, &i, "--out", &v)) != 0) {
             if (k < 0)
                 return 2;
@@ -118,9 +128,9 @@ static int check(render_args *r)
     const char *why = NULL;
     if (!r->scene.scene)
         why = "which scene?";
-    else if (!r->out && !r->o.dir && !r->so.path)
-        why = "say where: --out FILE (.png, .gif, .y4m; --raw), --out-dir DIR or --state FILE.csv";
-    else if ((r->out && !*r->out) || (r->o.dir && !*r->o.dir))
+    else if (!r->out && !r->o.dir && !r->so.path && !r->strip)
+        why = "say where: --out FILE (.png, .gif, .y4m; --raw), --out-dir DIR, --strip FILE.png or --state FILE.csv";
+    else if ((r->out && !*r->out) || (r->o.dir && !*r->o.dir) || (r->strip && !*r->strip))
         why = "empty output name";
     if (why) {
         fprintf(stderr, "iskra render: %s\n", why);
@@ -139,8 +149,8 @@ static int check(render_args *r)
     }
     if (!why && r->raw && !r->out)
         why = "--raw needs --out FILE or --out -";
-    else if (!why && r->have_every && !r->o.dir && !r->o.anim_path)
-        why = "--every needs --out-dir, an animation (--out FILE.gif, FILE.y4m) or --raw";
+    else if (!why && r->have_every && !r->o.dir && !r->o.anim_path && !r->strip)
+        why = "--every needs --out-dir, an animation (--out FILE.gif, FILE.y4m), --raw or --strip";
     else if (!why && r->fps > 0 && !(r->o.anim_path && r->o.anim_format != ISK_ANIM_RAW))
         why = "--fps is for --out FILE.gif or FILE.y4m (raw frames carry no rate)";
     else if (!why && r->o.resume && !r->o.dir)
@@ -154,7 +164,8 @@ static int check(render_args *r)
     if (state_args_check(&r->so, r->o.dir))
         return 2;
     if (outpath_refuse_input("render", r->out, r->scene.scene) ||
-        outpath_refuse_input("render", r->so.path, r->scene.scene))
+        outpath_refuse_input("render", r->so.path, r->scene.scene) ||
+        outpath_refuse_input("render", r->strip, r->scene.scene))
         return 2;
     return 0;
 }
@@ -194,6 +205,7 @@ int cmd_render(int argc, char **argv)
     long frames = r.frames >= 0 ? r.frames : def.show.frames;
     double fps;
     isk_canvas canvas = {0};
+    render_strip strip = {0};
     if ((rc = choose_fps(&r, def.dt, &fps)) != 0)
         goto done;
     if (isk_canvas_init(&canvas, def.width, def.height) != ISK_OK) {
@@ -201,6 +213,9 @@ int cmd_render(int argc, char **argv)
         rc = 1;
         goto done;
     }
+    if ((rc = render_strip_begin(&strip, r.strip, def.width, def.height, frames, r.o.every)) != 0 ||
+        (r.strip && (rc = outpath_make_parents("render", r.strip)) != 0))
+        goto done;
     cleanup_install("render");
     if ((rc = render_out_begin(&r.o, def.width, def.height, fps)) != 0)
         goto done;
@@ -214,10 +229,12 @@ int cmd_render(int argc, char **argv)
     isk_status s = isk_effect_run(fx, &canvas, 0);
     int drawn = 1;
     for (long f = 0; s == ISK_OK; f++) {
-        if (render_out_wants(&r.o, f)) {
+        if (render_out_wants(&r.o, f) || render_strip_wants(&strip, f)) {
             if (!drawn && (s = isk_effect_render(fx, &canvas)) != ISK_OK)
                 break;
             drawn = 1;
+            if (render_strip_wants(&strip, f))
+                render_strip_frame(&strip, &canvas, f, isk_effect_time(fx));
             if (render_out_frame(&r.o, &canvas, f)) {
                 rc = 1;
                 goto done;
@@ -242,9 +259,12 @@ int cmd_render(int argc, char **argv)
     }
     progress_end(&pg);
     rc = render_out_end(&r.o, &canvas);
+    if (render_strip_end(&strip))
+        rc = 1;
     if (state_finish(&r.so, fx))
         rc = 1;
 done:
+    isk_canvas_free(&strip.out);
     render_out_abort(&r.o);
     isk_canvas_free(&canvas);
     isk_effect_destroy(fx);
