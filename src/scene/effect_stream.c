@@ -184,6 +184,7 @@ typedef struct launcher {
     isk_velgen launch;
     int moving;    /* the shape's centre follows the emitter's path */
     double place;  /* local space: every birth is placed at this time (the step's end); else NAN */
+    double t1;     /* the step's end */
 } launcher;
 
 /* One new particle: position, velocity and mass drawn here, lifetime and
@@ -201,7 +202,9 @@ static isk_status birth(isk_effect *e, fx_group *g, const launcher *l, double ag
     double x, y, vx, vy;
     if (l->moving) {
         isk_shape s = l->shape;
-        const isk_vec2 c = fx_emitter_pos(g, em, isnan(l->place) ? tb : l->place);
+        /* birth = frame: born, and so placed, at the end of the step */
+        const double at = !isnan(l->place) ? l->place : em->birth == ISK_BIRTH_FRAME ? l->t1 : tb;
+        const isk_vec2 c = fx_emitter_pos(g, em, at);
         s.cx = c.x;
         s.cy = c.y;
         isk_shape_sample(&s, &g->rng, &x, &y);
@@ -447,7 +450,7 @@ static isk_status run_spawn(isk_effect *e, fx_group *g, double t0, double h)
     /* A birth due within a nanosecond of the step's end belongs to this step:
      * 30 steps of 1/30 s and 144 of 1/144 s must agree on "t = 1 s". */
     const double t1_tol = t1 + 1e-9 * (t1 > 1.0 ? t1 : 1.0);
-    launcher l = {shape_of(em), velgen_of(em), moving(g, em), NAN};
+    launcher l = {shape_of(em), velgen_of(em), moving(g, em), NAN, t1};
     if (em->space == ISK_SPACE_LOCAL)
         l.place = t1;
     if (l.moving) {
