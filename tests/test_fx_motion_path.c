@@ -7,10 +7,14 @@
 #include <criterion/criterion.h>
 #include <math.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
+#include <sys/wait.h>
 
 #include "iskra/effect.h"
+#include "iskra/png.h"
 #include "iskra/scene.h"
+#include "refimg.h"
 
 static isk_effect *open_text(const char *text)
 {
@@ -147,4 +151,45 @@ Test(fx_motion_path, local_space_moves_with_the_emitter)
     cr_assert_float_eq(p->x[0] - before, -15, 1e-9, "%.17g", p->x[0] - before);
     isk_effect_destroy(loc);
     isk_effect_destroy(wld);
+}
+
+/* `iskra play --follow`: the emitter goes where the mouse is, and a fast
+ * mouse leaves a line of births, not a spot per frame. */
+Test(fx_motion_path, play_follow_leaves_no_gaps, .timeout = 60)
+{
+    cr_assert_eq(system("mkdir -p out/fx_motion"), 0);
+    FILE *f = fopen("out/fx_motion/pen.ini", "w");
+    cr_assert_not_null(f);
+    fputs("[scene]\nwidth = 200\nheight = 100\n[view]\nxmin = 0\nxmax = 200\nymin = 0\nymax = 100\n"
+          "[emitter pen]\nsource = stream\nrate = 3000\ncapacity = 100000\nposition = 20, 50\ndraw = pixel\n"
+          "color = white\n",
+          f);
+    fclose(f);
+    remove("out/fx_motion/pen.png");
+    char cmd[1024];
+    snprintf(cmd, sizeof cmd,
+             "SDL_VIDEODRIVER=dummy %s/bin/iskra play out/fx_motion/pen.ini --follow pen --fixed-clock --no-panel "
+             "--frames 8 --script 'move:20,50 wait:1 move:180,50 wait:2 canvas-shot:out/fx_motion/pen.png' "
+             ">/dev/null 2>&1",
+             refimg_build_dir());
+    cr_assert_eq(system(cmd), 0, "%s", cmd);
+    isk_canvas c;
+    isk_error err;
+    cr_assert_eq(isk_png_read(&c, "out/fx_motion/pen.png", &err), ISK_OK, "%s", err.message);
+    /* one frame from x = 20 to 180 at 3000/s: 50 births, 3.2 px apart */
+    int lit = 0, last = -1, gap = 0;
+    for (int x = 0; x < c.width; x++)
+        if (isk_canvas_get(&c, x, 50).r > 128) {
+            if (last >= 0 && x - last > gap)
+                gap = x - last;
+            last = x;
+            lit++;
+        }
+    cr_assert_geq(lit, 45, "%d pixels lit", lit);
+    cr_assert_leq(gap, 4, "a gap of %d px", gap);
+    isk_canvas_free(&c);
+    snprintf(cmd, sizeof cmd, "SDL_VIDEODRIVER=dummy %s/bin/iskra play out/fx_motion/pen.ini --follow nib --frames 1 "
+                              ">/dev/null 2>&1", refimg_build_dir());
+    int rc = system(cmd);
+    cr_assert(WIFEXITED(rc) && WEXITSTATUS(rc) == 2, "an unknown emitter is a usage error");
 }
