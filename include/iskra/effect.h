@@ -34,9 +34,10 @@
  * Only the effects a scene calls for are simulated.  Each emitter's stage list
  * holds exactly what that emitter needs, in this order:
  *     frame start: walls of draw_before_bounce, timed explosions;
- *     every substep: remember positions (only with deflectors) -> forces it
- *     references + integrator (blocked) -> slowing -> oscillation -> walls ->
- *     deflectors -> ageing; then births (streams) -> culling
+ *     every substep: field (radial/tangential accelerations, turbulence) ->
+ *     remember positions (only with deflectors) -> forces it references +
+ *     integrator (blocked) -> slowing -> oscillation -> walls -> deflectors ->
+ *     ageing; then the local-space carry -> births (streams) -> culling
  * and its draw routine: colour/alpha/size over life (only with gradients) ->
  * draw.  A force no emitter references, a zero-strength force, a disabled
  * potential, or a potential switched off by its maximum distance is not in
