@@ -34,9 +34,10 @@
  * Only the effects a scene calls for are simulated.  Each emitter's stage list
  * holds exactly what that emitter needs, in this order:
  *     frame start: walls of draw_before_bounce, timed explosions;
- *     every substep: remember positions (only with deflectors) -> forces it
- *     references + integrator (blocked) -> slowing -> oscillation -> walls ->
- *     deflectors -> ageing; then births (streams) -> culling
+ *     every substep: field (radial/tangential accelerations, turbulence) ->
+ *     remember positions (only with deflectors) -> forces it references +
+ *     integrator (blocked) -> slowing -> oscillation -> walls -> deflectors ->
+ *     ageing; then the local-space carry -> births (streams) -> culling
  * and its draw routine: colour/alpha/size over life (only with gradients) ->
  * draw.  A force no emitter references, a zero-strength force, a disabled
  * potential, or a potential switched off by its maximum distance is not in
@@ -93,6 +94,7 @@ typedef enum isk_force_kind {
     ISK_FORCE_DRAG,        /* F = -b*v                          (thesis Otpor) */
     ISK_FORCE_WIND,        /* a constant acceleration: F = m*accel (fire thesis's wind) */
     ISK_FORCE_POTENTIAL,   /* the thesis's Coulomb potential (iskra/forces.h) */
+    ISK_FORCE_TURBULENCE,  /* a divergence-free noise field: an acceleration, whatever the mass */
     ISK_FORCE_KIND_COUNT
 } isk_force_kind;
 
@@ -108,6 +110,15 @@ typedef struct isk_force_def {
     isk_coulomb_law law;   /* POTENTIAL: how exponent reads: the code's P or the text's p */
     int draw;              /* POTENTIAL: draw as a disc of radius 0.1 with its id while on */
     int line;              /* where it was defined (scene files), 0 if unknown */
+
+    /* turbulence (issue 14, motion): a = strength * curl psi, psi a smooth
+     * gradient noise psi(x/scale, y/scale, speed*t) seeded from the scene's
+     * seed and the force's index.  The curl is taken in the noise's own
+     * coordinates (x/scale), so |a| is of the order of strength at any
+     * scale, and the field has no divergence: it stirs, never gathers. */
+    double strength;       /* TURBULENCE: units/s^2 (0: not in any list) */
+    double scale;          /* TURBULENCE: the feature size in world units (> 0) */
+    double speed;          /* TURBULENCE: how fast the pattern evolves (noise units per second) */
 } isk_force_def;
 
 /* ---- deflectors --------------------------------------------------------- */
@@ -169,6 +180,13 @@ typedef struct isk_scalar_ramp {
     int n;                                         /* 0 = off */
     isk_scalar_stop stops[ISK_GRADIENT_MAX_STOPS];
 } isk_scalar_ramp;
+
+/* Where a stream's particles live (isk_emitter_def.space). */
+typedef enum isk_space {
+    ISK_SPACE_WORLD = 0, /* born on the emitter's path, then on their own */
+    ISK_SPACE_LOCAL,     /* carried along by the emitter's motion every substep */
+    ISK_SPACE_COUNT
+} isk_space;
 
 typedef struct isk_emitter_def {
     char name[ISK_NAME_MAX];
@@ -242,6 +260,18 @@ typedef struct isk_emitter_def {
     char preset[ISK_NAME_MAX]; /* the preset (iskra/presets.h) that filled it, "" for none; set by
                                   isk_preset_apply (scene files: `preset = NAME`); only a record:
                                   the fields hold what the preset set */
+    /* motion (issue 14): how emitters and particles move.  Each is a stage
+     * only for the emitters that use it (isk_effect_describe shows it). */
+    double radial_accel;       /* units/s^2 away from the emitter's current position (negative:
+                                  towards it); none exactly at the position */
+    double tangential_accel;   /* units/s^2 perpendicular to that, counter-clockwise for positive */
+    isk_vec2 emitter_velocity; /* STREAM: the emitter moves, position(t) = position + v*t, and births
+                                  are placed on that path at their exact birth times */
+    isk_space space;           /* STREAM: WORLD (default), or LOCAL: the particles move with the emitter */
+    double duration;           /* STREAM: emits for this many seconds from start, then stops (0: forever) */
+    int loop;                  /* STREAM with a duration: starts again every duration, bursts included */
+    double prewarm;            /* STREAM: seconds simulated before frame 0 (whole frames of dt;
+                                  frame 0 shows the emitter as it is after them) */
 } isk_emitter_def;
 
 /* Static drawings (the triangles of figures 1-8, labels): drawn each frame
@@ -296,7 +326,8 @@ typedef struct isk_show_def {
 
 /* Names as scene files spell them, indexed by value (one table per enum;
  * the parser, describe, error messages and `iskra keys` all read these). */
-extern const char *const isk_force_kind_names[ISK_FORCE_KIND_COUNT];     /* gravity drag wind potential */
+extern const char *const isk_force_kind_names[ISK_FORCE_KIND_COUNT];     /* gravity drag wind potential turbulence */
+extern const char *const isk_space_names[ISK_SPACE_COUNT];               /* world local */
 extern const char *const isk_source_names[ISK_SOURCE_KIND_COUNT];        /* particle explosion layer stream */
 extern const char *const isk_rate_mode_names[ISK_RATE_MODE_COUNT];       /* accumulate thesis */
 extern const char *const isk_birth_mode_names[ISK_BIRTH_MODE_COUNT];     /* backdate thesis-jitter frame */

@@ -32,6 +32,16 @@
  *                                     10^96 over six decades of distance
  *   a bounce with restitution > 1     saturates: the speed is capped at ISK_SPEED_LIMIT
  *                                     (iskra/impact.h)
+ *   prewarm (simulated before         range 0..ISK_PREWARM_MAX seconds, and at most
+ *   frame 0, at create and reset)     ISK_PREWARM_MAX_STEPS substeps of the emitter's own:
+ *                                     create and reset run them before returning, so their
+ *                                     time must stay bounded (10^5 substeps of a full
+ *                                     10^4-particle fire are a few seconds); a longer
+ *                                     warm-up is a mistake, not a wish
+ *   turbulence scale                  range [ISK_TURBULENCE_SCALE_MIN, ISK_COORD_MAX]: x/scale
+ *                                     stays finite; noise coordinates beyond 2^52 (where a
+ *                                     double has no fraction left) are clamped there
+ *   stream duration                   range 0..ISK_DURATION_MAX seconds
  *
  * With these, every sum and product the simulation forms stays finite for
  * any run of up to 10^8 frames of the longest step (10^14 simulated
@@ -75,6 +85,11 @@ extern "C" {
 #define ISK_PRESET_SCALE_MAX 1e6     /* a preset's scale (iskra/presets.h): its largest length, speed
                                         or acceleration, 300 cocos2d points x 1e4, stays far inside
                                         every limit above */
+/* issue 14, motion */
+#define ISK_PREWARM_MAX 3600.0       /* seconds of prewarm ... */
+#define ISK_PREWARM_MAX_STEPS 100000 /* ... and at most this many of the emitter's substeps */
+#define ISK_TURBULENCE_SCALE_MIN 1e-9 /* world units */
+#define ISK_DURATION_MAX 1e9         /* seconds a stream's emission cycle may last */
 
 #ifdef __cplusplus
 }

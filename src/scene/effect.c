@@ -86,6 +86,25 @@ static isk_status populate(isk_effect *e, fx_group *g)
     return s;
 }
 
+static isk_status step_group(isk_effect *e, fx_group *g);
+
+/* prewarm (issue 14): the group alone runs its whole frames before frame
+ * 0, exactly as it would run frames 0..n-1 (its clock is the frame count
+ * times the frame's time, as the effect's); from then on its clock is n
+ * frames ahead of the effect's, which still starts at 0.  Potentials stand
+ * still meanwhile (they move with the effect's frames). */
+static isk_status prewarm(isk_effect *e, fx_group *g)
+{
+    const double n = fx_prewarm_frames(&e->def, g->def); /* bounded by the check (iskra/limits.h) */
+    isk_status s = ISK_OK;
+    for (long f = 0; f < (long)n && s == ISK_OK; f++) {
+        g->frame_offset = f;
+        s = step_group(e, g);
+    }
+    g->frame_offset = (long)n;
+    return s != ISK_OK ? s : fx_compile(e, g);
+}
+
 /* Builds all groups from the definition: the state right after create. */
 static isk_status build(isk_effect *e, isk_error *err)
 {
@@ -112,6 +131,8 @@ static isk_status build(isk_effect *e, isk_error *err)
         if ((s = populate(e, g)) != ISK_OK)
             return isk_error_set(err, s, "emitter '%s': cannot create its particles: %s", em->name,
                                  isk_status_str(s));
+        if ((s = prewarm(e, g)) != ISK_OK)
+            return isk_error_set(err, s, "emitter '%s': cannot prewarm: %s", em->name, isk_status_str(s));
     }
     if (d->click.at_start && d->click.after_frames == 0) {
         isk_status s = isk_effect_click(e, d->click.x, d->click.y);
@@ -259,13 +280,16 @@ static isk_status step_group(isk_effect *e, fx_group *g)
     const isk_effect_def *d = &e->def;
     const int N = g->substeps;
     const double h = d->dt / (double)N / d->speed_divisor;
-    isk_status s = run_steps(e, g, g->frame_start, g->nframe_start, e->time, h * (double)N);
+    const double time = fx_group_time(e, g); /* e->time unless a prewarm ran */
+    isk_status s = run_steps(e, g, g->frame_start, g->nframe_start, time, h * (double)N);
     for (int j = 0; s == ISK_OK && j < N; j++) {
+        if (g->has_field)
+            fx_field_clock(g, time + h * j);
         if (g->parallel)
             e->scratch.nonfinite |= isk_pipeline_run_pool(&g->pipeline, &g->store, 0, g->store.count, h, e->pool);
         else
             isk_pipeline_run(&g->pipeline, &g->store, 0, g->store.count, h, &e->scratch);
-        s = run_steps(e, g, g->substep_end, g->nsubstep_end, e->time + h * j, h);
+        s = run_steps(e, g, g->substep_end, g->nsubstep_end, time + h * j, h);
         if (e->scratch.nonfinite) { /* never kept or drawn: removed and counted (iskra/limits.h) */
             g->removed_nonfinite += isk_particles_remove_nonfinite(&g->store);
             e->scratch.nonfinite = 0;

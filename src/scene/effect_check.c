@@ -9,6 +9,7 @@
 #include <string.h>
 
 #include "effect_internal.h"
+#include "iskra/limits.h"
 #include "iskra/shape.h"
 #include "key_value.h"
 
@@ -156,6 +157,14 @@ static isk_status check_emitter(ctx *c)
     }
     default:
         break;
+    }
+    /* issue 14, motion: a prewarm runs at create and reset, so it is bounded (iskra/limits.h) */
+    if (e->source == ISK_SOURCE_STREAM && e->prewarm > 0) {
+        const double steps = fx_prewarm_frames(d, e) * (double)(e->substeps ? e->substeps : d->substeps);
+        if (!(steps <= ISK_PREWARM_MAX_STEPS))
+            return bad_key(c, "prewarm", "%.15g s is %.15g substeps of this emitter at dt %.15g; at most %d "
+                                         "(iskra/limits.h)",
+                           e->prewarm, steps, d->dt, ISK_PREWARM_MAX_STEPS);
     }
     if (e->slow_faithful && e->slowing > 0) {
         /* The thesis order is a fused constant-acceleration kernel. */

@@ -3,9 +3,10 @@
  * only order they ever run:
  *
  *   frame start:  late walls (draw_before_bounce) -> release (timed explosions)
- *   pipeline:     remember (deflectors, sound walls) -> drift | integrate -> slow ->
+ *   pipeline:     field (radial, tangential, turbulence) -> remember (deflectors, sound walls) ->
+ *                 drift | integrate -> slow ->
  *                 oscillate -> walls -> deflect -> age
- *   substep end:  spawn (streams) -> cull (finite lives, killing deflectors)
+ *   substep end:  carry (local space) -> spawn (streams) -> cull (finite lives, killing deflectors)
  *
  * A force no emitter references, a zero-strength force, a disabled
  * potential, or a potential switched off by its maximum distance is in no
@@ -39,6 +40,7 @@ static void gather_forces(isk_effect *e, fx_group *g)
                     g->pick[np++] = k;
             }
             break;
+        case ISK_FORCE_TURBULENCE: break; /* the field stage's (gather_field) */
         default: break;
         }
     }
@@ -48,6 +50,27 @@ static void gather_forces(isk_effect *e, fx_group *g)
     f->pick = g->pick;
     f->npick = np;
     f->centre = d->centre;
+}
+
+/* The field stage's terms (issue 14, motion): the emitter-centred
+ * accelerations and every referenced turbulence of non-zero strength,
+ * seeded from the scene's seed and the force's index.  Its clock (time,
+ * emitter position) is the frame loop's to set. */
+static int gather_field(isk_effect *e, fx_group *g)
+{
+    const isk_effect_def *d = &e->def;
+    const isk_emitter_def *em = g->def;
+    isk_field *f = &g->field;
+    f->radial = em->radial_accel;
+    f->tangential = em->tangential_accel;
+    f->nturb = 0;
+    for (int i = 0; i < em->nforces && f->nturb < ISK_FIELD_MAX_TURB; i++) {
+        const isk_force_def *fd = &d->forces[em->forces[i]];
+        if (fd->kind == ISK_FORCE_TURBULENCE && fd->strength != 0)
+            f->turb[f->nturb++] =
+                isk_field_turbulence(fd->strength, fd->scale, fd->speed, isk_noise_key(d->seed, em->forces[i]));
+    }
+    return f->radial != 0 || f->tangential != 0 || f->nturb > 0;
 }
 
 #define ADD(kind) ((st = isk_pipeline_add(&g->pipeline, &(kind))) != NULL)
@@ -110,6 +133,11 @@ isk_status fx_compile(isk_effect *e, fx_group *g)
     if (em->source == ISK_SOURCE_EXPLOSION && (em->start > 0 || em->explosion == ISK_EXPLOSION_MULTI_COULOMB))
         g->frame_start[g->nframe_start++] = &fx_step_release;
 
+    if ((g->has_field = gather_field(e, g)) != 0) {
+        if (!ADD(isk_stage_field))
+            return ISK_ERR_FULL;
+        st->u.field.f = &g->field;
+    }
     if ((g->ndefl || step_walls) && !ADD(isk_stage_remember))
         return ISK_ERR_FULL;
     /* Constant accelerations with the thesis's integrator fold into one
@@ -179,6 +207,8 @@ isk_status fx_compile(isk_effect *e, fx_group *g)
     if (mortal && !ADD(isk_stage_age))
         return ISK_ERR_FULL;
 
+    if (em->source == ISK_SOURCE_STREAM && em->space == ISK_SPACE_LOCAL)
+        g->substep_end[g->nsubstep_end++] = &fx_step_carry;
     if (em->source == ISK_SOURCE_STREAM)
         g->substep_end[g->nsubstep_end++] = &fx_step_spawn;
     if (mortal)

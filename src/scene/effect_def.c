@@ -7,7 +7,9 @@
 #include "effect_internal.h"
 #include "key_value.h"
 
-const char *const isk_force_kind_names[ISK_FORCE_KIND_COUNT] = {"gravity", "drag", "wind", "potential"};
+const char *const isk_force_kind_names[ISK_FORCE_KIND_COUNT] = {"gravity", "drag", "wind", "potential",
+                                                                           "turbulence"};
+const char *const isk_space_names[ISK_SPACE_COUNT] = {"world", "local"};
 const char *const isk_source_names[ISK_SOURCE_KIND_COUNT] = {"particle", "explosion", "layer", "stream"};
 const char *const isk_rate_mode_names[ISK_RATE_MODE_COUNT] = {"accumulate", "thesis"};
 const char *const isk_birth_mode_names[ISK_BIRTH_MODE_COUNT] = {"backdate", "thesis-jitter", "frame"};

@@ -30,6 +30,7 @@
 #include "iskra/effect.h"
 #include "iskra/gradient.h"
 #include "iskra/sinlut.h"
+#include "sim/field.h"
 #include "sim/stage.h"
 
 typedef struct fx_group fx_group;
@@ -102,6 +103,19 @@ struct fx_group {
     size_t dropped;                /* spawns lost to a full pool */
     size_t removed_nonfinite;      /* particles removed because their state went non-finite */
 
+    /* motion (issue 14: effect_stream.c, src/sim/stage_field.c) */
+    isk_field field;               /* the field stage's terms, and its clock (set every substep) */
+    int has_field;                 /* the field stage is in the pipeline */
+    long frame_offset;             /* prewarm: the frames this group ran before frame 0 */
+    isk_vec2 path_base;            /* position(t) = path_base + emitter_velocity*(t - path_t) ... */
+    double path_t;
+    isk_vec2 path_from;            /* ... except during a live move: from path_from at path_t0 */
+    double path_t0, path_t1;       /*     to the path's position at path_t1 */
+    isk_vec2 carried;              /* local space: where the particles were last carried to */
+    double cycle_start;            /* duration streams: the time cycle 0 begins */
+    double cycle_births;           /* duration streams: accumulator births since cycle_start */
+    double cycle_bursts;           /* duration streams: bursts since cycle_start */
+
     /* baked over-life tables (effect_render.c) */
     isk_color_gradient color_ramp;
     isk_scalar_gradient alpha_ramp, size_ramp;
@@ -163,6 +177,22 @@ extern const fx_step_kind fx_step_cull;       /* substep end: age >= life */
 /* effect_stream.c */
 void fx_stream_reset(fx_group *g, double time);
 extern const fx_step_kind fx_step_spawn;      /* substep end: births in (t0, t0 + h] */
+extern const fx_step_kind fx_step_carry;      /* substep end, before spawn: local space */
+/* The group's clock at the current frame: the effect's time, plus the
+ * frames a prewarm ran before frame 0. */
+double fx_group_time(const isk_effect *e, const fx_group *g);
+/* Where the emitter is at time t (its path; em: its definition, which may
+ * be an older copy than g->def during a live change). */
+isk_vec2 fx_emitter_pos(const fx_group *g, const isk_emitter_def *em, double t);
+/* Sets the field stage's clock to time t (and the emitter's position then). */
+void fx_field_clock(fx_group *g, double t);
+/* A live change of the emitter's position or velocity (old: the
+ * definition before it): the path continues from where the emitter is
+ * now; a new position is reached over the next frame, the births of that
+ * frame spread along the way. */
+void fx_path_changed(isk_effect *e, fx_group *g, const isk_emitter_def *old, const char *key);
+/* The whole frames a prewarm runs (a double: it may be beyond any count). */
+double fx_prewarm_frames(const isk_effect_def *d, const isk_emitter_def *em);
 
 /* effect_render.c */
 isk_status fx_render(isk_effect *e, isk_canvas *c);

@@ -13,9 +13,20 @@
  * draws, iskra/shape.h), velocity (the generator's), mass (one uniform, only
  * with a mass range), life (one, only with a life range), oscillation
  * (omega then amplitude, then the phase with osc_random_phase; only with
- * oscillation), jitter (one, only in the thesis jitter mode). */
+ * oscillation), jitter (one, only in the thesis jitter mode).
+ *
+ * Moving emitters (issue 14): the emitter's path is position(t) = base +
+ * emitter_velocity*(t - t_base), computed directly at every birth time,
+ * never accumulated, so a birth at time tb is placed around position(tb)
+ * whatever the frame rate.  A live change of the position starts a segment
+ * from where the emitter is to the new position over the next frame, so
+ * an emitter dragged around leaves no gaps.  In local space the particles
+ * are carried by the emitter's motion (fx_step_carry) and are born around
+ * its position at the end of the step.  A stream with a duration emits in
+ * cycles (run_cycles). */
 #include <math.h>
 #include <stdint.h>
+#include <string.h>
 
 #include "effect_internal.h"
 #include "iskra/shape.h"
@@ -49,19 +60,138 @@ void fx_stream_reset(fx_group *g, double time)
     g->next_burst = g->def->count > 0 ? g->def->start + time : INFINITY;
     g->origin = g->def->start + time;
     g->emitted = 0;
+    g->path_base = g->def->pos;
+    g->path_t = time;
+    g->path_t0 = g->path_t1 = -INFINITY;
+    g->carried = g->def->pos;
+    g->cycle_start = g->def->start + time;
+    g->cycle_births = g->cycle_bursts = 0;
+}
+
+/* ---- the emitter's path -------------------------------------------------------- */
+
+double fx_group_time(const isk_effect *e, const fx_group *g)
+{
+    if (!g->frame_offset)
+        return e->time;
+    /* as isk_effect_step computes the effect's time: multiplied, not summed */
+    return (double)(e->frame + g->frame_offset) * (e->def.dt / e->def.speed_divisor);
+}
+
+static isk_vec2 on_path(const fx_group *g, const isk_emitter_def *em, double t)
+{
+    const isk_vec2 v = em->emitter_velocity;
+    if (v.x == 0 && v.y == 0)
+        return g->path_base;
+    isk_vec2 p = {g->path_base.x + v.x * (t - g->path_t), g->path_base.y + v.y * (t - g->path_t)};
+    return p;
+}
+
+isk_vec2 fx_emitter_pos(const fx_group *g, const isk_emitter_def *em, double t)
+{
+    if (em->source != ISK_SOURCE_STREAM)
+        return em->pos;
+    if (t < g->path_t1) {
+        const isk_vec2 a = g->path_from, b = on_path(g, em, g->path_t1);
+        double f = (t - g->path_t0) / (g->path_t1 - g->path_t0);
+        if (!(f > 0))
+            return a;
+        isk_vec2 p = {a.x + (b.x - a.x) * f, a.y + (b.y - a.y) * f};
+        return p;
+    }
+    return on_path(g, em, t);
+}
+
+void fx_field_clock(fx_group *g, double t)
+{
+    const isk_vec2 c = fx_emitter_pos(g, g->def, t);
+    g->field.t = t;
+    g->field.cx = c.x;
+    g->field.cy = c.y;
+}
+
+void fx_path_changed(isk_effect *e, fx_group *g, const isk_emitter_def *old, const char *key)
+{
+    const double now = fx_group_time(e, g);
+    const isk_vec2 here = fx_emitter_pos(g, old, now);
+    if (!strcmp(key, "position")) {
+        /* the new position is reached at the end of the next frame */
+        const double t1 = now + e->def.dt / e->def.speed_divisor;
+        g->path_from = here;
+        g->path_t0 = now;
+        g->path_t1 = t1;
+        g->path_base = g->def->pos;
+        g->path_t = t1;
+    } else if (!strcmp(key, "emitter_velocity")) {
+        /* the path goes on from here with the new velocity (a live move
+         * under way keeps its end point) */
+        if (now < g->path_t1) {
+            g->path_base = on_path(g, old, g->path_t1);
+            g->path_t = g->path_t1;
+        } else {
+            g->path_base = here;
+            g->path_t = now;
+        }
+    }
+}
+
+/* The emitter moves, or has been moved live (its path is then no longer
+ * its definition's position alone). */
+static int moving(const fx_group *g, const isk_emitter_def *em)
+{
+    return em->emitter_velocity.x != 0 || em->emitter_velocity.y != 0 || g->path_t1 > -INFINITY;
+}
+
+/* Local space: every particle moves by what the emitter moved since they
+ * were last carried (a difference of directly computed positions, so the
+ * carries add up to the emitter's whole way). */
+static isk_status run_carry(isk_effect *e, fx_group *g, double t0, double h)
+{
+    (void)e;
+    const isk_vec2 to = fx_emitter_pos(g, g->def, t0 + h);
+    const double dx = to.x - g->carried.x, dy = to.y - g->carried.y;
+    g->carried = to;
+    if (dx == 0 && dy == 0)
+        return ISK_OK;
+    isk_particles *p = &g->store;
+    for (size_t i = 0; i < p->count; i++) {
+        p->x[i] += dx;
+        p->y[i] += dy;
+    }
+    return ISK_OK;
+}
+
+static void describe_carry(const isk_effect *e, const fx_group *g, FILE *out)
+{
+    (void)e;
+    (void)g;
+    fprintf(out, "local space: the particles move with the emitter");
+}
+
+const fx_step_kind fx_step_carry = {"carry", run_carry, describe_carry};
+
+double fx_prewarm_frames(const isk_effect_def *d, const isk_emitter_def *em)
+{
+    if (!(em->prewarm > 0) || em->source != ISK_SOURCE_STREAM)
+        return 0;
+    double n = floor(em->prewarm / (d->dt / d->speed_divisor) + 0.5);
+    return n < 1 ? 1 : n;
 }
 
 /* Where and how fast new particles start: built once per spawn call. */
 typedef struct launcher {
     isk_shape shape;
     isk_velgen launch;
+    int moving;    /* the shape's centre follows the emitter's path */
+    double place;  /* local space: every birth is placed at this time (the step's end); else NAN */
+    double t1;     /* the step's end */
 } launcher;
 
 /* One new particle: position, velocity and mass drawn here, lifetime and
  * oscillation by fx_adopt, then its first moments: back-dated births run the
  * group's own pipeline on it for its age; the thesis's jitter applies a
  * random whole number of milliseconds of the external force. */
-static isk_status birth(isk_effect *e, fx_group *g, const launcher *l, double age)
+static isk_status birth(isk_effect *e, fx_group *g, const launcher *l, double age, double tb)
 {
     const isk_emitter_def *em = g->def;
     isk_particles *p = &g->store;
@@ -70,7 +200,17 @@ static isk_status birth(isk_effect *e, fx_group *g, const launcher *l, double ag
         return ISK_OK;
     }
     double x, y, vx, vy;
-    isk_shape_sample(&l->shape, &g->rng, &x, &y);
+    if (l->moving) {
+        isk_shape s = l->shape;
+        /* birth = frame: born, and so placed, at the end of the step */
+        const double at = !isnan(l->place) ? l->place : em->birth == ISK_BIRTH_FRAME ? l->t1 : tb;
+        const isk_vec2 c = fx_emitter_pos(g, em, at);
+        s.cx = c.x;
+        s.cy = c.y;
+        isk_shape_sample(&s, &g->rng, &x, &y);
+    } else {
+        isk_shape_sample(&l->shape, &g->rng, &x, &y);
+    }
     isk_velgen_sample(&l->launch, &g->rng, &vx, &vy);
     if (em->launch == ISK_VELGEN_DISC) {
         vx += em->vel.x;
@@ -84,8 +224,16 @@ static isk_status birth(isk_effect *e, fx_group *g, const launcher *l, double ag
     fx_adopt(e, g, i);
     switch (em->birth) {
     case ISK_BIRTH_BACKDATE:
-        if (age > 0)
+        if (age > 0) {
+            /* the field acts from the birth: its time, the emitter there */
+            const double kt = g->field.t, kx = g->field.cx, ky = g->field.cy;
+            if (g->has_field)
+                fx_field_clock(g, tb);
             isk_pipeline_run(&g->pipeline, p, i, i + 1, age, &e->scratch);
+            g->field.t = kt;
+            g->field.cx = kx;
+            g->field.cy = ky;
+        }
         break;
     case ISK_BIRTH_THESIS_JITTER: {
         /* (rand() % msec) / 1000 s of the external force and a position step. */
@@ -148,7 +296,8 @@ static isk_status run_bursts(isk_effect *e, fx_group *g, const launcher *l, doub
             drop(g, (due - j) * (double)em->count);
             break;
         }
-        double age = t1 - (nb + j * every);
+        const double tb = nb + j * every;
+        double age = t1 - tb;
         if (age < 0)
             age = 0;
         if (isfinite(em->life) && age >= life_max) {
@@ -157,12 +306,137 @@ static isk_status run_bursts(isk_effect *e, fx_group *g, const launcher *l, doub
             continue; /* dead on arrival: the whole burst */
         }
         for (size_t k = 0; k < em->count; k++) {
-            isk_status s = birth(e, g, l, em->birth == ISK_BIRTH_THESIS_JITTER ? h : age);
+            isk_status s = birth(e, g, l, em->birth == ISK_BIRTH_THESIS_JITTER ? h : age, tb);
             if (s != ISK_OK)
                 return s;
         }
     }
     return ISK_OK;
+}
+
+/* ---- streams with a duration ------------------------------------------------------
+ *
+ * Cycle c covers [S + c*D, S + (c+1)*D) (S: start, D: duration); its
+ * births are at S + c*D + k/rate for k = 1..n, n = floor(rate*D) (exactly
+ * rate*D when that is a whole number, up to a billionth), and its bursts
+ * at S + c*D + j*burst_every for the m values of j with j*burst_every < D
+ * (one with burst_every = 0).  Without loop there is cycle 0 only.  A
+ * birth or burst is numbered from S on, and its time computed from its
+ * number directly, so no sum drifts over many cycles. */
+
+static double whole(double x) { return floor(x + 1e-9 * (x > 1.0 ? x : 1.0)); }
+
+static double births_per_cycle(const isk_emitter_def *em)
+{
+    return em->rate > 0 ? whole(em->rate * em->duration) : 0.0;
+}
+
+static double bursts_per_cycle(const isk_emitter_def *em)
+{
+    if (em->count == 0)
+        return 0;
+    if (!(em->burst_every > 0))
+        return 1;
+    const double x = em->duration / em->burst_every;
+    const double m = ceil(x - 1e-9 * (x > 1.0 ? x : 1.0));
+    return m < 1 ? 1 : m;
+}
+
+/* The time of event number i (0, 1, ...) of n per cycle, the k-th (from 0)
+ * of its cycle at offset(k). */
+static double event_time(const fx_group *g, double i, double n, double k_scale, double k_first)
+{
+    const double c = floor(i / n), k = i - c * n;
+    return g->cycle_start + c * g->def->duration + (k + k_first) * k_scale;
+}
+
+/* How many of the events with n per cycle are due by time t: within a
+ * cycle those up to offset (t - cycle's start), as computed by `within`. */
+static double events_due(const fx_group *g, double t, double n, double k_scale, double k_first)
+{
+    const isk_emitter_def *em = g->def;
+    if (!(t >= g->cycle_start) || n <= 0)
+        return 0;
+    const double D = em->duration, c = floor((t - g->cycle_start) / D);
+    if (!em->loop && c >= 1)
+        return n;
+    double in = floor((t - g->cycle_start - c * D) / k_scale) + 1.0 - k_first;
+    in = in < 0 ? 0 : in > n ? n : in;
+    return c * n + in;
+}
+
+/* One kind of event (bursts: `count` births each; births: one each) due in
+ * the step ending at t1.  Every turn is an event born, the pool's end (the
+ * rest counted as dropped in one addition), or one of <= 3 dead ones. */
+static isk_status run_events(isk_effect *e, fx_group *g, const launcher *l, double t1, double h, double *done,
+                             double n, double k_scale, double k_first, size_t each)
+{
+    const isk_emitter_def *em = g->def;
+    const double t1_tol = t1 + 1e-9 * (t1 > 1.0 ? t1 : 1.0);
+    const double life_max = em->life + em->life_range;
+    if (n <= 0 || each == 0)
+        return ISK_OK;
+    if (isfinite(life_max)) {
+        /* those dead already are never created: skip all but the last one */
+        double oldest = events_due(g, t1 - life_max, n, k_scale, k_first) - 1.0;
+        if (oldest > *done)
+            *done = oldest;
+    }
+    int doa = 0;
+    for (;;) {
+        if (!em->loop && *done >= n)
+            break; /* the one cycle is over */
+        const double tb = event_time(g, *done, n, k_scale, k_first);
+        if (tb > t1_tol)
+            break;
+        if (room_left(g) == 0) {
+            double left = events_due(g, t1_tol, n, k_scale, k_first) - *done;
+            if (left < 1)
+                left = 1;
+            *done += left;
+            drop(g, left * (double)each);
+            break;
+        }
+        *done += 1;
+        double age = t1 - tb;
+        if (age < 0)
+            age = 0;
+        if (isfinite(em->life) && age >= life_max) {
+            if (++doa > 2)
+                break;
+            continue;
+        }
+        double a = em->birth == ISK_BIRTH_BACKDATE ? age : (em->birth == ISK_BIRTH_THESIS_JITTER ? h : 0.0);
+        for (size_t k = 0; k < each; k++) {
+            isk_status s = birth(e, g, l, a, tb);
+            if (s != ISK_OK)
+                return s;
+        }
+    }
+    return ISK_OK;
+}
+
+static isk_status run_cycles(isk_effect *e, fx_group *g, const launcher *l, double t0, double h)
+{
+    const isk_emitter_def *em = g->def;
+    const double t1 = t0 + h;
+    const double every = em->burst_every > 0 ? em->burst_every : em->duration;
+    isk_status s = run_events(e, g, l, t1, h, &g->cycle_bursts, bursts_per_cycle(em), every, 0.0, em->count);
+    if (s != ISK_OK || !(em->rate > 0))
+        return s;
+    if (em->rate_mode == ISK_RATE_THESIS) {
+        /* the thesis's rounding per frame, in the steps that start within a cycle */
+        if (!(t0 >= g->cycle_start) || (!em->loop && t0 >= g->cycle_start + em->duration))
+            return ISK_OK;
+        double want = floor(h * em->rate + 0.5);
+        double take = fmin(want, (double)room_left(g));
+        for (size_t j = 0; j < (size_t)take; j++)
+            if ((s = birth(e, g, l, em->birth == ISK_BIRTH_THESIS_JITTER ? h : 0.0, t1)) != ISK_OK)
+                return s;
+        drop(g, want - take);
+        return ISK_OK;
+    }
+    return run_events(e, g, l, t1, h, &g->cycle_births, births_per_cycle(em), 1.0 / em->rate, 1.0, 1);
 }
 
 /* The births due in (t0, t0 + h], each created at t0 + h and advanced by
@@ -176,8 +450,17 @@ static isk_status run_spawn(isk_effect *e, fx_group *g, double t0, double h)
     /* A birth due within a nanosecond of the step's end belongs to this step:
      * 30 steps of 1/30 s and 144 of 1/144 s must agree on "t = 1 s". */
     const double t1_tol = t1 + 1e-9 * (t1 > 1.0 ? t1 : 1.0);
-    const launcher l = {shape_of(em), velgen_of(em)};
+    launcher l = {shape_of(em), velgen_of(em), moving(g, em), NAN, t1};
+    if (em->space == ISK_SPACE_LOCAL)
+        l.place = t1;
+    if (l.moving) {
+        const isk_vec2 c = fx_emitter_pos(g, em, t1);
+        l.shape.cx = c.x;
+        l.shape.cy = c.y;
+    }
     isk_status s;
+    if (em->duration > 0)
+        return run_cycles(e, g, &l, t0, h);
 
     /* Bursts first: they are scheduled events. */
     if (g->next_burst <= t1_tol && (s = run_bursts(e, g, &l, t1, t1_tol, h)) != ISK_OK)
@@ -190,7 +473,7 @@ static isk_status run_spawn(isk_effect *e, fx_group *g, double t0, double h)
         double want = floor(h * em->rate + 0.5); /* <= 10^10: clamped before any integer cast */
         double take = fmin(want, (double)room_left(g));
         for (size_t j = 0; j < (size_t)take; j++)
-            if ((s = birth(e, g, &l, em->birth == ISK_BIRTH_THESIS_JITTER ? h : 0.0)) != ISK_OK)
+            if ((s = birth(e, g, &l, em->birth == ISK_BIRTH_THESIS_JITTER ? h : 0.0, t1)) != ISK_OK)
                 return s;
         drop(g, want - take);
         return ISK_OK;
@@ -228,7 +511,7 @@ static isk_status run_spawn(isk_effect *e, fx_group *g, double t0, double h)
             continue; /* would be dead already: never created */
         }
         double a = em->birth == ISK_BIRTH_BACKDATE ? age : (em->birth == ISK_BIRTH_THESIS_JITTER ? h : 0.0);
-        if ((s = birth(e, g, &l, a)) != ISK_OK)
+        if ((s = birth(e, g, &l, a, tb)) != ISK_OK)
             return s;
     }
     return ISK_OK;
@@ -241,6 +524,10 @@ static void describe_spawn(const isk_effect *e, const fx_group *g, FILE *out)
     /* In the scene file's words: key = value. */
     fprintf(out, "%g/s, rate_mode %s, birth %s", em->rate, isk_rate_mode_names[em->rate_mode],
             isk_birth_mode_names[em->birth]);
+    if (em->duration > 0)
+        fprintf(out, ", for %g s%s", em->duration, em->loop ? " in a loop" : "");
+    if (em->emitter_velocity.x != 0 || em->emitter_velocity.y != 0)
+        fprintf(out, ", along the emitter's path at (%g, %g)/s", em->emitter_velocity.x, em->emitter_velocity.y);
 }
 
 const fx_step_kind fx_step_spawn = {"spawn", run_spawn, describe_spawn};

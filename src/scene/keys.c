@@ -48,6 +48,7 @@ static const isk_key_word table_words[] = {{"true", ISK_SINLUT_FLOOR}, {"false",
 #define DRAG BIT(ISK_FORCE_DRAG)
 #define WIND BIT(ISK_FORCE_WIND)
 #define POT BIT(ISK_FORCE_POTENTIAL)
+#define TURB BIT(ISK_FORCE_TURBULENCE)
 
 /* ---- [deflector NAME]: isk_deflector_def ---------------------------------- */
 
@@ -180,6 +181,15 @@ static const isk_key keys[] = {
      .meaning = "the potential moves by velocity*dt/speed_divisor per frame"},
     {FORCE("draw"), .type = ISK_KEY_BOOL, FRC(draw), .applies = POT, .dflt = "true", .live = ALL,
      .meaning = "draw it as a disc of radius 0.1 with its number, while it is on"},
+
+    /* [force NAME] turbulence (issue 14, motion: src/sim/stage_field.c) */
+    {FORCE("strength"), .type = ISK_KEY_NUMBER, FRC(strength), .applies = TURB, STRENGTH, .dflt = "0", .live = ALL,
+     .meaning = "a = strength * curl psi (units/s^2): a divergence-free stirring, the same for every mass"},
+    {FORCE("scale"), .type = ISK_KEY_NUMBER, FRC(scale), .applies = TURB,
+     IN(ISK_TURBULENCE_SCALE_MIN, ISK_COORD_MAX), .dflt = "1", .live = ALL,
+     .meaning = "the size of the swirls, world units"},
+    {FORCE("speed"), .type = ISK_KEY_NUMBER, FRC(speed), .applies = TURB, IN(-1e6, 1e6), .dflt = "0", .live = ALL,
+     .meaning = "how fast the swirls change: noise cells per second along psi's time axis (0: a still field)"},
 
     /* [deflector NAME] */
     {DEFL("segment"), .type = ISK_KEY_NUMBERS4, SEG(x0), .required = ALL, .what = "x0, y0, x1, y1",
@@ -350,6 +360,25 @@ static const isk_key keys[] = {
     {EMITTER("order"), .type = ISK_KEY_WHOLE, EM(order), IN(-1000000, 1000000), .dflt = "0",
      .dflt_doc = "its definition index", .live = ALL,
      .meaning = "draw order (lower first; ties by definition order)"},
+
+    /* [emitter NAME] motion (issue 14: src/sim/stage_field.c, src/scene/effect_stream.c) */
+    {EMITTER("radial_accel"), .type = ISK_KEY_NUMBER, EM(radial_accel), STRENGTH, .dflt = "0", .live = ALL,
+     .meaning = "units/s^2 away from the emitter's current position (negative: towards it; none exactly on it)"},
+    {EMITTER("tangential_accel"), .type = ISK_KEY_NUMBER, EM(tangential_accel), STRENGTH, .dflt = "0", .live = ALL,
+     .meaning = "units/s^2 perpendicular to the radial direction, counter-clockwise for positive (orbits)"},
+    {EMITTER("emitter_velocity"), .type = ISK_KEY_VECTOR, EM(emitter_velocity), .applies = S_S, SPEED,
+     .dflt = "0, 0", .live = S_S,
+     .meaning = "the emitter moves: position(t) = position + v*t, births placed on the path at their exact times"},
+    {EMITTER("space"), .type = ISK_KEY_ENUM, EM(space), .applies = S_S, NAMES(isk_space_names), .dflt = "world",
+     .live = S_S, .meaning = "world: particles leave the emitter behind; local: they move with it"},
+    {EMITTER("duration"), .type = ISK_KEY_NUMBER, EM(duration), .applies = S_S, IN(0, ISK_DURATION_MAX),
+     .dflt = "0", .what = "a number of seconds", .meaning = "emit for this many seconds from start, then stop "
+                                                             "(0: forever); floor(rate*duration) per cycle"},
+    {EMITTER("loop"), .type = ISK_KEY_BOOL, EM(loop), .applies = S_S, .dflt = "false",
+     .meaning = "with a duration: start again every duration seconds, bursts included"},
+    {EMITTER("prewarm"), .type = ISK_KEY_NUMBER, EM(prewarm), .applies = S_S, IN(0, ISK_PREWARM_MAX), .dflt = "0",
+     .what = "a number of seconds",
+     .meaning = "simulated before frame 0 (rounded to whole frames), so the effect is already going in frame 0"},
 
     /* [drawing NAME] */
     {DRAWING("kind"), .type = ISK_KEY_ENUM, DRW(kind), NAMES(isk_drawing_kind_names), .dflt = "polyline",

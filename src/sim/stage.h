@@ -90,6 +90,7 @@ struct isk_stage {
             int can_kill;                                    /* some segment kills: life = -inf */
             double drag;                                     /* the motion's linear drag b */
         } deflect;
+        struct { const struct isk_field *f; } field;         /* isk_stage_field (src/sim/field.h) */
     } u;
 };
 
@@ -124,6 +125,7 @@ int isk_pipeline_run_pool(const isk_pipeline *pl, isk_particles *p, size_t begin
 void isk_pipeline_describe(const isk_pipeline *pl, FILE *out);
 
 /* The stage kinds, in the only order they ever appear in a list. */
+extern const isk_stage_kind isk_stage_field;      /* position-dependent accelerations (src/sim/field.h) */
 extern const isk_stage_kind isk_stage_remember;   /* the state before the move (bounces at impact) */
 extern const isk_stage_kind isk_stage_drift;      /* constant acceleration + semi-implicit Euler, no mass */
 extern const isk_stage_kind isk_stage_drift_slow; /* the same with the fire thesis's slowing in between */

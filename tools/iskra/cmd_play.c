@@ -32,7 +32,8 @@
 static void help(FILE *f)
 {
     fprintf(f, "usage: iskra play SCENE [--frames N] [--fixed-clock] [--script EVENTS] [--ui-scale N]\n"
-               "                  [--no-panel] [--save PATH] [--seed N] [--size WxH] [--dt S] [--substeps N]\n"
+               "                  [--no-panel] [--save PATH] [--follow EMITTER] [--seed N] [--size WxH] [--dt S]\n"
+               "                  [--substeps N]\n"
                "  Runs the scene in a window with the thesis's simulator console beside it: every\n"
                "  control changes the running scene (iskra keys lists what each accepts).\n"
                "  mouse: a click on the canvas sets off the chosen explosion or adds a potential;\n"
@@ -46,6 +47,8 @@ static void help(FILE *f)
                "                   machine can: the same --script gives the same pixels (tests)\n"
                "  --ui-scale N     size of the panel, 1..4 (default: the largest that fits the screen)\n"
                "  --no-panel       start with the panel hidden (Tab shows it)\n"
+               "  --follow EMITTER the stream emitter goes where the mouse is over the canvas; the\n"
+               "                   births of each step spread along its way (no gaps)\n"
                "  --save PATH      where F2 writes the scene (default iskra-SCENE.ini)\n"
                "  --shots DIR      where F12 / F11 screenshots go, created if missing (default:\n"
                "                   the current directory)\n");
@@ -183,6 +186,10 @@ int cmd_play(int argc, char **argv)
                 return 2;
             }
             p.shots = v;
+        } else if ((r = arg_value("play", argc, argv, &i, "--follow", &v)) != 0) {
+            if (r < 0)
+                return 2;
+            p.follow = v;
         } else if ((r = arg_value("play", argc, argv, &i, "--script", &v)) != 0) {
             if (r < 0)
                 return 2;
@@ -206,6 +213,17 @@ int cmd_play(int argc, char **argv)
         return rc;
     }
     isk_effect_def_free(&def);
+    if (p.follow) {
+        const isk_effect_def *fd = isk_effect_definition(p.fx);
+        int k = isk_effect_def_find_emitter(fd, p.follow);
+        if (k < 0 || fd->emitters[k].source != ISK_SOURCE_STREAM) {
+            fprintf(stderr, "iskra play: --follow %s: %s\n", p.follow,
+                    k < 0 ? "no emitter of that name" : "not a stream emitter (only a stream's position is live)");
+            isk_effect_destroy(p.fx);
+            play_script_free(&p.script);
+            return 2;
+        }
+    }
     struct stat st;
     p.path = stat(p.args.scene, &st) == 0 && S_ISREG(st.st_mode) ? p.args.scene : NULL;
     play_remember_file(&p);

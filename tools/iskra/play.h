@@ -99,6 +99,7 @@ typedef struct player {
     /* time */
     isk_timestep ts;
     int fixed_clock;
+    const char *follow;        /* --follow: the emitter the mouse moves (NULL: none) */
     int paused, physics_off, failed, quit;
     long frames_shown;
     double elapsed;            /* real seconds since start */

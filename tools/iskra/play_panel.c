@@ -410,6 +410,20 @@ static void next_potential_name(const isk_effect_def *d, char *out, size_t n)
     }
 }
 
+/* --follow: the emitter goes where the pointer is; a live position spreads
+ * the next step's births along the way there, so it leaves no gaps. */
+static void follow_mouse(player *p, double wx, double wy)
+{
+    const isk_effect_def *d = isk_effect_definition(p->fx);
+    int k = isk_effect_def_find_emitter(d, p->follow);
+    if (k < 0 || (d->emitters[k].pos.x == wx && d->emitters[k].pos.y == wy))
+        return;
+    char sec[ISK_NAME_MAX + 16], v[80];
+    snprintf(sec, sizeof sec, "emitter %s", p->follow);
+    snprintf(v, sizeof v, "%.17g, %.17g", wx, wy);
+    play_set(p, sec, "position", v);
+}
+
 void play_canvas(player *p)
 {
     isk_ui_area_state a = isk_ui_area(&p->ui, "canvas", p->lay.canvas);
@@ -419,6 +433,8 @@ void play_canvas(player *p)
     const double off = d->fidelity == ISK_FIDELITY_THESIS ? 0.0 : 0.5;
     double wx, wy;
     isk_view_to_world(isk_effect_view(p->fx), a.x + off, a.y + off, &wx, &wy);
+    if (p->follow && a.hover)
+        follow_mouse(p, wx, wy);
     if (a.pressed) {
         int k = potential_at(p, a.x + 0.5, a.y + 0.5);
         if (k >= 0) {

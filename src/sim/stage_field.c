@@ -1,0 +1,88 @@
+/* The field stage (src/sim/field.h, src/sim/stage.h): v += a(x, y, t)*h for
+ * the accelerations that depend on where a particle is, before the move.
+ *
+ * It runs first in the list, ahead of the forces and the integrator, so
+ * the particle moves with the kicked velocity: for the field's part this
+ * is the semi-implicit (symplectic) Euler step, which keeps an orbit
+ * around a radial pull closed where a kick after the move would spiral
+ * outwards.  Before the remember stage too: walls and deflectors see a
+ * step that starts from the kicked velocity, as their flight assumes. */
+#include <math.h>
+
+#include "sim/field.h"
+#include "sim/stage.h"
+
+isk_field_turb isk_field_turbulence(double strength, double scale, double speed, uint64_t key)
+{
+    isk_field_turb t = {strength, 1.0 / scale, speed, key};
+    return t;
+}
+
+/* The unit vector from the centre; none (zero) exactly on it, and a
+ * length that overflows is measured by hypot. */
+static void direction(double dx, double dy, double *ux, double *uy)
+{
+    double r = sqrt(dx * dx + dy * dy);
+    if (!(r < INFINITY))
+        r = hypot(dx, dy);
+    if (r > 0.0 && r < INFINITY) {
+        *ux = dx / r;
+        *uy = dy / r;
+    } else {
+        *ux = *uy = 0.0;
+    }
+}
+
+static void accel(const isk_field *f, double x, double y, double *ax, double *ay)
+{
+    double a = 0.0, b = 0.0;
+    if (f->radial != 0.0 || f->tangential != 0.0) {
+        double ux, uy;
+        direction(x - f->cx, y - f->cy, &ux, &uy);
+        a = f->radial * ux - f->tangential * uy;
+        b = f->radial * uy + f->tangential * ux;
+    }
+    for (int k = 0; k < f->nturb; k++) {
+        const isk_field_turb *t = &f->turb[k];
+        double pu, pv;
+        isk_noise3(t->key, x * t->inv_scale, y * t->inv_scale, t->speed * f->t, &pu, &pv);
+        /* the curl of a stream function: (dpsi/dy, -dpsi/dx), divergence-free */
+        a += t->strength * pv;
+        b -= t->strength * pu;
+    }
+    *ax = a;
+    *ay = b;
+}
+
+void isk_field_accel(const isk_field *f, double x, double y, double *ax, double *ay)
+{
+    accel(f, x, y, ax, ay);
+}
+
+static void run_field(const isk_stage *st, isk_block *b, double h)
+{
+    const isk_field *f = st->u.field.f;
+    for (size_t i = 0; i < b->n; i++) {
+        double ax, ay;
+        accel(f, b->x[i], b->y[i], &ax, &ay);
+        b->vx[i] += ax * h;
+        b->vy[i] += ay * h;
+    }
+}
+
+static void describe_field(const isk_stage *st, FILE *out)
+{
+    const isk_field *f = st->u.field.f;
+    int any = 0;
+    if (f->radial != 0)
+        fprintf(out, "%sradial %g", any++ ? ", " : "", f->radial);
+    if (f->tangential != 0)
+        fprintf(out, "%stangential %g (counter-clockwise)", any++ ? ", " : "", f->tangential);
+    for (int k = 0; k < f->nturb; k++)
+        fprintf(out, "%sturbulence strength %g scale %g speed %g", any++ ? ", " : "", f->turb[k].strength,
+                1.0 / f->turb[k].inv_scale, f->turb[k].speed);
+    if (!any)
+        fprintf(out, "none");
+}
+
+const isk_stage_kind isk_stage_field = {"field", run_field, describe_field};
