@@ -26,6 +26,7 @@ static const preset_case cases[] = {
     {"preset_fountain", isk_preset_fountain, 0, 0, 1, -3.5, 3.5, -3.5, 3.5, 200, 200, 300},
     {"preset_snow", isk_preset_snow, 0, 1.6, 1, -2.4, 2.4, -1.6, 1.6, 240, 160, 3600},
     {"preset_explosion", isk_preset_explosion, 0, 0, 1, -4, 4, -4, 4, 200, 200, 90},
+    {"preset_galaxy", isk_preset_galaxy, 0, 0, 1, -2, 2, -2, 2, 240, 240, 400},
 };
 
 static void render_case(const preset_case *pc, isk_canvas *c, isk_effect **keep)

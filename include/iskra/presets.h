@@ -1,5 +1,5 @@
 /* iskra/presets.h — ready-made stream emitters: fire, smoke, sparks,
- * fountain, snow and explosion.
+ * fountain, snow, explosion and galaxy.
  *
  * Each function appends one emitter to an effect definition (and, when it
  * needs gravity, one GRAVITY force named "<name>_gravity" that only this
@@ -89,7 +89,9 @@ int isk_preset_fire(isk_effect_def *d, const char *name, isk_vec2 pos, double sc
 /* cocos2d ParticleSmoke: overpaint, grey (204) darkening to black over life
  * 4 +- 1 s, 200 particles at 50/s from a 0.4-wide line, speed 0.25 +- 0.1 up
  * +- 5 degrees, size 0.6; plus an alpha fade 0.5 -> 0 (cocos2d's smoke
- * texture is translucent; iskra's sprites are not). */
+ * texture is translucent; iskra's sprites are not), and ours: its own
+ * TURBULENCE force "<name>_turbulence" (strength 15, scale 30, speed 0.25/s)
+ * that stirs the plume into wisps. */
 int isk_preset_smoke(isk_effect_def *d, const char *name, isk_vec2 pos, double scale);
 
 /* Sparks (no cocos2d preset; modelled on ParticleFireworks with hot
@@ -115,6 +117,15 @@ int isk_preset_snow(isk_effect_def *d, const char *name, isk_vec2 pos, double sc
  * speed 0.7 +- 0.4, life 5 +- 2 s, size 0.15, red (178, 25, 51) fading to
  * a transparent grey (128), overpaint, no gravity. */
 int isk_preset_explosion(isk_effect_def *d, const char *name, isk_vec2 pos, double scale);
+
+/* A galaxy (ours; cocos2d's ParticleGalaxy's radial and tangential
+ * accelerations fill a round blob from its point): 3000 particles at 500/s
+ * born at rest (+- 3) on a line 360 long through pos, pulled in by
+ * radial_accel -40, turned counter-clockwise by tangential_accel 25 against
+ * slowing 0.6, so the line's halves wind into two arms around a bright
+ * core; life 6 +- 1 s, size 6, cocos's blue through violet to a warm white,
+ * transparent at both ends, additive. */
+int isk_preset_galaxy(isk_effect_def *d, const char *name, isk_vec2 pos, double scale);
 
 #ifdef __cplusplus
 }
