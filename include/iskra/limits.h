@@ -72,6 +72,12 @@ extern "C" {
 #define ISK_FORCE_LIMIT 1e150        /* a potential's force saturates here (iskra/forces.h) */
 #define ISK_P_MIN 0.0                /* a potential's P: |F| ~ d^(1-P), at most a spring's d */
 #define ISK_P_MAX 17.0               /* ... at least d^-16 */
+/* |spin| and spin_range, degrees per second: a thousand turns a second, far
+ * past any visible spin.  One step turns by at most 2 * 6284 rad/s *
+ * ISK_DT_MAX < 1.3e7 rad, which the spin stage's wrap into [-pi, pi)
+ * reduces with an error below 1e-8 rad, so an angle never grows and
+ * never loses its precision however long the particle lives. */
+#define ISK_SPIN_MAX 360000.0
 
 #ifdef __cplusplus
 }

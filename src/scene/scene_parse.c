@@ -390,9 +390,13 @@ static isk_status derived_defaults(parser *P, section *s)
         return ISK_OK;
     }
     if (s->type == ISK_SECTION_EMITTER) {
-        const isk_emitter_def *e = &d->emitters[s->index];
+        isk_emitter_def *e = &d->emitters[s->index];
         if (e->source == ISK_SOURCE_STREAM && e->rate == 0 && e->count == 0)
             return fail_at(P, s, line_of(s, "rate"), NULL, "a stream needs rate > 0 or a burst count > 0");
+        char why[400];
+        const char *key;
+        if (fx_looks_find_texture(e, P->name, &key, why, sizeof why) != ISK_OK) /* the texture beside the file */
+            return fail_at(P, s, line_of(s, key), key, "%s", why);
         return ISK_OK;
     }
     if (s->type != ISK_SECTION_BOUNDS)

@@ -90,6 +90,7 @@ struct isk_stage {
             int can_kill;                                    /* some segment kills: life = -inf */
             double drag;                                     /* the motion's linear drag b */
         } deflect;
+        struct { double spin, spin_range; } spin;           /* isk_stage_spin: for describe only (rad/s) */
     } u;
 };
 
@@ -132,6 +133,7 @@ extern const isk_stage_kind isk_stage_slow;       /* v *= max(0, 1 - slowing*h) 
 extern const isk_stage_kind isk_stage_oscillate;  /* the fire thesis's horizontal sway (ISK_PARTICLES_OSC) */
 extern const isk_stage_kind isk_stage_walls;      /* isk_bounds_apply_step (after remember) */
 extern const isk_stage_kind isk_stage_deflect;    /* deflector segments */
+extern const isk_stage_kind isk_stage_spin;       /* angle += spin*h, wrapped (ISK_PARTICLES_ANGLE) */
 extern const isk_stage_kind isk_stage_age;        /* age += h */
 
 #endif
