@@ -38,14 +38,17 @@ static int same_item(const void *a, const void *b, size_t size, size_t line_offs
  * values (copied into zeroed ramps). */
 static void canonical_ramps(isk_emitter_def *e)
 {
-    isk_color_ramp c;
-    memset(&c, 0, sizeof c);
-    c.n = e->color_over_life.n;
-    for (int i = 0; i < ISK_GRADIENT_MAX_STOPS; i++) {
-        c.stops[i].t = e->color_over_life.stops[i].t;
-        c.stops[i].color = e->color_over_life.stops[i].color;
+    isk_color_ramp *cr[2] = {&e->color_over_life, &e->color_pick};
+    for (int k = 0; k < 2; k++) {
+        isk_color_ramp c;
+        memset(&c, 0, sizeof c);
+        c.n = cr[k]->n;
+        for (int i = 0; i < ISK_GRADIENT_MAX_STOPS; i++) {
+            c.stops[i].t = cr[k]->stops[i].t;
+            c.stops[i].color = cr[k]->stops[i].color;
+        }
+        *cr[k] = c;
     }
-    e->color_over_life = c;
     isk_scalar_ramp *r[2] = {&e->alpha_over_life, &e->size_over_life};
     for (int k = 0; k < 2; k++) {
         isk_scalar_ramp s;
@@ -81,6 +84,10 @@ static int same_definition(const isk_effect_def *a, const isk_effect_def *b)
         isk_emitter_def p = a->emitters[i], q = b->emitters[i];
         canonical_ramps(&p);
         canonical_ramps(&q);
+        /* Which preset filled it is a record the writer leaves out: the
+         * values it set are written, key by key. */
+        memset(p.preset, 0, sizeof p.preset);
+        memset(q.preset, 0, sizeof q.preset);
         if (!same_item(&p, &q, sizeof p, offsetof(isk_emitter_def, line), "emitter", i))
             return 0;
     }

@@ -37,9 +37,11 @@
  *     every substep: field (radial/tangential accelerations, turbulence) ->
  *     remember positions (only with deflectors) -> forces it references +
  *     integrator (blocked) -> slowing -> oscillation -> walls -> deflectors ->
- *     ageing; then the local-space carry -> births (streams) -> culling
+ *     spin (only where an angle is seen and spins) -> ageing; then the
+ *     local-space carry -> births (streams) -> culling
  * and its draw routine: colour/alpha/size over life (only with gradients) ->
- * draw.  A force no emitter references, a zero-strength force, a disabled
+ * draw (a texture or a streak: the looks block of isk_emitter_def).  A
+ * force no emitter references, a zero-strength force, a disabled
  * potential, or a potential switched off by its maximum distance is not in
  * any list (the last leaves at the end of the frame in which it switched
  * off), so it costs nothing and changes nothing.  isk_effect_describe()
@@ -169,6 +171,18 @@ typedef enum isk_draw_mode {
     ISK_DRAW_COUNT
 } isk_draw_mode;
 
+/* How a particle's sprite is turned (the looks block of isk_emitter_def). */
+typedef enum isk_align_mode {
+    ISK_ALIGN_NONE = 0,      /* by its angle only (rotation, spin) */
+    ISK_ALIGN_VELOCITY,      /* along its velocity on screen, atan2(vy, vx), plus its angle */
+    ISK_ALIGN_COUNT
+} isk_align_mode;
+/* align = velocity without a texture draws the sprite kind as a streak this
+ * many times its size long (and its size wide). */
+#define ISK_STREAK_STRETCH 4.0
+/* The longest texture path, terminator included. */
+#define ISK_TEXTURE_PATH_MAX 256
+
 /* Over-life ramps: piecewise-linear in normalised age t = age/life, stops as
  * in iskra/gradient.h (baked once into tables at create). */
 typedef struct isk_color_ramp {
@@ -260,6 +274,7 @@ typedef struct isk_emitter_def {
     char preset[ISK_NAME_MAX]; /* the preset (iskra/presets.h) that filled it, "" for none; set by
                                   isk_preset_apply (scene files: `preset = NAME`); only a record:
                                   the fields hold what the preset set */
+
     /* motion (issue 14): how emitters and particles move.  Each is a stage
      * only for the emitters that use it (isk_effect_describe shows it). */
     double radial_accel;       /* units/s^2 away from the emitter's current position (negative:
@@ -272,6 +287,28 @@ typedef struct isk_emitter_def {
     int loop;                  /* STREAM with a duration: starts again every duration, bursts included */
     double prewarm;            /* STREAM: seconds simulated before frame 0 (whole frames of dt;
                                   frame 0 shows the emitter as it is after them) */
+
+    /* looks (issue 14): rotation, spin, size and colour variation, textures
+     * and flipbooks (docs/scene-format.md, "The looks of a particle").  At
+     * their defaults none of them costs or changes anything: the angle
+     * column and the spin stage exist only with a rotation or spin, each
+     * random draw only with its range (and after every other draw of the
+     * birth), the size and colour columns only with size_range and
+     * color_pick. */
+    double rotation, rotation_range; /* initial angle + U*range, radians (keys in degrees),
+                                        counter-clockwise in the world */
+    double spin, spin_range;   /* angular speed + U*range, rad/s (keys in deg/s); angles wrap into
+                                  [-pi, pi) */
+    isk_align_mode align;      /* VELOCITY: turned along the velocity (textures, and sprites as
+                                  streaks ISK_STREAK_STRETCH times longer than wide) */
+    double size_range;         /* size = size + U*size_range, world units (the size column) */
+    isk_color_ramp color_pick; /* n > 0: base colour = these stops at a uniform t at birth, multiplied
+                                  channel by channel by colour_over_life (div255(a*b)) */
+    char texture[ISK_TEXTURE_PATH_MAX]; /* "": none; else a PNG drawn as the sprite (the parser makes
+                                  a relative path relative to the scene file; C: as given) */
+    isk_vec2 texture_grid;     /* cols, rows of a sprite sheet (whole numbers 1..256; default 1, 1) */
+    double texture_fps;        /* 0: the frames play once over the life, floor(t*frames); > 0: at this
+                                  rate of age, wrapping */
 } isk_emitter_def;
 
 /* Static drawings (the triangles of figures 1-8, labels): drawn each frame
@@ -335,6 +372,7 @@ extern const char *const isk_draw_mode_names[ISK_DRAW_COUNT];            /* dot 
 extern const char *const isk_drawing_kind_names[ISK_DRAWING_KIND_COUNT]; /* polyline disc text polygon sprite */
 extern const char *const isk_units_names[2];                             /* world pixels (isk_drawing_def.pixels) */
 extern const char *const isk_view_kind_names[ISK_VIEWDEF_COUNT];         /* window camera */
+extern const char *const isk_align_names[ISK_ALIGN_COUNT];               /* none velocity */
 
 typedef struct isk_effect_def {
     int width, height;         /* canvas, default 600x600 */

@@ -90,6 +90,12 @@ extern "C" {
 #define ISK_PREWARM_MAX_STEPS 100000 /* ... and at most this many of the emitter's substeps */
 #define ISK_TURBULENCE_SCALE_MIN 1e-9 /* world units */
 #define ISK_DURATION_MAX 1e9         /* seconds a stream's emission cycle may last */
+/* |spin| and spin_range, degrees per second: a thousand turns a second, far
+ * past any visible spin.  One step turns by at most 2 * 6284 rad/s *
+ * ISK_DT_MAX < 1.3e7 rad, which the spin stage's wrap into [-pi, pi)
+ * reduces with an error below 1e-8 rad, so an angle never grows and
+ * never loses its precision however long the particle lives. */
+#define ISK_SPIN_MAX 360000.0
 
 #ifdef __cplusplus
 }

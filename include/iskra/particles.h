@@ -6,7 +6,8 @@
  * allocated only when the scene asks (flags at init), otherwise NULL:
  * per-particle colour (ISK_PARTICLES_COLOR), size (ISK_PARTICLES_SIZE) and
  * the fire thesis's horizontal oscillation (ISK_PARTICLES_OSC: amplitude,
- * phase, angular speed and the offset already applied).  Every column moves
+ * phase, angular speed and the offset already applied), the sprite's angle
+ * and angular speed (ISK_PARTICLES_ANGLE).  Every column moves
  * with its particle: growth, removal and culling treat them all alike.
  *
  * Example:
@@ -47,7 +48,9 @@ enum {
     ISK_PARTICLES_COLOR = 1u << 0, /* allocate the colour array */
     ISK_PARTICLES_SIZE = 1u << 1,  /* allocate the size array */
     ISK_PARTICLES_OSC = 1u << 2,   /* allocate the four oscillation arrays */
-    ISK_PARTICLES_FLAGS = 7u       /* every flag */
+    /* looks (issue 14) */
+    ISK_PARTICLES_ANGLE = 1u << 3, /* allocate the angle and spin arrays */
+    ISK_PARTICLES_FLAGS = 15u      /* every flag */
 };
 
 /* Largest capacity a store accepts (about 2.7e8 particles; more is an error,
@@ -66,6 +69,9 @@ typedef struct isk_particles {
     double *osc_phase;
     double *osc_omega;
     double *osc_offset;  /* the offset already added to x */
+    /* looks (issue 14): NULL unless ISK_PARTICLES_ANGLE (new particles: 0) */
+    double *angle;       /* radians, counter-clockwise in the world, kept in [-pi, pi) */
+    double *spin;        /* rad/s */
     unsigned flags;
     isk_color default_color; /* given to new particles when color != NULL (yellow) */
     double default_size;     /* given to new particles when size != NULL (0.1) */

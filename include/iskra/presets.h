@@ -80,8 +80,8 @@ int isk_preset_add(isk_effect_def *d, const char *preset, const char *name, isk_
  * line, draw order and position (what `preset = NAME, SCALE` does in a
  * scene file); e->preset records the name.  Errors: ISK_ERR_NULL,
  * ISK_ERR_RANGE (unknown preset, emitter out of range, scale not in
- * (0, ISK_PRESET_SCALE_MAX]), ISK_ERR_FULL (no room for its force; the
- * emitter is then as it was). */
+ * (0, ISK_PRESET_SCALE_MAX]), ISK_ERR_FULL (no room for its forces),
+ * ISK_ERR_NOMEM; on error the definition is as it was. */
 isk_status isk_preset_apply(isk_effect_def *d, int emitter, const char *preset, double scale);
 
 int isk_preset_fire(isk_effect_def *d, const char *name, isk_vec2 pos, double scale);

@@ -19,12 +19,14 @@ static void free_group(fx_group *g)
     free(g->pick);
     free(g->defl);
     fx_free_ramps(g);
+    fx_looks_free(g);
 }
 
 /* Room for the group's picks (its segments grow as it compiles). */
 static isk_status alloc_group(isk_effect *e, fx_group *g)
 {
-    isk_status s = isk_particles_init(&g->store, 0, fx_emitter_oscillates(g->def) ? ISK_PARTICLES_OSC : 0);
+    isk_status s = isk_particles_init(&g->store, 0,
+                                      (fx_emitter_oscillates(g->def) ? ISK_PARTICLES_OSC : 0) | fx_looks_columns(g->def));
     if (s != ISK_OK)
         return s;
     g->pick_cap = e->pots_cap;
@@ -124,7 +126,7 @@ static isk_status build(isk_effect *e, isk_error *err)
         if (s != ISK_OK)
             return isk_error_set(err, s, "emitter '%s': %s", em->name, isk_status_str(s));
         isk_rng_seed(&g->rng, fx_group_seed(d->seed, gi));
-        if ((s = fx_bake_ramps(g, err)) != ISK_OK)
+        if ((s = fx_bake_ramps(g, err)) != ISK_OK || (s = fx_looks_prepare(e, g, err)) != ISK_OK)
             return s;
         if ((s = fx_compile(e, g)) != ISK_OK)
             return isk_error_set(err, s, "emitter '%s': cannot compile: %s", em->name, isk_status_str(s));
@@ -216,6 +218,7 @@ void isk_effect_destroy(isk_effect *e)
     free(e->pots);
     free(e->pot_force);
     isk_sprite_cache_destroy(e->sprites);
+    isk_texture_cache_destroy(e->textures);
     fx_bins_free(&e->bins);
     isk_pool_destroy(e->pool);
     isk_effect_def_free(&e->def);

@@ -166,6 +166,10 @@ static isk_status check_emitter(ctx *c)
                                          "(iskra/limits.h)",
                            e->prewarm, steps, d->dt, ISK_PREWARM_MAX_STEPS);
     }
+    char why[200];
+    const char *looks = fx_looks_check(e, why, sizeof why);
+    if (looks)
+        return bad_key(c, looks, "%s", why);
     if (e->slow_faithful && e->slowing > 0) {
         /* The thesis order is a fused constant-acceleration kernel. */
         isk_integrator m = e->integrator == ISK_INTEGRATE_INHERIT ? d->integrator : e->integrator;

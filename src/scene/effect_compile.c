@@ -5,7 +5,7 @@
  *   frame start:  late walls (draw_before_bounce) -> release (timed explosions)
  *   pipeline:     field (radial, tangential, turbulence) -> remember (deflectors, sound walls) ->
  *                 drift | integrate -> slow ->
- *                 oscillate -> walls -> deflect -> age
+ *                 oscillate -> walls -> deflect -> spin -> age
  *   substep end:  carry (local space) -> spawn (streams) -> cull (finite lives, killing deflectors)
  *
  * A force no emitter references, a zero-strength force, a disabled
@@ -203,8 +203,16 @@ isk_status fx_compile(isk_effect *e, fx_group *g)
         st->u.deflect.can_kill = can_kill;
         st->u.deflect.drag = f->drag;
     }
+    if (g->store.angle && fx_looks_spins(em)) {
+        if (!ADD(isk_stage_spin))
+            return ISK_ERR_FULL;
+        st->u.spin.spin = em->spin;
+        st->u.spin.spin_range = em->spin_range;
+    }
     const int mortal = isfinite(em->life) || can_kill;
-    if (mortal && !ADD(isk_stage_age))
+    /* a flipbook played at a rate reads the age of immortal particles too */
+    const int flips = g->texture && g->texture->frames > 1 && em->texture_fps > 0;
+    if ((mortal || flips) && !ADD(isk_stage_age))
         return ISK_ERR_FULL;
 
     if (em->source == ISK_SOURCE_STREAM && em->space == ISK_SPACE_LOCAL)
@@ -251,4 +259,5 @@ void fx_describe_group(const isk_effect *e, const fx_group *g, FILE *out)
         fprintf(out, "  draw      %s, %s%s%s%s\n", isk_draw_mode_names[em->draw], isk_blend_name(em->blend),
                 g->has_color_ramp ? ", colour over life" : "", g->has_alpha_ramp ? ", alpha over life" : "",
                 g->has_size_ramp ? ", size over life" : "");
+    fx_looks_describe(g, out);
 }

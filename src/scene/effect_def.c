@@ -126,7 +126,7 @@ int fx_emitter_oscillates(const isk_emitter_def *em)
 /* What one emitter's pool takes at its fullest. */
 size_t fx_emitter_memory(const isk_emitter_def *e)
 {
-    unsigned flags = fx_emitter_oscillates(e) ? ISK_PARTICLES_OSC : 0;
+    unsigned flags = (fx_emitter_oscillates(e) ? ISK_PARTICLES_OSC : 0) | fx_looks_columns(e);
     size_t b = isk_particles_bytes(e->capacity, flags);
     return b ? b : SIZE_MAX;
 }

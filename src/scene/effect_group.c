@@ -17,7 +17,8 @@ uint64_t fx_group_seed(uint64_t seed, int index)
 /* Lifetime life + U*range (one uniform, only with a finite life and a
  * range), then the oscillation state: omega, amplitude, and with
  * osc_random_phase the phase (the offset starts where the sine is, so the
- * first step moves the particle by the change only). */
+ * first step moves the particle by the change only); last the looks
+ * (angle, spin, size, colour: effect_looks.c). */
 void fx_adopt(isk_effect *e, fx_group *g, size_t from)
 {
     const isk_emitter_def *em = g->def;
@@ -25,9 +26,7 @@ void fx_adopt(isk_effect *e, fx_group *g, size_t from)
     const int ranged = isfinite(em->life) && em->life_range > 0;
     for (size_t i = from; i < p->count; i++)
         p->life[i] = em->life + (ranged ? em->life_range * isk_rng_uniform(&g->rng) : 0.0);
-    if (!p->osc_amp)
-        return;
-    for (size_t i = from; i < p->count; i++) {
+    for (size_t i = from; p->osc_amp && i < p->count; i++) {
         p->osc_omega[i] = isk_rng_range(&g->rng, em->osc_omega_min, em->osc_omega_max);
         p->osc_amp[i] = isk_rng_range(&g->rng, em->osc_amp_min, em->osc_amp_max);
         p->osc_phase[i] = 0.0;
@@ -38,6 +37,8 @@ void fx_adopt(isk_effect *e, fx_group *g, size_t from)
             p->osc_offset[i] = p->osc_amp[i] * isk_sinlut_eval(&e->sin_table, em->osc_table, ph);
         }
     }
+    /* last: the looks' draws come after every draw above (effect_looks.c) */
+    fx_looks_adopt(g, from);
 }
 
 isk_status fx_fire_explosion(isk_effect *e, fx_group *g, isk_explosion kind, double cx, double cy, size_t count,

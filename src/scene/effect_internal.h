@@ -31,6 +31,7 @@
 #include "iskra/gradient.h"
 #include "iskra/sinlut.h"
 #include "sim/field.h"
+#include "iskra/texture.h"
 #include "sim/stage.h"
 
 typedef struct fx_group fx_group;
@@ -120,6 +121,11 @@ struct fx_group {
     isk_color_gradient color_ramp;
     isk_scalar_gradient alpha_ramp, size_ramp;
     int has_color_ramp, has_alpha_ramp, has_size_ramp;
+
+    /* looks (effect_looks.c, effect_texture.c) */
+    const isk_texture *texture;    /* drawn through effect_texture.c: the emitter's texture (the
+                                      effect's cache) or &streak; NULL: the usual draws */
+    isk_texture streak;            /* a sprite kind as a texture (align = velocity, size_range) */
 };
 
 struct isk_effect {
@@ -139,6 +145,7 @@ struct isk_effect {
     double last_frame_time;        /* potentials move by this at the next step */
     isk_sprite_cache *sprites;
     fx_bins bins;
+    isk_texture_cache *textures;   /* made at the first emitter with a texture (effect_looks.c) */
 };
 
 /* effect_check.c: validates a whole definition; messages name the item. */
@@ -204,5 +211,36 @@ isk_status fx_draw_bands(isk_effect *e, isk_canvas *c, fx_group *g, const fx_ban
 void fx_bins_free(fx_bins *b);
 isk_status fx_bake_ramps(fx_group *g, isk_error *err);
 void fx_free_ramps(fx_group *g);
+/* Particle i's colour and size multiplier (vary: whether anything varies
+ * per particle, varies(g)). */
+isk_color fx_style(const fx_group *g, const isk_particles *p, size_t i, int vary, double *mult);
+int fx_varies(const fx_group *g);
+
+/* effect_looks.c: rotation, spin, size and colour variation, textures. */
+/* The optional store columns the emitter's looks need (ISK_PARTICLES_*). */
+unsigned fx_looks_columns(const isk_emitter_def *em);
+/* The emitter's particles turn by themselves (spin or spin_range): the spin stage. */
+int fx_looks_spins(const isk_emitter_def *em);
+/* New particles [from, count): angle, spin, size, colour (after every other
+ * draw of their birth; a draw only where a range or color_pick asks). */
+void fx_looks_adopt(fx_group *g, size_t from);
+/* The emitter's texture loaded (through the effect's cache) or its streak
+ * baked, so the draw can choose effect_texture.c; messages name the path. */
+isk_status fx_looks_prepare(isk_effect *e, fx_group *g, isk_error *err);
+void fx_looks_free(fx_group *g);
+/* Adds the columns a live change needs; ISK_ERR_NOMEM. */
+isk_status fx_looks_live(fx_group *g);
+/* What spans the looks' keys: NULL, or the key at fault with why. */
+const char *fx_looks_check(const isk_emitter_def *em, char *why, size_t n);
+/* The parser's part: a relative texture path made relative to the scene
+ * file's directory (scene_name: the file's path), then the file's header
+ * read and the grid checked against its size.  Messages name the path;
+ * *key is the key at fault (texture, or texture_grid when it does not
+ * divide the image). */
+isk_status fx_looks_find_texture(isk_emitter_def *em, const char *scene_name, const char **key, char *why,
+                                 size_t n);
+void fx_looks_describe(const fx_group *g, FILE *out);
+/* effect_texture.c: the draw of textured particles and streaks. */
+isk_status fx_draw_textures(isk_effect *e, isk_canvas *c, fx_group *g, const fx_band *b);
 
 #endif

@@ -120,8 +120,15 @@ static inline isk_color particle_color(const fx_group *g, const isk_particles *p
                                        double *size_mult)
 {
     isk_color col = p->color ? p->color[i] : g->def->color;
-    if (g->has_color_ramp)
-        col = isk_color_gradient_at(&g->color_ramp, t);
+    if (g->has_color_ramp) {
+        isk_color ramp = isk_color_gradient_at(&g->color_ramp, t);
+        /* a picked base colour (color_pick) is multiplied, channel by
+         * channel, div255(base * ramp); otherwise the ramp is the colour */
+        if (g->def->color_pick.n && p->color)
+            ramp = isk_rgba((uint8_t)((col.r * ramp.r + 127) / 255), (uint8_t)((col.g * ramp.g + 127) / 255),
+                            (uint8_t)((col.b * ramp.b + 127) / 255), (uint8_t)((col.a * ramp.a + 127) / 255));
+        col = ramp;
+    }
     if (g->has_alpha_ramp) {
         double a = col.a * isk_scalar_gradient_at(&g->alpha_ramp, t);
         col.a = (uint8_t)(a >= 255.0 ? 255 : (a > 0 ? (int)(a + 0.5) : 0));
@@ -130,14 +137,14 @@ static inline isk_color particle_color(const fx_group *g, const isk_particles *p
     return col;
 }
 
-static int varies(const fx_group *g)
+int fx_varies(const fx_group *g)
 {
     return g->has_color_ramp || g->has_alpha_ramp || g->has_size_ramp || g->store.color;
 }
 
 /* Particle i's colour and size multiplier, constant unless something varies
  * (a group-level fact: the branch always goes the same way). */
-static inline isk_color style(const fx_group *g, const isk_particles *p, size_t i, int vary, double *mult)
+isk_color fx_style(const fx_group *g, const isk_particles *p, size_t i, int vary, double *mult)
 {
     *mult = 1.0;
     if (!vary)
@@ -177,7 +184,7 @@ static isk_status draw_styled_dots(isk_effect *e, isk_canvas *c, fx_group *g, co
         const size_t i = b->list ? b->list[k] : k;
         double X, Y, mult;
         screen_point(e, c, g, i, &X, &Y);
-        isk_color col = style(g, p, i, 1, &mult);
+        isk_color col = fx_style(g, p, i, 1, &mult);
         if (browser)
             ISK__BLEND_DISPATCH(blend, isk__dot_browser_rows, c, b->r0, b->r1, X, Y, col, NULL);
         else
@@ -211,7 +218,7 @@ static isk_status draw_styled_pixels(isk_effect *e, isk_canvas *c, fx_group *g, 
         const size_t i = b->list ? b->list[k] : k;
         double X, Y, mult;
         screen_point(e, c, g, i, &X, &Y);
-        isk_color col = style(g, p, i, 1, &mult);
+        isk_color col = fx_style(g, p, i, 1, &mult);
         if (X >= 0 && Y >= b->r0 && X < c->width && Y < b->r1)
             isk_draw_pixel(c, (int)X, (int)Y, col, g->def->blend);
     }
@@ -223,13 +230,14 @@ static isk_status draw_discs(isk_effect *e, isk_canvas *c, fx_group *g, const fx
 {
     (void)b;
     const isk_particles *p = &g->store;
-    const int vary = varies(g);
+    const int vary = fx_varies(g);
     const double scale = fabs(e->view.sx);
     for (size_t i = 0; i < p->count; i++) {
         double X, Y, mult;
         isk_view_to_screen(&e->view, p->x[i], p->y[i], &X, &Y);
-        isk_color col = style(g, p, i, vary, &mult);
-        isk_fill_circle_aa(c, X, Y, 0.5 * g->def->size * mult * scale, col, g->def->blend);
+        isk_color col = fx_style(g, p, i, vary, &mult);
+        const double size = p->size ? p->size[i] : g->def->size; /* size_range: its own */
+        isk_fill_circle_aa(c, X, Y, 0.5 * size * mult * scale, col, g->def->blend);
     }
     return ISK_OK;
 }
@@ -280,13 +288,13 @@ static isk_status prepare_sprites(isk_effect *e, fx_group *g, fx_band *b)
 static isk_status draw_sprites(isk_effect *e, isk_canvas *c, fx_group *g, const fx_band *b)
 {
     const isk_particles *p = &g->store;
-    const int vary = varies(g);
+    const int vary = fx_varies(g);
     const int tinted = g->has_color_ramp || g->has_alpha_ramp || p->color;
     const double scale = fabs(e->view.sx);
     for (size_t i = 0; i < p->count; i++) {
         double X, Y, mult;
         isk_view_to_screen(&e->view, p->x[i], p->y[i], &X, &Y);
-        isk_color col = style(g, p, i, vary, &mult);
+        isk_color col = fx_style(g, p, i, vary, &mult);
         const isk_sprite *spr = b->sprite[sprite_px(g, scale, mult)];
         if (spr)
             isk__draw_sprite_rows(c, spr, X, Y, tinted ? &col : NULL, g->def->blend, b->r0, b->r1);
@@ -305,7 +313,9 @@ static isk_status draw_nothing(isk_effect *e, isk_canvas *c, fx_group *g, const 
 
 fx_draw_fn fx_choose_draw(const fx_group *g)
 {
-    const int vary = varies(g);
+    const int vary = fx_varies(g);
+    if (g->texture && g->def->draw != ISK_DRAW_NONE)
+        return fx_draw_textures; /* a texture or a streak (effect_texture.c) */
     switch (g->def->draw) {
     case ISK_DRAW_DOT:
     case ISK_DRAW_DOT_BROWSER: return vary ? draw_styled_dots : draw_dots;
@@ -321,7 +331,7 @@ fx_draw_fn fx_choose_draw(const fx_group *g)
 static isk_status render_group(isk_effect *e, isk_canvas *c, fx_group *g)
 {
     fx_band whole = {.r0 = 0, .r1 = c->height};
-    if (g->def->draw == ISK_DRAW_SPRITE) {
+    if (g->draw == draw_sprites) {
         isk_status s = prepare_sprites(e, g, &whole);
         if (s != ISK_OK)
             return s;
@@ -331,7 +341,7 @@ static isk_status render_group(isk_effect *e, isk_canvas *c, fx_group *g)
     /* dots and pixels reach at most a row beyond their own (the margin
      * world_batch.h's binning keeps), so their bands can take only their
      * own particles; sprites reach far and read them all */
-    return fx_draw_bands(e, c, g, &whole, g->def->draw != ISK_DRAW_SPRITE);
+    return fx_draw_bands(e, c, g, &whole, g->draw != draw_sprites && g->draw != fx_draw_textures);
 }
 
 isk_status fx_render(isk_effect *e, isk_canvas *c)

@@ -13,6 +13,7 @@
 
 #include "iskra/effect.h"
 #include "iskra/limits.h"
+#include "iskra/texture.h"
 
 #define N(a) ((int)(sizeof(a) / sizeof((a)[0])))
 #define BIT(k) (1u << (k))
@@ -379,6 +380,31 @@ static const isk_key keys[] = {
     {EMITTER("prewarm"), .type = ISK_KEY_NUMBER, EM(prewarm), .applies = S_S, IN(0, ISK_PREWARM_MAX), .dflt = "0",
      .what = "a number of seconds",
      .meaning = "simulated before frame 0 (rounded to whole frames), so the effect is already going in frame 0"},
+    /* ---- looks (issue 14): rotation, spin, variation, textures and flipbooks ---- */
+    {EMITTER("rotation"), .type = ISK_KEY_ANGLE, EM(rotation), IN(-3600, 3600), .dflt = "0", .live = ALL,
+     .meaning = "initial angle, counter-clockwise (textures and streaks; a round sprite looks the same at every "
+                "angle)"},
+    {EMITTER("rotation_range"), .type = ISK_KEY_ANGLE, EM(rotation_range), IN(0, 3600), .dflt = "0", .live = ALL,
+     .meaning = "angle = rotation + U*rotation_range"},
+    {EMITTER("spin"), .type = ISK_KEY_ANGLE, EM(spin), IN(-ISK_SPIN_MAX, ISK_SPIN_MAX), .dflt = "0", .live = ALL,
+     .what = "degrees per second", .meaning = "angular speed, degrees per second (counter-clockwise)"},
+    {EMITTER("spin_range"), .type = ISK_KEY_ANGLE, EM(spin_range), IN(0, ISK_SPIN_MAX), .dflt = "0", .live = ALL,
+     .what = "degrees per second", .meaning = "angular speed = spin + U*spin_range"},
+    {EMITTER("align"), .type = ISK_KEY_ENUM, EM(align), NAMES(isk_align_names), .dflt = "none", .live = ALL,
+     .meaning = "velocity: turned along the velocity (a sprite kind becomes a streak 4 sizes long)"},
+    {EMITTER("size_range"), .type = ISK_KEY_NUMBER, EM(size_range), IN(0, 1e6), .dflt = "0", .live = ALL,
+     .meaning = "size = size + U*size_range, world units (fixed at birth)"},
+    {EMITTER("color_pick"), .type = ISK_KEY_COLOR_STOPS, EM(color_pick), .dflt = "off", .live = ALL,
+     .meaning = "base colour drawn from these stops at a uniform t at birth (color_over_life multiplies it)"},
+    {EMITTER("texture"), .type = ISK_KEY_TEXT, EM(texture), .aux = sizeof(((isk_emitter_def *)0)->texture),
+     .dflt = "", .dflt_doc = "none", .create_only = 1,
+     .meaning = "a PNG drawn as each particle (relative to the scene file), turned, scaled to size, tinted by "
+                "its colour"},
+    {EMITTER("texture_grid"), .type = ISK_KEY_VECTOR, EM(texture_grid), IN(1, ISK_TEXTURE_MAX_GRID),
+     .what = "cols, rows", .dflt = "1, 1", .create_only = 1,
+     .meaning = "the texture is a sprite sheet of cols x rows frames, played over the life"},
+    {EMITTER("texture_fps"), .type = ISK_KEY_NUMBER, EM(texture_fps), IN(0, 1e6), .dflt = "0", .live = ALL,
+     .meaning = "frames per second of age, wrapping (0: once over the life)"},
 
     /* [drawing NAME] */
     {DRAWING("kind"), .type = ISK_KEY_ENUM, DRW(kind), NAMES(isk_drawing_kind_names), .dflt = "polyline",

@@ -281,9 +281,13 @@ isk_status isk_preset_apply(isk_effect_def *d, int emitter, const char *preset, 
     e->order = keep.order;
     e->pos = keep.pos;
     snprintf(e->preset, sizeof e->preset, "%s", presets[p].name);
+    const int nforces = d->nforces;
     if (!presets[p].fill(d, emitter, scale / 100.0)) {
-        *e = keep;
-        return ISK_ERR_FULL;
+        /* its force found no room, or could not be allocated */
+        const isk_status why = d->nforces >= ISK_EFFECT_MAX_FORCES ? ISK_ERR_FULL : ISK_ERR_NOMEM;
+        d->nforces = nforces;
+        d->emitters[emitter] = keep;
+        return why;
     }
     return ISK_OK;
 }

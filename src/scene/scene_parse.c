@@ -296,6 +296,8 @@ static isk_status apply_preset(parser *P, section *s, const isk_key *k, int line
         return fail_at(P, s, line, k->name, "no preset '%s' (the presets: %s)", name, list);
     }
     isk_status st = isk_preset_apply(P->d, s->index, name, scale);
+    if (st == ISK_ERR_NOMEM)
+        return isk_error_set(P->err, st, "%s: out of memory", P->name);
     if (st == ISK_ERR_FULL)
         return fail_at(P, s, line, k->name, "the preset's own force finds no room (at most %d forces)",
                        ISK_EFFECT_MAX_FORCES);
@@ -436,9 +438,13 @@ static isk_status derived_defaults(parser *P, section *s)
         return ISK_OK;
     }
     if (s->type == ISK_SECTION_EMITTER) {
-        const isk_emitter_def *e = &d->emitters[s->index];
+        isk_emitter_def *e = &d->emitters[s->index];
         if (e->source == ISK_SOURCE_STREAM && e->rate == 0 && e->count == 0)
             return fail_at(P, s, line_of(s, "rate"), NULL, "a stream needs rate > 0 or a burst count > 0");
+        char why[400];
+        const char *key;
+        if (fx_looks_find_texture(e, P->name, &key, why, sizeof why) != ISK_OK) /* the texture beside the file */
+            return fail_at(P, s, line_of(s, key), key, "%s", why);
         return ISK_OK;
     }
     if (s->type != ISK_SECTION_BOUNDS)

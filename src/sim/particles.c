@@ -41,6 +41,8 @@ static const column columns[] = {
     COL(color, isk_color, ISK_PARTICLES_COLOR),
     COL(osc_amp, double, ISK_PARTICLES_OSC),   COL(osc_phase, double, ISK_PARTICLES_OSC),
     COL(osc_omega, double, ISK_PARTICLES_OSC), COL(osc_offset, double, ISK_PARTICLES_OSC),
+    /* looks (issue 14) */
+    COL(angle, double, ISK_PARTICLES_ANGLE),   COL(spin, double, ISK_PARTICLES_ANGLE),
 };
 #undef COL
 enum { NCOLUMNS = sizeof columns / sizeof columns[0], AGE_COLUMN = 5, LIFE_COLUMN = 6 };
@@ -233,6 +235,10 @@ size_t isk_store_push(isk_particles *p, double x, double y, double vx, double vy
         p->osc_phase[i] = 0.0;
         p->osc_omega[i] = 0.0;
         p->osc_offset[i] = 0.0;
+    }
+    if (p->angle) {
+        p->angle[i] = 0.0;
+        p->spin[i] = 0.0;
     }
     return i;
 }

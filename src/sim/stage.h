@@ -91,6 +91,7 @@ struct isk_stage {
             double drag;                                     /* the motion's linear drag b */
         } deflect;
         struct { const struct isk_field *f; } field;         /* isk_stage_field (src/sim/field.h) */
+        struct { double spin, spin_range; } spin;           /* isk_stage_spin: for describe only (rad/s) */
     } u;
 };
 
@@ -134,6 +135,7 @@ extern const isk_stage_kind isk_stage_slow;       /* v *= max(0, 1 - slowing*h) 
 extern const isk_stage_kind isk_stage_oscillate;  /* the fire thesis's horizontal sway (ISK_PARTICLES_OSC) */
 extern const isk_stage_kind isk_stage_walls;      /* isk_bounds_apply_step (after remember) */
 extern const isk_stage_kind isk_stage_deflect;    /* deflector segments */
+extern const isk_stage_kind isk_stage_spin;       /* angle += spin*h, wrapped (ISK_PARTICLES_ANGLE) */
 extern const isk_stage_kind isk_stage_age;        /* age += h */
 
 #endif

@@ -1,0 +1,227 @@
+/* The looks of a particle (issue 14): its angle and spin, its own size and
+ * base colour drawn at birth, and the texture it is drawn as.
+ *
+ * What an emitter does not use costs nothing and changes nothing: the angle
+ * column (and the spin stage, effect_compile.c) exist only with a rotation
+ * or a spin, the size column only with size_range, the colour column only
+ * with color_pick; every random draw here happens only when its range or
+ * color_pick asks, after every other draw of the birth (fx_adopt calls this
+ * last), so every existing scene keeps its bytes.  The drawing is
+ * effect_texture.c's. */
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+
+#include "effect_internal.h"
+#include "iskra/png.h"
+
+const char *const isk_align_names[ISK_ALIGN_COUNT] = {"none", "velocity"};
+
+#define PI 3.14159265358979323846
+#define TWO_PI 6.28318530717958647692
+/* The side of the texture a sprite kind is baked into for streaks: drawn
+ * smaller through its mip levels, larger by bilinear magnification. */
+#define FX_STREAK_TEXELS 64
+
+/* An angle can be seen only on a texture or a streak along the velocity:
+ * a round sprite, a disc or a dot looks the same at every angle, so for
+ * them rotation and spin keep no column, run no stage and draw nothing at
+ * random (their bytes are exactly those without the keys). */
+static int angle_seen(const isk_emitter_def *em)
+{
+    return em->texture[0] || em->align == ISK_ALIGN_VELOCITY;
+}
+
+static int rotates(const isk_emitter_def *em)
+{
+    return angle_seen(em) && (em->rotation != 0 || em->rotation_range > 0 || fx_looks_spins(em));
+}
+
+int fx_looks_spins(const isk_emitter_def *em)
+{
+    return angle_seen(em) && (em->spin != 0 || em->spin_range > 0);
+}
+
+unsigned fx_looks_columns(const isk_emitter_def *em)
+{
+    return (rotates(em) ? ISK_PARTICLES_ANGLE : 0u) | (em->size_range > 0 ? ISK_PARTICLES_SIZE : 0u) |
+           (em->color_pick.n > 0 ? ISK_PARTICLES_COLOR : 0u);
+}
+
+static double wrap(double a)
+{
+    if (a >= -PI && a < PI)
+        return a;
+    a -= TWO_PI * floor((a + PI) / TWO_PI);
+    return a >= PI ? a - TWO_PI : a < -PI ? a + TWO_PI : a;
+}
+
+void fx_looks_adopt(fx_group *g, size_t from)
+{
+    const isk_emitter_def *em = g->def;
+    isk_particles *p = &g->store;
+    if (p->angle) {
+        for (size_t i = from; i < p->count; i++) {
+            double a = em->rotation + (em->rotation_range > 0 ? em->rotation_range * isk_rng_uniform(&g->rng) : 0.0);
+            p->angle[i] = wrap(a);
+        }
+        for (size_t i = from; i < p->count; i++)
+            p->spin[i] = em->spin + (em->spin_range > 0 ? em->spin_range * isk_rng_uniform(&g->rng) : 0.0);
+    }
+    if (p->size)
+        for (size_t i = from; i < p->count; i++)
+            p->size[i] = em->size + (em->size_range > 0 ? em->size_range * isk_rng_uniform(&g->rng) : 0.0);
+    if (p->color)
+        for (size_t i = from; i < p->count; i++)
+            p->color[i] = em->color_pick.n ? isk_color_gradient_eval(em->color_pick.stops, em->color_pick.n,
+                                                                     isk_rng_uniform(&g->rng))
+                                           : em->color;
+}
+
+isk_status fx_looks_live(fx_group *g)
+{
+    const unsigned want = fx_looks_columns(g->def);
+    if (!(want & ~g->store.flags))
+        return ISK_OK;
+    /* the particles already there get the emitter's own size and colour */
+    g->store.default_size = g->def->size;
+    g->store.default_color = g->def->color;
+    return isk_particles_add_columns(&g->store, want);
+}
+
+/* A sprite kind drawn through a texture: turned along the velocity (a
+ * streak), or at a size of its own per particle. */
+static int streaks(const isk_emitter_def *em)
+{
+    return !em->texture[0] && em->draw == ISK_DRAW_SPRITE && (em->align == ISK_ALIGN_VELOCITY || em->size_range > 0);
+}
+
+isk_status fx_looks_prepare(isk_effect *e, fx_group *g, isk_error *err)
+{
+    const isk_emitter_def *em = g->def;
+    g->texture = NULL;
+    if (em->draw == ISK_DRAW_NONE)
+        return ISK_OK;
+    if (em->texture[0]) {
+        isk_status s = e->textures ? ISK_OK : isk_texture_cache_create(&e->textures, ISK_EFFECT_MAX_EMITTERS);
+        if (s != ISK_OK)
+            return isk_error_set(err, s, "emitter '%s': texture: %s", em->name, isk_status_str(s));
+        isk_error le = {0};
+        s = isk_texture_cache_get(e->textures, em->texture, (int)em->texture_grid.x, (int)em->texture_grid.y,
+                                  &g->texture, &le);
+        if (s != ISK_OK) {
+            char where[32] = "";
+            if (em->line > 0)
+                snprintf(where, sizeof where, " (line %d)", em->line);
+            return isk_error_set(err, s, "emitter '%s'%s: texture: %s%s%s", em->name, where, le.message,
+                                 s == ISK_ERR_NOMEM ? ": " : "", s == ISK_ERR_NOMEM ? isk_status_str(s) : "");
+        }
+        return ISK_OK;
+    }
+    if (!streaks(em))
+        return ISK_OK;
+    isk_status s = isk_texture_from_sprite(&g->streak, em->sprite, FX_STREAK_TEXELS);
+    if (s != ISK_OK)
+        return isk_error_set(err, s, "emitter '%s': cannot bake its streak: %s", em->name, isk_status_str(s));
+    g->texture = &g->streak;
+    return ISK_OK;
+}
+
+void fx_looks_free(fx_group *g)
+{
+    isk_texture_free(&g->streak);
+    g->texture = NULL;
+}
+
+static int whole_in(double v, double lo, double hi)
+{
+    return v >= lo && v <= hi && v == floor(v);
+}
+
+const char *fx_looks_check(const isk_emitter_def *em, char *why, size_t n)
+{
+    if (!whole_in(em->texture_grid.x, 1, ISK_TEXTURE_MAX_GRID) ||
+        !whole_in(em->texture_grid.y, 1, ISK_TEXTURE_MAX_GRID)) {
+        snprintf(why, n, "expected whole numbers of columns and rows, 1..%d, got %.15g, %.15g", ISK_TEXTURE_MAX_GRID,
+                 em->texture_grid.x, em->texture_grid.y);
+        return "texture_grid";
+    }
+    if (!memchr(em->texture, 0, sizeof em->texture)) {
+        snprintf(why, n, "a path of at most %d characters", ISK_TEXTURE_PATH_MAX - 1);
+        return "texture";
+    }
+    return NULL;
+}
+
+isk_status fx_looks_find_texture(isk_emitter_def *em, const char *scene_name, const char **key, char *why,
+                                 size_t n)
+{
+    *key = "texture";
+    if (!em->texture[0] || fx_looks_check(em, why, n))
+        return ISK_OK; /* a malformed grid is the shared check's to report */
+    const char *slash = scene_name ? strrchr(scene_name, '/') : NULL;
+    if (em->texture[0] != '/' && slash) {
+        char path[ISK_TEXTURE_PATH_MAX];
+        int dir = (int)(slash - scene_name);
+        int len = snprintf(path, sizeof path, "%.*s/%s", dir, scene_name, em->texture);
+        if (len < 0 || (size_t)len >= sizeof path) {
+            snprintf(why, n, "the path '%.*s/%s' is longer than %d characters", dir, scene_name, em->texture,
+                     ISK_TEXTURE_PATH_MAX - 1);
+            return ISK_ERR_RANGE;
+        }
+        memcpy(em->texture, path, (size_t)len + 1);
+    }
+    isk_png_info info;
+    isk_error err = {0};
+    isk_status s = isk_png_read_info(em->texture, &info, &err);
+    if (s != ISK_OK) {
+        snprintf(why, n, "cannot use '%s' as a texture: %s", em->texture, err.message);
+        return s;
+    }
+    const int cols = (int)em->texture_grid.x, rows = (int)em->texture_grid.y;
+    if (info.width > ISK_TEXTURE_MAX_DIM || info.height > ISK_TEXTURE_MAX_DIM) {
+        snprintf(why, n, "'%s' is %dx%d pixels: a texture has at most %d a side", em->texture, info.width,
+                 info.height, ISK_TEXTURE_MAX_DIM);
+        return ISK_ERR_SIZE;
+    }
+    if (info.width % cols || info.height % rows) {
+        *key = "texture_grid";
+        snprintf(why, n, "'%s' is %dx%d pixels: texture_grid %d, %d does not divide it into whole frames",
+                 em->texture, info.width, info.height, cols, rows);
+        return ISK_ERR_RANGE;
+    }
+    return ISK_OK;
+}
+
+void fx_looks_describe(const fx_group *g, FILE *out)
+{
+    const isk_emitter_def *em = g->def;
+    if (!g->texture && !rotates(em) && !em->size_range && !em->color_pick.n)
+        return;
+    fprintf(out, "  %-9s ", "looks");
+    const char *sep = "";
+    if (g->texture == &g->streak) {
+        fprintf(out, "streak (%s sprite, %g x size long)", isk_sprite_kind_names[em->sprite],
+                ISK_STREAK_STRETCH);
+        sep = ",";
+    } else if (g->texture) {
+        fprintf(out, "texture %s (%d frame%s%s)", em->texture, g->texture->frames, g->texture->frames == 1 ? "" : "s",
+                g->texture->frames > 1 ? (em->texture_fps > 0 ? ", at a rate" : ", over the life") : "");
+        sep = ",";
+    }
+    if (em->align == ISK_ALIGN_VELOCITY && g->texture) {
+        fprintf(out, "%s along the velocity", sep);
+        sep = ",";
+    }
+    if (rotates(em)) {
+        fprintf(out, "%s angle %g + U*%g deg", sep, em->rotation * (180 / PI), em->rotation_range * (180 / PI));
+        sep = ",";
+    }
+    if (em->size_range > 0) {
+        fprintf(out, "%s size %g + U*%g", sep, em->size, em->size_range);
+        sep = ",";
+    }
+    if (em->color_pick.n)
+        fprintf(out, "%s colour picked from %d stops", sep, em->color_pick.n);
+    fputc('\n', out);
+}
