@@ -32,6 +32,15 @@
  *                                     10^96 over six decades of distance
  *   a bounce with restitution > 1     saturates: the speed is capped at ISK_SPEED_LIMIT
  *                                     (iskra/impact.h)
+ *   a trail's points (trail = N)      range 0..ISK_TRAIL_MAX: the history costs 16 bytes per
+ *                                     point per particle (64 points: 1 KiB, so a pool of
+ *                                     10^5 trailed particles holds 100 MiB), and drawing a
+ *                                     trail visits every point's segment; 64 frames are over
+ *                                     a second of history at 60 frames/s
+ *   a sub-emitter's children          each event adds at most the pool's room (the rest are
+ *                                     dropped and counted), and the events waiting in a frame
+ *                                     are at most the child's capacity: a chain or a cycle of
+ *                                     sub-emitters never grows without bound
  *
  * With these, every sum and product the simulation forms stays finite for
  * any run of up to 10^8 frames of the longest step (10^14 simulated
@@ -72,6 +81,7 @@ extern "C" {
 #define ISK_FORCE_LIMIT 1e150        /* a potential's force saturates here (iskra/forces.h) */
 #define ISK_P_MIN 0.0                /* a potential's P: |F| ~ d^(1-P), at most a spring's d */
 #define ISK_P_MAX 17.0               /* ... at least d^-16 */
+#define ISK_TRAIL_MAX 64             /* points of a particle's trail (sub-emitters and trails) */
 
 #ifdef __cplusplus
 }

@@ -165,6 +165,7 @@ isk_status fx_compile(isk_effect *e, fx_group *g)
         st->u.walls.ax = g->const_ax;
         st->u.walls.ay = g->const_ay;
         st->u.walls.offset = isk_integrator_velocity_offset(g->integrator);
+        st->u.walls.hit = em->on_hit >= 0;
     }
     if (g->ndefl) {
         if (!ADD(isk_stage_deflect))
@@ -174,6 +175,7 @@ isk_status fx_compile(isk_effect *e, fx_group *g)
         st->u.deflect.rng = &g->rng;
         st->u.deflect.can_kill = can_kill;
         st->u.deflect.drag = f->drag;
+        st->u.deflect.hit = em->on_hit >= 0;
     }
     const int mortal = isfinite(em->life) || can_kill;
     if (mortal && !ADD(isk_stage_age))
@@ -181,6 +183,8 @@ isk_status fx_compile(isk_effect *e, fx_group *g)
 
     if (em->source == ISK_SOURCE_STREAM)
         g->substep_end[g->nsubstep_end++] = &fx_step_spawn;
+    if (em->on_hit >= 0 && (walls || g->ndefl)) /* sub-emitters (effect_events.c) */
+        g->substep_end[g->nsubstep_end++] = &fx_step_hits;
     if (mortal)
         g->substep_end[g->nsubstep_end++] = &fx_step_cull;
     g->draw = fx_choose_draw(g);
@@ -221,4 +225,7 @@ void fx_describe_group(const isk_effect *e, const fx_group *g, FILE *out)
         fprintf(out, "  draw      %s, %s%s%s%s\n", isk_draw_mode_names[em->draw], isk_blend_name(em->blend),
                 g->has_color_ramp ? ", colour over life" : "", g->has_alpha_ramp ? ", alpha over life" : "",
                 g->has_size_ramp ? ", size over life" : "");
+    if (em->trail > 0)
+        fprintf(out, "  trail     the last %d positions, %g px wide, fade %g (drawn first)\n", em->trail,
+                em->trail_width, em->trail_fade);
 }

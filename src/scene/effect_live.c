@@ -181,6 +181,8 @@ static isk_status apply(isk_effect *e, const where *w, const isk_key *k, const v
         }
         if (fx_emitter_oscillates(em) && !g->store.osc_amp)
             s = isk_particles_add_columns(&g->store, ISK_PARTICLES_OSC);
+        if (s == ISK_OK)
+            s = fx_events_columns(g); /* on_hit, trail */
         if (!strcmp(k->name, "rate") && em->source == ISK_SOURCE_STREAM)
             rebase_stream(e, g, old->rate);
         break;

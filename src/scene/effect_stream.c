@@ -52,16 +52,17 @@ void fx_stream_reset(fx_group *g, double time)
 }
 
 /* Where and how fast new particles start: built once per spawn call. */
-typedef struct launcher {
-    isk_shape shape;
-    isk_velgen launch;
-} launcher;
+fx_launcher fx_launcher_of(const isk_emitter_def *em)
+{
+    fx_launcher l = {shape_of(em), velgen_of(em)};
+    return l;
+}
 
 /* One new particle: position, velocity and mass drawn here, lifetime and
  * oscillation by fx_adopt, then its first moments: back-dated births run the
  * group's own pipeline on it for its age; the thesis's jitter applies a
  * random whole number of milliseconds of the external force. */
-static isk_status birth(isk_effect *e, fx_group *g, const launcher *l, double age)
+isk_status fx_birth(isk_effect *e, fx_group *g, const fx_launcher *l, double age, const double *dv)
 {
     const isk_emitter_def *em = g->def;
     isk_particles *p = &g->store;
@@ -75,6 +76,10 @@ static isk_status birth(isk_effect *e, fx_group *g, const launcher *l, double ag
     if (em->launch == ISK_VELGEN_DISC) {
         vx += em->vel.x;
         vy += em->vel.y;
+    }
+    if (dv) { /* a sub-emitter's inherited velocity (only there: a stream's bits are untouched) */
+        vx += dv[0];
+        vy += dv[1];
     }
     double m = em->mass + (em->mass_range > 0 ? em->mass_range * isk_rng_uniform(&g->rng) : 0.0);
     size_t i;
@@ -125,7 +130,7 @@ static size_t room_left(const fx_group *g)
  * turn per particle the pool can still take; the rest are dropped and
  * counted.  Bursts older than the longest life are never born (as single
  * births). */
-static isk_status run_bursts(isk_effect *e, fx_group *g, const launcher *l, double t1, double t1_tol, double h)
+static isk_status run_bursts(isk_effect *e, fx_group *g, const fx_launcher *l, double t1, double t1_tol, double h)
 {
     const isk_emitter_def *em = g->def;
     const double every = em->burst_every, nb = g->next_burst;
@@ -157,7 +162,7 @@ static isk_status run_bursts(isk_effect *e, fx_group *g, const launcher *l, doub
             continue; /* dead on arrival: the whole burst */
         }
         for (size_t k = 0; k < em->count; k++) {
-            isk_status s = birth(e, g, l, em->birth == ISK_BIRTH_THESIS_JITTER ? h : age);
+            isk_status s = fx_birth(e, g, l, em->birth == ISK_BIRTH_THESIS_JITTER ? h : age, NULL);
             if (s != ISK_OK)
                 return s;
         }
@@ -176,7 +181,7 @@ static isk_status run_spawn(isk_effect *e, fx_group *g, double t0, double h)
     /* A birth due within a nanosecond of the step's end belongs to this step:
      * 30 steps of 1/30 s and 144 of 1/144 s must agree on "t = 1 s". */
     const double t1_tol = t1 + 1e-9 * (t1 > 1.0 ? t1 : 1.0);
-    const launcher l = {shape_of(em), velgen_of(em)};
+    const fx_launcher l = fx_launcher_of(em);
     isk_status s;
 
     /* Bursts first: they are scheduled events. */
@@ -190,7 +195,7 @@ static isk_status run_spawn(isk_effect *e, fx_group *g, double t0, double h)
         double want = floor(h * em->rate + 0.5); /* <= 10^10: clamped before any integer cast */
         double take = fmin(want, (double)room_left(g));
         for (size_t j = 0; j < (size_t)take; j++)
-            if ((s = birth(e, g, &l, em->birth == ISK_BIRTH_THESIS_JITTER ? h : 0.0)) != ISK_OK)
+            if ((s = fx_birth(e, g, &l, em->birth == ISK_BIRTH_THESIS_JITTER ? h : 0.0, NULL)) != ISK_OK)
                 return s;
         drop(g, want - take);
         return ISK_OK;
@@ -228,7 +233,7 @@ static isk_status run_spawn(isk_effect *e, fx_group *g, double t0, double h)
             continue; /* would be dead already: never created */
         }
         double a = em->birth == ISK_BIRTH_BACKDATE ? age : (em->birth == ISK_BIRTH_THESIS_JITTER ? h : 0.0);
-        if ((s = birth(e, g, &l, a)) != ISK_OK)
+        if ((s = fx_birth(e, g, &l, a, NULL)) != ISK_OK)
             return s;
     }
     return ISK_OK;
