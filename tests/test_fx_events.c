@@ -16,16 +16,20 @@
 
 #define OUT "out/test_fx_events"
 
-static isk_effect *make(const char *text)
+/* The scene on `threads` threads (0: the default). */
+static isk_effect *make_on(const char *text, int threads)
 {
     isk_effect_def d;
     isk_error err;
     isk_effect *fx = NULL;
     cr_assert_eq(isk_scene_load_string(&d, text, "t.ini", &err), ISK_OK, "%s", err.message);
+    d.threads = threads;
     cr_assert_eq(isk_effect_create(&fx, &d, &err), ISK_OK, "%s", err.message);
     isk_effect_def_free(&d);
     return fx;
 }
+
+static isk_effect *make(const char *text) { return make_on(text, 0); }
 
 static void steps(isk_effect *fx, int n)
 {
@@ -210,7 +214,6 @@ Test(fx_events, resting_is_not_bouncing)
  * 1, 2 and 3 threads (3000 parents: a dozen blocks). */
 Test(fx_events, threads_give_the_same_children)
 {
-    isk_particles ref = {0};
     size_t ref_count = 0;
     double *rx = NULL;
     for (int t = 1; t <= 3; t++) {
@@ -223,13 +226,7 @@ Test(fx_events, threads_give_the_same_children)
                  "on_hit = splash\non_death = splash\n"
                  "[emitter splash]\nsource = sub\ncount = 2\nlaunch = disc\nspeed_max = 1\nlife = 0.5\n"
                  "capacity = 1000000\nforces = gravity\n");
-        isk_effect_def d;
-        isk_error err;
-        isk_effect *fx;
-        cr_assert_eq(isk_scene_load_string(&d, text, "t.ini", &err), ISK_OK, "%s", err.message);
-        d.threads = t;
-        cr_assert_eq(isk_effect_create(&fx, &d, &err), ISK_OK, "%s", err.message);
-        isk_effect_def_free(&d);
+        isk_effect *fx = make_on(text, t);
         steps(fx, 120);
         const isk_particles *k = isk_effect_particles(fx, find(fx, "splash"));
         if (t == 1) {
@@ -247,7 +244,6 @@ Test(fx_events, threads_give_the_same_children)
         }
         isk_effect_destroy(fx);
     }
-    (void)ref;
     free(rx);
 }
 
@@ -271,6 +267,36 @@ Test(fx_events, chains_and_cycles_end_bounded_by_the_pools)
     steps(fx, 100);
     cr_assert_leq(count_of(fx, "self"), 5000);
     cr_assert_gt(isk_effect_dropped(fx, find(fx, "self")), 0);
+    isk_effect_destroy(fx);
+}
+
+/* Set while running: the column and the stage come (and the trail goes)
+ * with the key; reset starts again with no events waiting. */
+Test(fx_events, live_changes_and_reset)
+{
+    isk_effect *fx = make("[scene]\nwidth = 64\nheight = 64\n"
+                          "[emitter p]\nsource = stream\ncount = 4\nlife = 0.1\n"
+                          "[emitter hold]\nsource = particle\non_hit = s\n"
+                          "[emitter s]\nsource = sub\ncount = 3\n");
+    isk_error err;
+    cr_assert_eq(isk_effect_set(fx, "emitter p", "on_death", "s", &err), ISK_OK, "%s", err.message);
+    cr_assert_eq(isk_effect_set(fx, "emitter s", "trail", "5", &err), ISK_OK, "%s", err.message);
+    cr_assert_eq(isk_effect_set(fx, "emitter p", "on_death", "hold", &err), ISK_ERR_RANGE);
+    cr_assert_not_null(strstr(err.message, "not a sub-emitter"), "%s", err.message);
+    steps(fx, 10);
+    cr_assert_eq(count_of(fx, "s"), 12);
+    cr_assert_not_null(isk_effect_particles(fx, find(fx, "s"))->trail);
+    isk_canvas c;
+    cr_assert_eq(isk_canvas_init(&c, 64, 64), ISK_OK);
+    cr_assert_eq(isk_effect_render(fx, &c), ISK_OK);
+    cr_assert_eq(isk_effect_set(fx, "emitter s", "trail", "0", &err), ISK_OK, "%s", err.message);
+    cr_assert_null(isk_effect_particles(fx, find(fx, "s"))->trail);
+    cr_assert_eq(isk_effect_render(fx, &c), ISK_OK);
+    cr_assert_eq(isk_effect_reset(fx), ISK_OK);
+    cr_assert_eq(count_of(fx, "s"), 0);
+    steps(fx, 10);
+    cr_assert_eq(count_of(fx, "s"), 12, "the definition keeps the live on_death");
+    isk_canvas_free(&c);
     isk_effect_destroy(fx);
 }
 
