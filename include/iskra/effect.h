@@ -36,9 +36,11 @@
  *     frame start: walls of draw_before_bounce, timed explosions;
  *     every substep: remember positions (only with deflectors) -> forces it
  *     references + integrator (blocked) -> slowing -> oscillation -> walls ->
- *     deflectors -> ageing; then births (streams) -> culling
- * and its draw routine: colour/alpha/size over life (only with gradients) ->
- * draw.  A force no emitter references, a zero-strength force, a disabled
+ *     deflectors -> ageing; then births (streams) -> hits (on_hit) -> culling
+ *     (its deaths first as on_death events); after every emitter stepped:
+ *     the sub-emitters' births, then the trails' newest points
+ * and its draw routine: trails (only with trail) -> colour/alpha/size over
+ * life (only with gradients) -> draw.  A force no emitter references, a zero-strength force, a disabled
  * potential, or a potential switched off by its maximum distance is not in
  * any list (the last leaves at the end of the frame in which it switched
  * off), so it costs nothing and changes nothing.  isk_effect_describe()
