@@ -157,19 +157,33 @@ Test(fx_events, children_do_not_depend_on_which_emitter_steps_first)
  * bounces at t = 1 and t = 3 s. */
 Test(fx_events, on_hit_fires_once_per_bounce)
 {
-    isk_effect *fx = make("[scene]\nwidth = 64\nheight = 64\n"
-                          "[deflector floor]\nsegment = -10, 0, 10, 0\n"
-                          "[emitter rain]\nsource = stream\ncount = 25\nshape = segment\nposition = -5, 5\n"
-                          "shape_a = 10\nvelocity = 0, -10\ndeflectors = floor\non_hit = splash\n"
-                          "[emitter splash]\nsource = sub\ncount = 4\nlaunch = cone\nangle = 90\nspread = 90\n"
-                          "speed_min = 1\nspeed_max = 2\n");
-    steps(fx, 29);
-    cr_assert_eq(count_of(fx, "splash"), 0);
-    steps(fx, 2); /* the floor is reached at t = 0.5 s */
-    cr_assert_eq(count_of(fx, "splash"), 100);
-    steps(fx, 60);
-    cr_assert_eq(count_of(fx, "splash"), 100, "flying up: no more bounces");
-    isk_effect_destroy(fx);
+    for (int sub = 1; sub <= 4; sub += 3) {
+        char text[1024];
+        snprintf(text, sizeof text,
+                 "[scene]\nwidth = 64\nheight = 64\nsubsteps = %d\n[deflector floor]\nsegment = -10, 0, 10, 0\n"
+                 "[emitter rain]\nsource = stream\ncount = 25\nshape = segment\nposition = -5, 5\n"
+                 "shape_a = 10\nvelocity = 0, -10\ndeflectors = floor\non_hit = splash\n"
+                 "[emitter splash]\nsource = sub\ncount = 4\nlaunch = cone\nangle = 90\nspread = 90\n"
+                 "speed_min = 1\nspeed_max = 2\n",
+                 sub);
+        isk_effect *fx = make(text);
+        steps(fx, 29);
+        cr_assert_eq(count_of(fx, "splash"), 0);
+        steps(fx, 2); /* the floor is reached at t = 0.5 s */
+        cr_assert_eq(count_of(fx, "splash"), 100, "substeps %d", sub);
+        steps(fx, 60);
+        cr_assert_eq(count_of(fx, "splash"), 100, "flying up: no more bounces");
+        char *buf = NULL;
+        size_t len = 0;
+        FILE *f = open_memstream(&buf, &len);
+        isk_effect_describe(fx, f);
+        fclose(f);
+        cr_assert_not_null(strstr(buf, "hits      bounces -> events of splash"), "%s", buf);
+        free(buf);
+        isk_effect_destroy(fx);
+    }
+
+    isk_effect *fx;
 
     fx = make("[scene]\nwidth = 64\nheight = 64\n[bounds]\nsides = left, right\n"
               "[emitter ball]\nsource = stream\ncount = 3\nvelocity = 10, 0\non_hit = spark\n"

@@ -28,7 +28,10 @@
  * capacity (more could never be born: each gives at least one child).  The
  * rest are dropped and counted (isk_effect_dropped of the sub-emitter).  A
  * chain (a sub-emitter with its own on_death) or a cycle only ever makes
- * events at its next substeps, so no loop here waits on itself. */
+ * events at its next substeps, so no loop here waits on itself.  A child
+ * whose age at birth already reaches its life is born all the same and
+ * dies at the next cull (its own on_death then fires there, one substep
+ * late), so a chain of very short lives still fires every generation. */
 #include <math.h>
 #include <stdint.h>
 #include <stdlib.h>
