@@ -383,3 +383,39 @@ Test(fx_events, the_state_csv_counts_the_children)
     cr_assert_eq(parents, 0);
     free(csv);
 }
+
+/* The same from C: the fields of isk_emitter_def. */
+Test(fx_events, reachable_from_c)
+{
+    isk_effect_def d;
+    isk_effect_def_init(&d);
+    isk_emitter_def *p = isk_effect_def_add_emitter(&d, "parent");
+    cr_assert_not_null(p);
+    cr_assert_eq(p->on_death, -1);
+    cr_assert_eq(p->on_hit, -1);
+    cr_assert_eq(p->trail, 0);
+    p->source = ISK_SOURCE_STREAM;
+    p->count = 4;
+    p->life = 0.1;
+    p->trail = 3;
+    isk_emitter_def *k = isk_effect_def_add_emitter(&d, "kids");
+    cr_assert_not_null(k);
+    k->source = ISK_SOURCE_SUB;
+    k->count = 5;
+    k->inherit = 1.0;
+    d.emitters[0].on_death = 1;
+    isk_effect *fx;
+    isk_error err;
+    cr_assert_eq(isk_effect_create(&fx, &d, &err), ISK_OK, "%s", err.message);
+    steps(fx, 10);
+    cr_assert_eq(isk_effect_particles(fx, 1)->count, 20);
+    isk_effect_destroy(fx);
+    d.emitters[1].inherit = 1.5;
+    cr_assert_eq(isk_effect_create(&fx, &d, &err), ISK_ERR_RANGE);
+    cr_assert_not_null(strstr(err.message, "inherit"), "%s", err.message);
+    d.emitters[1].inherit = 0;
+    d.emitters[0].on_death = -1;
+    cr_assert_eq(isk_effect_create(&fx, &d, &err), ISK_ERR_RANGE);
+    cr_assert_not_null(strstr(err.message, "never fires"), "%s", err.message);
+    isk_effect_def_free(&d);
+}
