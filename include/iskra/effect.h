@@ -38,10 +38,13 @@
  *     remember positions (only with deflectors) -> forces it references +
  *     integrator (blocked) -> slowing -> oscillation -> walls -> deflectors ->
  *     spin (only where an angle is seen and spins) -> ageing; then the
- *     local-space carry -> births (streams) -> culling
- * and its draw routine: colour/alpha/size over life (only with gradients) ->
- * draw (a texture or a streak: the looks block of isk_emitter_def).  A
- * force no emitter references, a zero-strength force, a disabled
+ *     local-space carry -> births (streams) -> hits (on_hit) -> culling (its
+ *     deaths first as on_death events); after every emitter stepped: the
+ *     sub-emitters' births, then the trails' newest points
+ * and its draw routine: trails (only with trail) -> colour/alpha/size over
+ * life (only with gradients) -> draw (a texture or a streak: the looks
+ * block of isk_emitter_def).  A force no emitter references, a
+ * zero-strength force, a disabled
  * potential, or a potential switched off by its maximum distance is not in
  * any list (the last leaves at the end of the frame in which it switched
  * off), so it costs nothing and changes nothing.  isk_effect_describe()
@@ -138,6 +141,8 @@ typedef enum isk_source_kind {
     ISK_SOURCE_EXPLOSION,    /* an isk_explosion of `count` at `pos` at time `start` */
     ISK_SOURCE_LAYER,        /* the stationary layer: `count` at rest in `rect` */
     ISK_SOURCE_STREAM,       /* continuous emission: shape, velocity, rate, bursts */
+    ISK_SOURCE_SUB,          /* a sub-emitter: `count` particles where another emitter's particle
+                                dies (on_death) or bounces (on_hit) */
     ISK_SOURCE_KIND_COUNT
 } isk_source_kind;
 
@@ -309,6 +314,32 @@ typedef struct isk_emitter_def {
     isk_vec2 texture_grid;     /* cols, rows of a sprite sheet (whole numbers 1..256; default 1, 1) */
     double texture_fps;        /* 0: the frames play once over the life, floor(t*frames); > 0: at this
                                   rate of age, wrapping */
+
+    /* ---- sub-emitters and trails (issue 14) ----
+     * on_death / on_hit name (by index, -1: none) an emitter of source SUB
+     * that fires `count` particles where one of these particles dies (its
+     * age reaches its life, or a killing deflector takes it) / bounces on a
+     * wall or a deflector.  The event is the particle's position and
+     * velocity at the end of the substep in which it died / bounced, at that
+     * substep's end time.  A SUB emitter's children start at the event's
+     * position plus its shape's offset (shape, shape_a, shape_b,
+     * shape_angle around (0, 0)), with a velocity from its launch keys plus
+     * inherit times the parent's velocity, and its mass, life and drawing
+     * keys; they are born at the end of the frame in which the event
+     * happened, advanced by their age through their own stages (as a
+     * stream's back-dated births), so the result does not depend on which
+     * of the two emitters steps first.  trail = N (0..ISK_TRAIL_MAX): each
+     * particle keeps its last N positions (recorded once per frame, after
+     * the frame's steps) and is drawn, before its own dot or sprite, as a
+     * ribbon through them (isk_stroke_trail) trail_width pixels wide in the
+     * particle's colour, fading by trail_fade towards its oldest point. */
+    int on_death;              /* emitter index of a SUB emitter, -1: none */
+    int on_hit;                /* emitter index of a SUB emitter, -1: none */
+    double inherit;            /* SUB: the fraction 0..1 of the parent's velocity its children keep */
+    int trail;                 /* points of history, 0: no trail */
+    double trail_width;        /* pixels, > 0 (default 1) */
+    double trail_fade;         /* 0..1: alpha at the oldest point is colour alpha * (1 - trail_fade) */
+    /* ---- end of sub-emitters and trails ---- */
 } isk_emitter_def;
 
 /* Static drawings (the triangles of figures 1-8, labels): drawn each frame
@@ -366,6 +397,9 @@ typedef struct isk_show_def {
 extern const char *const isk_force_kind_names[ISK_FORCE_KIND_COUNT];     /* gravity drag wind potential turbulence */
 extern const char *const isk_space_names[ISK_SPACE_COUNT];               /* world local */
 extern const char *const isk_source_names[ISK_SOURCE_KIND_COUNT];        /* particle explosion layer stream */
+
+extern const char *const isk_force_kind_names[ISK_FORCE_KIND_COUNT];     /* gravity drag wind potential */
+extern const char *const isk_source_names[ISK_SOURCE_KIND_COUNT];        /* particle explosion layer stream sub */
 extern const char *const isk_rate_mode_names[ISK_RATE_MODE_COUNT];       /* accumulate thesis */
 extern const char *const isk_birth_mode_names[ISK_BIRTH_MODE_COUNT];     /* backdate thesis-jitter frame */
 extern const char *const isk_draw_mode_names[ISK_DRAW_COUNT];            /* dot pixel disc sprite none dot-browser */

@@ -42,6 +42,15 @@
  *                                     stays finite; noise coordinates beyond 2^52 (where a
  *                                     double has no fraction left) are clamped there
  *   stream duration                   range 0..ISK_DURATION_MAX seconds
+ *   a trail's points (trail = N)      range 0..ISK_TRAIL_MAX: the history costs 16 bytes per
+ *                                     point per particle (64 points: 1 KiB, so a pool of
+ *                                     10^5 trailed particles holds 100 MiB), and drawing a
+ *                                     trail visits every point's segment; 64 frames are over
+ *                                     a second of history at 60 frames/s
+ *   a sub-emitter's children          each event adds at most the pool's room (the rest are
+ *                                     dropped and counted), and the events waiting in a frame
+ *                                     are at most the child's capacity: a chain or a cycle of
+ *                                     sub-emitters never grows without bound
  *
  * With these, every sum and product the simulation forms stays finite for
  * any run of up to 10^8 frames of the longest step (10^14 simulated
@@ -96,6 +105,7 @@ extern "C" {
  * reduces with an error below 1e-8 rad, so an angle never grows and
  * never loses its precision however long the particle lives. */
 #define ISK_SPIN_MAX 360000.0
+#define ISK_TRAIL_MAX 64             /* points of a particle's trail (sub-emitters and trails) */
 
 #ifdef __cplusplus
 }

@@ -50,8 +50,16 @@ enum {
     ISK_PARTICLES_OSC = 1u << 2,   /* allocate the four oscillation arrays */
     /* looks (issue 14) */
     ISK_PARTICLES_ANGLE = 1u << 3, /* allocate the angle and spin arrays */
-    ISK_PARTICLES_FLAGS = 15u      /* every flag */
+    /* ---- sub-emitters and trails (issue 14) ---- */
+    ISK_PARTICLES_HIT = 1u << 4,   /* allocate hit: bounces in the current substep */
+    /* ---- end of sub-emitters and trails ---- */
+    ISK_PARTICLES_FLAGS = 31u,     /* every flag init and add_columns take */
+    ISK_PARTICLES_TRAIL = 1u << 5  /* in flags while the trail column is there (isk_particles_set_trail
+                                      adds it with its length; init and add_columns refuse it) */
 };
+
+/* ---- sub-emitters and trails (issue 14): the bits of isk_particles.hit ---- */
+enum { ISK_HIT_COUNT = 0x3Fu, ISK_HIT_DEFLECTOR = 0x40u, ISK_HIT_WALL = 0x80u };
 
 /* Largest capacity a store accepts (about 2.7e8 particles; more is an error,
  * not an overflow). */
@@ -72,6 +80,18 @@ typedef struct isk_particles {
     /* looks (issue 14): NULL unless ISK_PARTICLES_ANGLE (new particles: 0) */
     double *angle;       /* radians, counter-clockwise in the world, kept in [-pi, pi) */
     double *spin;        /* rad/s */
+    /* ---- sub-emitters and trails (issue 14) ---- */
+    unsigned char *hit;  /* NULL unless ISK_PARTICLES_HIT: the bounces (walls, deflectors) the
+                            contact stages counted in this substep (ISK_HIT_COUNT bits, saturating),
+                            and whether it touched a wall / a deflector in the substep before
+                            (ISK_HIT_WALL, ISK_HIT_DEFLECTOR: a touch that follows a touch is
+                            resting or sliding, not a bounce); new particles: 0 */
+    double *trail;       /* NULL unless ISK_PARTICLES_TRAIL: trail_len points (x, y) per particle,
+                            particle i's at trail + 2*trail_len*i, a ring whose newest point is at
+                            slot trail_head (new particles: every slot at their position) */
+    int trail_len;       /* points per particle (1..ISK_TRAIL_MAX; 0 without the column) */
+    int trail_head;      /* the ring's newest slot, the same for every particle */
+    /* ---- end of sub-emitters and trails ---- */
     unsigned flags;
     isk_color default_color; /* given to new particles when color != NULL (yellow) */
     double default_size;     /* given to new particles when size != NULL (0.1) */
@@ -129,6 +149,20 @@ size_t isk_particles_remove_nonfinite(isk_particles *p);
 void isk_particles_age(isk_particles *p, size_t begin, size_t end, double dt);
 
 void isk_particles_clear(isk_particles *p);
+
+/* ---- sub-emitters and trails (issue 14) ----
+ * Adds the trail column with `points` points per particle (1..ISK_TRAIL_MAX,
+ * iskra/limits.h) to a store, or changes its length; every particle's trail
+ * starts again at its position.  0 removes the column.  All-or-nothing.
+ * Errors: ISK_ERR_NULL, ISK_ERR_RANGE (points out of range), ISK_ERR_NOMEM. */
+isk_status isk_particles_set_trail(isk_particles *p, int points);
+/* Records the current positions as every particle's newest trail point (the
+ * ring moves on by one slot).  No-op without the column. */
+void isk_particles_record_trail(isk_particles *p);
+/* The most memory a store with a trail of `points` takes while it grows to
+ * hold `count` particles (as isk_particles_bytes). */
+size_t isk_particles_bytes_trail(size_t count, unsigned flags, int points);
+/* ---- end of sub-emitters and trails ---- */
 
 #ifdef __cplusplus
 }

@@ -20,6 +20,7 @@ static void free_group(fx_group *g)
     free(g->defl);
     fx_free_ramps(g);
     fx_looks_free(g);
+    fx_events_free(g);
 }
 
 /* Room for the group's picks (its segments grow as it compiles). */
@@ -27,7 +28,7 @@ static isk_status alloc_group(isk_effect *e, fx_group *g)
 {
     isk_status s = isk_particles_init(&g->store, 0,
                                       (fx_emitter_oscillates(g->def) ? ISK_PARTICLES_OSC : 0) | fx_looks_columns(g->def));
-    if (s != ISK_OK)
+    if (s != ISK_OK || (s = fx_events_columns(g)) != ISK_OK)
         return s;
     g->pick_cap = e->pots_cap;
     g->pick = calloc(g->pick_cap ? g->pick_cap : 1, sizeof *g->pick);
@@ -344,6 +345,11 @@ isk_status isk_effect_step(isk_effect *e)
     /* The thesis's h stays unassigned when there are no particles: then its
      * potentials do not move. */
     e->last_frame_time = total ? frame_time : 0.0;
+    /* sub-emitters' children, then the trails' newest points (issue 14) */
+    isk_status se = fx_events_release(e);
+    if (se != ISK_OK)
+        return se;
+    fx_trail_record(e);
     if (d->click.at_start && d->click.after_frames > 0 && e->frame == d->click.after_frames)
         return isk_effect_click(e, d->click.x, d->click.y);
     return ISK_OK;

@@ -131,6 +131,35 @@ static isk_status check_stream(ctx *c, const isk_emitter_def *e)
     return ISK_OK; /* rate 0 and no bursts is an idle stream: fine while running, a mistake in a file (the parser's) */
 }
 
+/* ---- sub-emitters and trails (issue 14) ----
+ * on_death / on_hit must name a sub-emitter; a sub-emitter must be named by
+ * some emitter's on_death or on_hit (an error, not a warning: it could never
+ * emit, so it is a mistake, most likely a misspelt or forgotten reference).
+ * Chains and cycles are allowed: every event's children are bounded by the
+ * pool (effect_events.c). */
+static isk_status check_sub_emitters(ctx *c, const isk_emitter_def *e)
+{
+    const isk_effect_def *d = c->d;
+    static const char *const keys[2] = {"on_death", "on_hit"};
+    const int refs[2] = {e->on_death, e->on_hit};
+    for (int k = 0; k < 2; k++) {
+        if (refs[k] < 0)
+            continue;
+        const isk_emitter_def *t = &d->emitters[refs[k]];
+        if (t->source != ISK_SOURCE_SUB)
+            return bad_key(c, keys[k], "'%s' is not a sub-emitter (it needs source = sub)", t->name);
+    }
+    if (e->source != ISK_SOURCE_SUB)
+        return ISK_OK;
+    if (e->count < 1 || e->count > e->capacity)
+        return bad_key(c, "count", "a sub-emitter fires 1..capacity (%zu) particles per event", e->capacity);
+    for (int i = 0; i < d->nemitters; i++)
+        if (d->emitters[i].on_death == c->index || d->emitters[i].on_hit == c->index)
+            return ISK_OK;
+    return bad_item(c, "source", "a sub-emitter that no emitter's on_death or on_hit names never fires");
+}
+/* ---- end of sub-emitters and trails ---- */
+
 static isk_status check_emitter(ctx *c)
 {
     const isk_effect_def *d = c->d;
@@ -149,7 +178,8 @@ static isk_status check_emitter(ctx *c)
             return bad_key(c, "rect", "needs xmin <= xmax and ymin <= ymax");
         break;
     }
-    case ISK_SOURCE_STREAM: {
+    case ISK_SOURCE_STREAM:
+    case ISK_SOURCE_SUB: { /* a sub-emitter: a stream's shape and launch */
         isk_status s = check_stream(c, e);
         if (s != ISK_OK)
             return s;
@@ -170,6 +200,9 @@ static isk_status check_emitter(ctx *c)
     const char *looks = fx_looks_check(e, why, sizeof why);
     if (looks)
         return bad_key(c, looks, "%s", why);
+    isk_status se = check_sub_emitters(c, e);
+    if (se != ISK_OK)
+        return se;
     if (e->slow_faithful && e->slowing > 0) {
         /* The thesis order is a fused constant-acceleration kernel. */
         isk_integrator m = e->integrator == ISK_INTEGRATE_INHERIT ? d->integrator : e->integrator;

@@ -193,6 +193,7 @@ isk_status fx_compile(isk_effect *e, fx_group *g)
         st->u.walls.ax = g->const_ax;
         st->u.walls.ay = g->const_ay;
         st->u.walls.offset = isk_integrator_velocity_offset(g->integrator);
+        st->u.walls.hit = em->on_hit >= 0;
     }
     if (g->ndefl) {
         if (!ADD(isk_stage_deflect))
@@ -202,6 +203,7 @@ isk_status fx_compile(isk_effect *e, fx_group *g)
         st->u.deflect.rng = &g->rng;
         st->u.deflect.can_kill = can_kill;
         st->u.deflect.drag = f->drag;
+        st->u.deflect.hit = em->on_hit >= 0;
     }
     if (g->store.angle && fx_looks_spins(em)) {
         if (!ADD(isk_stage_spin))
@@ -219,6 +221,8 @@ isk_status fx_compile(isk_effect *e, fx_group *g)
         g->substep_end[g->nsubstep_end++] = &fx_step_carry;
     if (em->source == ISK_SOURCE_STREAM)
         g->substep_end[g->nsubstep_end++] = &fx_step_spawn;
+    if (em->on_hit >= 0 && (walls || g->ndefl)) /* sub-emitters (effect_events.c) */
+        g->substep_end[g->nsubstep_end++] = &fx_step_hits;
     if (mortal)
         g->substep_end[g->nsubstep_end++] = &fx_step_cull;
     g->draw = fx_choose_draw(g);
@@ -260,4 +264,7 @@ void fx_describe_group(const isk_effect *e, const fx_group *g, FILE *out)
                 g->has_color_ramp ? ", colour over life" : "", g->has_alpha_ramp ? ", alpha over life" : "",
                 g->has_size_ramp ? ", size over life" : "");
     fx_looks_describe(g, out);
+    if (em->trail > 0)
+        fprintf(out, "  trail     the last %d positions, %g px wide, fade %g (drawn first)\n", em->trail,
+                em->trail_width, em->trail_fade);
 }

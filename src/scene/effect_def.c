@@ -5,12 +5,13 @@
 #include <string.h>
 
 #include "effect_internal.h"
+#include "iskra/limits.h"
 #include "key_value.h"
 
 const char *const isk_force_kind_names[ISK_FORCE_KIND_COUNT] = {"gravity", "drag", "wind", "potential",
                                                                            "turbulence"};
 const char *const isk_space_names[ISK_SPACE_COUNT] = {"world", "local"};
-const char *const isk_source_names[ISK_SOURCE_KIND_COUNT] = {"particle", "explosion", "layer", "stream"};
+const char *const isk_source_names[ISK_SOURCE_KIND_COUNT] = {"particle", "explosion", "layer", "stream", "sub"};
 const char *const isk_rate_mode_names[ISK_RATE_MODE_COUNT] = {"accumulate", "thesis"};
 const char *const isk_birth_mode_names[ISK_BIRTH_MODE_COUNT] = {"backdate", "thesis-jitter", "frame"};
 const char *const isk_draw_mode_names[ISK_DRAW_COUNT] = {"dot", "pixel", "disc", "sprite", "none", "dot-browser"};
@@ -127,7 +128,13 @@ int fx_emitter_oscillates(const isk_emitter_def *em)
 size_t fx_emitter_memory(const isk_emitter_def *e)
 {
     unsigned flags = (fx_emitter_oscillates(e) ? ISK_PARTICLES_OSC : 0) | fx_looks_columns(e);
-    size_t b = isk_particles_bytes(e->capacity, flags);
+    /* sub-emitters and trails: the hit and trail columns, a sub-emitter's waiting events */
+    flags |= (e->on_hit >= 0 ? ISK_PARTICLES_HIT : 0) | (e->trail > 0 ? ISK_PARTICLES_TRAIL : 0);
+    size_t b = isk_particles_bytes_trail(e->capacity, flags, e->trail > 0 && e->trail <= ISK_TRAIL_MAX ? e->trail : 0);
+    if (b && e->source == ISK_SOURCE_SUB) {
+        size_t q = e->capacity <= SIZE_MAX / sizeof(fx_event) ? e->capacity * sizeof(fx_event) : SIZE_MAX;
+        b = q > SIZE_MAX - b ? 0 : b + q;
+    }
     return b ? b : SIZE_MAX;
 }
 

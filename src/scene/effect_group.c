@@ -141,9 +141,11 @@ const fx_step_kind fx_step_late_walls = {"walls", run_late_walls, describe_late_
 
 static isk_status run_cull(isk_effect *e, fx_group *g, double t0, double h)
 {
-    (void)e;
-    (void)t0;
-    (void)h;
+    if (g->def->on_death >= 0) { /* sub-emitters: the deaths as events first (effect_events.c) */
+        isk_status s = fx_events_deaths(e, g, t0 + h);
+        if (s != ISK_OK)
+            return s;
+    }
     if (g->cull_unordered)
         isk_particles_cull_unordered(&g->store);
     else
@@ -153,8 +155,9 @@ static isk_status run_cull(isk_effect *e, fx_group *g, double t0, double h)
 
 static void describe_cull(const isk_effect *e, const fx_group *g, FILE *out)
 {
-    (void)e;
     fprintf(out, "age >= life%s", g->cull_unordered ? " (the last live particles fill the holes: nothing sees the order)" : "");
+    if (g->def->on_death >= 0)
+        fprintf(out, "; deaths -> events of %s", e->def.emitters[g->def->on_death].name);
 }
 
 const fx_step_kind fx_step_cull = {"cull", run_cull, describe_cull};

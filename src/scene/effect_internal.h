@@ -36,6 +36,19 @@
 
 typedef struct fx_group fx_group;
 
+/* ---- sub-emitters and trails (issue 14) ----
+ * An event waiting in a sub-emitter's group: where and how fast the parent
+ * was at the end of the substep in which it died or bounced, and that time. */
+typedef struct fx_event {
+    double x, y, vx, vy, t;
+} fx_event;
+
+typedef struct fx_events {
+    fx_event *ev;
+    size_t n, cap;
+} fx_events;
+/* ---- end of sub-emitters and trails ---- */
+
 /* A group-level stage (frame start or substep end). */
 typedef struct fx_step_kind {
     const char *name;
@@ -126,6 +139,9 @@ struct fx_group {
     const isk_texture *texture;    /* drawn through effect_texture.c: the emitter's texture (the
                                       effect's cache) or &streak; NULL: the usual draws */
     isk_texture streak;            /* a sprite kind as a texture (align = velocity, size_range) */
+    /* ---- sub-emitters and trails (issue 14): effect_events.c, effect_trail.c ---- */
+    fx_events pending;             /* a SUB group's events, born at the end of the frame */
+    /* ---- end of sub-emitters and trails ---- */
 };
 
 struct isk_effect {
@@ -242,5 +258,44 @@ isk_status fx_looks_find_texture(isk_emitter_def *em, const char *scene_name, co
 void fx_looks_describe(const fx_group *g, FILE *out);
 /* effect_texture.c: the draw of textured particles and streaks. */
 isk_status fx_draw_textures(isk_effect *e, isk_canvas *c, fx_group *g, const fx_band *b);
+
+/* ---- sub-emitters and trails (issue 14) ---------------------------------------
+ * effect_stream.c: a stream's launcher and one birth, shared with the
+ * sub-emitters' births (effect_events.c).  dv (NULL: none) is added to the
+ * launch velocity before anything else reads it. */
+typedef struct fx_launcher {
+    isk_shape shape;
+    isk_velgen launch;
+    int moving;    /* the shape's centre follows the emitter's path */
+    double place;  /* local space: every birth is placed at this time (the step's end); else NAN */
+    double t1;     /* the step's end */
+} fx_launcher;
+/* The emitter's shape and launch, not moving (a sub-emitter's, or a stream's
+ * before run_spawn sets its path). */
+fx_launcher fx_launcher_of(const isk_emitter_def *em);
+/* tb: the birth's time (the field's clock and a moving emitter's place). */
+isk_status fx_birth(isk_effect *e, fx_group *g, const fx_launcher *l, double age, double tb, const double *dv);
+
+/* effect_events.c */
+/* The optional columns the emitter's keys call for (hit with on_hit, the
+ * trail with trail > 0), added to or taken from the group's store. */
+isk_status fx_events_columns(fx_group *g);
+void fx_events_free(fx_group *g);
+/* The cull's deaths as events of the group's on_death emitter, in index
+ * order, at time t (the end of the substep). */
+isk_status fx_events_deaths(isk_effect *e, fx_group *g, double t);
+/* Every SUB group's waiting events born, in group then event order (the
+ * end of a frame, after every group stepped). */
+isk_status fx_events_release(isk_effect *e);
+extern const fx_step_kind fx_step_hits;       /* substep end: the bounces counted in hit as events */
+
+/* effect_trail.c */
+/* After a frame: each trailed group's positions as its newest points. */
+void fx_trail_record(isk_effect *e);
+/* The group's trails, drawn before its particles (in bands on the threads). */
+isk_status fx_trail_render(isk_effect *e, isk_canvas *c, fx_group *g);
+/* effect_render.c: particle i's colour as its own draw gives it. */
+isk_color fx_particle_color(const fx_group *g, size_t i);
+/* ---- end of sub-emitters and trails ---- */
 
 #endif

@@ -183,6 +183,8 @@ static isk_status apply(isk_effect *e, const where *w, const isk_key *k, const v
             s = isk_particles_add_columns(&g->store, ISK_PARTICLES_OSC);
         if (s == ISK_OK)
             s = fx_looks_live(g);
+        if (s == ISK_OK)
+            s = fx_events_columns(g); /* on_hit, trail */
         if (!strcmp(k->name, "rate") && em->source == ISK_SOURCE_STREAM)
             rebase_stream(e, g, old->rate);
         if ((!strcmp(k->name, "position") || !strcmp(k->name, "emitter_velocity")) && em->source == ISK_SOURCE_STREAM)

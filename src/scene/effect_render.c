@@ -153,6 +153,12 @@ isk_color fx_style(const fx_group *g, const isk_particles *p, size_t i, int vary
     return particle_color(g, p, i, t, mult);
 }
 
+isk_color fx_particle_color(const fx_group *g, size_t i) /* the trails' colour (effect_trail.c) */
+{
+    double mult;
+    return fx_style(g, &g->store, i, fx_varies(g), &mult);
+}
+
 /* ---- the groups' draws --------------------------------------------------
  * Each draws the rows [b->r0, b->r1) of the canvas: the whole canvas on one
  * thread, or one band per thread (fx_render_group).  Every primitive used
@@ -331,6 +337,11 @@ fx_draw_fn fx_choose_draw(const fx_group *g)
 static isk_status render_group(isk_effect *e, isk_canvas *c, fx_group *g)
 {
     fx_band whole = {.r0 = 0, .r1 = c->height};
+    if (g->store.trail) { /* trails under the particles (effect_trail.c) */
+        isk_status s = fx_trail_render(e, c, g);
+        if (s != ISK_OK)
+            return s;
+    }
     if (g->draw == draw_sprites) {
         isk_status s = prepare_sprites(e, g, &whole);
         if (s != ISK_OK)

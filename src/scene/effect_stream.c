@@ -179,19 +179,17 @@ double fx_prewarm_frames(const isk_effect_def *d, const isk_emitter_def *em)
 }
 
 /* Where and how fast new particles start: built once per spawn call. */
-typedef struct launcher {
-    isk_shape shape;
-    isk_velgen launch;
-    int moving;    /* the shape's centre follows the emitter's path */
-    double place;  /* local space: every birth is placed at this time (the step's end); else NAN */
-    double t1;     /* the step's end */
-} launcher;
+fx_launcher fx_launcher_of(const isk_emitter_def *em)
+{
+    fx_launcher l = {shape_of(em), velgen_of(em), 0, NAN, 0.0};
+    return l;
+}
 
 /* One new particle: position, velocity and mass drawn here, lifetime and
  * oscillation by fx_adopt, then its first moments: back-dated births run the
  * group's own pipeline on it for its age; the thesis's jitter applies a
  * random whole number of milliseconds of the external force. */
-static isk_status birth(isk_effect *e, fx_group *g, const launcher *l, double age, double tb)
+isk_status fx_birth(isk_effect *e, fx_group *g, const fx_launcher *l, double age, double tb, const double *dv)
 {
     const isk_emitter_def *em = g->def;
     isk_particles *p = &g->store;
@@ -215,6 +213,10 @@ static isk_status birth(isk_effect *e, fx_group *g, const launcher *l, double ag
     if (em->launch == ISK_VELGEN_DISC) {
         vx += em->vel.x;
         vy += em->vel.y;
+    }
+    if (dv) { /* a sub-emitter's inherited velocity (only there: a stream's bits are untouched) */
+        vx += dv[0];
+        vy += dv[1];
     }
     double m = em->mass + (em->mass_range > 0 ? em->mass_range * isk_rng_uniform(&g->rng) : 0.0);
     size_t i;
@@ -273,7 +275,7 @@ static size_t room_left(const fx_group *g)
  * turn per particle the pool can still take; the rest are dropped and
  * counted.  Bursts older than the longest life are never born (as single
  * births). */
-static isk_status run_bursts(isk_effect *e, fx_group *g, const launcher *l, double t1, double t1_tol, double h)
+static isk_status run_bursts(isk_effect *e, fx_group *g, const fx_launcher *l, double t1, double t1_tol, double h)
 {
     const isk_emitter_def *em = g->def;
     const double every = em->burst_every, nb = g->next_burst;
@@ -306,7 +308,7 @@ static isk_status run_bursts(isk_effect *e, fx_group *g, const launcher *l, doub
             continue; /* dead on arrival: the whole burst */
         }
         for (size_t k = 0; k < em->count; k++) {
-            isk_status s = birth(e, g, l, em->birth == ISK_BIRTH_THESIS_JITTER ? h : age, tb);
+            isk_status s = fx_birth(e, g, l, em->birth == ISK_BIRTH_THESIS_JITTER ? h : age, tb, NULL);
             if (s != ISK_OK)
                 return s;
         }
@@ -368,7 +370,7 @@ static double events_due(const fx_group *g, double t, double n, double k_scale, 
 /* One kind of event (bursts: `count` births each; births: one each) due in
  * the step ending at t1.  Every turn is an event born, the pool's end (the
  * rest counted as dropped in one addition), or one of <= 3 dead ones. */
-static isk_status run_events(isk_effect *e, fx_group *g, const launcher *l, double t1, double h, double *done,
+static isk_status run_events(isk_effect *e, fx_group *g, const fx_launcher *l, double t1, double h, double *done,
                              double n, double k_scale, double k_first, size_t each)
 {
     const isk_emitter_def *em = g->def;
@@ -408,7 +410,7 @@ static isk_status run_events(isk_effect *e, fx_group *g, const launcher *l, doub
         }
         double a = em->birth == ISK_BIRTH_BACKDATE ? age : (em->birth == ISK_BIRTH_THESIS_JITTER ? h : 0.0);
         for (size_t k = 0; k < each; k++) {
-            isk_status s = birth(e, g, l, a, tb);
+            isk_status s = fx_birth(e, g, l, a, tb, NULL);
             if (s != ISK_OK)
                 return s;
         }
@@ -416,7 +418,7 @@ static isk_status run_events(isk_effect *e, fx_group *g, const launcher *l, doub
     return ISK_OK;
 }
 
-static isk_status run_cycles(isk_effect *e, fx_group *g, const launcher *l, double t0, double h)
+static isk_status run_cycles(isk_effect *e, fx_group *g, const fx_launcher *l, double t0, double h)
 {
     const isk_emitter_def *em = g->def;
     const double t1 = t0 + h;
@@ -431,7 +433,7 @@ static isk_status run_cycles(isk_effect *e, fx_group *g, const launcher *l, doub
         double want = floor(h * em->rate + 0.5);
         double take = fmin(want, (double)room_left(g));
         for (size_t j = 0; j < (size_t)take; j++)
-            if ((s = birth(e, g, l, em->birth == ISK_BIRTH_THESIS_JITTER ? h : 0.0, t1)) != ISK_OK)
+            if ((s = fx_birth(e, g, l, em->birth == ISK_BIRTH_THESIS_JITTER ? h : 0.0, t1, NULL)) != ISK_OK)
                 return s;
         drop(g, want - take);
         return ISK_OK;
@@ -450,7 +452,9 @@ static isk_status run_spawn(isk_effect *e, fx_group *g, double t0, double h)
     /* A birth due within a nanosecond of the step's end belongs to this step:
      * 30 steps of 1/30 s and 144 of 1/144 s must agree on "t = 1 s". */
     const double t1_tol = t1 + 1e-9 * (t1 > 1.0 ? t1 : 1.0);
-    launcher l = {shape_of(em), velgen_of(em), moving(g, em), NAN, t1};
+    fx_launcher l = fx_launcher_of(em);
+    l.moving = moving(g, em);
+    l.t1 = t1;
     if (em->space == ISK_SPACE_LOCAL)
         l.place = t1;
     if (l.moving) {
@@ -473,7 +477,7 @@ static isk_status run_spawn(isk_effect *e, fx_group *g, double t0, double h)
         double want = floor(h * em->rate + 0.5); /* <= 10^10: clamped before any integer cast */
         double take = fmin(want, (double)room_left(g));
         for (size_t j = 0; j < (size_t)take; j++)
-            if ((s = birth(e, g, &l, em->birth == ISK_BIRTH_THESIS_JITTER ? h : 0.0, t1)) != ISK_OK)
+            if ((s = fx_birth(e, g, &l, em->birth == ISK_BIRTH_THESIS_JITTER ? h : 0.0, t1, NULL)) != ISK_OK)
                 return s;
         drop(g, want - take);
         return ISK_OK;
@@ -511,7 +515,7 @@ static isk_status run_spawn(isk_effect *e, fx_group *g, double t0, double h)
             continue; /* would be dead already: never created */
         }
         double a = em->birth == ISK_BIRTH_BACKDATE ? age : (em->birth == ISK_BIRTH_THESIS_JITTER ? h : 0.0);
-        if ((s = birth(e, g, &l, a, tb)) != ISK_OK)
+        if ((s = fx_birth(e, g, &l, a, tb, NULL)) != ISK_OK)
             return s;
     }
     return ISK_OK;

@@ -7,6 +7,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "iskra/limits.h"
 #include "sim/store_internal.h"
 
 enum { ALIGN = 64 };
@@ -25,7 +26,8 @@ static size_t round_up(size_t bytes)
 }
 
 /* Every array of the store: where its pointer lives in isk_particles, the
- * size of one element and the flag that asks for it (0: always there).
+ * size of one element (0: the trail's, trail_len points of two doubles) and
+ * the flag that asks for it (0: always there).
  * Growth, removal and culling walk this table, so a new column is one row. */
 typedef struct column {
     size_t field;
@@ -43,9 +45,19 @@ static const column columns[] = {
     COL(osc_omega, double, ISK_PARTICLES_OSC), COL(osc_offset, double, ISK_PARTICLES_OSC),
     /* looks (issue 14) */
     COL(angle, double, ISK_PARTICLES_ANGLE),   COL(spin, double, ISK_PARTICLES_ANGLE),
+    /* ---- sub-emitters and trails (issue 14) ---- */
+    COL(hit, unsigned char, ISK_PARTICLES_HIT), {offsetof(isk_particles, trail), 0, ISK_PARTICLES_TRAIL},
+    /* ---- end of sub-emitters and trails ---- */
 };
 #undef COL
 enum { NCOLUMNS = sizeof columns / sizeof columns[0], AGE_COLUMN = 5, LIFE_COLUMN = 6 };
+
+/* Bytes of one particle's element of column c in a store whose trail has
+ * trail_len points. */
+static size_t elem_of(const column *c, int trail_len)
+{
+    return c->elem ? c->elem : 2 * sizeof(double) * (size_t)(trail_len > 0 ? trail_len : 0);
+}
 
 /* The column's array (NULL when absent).  The pointer fields have different
  * types, so they are read and written as bytes. */
@@ -68,19 +80,19 @@ static void free_arrays(isk_particles *p)
 }
 
 /* The bytes of one block of arrays for `cap` particles. */
-static size_t block_bytes(size_t cap, unsigned flags)
+static size_t block_bytes(size_t cap, unsigned flags, int trail_len)
 {
     size_t total = ALIGN;
     for (int k = 0; k < NCOLUMNS; k++)
         if (!columns[k].flag || (flags & columns[k].flag))
-            total += round_up(cap * columns[k].elem) + STAGGER;
+            total += round_up(cap * elem_of(&columns[k], trail_len)) + STAGGER;
     return round_up(total);
 }
 
 /* Lays the arrays of `cap` particles out in one block (NULL on failure). */
 static void *alloc_arrays(isk_particles *n, size_t cap, unsigned flags)
 {
-    unsigned char *block = aligned_alloc(ALIGN, block_bytes(cap, flags));
+    unsigned char *block = aligned_alloc(ALIGN, block_bytes(cap, flags, n->trail_len));
     if (!block)
         return NULL;
     size_t off = 0;
@@ -91,7 +103,7 @@ static void *alloc_arrays(isk_particles *n, size_t cap, unsigned flags)
             continue;
         }
         col_set(n, c, block + off);
-        off += round_up(cap * c->elem) + STAGGER;
+        off += round_up(cap * elem_of(c, n->trail_len)) + STAGGER;
     }
     n->block = block;
     return block;
@@ -105,7 +117,7 @@ isk_status isk_particles_init(isk_particles *p, size_t capacity, unsigned flags)
     p->default_color = ISK_YELLOW;
     p->default_size = 0.1;
     if (flags & ~(unsigned)ISK_PARTICLES_FLAGS)
-        return ISK_ERR_SIZE;
+        return ISK_ERR_SIZE; /* the trail comes with its length: isk_particles_set_trail */
     p->flags = flags;
     return isk_particles_reserve(p, capacity);
 }
@@ -118,15 +130,22 @@ void isk_particles_free(isk_particles *p)
     unsigned flags = p->flags;
     isk_color dc = p->default_color;
     double ds = p->default_size;
+    int tl = p->trail_len;
     memset(p, 0, sizeof *p);
     p->flags = flags;
+    p->trail_len = tl;
     p->default_color = dc;
     p->default_size = ds;
 }
 
 size_t isk_particles_bytes(size_t count, unsigned flags)
 {
-    if (count > ISK_PARTICLES_MAX)
+    return isk_particles_bytes_trail(count, flags & ~(unsigned)ISK_PARTICLES_TRAIL, 0);
+}
+
+size_t isk_particles_bytes_trail(size_t count, unsigned flags, int points)
+{
+    if (count > ISK_PARTICLES_MAX || points < 0 || points > ISK_TRAIL_MAX)
         return 0;
     size_t cap = 64, prev = 0;
     while (cap < count) {
@@ -135,7 +154,7 @@ size_t isk_particles_bytes(size_t count, unsigned flags)
     }
     if (cap > ISK_PARTICLES_MAX)
         cap = ISK_PARTICLES_MAX;
-    return block_bytes(cap, flags) + (prev ? block_bytes(prev, flags) : 0);
+    return block_bytes(cap, flags, points) + (prev ? block_bytes(prev, flags, points) : 0);
 }
 
 isk_status isk_particles_reserve(isk_particles *p, size_t capacity)
@@ -159,7 +178,7 @@ isk_status isk_particles_reserve(isk_particles *p, size_t capacity)
     for (int k = 0; p->count && k < NCOLUMNS; k++) {
         unsigned char *dst = col_get(&n, &columns[k]);
         if (dst)
-            memcpy(dst, col_get(p, &columns[k]), p->count * columns[k].elem);
+            memcpy(dst, col_get(p, &columns[k]), p->count * elem_of(&columns[k], p->trail_len));
     }
     free_arrays(p);
     n.capacity = cap;
@@ -183,7 +202,7 @@ isk_status isk_particles_add_columns(isk_particles *p, unsigned flags)
     if (!p)
         return ISK_ERR_NULL;
     if (flags & ~(unsigned)ISK_PARTICLES_FLAGS)
-        return ISK_ERR_SIZE;
+        return ISK_ERR_SIZE; /* the trail comes with its length: isk_particles_set_trail */
     unsigned want = p->flags | flags;
     if (want == p->flags && p->x)
         return ISK_OK;
@@ -197,7 +216,7 @@ isk_status isk_particles_add_columns(isk_particles *p, unsigned flags)
         if (!dst)
             continue;
         if (src && p->x) {
-            memcpy(dst, src, p->count * columns[k].elem);
+            memcpy(dst, src, p->count * elem_of(&columns[k], p->trail_len));
         } else {
             for (size_t i = 0; i < p->count; i++)
                 column_default(p, k, dst + i * columns[k].elem);
@@ -240,6 +259,15 @@ size_t isk_store_push(isk_particles *p, double x, double y, double vx, double vy
         p->angle[i] = 0.0;
         p->spin[i] = 0.0;
     }
+    if (p->hit)
+        p->hit[i] = 0;
+    if (p->trail) {
+        double *t = p->trail + 2 * (size_t)p->trail_len * i;
+        for (int k = 0; k < p->trail_len; k++) {
+            t[2 * k] = x;
+            t[2 * k + 1] = y;
+        }
+    }
     return i;
 }
 
@@ -268,7 +296,7 @@ void isk_particles_remove(isk_particles *p, size_t i)
     size_t last = p->count - 1;
     for (int k = 0; i != last && k < NCOLUMNS; k++) {
         unsigned char *a = col_get(p, &columns[k]);
-        size_t e = columns[k].elem;
+        size_t e = elem_of(&columns[k], p->trail_len);
         if (a)
             memcpy(a + i * e, a + last * e, e);
     }
@@ -310,7 +338,7 @@ static inline size_t compact(isk_particles *p, const int what)
         if (columns[k].elem == sizeof(double)) {
             dcol[nd++] = (double *)(void *)a;
         } else {
-            oel[no] = columns[k].elem;
+            oel[no] = elem_of(&columns[k], p->trail_len);
             ocol[no++] = a;
         }
     }
@@ -346,7 +374,7 @@ static void move_row(isk_particles *p, size_t w, size_t r)
 {
     for (int k = 0; k < NCOLUMNS; k++) {
         unsigned char *a = col_get(p, &columns[k]);
-        size_t e = columns[k].elem;
+        size_t e = elem_of(&columns[k], p->trail_len);
         if (a)
             memcpy(a + w * e, a + r * e, e);
     }
@@ -390,4 +418,50 @@ void isk_particles_clear(isk_particles *p)
 {
     if (p)
         p->count = 0;
+}
+
+/* ---- sub-emitters and trails (issue 14) ---------------------------------------- */
+
+isk_status isk_particles_set_trail(isk_particles *p, int points)
+{
+    if (!p)
+        return ISK_ERR_NULL;
+    if (points < 0 || points > ISK_TRAIL_MAX)
+        return ISK_ERR_RANGE;
+    if (points == p->trail_len && (points == 0 || p->trail))
+        return ISK_OK;
+    isk_particles n = *p;
+    n.flags = points ? p->flags | ISK_PARTICLES_TRAIL : p->flags & ~(unsigned)ISK_PARTICLES_TRAIL;
+    n.trail_len = points;
+    n.trail_head = 0;
+    size_t cap = p->capacity ? p->capacity : 64;
+    if (!alloc_arrays(&n, cap, n.flags))
+        return ISK_ERR_NOMEM;
+    for (int k = 0; k < NCOLUMNS; k++) {
+        unsigned char *dst = col_get(&n, &columns[k]), *src = col_get(p, &columns[k]);
+        if (dst && src && columns[k].elem && p->x)
+            memcpy(dst, src, p->count * columns[k].elem);
+    }
+    for (size_t i = 0; n.trail && i < p->count; i++)
+        for (int k = 0; k < points; k++) {
+            n.trail[2 * (size_t)points * i + 2 * (size_t)k] = p->x[i];
+            n.trail[2 * (size_t)points * i + 2 * (size_t)k + 1] = p->y[i];
+        }
+    free_arrays(p);
+    n.capacity = cap;
+    *p = n;
+    return ISK_OK;
+}
+
+void isk_particles_record_trail(isk_particles *p)
+{
+    if (!p || !p->trail || p->trail_len <= 0)
+        return;
+    const size_t len = (size_t)p->trail_len;
+    p->trail_head = (p->trail_head + 1) % p->trail_len;
+    double *t = p->trail + 2 * (size_t)p->trail_head;
+    for (size_t i = 0; i < p->count; i++, t += 2 * len) {
+        t[0] = p->x[i];
+        t[1] = p->y[i];
+    }
 }

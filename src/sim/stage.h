@@ -82,6 +82,7 @@ struct isk_stage {
             int start;                                       /* 1: the remember stage ran (potentials act) */
             double ax, ay, offset;                           /* else: the constant acceleration and the
                                                                 integrator's velocity offset */
+            int hit;                                         /* count bounces into p->hit (on_hit) */
         } walls;
         struct {
             const isk_deflector *segs;
@@ -89,6 +90,7 @@ struct isk_stage {
             isk_rng *rng;                                    /* the owner's stream (probabilities) */
             int can_kill;                                    /* some segment kills: life = -inf */
             double drag;                                     /* the motion's linear drag b */
+            int hit;                                         /* count bounces into p->hit (on_hit) */
         } deflect;
         struct { const struct isk_field *f; } field;         /* isk_stage_field (src/sim/field.h) */
         struct { double spin, spin_range; } spin;           /* isk_stage_spin: for describe only (rad/s) */

@@ -34,6 +34,19 @@ static isk_step_motion motion_of(const isk_block *b, double drag, double h)
 
 const isk_stage_kind isk_stage_remember = {"remember", run_remember, describe_remember};
 
+/* A particle's hit byte (iskra/particles.h) after a contact stage that
+ * touched it `k` times in this substep: the bounces are counted unless it
+ * touched the same kind of contact (wall or deflector: `bit`) in the
+ * substep before too, which is resting or sliding on it, not bouncing. */
+static unsigned char contact_mark(unsigned char h, unsigned bit, size_t k)
+{
+    if (k == 0)
+        return (unsigned char)(h & ~bit);
+    size_t n = (h & bit) ? 0 : k;
+    size_t c = (h & ISK_HIT_COUNT) + n;
+    return (unsigned char)((h & ~(unsigned)ISK_HIT_COUNT) | bit | (c > ISK_HIT_COUNT ? ISK_HIT_COUNT : c));
+}
+
 static void run_walls(const isk_stage *st, isk_block *b, double h)
 {
     isk_step_motion mo = motion_of(b, st->u.walls.drag, h);
@@ -43,7 +56,33 @@ static void run_walls(const isk_stage *st, isk_block *b, double h)
         mo.ay = st->u.walls.ay;
         mo.offset = st->u.walls.offset;
     }
-    isk_bounds_apply_step(st->u.walls.b, &mo, b->n, b->x, b->y, b->vx, b->vy);
+    if (!st->u.walls.hit || !b->p->hit) {
+        isk_bounds_apply_step(st->u.walls.b, &mo, b->n, b->x, b->y, b->vx, b->vy);
+        return;
+    }
+    /* A sub-emitter's on_hit.  The walls touch only particles that end the
+     * step beyond them (sound walls) or flip their velocity (the thesis's).
+     * A particle resting on a wall touches it at every step: only the first
+     * touch after a step without one is a bounce (contact_mark). */
+    const isk_bounds *w = st->u.walls.b;
+    const unsigned sd = w->sides;
+    const double lo[2] = {sd & ISK_SIDE_LEFT ? w->xmin + w->margin : -INFINITY,
+                          sd & ISK_SIDE_BOTTOM ? w->ymin + w->margin : -INFINITY};
+    const double hi[2] = {sd & ISK_SIDE_RIGHT ? w->xmax - w->margin : INFINITY,
+                          sd & ISK_SIDE_TOP ? w->ymax - w->margin : INFINITY};
+    const int thesis = w->mode == ISK_BOUNCE_THESIS;
+    double pre[2][ISK_SIM_BLOCK];
+    double *const pos[2] = {b->x, b->y}, *const vel[2] = {b->vx, b->vy};
+    for (int a = 0; a < 2; a++)
+        memcpy(pre[a], thesis ? vel[a] : pos[a], b->n * sizeof pre[a][0]);
+    isk_bounds_apply_step(w, &mo, b->n, b->x, b->y, b->vx, b->vy);
+    unsigned char *hit = b->p->hit + b->first;
+    for (size_t i = 0; i < b->n; i++) {
+        unsigned k = 0;
+        for (int a = 0; a < 2; a++)
+            k += thesis ? pre[a][i] * vel[a][i] < 0 : !(pre[a][i] >= lo[a] && pre[a][i] <= hi[a]);
+        hit[i] = contact_mark(hit[i], ISK_HIT_WALL, k);
+    }
 }
 
 static void describe_walls(const isk_stage *st, FILE *out)
@@ -69,8 +108,27 @@ static void run_deflect(const isk_stage *st, isk_block *b, double h)
     isk_scratch *s = b->s;
     memset(s->killed, 0, b->n);
     const isk_step_motion mo = motion_of(b, st->u.deflect.drag, h);
-    isk_deflect_step(st->u.deflect.segs, st->u.deflect.n, b->x, b->y, b->vx, b->vy, &mo, b->n, st->u.deflect.rng,
-                     s->killed, NULL);
+    if (st->u.deflect.hit && b->p->hit) {
+        /* A sub-emitter's on_hit: particle by particle (the same draws in
+         * the same order), each one's bounces counted (contact_mark: a
+         * particle resting on a segment touches it at every step). */
+        unsigned char *hit = b->p->hit + b->first;
+        for (size_t i = 0; i < b->n; i++) {
+            isk_step_motion m1 = mo;
+            m1.x0 += i;
+            m1.y0 += i;
+            m1.vx0 += i;
+            m1.vy0 += i;
+            m1.m += i;
+            isk_deflect_stats ds = {0, 0, 0, 0, 0, 0};
+            isk_deflect_step(st->u.deflect.segs, st->u.deflect.n, b->x + i, b->y + i, b->vx + i, b->vy + i, &m1, 1,
+                             st->u.deflect.rng, s->killed + i, &ds);
+            hit[i] = contact_mark(hit[i], ISK_HIT_DEFLECTOR, ds.bounces);
+        }
+    } else {
+        isk_deflect_step(st->u.deflect.segs, st->u.deflect.n, b->x, b->y, b->vx, b->vy, &mo, b->n,
+                         st->u.deflect.rng, s->killed, NULL);
+    }
     if (!st->u.deflect.can_kill)
         return;
     double *life = b->p->life + b->first;
