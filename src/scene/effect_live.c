@@ -181,8 +181,10 @@ static isk_status apply(isk_effect *e, const where *w, const isk_key *k, const v
         }
         if (fx_emitter_oscillates(em) && !g->store.osc_amp)
             s = isk_particles_add_columns(&g->store, ISK_PARTICLES_OSC);
-        if (!strcmp(k->name, "rate") && em->source == ISK_SOURCE_STREAM)
+        if (!strcmp(k->name, "rate") && em->source == ISK_SOURCE_STREAM) {
             rebase_stream(e, g, old->rate);
+            fx_stream_rate_changed(e, g);
+        }
         if ((!strcmp(k->name, "position") || !strcmp(k->name, "emitter_velocity")) && em->source == ISK_SOURCE_STREAM)
             fx_path_changed(e, g, old, k->name); /* births spread along the way: no gap */
         break;

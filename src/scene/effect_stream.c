@@ -416,6 +416,13 @@ static isk_status run_events(isk_effect *e, fx_group *g, const launcher *l, doub
     return ISK_OK;
 }
 
+void fx_stream_rate_changed(isk_effect *e, fx_group *g)
+{
+    const isk_emitter_def *em = g->def;
+    if (em->duration > 0 && em->rate > 0)
+        g->cycle_births = events_due(g, fx_group_time(e, g), births_per_cycle(em), 1.0 / em->rate, 1.0);
+}
+
 static isk_status run_cycles(isk_effect *e, fx_group *g, const launcher *l, double t0, double h)
 {
     const isk_emitter_def *em = g->def;
