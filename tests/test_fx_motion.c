@@ -11,6 +11,7 @@
 #include "iskra/effect.h"
 #include "iskra/scene.h"
 #include "key_case.h"
+#include "scene_text.h"
 
 static const char *base = "[scene]\nwidth = 64\nheight = 48\nseed = 3\n"
                           "[emitter e]\nsource = stream\nrate = 200\nlaunch = disc\nspeed_max = 4\n%s\n";
@@ -95,20 +96,7 @@ static char *describe(const char *base_text, const char *line)
 {
     char text[2048];
     snprintf(text, sizeof text, base_text, line);
-    isk_effect_def d;
-    isk_error err;
-    isk_effect *fx;
-    cr_assert_eq(isk_scene_load_string(&d, text, "t.ini", &err), ISK_OK, "%s", err.message);
-    cr_assert_eq(isk_effect_create(&fx, &d, &err), ISK_OK, "%s", err.message);
-    char *buf = NULL;
-    size_t len = 0;
-    FILE *f = open_memstream(&buf, &len);
-    cr_assert_not_null(f);
-    isk_effect_describe(fx, f);
-    fclose(f);
-    isk_effect_destroy(fx);
-    isk_effect_def_free(&d);
-    return buf;
+    return scene_text_describe(text);
 }
 
 /* A stage is in the lists only for an emitter that uses it. */

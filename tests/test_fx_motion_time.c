@@ -10,17 +10,9 @@
 
 #include "iskra/effect.h"
 #include "iskra/scene.h"
+#include "scene_text.h"
 
-static isk_effect *open_text(const char *text)
-{
-    isk_effect_def d;
-    isk_error err;
-    isk_effect *fx;
-    cr_assert_eq(isk_scene_load_string(&d, text, "t.ini", &err), ISK_OK, "%s", err.message);
-    cr_assert_eq(isk_effect_create(&fx, &d, &err), ISK_OK, "%s", err.message);
-    isk_effect_def_free(&d);
-    return fx;
-}
+static isk_effect *open_text(const char *text) { return scene_text_open(text, 0); }
 
 /* rate 50/s and bursts of 7 unless `extra` says otherwise */
 static size_t count_after(const char *dt, long frames, const char *extra)
