@@ -127,6 +127,9 @@ Test(fx_motion_keys, stages_only_when_used)
     s = describe(moving, "");
     cr_assert_null(strstr(s, "carry"), "%s", s);
     free(s);
+    s = describe(base, "prewarm = 0.25");
+    cr_assert_not_null(strstr(s, "prewarmed 15 frames"), "%s", s);
+    free(s);
     s = describe(cycle, "loop = true");
     cr_assert_not_null(strstr(s, "for 0.2 s in a loop"), "%s", s);
     free(s);

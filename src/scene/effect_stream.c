@@ -535,6 +535,8 @@ static void describe_spawn(const isk_effect *e, const fx_group *g, FILE *out)
         fprintf(out, ", for %g s%s", em->duration, em->loop ? " in a loop" : "");
     if (em->emitter_velocity.x != 0 || em->emitter_velocity.y != 0)
         fprintf(out, ", along the emitter's path at (%g, %g)/s", em->emitter_velocity.x, em->emitter_velocity.y);
+    if (g->frame_offset)
+        fprintf(out, ", prewarmed %ld frames", g->frame_offset);
 }
 
 const fx_step_kind fx_step_spawn = {"spawn", run_spawn, describe_spawn};
