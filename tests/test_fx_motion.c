@@ -3,6 +3,7 @@
  * today's, a bad value is refused with FILE:LINE and the CLI exits 2; and
  * each stage is in an emitter's lists only when that emitter uses it. */
 #include <criterion/criterion.h>
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -10,6 +11,7 @@
 #include "iskra/effect.h"
 #include "iskra/scene.h"
 #include "key_case.h"
+#include "scene_text.h"
 
 static const char *base = "[scene]\nwidth = 64\nheight = 48\nseed = 3\n"
                           "[emitter e]\nsource = stream\nrate = 200\nlaunch = disc\nspeed_max = 4\n%s\n";
@@ -94,20 +96,7 @@ static char *describe(const char *base_text, const char *line)
 {
     char text[2048];
     snprintf(text, sizeof text, base_text, line);
-    isk_effect_def d;
-    isk_error err;
-    isk_effect *fx;
-    cr_assert_eq(isk_scene_load_string(&d, text, "t.ini", &err), ISK_OK, "%s", err.message);
-    cr_assert_eq(isk_effect_create(&fx, &d, &err), ISK_OK, "%s", err.message);
-    char *buf = NULL;
-    size_t len = 0;
-    FILE *f = open_memstream(&buf, &len);
-    cr_assert_not_null(f);
-    isk_effect_describe(fx, f);
-    fclose(f);
-    isk_effect_destroy(fx);
-    isk_effect_def_free(&d);
-    return buf;
+    return scene_text_describe(text);
 }
 
 /* A stage is in the lists only for an emitter that uses it. */
@@ -138,7 +127,61 @@ Test(fx_motion_keys, stages_only_when_used)
     s = describe(moving, "");
     cr_assert_null(strstr(s, "carry"), "%s", s);
     free(s);
+    s = describe(base, "prewarm = 0.25");
+    cr_assert_not_null(strstr(s, "prewarmed 15 frames"), "%s", s);
+    free(s);
     s = describe(cycle, "loop = true");
     cr_assert_not_null(strstr(s, "for 0.2 s in a loop"), "%s", s);
     free(s);
+}
+
+/* Reachable from C: the fields, with the key table's defaults and checks. */
+Test(fx_motion_keys, from_c)
+{
+    isk_effect_def d;
+    isk_effect_def_init(&d);
+    int t = isk_effect_def_add_force(&d, "swirl", ISK_FORCE_TURBULENCE);
+    cr_assert_geq(t, 0);
+    cr_assert(d.forces[t].scale == 1 && d.forces[t].strength == 0 && d.forces[t].speed == 0);
+    d.forces[t].strength = 3;
+    isk_emitter_def *e = isk_effect_def_add_emitter(&d, "e");
+    cr_assert_not_null(e);
+    cr_assert(e->radial_accel == 0 && e->tangential_accel == 0 && e->space == ISK_SPACE_WORLD && e->duration == 0 &&
+              !e->loop && e->prewarm == 0 && e->emitter_velocity.x == 0);
+    e->source = ISK_SOURCE_STREAM;
+    e->rate = 100;
+    e->radial_accel = -2;
+    e->emitter_velocity = isk_vec2_make(1, 0);
+    e->space = ISK_SPACE_LOCAL;
+    e->duration = 1;
+    e->loop = 1;
+    e->prewarm = 0.5;
+    cr_assert_eq(isk_emitter_use_force(e, t), ISK_OK);
+    isk_effect *fx;
+    isk_error err;
+    cr_assert_eq(isk_effect_create(&fx, &d, &err), ISK_OK, "%s", err.message);
+    cr_assert_gt(isk_effect_particle_count(fx), 40, "prewarmed");
+    isk_effect_destroy(fx);
+    /* the same checks as a file's */
+    const struct {
+        const char *what;
+        double *field;
+        double bad;
+    } cases[] = {{"radial_accel", &d.emitters[0].radial_accel, NAN},
+                 {"tangential_accel", &d.emitters[0].tangential_accel, 1e300},
+                 {"duration", &d.emitters[0].duration, -1},
+                 {"prewarm", &d.emitters[0].prewarm, 1e5},
+                 {"scale", &d.forces[t].scale, 0}};
+    for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
+        double keep = *cases[i].field;
+        *cases[i].field = cases[i].bad;
+        cr_assert_neq(isk_effect_create(&fx, &d, &err), ISK_OK, "%s accepted", cases[i].what);
+        cr_assert_not_null(strstr(err.message, cases[i].what), "%s", err.message);
+        *cases[i].field = keep;
+    }
+    d.dt = 1e-4; /* 0.5 s: 5000 steps, fine; 20 s: 200,000, too many */
+    d.emitters[0].prewarm = 20;
+    cr_assert_neq(isk_effect_create(&fx, &d, &err), ISK_OK);
+    cr_assert_not_null(strstr(err.message, "prewarm"), "%s", err.message);
+    isk_effect_def_free(&d);
 }

@@ -11,6 +11,7 @@
 #include "iskra/effect.h"
 #include "iskra/rng.h"
 #include "iskra/scene.h"
+#include "scene_text.h"
 #include "sim/field.h"
 
 Test(fx_motion_field, radial_and_tangential_directions)
@@ -125,17 +126,7 @@ static const char *smoke = "[scene]\nseed = 11\n"
                            "launch = disc\nspeed_max = 1\nlife = 2\ncapacity = 100000\nforces = swirl\n"
                            "radial_accel = 1\ntangential_accel = 2\nemitter_velocity = 1, 0\n";
 
-static isk_effect *open_text(const char *text, int threads)
-{
-    isk_effect_def d;
-    isk_error err;
-    isk_effect *fx;
-    cr_assert_eq(isk_scene_load_string(&d, text, "t.ini", &err), ISK_OK, "%s", err.message);
-    d.threads = threads;
-    cr_assert_eq(isk_effect_create(&fx, &d, &err), ISK_OK, "%s", err.message);
-    isk_effect_def_free(&d);
-    return fx;
-}
+static isk_effect *open_text(const char *text, int threads) { return scene_text_open(text, threads); }
 
 /* Thousands of particles (many blocks): the same state on 1 and 3 threads. */
 Test(fx_motion_field, same_state_on_any_number_of_threads, .timeout = 60)

@@ -15,17 +15,9 @@
 #include "iskra/png.h"
 #include "iskra/scene.h"
 #include "refimg.h"
+#include "scene_text.h"
 
-static isk_effect *open_text(const char *text)
-{
-    isk_effect_def d;
-    isk_error err;
-    isk_effect *fx;
-    cr_assert_eq(isk_scene_load_string(&d, text, "t.ini", &err), ISK_OK, "%s", err.message);
-    cr_assert_eq(isk_effect_create(&fx, &d, &err), ISK_OK, "%s", err.message);
-    isk_effect_def_free(&d);
-    return fx;
-}
+static isk_effect *open_text(const char *text) { return scene_text_open(text, 0); }
 
 /* 600 units/s, particles with no speed and no forces, at t = 1 s. */
 static isk_effect *fast_emitter(const char *dt)

@@ -10,17 +10,9 @@
 
 #include "iskra/effect.h"
 #include "iskra/scene.h"
+#include "scene_text.h"
 
-static isk_effect *open_text(const char *text)
-{
-    isk_effect_def d;
-    isk_error err;
-    isk_effect *fx;
-    cr_assert_eq(isk_scene_load_string(&d, text, "t.ini", &err), ISK_OK, "%s", err.message);
-    cr_assert_eq(isk_effect_create(&fx, &d, &err), ISK_OK, "%s", err.message);
-    isk_effect_def_free(&d);
-    return fx;
-}
+static isk_effect *open_text(const char *text) { return scene_text_open(text, 0); }
 
 /* rate 50/s and bursts of 7 unless `extra` says otherwise */
 static size_t count_after(const char *dt, long frames, const char *extra)
@@ -151,4 +143,27 @@ Test(fx_motion_time, prewarm_is_per_emitter)
     assert_same_state(isk_effect_particles(warm, 1), isk_effect_particles(cold, 1));
     isk_effect_destroy(warm);
     isk_effect_destroy(cold);
+}
+
+/* A live rate change within a looped cycle: no catch-up burst, the new
+ * rate from then on, and the next cycles at the new rate exactly. */
+Test(fx_motion_time, live_rate_of_a_cycle)
+{
+    isk_effect *fx = open_text("[scene]\ndt = 1/60\n[emitter e]\nsource = stream\nrate = 50\nduration = 0.4\n"
+                               "loop = true\ncapacity = 100000\n");
+    for (int i = 0; i < 12; i++) /* 0.2 s: 10 births */
+        cr_assert_eq(isk_effect_step(fx), ISK_OK);
+    cr_assert_eq(isk_effect_particle_count(fx), 10);
+    isk_error err;
+    cr_assert_eq(isk_effect_set(fx, "emitter e", "rate", "100", &err), ISK_OK, "%s", err.message);
+    cr_assert_eq(isk_effect_step(fx), ISK_OK);
+    cr_assert_leq(isk_effect_particle_count(fx), 12, "no catch-up: %zu", isk_effect_particle_count(fx));
+    for (int i = 0; i < 11; i++) /* to 0.4 s: the rest of the cycle at 100/s, 20 more */
+        cr_assert_eq(isk_effect_step(fx), ISK_OK);
+    const size_t at_end = isk_effect_particle_count(fx);
+    cr_assert_eq(at_end, 30, "%zu", at_end);
+    for (int i = 0; i < 24; i++) /* a whole cycle at 100/s */
+        cr_assert_eq(isk_effect_step(fx), ISK_OK);
+    cr_assert_eq(isk_effect_particle_count(fx), at_end + 40);
+    isk_effect_destroy(fx);
 }

@@ -214,6 +214,9 @@ void fx_field_clock(fx_group *g, double t);
  * now; a new position is reached over the next frame, the births of that
  * frame spread along the way. */
 void fx_path_changed(isk_effect *e, fx_group *g, const isk_emitter_def *old, const char *key);
+/* A live rate of a stream with a duration: the births of its cycles are
+ * counted anew at the new rate, those due by now done (no catch-up burst). */
+void fx_stream_rate_changed(isk_effect *e, fx_group *g);
 /* The whole frames a prewarm runs (a double: it may be beyond any count). */
 double fx_prewarm_frames(const isk_effect_def *d, const isk_emitter_def *em);
 

@@ -185,8 +185,10 @@ static isk_status apply(isk_effect *e, const where *w, const isk_key *k, const v
             s = fx_looks_live(g);
         if (s == ISK_OK)
             s = fx_events_columns(g); /* on_hit, trail */
-        if (!strcmp(k->name, "rate") && em->source == ISK_SOURCE_STREAM)
+        if (!strcmp(k->name, "rate") && em->source == ISK_SOURCE_STREAM) {
             rebase_stream(e, g, old->rate);
+            fx_stream_rate_changed(e, g);
+        }
         if ((!strcmp(k->name, "position") || !strcmp(k->name, "emitter_velocity")) && em->source == ISK_SOURCE_STREAM)
             fx_path_changed(e, g, old, k->name); /* births spread along the way: no gap */
         break;

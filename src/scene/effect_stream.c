@@ -418,6 +418,13 @@ static isk_status run_events(isk_effect *e, fx_group *g, const fx_launcher *l, d
     return ISK_OK;
 }
 
+void fx_stream_rate_changed(isk_effect *e, fx_group *g)
+{
+    const isk_emitter_def *em = g->def;
+    if (em->duration > 0 && em->rate > 0)
+        g->cycle_births = events_due(g, fx_group_time(e, g), births_per_cycle(em), 1.0 / em->rate, 1.0);
+}
+
 static isk_status run_cycles(isk_effect *e, fx_group *g, const fx_launcher *l, double t0, double h)
 {
     const isk_emitter_def *em = g->def;
@@ -532,6 +539,8 @@ static void describe_spawn(const isk_effect *e, const fx_group *g, FILE *out)
         fprintf(out, ", for %g s%s", em->duration, em->loop ? " in a loop" : "");
     if (em->emitter_velocity.x != 0 || em->emitter_velocity.y != 0)
         fprintf(out, ", along the emitter's path at (%g, %g)/s", em->emitter_velocity.x, em->emitter_velocity.y);
+    if (g->frame_offset)
+        fprintf(out, ", prewarmed %ld frames", g->frame_offset);
 }
 
 const fx_step_kind fx_step_spawn = {"spawn", run_spawn, describe_spawn};

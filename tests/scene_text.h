@@ -1,0 +1,42 @@
+/* tests/scene_text.h — an effect from a scene's text, and its stage lists
+ * as text (header-only; include it after <criterion/criterion.h>).
+ *
+ *     isk_effect *fx = scene_text_open("[emitter e]\nsource = stream\nrate = 10\n", 0);
+ *     char *lists = scene_text_describe("[emitter e]\nsource = stream\nrate = 10\n");  // free it
+ *
+ * Both assert that the text parses and the effect is created (threads:
+ * 0 for the default, as isk_effect_def.threads). */
+#ifndef ISKRA_TESTS_SCENE_TEXT_H
+#define ISKRA_TESTS_SCENE_TEXT_H
+
+#include <stdio.h>
+
+#include "iskra/effect.h"
+#include "iskra/scene.h"
+
+static inline isk_effect *scene_text_open(const char *text, int threads)
+{
+    isk_effect_def d;
+    isk_error err;
+    isk_effect *fx;
+    cr_assert_eq(isk_scene_load_string(&d, text, "t.ini", &err), ISK_OK, "%s", err.message);
+    d.threads = threads;
+    cr_assert_eq(isk_effect_create(&fx, &d, &err), ISK_OK, "%s", err.message);
+    isk_effect_def_free(&d);
+    return fx;
+}
+
+static inline char *scene_text_describe(const char *text)
+{
+    isk_effect *fx = scene_text_open(text, 0);
+    char *buf = NULL;
+    size_t len = 0;
+    FILE *f = open_memstream(&buf, &len);
+    cr_assert_not_null(f);
+    isk_effect_describe(fx, f);
+    fclose(f);
+    isk_effect_destroy(fx);
+    return buf;
+}
+
+#endif
