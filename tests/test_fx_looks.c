@@ -428,6 +428,18 @@ Test(looks, set_live)
     free(d);
     cr_assert_neq(isk_effect_set(fx, "emitter e", "texture", TEX, &err), ISK_OK);
     isk_effect_destroy(fx);
+
+    /* a sprite kind becomes a streak when align is set, and round again */
+    fx = make("[emitter e]\nsource = stream\nrate = 100\nlaunch = disc\nspeed_max = 1\ndraw = sprite\n");
+    cr_assert_eq(isk_effect_set(fx, "emitter e", "align", "velocity", &err), ISK_OK, "%s", err.message);
+    d = describe(fx);
+    cr_assert_not_null(strstr(d, "streak"), "%s", d);
+    free(d);
+    cr_assert_eq(isk_effect_set(fx, "emitter e", "align", "none", &err), ISK_OK, "%s", err.message);
+    d = describe(fx);
+    cr_assert_null(strstr(d, "streak"), "%s", d);
+    free(d);
+    isk_effect_destroy(fx);
 }
 
 /* The threaded draw (bands of rows) gives the bytes of the whole call. */

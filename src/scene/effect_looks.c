@@ -78,22 +78,34 @@ void fx_looks_adopt(fx_group *g, size_t from)
                                            : em->color;
 }
 
-isk_status fx_looks_live(fx_group *g)
-{
-    const unsigned want = fx_looks_columns(g->def);
-    if (!(want & ~g->store.flags))
-        return ISK_OK;
-    /* the particles already there get the emitter's own size and colour */
-    g->store.default_size = g->def->size;
-    g->store.default_color = g->def->color;
-    return isk_particles_add_columns(&g->store, want);
-}
-
 /* A sprite kind drawn through a texture: turned along the velocity (a
  * streak), or at a size of its own per particle. */
 static int streaks(const isk_emitter_def *em)
 {
     return !em->texture[0] && em->draw == ISK_DRAW_SPRITE && (em->align == ISK_ALIGN_VELOCITY || em->size_range > 0);
+}
+
+isk_status fx_looks_live(fx_group *g)
+{
+    const isk_emitter_def *em = g->def;
+    /* align, size_range, draw or sprite may have made a streak of a sprite
+     * kind, or unmade it (the texture itself is fixed at create) */
+    if (!em->texture[0]) {
+        fx_looks_free(g);
+        if (streaks(em)) {
+            isk_status s = isk_texture_from_sprite(&g->streak, em->sprite, FX_STREAK_TEXELS);
+            if (s != ISK_OK)
+                return s;
+            g->texture = &g->streak;
+        }
+    }
+    const unsigned want = fx_looks_columns(em);
+    if (!(want & ~g->store.flags))
+        return ISK_OK;
+    /* the particles already there get the emitter's own size and colour */
+    g->store.default_size = em->size;
+    g->store.default_color = em->color;
+    return isk_particles_add_columns(&g->store, want);
 }
 
 isk_status fx_looks_prepare(isk_effect *e, fx_group *g, isk_error *err)

@@ -144,7 +144,7 @@ int fx_varies(const fx_group *g)
 
 /* Particle i's colour and size multiplier, constant unless something varies
  * (a group-level fact: the branch always goes the same way). */
-isk_color fx_style(const fx_group *g, const isk_particles *p, size_t i, int vary, double *mult)
+static inline isk_color style(const fx_group *g, const isk_particles *p, size_t i, int vary, double *mult)
 {
     *mult = 1.0;
     if (!vary)
@@ -153,10 +153,16 @@ isk_color fx_style(const fx_group *g, const isk_particles *p, size_t i, int vary
     return particle_color(g, p, i, t, mult);
 }
 
+/* style() for effect_texture.c (the draws here keep the inline one). */
+isk_color fx_style(const fx_group *g, const isk_particles *p, size_t i, int vary, double *mult)
+{
+    return style(g, p, i, vary, mult);
+}
+
 isk_color fx_particle_color(const fx_group *g, size_t i) /* the trails' colour (effect_trail.c) */
 {
     double mult;
-    return fx_style(g, &g->store, i, fx_varies(g), &mult);
+    return style(g, &g->store, i, fx_varies(g), &mult);
 }
 
 /* ---- the groups' draws --------------------------------------------------
@@ -190,7 +196,7 @@ static isk_status draw_styled_dots(isk_effect *e, isk_canvas *c, fx_group *g, co
         const size_t i = b->list ? b->list[k] : k;
         double X, Y, mult;
         screen_point(e, c, g, i, &X, &Y);
-        isk_color col = fx_style(g, p, i, 1, &mult);
+        isk_color col = style(g, p, i, 1, &mult);
         if (browser)
             ISK__BLEND_DISPATCH(blend, isk__dot_browser_rows, c, b->r0, b->r1, X, Y, col, NULL);
         else
@@ -224,7 +230,7 @@ static isk_status draw_styled_pixels(isk_effect *e, isk_canvas *c, fx_group *g, 
         const size_t i = b->list ? b->list[k] : k;
         double X, Y, mult;
         screen_point(e, c, g, i, &X, &Y);
-        isk_color col = fx_style(g, p, i, 1, &mult);
+        isk_color col = style(g, p, i, 1, &mult);
         if (X >= 0 && Y >= b->r0 && X < c->width && Y < b->r1)
             isk_draw_pixel(c, (int)X, (int)Y, col, g->def->blend);
     }
@@ -241,7 +247,7 @@ static isk_status draw_discs(isk_effect *e, isk_canvas *c, fx_group *g, const fx
     for (size_t i = 0; i < p->count; i++) {
         double X, Y, mult;
         isk_view_to_screen(&e->view, p->x[i], p->y[i], &X, &Y);
-        isk_color col = fx_style(g, p, i, vary, &mult);
+        isk_color col = style(g, p, i, vary, &mult);
         const double size = p->size ? p->size[i] : g->def->size; /* size_range: its own */
         isk_fill_circle_aa(c, X, Y, 0.5 * size * mult * scale, col, g->def->blend);
     }
@@ -300,7 +306,7 @@ static isk_status draw_sprites(isk_effect *e, isk_canvas *c, fx_group *g, const 
     for (size_t i = 0; i < p->count; i++) {
         double X, Y, mult;
         isk_view_to_screen(&e->view, p->x[i], p->y[i], &X, &Y);
-        isk_color col = fx_style(g, p, i, vary, &mult);
+        isk_color col = style(g, p, i, vary, &mult);
         const isk_sprite *spr = b->sprite[sprite_px(g, scale, mult)];
         if (spr)
             isk__draw_sprite_rows(c, spr, X, Y, tinted ? &col : NULL, g->def->blend, b->r0, b->r1);
