@@ -27,6 +27,8 @@ static const preset_case cases[] = {
     {"preset_snow", isk_preset_snow, 0, 1.6, 1, -2.4, 2.4, -1.6, 1.6, 240, 160, 3600},
     {"preset_explosion", isk_preset_explosion, 0, 0, 1, -4, 4, -4, 4, 200, 200, 90},
     {"preset_galaxy", isk_preset_galaxy, 0, 0, 1, -2, 2, -2, 2, 240, 240, 400},
+    {"preset_fireworks", isk_preset_fireworks, 0, 0, 1, -2.4, 2.4, -0.4, 4, 320, 294, 200},
+    {"preset_rain", isk_preset_rain, 0, 0, 1, -2.4, 2.4, -3.5, 0.1, 320, 240, 150},
 };
 
 static void render_case(const preset_case *pc, isk_canvas *c, isk_effect **keep)

@@ -16,6 +16,8 @@ typedef struct strip_case {
 static const strip_case strips[] = {
     {"preset_galaxy", 360, 60},
     {"preset_smoke", 300, 50},
+    {"preset_fireworks", 300, 50},
+    {"preset_rain", 120, 20},
 };
 
 static void check_strip(const strip_case *sc)

@@ -78,11 +78,18 @@ Test(preset_key, written_scenes_keep_the_values_not_the_directive)
     isk_error err = {0};
     char *text = malloc(strlen(base) + 40);
     cr_assert_not_null(text);
+    /* A section named as the preset's own force, after it, changes that
+     * force (it is not a second one). */
     sprintf(text, "[scene]\nwidth = 80\nheight = 80\n[emitter e]\npreset = sparks, 2\n[force e_gravity]\ng = 1\n");
-    /* A section for the preset's own force after it names a second force
-     * "e_gravity": refused at that section's line. */
+    cr_assert_eq(isk_scene_load_string(&d, text, "p.ini", &err), ISK_OK, "%s", err.message);
+    cr_assert_eq(d.nforces, 1);
+    cr_assert_eq(d.forces[0].g, 1.0);
+    cr_assert_eq(d.forces[0].kind, ISK_FORCE_GRAVITY);
+    isk_effect_def_free(&d);
+    /* Its keys are checked as any section's. */
+    sprintf(text, "[scene]\nwidth = 80\nheight = 80\n[emitter e]\npreset = sparks, 2\n[force e_gravity]\ng = -1\n");
     cr_assert_neq(isk_scene_load_string(&d, text, "p.ini", &err), ISK_OK);
-    cr_assert(strstr(err.message, "p.ini:6:"), "%s", err.message);
+    cr_assert(strstr(err.message, "p.ini:7:"), "%s", err.message);
     sprintf(text, "[scene]\nwidth = 80\nheight = 80\n[emitter e]\npreset = sparks, 2\n");
     cr_assert_eq(isk_scene_load_string(&d, text, "p.ini", &err), ISK_OK, "%s", err.message);
     free(text);

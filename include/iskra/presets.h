@@ -1,11 +1,12 @@
 /* iskra/presets.h — ready-made stream emitters: fire, smoke, sparks,
- * fountain, snow, explosion and galaxy.
+ * fountain, snow, explosion, galaxy, fireworks and rain.
  *
- * Each function appends one emitter to an effect definition (and, when it
- * needs gravity, one GRAVITY force named "<name>_gravity" that only this
- * emitter uses, created or updated), fills every field the effect needs and
- * returns the emitter's index, or -1 (NULL definition, non-finite position,
- * scale not a finite number in (0, ISK_PRESET_SCALE_MAX], or no room for another emitter/force).
+ * Each function appends one emitter to an effect definition (and the items
+ * of its own it needs, named after it and created or updated: a GRAVITY
+ * force "<name>_gravity", a turbulence, a floor deflector, a sub-emitter
+ * "<name>_burst"), fills every field the effect needs and returns the
+ * emitter's index, or -1 (NULL definition, non-finite position, scale not a
+ * finite number in (0, ISK_PRESET_SCALE_MAX], or no room for an item).
  * Adjust the returned emitter freely afterwards:
  *
  * Example:
@@ -126,6 +127,30 @@ int isk_preset_explosion(isk_effect_def *d, const char *name, isk_vec2 pos, doub
  * core; life 6 +- 1 s, size 6, cocos's blue through violet to a warm white,
  * transparent at both ends, additive. */
 int isk_preset_galaxy(isk_effect_def *d, const char *name, isk_vec2 pos, double scale);
+
+/* Fireworks (ours; cocos2d's ParticleFireworks is the fountain): rockets at
+ * 1.5/s from pos, up at 280..330 +- 15 degrees against a gravity of 150
+ * ("<name>_gravity", shared with the sparks), life 1.1..1.5 s, each with a
+ * 10-point trail 2 px wide; where a rocket dies (on_death) it bursts into
+ * 120 sparks of its own sub-emitter "<name>_burst": a disc of speeds up to
+ * 160 plus a quarter of the rocket's velocity (inherit 0.25), each spark's
+ * colour picked (color_pick) from red, gold, green, cyan and violet and
+ * fading from white over 1.2..1.8 s against slowing 0.8, with a 6-point
+ * trail; additive.  Returns the rockets' index (the sparks follow it). */
+int isk_preset_fireworks(isk_effect_def *d, const char *name, isk_vec2 pos, double scale);
+
+/* cocos2d ParticleRain, with streaks and splashes (ours): drops from a line
+ * 480 wide centred on pos, down at 380..460 (cocos's 130 +- 30 reads as
+ * snow) +- 5 degrees, pushed by cocos's gravity (10, -10) as a wind force
+ * "<name>_wind", drawn as streaks along their velocity (align = velocity),
+ * size 5, blue-white (0.7, 0.8, 1) to half alpha, 60/s, life 0.85..1 s; they
+ * land on their own deflector "<name>_floor", 320 below pos and 520 wide
+ * (restitution 0.1), and every landing (on_hit) splashes 6 droplets of the
+ * sub-emitter "<name>_splash": up +- 60 degrees at 60..130 under its own
+ * gravity 300, 0.3..0.5 s, fading out, additive dots.  In a scene file the
+ * floor stays where the preset put it (below the position it had then):
+ * move it with a [deflector NAME_floor] section after the emitter. */
+int isk_preset_rain(isk_effect_def *d, const char *name, isk_vec2 pos, double scale);
 
 #ifdef __cplusplus
 }

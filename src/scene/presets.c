@@ -43,6 +43,53 @@ static int own_gravity(isk_effect_def *d, int index, double g)
     return f != NULL;
 }
 
+/* The emitter's own sub-emitter "<name>_<what>" (source = sub), added or
+ * found, back at the key table's defaults (keeping its name, line and
+ * order); its index, -1 when there is no room.  Adding may move the
+ * emitters: callers take their pointers after it. */
+static int own_sub_emitter(isk_effect_def *d, int index, const char *what)
+{
+    char name[ISK_NAME_MAX];
+    snprintf(name, sizeof name, "%.*s_%s", (int)(ISK_NAME_MAX - 2 - strlen(what)), d->emitters[index].name, what);
+    int k = isk_effect_def_find_emitter(d, name);
+    if (k < 0) {
+        if (!isk_effect_def_add_emitter(d, name))
+            return -1;
+        k = d->nemitters - 1;
+    } else {
+        isk_emitter_def keep = d->emitters[k];
+        fx_section_defaults(ISK_SECTION_EMITTER, &d->emitters[k]);
+        memcpy(d->emitters[k].name, keep.name, sizeof keep.name);
+        d->emitters[k].line = keep.line;
+        d->emitters[k].order = keep.order;
+    }
+    d->emitters[k].source = ISK_SOURCE_SUB;
+    return k;
+}
+
+/* The emitter's own deflector "<name>_<what>": seg, added or found and
+ * updated, and referenced; 0 when there is no room. */
+static int own_deflector(isk_effect_def *d, int index, const char *what, isk_deflector seg)
+{
+    char name[ISK_NAME_MAX];
+    snprintf(name, sizeof name, "%.*s_%s", (int)(ISK_NAME_MAX - 2 - strlen(what)), d->emitters[index].name, what);
+    int k = isk_effect_def_find_deflector(d, name);
+    if (k < 0)
+        k = isk_effect_def_add_deflector(d, name, seg);
+    if (k < 0)
+        return 0;
+    d->deflectors[k].seg = seg;
+    return isk_emitter_use_deflector(&d->emitters[index], k) == ISK_OK;
+}
+
+static void stops3(isk_color_ramp *r, isk_color a, double tb, isk_color b, isk_color c)
+{
+    r->n = 3;
+    r->stops[0] = (isk_color_stop){0.0, a};
+    r->stops[1] = (isk_color_stop){tb, b};
+    r->stops[2] = (isk_color_stop){1.0, c};
+}
+
 static void ramp2(isk_color_ramp *r, isk_color a, isk_color b)
 {
     r->n = 2;
@@ -236,6 +283,124 @@ static int fill_galaxy(isk_effect_def *d, int i, double u)
     return 1;
 }
 
+/* Fireworks (ours: cocos2d's ParticleFireworks is the fountain above):
+ * rockets at 1.5/s from pos, up at 280..330 +- 15 degrees against gravity
+ * 150, life 1.1..1.5 s, with a 10-point trail 2 px wide; each bursts where
+ * it dies (on_death) into 120 sparks of "<name>_burst" (source = sub), in a
+ * disc of speed up to 160 with a quarter of the rocket's velocity, each
+ * spark's colour picked from red, gold, green, cyan and violet, fading
+ * from white over its 1.2..1.8 s against a friction (slowing 0.8), with a
+ * 6-point trail.  Additive, the gravity shared. */
+static int fill_fireworks(isk_effect_def *d, int i, double u)
+{
+    const int b = own_sub_emitter(d, i, "burst");
+    if (b < 0)
+        return 0;
+    isk_emitter_def *r = &d->emitters[i], *s = &d->emitters[b];
+    base(r);
+    r->shape = ISK_SHAPE_POINT;
+    r->angle = 90 * DEG;
+    r->spread = 30 * DEG;
+    r->speed_min = 280 * u;
+    r->speed_max = 330 * u;
+    r->rate = 1.5;
+    r->life = 1.1;
+    r->life_range = 0.4;
+    r->capacity = 8;
+    r->sprite = ISK_SPRITE_SMOOTH;
+    r->size = 8 * u;
+    r->color = isk_rgba(255, 224, 160, 255);
+    r->blend = ISK_BLEND_ADD;
+    r->trail = 10;
+    r->trail_width = 2;
+    r->trail_fade = 1;
+    r->on_death = b;
+    s->count = 120;
+    s->launch = ISK_VELGEN_DISC;
+    s->speed_max = 160 * u;
+    s->inherit = 0.25;
+    s->life = 1.2;
+    s->life_range = 0.6;
+    s->slowing = 0.8;
+    s->capacity = 8 * 120;
+    s->draw = ISK_DRAW_SPRITE;
+    s->sprite = ISK_SPRITE_SMOOTH;
+    s->size = 5 * u;
+    s->blend = ISK_BLEND_ADD;
+    s->color_pick.n = 5;
+    s->color_pick.stops[0] = (isk_color_stop){0.0, isk_rgba(255, 70, 60, 255)};
+    s->color_pick.stops[1] = (isk_color_stop){0.25, isk_rgba(255, 200, 60, 255)};
+    s->color_pick.stops[2] = (isk_color_stop){0.5, isk_rgba(90, 255, 110, 255)};
+    s->color_pick.stops[3] = (isk_color_stop){0.75, isk_rgba(80, 200, 255, 255)};
+    s->color_pick.stops[4] = (isk_color_stop){1.0, isk_rgba(200, 110, 255, 255)};
+    stops3(&s->color_over_life, isk_rgba(255, 255, 255, 255), 0.6, isk_rgba(255, 255, 255, 220),
+           isk_rgba(120, 80, 80, 0));
+    s->trail = 6;
+    s->trail_width = 1.5;
+    s->trail_fade = 1;
+    if (!own_gravity(d, i, 150 * u))
+        return 0;
+    return isk_emitter_use_force(&d->emitters[b], d->emitters[i].forces[d->emitters[i].nforces - 1]) == ISK_OK;
+}
+
+/* cocos2d ParticleRain, ours where noted: drops from a line 4.8 wide centred
+ * on pos (the cocos screen), down at 380..460 (cocos: 130 +- 30, too slow
+ * to read as rain) +- 5 degrees, pushed by cocos's gravity (10, -10) as a
+ * wind, drawn as streaks along their velocity (align = velocity) of size 5,
+ * blue-white (0.7, 0.8, 1) fading to half alpha (cocos's), 60/s; they fall
+ * 3.2 onto their own floor "<name>_floor" (restitution 0.1) and every hit
+ * splashes (on_hit) 6 droplets of "<name>_splash" up +- 60 degrees at
+ * 60..130 under their own gravity 300, 0.3..0.5 s, fading out, additive. */
+static int fill_rain(isk_effect_def *d, int i, double u)
+{
+    const int sp = own_sub_emitter(d, i, "splash");
+    if (sp < 0)
+        return 0;
+    isk_emitter_def *r = &d->emitters[i], *s = &d->emitters[sp];
+    base(r);
+    r->shape = ISK_SHAPE_RECT;
+    r->shape_a = 240 * u;
+    r->shape_b = 0;
+    r->angle = -90 * DEG;
+    r->spread = 10 * DEG;
+    r->speed_min = 380 * u;
+    r->speed_max = 460 * u;
+    r->rate = 60;
+    r->life = 0.85;
+    r->life_range = 0.15;
+    r->capacity = 80;
+    r->sprite = ISK_SPRITE_SMOOTH;
+    r->size = 5 * u;
+    r->align = ISK_ALIGN_VELOCITY;
+    r->color = isk_rgba(179, 204, 255, 255);
+    ramp2(&r->color_over_life, r->color, isk_rgba(179, 204, 255, 128));
+    r->blend = ISK_BLEND_OVER;
+    r->on_hit = sp;
+    s->count = 6;
+    s->launch = ISK_VELGEN_CONE;
+    s->angle = 90 * DEG;
+    s->spread = 120 * DEG;
+    s->speed_min = 60 * u;
+    s->speed_max = 130 * u;
+    s->life = 0.3;
+    s->life_range = 0.2;
+    s->capacity = 400;
+    s->draw = ISK_DRAW_DOT;
+    s->color = isk_rgba(210, 230, 255, 255);
+    s->alpha_over_life.n = 2;
+    s->alpha_over_life.stops[0] = (isk_scalar_stop){0.0, 1.0};
+    s->alpha_over_life.stops[1] = (isk_scalar_stop){1.0, 0.0};
+    s->blend = ISK_BLEND_ADD;
+    const isk_vec2 p = r->pos;
+    isk_deflector floor = isk_deflector_segment(p.x - 260 * u, p.y - 320 * u, p.x + 260 * u, p.y - 320 * u);
+    floor.restitution = 0.1;
+    isk_force_def *w = own_force(d, i, "wind", ISK_FORCE_WIND);
+    if (!w || !own_deflector(d, i, "floor", floor) || !own_gravity(d, sp, 300 * u))
+        return 0;
+    w->accel = isk_vec2_make(10 * u, -10 * u);
+    return 1;
+}
+
 /* ---- the table: one row per preset -------------------------------------- */
 
 typedef struct preset_row {
@@ -248,7 +413,7 @@ typedef struct preset_row {
 static const preset_row presets[] = {
     {"fire", fill_fire},         {"smoke", fill_smoke}, {"sparks", fill_sparks},
     {"fountain", fill_fountain}, {"snow", fill_snow},   {"explosion", fill_explosion},
-    {"galaxy", fill_galaxy},
+    {"galaxy", fill_galaxy},     {"fireworks", fill_fireworks}, {"rain", fill_rain},
 };
 #define NPRESETS ((int)(sizeof presets / sizeof presets[0]))
 
@@ -281,11 +446,16 @@ isk_status isk_preset_apply(isk_effect_def *d, int emitter, const char *preset, 
     e->order = keep.order;
     e->pos = keep.pos;
     snprintf(e->preset, sizeof e->preset, "%s", presets[p].name);
-    const int nforces = d->nforces;
+    const int nforces = d->nforces, ndeflectors = d->ndeflectors, nemitters = d->nemitters;
     if (!presets[p].fill(d, emitter, scale / 100.0)) {
-        /* its force found no room, or could not be allocated */
-        const isk_status why = d->nforces >= ISK_EFFECT_MAX_FORCES ? ISK_ERR_FULL : ISK_ERR_NOMEM;
+        /* an item of its own found no room, or could not be allocated */
+        const isk_status why = d->nforces >= ISK_EFFECT_MAX_FORCES || d->ndeflectors >= ISK_EFFECT_MAX_DEFLECTORS ||
+                                       d->nemitters >= ISK_EFFECT_MAX_EMITTERS
+                                   ? ISK_ERR_FULL
+                                   : ISK_ERR_NOMEM;
         d->nforces = nforces;
+        d->ndeflectors = ndeflectors;
+        d->nemitters = nemitters;
         d->emitters[emitter] = keep;
         return why;
     }
@@ -300,11 +470,12 @@ int isk_preset_add(isk_effect_def *d, const char *preset, const char *name, isk_
     if (!e)
         return -1;
     e->pos = pos;
-    if (isk_preset_apply(d, d->nemitters - 1, preset, scale) != ISK_OK) {
-        d->nemitters--; /* the force it needed found no room */
+    const int i = d->nemitters - 1; /* a preset may add emitters of its own after it */
+    if (isk_preset_apply(d, i, preset, scale) != ISK_OK) {
+        d->nemitters = i; /* an item it needed found no room */
         return -1;
     }
-    return d->nemitters - 1;
+    return i;
 }
 
 int isk_preset_fire(isk_effect_def *d, const char *name, isk_vec2 pos, double scale)
@@ -334,4 +505,12 @@ int isk_preset_explosion(isk_effect_def *d, const char *name, isk_vec2 pos, doub
 int isk_preset_galaxy(isk_effect_def *d, const char *name, isk_vec2 pos, double scale)
 {
     return isk_preset_add(d, "galaxy", name, pos, scale);
+}
+int isk_preset_fireworks(isk_effect_def *d, const char *name, isk_vec2 pos, double scale)
+{
+    return isk_preset_add(d, "fireworks", name, pos, scale);
+}
+int isk_preset_rain(isk_effect_def *d, const char *name, isk_vec2 pos, double scale)
+{
+    return isk_preset_add(d, "rain", name, pos, scale);
 }

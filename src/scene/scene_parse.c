@@ -41,6 +41,7 @@ typedef struct section {
     char name[ISK_NAME_MAX];
     int line;
     int index;          /* item index in the definition */
+    int reused;         /* it names an item a preset made: its keys change that item */
     int *key_line;      /* per row of the key table: the line it was given on, 0 if not */
     char **deferred;    /* per row: the text of a reference, resolved at the end */
 } section;
@@ -173,6 +174,21 @@ static isk_status add_item(parser *P, section *s, const char *name, int line)
     return ISK_OK;
 }
 
+/* The index of the force, deflector or emitter called `name` that a
+ * preset made (no section has opened it: a section's own name is refused
+ * as a duplicate before this), else -1.  A section of that name then
+ * changes the preset's item, key by key, as the keys after `preset` change
+ * its emitter. */
+static int preset_made(const isk_effect_def *d, isk_section_kind type, const char *name)
+{
+    switch (type) {
+    case ISK_SECTION_FORCE: return isk_effect_def_find_force(d, name);
+    case ISK_SECTION_DEFLECTOR: return isk_effect_def_find_deflector(d, name);
+    case ISK_SECTION_EMITTER: return isk_effect_def_find_emitter(d, name);
+    default: return -1;
+    }
+}
+
 static isk_status on_section(void *user, const char *header, int line, isk_error *err)
 {
     (void)err;
@@ -243,6 +259,12 @@ static isk_status on_section(void *user, const char *header, int line, isk_error
         return isk_error_set(P->err, ISK_ERR_NOMEM, "%s: out of memory", P->name);
     }
     P->cur = P->nsec - 1;
+    const int made = preset_made(P->d, s->type, name);
+    if (made >= 0) {
+        s->index = made;
+        s->reused = 1;
+        return ISK_OK;
+    }
     return add_item(P, s, name, line);
 }
 
@@ -418,7 +440,7 @@ static isk_status kinds_and_required(parser *P, section *s)
         fx_key_kind_message(first, kind, msg, sizeof msg);
         return fail_at(P, s, first_line, first->name, "%s", msg);
     }
-    for (int i = 0; i < P->nkeys; i++) {
+    for (int i = 0; i < P->nkeys && !s->reused; i++) { /* a preset's item has them all */
         const isk_key *k = isk_key_at(i);
         if (k->section == s->type && !s->key_line[i] && (kind < 0 ? k->required != 0 : (k->required >> kind & 1u)))
             return fail_at(P, s, s->line, NULL, "needs %s (%s)", k->name, k->meaning);
@@ -506,7 +528,7 @@ static isk_status finish(parser *P)
     for (int i = 0; i < P->nsec; i++) {
         section *s = &P->sec[i];
         isk_status st = resolve(P, s);
-        if (st == ISK_OK)
+        if (st == ISK_OK && !s->reused) /* a preset's item has its kind */
             st = s->type == ISK_SECTION_VIEW ? view_kind(P, s) : derive_kind(P, s);
         if (st == ISK_OK)
             st = kinds_and_required(P, s);
