@@ -11,7 +11,9 @@
  * ROUNDS, and "+" is the row's figure minus the base's: the stage's own
  * cost.  A key the scene does not use is in no list, so the base row is
  * also what every emitter without these keys costs (the determinism and
- * "costs nothing" tests check the bytes; this prints the time).  The
+ * "costs nothing" tests check the bytes; this prints the time).  Run it
+ * from the repository root (the texture rows read scenes/textures/).  A
+ * sub-emitter row's children are counted in its particles and its time.  The
  * machine is shared: read the differences against their noise (the base
  * row's spread is printed). */
 #include <stdio.h>
@@ -50,6 +52,14 @@ static const row rows[] = {
     {"turbulence force", "forces = gravity, swirl", "[force swirl]\nkind = turbulence\nstrength = 2\nscale = 1.5\nspeed = 0.3\n"},
     {"emitter_velocity", "emitter_velocity = 3, 0", ""},
     {"space = local", "emitter_velocity = 3, 0\nspace = local", ""},
+    {"size_range", "size_range = 0.1", ""},
+    {"color_pick", "color_pick = 0:red, 0.5:gold, 1:cyan", ""},
+    {"align = velocity (streaks)", "align = velocity", ""},
+    {"texture", "texture = scenes/textures/arrows.png\ntexture_grid = 4, 2", ""},
+    {"texture + rotation + spin", "texture = scenes/textures/arrows.png\ntexture_grid = 4, 2\nrotation_range = 360\nspin = 90\nspin_range = 180", ""},
+    {"trail = 8", "trail = 8", ""},
+    {"on_death (10 sparks each)", "on_death = pop", "[emitter pop]\nsource = sub\ncount = 10\nlaunch = disc\nspeed_max = 2\nlife = 0.2\ncapacity = 200000\ndraw = none\n"},
+    {"on_hit (deflector)", "deflectors = floor\non_hit = pop", "[deflector floor]\nsegment = -10, -3, 10, -3\nrestitution = 0.5\n[emitter pop]\nsource = sub\ncount = 1\nlife = 0.1\ncapacity = 200000\ndraw = none\n"},
 };
 #define NROWS ((int)(sizeof rows / sizeof rows[0]))
 

@@ -474,3 +474,35 @@ Test(deflector, elastic_box_keeps_speed)
         cr_assert_leq(fabs(hypot(vx, vy) - s0), 1e-9 * s0);
     }
 }
+
+/* The optional per-particle counts: each particle's own bounces in the
+ * call (a sub-emitter's on_hit reads them), summing to the call's total,
+ * and the same motion as without them. */
+Test(deflector, per_particle_bounces)
+{
+    enum { N = 64 };
+    isk_deflector floor = isk_deflector_segment(-100, 0, 100, 0);
+    floor.restitution = 0.5;
+    double x[N], y[N], vx[N], vy[N], x0[N], y0[N], vx0[N], vy0[N];
+    double xb[N], yb[N], vxb[N], vyb[N];
+    for (int i = 0; i < N; i++) {
+        x0[i] = i, y0[i] = (i % 3) ? 0.05 : 2.0, vx0[i] = 1, vy0[i] = -3;
+        x[i] = x0[i] + 0.1, vx[i] = 1, vy[i] = -3 - 9.81 * 0.1, y[i] = y0[i] - 0.3 - 0.5 * 9.81 * 0.01;
+        xb[i] = x[i], yb[i] = y[i], vxb[i] = vx[i], vyb[i] = vy[i];
+    }
+    isk_step_motion mo = {.x0 = x0, .y0 = y0, .vx0 = vx0, .vy0 = vy0, .h = 0.1, .ay = -9.81};
+    uint8_t counts[N];
+    memset(counts, 7, sizeof counts);
+    isk_deflect_stats with = {0}, without = {0};
+    with.bounced = counts;
+    cr_assert_eq(isk_deflect_step(&floor, 1, x, y, vx, vy, &mo, N, NULL, NULL, &with), ISK_OK);
+    cr_assert_eq(isk_deflect_step(&floor, 1, xb, yb, vxb, vyb, &mo, N, NULL, NULL, &without), ISK_OK);
+    size_t sum = 0;
+    for (int i = 0; i < N; i++) {
+        sum += counts[i];
+        cr_assert(x[i] == xb[i] && y[i] == yb[i] && vx[i] == vxb[i] && vy[i] == vyb[i], "particle %d moved otherwise", i);
+        cr_assert_eq(counts[i], (i % 3) ? 1 : 0, "particle %d: %d bounces", i, counts[i]);
+    }
+    cr_assert_eq(sum, with.bounces);
+    cr_assert_eq(with.bounces, without.bounces);
+}

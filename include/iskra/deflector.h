@@ -149,6 +149,8 @@ typedef struct isk_deflect_stats {
     size_t hits;        /* crossings found (reacting or passing) */
     size_t bounces, kills, sticks, passes;
     size_t last_resort; /* particles that ran out of hits (see above) */
+    uint8_t *bounced;   /* optional (NULL: not kept): per particle of the call, the bounces it
+                           made in it, saturating at 255; written, not added to */
 } isk_deflect_stats;
 
 /* A bouncing segment with c = 1, p = 1, uniform restitution. */

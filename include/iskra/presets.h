@@ -1,5 +1,5 @@
 /* iskra/presets.h — ready-made stream emitters: fire, smoke, sparks,
- * fountain, snow, explosion, galaxy, fireworks and rain.
+ * fountain, snow, explosion, galaxy, fireworks, rain and magic.
  *
  * Each function appends one emitter to an effect definition (and the items
  * of its own it needs, named after it and created or updated: a GRAVITY
@@ -36,12 +36,14 @@
  * kept.  `pos` is the emitter's centre (snow: the middle of the line it
  * falls from).  `name` NULL gives the preset's own name ("fire", ...).
  *
- * What cocos2d has and iskra's emitters do not (yet), and what was done:
- * per-particle size and colour variance (the mean is used), start -> end
- * size (constant sizes in every cocos preset used here anyway), radial and
- * tangential acceleration (snow's +-1 jitter is replaced by a gentle
- * oscillation), textures (iskra's radial-gradient sprites instead), and a
- * duration (the explosion's 0.1 s of emission is one burst).  cocos2d
+ * The six cocos2d presets (fire ... explosion) predate size_range,
+ * color_pick, radial and tangential acceleration, textures and duration,
+ * and keep what was done then, so their images stay: the mean of cocos's
+ * size and colour variances, start -> end size constant (as in every cocos
+ * preset used here), snow's +-1 radial/tangential jitter as a gentle
+ * oscillation, radial-gradient sprites, the explosion's 0.1 s of emission
+ * as one burst.  The newer presets (galaxy, fireworks, rain, magic) use
+ * those keys.  cocos2d
  * colour ramps are two stops, start -> end; presets add what reads better
  * where noted (an alpha fade on smoke).  Rates and pool sizes are cocos's:
  * rate = total/life, capacity = total, so a full pool drops spawns (counted
@@ -151,6 +153,17 @@ int isk_preset_fireworks(isk_effect_def *d, const char *name, isk_vec2 pos, doub
  * floor stays where the preset put it (below the position it had then):
  * move it with a [deflector NAME_floor] section after the emitter. */
 int isk_preset_rain(isk_effect_def *d, const char *name, isk_vec2 pos, double scale);
+
+/* Magic (ours): a wand that moves at 120 to the right from pos
+ * (emitter_velocity: its sparkles are placed on its path at their birth
+ * times, so it leaves no gaps) and sheds 160 sparkles a second from a disc
+ * of radius 10; they swirl around where the wand is now (tangential_accel
+ * 300, radial_accel -150, slowing 1) with 10-point trails, spinning at
+ * -180..180 degrees a second from a random angle (a round sprite shows no
+ * spin: give the emitter a texture, as scenes/preset_magic.ini does), each
+ * colour picked from violet, cyan and pink, white at first, fading out
+ * over 0.8..1.4 s; additive. */
+int isk_preset_magic(isk_effect_def *d, const char *name, isk_vec2 pos, double scale);
 
 #ifdef __cplusplus
 }

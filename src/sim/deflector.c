@@ -445,7 +445,10 @@ static isk_status deflect(const isk_deflector *defs, int ndef, double *x, double
     if (ndef == 0)
         return ISK_OK;
 
-    isk_deflect_stats local = {0, 0, 0, 0, 0, 0};
+    isk_deflect_stats local = {0, 0, 0, 0, 0, 0, NULL};
+    uint8_t *per_particle = stats ? stats->bounced : NULL;
+    if (per_particle && n > 0)
+        memset(per_particle, 0, n);
     ctx c;
     c.defs = defs;
     c.ndef = ndef;
@@ -504,6 +507,8 @@ static isk_status deflect(const isk_deflector *defs, int ndef, double *x, double
                 break;
             }
             local.bounces++;
+            if (per_particle && per_particle[i] < 255)
+                per_particle[i]++;
             c.npassed = 0; /* a new path */
             if (linear) {
                 bounce_linear(&c, k, d, &sx, &sy, &ex, &ey, &ux, &uy, t);

@@ -109,21 +109,25 @@ static void run_deflect(const isk_stage *st, isk_block *b, double h)
     memset(s->killed, 0, b->n);
     const isk_step_motion mo = motion_of(b, st->u.deflect.drag, h);
     if (st->u.deflect.hit && b->p->hit) {
-        /* A sub-emitter's on_hit: particle by particle (the same draws in
-         * the same order), each one's bounces counted (contact_mark: a
-         * particle resting on a segment touches it at every step). */
+        /* A sub-emitter's on_hit: each particle's bounces counted
+         * (contact_mark: a particle resting on a segment touches it at
+         * every step). */
+        uint8_t bounces[ISK_SIM_BLOCK];
+        isk_deflect_stats ds = {0, 0, 0, 0, 0, 0, bounces};
         unsigned char *hit = b->p->hit + b->first;
-        for (size_t i = 0; i < b->n; i++) {
+        for (size_t o = 0; o < b->n; o += ISK_SIM_BLOCK) { /* a block is at most ISK_SIM_BLOCK */
+            const size_t m = b->n - o < ISK_SIM_BLOCK ? b->n - o : ISK_SIM_BLOCK;
             isk_step_motion m1 = mo;
-            m1.x0 += i;
-            m1.y0 += i;
-            m1.vx0 += i;
-            m1.vy0 += i;
-            m1.m += i;
-            isk_deflect_stats ds = {0, 0, 0, 0, 0, 0};
-            isk_deflect_step(st->u.deflect.segs, st->u.deflect.n, b->x + i, b->y + i, b->vx + i, b->vy + i, &m1, 1,
-                             st->u.deflect.rng, s->killed + i, &ds);
-            hit[i] = contact_mark(hit[i], ISK_HIT_DEFLECTOR, ds.bounces);
+            m1.x0 += o;
+            m1.y0 += o;
+            m1.vx0 += o;
+            m1.vy0 += o;
+            if (m1.m)
+                m1.m += o;
+            isk_deflect_step(st->u.deflect.segs, st->u.deflect.n, b->x + o, b->y + o, b->vx + o, b->vy + o, &m1, m,
+                             st->u.deflect.rng, s->killed + o, &ds);
+            for (size_t i = 0; i < m; i++)
+                hit[o + i] = contact_mark(hit[o + i], ISK_HIT_DEFLECTOR, bounces[i]);
         }
     } else {
         isk_deflect_step(st->u.deflect.segs, st->u.deflect.n, b->x, b->y, b->vx, b->vy, &mo, b->n,
