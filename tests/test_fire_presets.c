@@ -19,6 +19,8 @@ typedef struct preset_case {
     long frames;
 } preset_case;
 
+/* Each preset as its C function makes it (preset_magic_round: the magic
+ * preset without the texture its scene adds, so its sparkles are round). */
 static const preset_case cases[] = {
     {"preset_fire", isk_preset_fire, 0, 0, 1, -1.5, 1.5, -0.5, 2.5, 200, 200, 240},
     {"preset_smoke", isk_preset_smoke, 0, 0, 1, -1.5, 1.5, -0.5, 2.5, 200, 200, 300},
@@ -29,6 +31,7 @@ static const preset_case cases[] = {
     {"preset_galaxy", isk_preset_galaxy, 0, 0, 1, -2, 2, -2, 2, 240, 240, 400},
     {"preset_fireworks", isk_preset_fireworks, 0, 0, 1, -2.4, 2.4, -0.4, 4, 320, 294, 200},
     {"preset_rain", isk_preset_rain, 0, 0, 1, -2.4, 2.4, -3.5, 0.1, 320, 240, 150},
+    {"preset_magic_round", isk_preset_magic, -2, 0, 1, -2.4, 2.4, -1.5, 1.5, 320, 200, 150},
 };
 
 static void render_case(const preset_case *pc, isk_canvas *c, isk_effect **keep)

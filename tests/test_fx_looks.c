@@ -515,3 +515,14 @@ Test(looks, the_committed_texture_is_the_tools_drawing)
     isk_canvas_free(&want);
     isk_canvas_free(&got);
 }
+
+Test(looks, the_committed_sparkle_is_the_tools_drawing)
+{
+    isk_canvas want, got;
+    isk_error err;
+    cr_assert_eq(looks_sparkle_draw(&want), ISK_OK);
+    cr_assert_eq(isk_png_read(&got, "scenes/textures/sparkle.png", &err), ISK_OK, "%s", err.message);
+    cr_assert(key_case_equal(&want, &got), "sparkle.png differs from tools/looks_texture.h: run tools/gen_looks_texture.c");
+    isk_canvas_free(&want);
+    isk_canvas_free(&got);
+}

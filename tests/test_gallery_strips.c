@@ -18,6 +18,7 @@ static const strip_case strips[] = {
     {"preset_smoke", 300, 50},
     {"preset_fireworks", 300, 50},
     {"preset_rain", 120, 20},
+    {"preset_magic", 180, 30},
 };
 
 static void check_strip(const strip_case *sc)
