@@ -12,24 +12,14 @@
 
 #include "iskra/effect.h"
 #include "iskra/scene.h"
+#include "scene_text.h"
 #include "tool_cli.h"
 
 #define OUT "out/test_fx_events"
 
 /* The scene on `threads` threads (0: the default). */
-static isk_effect *make_on(const char *text, int threads)
-{
-    isk_effect_def d;
-    isk_error err;
-    isk_effect *fx = NULL;
-    cr_assert_eq(isk_scene_load_string(&d, text, "t.ini", &err), ISK_OK, "%s", err.message);
-    d.threads = threads;
-    cr_assert_eq(isk_effect_create(&fx, &d, &err), ISK_OK, "%s", err.message);
-    isk_effect_def_free(&d);
-    return fx;
-}
-
-static isk_effect *make(const char *text) { return make_on(text, 0); }
+static isk_effect *make_on(const char *text, int threads) { return scene_text_open(text, threads); }
+static isk_effect *make(const char *text) { return scene_text_open(text, 0); }
 
 static void steps(isk_effect *fx, int n)
 {

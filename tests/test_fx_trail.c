@@ -14,6 +14,7 @@
 #include "iskra/particles.h"
 #include "iskra/scene.h"
 #include "refimg.h"
+#include "scene_text.h"
 
 /* Particle i's trail point k (0: oldest). */
 static void point(const isk_particles *p, size_t i, int k, double *x, double *y)
@@ -79,17 +80,7 @@ Test(fx_trail, the_column_is_a_ring_that_moves_with_its_particle)
     isk_particles_free(&p);
 }
 
-static isk_effect *make(const char *text, int threads)
-{
-    isk_effect_def d;
-    isk_error err;
-    isk_effect *fx = NULL;
-    cr_assert_eq(isk_scene_load_string(&d, text, "t.ini", &err), ISK_OK, "%s", err.message);
-    d.threads = threads;
-    cr_assert_eq(isk_effect_create(&fx, &d, &err), ISK_OK, "%s", err.message);
-    isk_effect_def_free(&d);
-    return fx;
-}
+static isk_effect *make(const char *text, int threads) { return scene_text_open(text, threads); }
 
 /* The trail is the particle's position at the end of each of the last N
  * frames, whatever the substeps. */
@@ -137,23 +128,5 @@ Test(fx_trail, the_same_bytes_on_any_number_of_threads, .timeout = 120)
     isk_canvas_free(&ref);
 }
 
-/* The example scenes (scenes/fx_*.ini): their frame against refimg/NAME.png. */
-static void scene_refimg(const char *name)
-{
-    isk_effect_def d;
-    isk_error err;
-    cr_assert_eq(isk_scene_load(&d, name, &err), ISK_OK, "%s", err.message);
-    isk_effect *fx;
-    cr_assert_eq(isk_effect_create(&fx, &d, &err), ISK_OK, "%s", err.message);
-    isk_canvas c;
-    cr_assert_eq(isk_canvas_init(&c, d.width, d.height), ISK_OK);
-    cr_assert_eq(isk_effect_run(fx, &c, d.show.frames), ISK_OK);
-    cr_assert(refimg_check(name, &c), "refimg %s differs", name);
-    isk_canvas_free(&c);
-    isk_effect_destroy(fx);
-    isk_effect_def_free(&d);
-}
-
-Test(refimg, fx_burst_on_death) { scene_refimg("fx_burst_on_death"); }
-Test(refimg, fx_splash_on_hit) { scene_refimg("fx_splash_on_hit"); }
-Test(refimg, fx_trails) { scene_refimg("fx_trails"); }
+/* The example scenes (scenes/fx_*.ini) are compared with refimg/NAME.png
+ * by tests/test_scene_render.c, with every scene that has an image. */

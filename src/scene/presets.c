@@ -520,43 +520,19 @@ int isk_preset_add(isk_effect_def *d, const char *preset, const char *name, isk_
     return i;
 }
 
-int isk_preset_fire(isk_effect_def *d, const char *name, isk_vec2 pos, double scale)
-{
-    return isk_preset_add(d, "fire", name, pos, scale);
-}
-int isk_preset_smoke(isk_effect_def *d, const char *name, isk_vec2 pos, double scale)
-{
-    return isk_preset_add(d, "smoke", name, pos, scale);
-}
-int isk_preset_sparks(isk_effect_def *d, const char *name, isk_vec2 pos, double scale)
-{
-    return isk_preset_add(d, "sparks", name, pos, scale);
-}
-int isk_preset_fountain(isk_effect_def *d, const char *name, isk_vec2 pos, double scale)
-{
-    return isk_preset_add(d, "fountain", name, pos, scale);
-}
-int isk_preset_snow(isk_effect_def *d, const char *name, isk_vec2 pos, double scale)
-{
-    return isk_preset_add(d, "snow", name, pos, scale);
-}
-int isk_preset_explosion(isk_effect_def *d, const char *name, isk_vec2 pos, double scale)
-{
-    return isk_preset_add(d, "explosion", name, pos, scale);
-}
-int isk_preset_galaxy(isk_effect_def *d, const char *name, isk_vec2 pos, double scale)
-{
-    return isk_preset_add(d, "galaxy", name, pos, scale);
-}
-int isk_preset_fireworks(isk_effect_def *d, const char *name, isk_vec2 pos, double scale)
-{
-    return isk_preset_add(d, "fireworks", name, pos, scale);
-}
-int isk_preset_rain(isk_effect_def *d, const char *name, isk_vec2 pos, double scale)
-{
-    return isk_preset_add(d, "rain", name, pos, scale);
-}
-int isk_preset_magic(isk_effect_def *d, const char *name, isk_vec2 pos, double scale)
-{
-    return isk_preset_add(d, "magic", name, pos, scale);
-}
+/* The named functions of iskra/presets.h, one per row. */
+#define NAMED_PRESET(n)                                                                       \
+    int isk_preset_##n(isk_effect_def *d, const char *name, isk_vec2 pos, double scale)      \
+    {                                                                                         \
+        return isk_preset_add(d, #n, name, pos, scale);                                       \
+    }
+NAMED_PRESET(fire)
+NAMED_PRESET(smoke)
+NAMED_PRESET(sparks)
+NAMED_PRESET(fountain)
+NAMED_PRESET(snow)
+NAMED_PRESET(explosion)
+NAMED_PRESET(galaxy)
+NAMED_PRESET(fireworks)
+NAMED_PRESET(rain)
+NAMED_PRESET(magic)
