@@ -243,10 +243,11 @@ $(BUILD)/gen/header_examples.env: FORCE
 	@cmp -s $@.tmp $@ || mv $@.tmp $@; rm -f $@.tmp
 
 # ---- built-in scenes --------------------------------------------------------
-# scenes/*.ini are embedded into libiskra (isk_scene_builtin_*, `iskra list`):
-# the generated header changes only when a scene does, and then the object,
-# the libraries and the iskra tool are rebuilt.
-SCENE_FILES := $(wildcard scenes/*.ini)
+# scenes/*.ini are embedded into libiskra (isk_scene_builtin_*, `iskra list`),
+# with the textures they use (scenes/textures/*.png): the generated header
+# changes only when one does, and then the object, the libraries and the
+# iskra tool are rebuilt.
+SCENE_FILES := $(wildcard scenes/*.ini) $(wildcard scenes/textures/*.png)
 $(BUILD)/gen/scenes_gen.h: tools/embed_scenes.sh $(SCENE_FILES) FORCE
 	@mkdir -p $(dir $@)
 	$(Q)sh tools/embed_scenes.sh $@ $(SCENE_FILES)

@@ -21,6 +21,7 @@
 #include "iskra/scene.h"
 #include "iskra/texture.h"
 #include "key_case.h"
+#include "tool_cli.h"
 
 #define PI 3.14159265358979323846
 #define TEX "scenes/textures/arrows.png"
@@ -525,4 +526,65 @@ Test(looks, the_committed_sparkle_is_the_tools_drawing)
     cr_assert(key_case_equal(&want, &got), "sparkle.png differs from tools/looks_texture.h: run tools/gen_looks_texture.c");
     isk_canvas_free(&want);
     isk_canvas_free(&got);
+}
+
+/* A PNG in memory is the same texture as the file, through the cache too
+ * (kept under its name). */
+Test(looks, a_texture_from_memory_is_the_files)
+{
+    FILE *f = fopen(TEX, "rb");
+    cr_assert_not_null(f);
+    static unsigned char buf[1 << 16];
+    size_t n = fread(buf, 1, sizeof buf, f);
+    fclose(f);
+    isk_texture a, b;
+    isk_error err;
+    cr_assert_eq(isk_texture_load(&a, TEX, 4, 2, &err), ISK_OK, "%s", err.message);
+    cr_assert_eq(isk_texture_load_memory(&b, buf, n, "arrows", 4, 2, &err), ISK_OK, "%s", err.message);
+    isk_canvas ca, cb;
+    cr_assert_eq(isk_canvas_init(&ca, 64, 64), ISK_OK);
+    cr_assert_eq(isk_canvas_init(&cb, 64, 64), ISK_OK);
+    isk_canvas_fill(&ca, ISK_BLACK);
+    isk_canvas_fill(&cb, ISK_BLACK);
+    for (int k = 0; k < 8; k++) {
+        isk_draw_texture(&ca, &a, k, 8 + 7 * k, 30, 20, 14, 0.4 * k, ISK_WHITE, ISK_BLEND_OVER);
+        isk_draw_texture(&cb, &b, k, 8 + 7 * k, 30, 20, 14, 0.4 * k, ISK_WHITE, ISK_BLEND_OVER);
+    }
+    cr_assert(key_case_equal(&ca, &cb));
+    cr_assert_neq(isk_texture_load_memory(&b, buf, n / 2, "half", 1, 1, &err), ISK_OK);
+    cr_assert(strstr(err.message, "half"), "%s", err.message);
+    cr_assert_neq(isk_texture_load_memory(&b, buf, n, "arrows", 3, 1, &err), ISK_OK); /* 64 is not 3 frames */
+    isk_texture_cache *cache;
+    cr_assert_eq(isk_texture_cache_create(&cache, 4), ISK_OK);
+    const isk_texture *t1, *t2;
+    cr_assert_eq(isk_texture_cache_get_memory(cache, "arrows", buf, n, 4, 2, &t1, &err), ISK_OK);
+    cr_assert_eq(isk_texture_cache_get(cache, "arrows", 4, 2, &t2, &err), ISK_OK); /* found by its name */
+    cr_assert_eq(t1, t2);
+    cr_assert_eq(isk_texture_cache_loads(cache), 1);
+    cr_assert_neq(isk_texture_cache_get_memory(cache, "x", NULL, 1, 1, 1, &t1, &err), ISK_OK);
+    isk_texture_cache_destroy(cache);
+    isk_texture_free(&a);
+    isk_texture_free(&b);
+    isk_canvas_free(&ca);
+    isk_canvas_free(&cb);
+}
+
+/* Built-in scenes carry their textures: run from any directory, the
+ * pinwheel is its reference image. */
+Test(looks, a_built_in_scene_draws_its_texture_anywhere)
+{
+    char cwd[4096];
+    cr_assert_not_null(getcwd(cwd, sizeof cwd));
+    char dir[4200], args[4400], out[4300];
+    snprintf(dir, sizeof dir, "%s/out/test_fx_looks/anywhere", cwd);
+    cli_fresh("out/test_fx_looks/anywhere");
+    snprintf(out, sizeof out, "%s/p.png", dir);
+    snprintf(args, sizeof args, "render looks_pinwheel --out %s", out);
+    cr_assert_eq(cli_run_in("/", "out/test_fx_looks/anywhere", args), 0, "iskra %s", args);
+    isk_canvas got, want;
+    cr_assert_eq(isk_png_read(&got, out, NULL), ISK_OK);
+    cr_assert_eq(isk_png_read(&want, "refimg/looks_pinwheel.png", NULL), ISK_OK);
+    cr_assert(key_case_equal(&got, &want));
+    isk_canvas_free(&got);
+    isk_canvas_free(&want);
 }

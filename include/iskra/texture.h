@@ -166,6 +166,11 @@ isk_status isk_texture_from_canvas(isk_texture *t, const isk_canvas *img, int co
  * err (may be NULL) naming the file and the problem. */
 isk_status isk_texture_load(isk_texture *t, const char *png_path, int cols, int rows, isk_error *err);
 
+/* The same from `size` bytes of PNG in memory (a texture built into a
+ * program); `name` labels the messages. */
+isk_status isk_texture_load_memory(isk_texture *t, const void *png, size_t size, const char *name, int cols, int rows,
+                                   isk_error *err);
+
 /* A white texture of one frame, size x size, whose alpha is the sprite
  * kind's mask (iskra/sprite.h, the phase centred on the image): tinted by a
  * colour it is that sprite, and drawn with width != height and an angle it
@@ -200,6 +205,10 @@ void isk_texture_cache_destroy(isk_texture_cache *cache);
  * _destroy. */
 isk_status isk_texture_cache_get(isk_texture_cache *cache, const char *png_path, int cols, int rows,
                                  const isk_texture **out, isk_error *err);
+/* The same for a PNG in memory, kept under `name` (a path or any name: a
+ * later _get or _get_memory of that name and grid finds it). */
+isk_status isk_texture_cache_get_memory(isk_texture_cache *cache, const char *name, const void *png, size_t size,
+                                        int cols, int rows, const isk_texture **out, isk_error *err);
 
 /* Frees every texture; earlier pointers become invalid. */
 void isk_texture_cache_clear(isk_texture_cache *cache);

@@ -176,6 +176,10 @@ size_t fx_emitter_memory(const isk_emitter_def *e);
 /* The emitter's particles sway (they need the store's oscillation columns). */
 int fx_emitter_oscillates(const isk_emitter_def *em);
 
+/* scene_builtin.c: a file the built-in scenes use (scenes/textures/NAME.png,
+ * embedded with them), by the path they name it with; NULL if none. */
+const unsigned char *fx_builtin_file(const char *path, size_t *size);
+
 /* effect.c */
 void fx_sort_draw_order(isk_effect *e);
 

@@ -11,6 +11,7 @@
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
+#include <unistd.h>
 
 #include "effect_internal.h"
 #include "iskra/png.h"
@@ -119,8 +120,13 @@ isk_status fx_looks_prepare(isk_effect *e, fx_group *g, isk_error *err)
         if (s != ISK_OK)
             return isk_error_set(err, s, "emitter '%s': texture: %s", em->name, isk_status_str(s));
         isk_error le = {0};
-        s = isk_texture_cache_get(e->textures, em->texture, (int)em->texture_grid.x, (int)em->texture_grid.y,
-                                  &g->texture, &le);
+        /* A file wins; a built-in scene's texture that is not there (the
+         * scene run away from the repository) is the one built in. */
+        size_t size = 0;
+        const unsigned char *built_in = access(em->texture, F_OK) != 0 ? fx_builtin_file(em->texture, &size) : NULL;
+        const int cols = (int)em->texture_grid.x, rows = (int)em->texture_grid.y;
+        s = built_in ? isk_texture_cache_get_memory(e->textures, em->texture, built_in, size, cols, rows, &g->texture, &le)
+                     : isk_texture_cache_get(e->textures, em->texture, cols, rows, &g->texture, &le);
         if (s != ISK_OK) {
             char where[32] = "";
             if (em->line > 0)
@@ -183,6 +189,9 @@ isk_status fx_looks_find_texture(isk_emitter_def *em, const char *scene_name, co
         }
         memcpy(em->texture, path, (size_t)len + 1);
     }
+    size_t built_in_size;
+    if (access(em->texture, F_OK) != 0 && fx_builtin_file(em->texture, &built_in_size))
+        return ISK_OK; /* a built-in scene's own texture, run away from the repository */
     isk_png_info info;
     isk_error err = {0};
     isk_status s = isk_png_read_info(em->texture, &info, &err);

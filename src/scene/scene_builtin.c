@@ -1,10 +1,12 @@
 /* Built-in scenes (the shipped scenes/ *.ini, embedded at build time by
- * tools/embed_scenes.sh into $(BUILD)/gen/scenes_gen.h) and isk_scene_load. */
+ * tools/embed_scenes.sh into $(BUILD)/gen/scenes_gen.h, with the textures
+ * they use) and isk_scene_load. */
 #include <errno.h>
 #include <stdio.h>
 #include <string.h>
 #include <sys/stat.h>
 
+#include "effect_internal.h"
 #include "iskra/scene.h"
 #include "scene/ini_read.h"
 #include "scenes_gen.h"
@@ -26,6 +28,16 @@ const char *isk_scene_builtin_text(const char *name)
     for (int i = 0; name && i < NBUILTIN; i++)
         if (!strcmp(builtin_scenes[i].name, name))
             return builtin_scenes[i].text;
+    return NULL;
+}
+
+const unsigned char *fx_builtin_file(const char *path, size_t *size)
+{
+    for (int i = 0; path && builtin_files[i].path; i++)
+        if (!strcmp(builtin_files[i].path, path)) {
+            *size = builtin_files[i].size;
+            return builtin_files[i].data;
+        }
     return NULL;
 }
 
