@@ -21,7 +21,8 @@ static void base(isk_emitter_def *e)
 }
 
 /* The emitter's own force "<name>_<what>" of `kind`, added (or found, to be
- * updated) and referenced; NULL when there is no room. */
+ * updated) and referenced; NULL when there is no room.  The pointer lasts
+ * until the next force is added (the array may move). */
 static isk_force_def *own_force(isk_effect_def *d, int index, const char *what, isk_force_kind kind)
 {
     char fname[ISK_NAME_MAX];
@@ -395,10 +396,10 @@ static int fill_rain(isk_effect_def *d, int i, double u)
     isk_deflector floor = isk_deflector_segment(p.x - 260 * u, p.y - 320 * u, p.x + 260 * u, p.y - 320 * u);
     floor.restitution = 0.1;
     isk_force_def *w = own_force(d, i, "wind", ISK_FORCE_WIND);
-    if (!w || !own_deflector(d, i, "floor", floor) || !own_gravity(d, sp, 300 * u))
+    if (!w)
         return 0;
-    w->accel = isk_vec2_make(10 * u, -10 * u);
-    return 1;
+    w->accel = isk_vec2_make(10 * u, -10 * u); /* before another force moves the array */
+    return own_deflector(d, i, "floor", floor) && own_gravity(d, sp, 300 * u);
 }
 
 /* Magic (ours): a wand moving at 120 to the right (emitter_velocity) that

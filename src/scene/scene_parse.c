@@ -325,7 +325,7 @@ static isk_status apply_preset(parser *P, section *s, const isk_key *k, int line
                        ISK_EFFECT_MAX_FORCES);
     if (st != ISK_OK)
         return fail_at(P, s, line, k->name, "%s", isk_status_str(st));
-    e->line = s->line;
+    P->d->emitters[s->index].line = s->line; /* the preset may have moved the emitters (its own added) */
     return ISK_OK;
 }
 
