@@ -11,6 +11,7 @@
 #include "iskra/png.h"
 #include "iskra/scene.h"
 #include "refimg.h"
+#include "scene_text.h"
 
 /* Renders frame `frames` (-1: the scene's default) of a definition. */
 static void render_def(const isk_effect_def *d, long frames, isk_canvas *c)
@@ -32,23 +33,7 @@ static void render_text(const char *text, long frames, isk_canvas *c)
     isk_effect_def_free(&d);
 }
 
-static char *describe_text(const char *text)
-{
-    isk_effect_def d;
-    isk_error err;
-    isk_effect *fx;
-    cr_assert_eq(isk_scene_load_string(&d, text, "t.ini", &err), ISK_OK, "%s", err.message);
-    cr_assert_eq(isk_effect_create(&fx, &d, &err), ISK_OK, "%s", err.message);
-    char *buf = NULL;
-    size_t len = 0;
-    FILE *f = open_memstream(&buf, &len);
-    cr_assert_not_null(f);
-    isk_effect_describe(fx, f);
-    fclose(f);
-    isk_effect_destroy(fx);
-    isk_effect_def_free(&d);
-    return buf;
-}
+static char *describe_text(const char *text) { return scene_text_describe(text); }
 
 /* Every built-in scene with a reference image of its name is that image:
  * the thesis figures' (made by their C examples) and the effect scenes'
