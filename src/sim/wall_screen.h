@@ -11,8 +11,9 @@
  *     // bit g set: some particle of [g * ISK_WALL_SCREEN, (g + 1) * ISK_WALL_SCREEN) is outside
  *
  * Outside means a sign bit set in x - left, right - x, y - bottom or
- * top - y (an exact hit, x == left, is +0: inside).  A flag is a hint, not
- * a verdict: the caller tests each particle of a flagged group exactly.
+ * top - y (an exact hit, x == left, is +0: inside; a -0 on a +0 wall gives
+ * -0, a false alarm).  A flag is a hint, not a verdict: the caller tests
+ * each particle of a flagged group exactly.
  * A non-finite coordinate may be flagged or not (a NaN keeps its own sign;
  * a disabled wall's infinity against an infinite coordinate gives NaN):
  * the bounces leave non-finite particles to the runner either way.
