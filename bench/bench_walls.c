@@ -23,8 +23,13 @@
  *                  floor (c = 0.5): every particle hits every step, the
  *                  worst case of the scalar path
  * at 10^6 and 10^7 particles.  Rounds interleave the variants; each figure
- * is the fastest of ROUNDS (the least disturbed) with the median beside
- * it.  The machine is shared: read the ratios, not the nanoseconds. */
+ * is the fastest of ROUNDS_MAX (the least disturbed) with the median beside
+ * it.  The machine is shared: read the ratios, not the nanoseconds.
+ *
+ * `bench_walls --quick` runs 10^6 particles and 16384 (a store in the
+ * caches: what the stages' arithmetic costs with the memory out of the
+ * picture, steady on a busy machine), 5 rounds: a figure in seconds for
+ * iterating on a kernel (quote the full run). */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -34,14 +39,14 @@
 #include "iskra/system.h"
 #include "sim/stage.h"
 
-enum { ROUNDS = 7 };
+enum { ROUNDS_MAX = 7 };
 static const double DT = 1.0 / 600, G = 9.81, DRAG = 0.47;
 
 /* ---- the bandwidth limit ---------------------------------------------------- */
 
 /* Best bytes per ns over copy, scale, add and triad, each on arrays whose
  * total size is `bytes`. */
-static double stream_limit(size_t bytes)
+static double stream_limit(size_t bytes, int rounds)
 {
     size_t n2 = bytes / 16, n3 = bytes / 24; /* two or three arrays */
     double *a = malloc(n2 * sizeof *a), *b = malloc(n2 * sizeof *b), *c = malloc(n3 * sizeof *c);
@@ -54,7 +59,7 @@ static double stream_limit(size_t bytes)
     for (size_t i = 0; i < n3; i++)
         c[i] = 0.5;
     double best = 0;
-    for (int r = 0; r < ROUNDS; r++)
+    for (int r = 0; r < rounds; r++)
         for (int k = 0; k < 4; k++) {
             double t0 = bench_now(), moved;
             double *restrict A = a, *restrict B = b, *restrict C = c;
@@ -155,17 +160,17 @@ static int cmp(const void *a, const void *b)
     return (x > y) - (x < y);
 }
 
-static int measure(size_t n, int steps)
+static int measure(size_t n, int steps, int rounds)
 {
     world w;
     if (build(&w, n)) {
         fprintf(stderr, "bench_walls: out of memory at %zu particles\n", n);
         return 1;
     }
-    const double limit = stream_limit(40 * n); /* bytes per ns */
+    const double limit = stream_limit(40 * n, rounds); /* bytes per ns */
     const double floor_ns = 72.0 / limit;      /* the least a particle-step can cost */
-    double t[NV][ROUNDS];
-    for (int r = 0; r < ROUNDS; r++)
+    double t[NV][ROUNDS_MAX];
+    for (int r = 0; r < rounds; r++)
         for (int k = 0; k < NV; k++) {
             int v = (k + r) % NV; /* a different order every round */
             fill(&w, n, v == V_REST);
@@ -176,14 +181,14 @@ static int measure(size_t n, int steps)
             t[v][r] = (bench_now() - t0) / ((double)steps * (double)n) * 1e9;
         }
     printf("%zu particles (store %zu MB), %d steps per timing, fastest (median) of %d rounds\n", n, n * 56 >> 20,
-           steps, ROUNDS);
+           steps, rounds);
     printf("  bandwidth limit: best STREAM kernel %.2f GB/s -> 72 B per particle-step = %.3f ns\n", limit,
            floor_ns);
     double best[NV];
     for (int v = 0; v < NV; v++) {
-        qsort(t[v], ROUNDS, sizeof t[v][0], cmp);
+        qsort(t[v], (size_t)rounds, sizeof t[v][0], cmp);
         best[v] = t[v][0];
-        printf("  %-34s %7.3f ns (%7.3f)  %5.2fx the limit\n", VNAME[v], t[v][0], t[v][ROUNDS / 2],
+        printf("  %-34s %7.3f ns (%7.3f)  %5.2fx the limit\n", VNAME[v], t[v][0], t[v][rounds / 2],
                t[v][0] / floor_ns);
     }
     printf("  impact / end-of-step rule: %.3f   impact / motion alone: %.3f   (goal: every stage set <= 1.5x "
@@ -194,10 +199,12 @@ static int measure(size_t n, int steps)
     return 0;
 }
 
-int main(void)
+int main(int argc, char **argv)
 {
+    const int quick = argc > 1 && !strcmp(argv[1], "--quick");
+    const int rounds = quick ? 5 : ROUNDS_MAX;
     printf("bench_walls: gravity %.2f + drag %.2f + reflect walls, semi-implicit Euler, dt 1/600\n\n", G, DRAG);
-    if (measure(1000000, 10))
+    if (measure(1000000, 10, rounds))
         return 1;
-    return measure(10000000, 2);
+    return quick ? measure(16384, 600, rounds) : measure(10000000, 2, rounds);
 }

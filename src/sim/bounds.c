@@ -8,6 +8,7 @@
 
 #include "sim/flight.h"
 #include "sim/kernels.h"
+#include "sim/wall_screen.h"
 
 const char *const isk_bounce_mode_names[ISK_BOUNCE_MODE_COUNT] = {"thesis", "reflect"};
 const char *const isk_side_names[ISK_SIDE_COUNT] = {"top", "right", "bottom", "left"};
@@ -231,22 +232,6 @@ static void reflect_apply(const isk_bounds *b, size_t n, double *x, double *y, d
 
 /* ---- sound reflection at the time of impact (iskra/impact.h) ---- */
 
-/* 1 when some particle of the chunk is outside [lo, hi] (or NaN): the sign
- * bits of pos - lo and hi - pos, or-ed as integers, so the loop vectorizes
- * (an exact wall hit, pos == lo, gives +0 and is inside). */
-static int any_outside(size_t n, const double *restrict pos, double lo, double hi)
-{
-    uint64_t acc = 0;
-    for (size_t i = 0; i < n; i++) {
-        double a = pos[i] - lo, b = hi - pos[i];
-        uint64_t ua, ub;
-        memcpy(&ua, &a, sizeof ua);
-        memcpy(&ub, &b, sizeof ub);
-        acc |= ua | ub;
-    }
-    return (int)(acc >> 63);
-}
-
 /* When a flight on the inside of a wall (f = signed distance, > 0 inside:
  * f(t) = c0 + U D1(t) + a D2(t)) meets it within (0, s], given that it does
  * (its end f_end or its turning point f_turn at t_turn is outside). */
@@ -393,20 +378,50 @@ static void impact_axis(double *pos, double *vel, const axis_motion *am, size_t 
     *vel = uend + delta;
 }
 
-/* Screened in groups of 16 (a vectorized test each), so a step in which a
- * few particles hit scans 16 of them per hit, not the whole block. */
-enum { SCREEN = 16 };
+/* What the walls of a block need beyond the box: which axes have walls,
+ * the flights of both axes, and the drag for the rate k = b / m. */
+typedef struct impact_walls {
+    isk_wall_box box; /* a missing wall at -inf / +inf */
+    int x_on, y_on;
+    axis_motion mx, my;
+    const double *m;
+    double drag, h, c;
+    isk_wall_screen_fn screen;
+} impact_walls;
 
-static void impact_pass(size_t n, double *restrict pos, double *restrict v, const axis_motion *am,
-                        const double *restrict m, double drag, double h, double lo, double hi, double c)
+/* The particles [o, o + n) of a group the screen flagged: each axis of each
+ * particle that ended outside gets its bounces (the axes are independent:
+ * x's touch x and vx, y's y and vy, so the order between them is free). */
+static void impact_group(size_t o, size_t n, double *restrict x, double *restrict y, double *restrict vx,
+                         double *restrict vy, const impact_walls *iw)
 {
-    for (size_t o = 0; o < n; o += SCREEN) {
-        const size_t cn = n - o < SCREEN ? n - o : SCREEN;
-        if (!any_outside(cn, pos + o, lo, hi))
+    const isk_wall_box *w = &iw->box;
+    for (size_t i = o; i < o + n; i++) {
+        const int out_x = iw->x_on && !(x[i] >= w->left && x[i] <= w->right);
+        const int out_y = iw->y_on && !(y[i] >= w->bottom && y[i] <= w->top);
+        if (!(out_x | out_y))
             continue;
-        for (size_t i = o; i < o + cn; i++)
-            if (!(pos[i] >= lo && pos[i] <= hi))
-                impact_axis(&pos[i], &v[i], am, i, drag > 0.0 ? drag / m[i] : 0.0, h, lo, hi, c);
+        const double k = iw->drag > 0.0 ? iw->drag / iw->m[i] : 0.0;
+        if (out_x)
+            impact_axis(&x[i], &vx[i], &iw->mx, i, k, iw->h, w->left, w->right, iw->c);
+        if (out_y)
+            impact_axis(&y[i], &vy[i], &iw->my, i, k, iw->h, w->bottom, w->top, iw->c);
+    }
+}
+
+/* One screening pass over both axes, then the particles of the flagged
+ * groups. */
+static void impact_block(size_t n, double *restrict x, double *restrict y, double *restrict vx, double *restrict vy,
+                         const impact_walls *iw)
+{
+    for (size_t o = 0; o < n; o += ISK_WALL_SCREEN_SPAN) {
+        const size_t span = n - o < ISK_WALL_SCREEN_SPAN ? n - o : ISK_WALL_SCREEN_SPAN;
+        const uint64_t flags = iw->screen(span, x + o, y + o, &iw->box);
+        for (size_t g = 0; g < ISK_WALL_SCREEN_GROUPS && (flags >> g) != 0; g++)
+            if (flags >> g & 1u) {
+                const size_t first = o + g * ISK_WALL_SCREEN, rest = n - first;
+                impact_group(first, rest < ISK_WALL_SCREEN ? rest : ISK_WALL_SCREEN, x, y, vx, vy, iw);
+            }
     }
 }
 
@@ -425,18 +440,21 @@ void isk_bounds_apply_step(const isk_bounds *b, const isk_step_motion *mo, size_
         reflect_apply(b, n, x, y, vx, vy); /* no motion to solve: the end-of-step rule */
         return;
     }
-    const axis_motion mx = {start ? mo->x0 : NULL, start ? mo->vx0 : NULL, mo->ax, mo->offset * mo->ax * mo->h};
-    const axis_motion my = {start ? mo->y0 : NULL, start ? mo->vy0 : NULL, mo->ay, mo->offset * mo->ay * mo->h};
     const unsigned sd = b->sides;
-    const double c = b->restitution, drag = mo->drag > 0.0 ? mo->drag : 0.0;
-    const double left = sd & ISK_SIDE_LEFT ? b->xmin + b->margin : -INFINITY;
-    const double right = sd & ISK_SIDE_RIGHT ? b->xmax - b->margin : INFINITY;
-    const double bottom = sd & ISK_SIDE_BOTTOM ? b->ymin + b->margin : -INFINITY;
-    const double top = sd & ISK_SIDE_TOP ? b->ymax - b->margin : INFINITY;
-    if (sd & (ISK_SIDE_LEFT | ISK_SIDE_RIGHT))
-        impact_pass(n, x, vx, &mx, mo->m, drag, mo->h, left, right, c);
-    if (sd & (ISK_SIDE_BOTTOM | ISK_SIDE_TOP))
-        impact_pass(n, y, vy, &my, mo->m, drag, mo->h, bottom, top, c);
+    const impact_walls iw = {
+        {sd & ISK_SIDE_LEFT ? b->xmin + b->margin : -INFINITY, sd & ISK_SIDE_RIGHT ? b->xmax - b->margin : INFINITY,
+         sd & ISK_SIDE_BOTTOM ? b->ymin + b->margin : -INFINITY, sd & ISK_SIDE_TOP ? b->ymax - b->margin : INFINITY},
+        (sd & (ISK_SIDE_LEFT | ISK_SIDE_RIGHT)) != 0,
+        (sd & (ISK_SIDE_BOTTOM | ISK_SIDE_TOP)) != 0,
+        {start ? mo->x0 : NULL, start ? mo->vx0 : NULL, mo->ax, mo->offset * mo->ax * mo->h},
+        {start ? mo->y0 : NULL, start ? mo->vy0 : NULL, mo->ay, mo->offset * mo->ay * mo->h},
+        mo->m,
+        mo->drag > 0.0 ? mo->drag : 0.0,
+        mo->h,
+        b->restitution,
+        isk_wall_screen_pick(),
+    };
+    impact_block(n, x, y, vx, vy, &iw);
 }
 
 void isk_bounds_apply_arrays(const isk_bounds *b, size_t n, double *x, double *y, double *vx, double *vy)

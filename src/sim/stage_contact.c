@@ -4,12 +4,14 @@
 #include <math.h>
 #include <string.h>
 
+#include "sim/block_prefetch.h"
 #include "sim/stage.h"
 
 static void run_remember(const isk_stage *st, isk_block *b, double h)
 {
     (void)st;
     (void)h;
+    isk_block_prefetch_next(b, 5); /* the first stage to read the block */
     memcpy(b->s->x_old, b->x, b->n * sizeof *b->x);
     memcpy(b->s->y_old, b->y, b->n * sizeof *b->y);
     memcpy(b->s->vx_old, b->vx, b->n * sizeof *b->vx);

@@ -2,6 +2,7 @@
  * ageing (see stage.h). */
 #include <math.h>
 
+#include "sim/block_prefetch.h"
 #include "sim/kernels.h"
 #include "sim/stage.h"
 
@@ -36,6 +37,7 @@ static void drift_loop(size_t n, double *restrict x, double *restrict y, double 
 
 static void run_drift(const isk_stage *st, isk_block *b, double h)
 {
+    isk_block_prefetch_next(b, 4);
     drift_loop(b->n, b->x, b->y, b->vx, b->vy, st->u.drift.ax, st->u.drift.ay, h);
 }
 
@@ -56,6 +58,7 @@ const isk_stage_kind isk_stage_drift = {"drift", run_drift, describe_drift};
  * cannot leave the finite numbers. */
 static void run_motion(const isk_stage *st, isk_block *b, double h)
 {
+    isk_block_prefetch_next(b, 5);
     isk_integrate_block(st->u.motion.method, st->u.motion.forces, b->s, b->n, b->x, b->y, b->vx, b->vy,
                         b->m, h);
     b->s->nonfinite |= isk_k_any_nonfinite2(b->n, b->x, b->y) | isk_k_any_nonfinite2(b->n, b->vx, b->vy);

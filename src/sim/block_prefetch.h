@@ -1,0 +1,41 @@
+/* src/sim/block_prefetch.h — the next block's columns, asked for while the
+ * stages compute on this one (internal).
+ *
+ *     static void run_motion(const isk_stage *st, isk_block *b, double h)
+ *     {
+ *         isk_block_prefetch_next(b, 5);   // x, y, vx, vy and m of the block after b
+ *         ...
+ *
+ * Why: the hardware prefetcher follows a stream only within a 4 KiB page,
+ * two blocks of one column, and a block's stages read its five columns one
+ * after another in short bursts, so at every page it starts them afresh
+ * and the block's arithmetic waits for memory instead of overlapping it.
+ * Called by the first stage of a list that reads the store's columns (the
+ * remember stage, else the motion stage).  A hint only: no byte changes.
+ * Reads only, so a next block that another thread steps is shared, not
+ * taken from it. */
+#ifndef ISKRA_SIM_BLOCK_PREFETCH_H
+#define ISKRA_SIM_BLOCK_PREFETCH_H
+
+#include "sim/stage.h"
+
+/* `columns`: 4 for x, y, vx, vy; 5 with m too. */
+static inline void isk_block_prefetch_next(const isk_block *b, int columns)
+{
+#if defined(__GNUC__)
+    const isk_particles *p = b->p;
+    const size_t next = b->first + b->n;
+    if (next >= p->count)
+        return;
+    const size_t n = p->count - next < ISK_SIM_BLOCK ? p->count - next : ISK_SIM_BLOCK;
+    const double *const col[5] = {p->x + next, p->y + next, p->vx + next, p->vy + next, p->m + next};
+    for (int c = 0; c < columns && c < 5; c++)
+        for (size_t i = 0; i < n; i += 64 / sizeof(double))
+            __builtin_prefetch(col[c] + i, 0, 3);
+#else
+    (void)b;
+    (void)columns;
+#endif
+}
+
+#endif
