@@ -3,6 +3,7 @@
  *
  *     isk_effect *fx = scene_text_open("[emitter e]\nsource = stream\nrate = 10\n", 0);
  *     char *lists = scene_text_describe("[emitter e]\nsource = stream\nrate = 10\n");  // free it
+ *     char *now = scene_text_lists(fx);      // a running effect's lists (free it)
  *
  * Both assert that the text parses and the effect is created (threads:
  * 0 for the default, as isk_effect_def.threads). */
@@ -26,15 +27,22 @@ static inline isk_effect *scene_text_open(const char *text, int threads)
     return fx;
 }
 
-static inline char *scene_text_describe(const char *text)
+/* The stage lists of a running effect, as text (free it). */
+static inline char *scene_text_lists(const isk_effect *fx)
 {
-    isk_effect *fx = scene_text_open(text, 0);
     char *buf = NULL;
     size_t len = 0;
     FILE *f = open_memstream(&buf, &len);
     cr_assert_not_null(f);
     isk_effect_describe(fx, f);
     fclose(f);
+    return buf;
+}
+
+static inline char *scene_text_describe(const char *text)
+{
+    isk_effect *fx = scene_text_open(text, 0);
+    char *buf = scene_text_lists(fx);
     isk_effect_destroy(fx);
     return buf;
 }

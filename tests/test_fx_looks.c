@@ -21,6 +21,7 @@
 #include "iskra/scene.h"
 #include "iskra/texture.h"
 #include "key_case.h"
+#include "scene_text.h"
 #include "tool_cli.h"
 
 #define PI 3.14159265358979323846
@@ -150,27 +151,8 @@ Test(looks_keys, texture_fps)
 
 /* ---- what the keys mean ------------------------------------------------------ */
 
-static isk_effect *make(const char *text)
-{
-    isk_effect_def d;
-    isk_error err = {0};
-    cr_assert_eq(isk_scene_load_string(&d, text, "looks.ini", &err), ISK_OK, "%s\n%s", err.message, text);
-    isk_effect *fx;
-    cr_assert_eq(isk_effect_create(&fx, &d, &err), ISK_OK, "%s", err.message);
-    isk_effect_def_free(&d);
-    return fx;
-}
-
-static char *describe(const isk_effect *fx)
-{
-    char *buf = NULL;
-    size_t len = 0;
-    FILE *f = open_memstream(&buf, &len);
-    cr_assert_not_null(f);
-    isk_effect_describe(fx, f);
-    fclose(f);
-    return buf;
-}
+static isk_effect *make(const char *text) { return scene_text_open(text, 0); }
+static char *describe(const isk_effect *fx) { return scene_text_lists(fx); }
 
 /* One resting particle at the origin of a 64x64 canvas (view -4..4, 8 px
  * a unit), drawn as the sheet's texture with `extra` keys. */

@@ -164,6 +164,11 @@ isk_status isk_texture_from_canvas(isk_texture *t, const isk_canvas *img, int co
 /* Reads `png_path` (iskra/png.h) into *t; errors as isk_texture_from_canvas
  * plus the reader's (ISK_ERR_IO, ISK_ERR_FORMAT), each with a message in
  * err (may be NULL) naming the file and the problem. */
+/* What isk_texture_load would refuse, from the file's header alone (no
+ * decoding): the same statuses and messages; ISK_ERR_RANGE for a grid the
+ * image does not divide (or a grid out of range). */
+isk_status isk_texture_check_file(const char *png_path, int cols, int rows, isk_error *err);
+
 isk_status isk_texture_load(isk_texture *t, const char *png_path, int cols, int rows, isk_error *err);
 
 /* The same from `size` bytes of PNG in memory (a texture built into a

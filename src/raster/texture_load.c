@@ -40,19 +40,28 @@ static isk_status from_image(isk_texture *t, isk_canvas *img, const char *name, 
     return st;
 }
 
+isk_status isk_texture_check_file(const char *png_path, int cols, int rows, isk_error *err)
+{
+    if (!png_path)
+        return isk_error_set(err, ISK_ERR_NULL, "texture: NULL path");
+    isk_status st = check_grid(png_path, cols, rows, err);
+    if (st != ISK_OK)
+        return st;
+    isk_png_info info;
+    if ((st = isk_png_read_info(png_path, &info, err)) != ISK_OK)
+        return st;
+    return check_image(png_path, info.width, info.height, cols, rows, err);
+}
+
 isk_status isk_texture_load(isk_texture *t, const char *png_path, int cols, int rows, isk_error *err)
 {
     if (t)
         memset(t, 0, sizeof *t);
     if (!t || !png_path)
         return isk_error_set(err, ISK_ERR_NULL, "texture: NULL %s", t ? "path" : "texture");
-    isk_status st = check_grid(png_path, cols, rows, err);
-    if (st != ISK_OK)
-        return st;
     /* the header first: a file too large is refused before it is decoded */
-    isk_png_info info;
-    if ((st = isk_png_read_info(png_path, &info, err)) != ISK_OK ||
-        (st = check_image(png_path, info.width, info.height, cols, rows, err)) != ISK_OK)
+    isk_status st = isk_texture_check_file(png_path, cols, rows, err);
+    if (st != ISK_OK)
         return st;
     isk_canvas img;
     st = isk_png_read_max(&img, png_path, (long long)ISK_TEXTURE_MAX_DIM * ISK_TEXTURE_MAX_DIM, err);

@@ -14,7 +14,6 @@
 #include <unistd.h>
 
 #include "effect_internal.h"
-#include "iskra/png.h"
 
 const char *const isk_align_names[ISK_ALIGN_COUNT] = {"none", "velocity"};
 
@@ -192,24 +191,16 @@ isk_status fx_looks_find_texture(isk_emitter_def *em, const char *scene_name, co
     size_t built_in_size;
     if (access(em->texture, F_OK) != 0 && fx_builtin_file(em->texture, &built_in_size))
         return ISK_OK; /* a built-in scene's own texture, run away from the repository */
-    isk_png_info info;
+    /* the texture module's own rules, from the header (the grid itself is
+     * well formed here: fx_looks_check said so), so a RANGE is the grid not
+     * dividing the image: that key's line */
     isk_error err = {0};
-    isk_status s = isk_png_read_info(em->texture, &info, &err);
+    isk_status s = isk_texture_check_file(em->texture, (int)em->texture_grid.x, (int)em->texture_grid.y, &err);
     if (s != ISK_OK) {
+        if (s == ISK_ERR_RANGE)
+            *key = "texture_grid";
         snprintf(why, n, "cannot use '%s' as a texture: %s", em->texture, err.message);
         return s;
-    }
-    const int cols = (int)em->texture_grid.x, rows = (int)em->texture_grid.y;
-    if (info.width > ISK_TEXTURE_MAX_DIM || info.height > ISK_TEXTURE_MAX_DIM) {
-        snprintf(why, n, "'%s' is %dx%d pixels: a texture has at most %d a side", em->texture, info.width,
-                 info.height, ISK_TEXTURE_MAX_DIM);
-        return ISK_ERR_SIZE;
-    }
-    if (info.width % cols || info.height % rows) {
-        *key = "texture_grid";
-        snprintf(why, n, "'%s' is %dx%d pixels: texture_grid %d, %d does not divide it into whole frames",
-                 em->texture, info.width, info.height, cols, rows);
-        return ISK_ERR_RANGE;
     }
     return ISK_OK;
 }
