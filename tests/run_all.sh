@@ -17,11 +17,13 @@ log=$(mktemp); trap 'rm -f "$log"' EXIT
 for t in "$BUILD"/tests/test_*; do
     [ -x "$t" ] || continue
     name=$(basename "$t")
+    t0=$(date +%s.%N)
     if [ -n "${ISKRA_TEST_FILTER:-}" ]; then
         "$t" --filter="$ISKRA_TEST_FILTER" >"$log" 2>&1; rc=$?
     else
         "$t" >"$log" 2>&1; rc=$?
     fi
+    secs=$(echo "$t0 $(date +%s.%N)" | awk '{printf "%.1f", $2 - $1}')
     syn=$(grep -a "Synthesis:" "$log" | tail -n 1)
     # [====] Synthesis: Tested: 12 | Passing: 12 | Failing: 0 | Crashing: 0
     tested=$(echo "$syn" | sed -n 's/.*Tested: \([0-9]*\).*/\1/p')
@@ -32,9 +34,9 @@ for t in "$BUILD"/tests/test_*; do
     passed=$((passed + passing)); failed=$((failed + fails))
     if [ "$fails" -ne 0 ]; then
         bad_bins="$bad_bins $name"
-        echo "---- $name (exit $rc) ----"; cat "$log"
+        echo "---- $name (exit $rc, $secs s) ----"; cat "$log"
     else
-        echo "ok   $name: $passing tests"
+        echo "ok   $name: $passing tests ($secs s)"
     fi
 done
 # Threads never change a byte (a plain program; CI also runs it under TSan).

@@ -8,6 +8,7 @@
  * and are left out. */
 #include <criterion/criterion.h>
 #include <criterion/logging.h>
+#include <criterion/parameterized.h>
 
 #include <float.h>
 #include <math.h>
@@ -17,6 +18,7 @@
 #include "iskra/effect.h"
 #include "iskra/keys.h"
 #include "iskra/scene.h"
+#include "sanitized.h"
 
 static const char *BASE =
     "[scene]\ndt = 1/60\nseed = 3\n"
@@ -137,7 +139,7 @@ static int values(const isk_key *k, char vals[MAXVALS][160])
 /* The sanitizer builds (-O1, every access instrumented: 80 s for the whole
  * matrix) run each value with one integrator, taken in turn, so every
  * integrator still meets every key; the plain build runs them all. */
-#if defined(__SANITIZE_ADDRESS__)
+#if TEST_SANITIZED
 enum { INTEGRATOR_STRIDE = ISK_INTEGRATOR_COUNT };
 #else
 enum { INTEGRATOR_STRIDE = 1 };
@@ -210,7 +212,21 @@ static int run_case(const isk_key *k, const char *value, int method, long *failu
     return accepted;
 }
 
-Test(finite_sweep, every_numeric_key_at_its_extremes_with_every_integrator, .timeout = 600)
+/* The rows are shared out (row r to share r % SHARES) so Criterion runs
+ * the shares on every core at once: the matrix is the suite's longest
+ * test. */
+enum { SHARES = 4 };
+
+ParameterizedTestParameters(finite_sweep, every_numeric_key_at_its_extremes_with_every_integrator)
+{
+    static int share[SHARES];
+    for (int i = 0; i < SHARES; i++)
+        share[i] = i;
+    return cr_make_param_array(int, share, SHARES);
+}
+
+ParameterizedTest(int *share, finite_sweep, every_numeric_key_at_its_extremes_with_every_integrator,
+                  .timeout = 600)
 {
     long failures = 0, runs = 0;
     int rows = 0;
@@ -221,12 +237,15 @@ Test(finite_sweep, every_numeric_key_at_its_extremes_with_every_integrator, .tim
         char vals[MAXVALS][160];
         int nv = values(k, vals);
         rows += nv > 0;
+        if (r % SHARES != *share)
+            continue;
         for (int v = 0; v < nv; v++)
             for (int m = (r + v) % INTEGRATOR_STRIDE; m < ISK_INTEGRATOR_COUNT; m += INTEGRATOR_STRIDE)
                 runs += run_case(k, vals[v], m, &failures);
     }
-    cr_log_info("%d numeric rows, %ld accepted runs of %d frames", rows, runs, FRAMES);
+    cr_log_info("share %d: %d numeric rows in all, %ld accepted runs of %d frames", *share, rows, runs, FRAMES);
     cr_assert_gt(rows, 40);
+    cr_assert_gt(runs, 40, "share %d ran almost nothing", *share);
     cr_assert_eq(failures, 0, "%ld accepted settings produced a non-finite state (see the log)", failures);
 }
 

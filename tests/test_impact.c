@@ -16,6 +16,7 @@
 #include "iskra/effect.h"
 #include "iskra/scene.h"
 #include "iskra/system.h"
+#include "sanitized.h"
 
 static const double G = 9.81;
 
@@ -264,7 +265,7 @@ static isk_effect *box(int segments, const char *integrator, double c, const cha
 /* Every integrator (the CLI check in docs/accuracy.md: within 0.07 %).  The
  * sanitizer builds run 1000 frames, for time; the plain build the issue's
  * 10^4. */
-#if defined(__SANITIZE_ADDRESS__)
+#if TEST_SANITIZED
 enum { BOX_FRAMES = 1000 };
 #else
 enum { BOX_FRAMES = 10000 };

@@ -10,6 +10,7 @@
 #include "iskra/integrate.h"
 #include "iskra/rng.h"
 #include "iskra/teach.h"
+#include "sanitized.h"
 
 Test(sim_bounds, thesis_floor_value_is_ymin_plus_0_1_in_double)
 {
@@ -135,7 +136,7 @@ static int reflect_steps(void)
     const char *e = getenv("ISKRA_SIM_STEPS");
     if (e && atoi(e) > 0)
         return atoi(e);
-#if defined(__SANITIZE_ADDRESS__)
+#if TEST_SANITIZED
     return 1000;
 #else
     return 10000;
