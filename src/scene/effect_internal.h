@@ -68,6 +68,7 @@ typedef struct fx_band {
     const uint32_t *list;                             /* NULL: every particle; else these, */
     size_t nlist;                                     /* in this order (effect_bands.c) */
     const isk_sprite *sprite[ISK_SPRITE_MAX_SIZE + 1]; /* by whole-pixel size (sprite groups) */
+    double sprite_reach;                              /* rows a sprite can reach from its centre */
 } fx_band;
 
 /* The threaded draw's sorting of particles into bands (effect_bands.c):

@@ -244,9 +244,15 @@ static isk_status draw_discs(isk_effect *e, isk_canvas *c, fx_group *g, const fx
     const isk_particles *p = &g->store;
     const int vary = fx_varies(g);
     const double scale = fabs(e->view.sx);
+    /* a band's thread reads every particle: those whose sprite cannot reach
+     * its rows are passed over before their style is worked out (NaN
+     * compares false and goes on to the sprite's own test) */
+    const double lo = b->r0 - b->sprite_reach, hi = b->r1 + b->sprite_reach;
     for (size_t i = 0; i < p->count; i++) {
         double X, Y, mult;
         isk_view_to_screen(&e->view, p->x[i], p->y[i], &X, &Y);
+        if (Y < lo || Y > hi)
+            continue;
         isk_color col = style(g, p, i, vary, &mult);
         const double size = p->size ? p->size[i] : g->def->size; /* size_range: its own */
         isk_fill_circle_aa(c, X, Y, 0.5 * size * mult * scale, col, g->def->blend);
@@ -277,10 +283,15 @@ static isk_status prepare_sprites(isk_effect *e, fx_group *g, fx_band *b)
     for (int attempt = 0; attempt < 2; attempt++) {
         isk_status s = ISK_OK;
         memset(b->sprite, 0, sizeof b->sprite);
+        b->sprite_reach = 0;
         for (int k = 0; k < n && s == ISK_OK; k++) {
             int px = sprite_px(g, scale, g->has_size_ramp ? g->size_ramp.table[k] : 1.0);
             if (px && !b->sprite[px])
                 s = isk_sprite_cache_get(e->sprites, g->def->sprite, px, bake_col, &b->sprite[px]);
+            /* a mask of S rows sits at its centre, snapped to half pixels,
+             * minus S/2: it reaches S/2 + 1 rows either way at most */
+            if (s == ISK_OK && px && b->sprite[px]->size / 2.0 + 2.0 > b->sprite_reach)
+                b->sprite_reach = b->sprite[px]->size / 2.0 + 2.0;
         }
         if (s == ISK_OK)
             return ISK_OK;
@@ -303,9 +314,15 @@ static isk_status draw_sprites(isk_effect *e, isk_canvas *c, fx_group *g, const 
     const int vary = fx_varies(g);
     const int tinted = g->has_color_ramp || g->has_alpha_ramp || p->color;
     const double scale = fabs(e->view.sx);
+    /* a band's thread reads every particle: those whose sprite cannot reach
+     * its rows are passed over before their style is worked out (NaN
+     * compares false and goes on to the sprite's own test) */
+    const double lo = b->r0 - b->sprite_reach, hi = b->r1 + b->sprite_reach;
     for (size_t i = 0; i < p->count; i++) {
         double X, Y, mult;
         isk_view_to_screen(&e->view, p->x[i], p->y[i], &X, &Y);
+        if (Y < lo || Y > hi)
+            continue;
         isk_color col = style(g, p, i, vary, &mult);
         const isk_sprite *spr = b->sprite[sprite_px(g, scale, mult)];
         if (spr)
