@@ -261,7 +261,7 @@ typedef struct axis_motion {
  * wall is at -inf / +inf): the bounces of iskra/impact.h.  (*pos, *vel) is
  * the integrator's end state, k the drag rate b/m. */
 static void impact_axis(double *pos, double *vel, const axis_motion *am, size_t i, double k, double h, double lo,
-                        double hi, double c)
+                        double hi, double c, isk_fl_memo *memo)
 {
     const double p1 = *pos, v1 = *vel;
     if (!(isfinite(p1) && isfinite(v1)))
@@ -275,7 +275,7 @@ static void impact_axis(double *pos, double *vel, const axis_motion *am, size_t 
     } else {
         a = am->a;
         delta = am->delta;
-        isk_fl_from_end(p1, v1, a, k, h, delta, &P, &U);
+        isk_fl_from_end(p1, v1, a, k, h, delta, memo, &P, &U);
         /* A start reconstructed within rounding of a wall is on it (a
          * particle resting on the floor comes back 1e-19 below it). */
         const double tol = 64 * 2.220446049250313e-16 * (fabs(p1) + fabs(U) * h + fabs(a) * h * h);
@@ -396,6 +396,7 @@ static void impact_group(size_t o, size_t n, double *restrict x, double *restric
                          double *restrict vy, const impact_walls *iw)
 {
     const isk_wall_box *w = &iw->box;
+    isk_fl_memo memo = {0};
     for (size_t i = o; i < o + n; i++) {
         const int out_x = iw->x_on && !(x[i] >= w->left && x[i] <= w->right);
         const int out_y = iw->y_on && !(y[i] >= w->bottom && y[i] <= w->top);
@@ -403,9 +404,9 @@ static void impact_group(size_t o, size_t n, double *restrict x, double *restric
             continue;
         const double k = iw->drag > 0.0 ? iw->drag / iw->m[i] : 0.0;
         if (out_x)
-            impact_axis(&x[i], &vx[i], &iw->mx, i, k, iw->h, w->left, w->right, iw->c);
+            impact_axis(&x[i], &vx[i], &iw->mx, i, k, iw->h, w->left, w->right, iw->c, &memo);
         if (out_y)
-            impact_axis(&y[i], &vy[i], &iw->my, i, k, iw->h, w->bottom, w->top, iw->c);
+            impact_axis(&y[i], &vy[i], &iw->my, i, k, iw->h, w->bottom, w->top, iw->c, &memo);
     }
 }
 

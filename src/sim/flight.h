@@ -38,10 +38,19 @@ double isk_fl_phi2_series(double h);
 void isk_fl_fit(double p0, double v0, double p1, double v1, double k, double h, double *U, double *a,
                 double *delta);
 
+/* isk_fl_basis(k, t) remembered for the last (k, t) asked: the particles
+ * of a block mostly share one mass, so the walls' reconstruction of their
+ * flights over the same step needs one expm1, not one each.  Zero it to
+ * start (k = t = 0 gives isk_fl_basis's own values at t = 0). */
+typedef struct isk_fl_memo {
+    double k, t, e, d1, d2;
+} isk_fl_memo;
+
 /* The flight of one axis that ends at (p1, v1) after h with acceleration
  * a, drag k and the integrator's velocity offset delta (v1 = u(h) +
- * delta): its start P and start velocity U. */
-void isk_fl_from_end(double p1, double v1, double a, double k, double h, double delta, double *P, double *U);
+ * delta): its start P and start velocity U.  `memo` may be NULL. */
+void isk_fl_from_end(double p1, double v1, double a, double k, double h, double delta, isk_fl_memo *memo,
+                     double *P, double *U);
 
 /* The time in (0, +inf) at which u(t) = 0 (the flight's turning point), or
  * -1 when it has none (U and a not of opposite signs). */
