@@ -6,6 +6,7 @@
 #   make test SANITIZE=thread  ThreadSanitizer (build-tsan/; CI runs the threaded tests)
 #   make test SANITIZE=clang   the same built by clang, with float-cast-overflow
 #                  and integer-divide-by-zero too (build-clang/)
+#   make test NATIVE=1     built with -march=native (build-native/): same bits
 #   make fuzz-smoke   every kept fuzz crasher and corpus file, then a short
 #                  fuzz run of each target (scene, png)
 #   make run        install missing packages, then run the main demo
@@ -49,6 +50,14 @@ else ifeq ($(SANITIZE),thread)
 BUILD   ?= build-tsan
 SANFLAGS := -fsanitize=thread -fno-omit-frame-pointer
 OPT     ?= -O1 -g
+else ifeq ($(NATIVE),1)
+# Opt-in: every loop compiled for this CPU's vector units.  The bits stay
+# those of the portable build (-ffp-contract=off: no FMA; no
+# reassociation), which `make test NATIVE=1` checks against the same
+# reference images.  Not portable to older CPUs: for local use.
+BUILD   ?= build-native
+SANFLAGS := -march=native
+OPT     ?= -O3 -g
 else
 BUILD   ?= build
 SANFLAGS :=
@@ -434,7 +443,7 @@ uninstall:
 	rm -f $(DESTDIR)$(BINDIR)/iskra
 
 clean:
-	rm -rf build build-san build-clang build-tsan out
+	rm -rf build build-san build-clang build-tsan build-native out
 
 help:
 	@sed -n '1,12p' Makefile

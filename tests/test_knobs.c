@@ -291,7 +291,7 @@ static double projectile(int use_float, double x0, double T, int steps_per_s)
     } else {
         isk_particles p;
         cr_assert_eq(isk_particles_init(&p, NP, 0), ISK_OK);
-        isk_scratch *s = aligned_alloc(64, sizeof *s);
+        isk_scratch *s = malloc(sizeof *s);
         cr_assert_not_null(s);
         for (size_t i = 0; i < NP; i++) {
             double vx, vy;
@@ -323,7 +323,7 @@ Test(knobs, float_loop_in_double_is_the_library_bit_for_bit)
     static double d[5][n];
     isk_particles p;
     cr_assert_eq(isk_particles_init(&p, n, 0), ISK_OK);
-    isk_scratch *s = aligned_alloc(64, sizeof *s);
+    isk_scratch *s = malloc(sizeof *s);
     cr_assert_not_null(s);
     for (size_t i = 0; i < n; i++) {
         double vx = 10 * cos(0.01 * (double)i), vy = 10 * sin(0.01 * (double)i), m = 0.5 + 0.01 * (double)i;

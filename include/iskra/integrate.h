@@ -109,37 +109,34 @@ typedef enum isk_integrator {
 
 #define ISK_SIM_BLOCK 256
 
-/* 64-byte alignment in both languages the header is read in. */
-#ifdef __cplusplus
-#define ISK_ALIGN64 alignas(64)
-#else
-#define ISK_ALIGN64 _Alignas(64)
-#endif
-
 /* Decaying speeds are flushed to 0 below this (see the top). */
 #define ISK_FLUSH_TINY 1e-200
 
 /* Per-block working arrays of every stage of the block runner: force
  * accumulators, potential sum, RK4 copies, the state before the move (for
  * bounces at the time of impact, iskra/impact.h) with the deflectors' kill
- * flags. */
+ * flags.  No alignment beyond double's is asked of it: it sits inside
+ * structs a program may malloc (isk_system), and a declared 64-byte
+ * alignment let the compiler use aligned vector loads that crashed on
+ * malloc's 16-byte-aligned storage (a -march=native build with AVX-512).
+ * The effect's threads get theirs 64-byte aligned all the same. */
 typedef struct isk_scratch {
-    ISK_ALIGN64 double fx[ISK_SIM_BLOCK];
-    ISK_ALIGN64 double fy[ISK_SIM_BLOCK];
-    ISK_ALIGN64 double px[ISK_SIM_BLOCK];
-    ISK_ALIGN64 double py[ISK_SIM_BLOCK];
-    ISK_ALIGN64 double x0[ISK_SIM_BLOCK];
-    ISK_ALIGN64 double y0[ISK_SIM_BLOCK];
-    ISK_ALIGN64 double vx0[ISK_SIM_BLOCK];
-    ISK_ALIGN64 double vy0[ISK_SIM_BLOCK];
-    ISK_ALIGN64 double sx[ISK_SIM_BLOCK];
-    ISK_ALIGN64 double sy[ISK_SIM_BLOCK];
-    ISK_ALIGN64 double svx[ISK_SIM_BLOCK];
-    ISK_ALIGN64 double svy[ISK_SIM_BLOCK];
-    ISK_ALIGN64 double x_old[ISK_SIM_BLOCK];
-    ISK_ALIGN64 double y_old[ISK_SIM_BLOCK];
-    ISK_ALIGN64 double vx_old[ISK_SIM_BLOCK];
-    ISK_ALIGN64 double vy_old[ISK_SIM_BLOCK];
+    double fx[ISK_SIM_BLOCK];
+    double fy[ISK_SIM_BLOCK];
+    double px[ISK_SIM_BLOCK];
+    double py[ISK_SIM_BLOCK];
+    double x0[ISK_SIM_BLOCK];
+    double y0[ISK_SIM_BLOCK];
+    double vx0[ISK_SIM_BLOCK];
+    double vy0[ISK_SIM_BLOCK];
+    double sx[ISK_SIM_BLOCK];
+    double sy[ISK_SIM_BLOCK];
+    double svx[ISK_SIM_BLOCK];
+    double svy[ISK_SIM_BLOCK];
+    double x_old[ISK_SIM_BLOCK];
+    double y_old[ISK_SIM_BLOCK];
+    double vx_old[ISK_SIM_BLOCK];
+    double vy_old[ISK_SIM_BLOCK];
     unsigned char killed[ISK_SIM_BLOCK];
     int nonfinite; /* set by a motion stage whose block came out with a NaN or an infinity; the
                       runner's owner removes and counts those particles and clears it */

@@ -20,9 +20,16 @@
  * a time, or the first thread to come would take them all. */
 enum { CHUNK = 64 };
 
+/* A worker's scratch on cache lines of its own (and 64-byte aligned, for
+ * the vector loops over it): the slots are a whole number of lines. */
+typedef union pool_scratch {
+    isk_scratch s;
+    unsigned char line[(sizeof(isk_scratch) + 63) / 64 * 64];
+} pool_scratch;
+
 struct isk_pool {
     int threads;
-    isk_scratch *scratch;      /* one per worker, 64-byte aligned */
+    pool_scratch *scratch;     /* one per worker, from a 64-byte boundary */
     pthread_t *tid;            /* threads - 1 of them */
     pthread_mutex_t lock;
     pthread_cond_t start, done;
@@ -156,7 +163,7 @@ void isk_pool_destroy(isk_pool *p)
 
 int isk_pool_threads(const isk_pool *p) { return p ? p->threads : 1; }
 
-isk_scratch *isk_pool_scratch(isk_pool *p, int worker) { return &p->scratch[worker]; }
+isk_scratch *isk_pool_scratch(isk_pool *p, int worker) { return &p->scratch[worker].s; }
 
 void isk_pool_for(isk_pool *p, size_t n, size_t min_items, isk_pool_fn fn, void *ctx)
 {
