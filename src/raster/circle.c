@@ -167,6 +167,7 @@ static void fill_circle_aa_pixels(isk_canvas *c, double cx, double cy, double r,
  * so every double, hence every coverage byte, is the one the per-pixel walk
  * computes.  Coverage is collected per row and blended by the span kernel. */
 #define ROW_CACHE 512    /* columns; wider discs take the per-pixel walk */
+#define ROW_SMALL 32     /* columns of the small discs' scratch (below) */
 #define PREFETCH_ROWS 16 /* rows requested ahead of the one being drawn */
 
 typedef struct edge_y {
@@ -221,8 +222,16 @@ static ISK__INLINE int pixel_cov(int k, double r2, double fy2, double ny2, int s
     return isk__coverage(s1 - s0);
 }
 
+/* The row walk's per-column scratch is cap columns of each array, carved
+ * from one block the caller sizes (see aa_rows_small). */
+typedef struct aa_scratch {
+    double *ca, *cb, *ha, *hb, *fx2, *nx2, *sprev;
+    int *srow;
+    uint8_t *cov; /* cap + 16 bytes: room for 16-byte stores past the row */
+} aa_scratch;
+
 static ISK__INLINE void fill_circle_aa_rows(isk_canvas *c, double cx, double cy, double r, isk_color color,
-                                            int i0g, int i1g, isk_blend mode)
+                                            int i0g, int i1g, const aa_scratch *sc, int cap, isk_blend mode)
 {
     double r2 = r * r;
     int j0 = isk__floor_clamp(cy - r, -1, c->height);
@@ -239,7 +248,7 @@ static ISK__INLINE void fill_circle_aa_rows(isk_canvas *c, double cx, double cy,
 #endif
     /* per column: clamped edges and their integrals */
     const int ncol = i1g - i0g + 1;
-    double ca[ROW_CACHE], cb[ROW_CACHE], ha[ROW_CACHE], hb[ROW_CACHE], fx2[ROW_CACHE], nx2[ROW_CACHE];
+    double *ca = sc->ca, *cb = sc->cb, *ha = sc->ha, *hb = sc->hb, *fx2 = sc->fx2, *nx2 = sc->nx2;
     for (int k = 0; k < ncol; k++) {
         double x0 = (i0g + k) - cx, x1 = x0 + 1.0;
         double ax0 = fabs(x0), ax1 = fabs(x1); /* fmin/fmax without NaN: no libm call */
@@ -252,11 +261,11 @@ static ISK__INLINE void fill_circle_aa_rows(isk_canvas *c, double cx, double cy,
         ha[k] = k > 0 && ca[k] == cb[k - 1] ? hb[k - 1] : h_integral(ca[k], r);
         hb[k] = h_integral(cb[k], r);
     }
-    uint8_t cov[ROW_CACHE + 16]; /* room for 16-byte stores past the row */
+    uint8_t *cov = sc->cov;
     /* a pixel's bottom strip is the top strip of the pixel below when the
      * two rows share their edge: kept per column with the row it came from */
-    double sprev[ROW_CACHE];
-    int srow[ROW_CACHE];
+    double *sprev = sc->sprev;
+    int *srow = sc->srow;
     for (int k = 0; k < ncol; k++)
         srow[k] = -2;
     edge_y e0, e1;
@@ -323,7 +332,7 @@ static ISK__INLINE void fill_circle_aa_rows(isk_canvas *c, double cx, double cy,
         if (i0 + n4 <= c->width) {
             cov[n] = cov[n + 1] = cov[n + 2] = 0; /* up to 3 bytes of padding (room is there) */
             n = n4;
-        } else if (i1 + 1 - n4 >= 0 && n4 <= ROW_CACHE) {
+        } else if (i1 + 1 - n4 >= 0 && n4 <= cap) {
             int pad = n4 - n; /* 1..3: the row moves right, zeros before it */
             memmove(cov + pad, cov, (size_t)n);
             cov[0] = 0;
@@ -335,6 +344,23 @@ static ISK__INLINE void fill_circle_aa_rows(isk_canvas *c, double cx, double cy,
         isk__span_cov(isk_canvas_at(c, start, j), cov, n, color, mode);
     }
 }
+
+/* One function per scratch size, each with the three modes inlined.  A
+ * small disc's scratch is a few hundred contiguous bytes: with the big
+ * one's arrays 4 KiB apart, their first elements (all a small disc uses)
+ * would share one L1 set, and its frame would span 36 KiB of stack. */
+#define AA_ROWS_FN(NAME, CAP)                                                                              \
+    static void NAME(isk_canvas *c, double cx, double cy, double r, isk_color color, int i0g, int i1g,     \
+                     isk_blend mode)                                                                       \
+    {                                                                                                      \
+        double d[7][CAP];                                                                                  \
+        int srow[CAP];                                                                                     \
+        uint8_t cov[CAP + 16];                                                                             \
+        const aa_scratch sc = {d[0], d[1], d[2], d[3], d[4], d[5], d[6], srow, cov};                       \
+        ISK__BLEND_DISPATCH(mode, fill_circle_aa_rows, c, cx, cy, r, color, i0g, i1g, &sc, CAP);           \
+    }
+AA_ROWS_FN(aa_rows_small, ROW_SMALL)
+AA_ROWS_FN(aa_rows_big, ROW_CACHE)
 
 void isk_fill_circle_aa(isk_canvas *c, double cx, double cy, double r, isk_color color, isk_blend mode)
 {
@@ -350,5 +376,8 @@ void isk_fill_circle_aa(isk_canvas *c, double cx, double cy, double r, isk_color
         fill_circle_aa_pixels(c, cx, cy, r, color, mode);
         return;
     }
-    ISK__BLEND_DISPATCH(mode, fill_circle_aa_rows, c, cx, cy, r, color, i0g, i1g);
+    if (i1g - i0g + 1 <= ROW_SMALL)
+        aa_rows_small(c, cx, cy, r, color, i0g, i1g, mode);
+    else
+        aa_rows_big(c, cx, cy, r, color, i0g, i1g, mode);
 }
