@@ -187,6 +187,9 @@ static inline int place(const isk_canvas *c, const isk_sprite *s, double cx, dou
  * the row loop were tried and cost more than they saved. */
 #define ROW_AHEAD 6
 
+/* Source-over sprites up to this size blend whole rows (see draw_rows). */
+#define OVER_WHOLE_MAX 16
+
 /* The sprite's rows, each one span of the mask blended by the row kernels
  * of raster/span_simd.h, the mode a constant (one loop per mode).  inc != 0:
  * the baked colour's premade additive increments (a saturating byte add of
@@ -221,7 +224,9 @@ static ISK__INLINE void draw_rows(const isk_canvas *c, const isk_sprite *s, cons
         }
 #endif
         if (src_kind == SRC_INC_OVER && rows_over) { /* one call: constants built once per sprite */
-            rows_over(drow, stride, src, 4u * (size_t)S, span, S, col);
+            /* small sprites whole rows, as the additive ones below */
+            rows_over(drow, stride, src, 4u * (size_t)S, (S & 3) == 0 && S <= OVER_WHOLE_MAX ? NULL : span, S,
+                      col);
             return;
         }
         /* Additive rows of a size that is a multiple of 4 are drawn whole
