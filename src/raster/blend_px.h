@@ -76,12 +76,11 @@ static void isk__px_over_general(uint8_t *d, isk_color s, uint32_t sa, uint32_t 
 static ISK__INLINE void isk__px_over(uint8_t *d, isk_color s)
 {
     uint32_t sa = s.a;
-    if (sa == 255u) {
-        d[0] = s.r; d[1] = s.g; d[2] = s.b; d[3] = 255;
+    if (sa - 1u >= 254u) { /* sa 0 or 255 (one test on the hot path) */
+        if (sa)
+            memcpy(d, &s, 4); /* r g b 255 */
         return;
     }
-    if (sa == 0u)
-        return;
     uint32_t da = d[3];
     uint32_t inv = 255u - sa;
     if (da == 255u) {

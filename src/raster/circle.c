@@ -167,6 +167,7 @@ static void fill_circle_aa_pixels(isk_canvas *c, double cx, double cy, double r,
  * so every double, hence every coverage byte, is the one the per-pixel walk
  * computes.  Coverage is collected per row and blended by the span kernel. */
 #define ROW_CACHE 512    /* columns; wider discs take the per-pixel walk */
+#define ROW_SMALL 32     /* columns of the small discs' scratch (below) */
 #define PREFETCH_ROWS 16 /* rows requested ahead of the one being drawn */
 
 typedef struct edge_y {
@@ -221,8 +222,76 @@ static ISK__INLINE int pixel_cov(int k, double r2, double fy2, double ny2, int s
     return isk__coverage(s1 - s0);
 }
 
+/* The row walk's per-column scratch is cap columns of each array, carved
+ * from one block the caller sizes (see aa_rows_small). */
+/* The row kernel, a parameter so the walk is compiled once per SIMD level. */
+typedef void (*span_cov_fn)(uint8_t *, const uint8_t *, int, isk_color, isk_blend);
+
+/* Coverage of the row's pixels in columns kb .. kb+n-1 (rounded up to a
+ * multiple of 4: the scratch has room), four a step: pixel_cov's
+ * arithmetic lane by lane, its two tests as selects.  Every pixel of the
+ * row is computed: the strips of full pixels are thrown away (the full
+ * ones are a run, so pixel_cov's walk from both ends gives the same
+ * bytes), and the bottom strip of the row above is computed again from e0
+ * instead of being kept (the same double: e0 is that row's e1). */
+typedef void (*row_cov_fn)(uint8_t *, int, int, const double *, const double *, const double *, const double *,
+                           const double *, const double *, double, double, double, const edge_y *, const edge_y *);
+
+#if ISK__SPAN_AVX2
+/* min_antideriv_cached on four lanes */
+static ISK__INLINE ISK__AVX2_FN __m256d mac4(__m256d x, __m256d hx, const edge_y *e)
+{
+    const __m256d cw = _mm256_set1_pd(e->cw), hw = _mm256_set1_pd(e->hw), w = _mm256_set1_pd(e->w);
+    __m256d t1 = _mm256_sub_pd(_mm256_add_pd(cw, hx), hw);
+    __m256d t2 = _mm256_add_pd(_mm256_add_pd(_mm256_set1_pd(-e->cw), hx), hw);
+    __m256d t3 = _mm256_mul_pd(_mm256_set1_pd(e->cl), x);
+    __m256d t = _mm256_blendv_pd(t3, t2, _mm256_cmp_pd(x, _mm256_set1_pd(-e->w), _CMP_LT_OQ));
+    return _mm256_blendv_pd(t, t1, _mm256_cmp_pd(x, w, _CMP_GT_OQ));
+}
+
+/* strip_cached on four lanes */
+static ISK__INLINE ISK__AVX2_FN __m256d strip4(__m256d a, __m256d ha, __m256d b, __m256d hb, const edge_y *e)
+{
+    __m256d v = _mm256_sub_pd(mac4(b, hb, e), mac4(a, ha, e));
+    return e->y < 0.0 ? _mm256_xor_pd(v, _mm256_set1_pd(-0.0)) : v;
+}
+
+static ISK__INLINE ISK__AVX2_FN void row_cov_avx2(uint8_t *cov, int kb, int n, const double *ca, const double *ha,
+                                                  const double *cb, const double *hb, const double *fx2,
+                                                  const double *nx2, double r2, double fy2, double ny2,
+                                                  const edge_y *e0, const edge_y *e1)
+{
+    const __m256d R2 = _mm256_set1_pd(r2), FY2 = _mm256_set1_pd(fy2), NY2 = _mm256_set1_pd(ny2);
+    const __m256d one = _mm256_set1_pd(1.0), k255 = _mm256_set1_pd(255.0), half = _mm256_set1_pd(0.5);
+    for (int i = 0; i < n; i += 4) {
+        const int k = kb + i;
+        __m256d a = _mm256_loadu_pd(ca + k), b = _mm256_loadu_pd(cb + k);
+        __m256d hav = _mm256_loadu_pd(ha + k), hbv = _mm256_loadu_pd(hb + k);
+        __m256d area = _mm256_sub_pd(strip4(a, hav, b, hbv, e1), strip4(a, hav, b, hbv, e0));
+        /* isk__coverage: floor(255 area + 0.5), below 1 -> 0, from 255 on -> 255 */
+        __m256d v = _mm256_add_pd(_mm256_mul_pd(k255, area), half);
+        v = _mm256_and_pd(v, _mm256_cmp_pd(v, one, _CMP_GE_OQ));
+        v = _mm256_blendv_pd(v, k255, _mm256_cmp_pd(v, k255, _CMP_GE_OQ));
+        /* outside the disc: 0; wholly inside: 255 (tested in that order last) */
+        v = _mm256_andnot_pd(_mm256_cmp_pd(_mm256_add_pd(_mm256_loadu_pd(nx2 + k), NY2), R2, _CMP_GE_OQ), v);
+        v = _mm256_blendv_pd(v, k255, _mm256_cmp_pd(_mm256_add_pd(_mm256_loadu_pd(fx2 + k), FY2), R2, _CMP_LE_OQ));
+        __m128i q = _mm256_cvttpd_epi32(v);
+        q = _mm_packus_epi16(_mm_packs_epi32(q, q), q);
+        int32_t w4 = _mm_cvtsi128_si32(q);
+        memcpy(cov + i, &w4, 4);
+    }
+}
+#endif
+
+typedef struct aa_scratch {
+    double *ca, *cb, *ha, *hb, *fx2, *nx2, *sprev; /* cap + 3 each */
+    int *srow;
+    uint8_t *cov; /* cap + 16 bytes: room for 16-byte stores past the row */
+} aa_scratch;
+
 static ISK__INLINE void fill_circle_aa_rows(isk_canvas *c, double cx, double cy, double r, isk_color color,
-                                            int i0g, int i1g, isk_blend mode)
+                                            int i0g, int i1g, const aa_scratch *sc, int cap, span_cov_fn span_cov,
+                                            row_cov_fn row_cov, isk_blend mode)
 {
     double r2 = r * r;
     int j0 = isk__floor_clamp(cy - r, -1, c->height);
@@ -239,7 +308,7 @@ static ISK__INLINE void fill_circle_aa_rows(isk_canvas *c, double cx, double cy,
 #endif
     /* per column: clamped edges and their integrals */
     const int ncol = i1g - i0g + 1;
-    double ca[ROW_CACHE], cb[ROW_CACHE], ha[ROW_CACHE], hb[ROW_CACHE], fx2[ROW_CACHE], nx2[ROW_CACHE];
+    double *ca = sc->ca, *cb = sc->cb, *ha = sc->ha, *hb = sc->hb, *fx2 = sc->fx2, *nx2 = sc->nx2;
     for (int k = 0; k < ncol; k++) {
         double x0 = (i0g + k) - cx, x1 = x0 + 1.0;
         double ax0 = fabs(x0), ax1 = fabs(x1); /* fmin/fmax without NaN: no libm call */
@@ -252,11 +321,14 @@ static ISK__INLINE void fill_circle_aa_rows(isk_canvas *c, double cx, double cy,
         ha[k] = k > 0 && ca[k] == cb[k - 1] ? hb[k - 1] : h_integral(ca[k], r);
         hb[k] = h_integral(cb[k], r);
     }
-    uint8_t cov[ROW_CACHE + 16]; /* room for 16-byte stores past the row */
+    if (row_cov) /* it reads up to 3 columns past the last: zeros */
+        for (int k = ncol; k < ncol + 3; k++)
+            ca[k] = cb[k] = ha[k] = hb[k] = fx2[k] = nx2[k] = 0.0;
+    uint8_t *cov = sc->cov;
     /* a pixel's bottom strip is the top strip of the pixel below when the
      * two rows share their edge: kept per column with the row it came from */
-    double sprev[ROW_CACHE];
-    int srow[ROW_CACHE];
+    double *sprev = sc->sprev;
+    int *srow = sc->srow;
     for (int k = 0; k < ncol; k++)
         srow[k] = -2;
     edge_y e0, e1;
@@ -295,6 +367,10 @@ static ISK__INLINE void fill_circle_aa_rows(isk_canvas *c, double cx, double cy,
          * one, and the run between is set at once. */
         const double fy2 = fy * fy, ny2 = ny * ny;
         int i = i0;
+        if (row_cov) {
+            row_cov(cov, i0 - i0g, i1 - i0 + 1, ca, ha, cb, hb, fx2, nx2, r2, fy2, ny2, &e0, &e1);
+            i = i1 + 1;
+        }
         for (; i <= i1; i++) {
             int v = pixel_cov(i - i0g, r2, fy2, ny2, shared, j, fx2, nx2, ca, ha, cb, hb, &e0, &e1, sprev, srow);
             if (v < 0)
@@ -323,7 +399,7 @@ static ISK__INLINE void fill_circle_aa_rows(isk_canvas *c, double cx, double cy,
         if (i0 + n4 <= c->width) {
             cov[n] = cov[n + 1] = cov[n + 2] = 0; /* up to 3 bytes of padding (room is there) */
             n = n4;
-        } else if (i1 + 1 - n4 >= 0 && n4 <= ROW_CACHE) {
+        } else if (i1 + 1 - n4 >= 0 && n4 <= cap) {
             int pad = n4 - n; /* 1..3: the row moves right, zeros before it */
             memmove(cov + pad, cov, (size_t)n);
             cov[0] = 0;
@@ -332,9 +408,32 @@ static ISK__INLINE void fill_circle_aa_rows(isk_canvas *c, double cx, double cy,
             start = i1 + 1 - n4;
             n = n4;
         }
-        isk__span_cov(isk_canvas_at(c, start, j), cov, n, color, mode);
+        span_cov(isk_canvas_at(c, start, j), cov, n, color, mode);
     }
 }
+
+/* One function per scratch size, each with the three modes inlined.  A
+ * small disc's scratch is a few hundred contiguous bytes: with the big
+ * one's arrays 4 KiB apart, their first elements (all a small disc uses)
+ * would share one L1 set, and its frame would span 36 KiB of stack. */
+#define AA_ROWS_FN(NAME, ATTR, CAP, SPAN, ROW)                                                             \
+    static ATTR void NAME(isk_canvas *c, double cx, double cy, double r, isk_color color, int i0g, int i1g, \
+                     isk_blend mode)                                                                       \
+    {                                                                                                      \
+        double d[7][CAP + 3];                                                                              \
+        int srow[CAP];                                                                                     \
+        uint8_t cov[CAP + 16];                                                                             \
+        const aa_scratch sc = {d[0], d[1], d[2], d[3], d[4], d[5], d[6], srow, cov};                       \
+        ISK__BLEND_DISPATCH(mode, fill_circle_aa_rows, c, cx, cy, r, color, i0g, i1g, &sc, CAP, SPAN, ROW); \
+    }
+AA_ROWS_FN(aa_rows_small, , ROW_SMALL, isk__span_cov, NULL)
+AA_ROWS_FN(aa_rows_big, , ROW_CACHE, isk__span_cov, NULL)
+#if ISK__SPAN_AVX2
+/* small discs where the CPU has AVX2: coverage 4 pixels a step
+ * (row_cov_avx2), blending 8 (the same bytes: integer blending; the
+ * doubles are the same IEEE operations lane by lane, no FMA) */
+AA_ROWS_FN(aa_rows_small_avx2, ISK__AVX2_FN, ROW_SMALL, isk__span_cov_avx2, row_cov_avx2)
+#endif
 
 void isk_fill_circle_aa(isk_canvas *c, double cx, double cy, double r, isk_color color, isk_blend mode)
 {
@@ -350,5 +449,15 @@ void isk_fill_circle_aa(isk_canvas *c, double cx, double cy, double r, isk_color
         fill_circle_aa_pixels(c, cx, cy, r, color, mode);
         return;
     }
-    ISK__BLEND_DISPATCH(mode, fill_circle_aa_rows, c, cx, cy, r, color, i0g, i1g);
+    if (i1g - i0g + 1 <= ROW_SMALL) {
+#if ISK__SPAN_AVX2
+        if (isk__have_avx2()) {
+            aa_rows_small_avx2(c, cx, cy, r, color, i0g, i1g, mode);
+            return;
+        }
+#endif
+        aa_rows_small(c, cx, cy, r, color, i0g, i1g, mode);
+        return;
+    }
+    aa_rows_big(c, cx, cy, r, color, i0g, i1g, mode);
 }

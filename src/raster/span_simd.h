@@ -537,13 +537,19 @@ static ISK__INLINE ISK__AVX2_FN void isk__span_over_inc_avx2(uint8_t *d, const u
 
 /* Every row of a baked sprite wholly on the canvas, over: row j is at
  * drow + j * stride, its increments at inc + j * inc_stride, its span
- * [span[2j], span[2j+1]). */
+ * [span[2j], span[2j+1]), or the whole row [0, S) when span is NULL (a'
+ * = 0 leaves a pixel as it is: div255(255 d) = d). */
 static ISK__INLINE ISK__AVX2_FN void isk__rows_over_inc_avx2(uint8_t *drow, size_t stride, const uint8_t *inc,
                                                              size_t inc_stride, const uint16_t *span, int S,
                                                              isk_color col)
 {
     isk__over_k k;
     isk__over_k_init(&k, col);
+    if (!span) {
+        for (int j = 0; j < S; j++, drow += stride, inc += inc_stride)
+            isk__over_inc_row_k(drow, inc, S, col, &k);
+        return;
+    }
     for (int j = 0; j < S; j++, drow += stride, inc += inc_stride) {
         int b = span[2 * j];
         isk__over_inc_row_k(drow + 4 * b, inc + 4 * b, span[2 * j + 1] - b, col, &k);
