@@ -5,6 +5,7 @@
 #include <string.h>
 
 #include "sim/kernels.h"
+#include "sim/motion_fused.h" /* isk_forces_potentials_on */
 
 const char *const isk_fidelity_names[ISK_FIDELITY_COUNT] = {"sound", "thesis"};
 const char *const isk_coulomb_law_names[ISK_COULOMB_LAW_COUNT] = {"code", "text"};
@@ -228,6 +229,15 @@ static void drag_stage(size_t n, double *restrict vx, double *restrict vy, const
     }
 }
 
+int isk_forces_potentials_on(const isk_forces *f)
+{
+    const size_t np = f->pick ? f->npick : f->npot;
+    int any = 0;
+    for (size_t k = 0; k < np; k++)
+        any |= f->pot[f->pick ? f->pick[k] : k].enabled;
+    return any;
+}
+
 void isk_forces_eval_step(isk_forces *f, size_t n, const double *x, const double *y, double *vx, double *vy,
                           const double *m, double *fx, double *fy, double *px, double *py, int with_drag, double h)
 {
@@ -239,12 +249,9 @@ void isk_forces_eval_step(isk_forces *f, size_t n, const double *x, const double
         isk_force_accel(n, m, f->ax, f->ay, fx, fy);
     if (with_drag && f->drag != 0.0)
         drag_stage(n, vx, vy, m, f->drag, h, fx, fy);
-    const size_t np = f->pick ? f->npick : f->npot;
-    int any = 0;
-    for (size_t k = 0; k < np; k++)
-        any |= f->pot[f->pick ? f->pick[k] : k].enabled;
-    if (!any)
+    if (!isk_forces_potentials_on(f))
         return;
+    const size_t np = f->pick ? f->npick : f->npot;
     memset(px, 0, n * sizeof *px);
     memset(py, 0, n * sizeof *py);
     for (size_t k = 0; k < np; k++)
