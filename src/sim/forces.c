@@ -108,27 +108,24 @@ void isk_force_drag(size_t n, const double *restrict vx, const double *restrict 
 }
 
 /* One specialised loop per (power kind, centre rule): both are constants
- * here, so the loop body has no scene-level branch.  The thesis-mode loops
- * vectorize (except the pow() variant, which calls libm).  The sound-mode
- * loops also reduce an "all forces representable" flag, which gcc 12 does
- * not vectorize on baseline x86-64; they are bound by sqrt and division
- * anyway, and measured as fast as the earlier vectorized form (3.63 against
- * 3.72 ns per particle, P = 2, 256 particles, docs/vectorization.md).  The
- * rare particles whose force saturates get 0 in the first pass and their
- * saturated force in a second one, which runs only when the first saw any. */
+ * here, so the loop body has no scene-level branch.  Every loop vectorizes
+ * but the pow() variants, which call libm: the sound-mode loops reduce
+ * their "all forces representable" flag as an integer or of the kernel's
+ * keep masks (isk_k_force_keep).  The rare particles whose force saturates
+ * get 0 in the first pass and their saturated force in a second one, which
+ * runs only when the first saw any. */
 static inline void coulomb_loop(size_t n, const double *restrict x, const double *restrict y,
                                 double *restrict px, double *restrict py, double cx, double cy,
                                 double s, double xm, double minv, double P, const int kind,
                                 const int sound)
 {
-    int all_ok = 1;
+    uint64_t all_ok = 1;
     for (size_t i = 0; i < n; i++) {
         double fx, fy;
-        int ok = isk_k_coulomb(cx, cy, x[i], y[i], s, xm, minv, P, kind, sound, &fx, &fy);
+        all_ok &= (uint64_t)isk_k_coulomb(cx, cy, x[i], y[i], s, xm, minv, P, kind, sound, &fx, &fy);
         double ax = px[i] + fx, ay = py[i] + fy;
         px[i] = ax;
         py[i] = ay;
-        all_ok &= ok;
     }
     if (!sound || all_ok)
         return;
