@@ -77,7 +77,7 @@ static void compare(isk_integrator method, const isk_forces *f, const state *in,
     isk_forces fg = *f;
     isk_integrate_block(method, &fg, &scratch, n, a.x, a.y, a.vx, a.vy, a.m, dt);
     const int want = isk_k_any_nonfinite2(n, a.x, a.y) | isk_k_any_nonfinite2(n, a.vx, a.vy);
-    for (int avx2 = 0; avx2 <= isk_motion_fused_has_avx2(); avx2++) {
+    for (int avx2 = 0; avx2 <= isk_sim_avx2(); avx2++) {
         b = *in;
         int got = -1;
         cr_assert_eq(isk_motion_fused_build(avx2, method, f, n, b.x, b.y, b.vx, b.vy, b.m, dt, &got), 1,

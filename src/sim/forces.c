@@ -4,8 +4,9 @@
 #include <math.h>
 #include <string.h>
 
+#include "raster/span_simd.h" /* ISK__SPAN_AVX2, ISK__AVX2_FN, isk__have_avx2 */
 #include "sim/kernels.h"
-#include "sim/motion_fused.h" /* isk_forces_potentials_on */
+#include "sim/motion_fused.h" /* isk_forces_potentials_on, isk_sim_avx2 */
 
 const char *const isk_fidelity_names[ISK_FIDELITY_COUNT] = {"sound", "thesis"};
 const char *const isk_coulomb_law_names[ISK_COULOMB_LAW_COUNT] = {"code", "text"};
@@ -139,6 +140,39 @@ static inline void coulomb_loop(size_t n, const double *restrict x, const double
     }
 }
 
+typedef void (*coulomb_fn)(size_t n, const double *restrict x, const double *restrict y, double *restrict px,
+                           double *restrict py, double cx, double cy, double s, double xm, double minv, double P);
+
+/* Each (power kind, centre rule) twice: baseline x86-64 (SSE2) and, chosen
+ * at run time, AVX2 (twice the lanes for the sqrt and the divisions).  The
+ * same IEEE operations in the same order either way (no FMA:
+ * -ffp-contract=off), so the same bits. */
+#define COULOMB_AS(name, attr, kind, sound)                                                                      \
+    static attr void name(size_t n, const double *restrict x, const double *restrict y, double *restrict px,    \
+                          double *restrict py, double cx, double cy, double s, double xm, double minv, double P)  \
+    {                                                                                                            \
+        coulomb_loop(n, x, y, px, py, cx, cy, s, xm, minv, P, kind, sound);                                     \
+    }
+#if ISK__SPAN_AVX2
+#define COULOMB(kind, sound)                                                                                     \
+    COULOMB_AS(coulomb_##kind##sound, , kind, sound) COULOMB_AS(coulomb_avx2_##kind##sound, ISK__AVX2_FN, kind, sound)
+#else
+#define COULOMB(kind, sound) COULOMB_AS(coulomb_##kind##sound, , kind, sound)
+#endif
+COULOMB(0, 0) COULOMB(0, 1) COULOMB(1, 0) COULOMB(1, 1) COULOMB(2, 0) COULOMB(2, 1)
+#undef COULOMB
+#undef COULOMB_AS
+
+/* [avx2][power kind * 2 + sound]. */
+#define ROW(p) {p##00, p##01, p##10, p##11, p##20, p##21}
+static const coulomb_fn coulomb_loops[1 + ISK__SPAN_AVX2][6] = {
+    ROW(coulomb_),
+#if ISK__SPAN_AVX2
+    ROW(coulomb_avx2_),
+#endif
+};
+#undef ROW
+
 /* First particle that trips the max-distance switch, or n. */
 static size_t first_within(size_t n, const double *restrict x, const double *restrict y, double cx,
                            double cy, double maxd)
@@ -168,16 +202,10 @@ void isk_force_potential(isk_potential *pot, size_t n, const double *x, const do
     if (s == 0.0 || cut == 0)
         return;
     double xm = pot->x_mult, minv = pot->min_dist, P = pot->P;
-    int sound = centre == ISK_FIDELITY_SOUND;
-    switch (pw_kind_of(P) * 2 + sound) {
-    case 5: coulomb_loop(cut, x, y, px, py, cx, cy, s, xm, minv, P, 2, 1); break;
-    case 4: coulomb_loop(cut, x, y, px, py, cx, cy, s, xm, minv, P, 2, 0); break;
-    case 3: coulomb_loop(cut, x, y, px, py, cx, cy, s, xm, minv, P, 1, 1); break;
-    case 2: coulomb_loop(cut, x, y, px, py, cx, cy, s, xm, minv, P, 1, 0); break;
-    case 1: coulomb_loop(cut, x, y, px, py, cx, cy, s, xm, minv, P, 0, 1); break;
-    default: coulomb_loop(cut, x, y, px, py, cx, cy, s, xm, minv, P, 0, 0); break;
-    }
+    const int sound = centre == ISK_FIDELITY_SOUND;
+    coulomb_loops[isk_sim_avx2()][pw_kind_of(P) * 2 + sound](cut, x, y, px, py, cx, cy, s, xm, minv, P);
 }
+
 
 static void add_into(size_t n, double *restrict fx, double *restrict fy, const double *restrict px,
                      const double *restrict py)
