@@ -22,6 +22,14 @@
  *   resting        the impact walls with every particle resting on the
  *                  floor (c = 0.5): every particle hits every step, the
  *                  worst case of the scalar path
+ *   drag alone     the motion with the drag as its only force
+ *   + Coulomb      the motion with one potential at the box's centre
+ *                  (P = 2, sound centre rule: the general path, forces
+ *                  then integrator)
+ *   fire           what a fire scene compiles to: the drift with the
+ *                  thesis's slowing, then the sway (ISK_PARTICLES_OSC);
+ *                  it moves 56 B more than the limit counts (the sway's
+ *                  four columns read, three written)
  * at 10^6 and 10^7 particles.  Rounds interleave the variants; each figure
  * is the fastest of ROUNDS_MAX (the least disturbed) with the median beside
  * it.  The machine is shared: read the ratios, not the nanoseconds.
