@@ -11,7 +11,8 @@
  * after another in short bursts, so at every page it starts them afresh
  * and the block's arithmetic waits for memory instead of overlapping it.
  * Called by the first stage of a list that reads the store's columns (the
- * remember stage, else the motion stage).  A hint only: no byte changes.
+ * remember stage, else the motion or drift stage), and for its own columns
+ * by a stage that reads more (the fire's sway).  A hint only: no byte changes.
  * Reads only, so a next block that another thread steps is shared, not
  * taken from it. */
 #ifndef ISKRA_SIM_BLOCK_PREFETCH_H
@@ -19,23 +20,31 @@
 
 #include "sim/stage.h"
 
-/* `columns`: 4 for x, y, vx, vy; 5 with m too. */
-static inline void isk_block_prefetch_next(const isk_block *b, int columns)
+/* The next block's part of one column `col` of the store (col = p->x,
+ * p->osc_amp, ...: any array of p->count doubles). */
+static inline void isk_block_prefetch_next_of(const isk_block *b, const double *col)
 {
 #if defined(__GNUC__)
     const isk_particles *p = b->p;
     const size_t next = b->first + b->n;
-    if (next >= p->count)
+    if (next >= p->count || !col)
         return;
     const size_t n = p->count - next < ISK_SIM_BLOCK ? p->count - next : ISK_SIM_BLOCK;
-    const double *const col[5] = {p->x + next, p->y + next, p->vx + next, p->vy + next, p->m + next};
-    for (int c = 0; c < columns && c < 5; c++)
-        for (size_t i = 0; i < n; i += 64 / sizeof(double))
-            __builtin_prefetch(col[c] + i, 0, 3);
+    for (size_t i = 0; i < n; i += 64 / sizeof(double))
+        __builtin_prefetch(col + next + i, 0, 3);
 #else
     (void)b;
-    (void)columns;
+    (void)col;
 #endif
+}
+
+/* `columns`: 4 for x, y, vx, vy; 5 with m too. */
+static inline void isk_block_prefetch_next(const isk_block *b, int columns)
+{
+    const isk_particles *p = b->p;
+    const double *const col[5] = {p->x, p->y, p->vx, p->vy, p->m};
+    for (int c = 0; c < columns && c < 5; c++)
+        isk_block_prefetch_next_of(b, col[c]);
 }
 
 #endif

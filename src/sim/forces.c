@@ -4,7 +4,9 @@
 #include <math.h>
 #include <string.h>
 
+#include "raster/span_simd.h" /* ISK__SPAN_AVX2, ISK__AVX2_FN, isk__have_avx2 */
 #include "sim/kernels.h"
+#include "sim/motion_fused.h" /* isk_forces_potentials_on, isk_sim_avx2 */
 
 const char *const isk_fidelity_names[ISK_FIDELITY_COUNT] = {"sound", "thesis"};
 const char *const isk_coulomb_law_names[ISK_COULOMB_LAW_COUNT] = {"code", "text"};
@@ -107,27 +109,24 @@ void isk_force_drag(size_t n, const double *restrict vx, const double *restrict 
 }
 
 /* One specialised loop per (power kind, centre rule): both are constants
- * here, so the loop body has no scene-level branch.  The thesis-mode loops
- * vectorize (except the pow() variant, which calls libm).  The sound-mode
- * loops also reduce an "all forces representable" flag, which gcc 12 does
- * not vectorize on baseline x86-64; they are bound by sqrt and division
- * anyway, and measured as fast as the earlier vectorized form (3.63 against
- * 3.72 ns per particle, P = 2, 256 particles, docs/vectorization.md).  The
- * rare particles whose force saturates get 0 in the first pass and their
- * saturated force in a second one, which runs only when the first saw any. */
+ * here, so the loop body has no scene-level branch.  Every loop vectorizes
+ * but the pow() variants, which call libm: the sound-mode loops reduce
+ * their "all forces representable" flag as an integer or of the kernel's
+ * keep masks (isk_k_force_keep).  The rare particles whose force saturates
+ * get 0 in the first pass and their saturated force in a second one, which
+ * runs only when the first saw any. */
 static inline void coulomb_loop(size_t n, const double *restrict x, const double *restrict y,
                                 double *restrict px, double *restrict py, double cx, double cy,
                                 double s, double xm, double minv, double P, const int kind,
                                 const int sound)
 {
-    int all_ok = 1;
+    uint64_t all_ok = 1;
     for (size_t i = 0; i < n; i++) {
         double fx, fy;
-        int ok = isk_k_coulomb(cx, cy, x[i], y[i], s, xm, minv, P, kind, sound, &fx, &fy);
+        all_ok &= (uint64_t)isk_k_coulomb(cx, cy, x[i], y[i], s, xm, minv, P, kind, sound, &fx, &fy);
         double ax = px[i] + fx, ay = py[i] + fy;
         px[i] = ax;
         py[i] = ay;
-        all_ok &= ok;
     }
     if (!sound || all_ok)
         return;
@@ -140,6 +139,39 @@ static inline void coulomb_loop(size_t n, const double *restrict x, const double
         py[i] = py[i] + fy;
     }
 }
+
+typedef void (*coulomb_fn)(size_t n, const double *restrict x, const double *restrict y, double *restrict px,
+                           double *restrict py, double cx, double cy, double s, double xm, double minv, double P);
+
+/* Each (power kind, centre rule) twice: baseline x86-64 (SSE2) and, chosen
+ * at run time, AVX2 (twice the lanes for the sqrt and the divisions).  The
+ * same IEEE operations in the same order either way (no FMA:
+ * -ffp-contract=off), so the same bits. */
+#define COULOMB_AS(name, attr, kind, sound)                                                                      \
+    static attr void name(size_t n, const double *restrict x, const double *restrict y, double *restrict px,    \
+                          double *restrict py, double cx, double cy, double s, double xm, double minv, double P)  \
+    {                                                                                                            \
+        coulomb_loop(n, x, y, px, py, cx, cy, s, xm, minv, P, kind, sound);                                     \
+    }
+#if ISK__SPAN_AVX2
+#define COULOMB(kind, sound)                                                                                     \
+    COULOMB_AS(coulomb_##kind##sound, , kind, sound) COULOMB_AS(coulomb_avx2_##kind##sound, ISK__AVX2_FN, kind, sound)
+#else
+#define COULOMB(kind, sound) COULOMB_AS(coulomb_##kind##sound, , kind, sound)
+#endif
+COULOMB(0, 0) COULOMB(0, 1) COULOMB(1, 0) COULOMB(1, 1) COULOMB(2, 0) COULOMB(2, 1)
+#undef COULOMB
+#undef COULOMB_AS
+
+/* [avx2][power kind * 2 + sound]. */
+#define ROW(p) {p##00, p##01, p##10, p##11, p##20, p##21}
+static const coulomb_fn coulomb_loops[1 + ISK__SPAN_AVX2][6] = {
+    ROW(coulomb_),
+#if ISK__SPAN_AVX2
+    ROW(coulomb_avx2_),
+#endif
+};
+#undef ROW
 
 /* First particle that trips the max-distance switch, or n. */
 static size_t first_within(size_t n, const double *restrict x, const double *restrict y, double cx,
@@ -170,16 +202,10 @@ void isk_force_potential(isk_potential *pot, size_t n, const double *x, const do
     if (s == 0.0 || cut == 0)
         return;
     double xm = pot->x_mult, minv = pot->min_dist, P = pot->P;
-    int sound = centre == ISK_FIDELITY_SOUND;
-    switch (pw_kind_of(P) * 2 + sound) {
-    case 5: coulomb_loop(cut, x, y, px, py, cx, cy, s, xm, minv, P, 2, 1); break;
-    case 4: coulomb_loop(cut, x, y, px, py, cx, cy, s, xm, minv, P, 2, 0); break;
-    case 3: coulomb_loop(cut, x, y, px, py, cx, cy, s, xm, minv, P, 1, 1); break;
-    case 2: coulomb_loop(cut, x, y, px, py, cx, cy, s, xm, minv, P, 1, 0); break;
-    case 1: coulomb_loop(cut, x, y, px, py, cx, cy, s, xm, minv, P, 0, 1); break;
-    default: coulomb_loop(cut, x, y, px, py, cx, cy, s, xm, minv, P, 0, 0); break;
-    }
+    const int sound = centre == ISK_FIDELITY_SOUND;
+    coulomb_loops[isk_sim_avx2()][pw_kind_of(P) * 2 + sound](cut, x, y, px, py, cx, cy, s, xm, minv, P);
 }
+
 
 static void add_into(size_t n, double *restrict fx, double *restrict fy, const double *restrict px,
                      const double *restrict py)
@@ -228,6 +254,15 @@ static void drag_stage(size_t n, double *restrict vx, double *restrict vy, const
     }
 }
 
+int isk_forces_potentials_on(const isk_forces *f)
+{
+    const size_t np = f->pick ? f->npick : f->npot;
+    int any = 0;
+    for (size_t k = 0; k < np; k++)
+        any |= f->pot[f->pick ? f->pick[k] : k].enabled;
+    return any;
+}
+
 void isk_forces_eval_step(isk_forces *f, size_t n, const double *x, const double *y, double *vx, double *vy,
                           const double *m, double *fx, double *fy, double *px, double *py, int with_drag, double h)
 {
@@ -239,12 +274,9 @@ void isk_forces_eval_step(isk_forces *f, size_t n, const double *x, const double
         isk_force_accel(n, m, f->ax, f->ay, fx, fy);
     if (with_drag && f->drag != 0.0)
         drag_stage(n, vx, vy, m, f->drag, h, fx, fy);
-    const size_t np = f->pick ? f->npick : f->npot;
-    int any = 0;
-    for (size_t k = 0; k < np; k++)
-        any |= f->pot[f->pick ? f->pick[k] : k].enabled;
-    if (!any)
+    if (!isk_forces_potentials_on(f))
         return;
+    const size_t np = f->pick ? f->npick : f->npot;
     memset(px, 0, n * sizeof *px);
     memset(py, 0, n * sizeof *py);
     for (size_t k = 0; k < np; k++)

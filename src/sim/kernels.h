@@ -55,6 +55,34 @@ static inline double isk_k_gravity_fy(double m, double g) { return m * (-g); }
 /* Otpor(b).F: (-b*vx, -b*vy). */
 static inline double isk_k_drag(double v, double b) { return (-b) * v; }
 
+/* All ones when islessequal(|gx|, ISK_FORCE_LIMIT) and the same for gy
+ * (false for a NaN), else 0; computed on the bit patterns: without its
+ * sign a double's pattern orders as its value and a NaN's lies above the
+ * infinity's, so (limit - |g|) has its top bit set exactly when the test
+ * fails.  Integer operations only: a compare-and-select here made gcc sink
+ * the force's multiplication behind a branch, which it cannot if-convert
+ * (a multiply may trap), and the sound-mode loops did not vectorize. */
+static inline uint64_t isk_k_force_keep(double gx, double gy)
+{
+    const double limit = ISK_FORCE_LIMIT;
+    uint64_t ux, uy, lim;
+    memcpy(&ux, &gx, sizeof ux);
+    memcpy(&uy, &gy, sizeof uy);
+    memcpy(&lim, &limit, sizeof lim);
+    const uint64_t mag = 0x7FFFFFFFFFFFFFFFull;
+    return (((lim - (ux & mag)) | (lim - (uy & mag))) >> 63) - 1u;
+}
+
+/* v where keep is all ones, +0.0 (all bits zero) where it is 0. */
+static inline double isk_k_keep(double v, uint64_t keep)
+{
+    uint64_t u;
+    memcpy(&u, &v, sizeof u);
+    u &= keep;
+    memcpy(&v, &u, sizeof v);
+    return v;
+}
+
 /* CoulombovPotencijal.F for one particle, the thesis's operations in order:
  *   n = r_pot - r;  n.x *= xm;  d = |r_pot - r| (Euclidean, unaffected by xm)
  *   d' = (min > d) ? min : d            (min <= 0 never triggers: "off";
@@ -84,11 +112,10 @@ static inline int isk_k_coulomb(double cx, double cy, double x, double y, double
         *fy = gy;
         return 1;
     }
-    /* islessequal is false for NaN, so 0*inf lands here too. */
-    int ok = islessequal(fabs(gx), ISK_FORCE_LIMIT) & islessequal(fabs(gy), ISK_FORCE_LIMIT);
-    *fx = ok ? gx : 0.0;
-    *fy = ok ? gy : 0.0;
-    return ok;
+    const uint64_t keep = isk_k_force_keep(gx, gy);
+    *fx = isk_k_keep(gx, keep);
+    *fy = isk_k_keep(gy, keep);
+    return (int)(keep & 1u);
 }
 
 /* The sound mode's force where isk_k_coulomb returned 0: the law's

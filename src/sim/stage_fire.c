@@ -2,6 +2,7 @@
  * oscillation (see stage.h). */
 #include <math.h>
 
+#include "sim/block_prefetch.h"
 #include "sim/kernels.h"
 #include "sim/stage.h"
 
@@ -34,6 +35,7 @@ const isk_stage_kind isk_stage_slow = {"slow", run_slow, describe_slow};
  * its sign is -a), slow clamped at 0. */
 static void run_drift_slow(const isk_stage *st, isk_block *b, double h)
 {
+    isk_block_prefetch_next(b, 4); /* the first stage to read the block */
     const double dvx = st->u.drift_slow.ax * h, dvy = st->u.drift_slow.ay * h;
     const double f = slow_factor(st->u.drift_slow.slowing, h);
     double *restrict x = b->x, *restrict y = b->y, *restrict vx = b->vx, *restrict vy = b->vy;
@@ -107,6 +109,9 @@ static void run_oscillate(const isk_stage *st, isk_block *b, double h)
     if (!(decay > 0.0))
         decay = 0.0;
     double *amp = p->osc_amp + o, *ph = p->osc_phase + o, *om = p->osc_omega + o, *off = p->osc_offset + o;
+    const double *const own[4] = {p->osc_amp, p->osc_phase, p->osc_omega, p->osc_offset};
+    for (int c = 0; c < 4; c++)
+        isk_block_prefetch_next_of(b, own[c]);
     const unsigned mode = (unsigned)st->u.osc.mode < ISK_SINLUT_MODE_COUNT ? (unsigned)st->u.osc.mode : ISK_SINLUT_LIBM;
     osc_loops[mode][st->u.osc.faithful != 0](b->n, b->x, b->vx, amp, ph, om, off, decay, st->u.osc.table, h);
 }

@@ -4,6 +4,7 @@
 
 #include "sim/block_prefetch.h"
 #include "sim/kernels.h"
+#include "sim/motion_fused.h"
 #include "sim/stage.h"
 
 /* v += a*h; r += h*v: semi-implicit Euler with a constant acceleration.
@@ -59,6 +60,12 @@ const isk_stage_kind isk_stage_drift = {"drift", run_drift, describe_drift};
 static void run_motion(const isk_stage *st, isk_block *b, double h)
 {
     isk_block_prefetch_next(b, 5);
+    int nonfinite;
+    if (isk_motion_fused(st->u.motion.method, st->u.motion.forces, b->n, b->x, b->y, b->vx, b->vy, b->m, h,
+                         &nonfinite)) {
+        b->s->nonfinite |= nonfinite; /* the common case in one pass: the same bits (motion_fused.h) */
+        return;
+    }
     isk_integrate_block(st->u.motion.method, st->u.motion.forces, b->s, b->n, b->x, b->y, b->vx, b->vy,
                         b->m, h);
     b->s->nonfinite |= isk_k_any_nonfinite2(b->n, b->x, b->y) | isk_k_any_nonfinite2(b->n, b->vx, b->vy);

@@ -1,0 +1,49 @@
+/* src/sim/motion_fused.h — forces + integrator in one pass over a block, for
+ * the common case (internal).
+ *
+ * The general path of a motion stage makes seven passes over a block
+ * (iskra/integrate.h's isk_integrate_block: clear fx and fy, gravity, drag
+ * with its flush and saturation, the integrator, then the runner's two
+ * non-finite checks).  When no potential acts and the integrator is
+ * semi-implicit or explicit Euler, the same operations in the same order
+ * per particle fit in one loop that reads x, y, vx, vy, m once and writes
+ * x, y, vx, vy once: 72 B a particle-step, the bandwidth limit's own count.
+ *
+ *     int nonfinite;
+ *     if (!isk_motion_fused(method, forces, n, x, y, vx, vy, m, dt, &nonfinite))
+ *         ... the general path (isk_integrate_block + the checks) ...
+ *
+ * The bits are the general path's, for every input (tests/test_motion_fused.c):
+ * the force sums start from +0.0 and add each force as the general path
+ * does (0.0 + m*(-g) is not m*(-g) for a zero mass of negative sign, and
+ * vx + c*(+0.0) turns a -0 velocity into +0), the drag flushes and
+ * saturates as forces.c's drag stage, and the non-finite check is the same
+ * bit test (isk_k_nonfinite_bits) of the same four new values. */
+#ifndef ISKRA_SIM_MOTION_FUSED_H
+#define ISKRA_SIM_MOTION_FUSED_H
+
+#include <stddef.h>
+
+#include "iskra/forces.h"
+#include "iskra/integrate.h"
+
+/* Steps the n particles and returns 1 when the fused pass covers this
+ * method and these forces (then *nonfinite is 1 when some new x, y, vx or
+ * vy is not finite, else 0); returns 0, touching nothing, otherwise. */
+int isk_motion_fused(isk_integrator method, const isk_forces *f, size_t n, double *x, double *y, double *vx,
+                     double *vy, const double *m, double dt, int *nonfinite);
+
+/* The same with the build chosen: avx2 = 0 the portable loops, 1 the AVX2
+ * ones where isk_sim_avx2() (else the portable ones too).
+ * isk_motion_fused takes the fastest; the tests compare both. */
+int isk_motion_fused_build(int avx2, isk_integrator method, const isk_forces *f, size_t n, double *x, double *y,
+                           double *vx, double *vy, const double *m, double dt, int *nonfinite);
+/* 1 when this build and this CPU run the AVX2 builds of the simulation's
+ * loops (these and forces.c's Coulomb loops). */
+int isk_sim_avx2(void);
+
+/* 1 when some potential of f (its pick, or all of them) is enabled: the
+ * test isk_forces_eval_step makes before it evaluates potentials (forces.c). */
+int isk_forces_potentials_on(const isk_forces *f);
+
+#endif
