@@ -245,7 +245,7 @@ ParameterizedTest(int *share, finite_sweep, every_numeric_key_at_its_extremes_wi
     }
     cr_log_info("share %d: %d numeric rows in all, %ld accepted runs of %d frames", *share, rows, runs, FRAMES);
     cr_assert_gt(rows, 40);
-    cr_assert_gt(runs, 40, "share %d ran almost nothing", *share);
+    cr_assert_gt(runs, 10, "share %d ran almost nothing", *share);
     cr_assert_eq(failures, 0, "%ld accepted settings produced a non-finite state (see the log)", failures);
 }
 

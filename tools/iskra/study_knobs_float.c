@@ -139,7 +139,7 @@ int study_knobs_float(const study_opts *o)
     state s = {np, {0}, NULL, {NULL}, {NULL}};
     int rc = 0;
     int ok = isk_particles_init(&s.p, np, 0) == ISK_OK;
-    s.scr = aligned_alloc(64, sizeof *s.scr); /* its arrays are 64-byte aligned */
+    s.scr = malloc(sizeof *s.scr);
     for (int k = 0; k < 5; k++) {
         s.d[k] = malloc(np * sizeof(double));
         s.f[k] = malloc(np * sizeof(float));

@@ -46,8 +46,7 @@ int study_longrun(const study_opts *o)
     pb.count = 1;
     pb.start_min = pb.start_max = 1.0; /* a = 1: one period per second */
     pb.T = (double)periods;
-    size_t size = (sizeof(isk_system) + 63) / 64 * 64;
-    isk_system *s = aligned_alloc(64, size);
+    isk_system *s = malloc(sizeof *s);
     if (!s) {
         fprintf(stderr, "iskra bench: longrun: out of memory\n");
         return 1;
