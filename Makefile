@@ -18,9 +18,10 @@
 # except src/io/sdl_*.c (libiskra-sdl); every examples/*.c, tests/test_*.c and
 # bench/*.c is its own program.  Adding a file needs no Makefile edit.
 
-# Every build uses all the cores unless the command line sets -j itself:
-# built one file at a time, CI spent most of its time compiling.
-ifeq ($(filter -j%,$(MAKEFLAGS)),)
+# Every build uses all the cores (a -j on the command line still wins; the
+# sub-makes share the top make's jobs): built one file at a time, CI spent
+# most of its time compiling.
+ifeq ($(MAKELEVEL),0)
 MAKEFLAGS += -j$(shell nproc 2>/dev/null || echo 1)
 endif
 
