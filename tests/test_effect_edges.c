@@ -106,3 +106,24 @@ Test(effect_edges, without_reflect_walls_the_far_edge_is_outside)
             isk_canvas_free(&c);
         }
 }
+
+/* A disc or a sprite whose centre lies off the canvas still shows the part
+ * that reaches onto it (the band's early drop of far particles is the
+ * sprites' own and counts their reach). */
+Test(effect_edges, a_shape_centred_off_the_canvas_shows_its_part_on_it)
+{
+    const char *const shapes[] = {"disc\nsize = 4", "sprite\nsize = 4"};
+    const struct {
+        const char *name;
+        double y;
+        int row;
+    } off[] = {{"above the top", H + 1.0, 0}, {"below the bottom", -1.0, H - 1}};
+    for (size_t s = 0; s < sizeof shapes / sizeof *shapes; s++)
+        for (size_t k = 0; k < sizeof off / sizeof *off; k++) {
+            isk_canvas c;
+            render(&c, shapes[s], 0, "", 10, off[k].y);
+            cr_expect(lit(&c, 10, off[k].row) > 0, "%.4s centred one pixel %s: row %d is dark", shapes[s],
+                      off[k].name, off[k].row);
+            isk_canvas_free(&c);
+        }
+}

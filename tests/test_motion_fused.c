@@ -14,6 +14,7 @@
 #include <stdio.h>
 #include <string.h>
 
+#include "raster/span_simd.h" /* isk__have_avx2 */
 #include "iskra/integrate.h"
 #include "sim/kernels.h"
 #include "sim/motion_fused.h"
@@ -77,7 +78,7 @@ static void compare(isk_integrator method, const isk_forces *f, const state *in,
     isk_forces fg = *f;
     isk_integrate_block(method, &fg, &scratch, n, a.x, a.y, a.vx, a.vy, a.m, dt);
     const int want = isk_k_any_nonfinite2(n, a.x, a.y) | isk_k_any_nonfinite2(n, a.vx, a.vy);
-    for (int avx2 = 0; avx2 <= isk_sim_avx2(); avx2++) {
+    for (int avx2 = 0; avx2 <= isk__have_avx2(); avx2++) {
         b = *in;
         int got = -1;
         cr_assert_eq(isk_motion_fused_build(avx2, method, f, n, b.x, b.y, b.vx, b.vy, b.m, dt, &got), 1,

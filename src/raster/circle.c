@@ -231,8 +231,6 @@ static ISK__INLINE int pixel_cov(int k, double r2, double fy2, double ny2, int s
     return isk__coverage(s1 - s0);
 }
 
-/* The row walk's per-column scratch is cap columns of each array, carved
- * from one block the caller sizes (see aa_rows_small). */
 /* The row kernel, a parameter so the walk is compiled once per SIMD level. */
 typedef void (*span_cov_fn)(uint8_t *, const uint8_t *, int, isk_color, isk_blend);
 
@@ -292,6 +290,8 @@ static ISK__INLINE ISK__AVX2_FN void row_cov_avx2(uint8_t *cov, int kb, int n, c
 }
 #endif
 
+/* The row walk's per-column scratch: cap columns of each array, carved
+ * from one block the caller sizes (see AA_ROWS_FN). */
 typedef struct aa_scratch {
     double *ca, *cb, *ha, *hb, *fx2, *nx2, *sprev; /* cap + 3 each */
     int *srow;

@@ -128,9 +128,10 @@ static ISK__INLINE int isk__s4_over_opaque(uint8_t *d, __m128i A, __m128i C)
 #include <immintrin.h>
 #define ISK__AVX2_FN __attribute__((target("avx2")))
 
+/* 1 or 0 (a table index), whatever __builtin_cpu_supports returns. */
 static inline int isk__have_avx2(void)
 {
-    return __builtin_cpu_supports("avx2");
+    return __builtin_cpu_supports("avx2") != 0;
 }
 
 static ISK__INLINE ISK__AVX2_FN __m256i isk__a_keep(__m256i v)
@@ -183,6 +184,8 @@ static ISK__INLINE ISK__AVX2_FN int isk__a8_over_opaque(uint8_t *d, __m256i lo, 
 }
 #else
 #define ISK__SPAN_AVX2 0
+/* No AVX2 build: callers that index tables by it need no #if. */
+static inline int isk__have_avx2(void) { return 0; }
 #endif
 
 #if ISK__SPAN_VECTOR

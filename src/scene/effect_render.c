@@ -244,15 +244,9 @@ static isk_status draw_discs(isk_effect *e, isk_canvas *c, fx_group *g, const fx
     const isk_particles *p = &g->store;
     const int vary = fx_varies(g);
     const double scale = fabs(e->view.sx);
-    /* a band's thread reads every particle: those whose sprite cannot reach
-     * its rows are passed over before their style is worked out (NaN
-     * compares false and goes on to the sprite's own test) */
-    const double lo = b->r0 - b->sprite_reach, hi = b->r1 + b->sprite_reach;
     for (size_t i = 0; i < p->count; i++) {
         double X, Y, mult;
         isk_view_to_screen(&e->view, p->x[i], p->y[i], &X, &Y);
-        if (Y < lo || Y > hi)
-            continue;
         isk_color col = style(g, p, i, vary, &mult);
         const double size = p->size ? p->size[i] : g->def->size; /* size_range: its own */
         isk_fill_circle_aa(c, X, Y, 0.5 * size * mult * scale, col, g->def->blend);

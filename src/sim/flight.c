@@ -56,14 +56,14 @@ void isk_fl_from_end(double p1, double v1, double a, double k, double h, double 
                      double *P, double *U)
 {
     double e, d1, d2;
-    if (memo && memo->k == k && memo->t == h) {
+    if (memo && memo->set && memo->k == k && memo->t == h) {
         e = memo->e;
         d1 = memo->d1;
         d2 = memo->d2;
     } else {
         isk_fl_basis(k, h, &e, &d1, &d2);
         if (memo)
-            *memo = (isk_fl_memo){k, h, e, d1, d2};
+            *memo = (isk_fl_memo){k, h, e, d1, d2, 1};
     }
     /* u(h) = U e + a D1 = v1 - delta;  p(h) = P + U D1 + a D2 = p1 */
     double u0 = ((v1 - delta) - a * d1) / e;

@@ -41,9 +41,10 @@ void isk_fl_fit(double p0, double v0, double p1, double v1, double k, double h, 
 /* isk_fl_basis(k, t) remembered for the last (k, t) asked: the particles
  * of a block mostly share one mass, so the walls' reconstruction of their
  * flights over the same step needs one expm1, not one each.  Zero it to
- * start (k = t = 0 gives isk_fl_basis's own values at t = 0). */
+ * start (empty: `set` 0). */
 typedef struct isk_fl_memo {
     double k, t, e, d1, d2;
+    int set;
 } isk_fl_memo;
 
 /* The flight of one axis that ends at (p1, v1) after h with acceleration

@@ -6,7 +6,7 @@
 
 #include "raster/span_simd.h" /* ISK__SPAN_AVX2, ISK__AVX2_FN, isk__have_avx2 */
 #include "sim/kernels.h"
-#include "sim/motion_fused.h" /* isk_forces_potentials_on, isk_sim_avx2 */
+#include "sim/motion_fused.h" /* isk_forces_potentials_on */
 
 const char *const isk_fidelity_names[ISK_FIDELITY_COUNT] = {"sound", "thesis"};
 const char *const isk_coulomb_law_names[ISK_COULOMB_LAW_COUNT] = {"code", "text"};
@@ -203,9 +203,8 @@ void isk_force_potential(isk_potential *pot, size_t n, const double *x, const do
         return;
     double xm = pot->x_mult, minv = pot->min_dist, P = pot->P;
     const int sound = centre == ISK_FIDELITY_SOUND;
-    coulomb_loops[isk_sim_avx2()][pw_kind_of(P) * 2 + sound](cut, x, y, px, py, cx, cy, s, xm, minv, P);
+    coulomb_loops[isk__have_avx2()][pw_kind_of(P) * 2 + sound](cut, x, y, px, py, cx, cy, s, xm, minv, P);
 }
-
 
 static void add_into(size_t n, double *restrict fx, double *restrict fy, const double *restrict px,
                      const double *restrict py)

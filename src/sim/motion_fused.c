@@ -91,15 +91,6 @@ static const fused_fn fused_table[1][16] = {ROW(fused_)};
 #endif
 #undef ROW
 
-int isk_sim_avx2(void)
-{
-#if ISK__SPAN_AVX2
-    return isk__have_avx2() != 0; /* __builtin_cpu_supports: some nonzero value */
-#else
-    return 0;
-#endif
-}
-
 int isk_motion_fused_build(int avx2, isk_integrator method, const isk_forces *f, size_t n, double *x, double *y,
                            double *vx, double *vy, const double *m, double dt, int *nonfinite)
 {
@@ -111,7 +102,7 @@ int isk_motion_fused_build(int avx2, isk_integrator method, const isk_forces *f,
     const double h = fabs(dt);
     if (D && !(h > 0.0))
         return 0; /* the unsaturated drag of a zero step: left to the general path */
-    const fused_fn loop = fused_table[avx2 && isk_sim_avx2()][G * 8 + A * 4 + D * 2 + E];
+    const fused_fn loop = fused_table[avx2 && isk__have_avx2()][G * 8 + A * 4 + D * 2 + E];
     const uint64_t acc = loop(n, x, y, vx, vy, m, f->gravity, f->ax, f->ay, f->drag, D ? 1.0 / h : 0.0, dt);
     *nonfinite = (int)(acc >> 63);
     return 1;

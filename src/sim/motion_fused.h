@@ -34,14 +34,10 @@ int isk_motion_fused(isk_integrator method, const isk_forces *f, size_t n, doubl
                      double *vy, const double *m, double dt, int *nonfinite);
 
 /* The same with the build chosen: avx2 = 0 the portable loops, 1 the AVX2
- * ones where isk_sim_avx2() (else the portable ones too).
+ * ones when isk__have_avx2() (raster/span_simd.h), else the portable ones too.
  * isk_motion_fused takes the fastest; the tests compare both. */
 int isk_motion_fused_build(int avx2, isk_integrator method, const isk_forces *f, size_t n, double *x, double *y,
                            double *vx, double *vy, const double *m, double dt, int *nonfinite);
-/* 1 when this build and this CPU run the AVX2 builds of the simulation's
- * loops (these and forces.c's Coulomb loops). */
-int isk_sim_avx2(void);
-
 /* 1 when some potential of f (its pick, or all of them) is enabled: the
  * test isk_forces_eval_step makes before it evaluates potentials (forces.c). */
 int isk_forces_potentials_on(const isk_forces *f);
