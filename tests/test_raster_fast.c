@@ -105,6 +105,25 @@ Test(raster_fast, swar_saturating_add_every_pair)
         }
 }
 
+/* Source-over onto an opaque pixel takes one path for every source alpha
+ * (0 and 255 included, untested there): every alpha, colour and
+ * destination channel value. */
+Test(raster_fast, over_opaque_destination_every_alpha)
+{
+    for (uint32_t sa = 0; sa < 256u; sa++)
+        for (uint32_t c = 0; c < 256u; c++)
+            for (uint32_t v = 0; v < 256u; v++) {
+                const isk_color s = {(uint8_t)c, (uint8_t)(255u - c), (uint8_t)(c ^ 0x5Au), (uint8_t)sa};
+                uint8_t a[4] = {(uint8_t)v, (uint8_t)(v ^ 0xA5u), (uint8_t)(255u - v), 255u}, b[4];
+                memcpy(b, a, 4);
+                isk__px(a, s, ISK_BLEND_OVER);
+                ref_blend_pixel(b, s, ISK_BLEND_OVER);
+                if (memcmp(a, b, 4) != 0)
+                    cr_assert_fail("sa %u colour %u destination %u: %u %u %u %u, reference %u %u %u %u", sa, c, v, a[0],
+                             a[1], a[2], a[3], b[0], b[1], b[2], b[3]);
+            }
+}
+
 /* Every colour's table against the per-pixel rule, for every coverage. */
 Test(raster_fast, coverage_table_equals_blend_pixel_cov)
 {

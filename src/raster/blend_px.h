@@ -76,15 +76,12 @@ static void isk__px_over_general(uint8_t *d, isk_color s, uint32_t sa, uint32_t 
 static ISK__INLINE void isk__px_over(uint8_t *d, isk_color s)
 {
     uint32_t sa = s.a;
-    if (sa - 1u >= 254u) { /* sa 0 or 255 (one test on the hot path) */
-        if (sa)
-            memcpy(d, &s, 4); /* r g b 255 */
-        return;
-    }
     uint32_t da = d[3];
     uint32_t inv = 255u - sa;
     if (da == 255u) {
-        /* Opaque destination: the common case, no division by A. */
+        /* Opaque destination: the common case, no division by A, and no
+         * test of the source alpha either: the rule gives sa 0 and 255
+         * their bytes (div255(255 d) = d, div255(255 c) = c). */
 #if defined(__SSE2__)
         /* the three channels (and alpha: div255(255 sa + 255 inv) = 255) in
          * one set of 16-bit lanes; div255(x) = high half of (x + 128) * 257 */
@@ -105,6 +102,11 @@ static ISK__INLINE void isk__px_over(uint8_t *d, isk_color s)
         d[1] = (uint8_t)isk_div255(s.g * sa + d[1] * inv);
         d[2] = (uint8_t)isk_div255(s.b * sa + d[2] * inv);
 #endif
+        return;
+    }
+    if (sa - 1u >= 254u) { /* sa 0 or 255 (one test) */
+        if (sa)
+            memcpy(d, &s, 4); /* r g b 255 */
         return;
     }
     isk__px_over_general(d, s, sa, da, inv);
