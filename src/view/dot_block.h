@@ -1,0 +1,321 @@
+/* src/view/dot_block.h — the stages of a batched dot draw over a block of
+ * points, shared by the direct batch (world_batch.c: a store drawn onto a
+ * band of rows) and the placed draw (world_place.c: a store turned into
+ * records first, then blended band by band) (internal).
+ *
+ *   select   which points of the block can touch rows (lo, hi): their
+ *            screen Y, in block order (SSE2 or AVX2);
+ *   weights  for each selected point whose 2x2 block lies wholly on the
+ *            canvas, its top-left pixel and its four exact-area weights
+ *            (raster/dot_kernel.h's rule, 4 points a step with AVX2; the
+ *            browser rule's integer weights);
+ *   px2      two pixels of a row blended from a coverage table.
+ *
+ * Every stage does the single-dot kernels' IEEE operations in their order,
+ * so anything built from them draws the bytes of the loop of single calls.
+ * Functions are static inline: each includer keeps the ones it uses. */
+#ifndef ISKRA_VIEW_DOT_BLOCK_H
+#define ISKRA_VIEW_DOT_BLOCK_H
+
+#include <stdint.h>
+#include <string.h>
+
+#include "iskra/canvas.h"
+#include "raster/blend_px.h"
+#include "raster/dot_kernel.h"
+#include "raster/span_simd.h"
+#include "view/world_batch.h" /* isk__keep_on_canvas */
+
+/* Points per block.  On a band of a threaded draw only part of a block is
+ * kept, and with blocks of 32 the few kept points left the weights and the
+ * prefetches little to overlap: a half band (every other point kept) cost
+ * 0.65 of the whole canvas, 0.60 with 64, where the same points kept in one
+ * run cost 0.51 (the whole canvas itself the same; 96 and 128 made it
+ * slower). */
+#define DOT_BLOCK 64
+
+typedef struct dot_block {
+    double x[DOT_BLOCK], y[DOT_BLOCK];
+    int32_t ix[DOT_BLOCK], iy[DOT_BLOCK];
+    uint8_t w[DOT_BLOCK][4];
+    uint8_t fast[DOT_BLOCK];
+} dot_block;
+
+/* Blocks ahead whose positions are prefetched: the store is read in
+ * order, but the blends between its reads hold the processor's few line
+ * fills, and a 10^6-point frame drew about 10 % faster with the positions
+ * asked for early (any distance from 2 to 32 blocks did the same). */
+#define DOT_AHEAD 4
+
+/* Prefetches the x and y of the block DOT_AHEAD blocks after the one at
+ * point s, when it is before `end`. */
+static ISK__INLINE void dot_block_prefetch_ahead(const double *x, const double *y, size_t s, size_t end)
+{
+#if defined(__GNUC__)
+    const size_t t = s + DOT_AHEAD * DOT_BLOCK;
+    if (t + DOT_BLOCK <= end)
+        for (int q = 0; q < DOT_BLOCK; q += 8) { /* 8 doubles a line */
+            __builtin_prefetch(x + t + q, 0);
+            __builtin_prefetch(y + t + q, 0);
+        }
+#else
+    (void)x, (void)y, (void)s, (void)end;
+#endif
+}
+
+/* fast[k]: the point's whole 2x2 block lies on the canvas columns and on
+ * the rows [Y0, H1 + 1] (Y0 >= 0). */
+typedef void (*weights_fn)(dot_block *b, int m, double W1, double Y0, double H1);
+
+static ISK__INLINE void weight_one(dot_block *b, int k, double W1, double Y0, double H1)
+{
+    double X = b->x[k], Y = b->y[k];
+    /* the whole 2x2 block on the canvas: floor(X) in [0, width-2] */
+    b->fast[k] = (X >= 0.0) & (X < W1) & (Y >= Y0) & (Y < H1);
+    if (!b->fast[k])
+        return;
+    int ix = (int)X, iy = (int)Y; /* >= 0: truncation is floor */
+    uint32_t w[4];
+    isk__dot_weights_frac(X - ix, Y - iy, w);
+    b->ix[k] = ix;
+    b->iy[k] = iy;
+    for (int q = 0; q < 4; q++)
+        b->w[k][q] = (uint8_t)w[q];
+}
+
+static inline void weights_scalar(dot_block *b, int m, double W1, double Y0, double H1)
+{
+    for (int k = 0; k < m; k++)
+        weight_one(b, k, W1, Y0, H1);
+}
+
+#if ISK__SPAN_AVX2
+/* weights_scalar for 4 points a step.  Each lane does the scalar code's
+ * operations: products left to right, floors by truncation of values
+ * >= 0, the rank selection as 0/1 doubles (small integers, exact). */
+static inline ISK__AVX2_FN void weights_avx2(dot_block *b, int m, double W1, double Y0, double H1)
+{
+    const __m256d zero = _mm256_setzero_pd(), one = _mm256_set1_pd(1.0), k255 = _mm256_set1_pd(255.0);
+    const __m256d vW1 = _mm256_set1_pd(W1), vY0 = _mm256_set1_pd(Y0), vH1 = _mm256_set1_pd(H1);
+    int k = 0;
+    for (; k + 4 <= m; k += 4) {
+        __m256d X = _mm256_loadu_pd(b->x + k), Y = _mm256_loadu_pd(b->y + k);
+        __m256d ok = _mm256_and_pd(_mm256_and_pd(_mm256_cmp_pd(X, zero, _CMP_GE_OQ), _mm256_cmp_pd(X, vW1, _CMP_LT_OQ)),
+                                   _mm256_and_pd(_mm256_cmp_pd(Y, vY0, _CMP_GE_OQ), _mm256_cmp_pd(Y, vH1, _CMP_LT_OQ)));
+        int okbits = _mm256_movemask_pd(ok);
+        for (int q = 0; q < 4; q++)
+            b->fast[k + q] = (uint8_t)((okbits >> q) & 1);
+        if (!okbits)
+            continue;
+        X = _mm256_and_pd(X, ok); /* other lanes: 0, harmless */
+        Y = _mm256_and_pd(Y, ok);
+        __m128i ix = _mm256_cvttpd_epi32(X), iy = _mm256_cvttpd_epi32(Y);
+        _mm_storeu_si128((__m128i *)(void *)(b->ix + k), ix);
+        _mm_storeu_si128((__m128i *)(void *)(b->iy + k), iy);
+        __m256d fx = _mm256_sub_pd(X, _mm256_cvtepi32_pd(ix)), fy = _mm256_sub_pd(Y, _mm256_cvtepi32_pd(iy));
+        __m256d gx = _mm256_sub_pd(one, fx), gy = _mm256_sub_pd(one, fy);
+        __m256d a0 = _mm256_mul_pd(_mm256_mul_pd(k255, gx), gy), a1 = _mm256_mul_pd(_mm256_mul_pd(k255, fx), gy);
+        __m256d a2 = _mm256_mul_pd(_mm256_mul_pd(k255, gx), fy), a3 = _mm256_mul_pd(_mm256_mul_pd(k255, fx), fy);
+        __m128i i0 = _mm256_cvttpd_epi32(a0), i1 = _mm256_cvttpd_epi32(a1);
+        __m128i i2 = _mm256_cvttpd_epi32(a2), i3 = _mm256_cvttpd_epi32(a3);
+        __m256d d0 = _mm256_cvtepi32_pd(i0), d1 = _mm256_cvtepi32_pd(i1);
+        __m256d d2 = _mm256_cvtepi32_pd(i2), d3 = _mm256_cvtepi32_pd(i3);
+        __m256d f0 = _mm256_sub_pd(a0, d0), f1 = _mm256_sub_pd(a1, d1);
+        __m256d f2 = _mm256_sub_pd(a2, d2), f3 = _mm256_sub_pd(a3, d3);
+        __m256d left = _mm256_sub_pd(k255, _mm256_add_pd(_mm256_add_pd(d0, d1), _mm256_add_pd(d2, d3)));
+#define GE01(p, q) _mm256_and_pd(_mm256_cmp_pd(p, q, _CMP_GE_OQ), one)
+        __m256d c01 = GE01(f0, f1), c02 = GE01(f0, f2), c03 = GE01(f0, f3);
+        __m256d c12 = GE01(f1, f2), c13 = GE01(f1, f3), c23 = GE01(f2, f3);
+#undef GE01
+        __m256d r0 = _mm256_sub_pd(_mm256_sub_pd(_mm256_sub_pd(_mm256_set1_pd(3.0), c01), c02), c03);
+        __m256d r1 = _mm256_sub_pd(_mm256_sub_pd(_mm256_add_pd(_mm256_set1_pd(2.0), c01), c12), c13);
+        __m256d r2 = _mm256_sub_pd(_mm256_add_pd(_mm256_add_pd(one, c02), c12), c23);
+        __m256d r3 = _mm256_add_pd(_mm256_add_pd(c03, c13), c23);
+#define BUMP(d, r) _mm256_cvttpd_epi32(_mm256_add_pd(d, _mm256_and_pd(_mm256_cmp_pd(r, left, _CMP_LT_OQ), one)))
+        __m128i w0 = BUMP(d0, r0), w1 = BUMP(d1, r1), w2 = BUMP(d2, r2), w3 = BUMP(d3, r3);
+#undef BUMP
+        /* bytes w0 w0 w0 w0 w1 ... w3 (4 points each), then per point */
+        __m128i bytes = _mm_packus_epi16(_mm_packs_epi32(w0, w1), _mm_packs_epi32(w2, w3));
+        bytes = _mm_shuffle_epi8(bytes, _mm_setr_epi8(0, 4, 8, 12, 1, 5, 9, 13, 2, 6, 10, 14, 3, 7, 11, 15));
+        _mm_storeu_si128((__m128i *)(void *)b->w[k], bytes);
+    }
+    for (; k < m; k++)
+        weight_one(b, k, W1, Y0, H1);
+}
+#endif
+
+/* The browser rule's weights (integer arithmetic, already cheap). */
+static inline void weights_browser(dot_block *b, int m, double W1, double Y0, double H1)
+{
+    for (int k = 0; k < m; k++) {
+        double X = b->x[k], Y = b->y[k];
+        int ix, iy;
+        uint32_t w[4];
+        /* isk__dot_browser's range test, then its weights; fast when the
+         * 2x2 block is wholly on the canvas */
+        b->fast[k] = X > -2.0 && X < W1 + 2.0 && Y > Y0 - 2.0 && Y < H1 + 2.0 &&
+                     isk__dot_weights_browser(X, Y, &ix, &iy, w) && ix >= 0 && ix < W1 && iy >= Y0 && iy < H1;
+        if (!b->fast[k])
+            continue;
+        b->ix[k] = ix;
+        b->iy[k] = iy;
+        for (int q = 0; q < 4; q++)
+            b->w[k][q] = (uint8_t)w[q];
+    }
+}
+
+static inline weights_fn pick_weights(int browser)
+{
+    if (browser)
+        return weights_browser;
+#if ISK__SPAN_AVX2
+    if (isk__have_avx2())
+        return weights_avx2;
+#endif
+    return weights_scalar;
+}
+
+/* Two pixels of a row (8 bytes at p) at coverages wa, wb. */
+static ISK__INLINE void px2(uint8_t *p, isk_color col, const isk__cov_lut *lut, uint32_t wa, uint32_t wb,
+                            isk_blend mode)
+{
+#if ISK__SPAN_SSE2
+    if (mode == ISK_BLEND_ADD) {
+        uint32_t ia, ib;
+        memcpy(&ia, lut->add[wa], 4);
+        memcpy(&ib, lut->add[wb], 4);
+        __m128i inc = _mm_unpacklo_epi32(_mm_cvtsi32_si128((int)ia), _mm_cvtsi32_si128((int)ib));
+        __m128i v = _mm_loadl_epi64((const __m128i *)(const void *)p);
+        _mm_storel_epi64((__m128i *)(void *)p, _mm_adds_epu8(v, inc));
+        return;
+    }
+    if (mode == ISK_BLEND_OVER && p[3] == 255u && p[7] == 255u) {
+        /* div255(c a' + d (255 - a')) on both pixels' lanes */
+        __m128i P = _mm_set_epi64x((long long)lut->over_p[wb], (long long)lut->over_p[wa]);
+        __m128i I = _mm_set_epi64x((long long)lut->over_inv[wb], (long long)lut->over_inv[wa]);
+        __m128i v = _mm_loadl_epi64((const __m128i *)(const void *)p);
+        __m128i x = _mm_add_epi16(_mm_mullo_epi16(_mm_unpacklo_epi8(v, _mm_setzero_si128()), I), P);
+        _mm_storel_epi64((__m128i *)(void *)p, _mm_packus_epi16(isk__s_div255(x), x));
+        return;
+    }
+#endif
+    isk__px_w(p, col, lut, wa, mode);
+    isk__px_w(p + 4, col, lut, wb, mode);
+}
+
+/* Step 1 of a block without a list: the points whose dot can touch the
+ * rows, their screen Y in b->y and their place in the block in b->ix, in
+ * block order; returns how many.  Without branches (on a band most points
+ * may be another band's, in an order no predictor learns). */
+typedef struct select_view {
+    int camera, keep;
+    double hh, a, ty, sy, py;   /* the view's Y arithmetic (isk_view_to_screen) */
+    double lo, hi;              /* kept: lo < Y < hi */
+    int height;                 /* keep: (height - 1, height] -> height - 1 */
+} select_view;
+
+typedef int (*select_fn)(const select_view *s, const double *y, int m, double *oy, int32_t *oix);
+
+/* isk_view_to_screen's Y, its operations in its order. */
+static ISK__INLINE double screen_y(const select_view *s, double y)
+{
+    return s->camera ? s->hh - s->a * (y + s->ty) : s->sy * y + s->py;
+}
+
+static inline int select_scalar(const select_view *s, const double *y, int m, double *oy, int32_t *oix)
+{
+    int kept = 0;
+    for (int k = 0; k < m; k++) {
+        const double Y0k = screen_y(s, y[k]);
+        const double Y = s->keep ? isk__keep_on_canvas(Y0k, s->height) : Y0k;
+        oy[kept] = Y;
+        oix[kept] = k;
+        kept += (Y > s->lo) & (Y < s->hi);
+    }
+    return kept;
+}
+
+#if ISK__SPAN_AVX2
+/* Four points a step: the same IEEE operations as select_scalar, lanes
+ * compressed by a permutation looked up from the comparison's mask (oy and
+ * oix may be written up to 4 entries past what is kept: the block's arrays
+ * hold DOT_BLOCK entries and kept + 4 <= k + 4 <= m). */
+static const int32_t SELECT_PERM[16][8] = {
+    {0, 0, 0, 0, 0, 0, 0, 0},
+    {0, 1, 0, 0, 0, 0, 0, 0},
+    {2, 3, 0, 0, 0, 0, 0, 0},
+    {0, 1, 2, 3, 0, 0, 0, 0},
+    {4, 5, 0, 0, 0, 0, 0, 0},
+    {0, 1, 4, 5, 0, 0, 0, 0},
+    {2, 3, 4, 5, 0, 0, 0, 0},
+    {0, 1, 2, 3, 4, 5, 0, 0},
+    {6, 7, 0, 0, 0, 0, 0, 0},
+    {0, 1, 6, 7, 0, 0, 0, 0},
+    {2, 3, 6, 7, 0, 0, 0, 0},
+    {0, 1, 2, 3, 6, 7, 0, 0},
+    {4, 5, 6, 7, 0, 0, 0, 0},
+    {0, 1, 4, 5, 6, 7, 0, 0},
+    {2, 3, 4, 5, 6, 7, 0, 0},
+    {0, 1, 2, 3, 4, 5, 6, 7},
+};
+static const int32_t SELECT_LANE[16][8] = {
+    {0, 0, 0, 0, 0, 0, 0, 0},
+    {0, 0, 0, 0, 0, 0, 0, 0},
+    {1, 0, 0, 0, 0, 0, 0, 0},
+    {0, 1, 0, 0, 0, 0, 0, 0},
+    {2, 0, 0, 0, 0, 0, 0, 0},
+    {0, 2, 0, 0, 0, 0, 0, 0},
+    {1, 2, 0, 0, 0, 0, 0, 0},
+    {0, 1, 2, 0, 0, 0, 0, 0},
+    {3, 0, 0, 0, 0, 0, 0, 0},
+    {0, 3, 0, 0, 0, 0, 0, 0},
+    {1, 3, 0, 0, 0, 0, 0, 0},
+    {0, 1, 3, 0, 0, 0, 0, 0},
+    {2, 3, 0, 0, 0, 0, 0, 0},
+    {0, 2, 3, 0, 0, 0, 0, 0},
+    {1, 2, 3, 0, 0, 0, 0, 0},
+    {0, 1, 2, 3, 0, 0, 0, 0},
+};
+
+static inline ISK__AVX2_FN int select_avx2(const select_view *s, const double *y, int m, double *oy, int32_t *oix)
+{
+    const __m256d hh = _mm256_set1_pd(s->hh), a = _mm256_set1_pd(s->a), ty = _mm256_set1_pd(s->ty);
+    const __m256d sy = _mm256_set1_pd(s->sy), py = _mm256_set1_pd(s->py);
+    const __m256d lo = _mm256_set1_pd(s->lo), hi = _mm256_set1_pd(s->hi);
+    const __m256d n1 = _mm256_set1_pd(s->height - 1.0), n = _mm256_set1_pd((double)s->height);
+    int kept = 0, k = 0;
+    for (; k + 4 <= m; k += 4) {
+        const __m256d v = _mm256_loadu_pd(y + k);
+        __m256d Y = s->camera ? _mm256_sub_pd(hh, _mm256_mul_pd(a, _mm256_add_pd(v, ty)))
+                              : _mm256_add_pd(_mm256_mul_pd(sy, v), py);
+        if (s->keep)
+            Y = _mm256_blendv_pd(Y, n1, _mm256_and_pd(_mm256_cmp_pd(Y, n1, _CMP_GT_OQ), _mm256_cmp_pd(Y, n, _CMP_LE_OQ)));
+        const int mask =
+            _mm256_movemask_pd(_mm256_and_pd(_mm256_cmp_pd(Y, lo, _CMP_GT_OQ), _mm256_cmp_pd(Y, hi, _CMP_LT_OQ)));
+        const __m256i perm = _mm256_loadu_si256((const __m256i *)(const void *)SELECT_PERM[mask]);
+        const __m256i lane = _mm256_loadu_si256((const __m256i *)(const void *)SELECT_LANE[mask]);
+        _mm256_storeu_pd(oy + kept, _mm256_castps_pd(_mm256_permutevar8x32_ps(_mm256_castpd_ps(Y), perm)));
+        _mm_storeu_si128((__m128i *)(void *)(oix + kept),
+                         _mm256_castsi256_si128(_mm256_add_epi32(lane, _mm256_set1_epi32(k))));
+        kept += __builtin_popcount((unsigned)mask);
+    }
+    if (k < m) {
+        const int t = select_scalar(s, y + k, m - k, oy + kept, oix + kept);
+        for (int q = kept; q < kept + t; q++)
+            oix[q] += k;
+        kept += t;
+    }
+    return kept;
+}
+#endif
+
+static inline select_fn pick_select(void)
+{
+#if ISK__SPAN_AVX2
+    if (isk__have_avx2())
+        return select_avx2;
+#endif
+    return select_scalar;
+}
+
+#endif
