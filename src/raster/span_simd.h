@@ -188,6 +188,23 @@ static ISK__INLINE ISK__AVX2_FN int isk__a8_over_opaque(uint8_t *d, __m256i lo, 
 static inline int isk__have_avx2(void) { return 0; }
 #endif
 
+/* AVX-512 (F, VL, BW, DQ), chosen at run time the same way: for kernels of
+ * doubles that gain from 8 lanes and mask registers (the dot's weights).
+ * The bits are the same: IEEE operations lane by lane, no FMA
+ * (-ffp-contract=off holds in these functions too). */
+#if ISK__SPAN_AVX2 && !defined(ISK__SPAN_NO_AVX512) && (defined(__clang__) || __GNUC__ >= 8)
+#define ISK__SPAN_AVX512 1
+#define ISK__AVX512_FN __attribute__((target("avx512f,avx512vl,avx512bw,avx512dq")))
+static inline int isk__have_avx512(void)
+{
+    return __builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512vl") &&
+           __builtin_cpu_supports("avx512bw") && __builtin_cpu_supports("avx512dq");
+}
+#else
+#define ISK__SPAN_AVX512 0
+static inline int isk__have_avx512(void) { return 0; }
+#endif
+
 #if ISK__SPAN_VECTOR
 typedef uint8_t isk__u8x8 __attribute__((vector_size(8)));
 typedef uint8_t isk__u8x16 __attribute__((vector_size(16)));

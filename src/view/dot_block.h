@@ -144,6 +144,71 @@ static inline ISK__AVX2_FN void weights_avx2(dot_block *b, int m, double W1, dou
 }
 #endif
 
+#if ISK__SPAN_AVX512
+/* weights_avx2 for 8 points a step, the last step masked.  The same
+ * operations on the doubles; the rank selection in 32-bit lanes instead of
+ * 0/1 doubles (small integers either way: the same comparisons, the same
+ * sums), with the comparisons as mask registers. */
+static inline ISK__AVX512_FN void weights_avx512(dot_block *b, int m, double W1, double Y0, double H1)
+{
+    const __m512d zero = _mm512_setzero_pd(), one = _mm512_set1_pd(1.0), k255 = _mm512_set1_pd(255.0);
+    const __m512d vW1 = _mm512_set1_pd(W1), vY0 = _mm512_set1_pd(Y0), vH1 = _mm512_set1_pd(H1);
+    const __m256i i1 = _mm256_set1_epi32(1);
+    for (int k = 0; k < m; k += 8) {
+        const __mmask8 valid = m - k >= 8 ? (__mmask8)0xFF : (__mmask8)((1u << (m - k)) - 1u);
+        __m512d X = _mm512_maskz_loadu_pd(valid, b->x + k), Y = _mm512_maskz_loadu_pd(valid, b->y + k);
+        const __mmask8 ok = valid & _mm512_cmp_pd_mask(X, zero, _CMP_GE_OQ) & _mm512_cmp_pd_mask(X, vW1, _CMP_LT_OQ) &
+                            _mm512_cmp_pd_mask(Y, vY0, _CMP_GE_OQ) & _mm512_cmp_pd_mask(Y, vH1, _CMP_LT_OQ);
+        _mm_mask_storeu_epi8(b->fast + k, valid, _mm_maskz_set1_epi8(ok, 1));
+        if (!ok)
+            continue;
+        X = _mm512_maskz_mov_pd(ok, X); /* other lanes: 0, harmless */
+        Y = _mm512_maskz_mov_pd(ok, Y);
+        const __m256i ix = _mm512_cvttpd_epi32(X), iy = _mm512_cvttpd_epi32(Y);
+        _mm256_mask_storeu_epi32(b->ix + k, valid, ix);
+        _mm256_mask_storeu_epi32(b->iy + k, valid, iy);
+        __m512d fx = _mm512_sub_pd(X, _mm512_cvtepi32_pd(ix)), fy = _mm512_sub_pd(Y, _mm512_cvtepi32_pd(iy));
+        __m512d gx = _mm512_sub_pd(one, fx), gy = _mm512_sub_pd(one, fy);
+        __m512d a0 = _mm512_mul_pd(_mm512_mul_pd(k255, gx), gy), a1 = _mm512_mul_pd(_mm512_mul_pd(k255, fx), gy);
+        __m512d a2 = _mm512_mul_pd(_mm512_mul_pd(k255, gx), fy), a3 = _mm512_mul_pd(_mm512_mul_pd(k255, fx), fy);
+        __m256i w0 = _mm512_cvttpd_epi32(a0), w1 = _mm512_cvttpd_epi32(a1);
+        __m256i w2 = _mm512_cvttpd_epi32(a2), w3 = _mm512_cvttpd_epi32(a3);
+        __m512d f0 = _mm512_sub_pd(a0, _mm512_cvtepi32_pd(w0)), f1 = _mm512_sub_pd(a1, _mm512_cvtepi32_pd(w1));
+        __m512d f2 = _mm512_sub_pd(a2, _mm512_cvtepi32_pd(w2)), f3 = _mm512_sub_pd(a3, _mm512_cvtepi32_pd(w3));
+        const __m256i left = _mm256_sub_epi32(_mm256_set1_epi32(255),
+                                              _mm256_add_epi32(_mm256_add_epi32(w0, w1), _mm256_add_epi32(w2, w3)));
+        const __mmask8 c01 = _mm512_cmp_pd_mask(f0, f1, _CMP_GE_OQ), c02 = _mm512_cmp_pd_mask(f0, f2, _CMP_GE_OQ);
+        const __mmask8 c03 = _mm512_cmp_pd_mask(f0, f3, _CMP_GE_OQ), c12 = _mm512_cmp_pd_mask(f1, f2, _CMP_GE_OQ);
+        const __mmask8 c13 = _mm512_cmp_pd_mask(f1, f3, _CMP_GE_OQ), c23 = _mm512_cmp_pd_mask(f2, f3, _CMP_GE_OQ);
+        /* r0 = 3 - c01 - c02 - c03, r1 = 2 + c01 - c12 - c13, r2 = 1 + c02 + c12 - c23, r3 = c03 + c13 + c23 */
+        __m256i r0 = _mm256_set1_epi32(3), r1 = _mm256_set1_epi32(2), r2 = i1, r3 = _mm256_setzero_si256();
+        r0 = _mm256_mask_sub_epi32(r0, c01, r0, i1);
+        r0 = _mm256_mask_sub_epi32(r0, c02, r0, i1);
+        r0 = _mm256_mask_sub_epi32(r0, c03, r0, i1);
+        r1 = _mm256_mask_add_epi32(r1, c01, r1, i1);
+        r1 = _mm256_mask_sub_epi32(r1, c12, r1, i1);
+        r1 = _mm256_mask_sub_epi32(r1, c13, r1, i1);
+        r2 = _mm256_mask_add_epi32(r2, c02, r2, i1);
+        r2 = _mm256_mask_add_epi32(r2, c12, r2, i1);
+        r2 = _mm256_mask_sub_epi32(r2, c23, r2, i1);
+        r3 = _mm256_mask_add_epi32(r3, c03, r3, i1);
+        r3 = _mm256_mask_add_epi32(r3, c13, r3, i1);
+        r3 = _mm256_mask_add_epi32(r3, c23, r3, i1);
+        w0 = _mm256_mask_add_epi32(w0, _mm256_cmplt_epi32_mask(r0, left), w0, i1);
+        w1 = _mm256_mask_add_epi32(w1, _mm256_cmplt_epi32_mask(r1, left), w1, i1);
+        w2 = _mm256_mask_add_epi32(w2, _mm256_cmplt_epi32_mask(r2, left), w2, i1);
+        w3 = _mm256_mask_add_epi32(w3, _mm256_cmplt_epi32_mask(r3, left), w3, i1);
+        /* bytes per point: w0 w1 w2 w3 of point 0, then of point 1, ... */
+        const __m128i p01 = _mm_unpacklo_epi8(_mm256_cvtepi32_epi8(w0), _mm256_cvtepi32_epi8(w1));
+        const __m128i p23 = _mm_unpacklo_epi8(_mm256_cvtepi32_epi8(w2), _mm256_cvtepi32_epi8(w3));
+        const int nv = m - k >= 8 ? 8 : m - k, nlo = nv < 4 ? nv : 4;
+        const __mmask16 lo = (__mmask16)((1u << 4 * nlo) - 1u), hi = (__mmask16)((1u << 4 * (nv - nlo)) - 1u);
+        _mm_mask_storeu_epi8(b->w[k], lo, _mm_unpacklo_epi16(p01, p23));
+        _mm_mask_storeu_epi8(b->w[k + 4], hi, _mm_unpackhi_epi16(p01, p23));
+    }
+}
+#endif
+
 /* The browser rule's weights (integer arithmetic, already cheap). */
 static inline void weights_browser(dot_block *b, int m, double W1, double Y0, double H1)
 {
@@ -168,6 +233,10 @@ static inline weights_fn pick_weights(int browser)
 {
     if (browser)
         return weights_browser;
+#if ISK__SPAN_AVX512
+    if (isk__have_avx512())
+        return weights_avx512;
+#endif
 #if ISK__SPAN_AVX2
     if (isk__have_avx2())
         return weights_avx2;
@@ -309,8 +378,42 @@ static inline ISK__AVX2_FN int select_avx2(const select_view *s, const double *y
 }
 #endif
 
+#if ISK__SPAN_AVX512
+/* Eight points a step, the last one masked: select_avx2's operations, the
+ * lanes compressed by the mask register (oy and oix may be written up to 8
+ * entries past what is kept, within the block's arrays: kept <= k and
+ * k + 8 <= DOT_BLOCK). */
+static inline ISK__AVX512_FN int select_avx512(const select_view *s, const double *y, int m, double *oy, int32_t *oix)
+{
+    const __m512d hh = _mm512_set1_pd(s->hh), a = _mm512_set1_pd(s->a), ty = _mm512_set1_pd(s->ty);
+    const __m512d sy = _mm512_set1_pd(s->sy), py = _mm512_set1_pd(s->py);
+    const __m512d lo = _mm512_set1_pd(s->lo), hi = _mm512_set1_pd(s->hi);
+    const __m512d n1 = _mm512_set1_pd(s->height - 1.0), n = _mm512_set1_pd((double)s->height);
+    const __m256i lane = _mm256_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7);
+    int kept = 0;
+    for (int k = 0; k < m; k += 8) {
+        const __mmask8 valid = m - k >= 8 ? (__mmask8)0xFF : (__mmask8)((1u << (m - k)) - 1u);
+        const __m512d v = _mm512_maskz_loadu_pd(valid, y + k);
+        __m512d Y = s->camera ? _mm512_sub_pd(hh, _mm512_mul_pd(a, _mm512_add_pd(v, ty)))
+                              : _mm512_add_pd(_mm512_mul_pd(sy, v), py);
+        if (s->keep)
+            Y = _mm512_mask_mov_pd(Y, _mm512_cmp_pd_mask(Y, n1, _CMP_GT_OQ) & _mm512_cmp_pd_mask(Y, n, _CMP_LE_OQ), n1);
+        const __mmask8 mask = valid & _mm512_cmp_pd_mask(Y, lo, _CMP_GT_OQ) & _mm512_cmp_pd_mask(Y, hi, _CMP_LT_OQ);
+        _mm512_storeu_pd(oy + kept, _mm512_maskz_compress_pd(mask, Y));
+        _mm256_storeu_si256((__m256i *)(void *)(oix + kept),
+                            _mm256_maskz_compress_epi32(mask, _mm256_add_epi32(lane, _mm256_set1_epi32(k))));
+        kept += __builtin_popcount(mask);
+    }
+    return kept;
+}
+#endif
+
 static inline select_fn pick_select(void)
 {
+#if ISK__SPAN_AVX512
+    if (isk__have_avx512())
+        return select_avx512;
+#endif
 #if ISK__SPAN_AVX2
     if (isk__have_avx2())
         return select_avx2;
