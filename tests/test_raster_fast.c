@@ -23,7 +23,6 @@
 #include "raster_ref.h"
 #include "raster/sprite_rows.h"
 #include "view/world_batch.h"
-#include "view/world_place.h"
 
 static const isk_blend MODES[3] = {ISK_BLEND_REPLACE, ISK_BLEND_OVER, ISK_BLEND_ADD};
 
@@ -465,98 +464,6 @@ Test(raster_fast, binned_bands_equal_the_whole_batch)
     free(y);
     free(code);
     free(idx);
-}
-
-/* The placed draw (view/world_place.h): the store cut into shares, each
- * placed into one bucket per band, then every band blending its buckets
- * share after share (bands in any order), gives the bytes of the whole
- * batch, for every rule, with and without keeping points on the canvas, on
- * views that put points on, near and far off the canvas (and NaN), on
- * canvases that are views of a larger buffer, with bands of one row, empty
- * bands and dots straddling every cut. */
-Test(raster_fast, placed_bands_equal_the_whole_batch)
-{
-    isk_rng r;
-    isk_rng_seed(&r, 13);
-    enum { MAXN = 900, MAXB = 8, MAXS = 4 };
-    double *x = malloc(MAXN * sizeof *x), *y = malloc(MAXN * sizeof *y);
-    cr_assert(x && y);
-    isk__place_bucket bucket[MAXS][MAXB];
-    memset(bucket, 0, sizeof bucket);
-    for (int n = 0; n < 800; n++) {
-        int w = rnd_size(&r), h = rnd_size(&r);
-        pair p = make_pair(&r, w, h);
-        isk_view v;
-        rnd_view(&r, n % 2, w, h, &v);
-        size_t m = 1 + isk_rng_below(&r, MAXN);
-        for (size_t i = 0; i < m; i++) {
-            double X = rnd_coord(&r, w), Y = rnd_coord(&r, h);
-            isk_view_to_world(&v, X, Y, &x[i], &y[i]);
-        }
-        isk_color col = rnd_color(&r);
-        isk_blend mode = MODES[isk_rng_below(&r, 3)];
-        unsigned rule = isk_rng_below(&r, 3) | (isk_rng_below(&r, 2) ? ISK__BATCH_KEEP_ON_CANVAS : 0u);
-        isk__draw_batch_rows(&p.c[0], &v, m, x, y, col, mode, rule, 0, h);
-        /* nb bands from sorted random cuts (repeats make empty bands) */
-        int cut[MAXB + 1], nb = 1 + (int)isk_rng_below(&r, MAXB);
-        cut[0] = 0;
-        cut[nb] = h;
-        for (int k = 1; k < nb; k++)
-            cut[k] = (int)isk_rng_below(&r, (uint32_t)h + 1);
-        for (int i = 1; i < nb; i++)
-            for (int j = i; j > 1 && cut[j - 1] > cut[j]; j--) {
-                int t = cut[j];
-                cut[j] = cut[j - 1];
-                cut[j - 1] = t;
-            }
-        uint8_t band_of_row[64];
-        cr_assert_leq(h, 64);
-        for (int b = 0; b < nb; b++)
-            for (int row = cut[b]; row < cut[b + 1]; row++)
-                band_of_row[row] = (uint8_t)b;
-        cr_assert(isk__place_fits(&p.c[1], m), "case %d: a small canvas fits", n);
-        const isk__place pl = {&p.c[1], &v, x, y, rule, nb, band_of_row};
-        /* ns shares at random splits, placed last to first (independent) */
-        int ns = 1 + (int)isk_rng_below(&r, MAXS);
-        size_t split[MAXS + 1];
-        split[0] = 0;
-        split[ns] = m;
-        for (int t = 1; t < ns; t++) {
-            size_t s = isk_rng_below(&r, (uint32_t)m + 1);
-            split[t] = s < split[t - 1] ? split[t - 1] : s;
-        }
-        for (int t = ns - 1; t >= 0; t--)
-            cr_assert(isk__place_share(&pl, split[t], split[t + 1], bucket[t]), "case %d: placing", n);
-        for (int b = nb - 1; b >= 0; b--) {
-            const isk__place_bucket *mine[MAXS];
-            for (int t = 0; t < ns; t++)
-                mine[t] = &bucket[t][b];
-            isk__place_blend(&pl, &p.c[1], col, mode, cut[b], cut[b + 1], mine, ns);
-        }
-        check_pair(&p, "placed bands", n);
-    }
-    for (int t = 0; t < MAXS; t++)
-        for (int b = 0; b < MAXB; b++)
-            isk__place_bucket_free(&bucket[t][b]);
-    free(x);
-    free(y);
-}
-
-/* Records hold byte offsets below 2^31 and indices below 2^32: a canvas or
- * a store past that is refused (the caller then draws the one-pass way). */
-Test(raster_fast, placed_draw_refuses_what_records_cannot_hold)
-{
-    uint8_t px[4];
-    isk_canvas c = {px, 1, 1, 4, 0};
-    cr_assert(isk__place_fits(&c, 1000));
-    cr_assert_not(isk__place_fits(&c, (size_t)UINT32_MAX + 1));
-    cr_assert_not(isk__place_fits(NULL, 1));
-    isk_canvas tall = {px, 16384, 16384, (size_t)16384 * 4, 0}; /* the largest canvas: 2^30 bytes */
-    cr_assert(isk__place_fits(&tall, 1));
-    isk_canvas wide = {px, 16384, 16384, (size_t)1 << 18, 0};   /* a view of a wider buffer: 2^32 */
-    cr_assert_not(isk__place_fits(&wide, 1));
-    isk_canvas huge = {px, 1, 3, SIZE_MAX / 2, 0};
-    cr_assert_not(isk__place_fits(&huge, 1));
 }
 
 static double rnd_radius(isk_rng *r)

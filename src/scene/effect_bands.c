@@ -1,30 +1,22 @@
 /* A group's draw on the effect's threads: the canvas cut into bands of
- * rows, one per thread, each blending only its own rows.  Each pixel then
- * sees the same particles in the same order as on one thread, so the bytes
- * are the same for every thread count and every choice of cuts; the cuts
- * are only chosen to share the work evenly.  Three ways (fx_band_way):
+ * rows, one per thread, each blending only its own rows (the draw functions
+ * of effect_render.c).  Each pixel then sees the same particles in the same
+ * order as on one thread, so the bytes are the same for every thread count
+ * and every choice of cuts; the cuts are only chosen to share the work
+ * evenly.
  *
- *   place  one-colour dots and pixels: each thread turns its share of the
- *          store (a range of indices) into records, one bucket per band
- *          (view/world_place.h), then each band's thread blends its
- *          buckets share after share.  No particle's arithmetic is done
- *          twice, and a band's rows stay in its core's cache.
- *   sort   dots and pixels with a style per particle reach at most a row
- *          beyond their own, so on four bands or more (FX_BIN_MIN_BANDS)
- *          their particles are first sorted into the bands (world_batch.h's
- *          isk__batch_bin, on the threads, each over its share of the
- *          store; stable, so each band keeps index order), and a band's
- *          thread then reads only its own particles.
- *   scan   sprites (which reach far), and any group when the memory for
- *          the other two cannot be had: every band reads the whole store
- *          and draws what reaches its rows. */
+ * Dots and pixels reach at most a row beyond their own, so on four bands
+ * or more (FX_BIN_MIN_BANDS) their particles are first sorted into the bands (world_batch.h's isk__batch_bin, on the
+ * threads, each over its share of the store; stable, so each band keeps
+ * index order), and a band's thread then reads only its own particles
+ * instead of every particle of the store.  Sprites, and any group when the
+ * sorting's memory cannot be had, give every band the whole store. */
 #include <stdlib.h>
 #include <string.h>
 
 #include "effect_internal.h"
 #include "sim/pool.h"
 #include "view/world_batch.h"
-#include "view/world_place.h"
 
 /* Below this many particles a group is drawn on the caller alone (the
  * threads' start costs more than they save). */
@@ -137,9 +129,6 @@ void fx_bins_free(fx_bins *b)
 {
     free(b->code);
     free(b->idx);
-    for (size_t k = 0; k < b->nbucket; k++)
-        isk__place_bucket_free(&b->bucket[k]);
-    free(b->bucket);
     memset(b, 0, sizeof *b);
 }
 
@@ -186,94 +175,7 @@ static int sort_into_bands(band_job *j)
     return ok;
 }
 
-/* Points placed and blended in one round: a round's records take at most
- * 8 B a point (16 MB) however big the store, and stay in the caches
- * between the two steps. */
-#define FX_PLACE_ROUND ((size_t)1 << 21)
-
-typedef struct place_job {
-    band_job *j;
-    isk__place pl;
-    isk__place_bucket *bucket;         /* [share * nb + band], e->bins.bucket */
-    int nshare;
-    size_t first, end;                 /* the round's points */
-    uint8_t ok[ISK_POOL_MAX_THREADS];  /* share t's buckets are whole */
-} place_job;
-
-static size_t round_share(const place_job *p, size_t t)
-{
-    return p->first + (size_t)((unsigned long long)(p->end - p->first) * t / (size_t)p->nshare);
-}
-
-static void place_share(void *ctx, int worker, size_t t)
-{
-    (void)worker;
-    place_job *p = ctx;
-    p->ok[t] = (uint8_t)isk__place_share(&p->pl, round_share(p, t), round_share(p, t + 1),
-                                         p->bucket + t * (size_t)p->j->nb);
-}
-
-static void blend_band(void *ctx, int worker, size_t k)
-{
-    (void)worker;
-    place_job *p = ctx;
-    const fx_band *b = &p->j->band[k];
-    const isk_emitter_def *d = p->j->g->def;
-    const isk__place_bucket *mine[ISK_POOL_MAX_THREADS];
-    int whole = 1;
-    for (int t = 0; t < p->nshare; t++) {
-        mine[t] = &p->bucket[(size_t)t * (size_t)p->j->nb + k];
-        whole &= p->ok[t];
-    }
-    if (whole)
-        isk__place_blend(&p->pl, p->j->c, d->color, d->blend, b->r0, b->r1, mine, p->nshare);
-    else /* a bucket could not grow: this round the one-pass way (the same bytes) */
-        isk__draw_batch_rows(p->j->c, p->pl.v, p->end - p->first, p->pl.x + p->first, p->pl.y + p->first,
-                             d->color, d->blend, p->pl.rule, b->r0, b->r1);
-}
-
-/* The place way (see the top); 0 when it cannot run (the caller scans). */
-static int place_and_blend(band_job *j)
-{
-    isk_effect *e = j->e;
-    const size_t n = j->g->store.count;
-    const int nshare = isk_pool_threads(e->pool);
-    if (!isk__place_fits(j->c, n))
-        return 0;
-    const size_t need = (size_t)nshare * (size_t)j->nb;
-    fx_bins *bins = &e->bins;
-    if (bins->nbucket < need) {
-        isk__place_bucket *q = realloc(bins->bucket, need * sizeof *q);
-        if (!q)
-            return 0;
-        memset(q + bins->nbucket, 0, (need - bins->nbucket) * sizeof *q);
-        bins->bucket = q;
-        bins->nbucket = need;
-    }
-    uint8_t *band_of_row = malloc((size_t)j->c->height);
-    place_job *p = calloc(1, sizeof *p);
-    if (!band_of_row || !p) {
-        free(band_of_row);
-        free(p);
-        return 0;
-    }
-    for (int b = 0; b < j->nb; b++)
-        memset(band_of_row + j->band[b].r0, b, (size_t)(j->band[b].r1 - j->band[b].r0));
-    p->j = j;
-    p->pl = (isk__place){j->c, &e->view, j->g->store.x, j->g->store.y, fx_batch_rule(j->g), j->nb, band_of_row};
-    p->bucket = bins->bucket;
-    p->nshare = nshare;
-    for (p->first = 0; p->first < n; p->first = p->end) {
-        p->end = n - p->first > FX_PLACE_ROUND ? p->first + FX_PLACE_ROUND : n;
-        isk_pool_for(e->pool, (size_t)nshare, 2, place_share, p);
-        isk_pool_for(e->pool, (size_t)j->nb, 2, blend_band, p);
-    }
-    free(band_of_row);
-    free(p);
-    return 1;
-}
-
-isk_status fx_draw_bands(isk_effect *e, isk_canvas *c, fx_group *g, const fx_band *whole, fx_band_way way)
+isk_status fx_draw_bands(isk_effect *e, isk_canvas *c, fx_group *g, const fx_band *whole, int sortable)
 {
     const int threads = e->pool ? isk_pool_threads(e->pool) : 1;
     if (threads < 2 || g->store.count < FX_BAND_MIN_PARTICLES || c->height < 2 * threads)
@@ -295,11 +197,7 @@ isk_status fx_draw_bands(isk_effect *e, isk_canvas *c, fx_group *g, const fx_ban
             j->band[j->nb].r1 = cut[k + 1];
             j->nb++;
         }
-    if (way == FX_BANDS_PLACE && place_and_blend(j)) {
-        free(j);
-        return ISK_OK; /* the one-colour draws cannot fail */
-    }
-    if (!(way == FX_BANDS_SORT && j->nb >= FX_BIN_MIN_BANDS && sort_into_bands(j)))
+    if (!(sortable && j->nb >= FX_BIN_MIN_BANDS && sort_into_bands(j)))
         for (int k = 0; k < j->nb; k++)
             j->band[k].list = NULL;
     isk_pool_for(e->pool, (size_t)j->nb, 2, run_band, j);

@@ -33,7 +33,6 @@
 #include "sim/field.h"
 #include "iskra/texture.h"
 #include "sim/stage.h"
-#include "view/world_place.h"
 
 typedef struct fx_group fx_group;
 
@@ -72,22 +71,13 @@ typedef struct fx_band {
     double sprite_reach;                              /* rows a sprite can reach from its centre */
 } fx_band;
 
-/* The threaded draw's scratch (effect_bands.c): kept between frames,
- * grown as needed. */
+/* The threaded draw's sorting of particles into bands (effect_bands.c):
+ * kept between frames, grown as needed. */
 typedef struct fx_bins {
-    uint16_t *code;                /* sorting: per particle, its first and last band */
-    uint32_t *idx;                 /* sorting: every band's particles, band after band */
+    uint16_t *code;                /* per particle: its first and last band */
+    uint32_t *idx;                 /* every band's particles, band after band */
     size_t code_cap, idx_cap;
-    isk__place_bucket *bucket;     /* placing: [share * bands + band] (view/world_place.h) */
-    size_t nbucket;
 } fx_bins;
-
-/* How a group's draw is shared out over bands of rows (effect_bands.c). */
-typedef enum fx_band_way {
-    FX_BANDS_SCAN,                 /* every band reads the whole store (sprites reach far) */
-    FX_BANDS_SORT,                 /* the particles sorted into bands first (per-particle styles) */
-    FX_BANDS_PLACE                 /* records placed by share, blended by band (one colour) */
-} fx_band_way;
 
 typedef isk_status (*fx_draw_fn)(isk_effect *e, isk_canvas *c, fx_group *g, const fx_band *b);
 
@@ -241,9 +231,7 @@ fx_draw_fn fx_choose_draw(const fx_group *g);
 /* effect_bands.c: g->draw over the canvas, in bands of rows on the
  * effect's threads when the group is big (whole: the band of the canvas,
  * with anything prepared for the draw). */
-isk_status fx_draw_bands(isk_effect *e, isk_canvas *c, fx_group *g, const fx_band *whole, fx_band_way way);
-/* The batch rule (view/world_batch.h) a one-colour dot or pixel group draws with. */
-unsigned fx_batch_rule(const fx_group *g);
+isk_status fx_draw_bands(isk_effect *e, isk_canvas *c, fx_group *g, const fx_band *whole, int sortable);
 void fx_bins_free(fx_bins *b);
 isk_status fx_bake_ramps(fx_group *g, isk_error *err);
 void fx_free_ramps(fx_group *g);

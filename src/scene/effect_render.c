@@ -205,18 +205,14 @@ static isk_status draw_styled_dots(isk_effect *e, isk_canvas *c, fx_group *g, co
     return ISK_OK;
 }
 
-unsigned fx_batch_rule(const fx_group *g)
-{
-    const unsigned rule = g->def->draw == ISK_DRAW_DOT_BROWSER ? ISK__BATCH_DOT_BROWSER
-                          : g->def->draw == ISK_DRAW_PIXEL     ? ISK__BATCH_PIXEL
-                                                               : ISK__BATCH_DOT;
-    return g->keep_on_canvas ? rule | ISK__BATCH_KEEP_ON_CANVAS : rule;
-}
-
 /* One colour for the whole group: the batched kernels (iskra/view.h). */
 static isk_status draw_dots(isk_effect *e, isk_canvas *c, fx_group *g, const fx_band *b)
 {
-    const unsigned rule = fx_batch_rule(g);
+    unsigned rule = g->def->draw == ISK_DRAW_DOT_BROWSER ? ISK__BATCH_DOT_BROWSER
+                    : g->def->draw == ISK_DRAW_PIXEL     ? ISK__BATCH_PIXEL
+                                                         : ISK__BATCH_DOT;
+    if (g->keep_on_canvas)
+        rule |= ISK__BATCH_KEEP_ON_CANVAS;
     if (b->list)
         isk__draw_batch_list_rows(c, &e->view, b->list, b->nlist, g->store.x, g->store.y, g->def->color,
                                   g->def->blend, rule, b->r0, b->r1);
@@ -370,14 +366,10 @@ static isk_status render_group(isk_effect *e, isk_canvas *c, fx_group *g)
     }
     if (g->draw == draw_discs)
         return g->draw(e, c, g, &whole);
-    /* one-colour dots and pixels are placed (view/world_place.h); the
-     * other dots and pixels reach at most a row beyond their own (the
-     * margin world_batch.h's binning keeps), so their bands can take only
-     * their own particles; sprites reach far and read them all */
-    const fx_band_way way = g->draw == draw_dots                                   ? FX_BANDS_PLACE
-                            : g->draw == draw_sprites || g->draw == fx_draw_textures ? FX_BANDS_SCAN
-                                                                                     : FX_BANDS_SORT;
-    return fx_draw_bands(e, c, g, &whole, way);
+    /* dots and pixels reach at most a row beyond their own (the margin
+     * world_batch.h's binning keeps), so their bands can take only their
+     * own particles; sprites reach far and read them all */
+    return fx_draw_bands(e, c, g, &whole, g->draw != draw_sprites && g->draw != fx_draw_textures);
 }
 
 isk_status fx_render(isk_effect *e, isk_canvas *c)

@@ -1,7 +1,7 @@
 /* src/view/dot_block.h — the stages of a batched dot draw over a block of
- * points, shared by the direct batch (world_batch.c: a store drawn onto a
- * band of rows) and the placed draw (world_place.c: a store turned into
- * records first, then blended band by band) (internal).
+ * points (world_batch.c: a store drawn onto a band of rows), in a header of
+ * their own so that tests/test_dot_block.c can check every build of them,
+ * including those the CPU does not pick (internal).
  *
  *   select   which points of the block can touch rows (lo, hi): their
  *            screen Y, in block order (SSE2 or AVX2);
