@@ -16,8 +16,15 @@
  * compare like with like.  Medians of wall-clock time over the measured
  * frames.
  *
+ * The machine is a shared VM: whether its second core is really there
+ * changes from minute to minute.  So each row is followed by a control,
+ * a job of pure arithmetic (no memory) on 1 thread and on each thread count
+ * at once, after every row: "cores given" is how many cores' worth of work
+ * the machine did, and a row's speedup can only be read against it.
+ *
  *     build/bench/bench_frame            every size
  *     build/bench/bench_frame --quick    10^5 and 10^6 only */
+#include <pthread.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -92,6 +99,42 @@ static isk_status make(isk_effect **fx, const row *r, isk_error *err)
     }
     isk_effect_def_free(&d);
     return s;
+}
+
+/* ---- the control: cores the machine gives ---------------------------------- */
+
+static void *arithmetic(void *arg)
+{
+    volatile double x = 1.0;
+    for (long i = 0; i < 40000000; i++) /* a dependent chain: no memory, no vector */
+        x = x * 1.0000001;
+    return arg;
+}
+
+/* Work done on `threads` threads at once over the work of one, per unit of
+ * time: `threads` when the machine gives that many cores. */
+static double cores_given(int threads)
+{
+    pthread_t t[64];
+    double t0 = bench_now();
+    arithmetic(NULL);
+    const double one = bench_now() - t0;
+    int started = 0;
+    t0 = bench_now();
+    for (int k = 0; k < threads && k < 64; k++)
+        started += pthread_create(&t[k], NULL, arithmetic, NULL) == 0;
+    for (int k = 0; k < started; k++)
+        pthread_join(t[k], NULL);
+    const double all = bench_now() - t0;
+    return all > 0 ? started * one / all : 0;
+}
+
+static void print_control(const int *tc, int nt)
+{
+    printf("%-8s %9s  control: cores given", "", "");
+    for (int t = 1; t < nt; t++)
+        printf("  %d threads: %.2f", tc[t], cores_given(tc[t]));
+    printf("\n");
 }
 
 /* The thread counts timed: every count up to 4 cores, then 4, 8, ... and
@@ -169,8 +212,9 @@ int main(int argc, char **argv)
             printf("%-8s %9zu %7d %8.2f %7.2f %8.2f %8.2f %7.1f %7.2fx\n", r->what, r->n, tc[t], u, cl, dr, fr,
                    1e3 / fr, frame1 / fr);
         }
-        printf("%-8s %9zu  %.0f bytes a particle resident (the store, the pool's scratch, the draw's records)\n",
-               "", r->n, (resident_bytes() - rss0) / ((double)r->n * copies));
+        printf("%-8s %9zu  %.0f bytes a particle resident (the store, the pool's scratch)\n", "", r->n,
+               (resident_bytes() - rss0) / ((double)r->n * copies));
+        print_control(tc, nt);
         for (int t = 0; t < copies; t++)
             isk_effect_destroy(fx[t]);
     }
