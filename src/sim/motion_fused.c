@@ -117,8 +117,8 @@ typedef struct pot_par {
  * of from +0.0.  A sum a + b is -0.0 only when a and b both are (IEEE,
  * round to nearest), so a chain of sums started from its first term has
  * the bits of the same chain started from +0.0 unless every term is -0.0;
- * P's last term is never -0.0 (it starts from +0.0), so F's bits are the
- * same and two additions go.
+ * F's last term, P, is never -0.0 (its own sum starts from +0.0), so F's
+ * bits are the same and two additions go.
  * FIX = 0 (the vector loop): the law's forces as they are; returns a word
  * whose top bit is set when the sound rule (sm) would replace some force,
  * and then o is not the general path's.  FIX = 1 (pot_fixup): the sound
@@ -234,10 +234,10 @@ static inline uint64_t pot_loop(size_t n, double *restrict x, double *restrict y
     return acc;
 }
 
-/* The block stepped again from its old state, the sound rule as the
- * general path applies it (scalar code: rare, a particle on or very near a
- * potential; one copy for every combination, not inlined).  Returns the
- * non-finite flag in bit 63 as the loops do. */
+/* The whole block stepped again from its old state, the sound rule as the
+ * general path applies it (scalar code, one copy for every combination:
+ * rare, a particle on or very near a potential, or a k*Q near the force
+ * limit).  Returns the non-finite flag in bit 63 as the loops do. */
 static uint64_t pot_fixup(size_t n, double *x, double *y, double *vx, double *vy, const double *m, const pot_par *p,
                           const pot_save *sv, int np, int A, int D, int E)
 {
