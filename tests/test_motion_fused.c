@@ -346,7 +346,7 @@ Test(motion_fused, potentials_beyond_a_block)
             memcpy(m + o, one.m, c * sizeof *m);
         }
         random_case(&pc, &seed, &one, 1 + round);
-        const size_t on = N + 3 + (size_t)round * N / 2; /* a particle on a centre past the first block */
+        const size_t on = N + 3 + (size_t)round * 101; /* on a centre: in the second block, then the third */
         x[on] = pc.pot[0].r.x;
         y[on] = pc.pot[0].r.y;
         isk_forces f = {.gravity = 9.81, .drag = 0.47, .centre = ISK_FIDELITY_SOUND};
