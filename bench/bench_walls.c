@@ -24,8 +24,11 @@
  *                  worst case of the scalar path
  *   drag alone     the motion with the drag as its only force
  *   + Coulomb      the motion with one potential at the box's centre
- *                  (P = 2, sound centre rule: the general path, forces
- *                  then integrator)
+ *                  (P = 2, sound centre rule, no distance switches): the
+ *                  fused pass, forces and integrator in one loop
+ *                  (src/sim/motion_fused.h)
+ *   thesis, P = 1  the same potential with the thesis's centre rule and
+ *                  P = 1 (the fused pass's other rule and exponent)
  *   fire           what a fire scene compiles to: the drift with the
  *                  thesis's slowing, then the sway (ISK_PARTICLES_OSC);
  *                  it moves 56 B more than the limit counts (the sway's
@@ -104,7 +107,7 @@ static void describe_end_walls(const isk_stage *st, FILE *out)
 }
 static const isk_stage_kind end_walls = {"walls", run_end_walls, describe_end_walls};
 
-enum { V_MOTION, V_END, V_IMPACT, V_START, V_REST, V_DRAG, V_COULOMB, V_FIRE, NV };
+enum { V_MOTION, V_END, V_IMPACT, V_START, V_REST, V_DRAG, V_COULOMB, V_COULOMB_T, V_FIRE, NV };
 static const char *const VNAME[NV] = {"motion",
                                       "walls, end-of-step rule",
                                       "walls, at the time of impact",
@@ -112,12 +115,13 @@ static const char *const VNAME[NV] = {"motion",
                                       "impact, all resting on the floor",
                                       "drag alone (no walls)",
                                       "motion + one Coulomb potential",
+                                      "  the same, thesis rule, P = 1",
                                       "fire: drift+slowing, sway (+56 B)"};
 
 typedef struct world {
     isk_particles p;
-    isk_forces f, drag, coulomb;
-    isk_potential pot;
+    isk_forces f, drag, coulomb, coulomb_t;
+    isk_potential pot, pot_t;
     isk_sinlut sine;
     isk_bounds box, floor;
     isk_pipeline pl[NV];
@@ -162,6 +166,11 @@ static int build(world *w, size_t n)
     w->coulomb.pot = &w->pot;
     w->coulomb.npot = 1;
     w->coulomb.centre = ISK_FIDELITY_SOUND;
+    w->pot_t = w->pot;
+    w->pot_t.P = 1.0;
+    w->coulomb_t = w->coulomb;
+    w->coulomb_t.pot = &w->pot_t;
+    w->coulomb_t.centre = ISK_FIDELITY_THESIS;
     isk_bounds_reflect(&w->box, 0, 10, 0, 10, ISK_SIDE_ALL, 0, 0.8);
     isk_bounds_reflect(&w->floor, 0, 10, 0, 10, ISK_SIDE_ALL, 0, 0.5);
     for (int v = 0; v < NV; v++) {
@@ -182,8 +191,11 @@ static int build(world *w, size_t n)
             isk_pipeline_add(pl, &isk_stage_remember);
         isk_stage *m = isk_pipeline_add(pl, &isk_stage_motion);
         m->u.motion.method = ISK_INTEGRATE_SEMI_EULER;
-        m->u.motion.forces = v == V_DRAG ? &w->drag : v == V_COULOMB ? &w->coulomb : &w->f;
-        if (v == V_MOTION || v == V_DRAG || v == V_COULOMB)
+        m->u.motion.forces = v == V_DRAG        ? &w->drag
+                             : v == V_COULOMB   ? &w->coulomb
+                             : v == V_COULOMB_T ? &w->coulomb_t
+                                                : &w->f;
+        if (v == V_MOTION || v == V_DRAG || v == V_COULOMB || v == V_COULOMB_T)
             continue;
         isk_stage *st = isk_pipeline_add(pl, v == V_END ? &end_walls : &isk_stage_walls);
         st->u.walls.b = v == V_REST ? &w->floor : &w->box;

@@ -55,14 +55,15 @@ static inline double isk_k_gravity_fy(double m, double g) { return m * (-g); }
 /* Otpor(b).F: (-b*vx, -b*vy). */
 static inline double isk_k_drag(double v, double b) { return (-b) * v; }
 
-/* All ones when islessequal(|gx|, ISK_FORCE_LIMIT) and the same for gy
- * (false for a NaN), else 0; computed on the bit patterns: without its
- * sign a double's pattern orders as its value and a NaN's lies above the
- * infinity's, so (limit - |g|) has its top bit set exactly when the test
- * fails.  Integer operations only: a compare-and-select here made gcc sink
- * the force's multiplication behind a branch, which it cannot if-convert
- * (a multiply may trap), and the sound-mode loops did not vectorize. */
-static inline uint64_t isk_k_force_keep(double gx, double gy)
+/* A word whose top bit is set exactly when !islessequal(|gx|,
+ * ISK_FORCE_LIMIT) or the same for gy (a NaN fails too); computed on the
+ * bit patterns: without its sign a double's pattern orders as its value
+ * and a NaN's lies above the infinity's, so (limit - |g|) has its top bit
+ * set exactly when the test fails.  Integer operations only: a
+ * compare-and-select here made gcc sink the force's multiplication behind
+ * a branch, which it cannot if-convert (a multiply may trap), and the
+ * sound-mode loops did not vectorize. */
+static inline uint64_t isk_k_force_over(double gx, double gy)
 {
     const double limit = ISK_FORCE_LIMIT;
     uint64_t ux, uy, lim;
@@ -70,8 +71,12 @@ static inline uint64_t isk_k_force_keep(double gx, double gy)
     memcpy(&uy, &gy, sizeof uy);
     memcpy(&lim, &limit, sizeof lim);
     const uint64_t mag = 0x7FFFFFFFFFFFFFFFull;
-    return (((lim - (ux & mag)) | (lim - (uy & mag))) >> 63) - 1u;
+    return (lim - (ux & mag)) | (lim - (uy & mag));
 }
+
+/* All ones when both components are within ISK_FORCE_LIMIT (the test
+ * above passes), else 0. */
+static inline uint64_t isk_k_force_keep(double gx, double gy) { return (isk_k_force_over(gx, gy) >> 63) - 1u; }
 
 /* v where keep is all ones, +0.0 (all bits zero) where it is 0. */
 static inline double isk_k_keep(double v, uint64_t keep)
@@ -83,6 +88,14 @@ static inline double isk_k_keep(double v, uint64_t keep)
     return v;
 }
 
+/* pw_kind of isk_k_coulomb_law for an exponent known to be 2 or 1 but
+ * chosen at run time (the fused motion pass: one loop for any mix of
+ * potentials): d'^P = d' * e with e = d' clamped to [lo, hi].  (lo, hi) =
+ * (-inf, +inf) leaves e = d', so d'*d' (P = 2); (1, 1) makes e = 1, and
+ * d'*1 is d' exactly (P = 1); a NaN d' gives NaN either way.  Two quiet
+ * min/max, no select: the same bits as kinds 2 and 1. */
+#define ISK_K_PW_12 3
+
 /* CoulombovPotencijal.F for one particle, the thesis's operations in order:
  *   n = r_pot - r;  n.x *= xm;  d = |r_pot - r| (Euclidean, unaffected by xm)
  *   d' = (min > d) ? min : d            (min <= 0 never triggers: "off";
@@ -90,23 +103,40 @@ static inline double isk_k_keep(double v, uint64_t keep)
  *   mult = s / d'^P   with s = enabled*(Q*k) precomputed by the caller
  *   F = n * mult
  * pw_kind is a compile-time constant at every call site: 2 -> d'*d' (exactly
- * V8's d**2), 1 -> d', 0 -> pow(d', P).
- * Returns 1 when (fx, fy) is the force.  With sound != 0 a result that is
- * not finite or has a component beyond ISK_FORCE_LIMIT (the particle exactly
- * on a potential without min distance: 0*inf = NaN in the thesis; d'^P
- * underflowing; a huge force close to the centre) is replaced by (0, 0) and
- * the function returns 0: the caller then asks isk_k_coulomb_saturated for
- * the force (a rare fix-up, in a second pass). */
-static inline int isk_k_coulomb(double cx, double cy, double x, double y, double s, double xm,
-                                double minv, double P, int pw_kind, int sound, double *fx, double *fy)
+ * V8's d**2), 1 -> d', 0 -> pow(d', P), ISK_K_PW_12 -> by lo and hi (above).
+ * The law's force, no centre rule: (gx, gy) may be NaN or infinite. */
+static inline void isk_k_coulomb_law(double cx, double cy, double x, double y, double s, double xm, double minv,
+                                     double P, int pw_kind, double lo, double hi, double *gx, double *gy)
 {
     double dx = cx - x, dy = cy - y;
     double d = sqrt(dx * dx + dy * dy);
     double nx = dx * xm;
     double dd = isgreater(minv, d) ? minv : d;
-    double pw = pw_kind == 2 ? dd * dd : (pw_kind == 1 ? dd : pow(dd, P));
+    double pw;
+    if (pw_kind == ISK_K_PW_12) {
+        double e = isless(dd, hi) ? dd : hi;
+        e = isgreater(e, lo) ? e : lo;
+        pw = dd * e;
+    } else {
+        pw = pw_kind == 2 ? dd * dd : (pw_kind == 1 ? dd : pow(dd, P));
+    }
     double mult = s / pw;
-    double gx = nx * mult, gy = dy * mult;
+    *gx = nx * mult;
+    *gy = dy * mult;
+}
+
+/* The law with the centre rule: returns 1 when (fx, fy) is the law's
+ * force.  With sound != 0 a result that is not finite or has a component
+ * beyond ISK_FORCE_LIMIT (the particle exactly on a potential without min
+ * distance: 0*inf = NaN in the thesis; d'^P underflowing; a huge force
+ * close to the centre) is replaced by (0, 0) and the function returns 0:
+ * the caller then asks isk_k_coulomb_saturated for the force (a rare
+ * fix-up, in a second pass). */
+static inline int isk_k_coulomb(double cx, double cy, double x, double y, double s, double xm,
+                                double minv, double P, int pw_kind, int sound, double *fx, double *fy)
+{
+    double gx, gy;
+    isk_k_coulomb_law(cx, cy, x, y, s, xm, minv, P, pw_kind, 0.0, 0.0, &gx, &gy);
     if (!sound) {
         *fx = gx;
         *fy = gy;

@@ -3,6 +3,7 @@
 
 #include <math.h>
 #include <stdint.h>
+#include <string.h>
 
 #include "raster/span_simd.h" /* ISK__SPAN_AVX2, ISK__AVX2_FN, isk__have_avx2 */
 #include "sim/kernels.h"
@@ -91,19 +92,290 @@ static const fused_fn fused_table[1][16] = {ROW(fused_)};
 #endif
 #undef ROW
 
+/* ---- with potentials ----------------------------------------------------- */
+
+/* Up to four potentials act in the fused loop (the thesis's scenes have at
+ * most four: figure 29); more are left to the general path. */
+enum { POT_MAX = 4 };
+
+/* Everything the loops with potentials read besides the columns, fixed for
+ * the call.  Masks instead of more copies of the loop: gravity's term is
+ * and-ed with gm (+0.0 when g == 0: a term the general path leaves out, but
+ * +0.0 added to these sums changes nothing, see pot_step), the sound
+ * centre rule's test with sm, and each potential's exponent (2 or 1) is
+ * its clamp (lo, hi) of kernels.h's ISK_K_PW_12. */
+typedef struct pot_par {
+    double g, ax, ay, b, inv_h, dt;
+    uint64_t gm, sm;
+    double cx[POT_MAX], cy[POT_MAX], s[POT_MAX], xm[POT_MAX], minv[POT_MAX], lo[POT_MAX], hi[POT_MAX];
+} pot_par;
+
+/* One particle-step with np potentials, the general path's operations:
+ * F = (gravity + accel + drag) + P in forces.c's order, with
+ * P = (+0.0 + pot_1) + pot_2 ..., then the integrator; the new x, y, vx, vy
+ * in o.  One liberty, exact: F's sums start from their first term instead
+ * of from +0.0.  A sum a + b is -0.0 only when a and b both are (IEEE,
+ * round to nearest), so a chain of sums started from its first term has
+ * the bits of the same chain started from +0.0 unless every term is -0.0;
+ * F's last term, P, is never -0.0 (its own sum starts from +0.0), so F's
+ * bits are the same and two additions go.
+ * FIX = 0 (the vector loop): the law's forces as they are; returns a word
+ * whose top bit is set when the sound rule (sm) would replace some force,
+ * and then o is not the general path's.  FIX = 1 (pot_fixup): the sound
+ * rule applied as the general path does: the force replaced by +0.0 and,
+ * right after it, the saturated force added (that path's second pass). */
+static inline uint64_t pot_step(const pot_par *restrict p, double x0, double y0, double vx0, double vy0,
+                                double mi, double o[4], const int np, const int A, const int D, const int E,
+                                const int FIX)
+{
+    double ux = vx0, uy = vy0;
+    double fx = 0.0, fy = isk_k_keep(isk_k_gravity_fy(mi, p->g), p->gm);
+    if (A) {
+        fx = mi * p->ax;
+        fy = fy + mi * p->ay;
+    }
+    if (D) {
+        ux = isk_k_flush(ux);
+        uy = isk_k_flush(uy);
+        const double lim = mi * p->inv_h, be = isless(lim, p->b) ? lim : p->b;
+        fx = A ? fx + isk_k_drag(ux, be) : isk_k_drag(ux, be);
+        fy = fy + isk_k_drag(uy, be);
+    }
+    double sx = 0.0, sy = 0.0; /* the potentials' sums (the general path's memset) */
+    uint64_t over = 0;
+    for (int k = 0; k < np; k++) {
+        double gx, gy;
+        isk_k_coulomb_law(p->cx[k], p->cy[k], x0, y0, p->s[k], p->xm[k], p->minv[k], 0.0, ISK_K_PW_12, p->lo[k],
+                          p->hi[k], &gx, &gy);
+        if (!FIX) {
+            over |= isk_k_force_over(gx, gy);
+            sx = sx + gx;
+            sy = sy + gy;
+            continue;
+        }
+        const uint64_t keep = isk_k_force_keep(gx, gy) | ~p->sm;
+        sx = sx + isk_k_keep(gx, keep);
+        sy = sy + isk_k_keep(gy, keep);
+        if (!(keep & 1u)) {
+            isk_k_coulomb_saturated(p->cx[k], p->cy[k], x0, y0, p->s[k], p->xm[k], &gx, &gy);
+            sx = sx + gx;
+            sy = sy + gy;
+        }
+    }
+    fx = A || D ? fx + sx : sx;
+    fy = fy + sy;
+    double px = x0, py = y0;
+    if (E)
+        isk_k_euler(&px, &py, &ux, &uy, mi, fx, fy, p->dt);
+    else
+        isk_k_semi_euler(&px, &py, &ux, &uy, mi, fx, fy, p->dt);
+    o[0] = px;
+    o[1] = py;
+    o[2] = ux;
+    o[3] = uy;
+    return over & p->sm;
+}
+
+/* The block's state before the step, kept for the fix-up: the loop
+ * stores it as it reads it (stores only; its limit is the arithmetic).  As
+ * bit patterns: gcc 12 turned the loop's copies of doubles into four
+ * memcpy calls before it (loop distribution), which then read the block
+ * from memory before any arithmetic could overlap the reads: 1.5 ns a
+ * particle-step more at 10^6 particles. */
+typedef struct pot_save {
+    uint64_t x[ISK_SIM_BLOCK], y[ISK_SIM_BLOCK], vx[ISK_SIM_BLOCK], vy[ISK_SIM_BLOCK];
+} pot_save;
+
+static inline uint64_t bits_of(double v)
+{
+    uint64_t u;
+    memcpy(&u, &v, sizeof u);
+    return u;
+}
+
+static inline double double_of(uint64_t u)
+{
+    double v;
+    memcpy(&v, &u, sizeof v);
+    return v;
+}
+
+/* The loop: NP potentials, A constant acceleration, D drag, E explicit
+ * Euler, all compile-time.  Keeps the old state in sv and stores in *over
+ * the or of pot_step's words: when its top bit is set some force did not
+ * survive the sound rule, and the caller redoes the block (pot_fixup).
+ * Returns the or-ed non-finite bits: of the four new values for explicit
+ * Euler; of x and y alone for semi-implicit Euler, where x' = x + dt*v' is
+ * not finite whenever v' is not (dt*inf is infinite, or NaN for dt = 0),
+ * so the two say what the four would. */
+static inline uint64_t pot_loop(size_t n, double *restrict x, double *restrict y, double *restrict vx,
+                                double *restrict vy, const double *restrict m, const pot_par *restrict p,
+                                pot_save *restrict sv, uint64_t *over, const int NP, const int A, const int D,
+                                const int E)
+{
+    uint64_t acc = 0, ov = 0;
+    for (size_t i = 0; i < n; i++) {
+        const double x0 = x[i], y0 = y[i], vx0 = vx[i], vy0 = vy[i];
+        sv->x[i] = bits_of(x0);
+        sv->y[i] = bits_of(y0);
+        sv->vx[i] = bits_of(vx0);
+        sv->vy[i] = bits_of(vy0);
+        double o[4];
+        ov |= pot_step(p, x0, y0, vx0, vy0, m[i], o, NP, A, D, E, 0);
+        x[i] = o[0];
+        y[i] = o[1];
+        vx[i] = o[2];
+        vy[i] = o[3];
+        acc |= isk_k_nonfinite_bits(o[0]) | isk_k_nonfinite_bits(o[1]);
+        if (E)
+            acc |= isk_k_nonfinite_bits(o[2]) | isk_k_nonfinite_bits(o[3]);
+    }
+    *over = ov;
+    return acc;
+}
+
+/* The whole block stepped again from its old state, the sound rule as the
+ * general path applies it (scalar code, one copy for every combination:
+ * rare, a particle on or very near a potential, or a k*Q near the force
+ * limit).  Returns the non-finite flag in bit 63 as the loops do. */
+static uint64_t pot_fixup(size_t n, double *x, double *y, double *vx, double *vy, const double *m, const pot_par *p,
+                          const pot_save *sv, int np, int A, int D, int E)
+{
+    for (size_t i = 0; i < n; i++) {
+        double o[4];
+        pot_step(p, double_of(sv->x[i]), double_of(sv->y[i]), double_of(sv->vx[i]), double_of(sv->vy[i]), m[i], o,
+                 np, A, D, E, 1);
+        x[i] = o[0];
+        y[i] = o[1];
+        vx[i] = o[2];
+        vy[i] = o[3];
+    }
+    return (uint64_t)(isk_k_any_nonfinite2(n, x, y) | isk_k_any_nonfinite2(n, vx, vy)) << 63;
+}
+
+typedef uint64_t (*pot_fn)(size_t n, double *restrict x, double *restrict y, double *restrict vx,
+                           double *restrict vy, const double *restrict m, const pot_par *restrict p,
+                           pot_save *restrict sv, uint64_t *over);
+
+/* Each (NP, A, D, E) twice, portable and AVX2, as the loops above. */
+#define POT_AS(name, attr, NP, A, D, E)                                                                          \
+    static attr uint64_t name(size_t n, double *restrict x, double *restrict y, double *restrict vx,           \
+                              double *restrict vy, const double *restrict m, const pot_par *restrict p,        \
+                              pot_save *restrict sv, uint64_t *over)                                           \
+    {                                                                                                            \
+        return pot_loop(n, x, y, vx, vy, m, p, sv, over, NP, A, D, E);                                          \
+    }
+#if ISK__SPAN_AVX2
+#define POT(NP, A, D, E)                                                                                         \
+    POT_AS(pot_##NP##A##D##E, , NP, A, D, E) POT_AS(pot_avx2_##NP##A##D##E, ISK__AVX2_FN, NP, A, D, E)
+#else
+#define POT(NP, A, D, E) POT_AS(pot_##NP##A##D##E, , NP, A, D, E)
+#endif
+#define POT_NP(NP)                                                                                               \
+    POT(NP, 0, 0, 0) POT(NP, 0, 0, 1) POT(NP, 0, 1, 0) POT(NP, 0, 1, 1)                                         \
+    POT(NP, 1, 0, 0) POT(NP, 1, 0, 1) POT(NP, 1, 1, 0) POT(NP, 1, 1, 1)
+POT_NP(1) POT_NP(2) POT_NP(3) POT_NP(4)
+#undef POT_NP
+#undef POT
+#undef POT_AS
+
+/* Indexed by [avx2][NP - 1][A*4 + D*2 + E]. */
+#define ROW(p, NP) {p##NP##000, p##NP##001, p##NP##010, p##NP##011, p##NP##100, p##NP##101, p##NP##110, p##NP##111}
+#define ROWS(p) {ROW(p, 1), ROW(p, 2), ROW(p, 3), ROW(p, 4)}
+static const pot_fn pot_table[1 + ISK__SPAN_AVX2][POT_MAX][8] = {
+    ROWS(pot_),
+#if ISK__SPAN_AVX2
+    ROWS(pot_avx2_),
+#endif
+};
+#undef ROWS
+#undef ROW
+
+/* The potentials that act, in the general path's order (forces.c's
+ * isk_forces_eval_step and isk_force_potential): a disabled potential or
+ * one with k*Q == 0 is skipped there and here.  Returns their number, or
+ * -1 when the fused loop does not cover one of them (an exponent other
+ * than 1 or 2: pow(); a max-distance switch, which depends on the order of
+ * the particles and may switch the potential off; more than POT_MAX). */
+static int pot_collect(const isk_forces *f, pot_par *p)
+{
+    const size_t np = f->pick ? f->npick : f->npot;
+    int k = 0;
+    for (size_t j = 0; j < np; j++) {
+        const isk_potential *pot = &f->pot[f->pick ? f->pick[j] : j];
+        if (!pot->enabled)
+            continue;
+        if (pot->max_dist > 0.0)
+            return -1;
+        const double s = 1.0 * (pot->charge * pot->k); /* isk_force_potential's s */
+        if (s == 0.0)
+            continue;
+        if ((pot->P != 2.0 && pot->P != 1.0) || k == POT_MAX)
+            return -1;
+        p->cx[k] = pot->r.x;
+        p->cy[k] = pot->r.y;
+        p->s[k] = s;
+        p->xm[k] = pot->x_mult;
+        p->minv[k] = pot->min_dist;
+        p->lo[k] = pot->P == 2.0 ? -INFINITY : 1.0; /* ISK_K_PW_12 */
+        p->hi[k] = pot->P == 2.0 ? INFINITY : 1.0;
+        k++;
+    }
+    return k;
+}
+
+/* The loop with potentials over n particles, a block at a time (the
+ * saved state's size). */
+static uint64_t pot_run(int avx2, int np, int A, int D, int E, size_t n, double *x, double *y, double *vx,
+                        double *vy, const double *m, const pot_par *p)
+{
+    const pot_fn loop = pot_table[avx2 && isk__have_avx2()][np - 1][A * 4 + D * 2 + E];
+    pot_save sv;
+    uint64_t acc = 0;
+    for (size_t o = 0; o < n; o += ISK_SIM_BLOCK) {
+        const size_t c = n - o < ISK_SIM_BLOCK ? n - o : ISK_SIM_BLOCK;
+        uint64_t over;
+        uint64_t a = loop(c, x + o, y + o, vx + o, vy + o, m + o, p, &sv, &over);
+        if (over >> 63)
+            a = pot_fixup(c, x + o, y + o, vx + o, vy + o, m + o, p, &sv, np, A, D, E);
+        acc |= a;
+    }
+    return acc;
+}
+
 int isk_motion_fused_build(int avx2, isk_integrator method, const isk_forces *f, size_t n, double *x, double *y,
                            double *vx, double *vy, const double *m, double dt, int *nonfinite)
 {
     const int E = method == ISK_INTEGRATE_EULER;
-    if ((!E && method != ISK_INTEGRATE_SEMI_EULER) || isk_forces_potentials_on(f))
+    if (!E && method != ISK_INTEGRATE_SEMI_EULER)
+        return 0;
+    pot_par p;
+    const int np = pot_collect(f, &p);
+    if (np < 0)
         return 0;
     /* The tests isk_forces_eval_step makes, with the step h = |dt|. */
     const int G = f->gravity != 0.0, A = f->ax != 0.0 || f->ay != 0.0, D = f->drag != 0.0;
     const double h = fabs(dt);
     if (D && !(h > 0.0))
         return 0; /* the unsaturated drag of a zero step: left to the general path */
-    const fused_fn loop = fused_table[avx2 && isk__have_avx2()][G * 8 + A * 4 + D * 2 + E];
-    const uint64_t acc = loop(n, x, y, vx, vy, m, f->gravity, f->ax, f->ay, f->drag, D ? 1.0 / h : 0.0, dt);
+    const double inv_h = D ? 1.0 / h : 0.0;
+    uint64_t acc;
+    if (np == 0) {
+        /* No potential acts (or each one's k*Q is 0): the general path then
+         * adds P = +0.0 at most, which changes no sum (never -0.0). */
+        const fused_fn loop = fused_table[avx2 && isk__have_avx2()][G * 8 + A * 4 + D * 2 + E];
+        acc = loop(n, x, y, vx, vy, m, f->gravity, f->ax, f->ay, f->drag, inv_h, dt);
+    } else {
+        p.g = f->gravity;
+        p.gm = G ? ~(uint64_t)0 : 0;
+        p.ax = f->ax;
+        p.ay = f->ay;
+        p.b = f->drag;
+        p.inv_h = inv_h;
+        p.dt = dt;
+        p.sm = f->centre == ISK_FIDELITY_SOUND ? ~(uint64_t)0 : 0;
+        acc = pot_run(avx2, np, A, D, E, n, x, y, vx, vy, m, &p);
+    }
     *nonfinite = (int)(acc >> 63);
     return 1;
 }

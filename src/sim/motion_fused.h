@@ -1,12 +1,15 @@
 /* src/sim/motion_fused.h — forces + integrator in one pass over a block, for
- * the common case (internal).
+ * the common cases (internal).
  *
  * The general path of a motion stage makes seven passes over a block
  * (iskra/integrate.h's isk_integrate_block: clear fx and fy, gravity, drag
  * with its flush and saturation, the integrator, then the runner's two
- * non-finite checks).  When no potential acts and the integrator is
- * semi-implicit or explicit Euler, the same operations in the same order
- * per particle fit in one loop that reads x, y, vx, vy, m once and writes
+ * non-finite checks), and with potentials four more (clear px and py, a
+ * pass per potential, F += P).  When the integrator is semi-implicit or
+ * explicit Euler and each potential that acts has the exponent P = 2 or
+ * P = 1 and no max distance (at most four of them, all of the forces'
+ * potentials or its pick list), the same operations in the same order per
+ * particle fit in one loop that reads x, y, vx, vy, m once and writes
  * x, y, vx, vy once: 72 B a particle-step, the bandwidth limit's own count.
  *
  *     int nonfinite;
@@ -16,9 +19,21 @@
  * The bits are the general path's, for every input (tests/test_motion_fused.c):
  * the force sums start from +0.0 and add each force as the general path
  * does (0.0 + m*(-g) is not m*(-g) for a zero mass of negative sign, and
- * vx + c*(+0.0) turns a -0 velocity into +0), the drag flushes and
- * saturates as forces.c's drag stage, and the non-finite check is the same
- * bit test (isk_k_nonfinite_bits) of the same four new values. */
+ * vx + c*(+0.0) turns a -0 velocity into +0; with potentials the leading
+ * +0.0 goes where it provably changes no bit, motion_fused.c's pot_step),
+ * the drag flushes and saturates as forces.c's drag stage, the potentials
+ * are summed on their own from +0.0 in their order and added last, and
+ * the non-finite check is the same bit test (isk_k_nonfinite_bits).  Under
+ * the sound centre rule a block in which some force is not representable
+ * (a particle on or very near a potential) is stepped again from its old
+ * state by scalar code that replaces and saturates that force as forces.c
+ * does (its second pass).
+ *
+ * Declined (0, nothing touched; the general path runs): other integrators,
+ * an exponent other than 2 or 1 (pow()), a max distance (its switch-off
+ * depends on the particles' order and changes the potential), a fifth
+ * potential, drag with a zero step.  Potentials that do not act (disabled,
+ * or k*Q == 0) are skipped as forces.c skips them. */
 #ifndef ISKRA_SIM_MOTION_FUSED_H
 #define ISKRA_SIM_MOTION_FUSED_H
 
