@@ -8,9 +8,7 @@
  * angles exactly on and one to three ulps either side of table points,
  * angles in table steps around 2^31 (the AVX2 index's limit), 2^52, 2^62
  * (the slow reduction's), 2^63 and beyond, +-0, NaN, +-Inf, amplitudes
- * that flush.  Also: the lookups' own floor (isk_sinlut__floor_exact)
- * against libm's for every double near an integer, near every power of
- * two, and for random bit patterns. */
+ * that flush. */
 #include <criterion/criterion.h>
 
 #include <float.h>
@@ -22,7 +20,6 @@
 #include "iskra/integrate.h" /* ISK_SIM_BLOCK, ISK_FLUSH_TINY */
 #include "iskra/sinlut.h"
 #include "raster/span_simd.h" /* isk__have_avx2 */
-#include "sanitized.h"
 #include "sim/sway.h"
 
 enum { N = ISK_SIM_BLOCK, PAD = 3 };
@@ -262,65 +259,4 @@ Test(sway, same_bits_ordinary_block)
                 compare(&w, &in, 0, N, MODE_NAME[mode]);
             }
     }
-}
-
-/* ---- the lookups' floor --------------------------------------------------------- */
-
-static void check_floor(double v)
-{
-    const double got = isk_sinlut__floor_exact(v), want = floor(v);
-    if (!same(got, want))
-        cr_assert_fail("floor(%a): %a, libm %a", v, got, want);
-}
-
-/* v and its neighbours up to `k` ulps either side, both signs. */
-static void check_around(double v, int k)
-{
-    double up = v, down = v;
-    for (int j = 0; j <= k; j++) {
-        check_floor(up);
-        check_floor(-up);
-        check_floor(down);
-        check_floor(-down);
-        up = nextafter(up, INFINITY);
-        down = nextafter(down, -INFINITY);
-    }
-}
-
-Test(sway, floor_exact_near_integers_and_powers_of_two)
-{
-    const int range = TEST_SANITIZED ? 1 << 16 : 1 << 20;
-    for (int k = 0; k <= range; k++) { /* every integer up to 2^20, and the halves between */
-        check_around((double)k, 3);
-        check_around((double)k + 0.5, 2);
-    }
-    for (int e = -1074; e <= 1023; e++) { /* every power of two, every binade's integers near it */
-        const double p = ldexp(1.0, e);
-        check_around(p, 3);
-        check_around(p * 1.5, 2);
-        if (e >= 1)
-            check_around(p - 1.0, 2), check_around(p + 1.0, 2), check_around(p - 0.5, 2);
-    }
-    static const double special[] = {0.0, 5e-324, DBL_MIN, 0.5, 4503599627370495.5, 4503599627370496.0,
-                                     9007199254740991.0, 9007199254740992.0, DBL_MAX, INFINITY};
-    for (size_t i = 0; i < sizeof special / sizeof special[0]; i++)
-        check_around(special[i], 4);
-    check_floor(NAN);
-    check_floor(-NAN);
-    uint64_t s = 31;
-    const long random = TEST_SANITIZED ? 200000 : 4000000;
-    for (long i = 0; i < random; i++) { /* any bit pattern: every exponent, NaN payloads */
-        uint64_t u = lcg(&s) << 11 ^ lcg(&s);
-        double v;
-        memcpy(&v, &u, sizeof v);
-        check_floor(v);
-    }
-}
-
-/* What the lookups call is this floor, or libm's (one instruction there). */
-Test(sway, lookups_floor_is_exact)
-{
-    static const double v[] = {-0.0, 0.0, -0.5, 0.5, -1.0, 2.5, -2.5, 1e300, -1e-300, 4503599627370495.5};
-    for (size_t i = 0; i < sizeof v / sizeof v[0]; i++)
-        cr_assert(same(isk_sinlut__fl(v[i]), floor(v[i])), "%a", v[i]);
 }

@@ -106,31 +106,6 @@ double isk_sinlut_eval(const isk_sinlut *lut, isk_sinlut_mode mode, double theta
  * reduced angle in table steps, or NaN. */
 double isk_sinlut_reduce_slow(const isk_sinlut *lut, double theta);
 
-/* floor(t), bit for bit libm's floor for every double (-0.0, NaN and the
- * infinities included), without libm.  Why: on baseline x86-64 (no SSE4.1
- * roundsd) floor() is a library call, which costs a lookup more than the
- * rest of it.  For |t| < 2^52 the sum |t| + 2^52 has no bits below 1, so
- * (|t| + 2^52) - 2^52 is |t| rounded to an integer (exactly); with t's
- * sign put back (floor(-0.0) is -0.0, and -0.3 rounds to -0.0), it is one
- * too many where the rounding went up.  Larger, infinite and NaN t are
- * their own floor.  Needs double evaluation (FLT_EVAL_METHOD 0). */
-static inline double isk_sinlut__floor_exact(double t)
-{
-    const double two52 = 4503599627370496.0;
-    const double a = fabs(t);
-    double r = copysign((a + two52) - two52, t);
-    r = isgreater(r, t) ? r - 1.0 : r;
-    return isless(a, two52) ? r : t;
-}
-
-/* The lookups' floor: the one above where floor() is a call (x86-64
- * without SSE4.1), else floor() (one instruction).  The same bits. */
-#if defined(__x86_64__) && !defined(__SSE4_1__)
-#define isk_sinlut__fl(t) isk_sinlut__floor_exact(t)
-#else
-#define isk_sinlut__fl(t) floor(t)
-#endif
-
 /* theta in table steps, in range for a 64-bit conversion; 0 with *bad set
  * for NaN/Inf.  The test is false only for huge or non-finite angles. */
 static inline double isk_sinlut__steps(const isk_sinlut *lut, double theta, int *bad)
@@ -153,7 +128,7 @@ static inline double isk_sinlut__floor(const isk_sinlut *lut, double theta, uint
     double t = isk_sinlut__steps(lut, theta, &bad);
     if (bad)
         return NAN;
-    uint64_t i = ((uint64_t)(int64_t)isk_sinlut__fl(t) + quarter) & lut->mask;
+    uint64_t i = ((uint64_t)(int64_t)floor(t) + quarter) & lut->mask;
     return lut->table[i * lut->stride];
 }
 
@@ -163,7 +138,7 @@ static inline double isk_sinlut__round(const isk_sinlut *lut, double theta, uint
     double t = isk_sinlut__steps(lut, theta, &bad);
     if (bad)
         return NAN;
-    double fl = isk_sinlut__fl(t);
+    double fl = floor(t);
     /* t - fl is exact except just below 0, where it may round up to 1.0 —
      * which still selects the correct (nearest) entry. */
     uint64_t up = (t - fl) >= 0.5;
@@ -177,7 +152,7 @@ static inline double isk_sinlut__lerp(const isk_sinlut *lut, double theta, uint6
     double t = isk_sinlut__steps(lut, theta, &bad);
     if (bad)
         return NAN;
-    double fl = isk_sinlut__fl(t);
+    double fl = floor(t);
     double f = t - fl;
     uint64_t i = ((uint64_t)(int64_t)fl + quarter) & lut->mask;
     const double *p = lut->table + i * lut->stride;

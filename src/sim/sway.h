@@ -14,8 +14,11 @@
  *
  * Two builds of every (sine, faithful) loop, the same bits for every input
  * (tests/test_sway.c checks them against a frozen copy of the scalar code):
- *   portable: the lookups of iskra/sinlut.h one particle at a time (their
- *     floor needs no libm call on baseline x86-64);
+ *   portable: the lookups of iskra/sinlut.h one particle at a time (not
+ *     vectorized: the huge-angle branch, the 64-bit index, the table
+ *     reads; libm's floor is a call on baseline x86-64, but glibc runs
+ *     roundsd where the CPU has SSE4.1, and an inline exact floor measured
+ *     no faster);
  *   AVX2, chosen at run time: four particles a step for the three table
  *     sines.  floor by vroundpd (exact, as floor()); the index from a 32-bit
  *     conversion, whose bits mod N are the 64-bit conversion's while every
