@@ -1,5 +1,8 @@
-/* The fire thesis's stages: slowing (in both orders) and the horizontal
- * oscillation (see stage.h). */
+/* The fire thesis's stages: slowing (in both orders), the horizontal
+ * oscillation, and the drift and the oscillation in one pass (see stage.h
+ * and sway.h). */
+#include <string.h>
+
 #include "sim/block_prefetch.h"
 #include "sim/kernels.h"
 #include "sim/stage.h"
@@ -55,18 +58,27 @@ static void describe_drift_slow(const isk_stage *st, FILE *out)
 
 const isk_stage_kind isk_stage_drift_slow = {"drift", run_drift_slow, describe_drift_slow};
 
+/* The sway of step h as sim/sway.h takes it, and a hint for the next
+ * block's four columns of it. */
+static isk_sway sway_of(const isk_stage_osc *o, isk_block *b, double h)
+{
+    const isk_particles *p = b->p;
+    const double *const own[4] = {p->osc_amp, p->osc_phase, p->osc_omega, p->osc_offset};
+    for (int c = 0; c < 4; c++)
+        isk_block_prefetch_next_of(b, own[c]);
+    double decay = 1.0 - o->decay * h;
+    if (!(decay > 0.0))
+        decay = 0.0;
+    const isk_sway w = {o->table, o->mode, o->faithful, decay, h};
+    return w;
+}
+
 /* The sway's loops are sim/sway.h's (portable, and AVX2 at run time). */
 static void run_oscillate(const isk_stage *st, isk_block *b, double h)
 {
     isk_particles *p = b->p;
     const size_t o = b->first;
-    double decay = 1.0 - st->u.osc.decay * h;
-    if (!(decay > 0.0))
-        decay = 0.0;
-    const double *const own[4] = {p->osc_amp, p->osc_phase, p->osc_omega, p->osc_offset};
-    for (int c = 0; c < 4; c++)
-        isk_block_prefetch_next_of(b, own[c]);
-    const isk_sway w = {st->u.osc.table, st->u.osc.mode, st->u.osc.faithful, decay, h};
+    const isk_sway w = sway_of(&st->u.osc, b, h);
     isk_sway_run(&w, b->n, b->x, b->vx, p->osc_amp + o, p->osc_phase + o, p->osc_omega + o, p->osc_offset + o);
 }
 
@@ -80,4 +92,64 @@ static void describe_oscillate(const isk_stage *st, FILE *out)
 }
 
 const isk_stage_kind isk_stage_oscillate = {"oscillate", run_oscillate, describe_oscillate};
+
+/* The stages a drift+sway stage stands for, in list order: the drift (or
+ * the thesis-order drift), the slow stage for the sound order, the sway.
+ * Returns how many. */
+static int drift_sway_parts(const isk_stage *st, isk_stage part[3])
+{
+    memset(part, 0, 3 * sizeof *part);
+    int n = 0;
+    if (st->u.drift_sway.order == ISK_DRIFT_THESIS) {
+        part[n].kind = &isk_stage_drift_slow;
+        part[n].u.drift_slow.ax = st->u.drift_sway.ax;
+        part[n].u.drift_slow.ay = st->u.drift_sway.ay;
+        part[n++].u.drift_slow.slowing = st->u.drift_sway.slowing;
+    } else {
+        part[n].kind = &isk_stage_drift;
+        part[n].u.drift.ax = st->u.drift_sway.ax;
+        part[n++].u.drift.ay = st->u.drift_sway.ay;
+        if (st->u.drift_sway.order == ISK_DRIFT_SOUND) {
+            part[n].kind = &isk_stage_slow;
+            part[n++].u.slow.slowing = st->u.drift_sway.slowing;
+        }
+    }
+    part[n].kind = &isk_stage_oscillate;
+    part[n++].u.osc = st->u.drift_sway.osc;
+    return n;
+}
+
+/* One pass where the AVX2 build takes it (sim/sway.h), else the stages it
+ * stands for one after the other: the same bits either way. */
+static void run_drift_sway(const isk_stage *st, isk_block *b, double h)
+{
+    isk_block_prefetch_next(b, 4); /* the first stage to read the block */
+    isk_particles *p = b->p;
+    const size_t o = b->first;
+    const isk_sway w = sway_of(&st->u.drift_sway.osc, b, h);
+    const isk_sway_drift d = {st->u.drift_sway.ax, st->u.drift_sway.ay, slow_factor(st->u.drift_sway.slowing, h),
+                              st->u.drift_sway.order};
+    if (isk_sway_drift_build(1, &d, &w, b->n, b->x, b->y, b->vx, b->vy, p->osc_amp + o, p->osc_phase + o,
+                             p->osc_omega + o, p->osc_offset + o))
+        return;
+    isk_stage part[3];
+    const int n = drift_sway_parts(st, part);
+    for (int k = 0; k < n; k++)
+        part[k].kind->run(&part[k], b, h);
+}
+
+/* As the stages it stands for, a line each: `iskra describe` reads the
+ * same whether the list fused them or not. */
+static void describe_drift_sway(const isk_stage *st, FILE *out)
+{
+    isk_stage part[3];
+    const int n = drift_sway_parts(st, part);
+    part[0].kind->describe(&part[0], out);
+    for (int k = 1; k < n; k++) {
+        fputc('\n', out);
+        isk_stage_describe_line(&part[k], out);
+    }
+}
+
+const isk_stage_kind isk_stage_drift_sway = {"drift", run_drift_sway, describe_drift_sway};
 

@@ -107,12 +107,21 @@ static ISK__INLINE ISK__AVX2_FN __m256d sway_sine4(const sway_k4 *k, __m256d t, 
     return _mm256_add_pd(a, _mm256_mul_pd(_mm256_sub_pd(t, fl), _mm256_sub_pd(b, a)));
 }
 
-/* Particles i .. i+3, or 0 with nothing written when some angle is beyond
- * the 32-bit index (|t| >= 2^31, infinite or NaN). */
-static ISK__INLINE ISK__AVX2_FN int sway4_avx2(size_t i, double *restrict x, double *restrict vx,
-                                               double *restrict amp, double *restrict ph,
-                                               const double *restrict om, double *restrict off, const sway_k4 *k,
-                                               const int mode, const int faithful)
+/* +0.0 where |v| < ISK_FLUSH_TINY, else v (kernels.h's isk_k_flush: a
+ * quiet compare, so NaN stays). */
+static ISK__INLINE ISK__AVX2_FN __m256d sway_flush4(const sway_k4 *k, __m256d v)
+{
+    return _mm256_andnot_pd(_mm256_cmp_pd(_mm256_andnot_pd(k->sign, v), k->tiny, _CMP_LT_OQ), v);
+}
+
+/* The sway of particles i .. i+3, their x and vx in *X and *VX (the
+ * caller loads and stores those two; VX is read only when faithful), the
+ * other columns loaded and stored here.  0 with nothing changed when some
+ * angle is beyond the 32-bit index (|t| >= 2^31, infinite or NaN). */
+static ISK__INLINE ISK__AVX2_FN int sway4_core(size_t i, __m256d *X, __m256d *VX, double *restrict amp,
+                                               double *restrict ph, const double *restrict om,
+                                               double *restrict off, const sway_k4 *k, const int mode,
+                                               const int faithful)
 {
     const __m256d p = _mm256_add_pd(_mm256_loadu_pd(ph + i), _mm256_mul_pd(_mm256_loadu_pd(om + i), k->h));
     const __m256d t = _mm256_mul_pd(p, k->scale);
@@ -123,14 +132,26 @@ static ISK__INLINE ISK__AVX2_FN int sway4_avx2(size_t i, double *restrict x, dou
     const __m256d s = _mm256_mul_pd(A, sway_sine4(k, t, mode));
     const __m256d dx = _mm256_sub_pd(s, _mm256_loadu_pd(off + i));
     _mm256_storeu_pd(ph + i, p);
-    _mm256_storeu_pd(x + i, _mm256_add_pd(_mm256_loadu_pd(x + i), dx));
+    *X = _mm256_add_pd(*X, dx);
     if (faithful)
-        _mm256_storeu_pd(vx + i, _mm256_add_pd(_mm256_loadu_pd(vx + i), dx));
+        *VX = _mm256_add_pd(*VX, dx);
     _mm256_storeu_pd(off + i, s);
-    /* flush: +0.0 where |amp*decay| < ISK_FLUSH_TINY (quiet: NaN stays) */
-    const __m256d na = _mm256_mul_pd(A, k->decay);
-    const __m256d tiny = _mm256_cmp_pd(_mm256_andnot_pd(k->sign, na), k->tiny, _CMP_LT_OQ);
-    _mm256_storeu_pd(amp + i, _mm256_andnot_pd(tiny, na));
+    _mm256_storeu_pd(amp + i, sway_flush4(k, _mm256_mul_pd(A, k->decay)));
+    return 1;
+}
+
+/* Particles i .. i+3, or 0 with nothing written (sway4_core). */
+static ISK__INLINE ISK__AVX2_FN int sway4_avx2(size_t i, double *restrict x, double *restrict vx,
+                                               double *restrict amp, double *restrict ph,
+                                               const double *restrict om, double *restrict off, const sway_k4 *k,
+                                               const int mode, const int faithful)
+{
+    __m256d X = _mm256_loadu_pd(x + i), VX = faithful ? _mm256_loadu_pd(vx + i) : X;
+    if (!sway4_core(i, &X, &VX, amp, ph, om, off, k, mode, faithful))
+        return 0;
+    _mm256_storeu_pd(x + i, X);
+    if (faithful)
+        _mm256_storeu_pd(vx + i, VX);
     return 1;
 }
 
@@ -158,6 +179,132 @@ static ISK__INLINE ISK__AVX2_FN void sway_loop_avx2(size_t n, double *restrict x
 SWAY_AVX2(sway_avx2_00, 0, 0) SWAY_AVX2(sway_avx2_01, 0, 1) SWAY_AVX2(sway_avx2_10, 1, 0)
 SWAY_AVX2(sway_avx2_11, 1, 1) SWAY_AVX2(sway_avx2_20, 2, 0) SWAY_AVX2(sway_avx2_21, 2, 1)
 #undef SWAY_AVX2
+#endif
+
+/* ---- the drift, then the sway, in one pass ------------------------------------ */
+#if ISK__SPAN_AVX2
+
+/* The drift's constants for a block: dvx = ax*h and dvy = ay*h as the
+ * drift stages form them; keep_vx where vx is left as it is (the plain
+ * drift with ax == 0, whose loop does not store vx: v + 0 would turn a
+ * -0 into +0). */
+typedef struct drift_c {
+    double dvx, dvy, f, h;
+    int keep_vx;
+} drift_c;
+
+static drift_c drift_c_of(const isk_sway_drift *d, double h)
+{
+    drift_c c = {d->ax * h, d->ay * h, d->f, h, d->order != ISK_DRIFT_THESIS && d->ax == 0.0};
+    return c;
+}
+
+/* Particle i's drift, the drift stages' operations (stage_motion.c's
+ * drift_loop, stage_fire.c's run_drift_slow and run_slow) in their order. */
+static inline void drift_one(size_t i, double *restrict x, double *restrict y, double *restrict vx,
+                             double *restrict vy, const drift_c *c, const int order)
+{
+    double wx, wy;
+    if (order == ISK_DRIFT_THESIS) {
+        wx = isk_k_flush((vx[i] + c->dvx) * c->f);
+        wy = isk_k_flush((vy[i] + c->dvy) * c->f);
+    } else {
+        wx = c->keep_vx ? vx[i] : vx[i] + c->dvx;
+        wy = vy[i] + c->dvy;
+    }
+    x[i] = x[i] + c->h * wx;
+    y[i] = y[i] + c->h * wy;
+    if (order == ISK_DRIFT_SOUND) {
+        wx = isk_k_flush(wx * c->f);
+        wy = isk_k_flush(wy * c->f);
+    }
+    vx[i] = wx;
+    vy[i] = wy;
+}
+
+typedef struct drift_k4 {
+    __m256d dvx, dvy, f, keep_vx; /* keep_vx: all ones or all zeros */
+} drift_k4;
+
+/* Particles i .. i+3: drift_one's operations; y and vy stored, the new x
+ * and vx in *X and *VX for the sway. */
+static ISK__INLINE ISK__AVX2_FN void drift4_avx2(size_t i, double *restrict x, double *restrict y,
+                                                 double *restrict vx, double *restrict vy, const sway_k4 *k,
+                                                 const drift_k4 *d, const int order, __m256d *X, __m256d *VX)
+{
+    const __m256d ux = _mm256_loadu_pd(vx + i), uy = _mm256_loadu_pd(vy + i);
+    __m256d wx, wy;
+    if (order == ISK_DRIFT_THESIS) {
+        wx = sway_flush4(k, _mm256_mul_pd(_mm256_add_pd(ux, d->dvx), d->f));
+        wy = sway_flush4(k, _mm256_mul_pd(_mm256_add_pd(uy, d->dvy), d->f));
+    } else {
+        wx = _mm256_blendv_pd(_mm256_add_pd(ux, d->dvx), ux, d->keep_vx);
+        wy = _mm256_add_pd(uy, d->dvy);
+    }
+    *X = _mm256_add_pd(_mm256_loadu_pd(x + i), _mm256_mul_pd(k->h, wx));
+    _mm256_storeu_pd(y + i, _mm256_add_pd(_mm256_loadu_pd(y + i), _mm256_mul_pd(k->h, wy)));
+    if (order == ISK_DRIFT_SOUND) {
+        wx = sway_flush4(k, _mm256_mul_pd(wx, d->f));
+        wy = sway_flush4(k, _mm256_mul_pd(wy, d->f));
+    }
+    _mm256_storeu_pd(vy + i, wy);
+    *VX = wx;
+}
+
+static ISK__INLINE ISK__AVX2_FN void drift_sway_avx2(size_t n, double *restrict x, double *restrict y,
+                                                     double *restrict vx, double *restrict vy,
+                                                     double *restrict amp, double *restrict ph,
+                                                     const double *restrict om, double *restrict off,
+                                                     const drift_c *c, const isk_sway *w, const int order,
+                                                     const int mode, const int faithful)
+{
+    const sway_k4 k = sway_k4_of(w);
+    const drift_k4 d = {_mm256_set1_pd(c->dvx), _mm256_set1_pd(c->dvy), _mm256_set1_pd(c->f),
+                        _mm256_castsi256_pd(_mm256_set1_epi64x(c->keep_vx ? -1 : 0))};
+    /* vx unchanged (the plain drift with ax == 0, no coupling) is not
+     * stored, as the drift's loop does not: its cache lines stay clean */
+    const int store_vx = faithful || order != ISK_DRIFT_PLAIN || !c->keep_vx;
+    size_t i = 0;
+    for (; i + 4 <= n; i += 4) {
+        __m256d X, VX;
+        drift4_avx2(i, x, y, vx, vy, &k, &d, order, &X, &VX);
+        const int swayed = sway4_core(i, &X, &VX, amp, ph, om, off, &k, mode, faithful);
+        _mm256_storeu_pd(x + i, X);
+        if (store_vx)
+            _mm256_storeu_pd(vx + i, VX);
+        if (!swayed) /* the drift is done: the sway one by one */
+            for (size_t j = i; j < i + 4; j++)
+                sway_one(j, x, vx, amp, ph, om, off, w, mode, faithful);
+    }
+    for (; i < n; i++) {
+        drift_one(i, x, y, vx, vy, c, order);
+        sway_one(i, x, vx, amp, ph, om, off, w, mode, faithful);
+    }
+}
+
+typedef void (*drift_sway_fn)(size_t, double *, double *, double *, double *, double *, double *, const double *,
+                              double *, const drift_c *, const isk_sway *);
+
+#define DRIFT_SWAY(order, mode, faithful)                                                                        \
+    static ISK__AVX2_FN void drift_sway_##order##mode##faithful(size_t n, double *x, double *y, double *vx,       \
+                                                                double *vy, double *amp, double *ph,             \
+                                                                const double *om, double *off, const drift_c *c, \
+                                                                const isk_sway *w)                               \
+    {                                                                                                            \
+        drift_sway_avx2(n, x, y, vx, vy, amp, ph, om, off, c, w, order, mode, faithful);                        \
+    }
+#define DRIFT_SWAY_ORDER(order)                                                                                  \
+    DRIFT_SWAY(order, 0, 0) DRIFT_SWAY(order, 0, 1) DRIFT_SWAY(order, 1, 0) DRIFT_SWAY(order, 1, 1)             \
+    DRIFT_SWAY(order, 2, 0) DRIFT_SWAY(order, 2, 1)
+DRIFT_SWAY_ORDER(0) DRIFT_SWAY_ORDER(1) DRIFT_SWAY_ORDER(2)
+#undef DRIFT_SWAY_ORDER
+#undef DRIFT_SWAY
+
+/* [order][mode * 2 + faithful], the three table sines. */
+#define ROW(o) {drift_sway_##o##00, drift_sway_##o##01, drift_sway_##o##10, drift_sway_##o##11, \
+                drift_sway_##o##20, drift_sway_##o##21}
+static const drift_sway_fn drift_sway_loops[3][6] = {ROW(0), ROW(1), ROW(2)};
+#undef ROW
 #endif
 
 /* [avx2][mode][faithful], modes in isk_sinlut_mode order; libm's sin has
@@ -190,3 +337,19 @@ void isk_sway_run(const isk_sway *w, size_t n, double *x, double *vx, double *am
     isk_sway_build(1, w, n, x, vx, amp, phase, omega, offset);
 }
 
+int isk_sway_drift_build(int avx2, const isk_sway_drift *d, const isk_sway *w, size_t n, double *x, double *y,
+                         double *vx, double *vy, double *amp, double *phase, const double *omega, double *offset)
+{
+#if ISK__SPAN_AVX2
+    const unsigned order = (unsigned)d->order, mode = (unsigned)w->mode;
+    if (!avx2 || order > ISK_DRIFT_SOUND || mode >= ISK_SINLUT_LIBM || !gatherable(w->table) || !isk__have_avx2())
+        return 0;
+    const drift_c c = drift_c_of(d, w->h);
+    drift_sway_loops[order][mode * 2 + (w->faithful != 0)](n, x, y, vx, vy, amp, phase, omega, offset, &c, w);
+    return 1;
+#else
+    (void)avx2, (void)d, (void)w, (void)n, (void)x, (void)y, (void)vx, (void)vy;
+    (void)amp, (void)phase, (void)omega, (void)offset;
+    return 0;
+#endif
+}

@@ -27,7 +27,15 @@
  *     code (huge angles take isk_sinlut_reduce_slow there).  libm's sin
  *     stays one particle at a time (no vector sin without -ffast-math).
  * The same IEEE operations in the same order either way (no FMA:
- * -ffp-contract=off, and the avx2 target has none). */
+ * -ffp-contract=off, and the avx2 target has none).
+ *
+ * In a fire's list the sway follows the drift (the constant acceleration
+ * with semi-implicit Euler, maybe slowed), and isk_sway_drift_build runs
+ * both in one pass: the block's x and vx stay in registers from the one
+ * to the other, and the eight columns stream together.  AVX2 only; where
+ * it declines, the caller runs the stages one after the other, which
+ * gives the same bits (tests/test_sway.c checks both against the frozen
+ * scalar code). */
 #ifndef ISKRA_SIM_SWAY_H
 #define ISKRA_SIM_SWAY_H
 
@@ -46,6 +54,25 @@ typedef struct isk_sway {
 /* Sways the n particles (columns offset to the first). */
 void isk_sway_run(const isk_sway *w, size_t n, double *x, double *vx, double *amp, double *phase,
                   const double *omega, double *offset);
+
+/* The drift before the sway (what isk_stage_drift_sway fuses). */
+typedef enum isk_drift_order {
+    ISK_DRIFT_PLAIN = 0,  /* isk_stage_drift: v += a*h; p += h*v (vx kept as it is when ax == 0) */
+    ISK_DRIFT_THESIS = 1, /* isk_stage_drift_slow: v = flush((v + a*h)*f); p += h*v */
+    ISK_DRIFT_SOUND = 2   /* isk_stage_drift, then isk_stage_slow: v += a*h; p += h*v; v = flush(v*f) */
+} isk_drift_order;
+
+typedef struct isk_sway_drift {
+    double ax, ay;         /* the constant acceleration */
+    double f;              /* the slowing factor max(0, 1 - slowing*h) (THESIS, SOUND) */
+    isk_drift_order order;
+} isk_sway_drift;
+
+/* The drift d with step w->h, then the sway w, of the n particles in one
+ * pass: 1 when the AVX2 build ran (avx2 != 0, the CPU has it, a table sine
+ * and a table whose offsets fit 32 bits); else 0, touching nothing. */
+int isk_sway_drift_build(int avx2, const isk_sway_drift *d, const isk_sway *w, size_t n, double *x, double *y,
+                         double *vx, double *vy, double *amp, double *phase, const double *omega, double *offset);
 
 /* The same with the build chosen: avx2 = 0 the portable loops, 1 the AVX2
  * ones when isk__have_avx2() (raster/span_simd.h), else the portable ones
