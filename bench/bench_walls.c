@@ -16,8 +16,9 @@
  *     scratch).  Footprint 40 B a particle.
  *   fire: the drift with the thesis's slowing reads and writes x, y, vx, vy
  *     (no mass): 64 B; the sway reads osc_amp, osc_phase, osc_omega,
- *     osc_offset and writes osc_amp, osc_phase, osc_offset (x and vx are in
- *     L1): 56 B; 120 B in all.  Footprint 64 B a particle.
+ *     osc_offset and writes osc_amp, osc_phase, osc_offset (it changes x
+ *     and vx too, which the drift has read and writes anyway): 56 B; 120 B
+ *     in all, as two stages or in one pass.  Footprint 64 B a particle.
  * Issue 12's goal for every stage set: within 1.5x of its limit.
  *
  * Variants, each a pipeline of the library's block runner over the same
