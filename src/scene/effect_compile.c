@@ -6,6 +6,9 @@
  *   pipeline:     field (radial, tangential, turbulence) -> remember (deflectors, sound walls) ->
  *                 drift | integrate -> slow ->
  *                 oscillate -> walls -> deflect -> spin -> age
+ *                 (a drift with an oscillate after it, and the slow between
+ *                 them if any: one drift+sway stage doing them in one pass,
+ *                 which describes itself as them)
  *   substep end:  carry (local space) -> spawn (streams) -> cull (finite lives, killing deflectors)
  *
  * A force no emitter references, a zero-strength force, a disabled
@@ -71,6 +74,19 @@ static int gather_field(isk_effect *e, fx_group *g)
                 isk_field_turbulence(fd->strength, fd->scale, fd->speed, isk_noise_key(d->seed, em->forces[i]));
     }
     return f->radial != 0 || f->tangential != 0 || f->nturb > 0;
+}
+
+/* The sway's parameters, for the oscillate stage or the drift+sway one. */
+static void osc_params(isk_stage_osc *o, isk_effect *e, const isk_emitter_def *em)
+{
+    o->decay = em->osc_decay;
+    o->table = &e->sin_table;
+    o->mode = em->osc_table;
+    o->faithful = em->osc_faithful;
+    o->omega_min = em->osc_omega_min;
+    o->omega_max = em->osc_omega_max;
+    o->amp_min = em->osc_amp_min;
+    o->amp_max = em->osc_amp_max;
 }
 
 #define ADD(kind) ((st = isk_pipeline_add(&g->pipeline, &(kind))) != NULL)
@@ -148,7 +164,18 @@ isk_status fx_compile(isk_effect *e, fx_group *g)
     /* The thesis's jitter applies the constant part of the acceleration. */
     g->const_ax = f->ax;
     g->const_ay = f->ay - f->gravity;
-    if (fast) {
+    /* The sway right after the drift (no stage between them but the sound
+     * order's slow): both in one pass, one stage that stands for them all. */
+    const int sway = g->store.osc_amp != NULL, drift_sway = fast && sway;
+    if (drift_sway) {
+        if (!ADD(isk_stage_drift_sway))
+            return ISK_ERR_FULL;
+        st->u.drift_sway.ax = g->const_ax;
+        st->u.drift_sway.ay = g->const_ay;
+        st->u.drift_sway.slowing = em->slowing > 0 ? em->slowing : 0.0;
+        st->u.drift_sway.order = fused_slow ? ISK_DRIFT_THESIS : em->slowing > 0 ? ISK_DRIFT_SOUND : ISK_DRIFT_PLAIN;
+        osc_params(&st->u.drift_sway.osc, e, em);
+    } else if (fast) {
         if (fused_slow) {
             if (!ADD(isk_stage_drift_slow))
                 return ISK_ERR_FULL;
@@ -167,22 +194,15 @@ isk_status fx_compile(isk_effect *e, fx_group *g)
         st->u.motion.method = g->integrator;
         st->u.motion.forces = f;
     }
-    if (em->slowing > 0 && !fused_slow) {
+    if (em->slowing > 0 && !fused_slow && !drift_sway) {
         if (!ADD(isk_stage_slow))
             return ISK_ERR_FULL;
         st->u.slow.slowing = em->slowing;
     }
-    if (g->store.osc_amp) {
+    if (sway && !drift_sway) {
         if (!ADD(isk_stage_oscillate))
             return ISK_ERR_FULL;
-        st->u.osc.decay = em->osc_decay;
-        st->u.osc.table = &e->sin_table;
-        st->u.osc.mode = em->osc_table;
-        st->u.osc.faithful = em->osc_faithful;
-        st->u.osc.omega_min = em->osc_omega_min;
-        st->u.osc.omega_max = em->osc_omega_max;
-        st->u.osc.amp_min = em->osc_amp_min;
-        st->u.osc.amp_max = em->osc_amp_max;
+        osc_params(&st->u.osc, e, em);
     }
     if (walls && !em->draw_before_bounce) {
         if (!ADD(isk_stage_walls))

@@ -69,11 +69,16 @@ int isk_pipeline_run_pool(const isk_pipeline *pl, isk_particles *p, size_t begin
     return nonfinite;
 }
 
+void isk_stage_describe_line(const isk_stage *st, FILE *out)
+{
+    fprintf(out, "  %-9s ", st->kind->name);
+    st->kind->describe(st, out);
+}
+
 void isk_pipeline_describe(const isk_pipeline *pl, FILE *out)
 {
     for (int k = 0; k < pl->n; k++) {
-        fprintf(out, "  %-9s ", pl->stage[k].kind->name);
-        pl->stage[k].kind->describe(&pl->stage[k], out);
+        isk_stage_describe_line(&pl->stage[k], out);
         fputc('\n', out);
     }
 }

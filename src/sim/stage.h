@@ -25,7 +25,11 @@
  * A stage kind is a row of plain data: its name (for `iskra describe`), its
  * kernel, and a function that writes its parameters in words.  Adding a
  * stage is one kind plus its kernel; no switch anywhere dispatches on it.
- * A stage the scene does not use is simply not in the list.
+ * A stage the scene does not use is simply not in the list.  Stages that
+ * run one after the other on the same columns may also be one kind doing
+ * them in one pass (isk_stage_drift_sway: the drift, the slowing, the
+ * sway), chosen by the list's compiler; it describes itself as the stages
+ * it stands for, and gives their bits.
  */
 #ifndef ISKRA_SIM_STAGE_H
 #define ISKRA_SIM_STAGE_H
@@ -41,6 +45,7 @@
 #include "iskra/particles.h"
 #include "iskra/rng.h"
 #include "iskra/sinlut.h"
+#include "sim/sway.h" /* isk_drift_order */
 
 /* What every stage of one block may use: the store (for its optional
  * columns), offset pointers to the block's first particle, and the
@@ -53,6 +58,16 @@ typedef struct isk_block {
 } isk_block;
 
 typedef struct isk_stage isk_stage;
+
+/* The sway's parameters (isk_stage_oscillate, and the sway of
+ * isk_stage_drift_sway). */
+typedef struct isk_stage_osc {
+    double decay;                                    /* amplitude *= max(0, 1 - decay*h) */
+    const isk_sinlut *table;
+    isk_sinlut_mode mode;                            /* how the sine is read (ISK_SINLUT_LIBM: sin) */
+    int faithful;                                    /* 1: also add the offset change to vx */
+    double omega_min, omega_max, amp_min, amp_max;   /* for describe only */
+} isk_stage_osc;
 
 typedef struct isk_stage_kind {
     const char *name;                                        /* "drift" */
@@ -69,13 +84,13 @@ struct isk_stage {
         struct { double ax, ay, slowing; } drift_slow;       /* isk_stage_drift_slow */
         struct { isk_integrator method; isk_forces *forces; } motion;
         struct { double slowing; } slow;
+        isk_stage_osc osc;                                   /* isk_stage_oscillate */
         struct {
-            double decay;                                    /* amplitude *= max(0, 1 - decay*h) */
-            const isk_sinlut *table;
-            isk_sinlut_mode mode;                            /* how the sine is read (ISK_SINLUT_LIBM: sin) */
-            int faithful;                                    /* 1: also add the offset change to vx */
-            double omega_min, omega_max, amp_min, amp_max;   /* for describe only */
-        } osc;
+            double ax, ay;                                   /* the drift's constant acceleration */
+            double slowing;                                  /* order THESIS or SOUND: the slowing */
+            isk_drift_order order;                           /* which drift, with or without the slow stage */
+            isk_stage_osc osc;
+        } drift_sway;                                        /* isk_stage_drift_sway */
         struct {
             const isk_bounds *b;
             double drag;                                     /* the motion's linear drag b (impact.h) */
@@ -126,12 +141,16 @@ int isk_pipeline_run_pool(const isk_pipeline *pl, isk_particles *p, size_t begin
                           struct isk_pool *pool);
 /* One line per stage: "  NAME      parameters". */
 void isk_pipeline_describe(const isk_pipeline *pl, FILE *out);
+/* One stage's line without its newline (for a stage that describes itself
+ * as the stages it fuses). */
+void isk_stage_describe_line(const isk_stage *st, FILE *out);
 
 /* The stage kinds, in the only order they ever appear in a list. */
 extern const isk_stage_kind isk_stage_field;      /* position-dependent accelerations (src/sim/field.h) */
 extern const isk_stage_kind isk_stage_remember;   /* the state before the move (bounces at impact) */
 extern const isk_stage_kind isk_stage_drift;      /* constant acceleration + semi-implicit Euler, no mass */
 extern const isk_stage_kind isk_stage_drift_slow; /* the same with the fire thesis's slowing in between */
+extern const isk_stage_kind isk_stage_drift_sway; /* drift or drift_slow (+ slow), then oscillate, in one pass */
 extern const isk_stage_kind isk_stage_motion;     /* forces + an integrator (isk_integrate_block) */
 extern const isk_stage_kind isk_stage_slow;       /* v *= max(0, 1 - slowing*h) */
 extern const isk_stage_kind isk_stage_oscillate;  /* the fire thesis's horizontal sway (ISK_PARTICLES_OSC) */

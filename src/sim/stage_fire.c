@@ -1,10 +1,12 @@
-/* The fire thesis's stages: slowing (in both orders) and the horizontal
- * oscillation (see stage.h). */
-#include <math.h>
+/* The fire thesis's stages: slowing (in both orders), the horizontal
+ * oscillation, and the drift and the oscillation in one pass (see stage.h
+ * and sway.h). */
+#include <string.h>
 
 #include "sim/block_prefetch.h"
 #include "sim/kernels.h"
 #include "sim/stage.h"
+#include "sim/sway.h"
 
 /* The fire thesis's 1 - slowing*dt, clamped so a long frame can stop a
  * particle but never reverse it. */
@@ -56,64 +58,28 @@ static void describe_drift_slow(const isk_stage *st, FILE *out)
 
 const isk_stage_kind isk_stage_drift_slow = {"drift", run_drift_slow, describe_drift_slow};
 
-/* The sine of the sway, read as the emitter asks: `mode` is a constant at
- * every call of osc_loop below, so the loop has no per-particle branch. */
-static inline double osc_sine(const isk_sinlut *t, const int mode, double ph)
+/* The sway of step h as sim/sway.h takes it, and a hint for the next
+ * block's four columns of it. */
+static isk_sway sway_of(const isk_stage_osc *o, isk_block *b, double h)
 {
-    switch (mode) {
-    case ISK_SINLUT_FLOOR: return isk_sinlut_floor(t, ph);
-    case ISK_SINLUT_ROUND: return isk_sinlut_round(t, ph);
-    case ISK_SINLUT_LERP: return isk_sinlut_lerp(t, ph);
-    default: return sin(ph);
-    }
+    const isk_particles *p = b->p;
+    const double *const own[4] = {p->osc_amp, p->osc_phase, p->osc_omega, p->osc_offset};
+    for (int c = 0; c < 4; c++)
+        isk_block_prefetch_next_of(b, own[c]);
+    double decay = 1.0 - o->decay * h;
+    if (!(decay > 0.0))
+        decay = 0.0;
+    const isk_sway w = {o->table, o->mode, o->faithful, decay, h};
+    return w;
 }
 
-/* One loop per (sine, faithful) choice: both are constants at each call. */
-static inline void osc_loop(size_t n, double *restrict x, double *restrict vx, double *restrict amp,
-                            double *restrict ph, const double *restrict om, double *restrict off, double decay,
-                            const isk_sinlut *table, const int mode, const int faithful, double h)
-{
-    for (size_t i = 0; i < n; i++) {
-        ph[i] += om[i] * h;
-        double s = amp[i] * osc_sine(table, mode, ph[i]);
-        double dx = s - off[i];
-        x[i] += dx;
-        if (faithful)
-            vx[i] += dx;
-        off[i] = s;
-        amp[i] = isk_k_flush(amp[i] * decay);
-    }
-}
-
-#define OSC_LOOP(mode, faithful)                                                                                 \
-    static void osc_##mode##_##faithful(size_t n, double *x, double *vx, double *amp, double *ph, const double *om, \
-                                        double *off, double decay, const isk_sinlut *t, double h)                  \
-    {                                                                                                            \
-        osc_loop(n, x, vx, amp, ph, om, off, decay, t, mode, faithful, h);                                       \
-    }
-OSC_LOOP(0, 0) OSC_LOOP(0, 1) OSC_LOOP(1, 0) OSC_LOOP(1, 1) OSC_LOOP(2, 0) OSC_LOOP(2, 1) OSC_LOOP(3, 0) OSC_LOOP(3, 1)
-#undef OSC_LOOP
-
-typedef void (*osc_fn)(size_t, double *, double *, double *, double *, const double *, double *, double,
-                       const isk_sinlut *, double);
-/* [mode][faithful], modes in isk_sinlut_mode order. */
-static const osc_fn osc_loops[ISK_SINLUT_MODE_COUNT][2] = {
-    {osc_0_0, osc_0_1}, {osc_1_0, osc_1_1}, {osc_2_0, osc_2_1}, {osc_3_0, osc_3_1},
-};
-
+/* The sway's loops are sim/sway.h's (portable, and AVX2 at run time). */
 static void run_oscillate(const isk_stage *st, isk_block *b, double h)
 {
     isk_particles *p = b->p;
     const size_t o = b->first;
-    double decay = 1.0 - st->u.osc.decay * h;
-    if (!(decay > 0.0))
-        decay = 0.0;
-    double *amp = p->osc_amp + o, *ph = p->osc_phase + o, *om = p->osc_omega + o, *off = p->osc_offset + o;
-    const double *const own[4] = {p->osc_amp, p->osc_phase, p->osc_omega, p->osc_offset};
-    for (int c = 0; c < 4; c++)
-        isk_block_prefetch_next_of(b, own[c]);
-    const unsigned mode = (unsigned)st->u.osc.mode < ISK_SINLUT_MODE_COUNT ? (unsigned)st->u.osc.mode : ISK_SINLUT_LIBM;
-    osc_loops[mode][st->u.osc.faithful != 0](b->n, b->x, b->vx, amp, ph, om, off, decay, st->u.osc.table, h);
+    const isk_sway w = sway_of(&st->u.osc, b, h);
+    isk_sway_run(&w, b->n, b->x, b->vx, p->osc_amp + o, p->osc_phase + o, p->osc_omega + o, p->osc_offset + o);
 }
 
 static void describe_oscillate(const isk_stage *st, FILE *out)
@@ -126,3 +92,64 @@ static void describe_oscillate(const isk_stage *st, FILE *out)
 }
 
 const isk_stage_kind isk_stage_oscillate = {"oscillate", run_oscillate, describe_oscillate};
+
+/* The stages a drift+sway stage stands for, in list order: the drift (or
+ * the thesis-order drift), the slow stage for the sound order, the sway.
+ * Returns how many. */
+static int drift_sway_parts(const isk_stage *st, isk_stage part[3])
+{
+    memset(part, 0, 3 * sizeof *part);
+    int n = 0;
+    if (st->u.drift_sway.order == ISK_DRIFT_THESIS) {
+        part[n].kind = &isk_stage_drift_slow;
+        part[n].u.drift_slow.ax = st->u.drift_sway.ax;
+        part[n].u.drift_slow.ay = st->u.drift_sway.ay;
+        part[n++].u.drift_slow.slowing = st->u.drift_sway.slowing;
+    } else {
+        part[n].kind = &isk_stage_drift;
+        part[n].u.drift.ax = st->u.drift_sway.ax;
+        part[n++].u.drift.ay = st->u.drift_sway.ay;
+        if (st->u.drift_sway.order == ISK_DRIFT_SOUND) {
+            part[n].kind = &isk_stage_slow;
+            part[n++].u.slow.slowing = st->u.drift_sway.slowing;
+        }
+    }
+    part[n].kind = &isk_stage_oscillate;
+    part[n++].u.osc = st->u.drift_sway.osc;
+    return n;
+}
+
+/* One pass where the AVX2 build takes it (sim/sway.h), else the stages it
+ * stands for one after the other: the same bits either way. */
+static void run_drift_sway(const isk_stage *st, isk_block *b, double h)
+{
+    isk_block_prefetch_next(b, 4); /* the first stage to read the block */
+    isk_particles *p = b->p;
+    const size_t o = b->first;
+    const isk_sway w = sway_of(&st->u.drift_sway.osc, b, h);
+    const isk_sway_drift d = {st->u.drift_sway.ax, st->u.drift_sway.ay, slow_factor(st->u.drift_sway.slowing, h),
+                              st->u.drift_sway.order};
+    if (isk_sway_drift_build(1, &d, &w, b->n, b->x, b->y, b->vx, b->vy, p->osc_amp + o, p->osc_phase + o,
+                             p->osc_omega + o, p->osc_offset + o))
+        return;
+    isk_stage part[3];
+    const int n = drift_sway_parts(st, part);
+    for (int k = 0; k < n; k++)
+        part[k].kind->run(&part[k], b, h);
+}
+
+/* As the stages it stands for, a line each: `iskra describe` reads the
+ * same whether the list fused them or not. */
+static void describe_drift_sway(const isk_stage *st, FILE *out)
+{
+    isk_stage part[3];
+    const int n = drift_sway_parts(st, part);
+    part[0].kind->describe(&part[0], out);
+    for (int k = 1; k < n; k++) {
+        fputc('\n', out);
+        isk_stage_describe_line(&part[k], out);
+    }
+}
+
+const isk_stage_kind isk_stage_drift_sway = {"drift", run_drift_sway, describe_drift_sway};
+
