@@ -31,7 +31,8 @@
  *                  the flight known from the end state (what scenes and
  *                  isk_system run with constant forces and drag)
  *   + remember     the same with the start state remembered and fitted
- *                  (what runs when potentials act)
+ *                  (what runs when potentials act; without them, as here,
+ *                  the motion stage copies the block's start first)
  *   resting        the impact walls with every particle resting on the
  *                  floor (c = 0.5): every particle hits every step, the
  *                  worst case of the scalar path
@@ -42,6 +43,9 @@
  *                  (src/sim/motion_fused.h)
  *   thesis, P = 1  the same potential with the thesis's centre rule and
  *                  P = 1 (the fused pass's other rule and exponent)
+ *   Coulomb+walls  the Coulomb motion with the impact walls, from the start
+ *                  state the fused pass keeps as it reads it (what a scene
+ *                  with potentials and sound walls runs)
  *   fire           what a fire scene compiles to: the drift with the
  *                  thesis's slowing, then the sway (ISK_PARTICLES_OSC,
  *                  lerp on a 4096-entry table, the thesis's vx coupling),
@@ -120,7 +124,7 @@ static void describe_end_walls(const isk_stage *st, FILE *out)
 }
 static const isk_stage_kind end_walls = {"walls", run_end_walls, describe_end_walls};
 
-enum { V_MOTION, V_END, V_IMPACT, V_START, V_REST, V_DRAG, V_COULOMB, V_COULOMB_T, V_FIRE, NV };
+enum { V_MOTION, V_END, V_IMPACT, V_START, V_REST, V_DRAG, V_COULOMB, V_COULOMB_T, V_COULOMB_WALLS, V_FIRE, NV };
 
 /* A row: its name, the bytes its stage set moves a particle-step and the
  * bytes a particle of the columns it touches (the top comment says why). */
@@ -138,6 +142,7 @@ static const variant VARIANT[NV] = {
     {"drag alone (no walls)", MOTION_BYTES, MOTION_FOOTPRINT},
     {"motion + one Coulomb potential", MOTION_BYTES, MOTION_FOOTPRINT},
     {"  the same, thesis rule, P = 1", MOTION_BYTES, MOTION_FOOTPRINT},
+    {"Coulomb + walls (kept start)", MOTION_BYTES, MOTION_FOOTPRINT},
     {"fire: drift+slowing, sway", FIRE_BYTES, FIRE_FOOTPRINT},
 };
 
@@ -210,12 +215,11 @@ static int build(world *w, size_t n)
             d->u.drift_sway.osc.faithful = 1;
             continue;
         }
-        if (v == V_START)
-            isk_pipeline_add(pl, &isk_stage_remember);
         isk_stage *m = isk_pipeline_add(pl, &isk_stage_motion);
         m->u.motion.method = ISK_INTEGRATE_SEMI_EULER;
+        m->u.motion.remember = v == V_START || v == V_COULOMB_WALLS; /* as effect_compile.c asks */
         m->u.motion.forces = v == V_DRAG        ? &w->drag
-                             : v == V_COULOMB   ? &w->coulomb
+                             : v == V_COULOMB || v == V_COULOMB_WALLS ? &w->coulomb
                              : v == V_COULOMB_T ? &w->coulomb_t
                                                 : &w->f;
         if (v == V_MOTION || v == V_DRAG || v == V_COULOMB || v == V_COULOMB_T)
@@ -223,7 +227,7 @@ static int build(world *w, size_t n)
         isk_stage *st = isk_pipeline_add(pl, v == V_END ? &end_walls : &isk_stage_walls);
         st->u.walls.b = v == V_REST ? &w->floor : &w->box;
         st->u.walls.drag = DRAG;
-        st->u.walls.start = v == V_START;
+        st->u.walls.start = v == V_START || v == V_COULOMB_WALLS;
         st->u.walls.ay = -G; /* the constant acceleration, and semi-implicit Euler's offset */
         st->u.walls.offset = isk_integrator_velocity_offset(ISK_INTEGRATE_SEMI_EULER);
     }

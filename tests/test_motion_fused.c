@@ -89,12 +89,25 @@ static void compare(isk_integrator method, const isk_forces *f, const state *in,
     isk_forces fg = *f;
     isk_integrate_block(method, &fg, &scratch, n, a.x, a.y, a.vx, a.vy, a.m, dt);
     const int want = isk_k_any_nonfinite2(n, a.x, a.y) | isk_k_any_nonfinite2(n, a.vx, a.vy);
-    for (int avx2 = 0; avx2 <= isk__have_avx2(); avx2++) {
+    /* keep = 1: the start state stored on the way (the remember stage's
+     * copy in the same pass), the bits of the input, and the step's bits
+     * unchanged by it */
+    for (int run = 0; run < 2 * (1 + isk__have_avx2()); run++) {
+        const int avx2 = run >> 1, keep = run & 1;
+        static state kept;
+        memset(&kept, 0x5a, sizeof kept);
+        const isk_motion_start start = {kept.x, kept.y, kept.vx, kept.vy};
         b = *in;
         int got = -1;
-        cr_assert_eq(isk_motion_fused_build(avx2, method, f, n, b.x, b.y, b.vx, b.vy, b.m, dt, &got), 1,
-                     "%s: declined", what);
+        cr_assert_eq(isk_motion_fused_build(avx2, method, f, n, b.x, b.y, b.vx, b.vy, b.m, dt, keep ? &start : NULL,
+                                            &got),
+                     1, "%s: declined", what);
         cr_assert_eq(got, want, "%s, n %zu, avx2 %d: non-finite flag %d, general path %d", what, n, avx2, got, want);
+        if (keep)
+            cr_assert(memcmp(kept.x, in->x, n * sizeof *kept.x) == 0 && memcmp(kept.y, in->y, n * sizeof *kept.y) == 0 &&
+                          memcmp(kept.vx, in->vx, n * sizeof *kept.vx) == 0 &&
+                          memcmp(kept.vy, in->vy, n * sizeof *kept.vy) == 0,
+                      "%s, n %zu, avx2 %d: the kept start state is not the input", what, n, avx2);
         const double *const ga[4] = {a.x, a.y, a.vx, a.vy}, *const fa[4] = {b.x, b.y, b.vx, b.vy};
         for (int c = 0; c < 4; c++)
             for (size_t i = 0; i < n; i++)
@@ -152,16 +165,16 @@ Test(motion_fused, flags_the_non_finite)
     int nf = -1;
     static state b;
     b = in;
-    cr_assert(isk_motion_fused(ISK_INTEGRATE_SEMI_EULER, &f, N, b.x, b.y, b.vx, b.vy, b.m, 1.0 / 600, &nf));
+    cr_assert(isk_motion_fused(ISK_INTEGRATE_SEMI_EULER, &f, N, b.x, b.y, b.vx, b.vy, b.m, 1.0 / 600, NULL, &nf));
     cr_assert_eq(nf, 0, "a finite state of ordinary masses stays finite");
     b = in;
     b.vy[77] = NAN;
-    cr_assert(isk_motion_fused(ISK_INTEGRATE_SEMI_EULER, &f, N, b.x, b.y, b.vx, b.vy, b.m, 1.0 / 600, &nf));
+    cr_assert(isk_motion_fused(ISK_INTEGRATE_SEMI_EULER, &f, N, b.x, b.y, b.vx, b.vy, b.m, 1.0 / 600, NULL, &nf));
     cr_assert_eq(nf, 1);
     b = in;
     b.x[200] = 1.7e308;
     b.vx[200] = 1e308;
-    cr_assert(isk_motion_fused(ISK_INTEGRATE_EULER, &f, N, b.x, b.y, b.vx, b.vy, b.m, 0.1, &nf));
+    cr_assert(isk_motion_fused(ISK_INTEGRATE_EULER, &f, N, b.x, b.y, b.vx, b.vy, b.m, 0.1, NULL, &nf));
     cr_assert_eq(nf, 1, "x + dt*vx overflows to infinity");
 }
 
@@ -180,10 +193,10 @@ Test(motion_fused, declines_what_it_does_not_cover)
     int nf;
     for (int m = ISK_INTEGRATE_VERLET; m < ISK_INTEGRATOR_COUNT; m++) {
         b = in;
-        cr_assert_eq(isk_motion_fused((isk_integrator)m, &f, N, b.x, b.y, b.vx, b.vy, b.m, 0.01, &nf), 0);
+        cr_assert_eq(isk_motion_fused((isk_integrator)m, &f, N, b.x, b.y, b.vx, b.vy, b.m, 0.01, NULL, &nf), 0);
         cr_assert(memcmp(&b, &in, sizeof b) == 0);
     }
-    cr_assert_eq(isk_motion_fused(ISK_INTEGRATE_SEMI_EULER, &f, N, b.x, b.y, b.vx, b.vy, b.m, 0.0, &nf), 0);
+    cr_assert_eq(isk_motion_fused(ISK_INTEGRATE_SEMI_EULER, &f, N, b.x, b.y, b.vx, b.vy, b.m, 0.0, NULL, &nf), 0);
     cr_assert(memcmp(&b, &in, sizeof b) == 0);
     f.pot = &pot;
     f.npot = 1;
@@ -191,7 +204,7 @@ Test(motion_fused, declines_what_it_does_not_cover)
     const size_t none = 0;
     f.pick = &none; /* picks no potential: none acts */
     f.npick = 0;
-    cr_assert_eq(isk_motion_fused(ISK_INTEGRATE_SEMI_EULER, &f, N, b.x, b.y, b.vx, b.vy, b.m, 0.01, &nf), 1);
+    cr_assert_eq(isk_motion_fused(ISK_INTEGRATE_SEMI_EULER, &f, N, b.x, b.y, b.vx, b.vy, b.m, 0.01, NULL, &nf), 1);
     f.pick = NULL;
     pot.enabled = 0;
     compare(ISK_INTEGRATE_SEMI_EULER, &f, &in, N, 0.01, "disabled potential");
@@ -362,15 +375,22 @@ Test(motion_fused, potentials_beyond_a_block)
                                 1.0 / 600);
             want |= isk_k_any_nonfinite2(c, gx + o, gy + o) | isk_k_any_nonfinite2(c, gvx + o, gvy + o);
         }
-        for (int avx2 = 0; avx2 <= isk__have_avx2(); avx2++) {
-            static double a[4][M];
+        for (int run = 0; run < 2 * (1 + isk__have_avx2()); run++) {
+            const int avx2 = run >> 1, keep = run & 1; /* keep: the fix-up reads the caller's start state */
+            static double a[4][M], k[4][M];
             memcpy(a[0], x, sizeof x);
             memcpy(a[1], y, sizeof y);
             memcpy(a[2], vx, sizeof vx);
             memcpy(a[3], vy, sizeof vy);
+            memset(k, 0x5a, sizeof k);
+            const isk_motion_start start = {k[0], k[1], k[2], k[3]};
             int got = -1;
             cr_assert(isk_motion_fused_build(avx2, ISK_INTEGRATE_SEMI_EULER, &f, M, a[0], a[1], a[2], a[3], m,
-                                             1.0 / 600, &got));
+                                             1.0 / 600, keep ? &start : NULL, &got));
+            if (keep)
+                cr_assert(memcmp(k[0], x, sizeof x) == 0 && memcmp(k[1], y, sizeof y) == 0 &&
+                              memcmp(k[2], vx, sizeof vx) == 0 && memcmp(k[3], vy, sizeof vy) == 0,
+                          "round %d avx2 %d: the kept start state is not the input", round, avx2);
             cr_assert_eq(got, want, "round %d avx2 %d: non-finite flag", round, avx2);
             const double *const g[4] = {gx, gy, gvx, gvy};
             for (int col = 0; col < 4; col++)
@@ -396,7 +416,7 @@ Test(motion_fused, potentials_declined_or_taken)
     /* an exponent other than 2 or 1 */
     b = in;
     pot[0].P = 3.0;
-    cr_assert_eq(isk_motion_fused(ISK_INTEGRATE_SEMI_EULER, &f, N, b.x, b.y, b.vx, b.vy, b.m, 0.01, &nf), 0, "P = 3");
+    cr_assert_eq(isk_motion_fused(ISK_INTEGRATE_SEMI_EULER, &f, N, b.x, b.y, b.vx, b.vy, b.m, 0.01, NULL, &nf), 0, "P = 3");
     cr_assert(memcmp(&b, &in, sizeof b) == 0);
     /* ... but not when it does not act */
     pot[0].enabled = 0;
@@ -410,11 +430,11 @@ Test(motion_fused, potentials_declined_or_taken)
     /* a max-distance switch, even with k*Q = 0 (it may still switch) */
     pot[1].max_dist = 0.1;
     b = in;
-    cr_assert_eq(isk_motion_fused(ISK_INTEGRATE_SEMI_EULER, &f, N, b.x, b.y, b.vx, b.vy, b.m, 0.01, &nf), 0,
+    cr_assert_eq(isk_motion_fused(ISK_INTEGRATE_SEMI_EULER, &f, N, b.x, b.y, b.vx, b.vy, b.m, 0.01, NULL, &nf), 0,
                  "max distance");
     cr_assert(memcmp(&b, &in, sizeof b) == 0);
     pot[1].charge = 0.0;
-    cr_assert_eq(isk_motion_fused(ISK_INTEGRATE_SEMI_EULER, &f, N, b.x, b.y, b.vx, b.vy, b.m, 0.01, &nf), 0,
+    cr_assert_eq(isk_motion_fused(ISK_INTEGRATE_SEMI_EULER, &f, N, b.x, b.y, b.vx, b.vy, b.m, 0.01, NULL, &nf), 0,
                  "max distance, k*Q = 0");
     cr_assert(memcmp(&b, &in, sizeof b) == 0);
     pot[1].charge = 1.0;
@@ -424,7 +444,7 @@ Test(motion_fused, potentials_declined_or_taken)
     compare(ISK_INTEGRATE_SEMI_EULER, &f, &in, N, 0.01, "four potentials");
     f.npot = 5;
     b = in;
-    cr_assert_eq(isk_motion_fused(ISK_INTEGRATE_SEMI_EULER, &f, N, b.x, b.y, b.vx, b.vy, b.m, 0.01, &nf), 0,
+    cr_assert_eq(isk_motion_fused(ISK_INTEGRATE_SEMI_EULER, &f, N, b.x, b.y, b.vx, b.vy, b.m, 0.01, NULL, &nf), 0,
                  "five potentials");
     cr_assert(memcmp(&b, &in, sizeof b) == 0);
     pot[2].enabled = 0;
@@ -433,7 +453,7 @@ Test(motion_fused, potentials_declined_or_taken)
     f.npot = 1;
     for (int m = ISK_INTEGRATE_VERLET; m < ISK_INTEGRATOR_COUNT; m++) {
         b = in;
-        cr_assert_eq(isk_motion_fused((isk_integrator)m, &f, N, b.x, b.y, b.vx, b.vy, b.m, 0.01, &nf), 0);
+        cr_assert_eq(isk_motion_fused((isk_integrator)m, &f, N, b.x, b.y, b.vx, b.vy, b.m, 0.01, NULL, &nf), 0);
         cr_assert(memcmp(&b, &in, sizeof b) == 0);
     }
     /* every potential's k*Q is 0: the loops without potentials, the same bits */

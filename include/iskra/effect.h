@@ -35,8 +35,9 @@
  * holds exactly what that emitter needs, in this order:
  *     frame start: walls of draw_before_bounce, timed explosions;
  *     every substep: field (radial/tangential accelerations, turbulence) ->
- *     remember positions (only with deflectors) -> forces it references +
- *     integrator (blocked) -> slowing -> oscillation -> walls -> deflectors ->
+ *     remember the start state (deflectors, or sound walls with potentials:
+ *     kept by the integrator's own pass when it has one) -> forces it
+ *     references + integrator (blocked) -> slowing -> oscillation -> walls -> deflectors ->
  *     spin (only where an angle is seen and spins) -> ageing; then the
  *     local-space carry -> births (streams) -> hits (on_hit) -> culling (its
  *     deaths first as on_death events); after every emitter stepped: the

@@ -90,7 +90,8 @@ extern "C" {
  * the linear drag b that acted (F = -b v; 0: none, then m may be NULL), and
  * either
  *   - the state at its start (x0..vy0: arrays of the same n particles as
- *     the end state; the block runner's remember stage keeps them in L1):
+ *     the end state; the block runner keeps them in L1, stored by the
+ *     motion stage as it reads the block):
  *     the flight is fitted to both ends, whatever the forces; or
  *   - (x0..vy0 NULL; walls only) the constant acceleration (ax, ay) that
  *     acted with the drag, and the integrator's velocity offset:

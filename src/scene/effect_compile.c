@@ -3,7 +3,8 @@
  * only order they ever run:
  *
  *   frame start:  late walls (draw_before_bounce) -> release (timed explosions)
- *   pipeline:     field (radial, tangential, turbulence) -> remember (deflectors, sound walls) ->
+ *   pipeline:     field (radial, tangential, turbulence) -> remember (deflectors, sound walls; kept by
+ *                 the motion stage when there is one) ->
  *                 drift | integrate -> slow ->
  *                 oscillate -> walls -> deflect -> spin -> age
  *                 (a drift with an oscillate after it, and the slow between
@@ -154,12 +155,15 @@ isk_status fx_compile(isk_effect *e, fx_group *g)
             return ISK_ERR_FULL;
         st->u.field.f = &g->field;
     }
-    if ((g->ndefl || step_walls) && !ADD(isk_stage_remember))
-        return ISK_ERR_FULL;
     /* Constant accelerations with the thesis's integrator fold into one
      * drift loop that reads no mass (gravity becomes a = -g). */
     const int fast = g->integrator == ISK_INTEGRATE_SEMI_EULER && f->drag == 0 && f->npick == 0 &&
                      d->fidelity == ISK_FIDELITY_SOUND;
+    /* The contact stages' start state: a stage of its own before a drift,
+     * kept by the motion stage in its own pass otherwise. */
+    const int remember = g->ndefl || step_walls;
+    if (remember && fast && !ADD(isk_stage_remember))
+        return ISK_ERR_FULL;
     const int fused_slow = fast && em->slow_faithful && em->slowing > 0;
     /* The thesis's jitter applies the constant part of the acceleration. */
     g->const_ax = f->ax;
@@ -193,6 +197,7 @@ isk_status fx_compile(isk_effect *e, fx_group *g)
             return ISK_ERR_FULL;
         st->u.motion.method = g->integrator;
         st->u.motion.forces = f;
+        st->u.motion.remember = remember;
     }
     if (em->slowing > 0 && !fused_slow && !drift_sway) {
         if (!ADD(isk_stage_slow))

@@ -42,17 +42,28 @@
 #include "iskra/forces.h"
 #include "iskra/integrate.h"
 
+/* Where the pass stores the state each particle starts the step from (n
+ * entries each), for the contact stages that bounce at the time of impact
+ * (iskra/impact.h): what the remember stage copies, stored by the loop as
+ * it reads it instead of in a pass of its own (stage.h's motion.remember).
+ * Never the same memory as the columns. */
+typedef struct isk_motion_start {
+    double *x, *y, *vx, *vy;
+} isk_motion_start;
+
 /* Steps the n particles and returns 1 when the fused pass covers this
  * method and these forces (then *nonfinite is 1 when some new x, y, vx or
- * vy is not finite, else 0); returns 0, touching nothing, otherwise. */
+ * vy is not finite, else 0, and the old state is in *start unless start is
+ * NULL); returns 0, touching nothing, otherwise. */
 int isk_motion_fused(isk_integrator method, const isk_forces *f, size_t n, double *x, double *y, double *vx,
-                     double *vy, const double *m, double dt, int *nonfinite);
+                     double *vy, const double *m, double dt, const isk_motion_start *start, int *nonfinite);
 
 /* The same with the build chosen: avx2 = 0 the portable loops, 1 the AVX2
  * ones when isk__have_avx2() (raster/span_simd.h), else the portable ones too.
  * isk_motion_fused takes the fastest; the tests compare both. */
 int isk_motion_fused_build(int avx2, isk_integrator method, const isk_forces *f, size_t n, double *x, double *y,
-                           double *vx, double *vy, const double *m, double dt, int *nonfinite);
+                           double *vx, double *vy, const double *m, double dt, const isk_motion_start *start,
+                           int *nonfinite);
 /* 1 when some potential of f (its pick, or all of them) is enabled: the
  * test isk_forces_eval_step makes before it evaluates potentials (forces.c). */
 int isk_forces_potentials_on(const isk_forces *f);

@@ -82,7 +82,12 @@ struct isk_stage {
     union {
         struct { double ax, ay; } drift;                     /* isk_stage_drift */
         struct { double ax, ay, slowing; } drift_slow;       /* isk_stage_drift_slow */
-        struct { isk_integrator method; isk_forces *forces; } motion;
+        struct {
+            isk_integrator method;
+            isk_forces *forces;
+            int remember;                                    /* 1: also keep the start state in the scratch's
+                                                                x_old.. (the remember stage, in the same pass) */
+        } motion;
         struct { double slowing; } slow;
         isk_stage_osc osc;                                   /* isk_stage_oscillate */
         struct {
@@ -94,7 +99,8 @@ struct isk_stage {
         struct {
             const isk_bounds *b;
             double drag;                                     /* the motion's linear drag b (impact.h) */
-            int start;                                       /* 1: the remember stage ran (potentials act) */
+            int start;                                       /* 1: the start state was remembered (potentials
+                                                                act): the remember stage or motion.remember */
             double ax, ay, offset;                           /* else: the constant acceleration and the
                                                                 integrator's velocity offset */
             int hit;                                         /* count bounces into p->hit (on_hit) */
@@ -147,7 +153,8 @@ void isk_stage_describe_line(const isk_stage *st, FILE *out);
 
 /* The stage kinds, in the only order they ever appear in a list. */
 extern const isk_stage_kind isk_stage_field;      /* position-dependent accelerations (src/sim/field.h) */
-extern const isk_stage_kind isk_stage_remember;   /* the state before the move (bounces at impact) */
+extern const isk_stage_kind isk_stage_remember;   /* the state before the move (bounces at impact),
+                                                     before a drift; a motion stage keeps it itself */
 extern const isk_stage_kind isk_stage_drift;      /* constant acceleration + semi-implicit Euler, no mass */
 extern const isk_stage_kind isk_stage_drift_slow; /* the same with the fire thesis's slowing in between */
 extern const isk_stage_kind isk_stage_drift_sway; /* drift or drift_slow (+ slow), then oscillate, in one pass */

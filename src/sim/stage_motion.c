@@ -60,18 +60,22 @@ const isk_stage_kind isk_stage_drift = {"drift", run_drift, describe_drift};
 static void run_motion(const isk_stage *st, isk_block *b, double h)
 {
     isk_block_prefetch_next(b, 5);
+    isk_scratch *s = b->s;
+    const isk_motion_start start = {s->x_old, s->y_old, s->vx_old, s->vy_old};
     int nonfinite;
     if (isk_motion_fused(st->u.motion.method, st->u.motion.forces, b->n, b->x, b->y, b->vx, b->vy, b->m, h,
-                         &nonfinite)) {
+                         st->u.motion.remember ? &start : NULL, &nonfinite)) {
         b->s->nonfinite |= nonfinite; /* the common case in one pass: the same bits (motion_fused.h) */
         return;
     }
+    if (st->u.motion.remember)
+        isk_stage_remember.run(st, b, h);
     isk_integrate_block(st->u.motion.method, st->u.motion.forces, b->s, b->n, b->x, b->y, b->vx, b->vy,
                         b->m, h);
     b->s->nonfinite |= isk_k_any_nonfinite2(b->n, b->x, b->y) | isk_k_any_nonfinite2(b->n, b->vx, b->vy);
 }
 
-/* Names only what acts. */
+/* Names only what acts, and the start state kept for the contact stages. */
 static void describe_motion(const isk_stage *st, FILE *out)
 {
     const isk_forces *f = st->u.motion.forces;
@@ -88,6 +92,8 @@ static void describe_motion(const isk_stage *st, FILE *out)
         fprintf(out, "%spotential %d", any++ ? ", " : "", f->pot[f->pick ? f->pick[k] : k].id);
     if (!any)
         fprintf(out, "none");
+    if (st->u.motion.remember)
+        fprintf(out, "; keeps the start state (bounces at the time of impact)");
 }
 
 const isk_stage_kind isk_stage_motion = {"integrate", run_motion, describe_motion};

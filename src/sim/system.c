@@ -253,7 +253,8 @@ isk_status isk_system_step(isk_system *s, double dt)
         return st;
 
     /* The system's fields compile into the block runner's list (the same
-     * runner the effect steps through): (remember,) motion, walls, ageing.
+     * runner the effect steps through): motion (remembering the start state),
+     * walls, ageing.
      * Sound walls bounce at the time of impact, from the state before the
      * move (iskra/impact.h). */
     isk_pipeline pl;
@@ -262,11 +263,10 @@ isk_status isk_system_step(isk_system *s, double dt)
     for (size_t k = 0; k < s->forces.npot; k++)
         potentials |= s->forces.pot[k].enabled;
     const int start = bounce && s->bounds.mode == ISK_BOUNCE_REFLECT && potentials;
-    if (start)
-        isk_pipeline_add(&pl, &isk_stage_remember);
     isk_stage *motion = isk_pipeline_add(&pl, &isk_stage_motion);
     motion->u.motion.method = s->integrator;
     motion->u.motion.forces = &s->forces;
+    motion->u.motion.remember = start;
     if (bounce) {
         isk_stage *w = isk_pipeline_add(&pl, &isk_stage_walls);
         w->u.walls.b = &s->bounds;
