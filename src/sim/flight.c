@@ -141,14 +141,24 @@ double isk_fl_root(double c0, double U, double a, double k, double t0, double t1
         t = tq;
     for (int it = 0; it < 200; it++) {
         double f = f_at(c0, U, a, k, t, &fp);
-        if (f >= 0.0)
+        if (f == 0.0)
+            return t; /* on the root (bisecting on from it cost ~25 more steps) */
+        if (f > 0.0)
             lo = t;
         else
             hi = t;
         double tn = fp != 0.0 ? t - f / fp : 0.5 * (lo + hi);
-        if (!(tn > lo && tn < hi))
+        if (tn == t)
+            return t;
+        if (!(tn > lo && tn < hi)) {
+            /* A step of a few ulps out of the bracket is Newton done, at the
+             * rounding of f (the end it crossed is t); a longer one is a
+             * bad step, replaced by bisection. */
+            if (fabs(tn - t) <= 4.0 * 2.220446049250313e-16 * t)
+                return t;
             tn = 0.5 * (lo + hi);
-        if (tn == t || hi - lo <= 4.0 * 2.220446049250313e-16 * hi)
+        }
+        if (hi - lo <= 4.0 * 2.220446049250313e-16 * hi)
             return tn;
         t = tn;
     }
