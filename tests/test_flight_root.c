@@ -4,12 +4,14 @@
  * Newton found the root exactly and the old loop then bisected away from
  * it for ~25 steps, the root it returns is within a few ulps of the
  * reference (its early exits, on f == 0 and on a step within rounding, do
- * not cost accuracy). */
+ * not cost accuracy); and the flight's basis e, D1, D2 against long
+ * double (the series range within 2 ulps). */
 #include <criterion/criterion.h>
 
 #include <math.h>
 #include <stdint.h>
 #include <stdio.h>
+#include <string.h>
 
 #include "sim/flight.h"
 
@@ -38,8 +40,13 @@ static double root_ref(double c0, double U, double a, double k, double t0, doubl
 
 static void check(double c0, double U, double a, double k, double t0, double t1, const char *what)
 {
-    const double t = isk_fl_root(c0, U, a, k, t0, t1), want = root_ref(c0, U, a, k, t0, t1);
+    const double t = isk_fl_root(c0, U, a, k, t0, t1, NULL), want = root_ref(c0, U, a, k, t0, t1);
     cr_assert(t >= t0 && t <= t1, "%s: %a outside [%a, %a]", what, t, t0, t1);
+    isk_fl_cache cache = {0}; /* through the cache, seeded with an end's basis as bounds.c does: the same bits */
+    double e, d1, d2;
+    isk_fl_basis_cached(&cache, k, t1, &e, &d1, &d2);
+    const double tc = isk_fl_root(c0, U, a, k, t0, t1, &cache);
+    cr_assert(memcmp(&tc, &t, sizeof t) == 0, "%s: %a through the cache, %a without", what, tc, t);
     /* f's three terms round to ~1e-19 of a millisecond's flight: the root
      * is known to a few ulps of t, no better */
     cr_assert(fabs(t - want) <= 8 * 2.220446049250313e-16 * want, "%s: %.17g, reference %.17g (%g ulps)", what, t,
@@ -79,4 +86,32 @@ Test(flight_root, random_drag_flights)
         done++;
     }
     cr_assert_gt(done, 5000, "only %d flights crossed", done);
+}
+
+/* e = e^-kt, D1 = (1 - e)/k and D2 = (t - D1)/k within 2 ulps of long
+ * double on both sides of the series' range (k t < 1/32: no expm1), and
+ * continuous across its edge. */
+Test(flight_root, basis_against_long_double)
+{
+    uint64_t s = 12345;
+    for (int i = 0; i < 100000; i++) {
+        s ^= s << 13, s ^= s >> 7, s ^= s << 17;
+        const double u = (double)(s >> 11) / 9007199254740992.0;
+        const double k = i % 2 ? 0.3 : 0.01 + 10 * u, t = i % 2 ? u * 0.25 : (1.0 / 60) * (0.01 + u);
+        double e, d1, d2;
+        isk_fl_basis(k, t, &e, &d1, &d2);
+        const long double K = k, T = t, em = expm1l(-K * T), E = 1 + em, D1 = -em / K;
+        long double phi2 = 0, term = 0.5L; /* (z - 1 + e^-z) / z^2 by its series: no cancellation */
+        for (int j = 0; j < 40; j++) {
+            phi2 += term;
+            term *= -K * T / (j + 3);
+        }
+        const long double D2 = phi2 * T * T;
+        const long double ulp = 2.220446049250313e-16L;
+        /* beyond the series, D2 = (z + expm1(-z)) / z^2 cancels two bits or so near z = 0.1 */
+        const long double d2_ulps = k * t < 0.03125 ? 2 : 8;
+        cr_assert(fabsl(e - E) <= 2 * ulp * E && fabsl(d1 - D1) <= 2 * ulp * D1 && fabsl(d2 - D2) <= d2_ulps * ulp * D2,
+                  "k %a t %a (z %g): e %g d1 %g d2 %g ulps off", k, t, k * t, (double)(fabsl(e - E) / (ulp * E)),
+                  (double)(fabsl(d1 - D1) / (ulp * D1)), (double)(fabsl(d2 - D2) / (ulp * D2)));
+    }
 }

@@ -236,17 +236,17 @@ static void reflect_apply(const isk_bounds *b, size_t n, double *x, double *y, d
  * f(t) = c0 + U D1(t) + a D2(t)) meets it within (0, s], given that it does
  * (its end f_end or its turning point f_turn at t_turn is outside). */
 static double hit_time(double c0, double U, double a, double k, double s, double t_turn, int turn_in,
-                       double f_turn, double f_end)
+                       double f_turn, double f_end, isk_fl_cache *cache)
 {
     if (!(c0 > 0.0)) {
         if (U < 0.0 || (U == 0.0 && a <= 0.0))
             return 0.0; /* on the wall and leaving (or pressed into it) at once */
         /* on the wall moving in: it meets it again after turning back */
-        return turn_in && f_end < 0.0 ? isk_fl_root(c0, U, a, k, t_turn, s) : s;
+        return turn_in && f_end < 0.0 ? isk_fl_root(c0, U, a, k, t_turn, s, cache) : s;
     }
     if (turn_in && f_turn < 0.0)
-        return isk_fl_root(c0, U, a, k, 0.0, t_turn);
-    return isk_fl_root(c0, U, a, k, 0.0, s);
+        return isk_fl_root(c0, U, a, k, 0.0, t_turn, cache);
+    return isk_fl_root(c0, U, a, k, 0.0, s, cache);
 }
 
 /* How an axis's flight in the step is known (iskra/impact.h): from the
@@ -314,12 +314,16 @@ static void impact_axis(double *pos, double *vel, const axis_motion *am, size_t 
     }
     double s = h, end = p1, uend = v1 - delta;
     int last = 0, same = 0;
+    isk_fl_cache cache; /* the bounce's repeated times (flight.h) */
+    cache.n = cache.next = 0;
+    if (!am->p0 && memo->set && memo->k == k && memo->t == h)
+        isk_fl_cache_put(&cache, k, h, memo->e, memo->d1, memo->d2); /* the step's own, from the reconstruction */
     for (int n = 0;; n++) {
         double t_turn = isk_fl_turn(U, a, k), p_turn = P;
         const int turn_in = t_turn > 0.0 && t_turn < s;
         if (turn_in) {
             double e, d1, d2;
-            isk_fl_basis(k, t_turn, &e, &d1, &d2);
+            isk_fl_basis_cached(&cache, k, t_turn, &e, &d1, &d2);
             p_turn = P + U * d1 + a * d2;
         }
         const int out_lo = end < lo || (turn_in && p_turn < lo);
@@ -338,11 +342,11 @@ static void impact_axis(double *pos, double *vel, const axis_motion *am, size_t 
         double tau = INFINITY;
         int wall = 0;
         if (out_lo) {
-            tau = hit_time(P - lo, U, a, k, s, t_turn, turn_in, p_turn - lo, end - lo);
+            tau = hit_time(P - lo, U, a, k, s, t_turn, turn_in, p_turn - lo, end - lo, &cache);
             wall = -1;
         }
         if (out_hi) {
-            double t = hit_time(hi - P, -U, -a, k, s, t_turn, turn_in, hi - p_turn, hi - end);
+            double t = hit_time(hi - P, -U, -a, k, s, t_turn, turn_in, hi - p_turn, hi - end, &cache);
             if (t < tau) {
                 tau = t;
                 wall = 1;
@@ -350,7 +354,7 @@ static void impact_axis(double *pos, double *vel, const axis_motion *am, size_t 
         }
         const double W = wall < 0 ? lo : hi, sigma = wall < 0 ? 1.0 : -1.0; /* sigma: into the box */
         double e, d1, d2;
-        isk_fl_basis(k, tau, &e, &d1, &d2);
+        isk_fl_basis_cached(&cache, k, tau, &e, &d1, &d2);
         const double ui = U * e + a * d1;
         P = W;
         U = sigma * ui < 0.0 ? -c * ui : ui; /* only an outward velocity is turned */
@@ -368,7 +372,7 @@ static void impact_axis(double *pos, double *vel, const axis_motion *am, size_t 
         }
         same = wall == last ? same + 1 : 0;
         last = wall;
-        isk_fl_basis(k, s, &e, &d1, &d2);
+        isk_fl_basis_cached(&cache, k, s, &e, &d1, &d2);
         end = P + U * d1 + a * d2;
         uend = U * e + a * d1;
     }

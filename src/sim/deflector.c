@@ -332,16 +332,18 @@ static double flight_hit(const flight *f, const seg *s, double t_chord)
     double c0 = sg * o;
     double un = sg * (s->nx * f->ux + s->ny * f->uy), an = sg * (s->nx * f->ax + s->ny * f->ay);
     double e, d1, d2;
-    isk_fl_basis(f->k, f->s, &e, &d1, &d2);
+    isk_fl_cache cache; /* the root solve asks for f_end's and t_turn's times again */
+    cache.n = cache.next = 0;
+    isk_fl_basis_cached(&cache, f->k, f->s, &e, &d1, &d2);
     double f_end = c0 + un * d1 + an * d2;
     double t_turn = isk_fl_turn(un, an, f->k);
     if (t_turn > 0.0 && t_turn < f->s) {
-        isk_fl_basis(f->k, t_turn, &e, &d1, &d2);
+        isk_fl_basis_cached(&cache, f->k, t_turn, &e, &d1, &d2);
         if (c0 + un * d1 + an * d2 < 0.0)
-            return isk_fl_root(c0, un, an, f->k, 0.0, t_turn);
+            return isk_fl_root(c0, un, an, f->k, 0.0, t_turn, &cache);
     }
     if (f_end < 0.0)
-        return isk_fl_root(c0, un, an, f->k, 0.0, f->s);
+        return isk_fl_root(c0, un, an, f->k, 0.0, f->s, &cache);
     return t_chord * f->s;
 }
 

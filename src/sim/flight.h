@@ -57,11 +57,28 @@ void isk_fl_from_end(double p1, double v1, double a, double k, double h, double 
  * -1 when it has none (U and a not of opposite signs). */
 double isk_fl_turn(double U, double a, double k);
 
+/* The last few isk_fl_basis(k, t) of one particle's bounces: a bounce asks
+ * for the same time more than once (the turning point, then the root
+ * solve's bracket end there; the Newton step that found the hit, then the
+ * velocity at it; the step's end, from the reconstruction).  A pure
+ * function, so the values are the ones a new call would give.  Zero it to
+ * start. */
+enum { ISK_FL_CACHE = 4 };
+typedef struct isk_fl_cache {
+    double k[ISK_FL_CACHE], t[ISK_FL_CACHE], e[ISK_FL_CACHE], d1[ISK_FL_CACHE], d2[ISK_FL_CACHE];
+    int n, next;
+} isk_fl_cache;
+
+/* isk_fl_basis through the cache (NULL: none). */
+void isk_fl_basis_cached(isk_fl_cache *c, double k, double t, double *e, double *d1, double *d2);
+/* Enters values isk_fl_basis(k, t) gave elsewhere (isk_fl_memo's). */
+void isk_fl_cache_put(isk_fl_cache *c, double k, double t, double e, double d1, double d2);
+
 /* A root of f(t) = c0 + U D1(t) + a D2(t) in [t0, t1], given f(t0) >= 0 and
  * f(t1) < 0 (the flight leaves the side where f > 0 in that interval, and f
  * has no other root there).  Exact for k = 0 (the quadratic's stable root),
  * safeguarded Newton for k > 0; when rounding has put no sign change in the
- * interval it returns the end where |f| is smaller. */
-double isk_fl_root(double c0, double U, double a, double k, double t0, double t1);
+ * interval it returns the end where |f| is smaller.  cache may be NULL. */
+double isk_fl_root(double c0, double U, double a, double k, double t0, double t1, isk_fl_cache *cache);
 
 #endif
