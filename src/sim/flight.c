@@ -101,36 +101,6 @@ double isk_fl_turn(double U, double a, double k)
     return log1p(-k * U / a) / k;
 }
 
-void isk_fl_basis_cached(isk_fl_cache *c, double k, double t, double *e, double *d1, double *d2)
-{
-    if (!c) {
-        isk_fl_basis(k, t, e, d1, d2);
-        return;
-    }
-    for (int i = 0; i < c->n; i++)
-        if (c->t[i] == t && c->k[i] == k) {
-            *e = c->e[i];
-            *d1 = c->d1[i];
-            *d2 = c->d2[i];
-            return;
-        }
-    isk_fl_basis(k, t, e, d1, d2);
-    isk_fl_cache_put(c, k, t, *e, *d1, *d2);
-}
-
-void isk_fl_cache_put(isk_fl_cache *c, double k, double t, double e, double d1, double d2)
-{
-    const int i = c->next;
-    c->k[i] = k;
-    c->t[i] = t;
-    c->e[i] = e;
-    c->d1[i] = d1;
-    c->d2[i] = d2;
-    c->next = (i + 1) % ISK_FL_CACHE;
-    if (c->n < ISK_FL_CACHE)
-        c->n++;
-}
-
 static double f_at(isk_fl_cache *c, double c0, double U, double a, double k, double t, double *fp)
 {
     double e, d1, d2;

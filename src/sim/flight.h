@@ -69,10 +69,37 @@ typedef struct isk_fl_cache {
     int n, next;
 } isk_fl_cache;
 
-/* isk_fl_basis through the cache (NULL: none). */
-void isk_fl_basis_cached(isk_fl_cache *c, double k, double t, double *e, double *d1, double *d2);
 /* Enters values isk_fl_basis(k, t) gave elsewhere (isk_fl_memo's). */
-void isk_fl_cache_put(isk_fl_cache *c, double k, double t, double e, double d1, double d2);
+static inline void isk_fl_cache_put(isk_fl_cache *c, double k, double t, double e, double d1, double d2)
+{
+    const int i = c->next;
+    c->k[i] = k;
+    c->t[i] = t;
+    c->e[i] = e;
+    c->d1[i] = d1;
+    c->d2[i] = d2;
+    c->next = (i + 1) % ISK_FL_CACHE;
+    if (c->n < ISK_FL_CACHE)
+        c->n++;
+}
+
+/* isk_fl_basis through the cache (NULL: none).  Inline: a bounce asks
+ * seven or eight times, and as calls the lookups cost a tenth of a
+ * settled floor's update. */
+static inline void isk_fl_basis_cached(isk_fl_cache *c, double k, double t, double *e, double *d1, double *d2)
+{
+    if (c)
+        for (int i = 0; i < c->n; i++)
+            if (c->t[i] == t && c->k[i] == k) {
+                *e = c->e[i];
+                *d1 = c->d1[i];
+                *d2 = c->d2[i];
+                return;
+            }
+    isk_fl_basis(k, t, e, d1, d2);
+    if (c)
+        isk_fl_cache_put(c, k, t, *e, *d1, *d2);
+}
 
 /* A root of f(t) = c0 + U D1(t) + a D2(t) in [t0, t1], given f(t0) >= 0 and
  * f(t1) < 0 (the flight leaves the side where f > 0 in that interval, and f
