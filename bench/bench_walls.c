@@ -215,9 +215,10 @@ static int build(world *w, size_t n)
             d->u.drift_sway.osc.faithful = 1;
             continue;
         }
+        const int kept_start = v == V_START || v == V_COULOMB_WALLS; /* as effect_compile.c asks */
         isk_stage *m = isk_pipeline_add(pl, &isk_stage_motion);
         m->u.motion.method = ISK_INTEGRATE_SEMI_EULER;
-        m->u.motion.remember = v == V_START || v == V_COULOMB_WALLS; /* as effect_compile.c asks */
+        m->u.motion.remember = kept_start;
         m->u.motion.forces = v == V_DRAG        ? &w->drag
                              : v == V_COULOMB || v == V_COULOMB_WALLS ? &w->coulomb
                              : v == V_COULOMB_T ? &w->coulomb_t
@@ -227,7 +228,7 @@ static int build(world *w, size_t n)
         isk_stage *st = isk_pipeline_add(pl, v == V_END ? &end_walls : &isk_stage_walls);
         st->u.walls.b = v == V_REST ? &w->floor : &w->box;
         st->u.walls.drag = DRAG;
-        st->u.walls.start = v == V_START || v == V_COULOMB_WALLS;
+        st->u.walls.start = kept_start;
         st->u.walls.ay = -G; /* the constant acceleration, and semi-implicit Euler's offset */
         st->u.walls.offset = isk_integrator_velocity_offset(ISK_INTEGRATE_SEMI_EULER);
     }

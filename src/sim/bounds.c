@@ -261,7 +261,7 @@ typedef struct axis_motion {
  * wall is at -inf / +inf): the bounces of iskra/impact.h.  (*pos, *vel) is
  * the integrator's end state, k the drag rate b/m. */
 static void impact_axis(double *pos, double *vel, const axis_motion *am, size_t i, double k, double h, double lo,
-                        double hi, double c, isk_fl_memo *memo)
+                        double hi, double c, isk_fl_cache *cache)
 {
     const double p1 = *pos, v1 = *vel;
     if (!(isfinite(p1) && isfinite(v1)))
@@ -275,7 +275,7 @@ static void impact_axis(double *pos, double *vel, const axis_motion *am, size_t 
     } else {
         a = am->a;
         delta = am->delta;
-        isk_fl_from_end(p1, v1, a, k, h, delta, memo, &P, &U);
+        isk_fl_from_end(p1, v1, a, k, h, delta, cache, &P, &U);
         /* A start reconstructed within rounding of a wall is on it (a
          * particle resting on the floor comes back 1e-19 below it). */
         const double tol = 64 * 2.220446049250313e-16 * (fabs(p1) + fabs(U) * h + fabs(a) * h * h);
@@ -314,16 +314,12 @@ static void impact_axis(double *pos, double *vel, const axis_motion *am, size_t 
     }
     double s = h, end = p1, uend = v1 - delta;
     int last = 0, same = 0;
-    isk_fl_cache cache; /* the bounce's repeated times (flight.h) */
-    cache.n = cache.next = 0;
-    if (!am->p0 && memo->set && memo->k == k && memo->t == h)
-        isk_fl_cache_put(&cache, k, h, memo->e, memo->d1, memo->d2); /* the step's own, from the reconstruction */
     for (int n = 0;; n++) {
         double t_turn = isk_fl_turn(U, a, k), p_turn = P;
         const int turn_in = t_turn > 0.0 && t_turn < s;
         if (turn_in) {
             double e, d1, d2;
-            isk_fl_basis_cached(&cache, k, t_turn, &e, &d1, &d2);
+            isk_fl_basis_cached(cache, k, t_turn, &e, &d1, &d2);
             p_turn = P + U * d1 + a * d2;
         }
         const int out_lo = end < lo || (turn_in && p_turn < lo);
@@ -342,11 +338,11 @@ static void impact_axis(double *pos, double *vel, const axis_motion *am, size_t 
         double tau = INFINITY;
         int wall = 0;
         if (out_lo) {
-            tau = hit_time(P - lo, U, a, k, s, t_turn, turn_in, p_turn - lo, end - lo, &cache);
+            tau = hit_time(P - lo, U, a, k, s, t_turn, turn_in, p_turn - lo, end - lo, cache);
             wall = -1;
         }
         if (out_hi) {
-            double t = hit_time(hi - P, -U, -a, k, s, t_turn, turn_in, hi - p_turn, hi - end, &cache);
+            double t = hit_time(hi - P, -U, -a, k, s, t_turn, turn_in, hi - p_turn, hi - end, cache);
             if (t < tau) {
                 tau = t;
                 wall = 1;
@@ -354,7 +350,7 @@ static void impact_axis(double *pos, double *vel, const axis_motion *am, size_t 
         }
         const double W = wall < 0 ? lo : hi, sigma = wall < 0 ? 1.0 : -1.0; /* sigma: into the box */
         double e, d1, d2;
-        isk_fl_basis_cached(&cache, k, tau, &e, &d1, &d2);
+        isk_fl_basis_cached(cache, k, tau, &e, &d1, &d2);
         const double ui = U * e + a * d1;
         P = W;
         U = sigma * ui < 0.0 ? -c * ui : ui; /* only an outward velocity is turned */
@@ -372,7 +368,7 @@ static void impact_axis(double *pos, double *vel, const axis_motion *am, size_t 
         }
         same = wall == last ? same + 1 : 0;
         last = wall;
-        isk_fl_basis_cached(&cache, k, s, &e, &d1, &d2);
+        isk_fl_basis_cached(cache, k, s, &e, &d1, &d2);
         end = P + U * d1 + a * d2;
         uend = U * e + a * d1;
     }
@@ -400,7 +396,8 @@ static void impact_group(size_t o, size_t n, double *restrict x, double *restric
                          double *restrict vy, const impact_walls *iw)
 {
     const isk_wall_box *w = &iw->box;
-    isk_fl_memo memo = {0};
+    isk_fl_cache cache; /* the group's basis values (flight.h) */
+    cache.n = cache.next = 0;
     for (size_t i = o; i < o + n; i++) {
         const int out_x = iw->x_on && !(x[i] >= w->left && x[i] <= w->right);
         const int out_y = iw->y_on && !(y[i] >= w->bottom && y[i] <= w->top);
@@ -408,9 +405,9 @@ static void impact_group(size_t o, size_t n, double *restrict x, double *restric
             continue;
         const double k = iw->drag > 0.0 ? iw->drag / iw->m[i] : 0.0;
         if (out_x)
-            impact_axis(&x[i], &vx[i], &iw->mx, i, k, iw->h, w->left, w->right, iw->c, &memo);
+            impact_axis(&x[i], &vx[i], &iw->mx, i, k, iw->h, w->left, w->right, iw->c, &cache);
         if (out_y)
-            impact_axis(&y[i], &vy[i], &iw->my, i, k, iw->h, w->bottom, w->top, iw->c, &memo);
+            impact_axis(&y[i], &vy[i], &iw->my, i, k, iw->h, w->bottom, w->top, iw->c, &cache);
     }
 }
 

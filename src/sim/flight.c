@@ -72,19 +72,11 @@ void isk_fl_fit(double p0, double v0, double p1, double v1, double k, double h, 
     *delta = v1 - (u0 * e + acc * d1);
 }
 
-void isk_fl_from_end(double p1, double v1, double a, double k, double h, double delta, isk_fl_memo *memo,
+void isk_fl_from_end(double p1, double v1, double a, double k, double h, double delta, isk_fl_cache *cache,
                      double *P, double *U)
 {
     double e, d1, d2;
-    if (memo && memo->set && memo->k == k && memo->t == h) {
-        e = memo->e;
-        d1 = memo->d1;
-        d2 = memo->d2;
-    } else {
-        isk_fl_basis(k, h, &e, &d1, &d2);
-        if (memo)
-            *memo = (isk_fl_memo){k, h, e, d1, d2, 1};
-    }
+    isk_fl_basis_cached(cache, k, h, &e, &d1, &d2);
     /* u(h) = U e + a D1 = v1 - delta;  p(h) = P + U D1 + a D2 = p1 */
     double u0 = ((v1 - delta) - a * d1) / e;
     *U = u0;

@@ -38,68 +38,56 @@ double isk_fl_phi2_series(double h);
 void isk_fl_fit(double p0, double v0, double p1, double v1, double k, double h, double *U, double *a,
                 double *delta);
 
-/* isk_fl_basis(k, t) remembered for the last (k, t) asked: the particles
- * of a block mostly share one mass, so the walls' reconstruction of their
- * flights over the same step needs one expm1, not one each.  Zero it to
- * start (empty: `set` 0). */
-typedef struct isk_fl_memo {
-    double k, t, e, d1, d2;
-    int set;
-} isk_fl_memo;
-
-/* The flight of one axis that ends at (p1, v1) after h with acceleration
- * a, drag k and the integrator's velocity offset delta (v1 = u(h) +
- * delta): its start P and start velocity U.  `memo` may be NULL. */
-void isk_fl_from_end(double p1, double v1, double a, double k, double h, double delta, isk_fl_memo *memo,
-                     double *P, double *U);
-
-/* The time in (0, +inf) at which u(t) = 0 (the flight's turning point), or
- * -1 when it has none (U and a not of opposite signs). */
-double isk_fl_turn(double U, double a, double k);
-
-/* The last few isk_fl_basis(k, t) of one particle's bounces: a bounce asks
- * for the same time more than once (the turning point, then the root
+/* The last few isk_fl_basis(k, t) asked for, for the walls of one group of
+ * particles: they mostly share one mass, so the reconstruction of their
+ * flights over the same step needs one basis, not one each; and a bounce
+ * asks for the same time more than once (the turning point, then the root
  * solve's bracket end there; the Newton step that found the hit, then the
- * velocity at it; the step's end, from the reconstruction).  A pure
- * function, so the values are the ones a new call would give.  Zero it to
- * start. */
+ * velocity at it).  A pure function, so the values are the ones a new call
+ * would give.  Empty: n = next = 0 (the arrays need no clearing). */
 enum { ISK_FL_CACHE = 4 };
 typedef struct isk_fl_cache {
     double k[ISK_FL_CACHE], t[ISK_FL_CACHE], e[ISK_FL_CACHE], d1[ISK_FL_CACHE], d2[ISK_FL_CACHE];
     int n, next;
 } isk_fl_cache;
 
-/* Enters values isk_fl_basis(k, t) gave elsewhere (isk_fl_memo's). */
-static inline void isk_fl_cache_put(isk_fl_cache *c, double k, double t, double e, double d1, double d2)
-{
-    const int i = c->next;
-    c->k[i] = k;
-    c->t[i] = t;
-    c->e[i] = e;
-    c->d1[i] = d1;
-    c->d2[i] = d2;
-    c->next = (i + 1) % ISK_FL_CACHE;
-    if (c->n < ISK_FL_CACHE)
-        c->n++;
-}
-
 /* isk_fl_basis through the cache (NULL: none).  Inline: a bounce asks
  * seven or eight times, and as calls the lookups cost a tenth of a
  * settled floor's update. */
 static inline void isk_fl_basis_cached(isk_fl_cache *c, double k, double t, double *e, double *d1, double *d2)
 {
-    if (c)
-        for (int i = 0; i < c->n; i++)
-            if (c->t[i] == t && c->k[i] == k) {
-                *e = c->e[i];
-                *d1 = c->d1[i];
-                *d2 = c->d2[i];
-                return;
-            }
+    if (!c) {
+        isk_fl_basis(k, t, e, d1, d2);
+        return;
+    }
+    for (int i = 0; i < c->n; i++)
+        if (c->t[i] == t && c->k[i] == k) {
+            *e = c->e[i];
+            *d1 = c->d1[i];
+            *d2 = c->d2[i];
+            return;
+        }
     isk_fl_basis(k, t, e, d1, d2);
-    if (c)
-        isk_fl_cache_put(c, k, t, *e, *d1, *d2);
+    const int i = c->next;
+    c->k[i] = k;
+    c->t[i] = t;
+    c->e[i] = *e;
+    c->d1[i] = *d1;
+    c->d2[i] = *d2;
+    c->next = (i + 1) % ISK_FL_CACHE;
+    if (c->n < ISK_FL_CACHE)
+        c->n++;
 }
+
+/* The flight of one axis that ends at (p1, v1) after h with acceleration
+ * a, drag k and the integrator's velocity offset delta (v1 = u(h) +
+ * delta): its start P and start velocity U.  `cache` may be NULL. */
+void isk_fl_from_end(double p1, double v1, double a, double k, double h, double delta, isk_fl_cache *cache,
+                     double *P, double *U);
+
+/* The time in (0, +inf) at which u(t) = 0 (the flight's turning point), or
+ * -1 when it has none (U and a not of opposite signs). */
+double isk_fl_turn(double U, double a, double k);
 
 /* A root of f(t) = c0 + U D1(t) + a D2(t) in [t0, t1], given f(t0) >= 0 and
  * f(t1) < 0 (the flight leaves the side where f > 0 in that interval, and f

@@ -3,7 +3,6 @@
 
 #include <math.h>
 #include <stdint.h>
-#include <string.h>
 
 #include "raster/span_simd.h" /* ISK__SPAN_AVX2, ISK__AVX2_FN, isk__have_avx2 */
 #include "sim/kernels.h"
@@ -22,7 +21,6 @@ static inline uint64_t fused_loop(size_t n, double *restrict x, double *restrict
     for (size_t i = 0; i < n; i++) {
         const double mi = m[i];
         double ux = vx[i], uy = vy[i];
-        double px = x[i], py = y[i];
         double fx = 0.0, fy = 0.0; /* memset's +0.0 */
         if (G)
             fy = fy + isk_k_gravity_fy(mi, g);
@@ -37,6 +35,7 @@ static inline uint64_t fused_loop(size_t n, double *restrict x, double *restrict
             fx = fx + isk_k_drag(ux, be);
             fy = fy + isk_k_drag(uy, be);
         }
+        double px = x[i], py = y[i];
         if (E)
             isk_k_euler(&px, &py, &ux, &uy, mi, fx, fy, dt);
         else
@@ -176,19 +175,16 @@ static inline uint64_t pot_step(const pot_par *restrict p, double x0, double y0,
     return over & p->sm;
 }
 
-/* The state a block starts the step from, stored by the loop with
- * potentials as it reads it: for the fix-up, and as the contact stages'
- * start state when the caller asks for it (isk_motion_start: the remember
- * stage's copy without a pass of its own).  As four restrict parameters
- * of the loop: through a struct's pointers gcc could not tell the copy
- * from the columns, and the loop was no longer vectorized (14.6 ns a
- * particle-step instead of 3 with a Coulomb potential). */
-#define KEEP_START(i, x0, y0, vx0, vy0) (kx[i] = (x0), ky[i] = (y0), kvx[i] = (vx0), kvy[i] = (vy0))
-#define KEEP_PARAMS double *restrict kx, double *restrict ky, double *restrict kvx, double *restrict kvy
-#define KEEP_ARGS(sv) (sv)->x, (sv)->y, (sv)->vx, (sv)->vy
+
 
 /* The loop: NP potentials, A constant acceleration, D drag, E explicit
- * Euler, all compile-time.  Keeps the old state in k* and stores in *over
+ * Euler, all compile-time.  Stores the state a particle starts the step
+ * from in kx..kvy as it reads it: for the fix-up, and as the contact
+ * stages' start state when the caller asks for it (isk_motion_start: the
+ * remember stage's copy without a pass of its own).  As four restrict
+ * parameters: through a struct's pointers gcc could not tell the copy from
+ * the columns and left the loop scalar (14.6 ns a particle-step instead of
+ * 3 with a Coulomb potential).  Stores in *over
  * the or of pot_step's words: when its top bit is set some force did not
  * survive the sound rule, and the caller redoes the block (pot_fixup).
  * Returns the or-ed non-finite bits: of the four new values for explicit
@@ -197,12 +193,17 @@ static inline uint64_t pot_step(const pot_par *restrict p, double x0, double y0,
  * so the two say what the four would. */
 static inline uint64_t pot_loop(size_t n, double *restrict x, double *restrict y, double *restrict vx,
                                 double *restrict vy, const double *restrict m, const pot_par *restrict p,
-                                KEEP_PARAMS, uint64_t *over, const int NP, const int A, const int D, const int E)
+                                double *restrict kx, double *restrict ky, double *restrict kvx,
+                                double *restrict kvy, uint64_t *over, const int NP, const int A, const int D,
+                                const int E)
 {
     uint64_t acc = 0, ov = 0;
     for (size_t i = 0; i < n; i++) {
         const double x0 = x[i], y0 = y[i], vx0 = vx[i], vy0 = vy[i];
-        KEEP_START(i, x0, y0, vx0, vy0);
+        kx[i] = x0;
+        ky[i] = y0;
+        kvx[i] = vx0;
+        kvy[i] = vy0;
         double o[4];
         ov |= pot_step(p, x0, y0, vx0, vy0, m[i], o, NP, A, D, E, 0);
         x[i] = o[0];
@@ -245,7 +246,7 @@ typedef uint64_t (*pot_fn)(size_t n, double *restrict x, double *restrict y, dou
                               double *restrict vy, const double *restrict m, const pot_par *restrict p,        \
                               const isk_motion_start *restrict sv, uint64_t *over)                             \
     {                                                                                                            \
-        return pot_loop(n, x, y, vx, vy, m, p, KEEP_ARGS(sv), over, NP, A, D, E);                               \
+        return pot_loop(n, x, y, vx, vy, m, p, sv->x, sv->y, sv->vx, sv->vy, over, NP, A, D, E);                \
     }
 #if ISK__SPAN_AVX2
 #define POT(NP, A, D, E)                                                                                         \
@@ -349,15 +350,8 @@ int isk_motion_fused_build(int avx2, isk_integrator method, const isk_forces *f,
         /* No potential acts (or each one's k*Q is 0): the general path then
          * adds P = +0.0 at most, which changes no sum (never -0.0). */
         const fused_fn loop = fused_table[avx2 && isk__have_avx2()][G * 8 + A * 4 + D * 2 + E];
-        if (start) {
-            /* A copy ahead of the loop: a copy of the start state in the
-             * loop bought 0.1 ns a particle-step in the caches, none at
-             * 10^6 particles (bench_walls), for 32 more loops. */
-            memcpy(start->x, x, n * sizeof *x);
-            memcpy(start->y, y, n * sizeof *y);
-            memcpy(start->vx, vx, n * sizeof *vx);
-            memcpy(start->vy, vy, n * sizeof *vy);
-        }
+        if (start) /* a copy inside these 32 loops bought 0.1 ns in the caches, none at 10^6 (bench_walls) */
+            isk_motion_start_copy(start, n, x, y, vx, vy);
         acc = loop(n, x, y, vx, vy, m, f->gravity, f->ax, f->ay, f->drag, inv_h, dt);
     } else {
         p.g = f->gravity;

@@ -38,6 +38,7 @@
 #define ISKRA_SIM_MOTION_FUSED_H
 
 #include <stddef.h>
+#include <string.h>
 
 #include "iskra/forces.h"
 #include "iskra/integrate.h"
@@ -50,6 +51,24 @@
 typedef struct isk_motion_start {
     double *x, *y, *vx, *vy;
 } isk_motion_start;
+
+/* The block runner's: the scratch's x_old, y_old, vx_old, vy_old. */
+static inline isk_motion_start isk_motion_start_of(isk_scratch *s)
+{
+    return (isk_motion_start){s->x_old, s->y_old, s->vx_old, s->vy_old};
+}
+
+/* The start state kept by a copy of its own, where no fused loop stores it
+ * on the way (the remember stage, a motion stage on the general path, the
+ * loops without potentials). */
+static inline void isk_motion_start_copy(const isk_motion_start *s, size_t n, const double *x, const double *y,
+                                         const double *vx, const double *vy)
+{
+    memcpy(s->x, x, n * sizeof *x);
+    memcpy(s->y, y, n * sizeof *y);
+    memcpy(s->vx, vx, n * sizeof *vx);
+    memcpy(s->vy, vy, n * sizeof *vy);
+}
 
 /* Steps the n particles and returns 1 when the fused pass covers this
  * method and these forces (then *nonfinite is 1 when some new x, y, vx or

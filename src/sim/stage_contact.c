@@ -5,6 +5,7 @@
 #include <string.h>
 
 #include "sim/block_prefetch.h"
+#include "sim/motion_fused.h" /* isk_motion_start: the state the contact stages read */
 #include "sim/stage.h"
 
 static void run_remember(const isk_stage *st, isk_block *b, double h)
@@ -12,10 +13,8 @@ static void run_remember(const isk_stage *st, isk_block *b, double h)
     (void)st;
     (void)h;
     isk_block_prefetch_next(b, 5); /* the first stage to read the block */
-    memcpy(b->s->x_old, b->x, b->n * sizeof *b->x);
-    memcpy(b->s->y_old, b->y, b->n * sizeof *b->y);
-    memcpy(b->s->vx_old, b->vx, b->n * sizeof *b->vx);
-    memcpy(b->s->vy_old, b->vy, b->n * sizeof *b->vy);
+    const isk_motion_start start = isk_motion_start_of(b->s);
+    isk_motion_start_copy(&start, b->n, b->x, b->y, b->vx, b->vy);
 }
 
 static void describe_remember(const isk_stage *st, FILE *out)

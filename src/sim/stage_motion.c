@@ -60,8 +60,7 @@ const isk_stage_kind isk_stage_drift = {"drift", run_drift, describe_drift};
 static void run_motion(const isk_stage *st, isk_block *b, double h)
 {
     isk_block_prefetch_next(b, 5);
-    isk_scratch *s = b->s;
-    const isk_motion_start start = {s->x_old, s->y_old, s->vx_old, s->vy_old};
+    const isk_motion_start start = isk_motion_start_of(b->s);
     int nonfinite;
     if (isk_motion_fused(st->u.motion.method, st->u.motion.forces, b->n, b->x, b->y, b->vx, b->vy, b->m, h,
                          st->u.motion.remember ? &start : NULL, &nonfinite)) {
@@ -69,7 +68,7 @@ static void run_motion(const isk_stage *st, isk_block *b, double h)
         return;
     }
     if (st->u.motion.remember)
-        isk_stage_remember.run(st, b, h);
+        isk_motion_start_copy(&start, b->n, b->x, b->y, b->vx, b->vy);
     isk_integrate_block(st->u.motion.method, st->u.motion.forces, b->s, b->n, b->x, b->y, b->vx, b->vy,
                         b->m, h);
     b->s->nonfinite |= isk_k_any_nonfinite2(b->n, b->x, b->y) | isk_k_any_nonfinite2(b->n, b->vx, b->vy);
