@@ -88,6 +88,12 @@ CFLAGS_BASE := $(CSTD) $(OPT) -Wall -Wextra -Wpedantic -ffp-contract=off -fno-ma
 CFLAGS  ?=
 ALL_CFLAGS = $(CFLAGS_BASE) $(CFLAGS)
 LDFLAGS ?=
+# ... and a flag that brings it in by another name (CFLAGS=..., OPT=...) stops the build.
+VALUE_CHANGING_FLAGS := -ffast-math -Ofast -funsafe-math-optimizations -fassociative-math -freciprocal-math \
+                        -ffp-contract=fast -ffinite-math-only
+ifneq ($(filter $(VALUE_CHANGING_FLAGS),$(ALL_CFLAGS) $(LDFLAGS)),)
+$(error $(filter $(VALUE_CHANGING_FLAGS),$(ALL_CFLAGS) $(LDFLAGS)) changes floating-point results: the reference images and the thesis trajectories are compared bit for bit)
+endif
 
 PKG_PNG  = $(shell pkg-config --cflags --libs libpng 2>/dev/null || echo -lpng)
 PKG_GIF  = $(shell pkg-config --cflags --libs libgif 2>/dev/null || echo -lgif)
