@@ -85,11 +85,40 @@ static ISK__INLINE void run_pixels(const isk_canvas *c, int r0, int r1, const is
  *      step with AVX2 when the CPU has it: the same IEEE operations in the
  *      same order, so the same doubles), and prefetch its two rows;
  *   3. blend in index order, two pixels of a row at a time (SSE2) from the
- *      batch's coverage table; points near the edges or off the canvas go
- *      through the single-dot kernel (clipping), in their turn.
+ *      batch's coverage table; a block cut by the canvas's last column or
+ *      row or by the band's rows gets its weights all the same and blends
+ *      only its pixels on them (DOT_EDGE); points off the canvas go through
+ *      the single-dot kernel (clipping), in their turn.
  * Pass 2 is pure arithmetic, independent from point to point, so the
  * processor overlaps it freely; the blends then find their pixels loaded.
  * The stages are view/dot_block.h's. */
+
+/* The pixels of a DOT_EDGE point's block that lie on the rows [r0, r1)
+ * and the canvas's columns (the single dot's clipping, isk__blend_2x2, with
+ * the weights already known; the top-left pixel's column is on the canvas,
+ * its row at least r0 - 1). */
+static ISK__INLINE void edge_row(uint8_t *p, int right, isk_color col, const isk__cov_lut *lut, uint32_t wa,
+                                 uint32_t wb, isk_blend mode)
+{
+    if (right && lut) {
+        px2(p, col, lut, wa, wb, mode);
+    } else {
+        isk__px_w(p, col, lut, wa, mode);
+        if (right)
+            isk__px_w(p + 4, col, lut, wb, mode);
+    }
+}
+
+static ISK__INLINE void edge_block(uint8_t *pixels, size_t stride, int width, int r0, int r1, int ix, int iy,
+                                   const uint8_t w[4], isk_color col, const isk__cov_lut *lut, isk_blend mode)
+{
+    const int right = ix + 1 < width;
+    uint8_t *p = pixels + (size_t)ix * 4u;
+    if (iy >= r0)
+        edge_row(p + (size_t)iy * stride, right, col, lut, w[0], w[1], mode);
+    if (iy + 1 < r1)
+        edge_row(p + (size_t)(iy + 1) * stride, right, col, lut, w[2], w[3], mode);
+}
 
 static ISK__INLINE void run_dots_blocked(const isk_canvas *c, int r0, int r1, const isk_view *v, size_t n,
                                          const uint32_t *list, const double *x, const double *y, isk_color col,
@@ -131,14 +160,16 @@ static ISK__INLINE void run_dots_blocked(const isk_canvas *c, int r0, int r1, co
         weights(&b, kept, W1, Y0, H1);
 #if defined(__GNUC__)
         for (int k = 0; k < kept; k++)
-            if (b.fast[k]) {
+            if (b.fast[k] == DOT_FULL) {
                 const uint8_t *q = pixels + (size_t)b.iy[k] * stride + (size_t)b.ix[k] * 4u;
                 __builtin_prefetch(q, 1);
                 __builtin_prefetch(q + stride, 1);
             }
 #endif
         for (int k = 0; k < kept; k++) {
-            if (b.fast[k]) {
+            if (b.fast[k] == DOT_EDGE) {
+                edge_block(pixels, stride, c->width, r0, r1, b.ix[k], b.iy[k], b.w[k], col, lut, mode);
+            } else if (b.fast[k]) {
                 uint8_t *p = pixels + (size_t)b.iy[k] * stride + (size_t)b.ix[k] * 4u;
                 if (lut) {
                     px2(p, col, lut, b.w[k][0], b.w[k][1], mode);
