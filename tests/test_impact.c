@@ -8,6 +8,7 @@
 #include <criterion/logging.h>
 
 #include <math.h>
+#include <stdint.h>
 #include <stdio.h>
 #include <string.h>
 
@@ -319,6 +320,81 @@ Test(impact, particles_come_to_rest_on_a_floor_and_stay, .timeout = 60)
                       segments ? "segment" : "walls", isk_integrator_name((isk_integrator)m), top);
             isk_effect_destroy(fx);
         }
+}
+
+/* The walls answer a whole array as they answer each particle alone: the
+ * end states of particles resting on a floor repeat bit for bit from one
+ * particle to the next, and the answer kept for one such state (bounds.c's
+ * rest_memo) must go only to the same state of the same mass.  End states
+ * drawn from a few values near the floor and the ceiling (resting, hopping,
+ * just outside), masses from a few values with very different drag rates,
+ * both walls of both axes; from the end state and from a start state. */
+Test(impact, a_whole_array_gets_each_particles_own_answer)
+{
+    enum { N = 3000 };
+    static double x[N], y[N], vx[N], vy[N], m[N], x0[N], y0[N], vx0[N], vy0[N];
+    static double xs[N], ys[N], vxs[N], vys[N];
+    const double h = 1.0 / 60, a = -G, drag = 0.5;
+    const double delta = -0.5 * a * h; /* a resting particle's velocity: semi-implicit Euler's offset */
+    const double masses[4] = {1.0, 1.0, 0.01, 100.0};
+    /* end states as a resting particle's step makes them (semi-implicit
+     * Euler), for each mass, and a few others */
+    double py[10], pv[10];
+    for (int k = 0; k < 4; k++) {
+        const double kk = drag / masses[k], v1 = delta + h * (a - kk * delta);
+        py[k] = 0.0 + h * v1;
+        pv[k] = v1;
+    }
+    const double other_y[4] = {-1e-3, -2e-7, 10.0 + 1e-4, -1e-12}, other_v[4] = {-0.5, 1e-3, 0.3, -1e-9};
+    for (int k = 0; k < 4; k++) {
+        py[4 + k] = other_y[k];
+        pv[4 + k] = other_v[k];
+    }
+    py[8] = py[9] = py[0]; /* a resting particle's position, other speeds */
+    pv[8] = pv[0] - 1.0;
+    pv[9] = -pv[0];
+    isk_bounds b;
+    cr_assert_eq(isk_bounds_reflect(&b, -5, 5, 0, 10, ISK_SIDE_ALL, 0, 0.6), ISK_OK);
+    uint64_t r = 99;
+    for (int from_start = 0; from_start < 2; from_start++) {
+        for (int i = 0; i < N; i++) {
+            r = r * 6364136223846793005ull + 1442695040888963407ull;
+            const int s = (int)(r >> 33) % 10, t = (int)(r >> 40) % 10, q = (int)(r >> 50) % 4;
+            m[i] = masses[(i / 7 + q) % 4];
+            y[i] = py[s];
+            vy[i] = pv[s];
+            x[i] = t < 2 ? -5.0 + py[t] : t < 4 ? 5.0 - py[t] : 1.0 + t; /* resting against the side walls too */
+            vx[i] = t < 2 ? pv[t] : t < 4 ? -pv[t] : 0.5;
+            y0[i] = y[i] < 0 ? 1e-3 : y[i] > 10 ? 10 - 1e-3 : y[i];
+            vy0[i] = vy[i] - a * h;
+            x0[i] = x[i] < -5 ? -5 + 1e-3 : x[i] > 5 ? 5 - 1e-3 : x[i];
+            vx0[i] = vx[i];
+        }
+        memcpy(xs, x, sizeof x);
+        memcpy(ys, y, sizeof y);
+        memcpy(vxs, vx, sizeof vx);
+        memcpy(vys, vy, sizeof vy);
+        isk_step_motion mo = {NULL, NULL, NULL, NULL, m, drag, h, 0.0, a, -0.5};
+        if (from_start)
+            mo = (isk_step_motion){x0, y0, vx0, vy0, m, drag, h, 0.0, 0.0, 0.0};
+        isk_bounds_apply_step(&b, &mo, N, x, y, vx, vy);
+        for (int i = 0; i < N; i++) {
+            isk_step_motion one = mo;
+            one.m = m + i;
+            if (from_start) {
+                one.x0 = x0 + i;
+                one.y0 = y0 + i;
+                one.vx0 = vx0 + i;
+                one.vy0 = vy0 + i;
+            }
+            isk_bounds_apply_step(&b, &one, 1, xs + i, ys + i, vxs + i, vys + i);
+            cr_assert(!memcmp(&x[i], &xs[i], 8) && !memcmp(&y[i], &ys[i], 8) && !memcmp(&vx[i], &vxs[i], 8) &&
+                          !memcmp(&vy[i], &vys[i], 8),
+                      "%s, particle %d (mass %g): (%a, %a, %a, %a) in the array, (%a, %a, %a, %a) alone",
+                      from_start ? "from the start" : "from the end", i, m[i], x[i], y[i], vx[i], vy[i], xs[i], ys[i],
+                      vxs[i], vys[i]);
+        }
+    }
 }
 
 /* ---- the thesis mode and the end-state rule are what they were ----------- */

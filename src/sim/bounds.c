@@ -260,17 +260,21 @@ typedef struct axis_motion {
 /* One axis of one particle whose step ended outside [lo, hi] (a disabled
  * wall is at -inf / +inf): the bounces of iskra/impact.h.  (*pos, *vel) is
  * the integrator's end state, k the drag rate b/m. */
-static void impact_axis(double *pos, double *vel, const axis_motion *am, size_t i, double k, double h, double lo,
-                        double hi, double c, isk_fl_cache *cache)
+/* What impact_axis did: RESTED_AT_ONCE is the resting contact at the start
+ * of the step (the answer rest_memo keeps), BOUNCED anything else. */
+enum { BOUNCED, RESTED_AT_ONCE };
+
+static int impact_axis(double *pos, double *vel, const axis_motion *am, size_t i, double k, double h, double lo,
+                       double hi, double c, isk_fl_cache *cache)
 {
     const double p1 = *pos, v1 = *vel;
     if (!(isfinite(p1) && isfinite(v1)))
-        return; /* not finite: the runner removes and counts it */
+        return BOUNCED; /* not finite: the runner removes and counts it */
     double P, U, a, delta;
     if (am->p0) {
         P = am->p0[i];
         if (!(isfinite(P) && isfinite(am->v0[i])))
-            return;
+            return BOUNCED;
         isk_fl_fit(P, am->v0[i], p1, v1, k, h, &U, &a, &delta);
     } else {
         a = am->a;
@@ -286,7 +290,7 @@ static void impact_axis(double *pos, double *vel, const axis_motion *am, size_t 
     }
     if (!(P >= lo && P <= hi) || !(isfinite(U) && isfinite(a) && isfinite(delta))) {
         settle_one(pos, vel, lo, hi, c); /* started outside (born there): no crossing to find */
-        return;
+        return BOUNCED;
     }
     /* A start velocity within rounding of zero is zero: a particle resting
      * on a wall then meets it at once and rests again in a few operations
@@ -305,12 +309,12 @@ static void impact_axis(double *pos, double *vel, const axis_motion *am, size_t 
     if (a < 0.0 && P - lo <= near && fabs(U) <= slow) {
         *pos = lo;
         *vel = delta;
-        return;
+        return RESTED_AT_ONCE;
     }
     if (a > 0.0 && hi - P <= near && fabs(U) <= slow) {
         *pos = hi;
         *vel = delta;
-        return;
+        return RESTED_AT_ONCE;
     }
     double s = h, end = p1, uend = v1 - delta;
     int last = 0, same = 0;
@@ -330,7 +334,7 @@ static void impact_axis(double *pos, double *vel, const axis_motion *am, size_t 
             if (same >= 2) { /* hopping on one wall ever more often: it rests there */
                 *pos = last < 0 ? lo : hi;
                 *vel = delta;
-                return;
+                return BOUNCED;
             }
             settle_one(&end, &uend, lo, hi, c); /* wall to wall, fast: fold the rest */
             break;
@@ -364,7 +368,7 @@ static void impact_axis(double *pos, double *vel, const axis_motion *am, size_t 
             (!(sigma * U > 0.0) || (c < 1.0 && 2.0 * sigma * U <= -sigma * a * (1.0 - c) * s * (1.0 + 1e-9)))) {
             *pos = W;
             *vel = delta;
-            return;
+            return BOUNCED;
         }
         same = wall == last ? same + 1 : 0;
         last = wall;
@@ -376,6 +380,7 @@ static void impact_axis(double *pos, double *vel, const axis_motion *am, size_t 
         end = end < lo ? lo : hi;
     *pos = end;
     *vel = uend + delta;
+    return BOUNCED;
 }
 
 /* What the walls of a block need beyond the box: which axes have walls,
@@ -389,25 +394,92 @@ typedef struct impact_walls {
     isk_wall_screen_fn screen;
 } impact_walls;
 
+/* One answer of impact_axis for an axis whose flight is known from the end
+ * state: then the answer depends only on (p1, v1) and the mass (through
+ * k = b/m), everything else being the call's constants, so an input equal
+ * bit for bit gets the same answer without the work.  Particles resting on
+ * a floor all end their step in the same state (the one their integrator
+ * makes of (floor, offset) for their mass), step after step: a scene that
+ * has settled is mostly this one input.  Only a resting answer is kept,
+ * so the few particles still hopping between them do not evict it. */
+typedef struct rest_memo {
+    uint64_t p1, v1, m; /* the input's bits (m: 0 without drag, where k = 0 for every mass) */
+    double pos, vel;    /* the answer */
+    int valid;
+} rest_memo;
+
+static uint64_t bits_of(double v)
+{
+    uint64_t u;
+    memcpy(&u, &v, sizeof u);
+    return u;
+}
+
+/* impact_axis for particle i, through the memo when the flight is known
+ * from the end state. */
+static void impact_axis_memo(double *pos, double *vel, const axis_motion *am, size_t i, const impact_walls *iw,
+                             double lo, double hi, rest_memo *memo, isk_fl_cache *cache)
+{
+    const int drag = iw->drag > 0.0;
+    if (am->p0) { /* the start state is an input too: nothing to reuse */
+        impact_axis(pos, vel, am, i, drag ? iw->drag / iw->m[i] : 0.0, iw->h, lo, hi, iw->c, cache);
+        return;
+    }
+    const uint64_t p1 = bits_of(*pos), v1 = bits_of(*vel), m = drag ? bits_of(iw->m[i]) : 0;
+    if (memo->valid && p1 == memo->p1 && v1 == memo->v1 && m == memo->m) {
+        *pos = memo->pos;
+        *vel = memo->vel;
+        return;
+    }
+    if (impact_axis(pos, vel, am, i, drag ? iw->drag / iw->m[i] : 0.0, iw->h, lo, hi, iw->c, cache) ==
+        RESTED_AT_ONCE)
+        *memo = (rest_memo){p1, v1, m, *pos, *vel, 1};
+}
+
+/* Whether the memo holds the answer for (p1, v1) of mass key m. */
+static int memo_has(const rest_memo *memo, double p1, double v1, uint64_t m)
+{
+    return memo->valid & (bits_of(p1) == memo->p1) & (bits_of(v1) == memo->v1) & (m == memo->m);
+}
+
 /* The particles [o, o + n) of a group the screen flagged: each axis of each
  * particle that ended outside gets its bounces (the axes are independent:
- * x's touch x and vx, y's y and vy, so the order between them is free). */
+ * x's touch x and vx, y's y and vy, so the order between them is free).
+ * A first pass without branches finds who is outside and gives the memo's
+ * answer to those it holds: in a settled scene that is almost everyone,
+ * among a few hoppers in no order a predictor could learn.  The others go
+ * through impact_axis one by one. */
 static void impact_group(size_t o, size_t n, double *restrict x, double *restrict y, double *restrict vx,
-                         double *restrict vy, const impact_walls *iw)
+                         double *restrict vy, const impact_walls *iw, rest_memo memo[2])
 {
     const isk_wall_box *w = &iw->box;
+    const double *m = iw->drag > 0.0 ? iw->m : NULL; /* the memo's mass key: 0 without drag */
+    const rest_memo mx = memo[0], my = memo[1];
+    uint32_t need_x = 0, need_y = 0; /* bit j: particle o + j, n <= ISK_WALL_SCREEN */
+    for (size_t j = 0; j < n; j++) {
+        const size_t i = o + j;
+        const uint64_t mk = m ? bits_of(m[i]) : 0;
+        const int out_x = iw->x_on & !(isgreaterequal(x[i], w->left) & islessequal(x[i], w->right));
+        const int out_y = iw->y_on & !(isgreaterequal(y[i], w->bottom) & islessequal(y[i], w->top));
+        const int hit_x = out_x & memo_has(&mx, x[i], vx[i], mk), hit_y = out_y & memo_has(&my, y[i], vy[i], mk);
+        x[i] = hit_x ? mx.pos : x[i];
+        vx[i] = hit_x ? mx.vel : vx[i];
+        y[i] = hit_y ? my.pos : y[i];
+        vy[i] = hit_y ? my.vel : vy[i];
+        need_x |= (uint32_t)(out_x & !hit_x) << j;
+        need_y |= (uint32_t)(out_y & !hit_y) << j;
+    }
     isk_fl_cache cache; /* the group's basis values (flight.h) */
     cache.n = cache.next = 0;
-    for (size_t i = o; i < o + n; i++) {
-        const int out_x = iw->x_on && !(x[i] >= w->left && x[i] <= w->right);
-        const int out_y = iw->y_on && !(y[i] >= w->bottom && y[i] <= w->top);
-        if (!(out_x | out_y))
+    const uint32_t need = need_x | need_y;
+    for (unsigned j = 0; need >> j != 0; j++) {
+        if (!(need >> j & 1u))
             continue;
-        const double k = iw->drag > 0.0 ? iw->drag / iw->m[i] : 0.0;
-        if (out_x)
-            impact_axis(&x[i], &vx[i], &iw->mx, i, k, iw->h, w->left, w->right, iw->c, &cache);
-        if (out_y)
-            impact_axis(&y[i], &vy[i], &iw->my, i, k, iw->h, w->bottom, w->top, iw->c, &cache);
+        const size_t i = o + j;
+        if (need_x >> j & 1u)
+            impact_axis_memo(&x[i], &vx[i], &iw->mx, i, iw, w->left, w->right, &memo[0], &cache);
+        if (need_y >> j & 1u)
+            impact_axis_memo(&y[i], &vy[i], &iw->my, i, iw, w->bottom, w->top, &memo[1], &cache);
     }
 }
 
@@ -416,13 +488,14 @@ static void impact_group(size_t o, size_t n, double *restrict x, double *restric
 static void impact_block(size_t n, double *restrict x, double *restrict y, double *restrict vx, double *restrict vy,
                          const impact_walls *iw)
 {
+    rest_memo memo[2] = {{0}}; /* per axis */
     for (size_t o = 0; o < n; o += ISK_WALL_SCREEN_SPAN) {
         const size_t span = n - o < ISK_WALL_SCREEN_SPAN ? n - o : ISK_WALL_SCREEN_SPAN;
         const uint64_t flags = iw->screen(span, x + o, y + o, &iw->box);
         for (size_t g = 0; g < ISK_WALL_SCREEN_GROUPS && (flags >> g) != 0; g++)
             if (flags >> g & 1u) {
                 const size_t first = o + g * ISK_WALL_SCREEN, rest = n - first;
-                impact_group(first, rest < ISK_WALL_SCREEN ? rest : ISK_WALL_SCREEN, x, y, vx, vy, iw);
+                impact_group(first, rest < ISK_WALL_SCREEN ? rest : ISK_WALL_SCREEN, x, y, vx, vy, iw, memo);
             }
     }
 }
