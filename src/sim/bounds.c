@@ -8,6 +8,7 @@
 
 #include "sim/flight.h"
 #include "sim/kernels.h"
+#include "sim/rest_screen.h"
 #include "sim/wall_screen.h"
 
 const char *const isk_bounce_mode_names[ISK_BOUNCE_MODE_COUNT] = {"thesis", "reflect"};
@@ -392,6 +393,7 @@ typedef struct impact_walls {
     const double *m;
     double drag, h, c;
     isk_wall_screen_fn screen;
+    isk_rest_screen_fn rest_screen;
 } impact_walls;
 
 /* One answer of impact_axis for an axis whose flight is known from the end
@@ -442,39 +444,115 @@ static int memo_has(const rest_memo *memo, double p1, double v1, uint64_t m)
     return memo->valid & (bits_of(p1) == memo->p1) & (bits_of(v1) == memo->v1) & (m == memo->m);
 }
 
+/* Below this many particles of a group left to look at on an axis, the
+ * resting screen costs more than it saves: a settled scene of one mass
+ * leaves one or two hoppers a group after the memo, one of many masses all
+ * sixteen. */
+#define REST_SCREEN_MIN 4
+
+static int bit_count(uint32_t v)
+{
+#if defined(__GNUC__)
+    return __builtin_popcount(v);
+#else
+    int c = 0;
+    for (; v; v &= v - 1)
+        c++;
+    return c;
+#endif
+}
+
+/* The index of v's lowest set bit (v != 0). */
+static unsigned lowest_bit(uint32_t v)
+{
+#if defined(__GNUC__)
+    return (unsigned)__builtin_ctz(v);
+#else
+    unsigned j = 0;
+    while (!(v >> j & 1u))
+        j++;
+    return j;
+#endif
+}
+
+/* The resting screen (rest_screen.h) over a group [o, o + n) for one axis
+ * whose flight is known from the end state: the particles of `need` it
+ * rests get impact_axis's answer (the last of them goes to the memo);
+ * returns those left. */
+static uint32_t screen_rests(size_t o, size_t n, double *pos, double *vel, const axis_motion *am,
+                             const impact_walls *iw, double lo, double hi, uint32_t need, rest_memo *memo)
+{
+    if (am->p0 || am->a == 0.0 || !(isfinite(am->a) && isfinite(am->delta)) || bit_count(need) < REST_SCREEN_MIN)
+        return need;
+    const isk_rest_axis ax = {am->a, am->delta, iw->h, lo, hi};
+    const double *m = iw->drag > 0.0 ? iw->m : NULL;
+    double rest[ISK_WALL_SCREEN];
+    iw->rest_screen(n, pos + o, vel + o, m ? m + o : NULL, iw->drag, &ax, rest);
+    size_t last = SIZE_MAX; /* the last particle rested: its input and answer go to the memo */
+    double last_p1 = 0.0, last_v1 = 0.0;
+    for (uint32_t b = need; b; b &= b - 1) {
+        const unsigned j = lowest_bit(b);
+        if (rest[j] == 0.0)
+            continue;
+        const size_t i = o + j;
+        last = i;
+        last_p1 = pos[i];
+        last_v1 = vel[i];
+        pos[i] = rest[j] == 1.0 ? lo : hi;
+        vel[i] = am->delta;
+        need &= ~(1u << j);
+    }
+    if (last != SIZE_MAX)
+        *memo = (rest_memo){bits_of(last_p1), bits_of(last_v1), m ? bits_of(m[last]) : 0, pos[last], vel[last], 1};
+    return need;
+}
+
 /* The particles [o, o + n) of a group the screen flagged: each axis of each
  * particle that ended outside gets its bounces (the axes are independent:
  * x's touch x and vx, y's y and vy, so the order between them is free).
- * A first pass without branches finds who is outside and gives the memo's
- * answer to those it holds: in a settled scene that is almost everyone,
- * among a few hoppers in no order a predictor could learn.  The others go
- * through impact_axis one by one. */
+ * A first pass finds who is outside and which of them the memo answers
+ * (in a settled scene almost everyone, among a few hoppers), the resting
+ * screen takes the rest when there are many (many masses), and impact_axis
+ * whatever is left, one by one. */
 static void impact_group(size_t o, size_t n, double *restrict x, double *restrict y, double *restrict vx,
                          double *restrict vy, const impact_walls *iw, rest_memo memo[2])
 {
     const isk_wall_box *w = &iw->box;
     const double *m = iw->drag > 0.0 ? iw->m : NULL; /* the memo's mass key: 0 without drag */
     const rest_memo mx = memo[0], my = memo[1];
-    uint32_t need_x = 0, need_y = 0; /* bit j: particle o + j, n <= ISK_WALL_SCREEN */
+    uint32_t need_x = 0, need_y = 0, hit_x = 0, hit_y = 0; /* bit j: particle o + j, n <= ISK_WALL_SCREEN */
     for (size_t j = 0; j < n; j++) {
         const size_t i = o + j;
-        const uint64_t mk = m ? bits_of(m[i]) : 0;
-        const int out_x = iw->x_on & !(isgreaterequal(x[i], w->left) & islessequal(x[i], w->right));
-        const int out_y = iw->y_on & !(isgreaterequal(y[i], w->bottom) & islessequal(y[i], w->top));
-        const int hit_x = out_x & memo_has(&mx, x[i], vx[i], mk), hit_y = out_y & memo_has(&my, y[i], vy[i], mk);
-        x[i] = hit_x ? mx.pos : x[i];
-        vx[i] = hit_x ? mx.vel : vx[i];
-        y[i] = hit_y ? my.pos : y[i];
-        vy[i] = hit_y ? my.vel : vy[i];
-        need_x |= (uint32_t)(out_x & !hit_x) << j;
-        need_y |= (uint32_t)(out_y & !hit_y) << j;
+        const uint32_t bit = 1u << j;
+        if (iw->x_on && !(x[i] >= w->left && x[i] <= w->right)) {
+            if (mx.valid && memo_has(&mx, x[i], vx[i], m ? bits_of(m[i]) : 0))
+                hit_x |= bit;
+            else
+                need_x |= bit;
+        }
+        if (iw->y_on && !(y[i] >= w->bottom && y[i] <= w->top)) {
+            if (my.valid && memo_has(&my, y[i], vy[i], m ? bits_of(m[i]) : 0))
+                hit_y |= bit;
+            else
+                need_y |= bit;
+        }
     }
+    for (uint32_t b = hit_x; b; b &= b - 1) {
+        const size_t i = o + lowest_bit(b);
+        x[i] = mx.pos;
+        vx[i] = mx.vel;
+    }
+    for (uint32_t b = hit_y; b; b &= b - 1) {
+        const size_t i = o + lowest_bit(b);
+        y[i] = my.pos;
+        vy[i] = my.vel;
+    }
+    need_x = screen_rests(o, n, x, vx, &iw->mx, iw, w->left, w->right, need_x, &memo[0]);
+    need_y = screen_rests(o, n, y, vy, &iw->my, iw, w->bottom, w->top, need_y, &memo[1]);
     isk_fl_cache cache; /* the group's basis values (flight.h) */
     cache.n = cache.next = 0;
-    const uint32_t need = need_x | need_y;
-    for (unsigned j = 0; need >> j != 0; j++) {
-        if (!(need >> j & 1u))
-            continue;
+    for (uint32_t b = need_x | need_y; b; b &= b - 1) {
+        const unsigned j = lowest_bit(b);
         const size_t i = o + j;
         if (need_x >> j & 1u)
             impact_axis_memo(&x[i], &vx[i], &iw->mx, i, iw, w->left, w->right, &memo[0], &cache);
@@ -528,6 +606,7 @@ void isk_bounds_apply_step(const isk_bounds *b, const isk_step_motion *mo, size_
         mo->h,
         b->restitution,
         isk_wall_screen_pick(),
+        isk_rest_screen_pick(),
     };
     impact_block(n, x, y, vx, vy, &iw);
 }

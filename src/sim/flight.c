@@ -25,24 +25,8 @@ void isk_fl_basis(double k, double t, double *e, double *d1, double *d2)
         return;
     }
     double z = k * t;
-    if (z < 0.03125) {
-        /* Every ordinary step (k t = 0.005 for b/m = 0.3 over 1/60 s): the
-         * series phi1 = (1 - e^-z)/z and phi2 = (z - 1 + e^-z)/z^2, eight
-         * terms each (the first left out is below 3e-18 of the sum), in
-         * Estrin's form (pairs, then pairs of pairs: a short dependency
-         * chain, since the root solve's Newton steps wait for each other),
-         * no expm1 and no division.  A bounce asked for this eight times
-         * (five through isk_fl_cache): 11 ns a call, 18 when each waits for
-         * the one before, against 20 and 36 with expm1 and its divisions. */
-        static const double c[10] = {/* 1 / i! */
-            1.0, 1.0, 1.0 / 2, 1.0 / 6, 1.0 / 24, 1.0 / 120, 1.0 / 720, 1.0 / 5040, 1.0 / 40320, 1.0 / 362880,
-        };
-        const double w = -z, w2 = w * w, w4 = w2 * w2;
-        const double p1 = ((c[1] + c[2] * w) + (c[3] + c[4] * w) * w2) + ((c[5] + c[6] * w) + (c[7] + c[8] * w) * w2) * w4;
-        const double p2 = ((c[2] + c[3] * w) + (c[4] + c[5] * w) * w2) + ((c[6] + c[7] * w) + (c[8] + c[9] * w) * w2) * w4;
-        *e = 1.0 - z * p1;
-        *d1 = t * p1;
-        *d2 = p2 * (t * t);
+    if (z < ISK_FL_SERIES_MAX) {
+        isk_fl_basis_series(z, t, e, d1, d2);
         return;
     }
     double em = expm1(-z); /* e^-z - 1, accurate for small z */
