@@ -16,7 +16,7 @@
  *      end states: a from its velocity change, U from its displacement;
  *   2. find the time of impact tau in (0, h] where the flight meets the
  *      wall or segment: exactly (the stable root of a quadratic) without
- *      drag, by safeguarded Newton iteration to full precision with it;
+ *      drag, by safeguarded Halley iteration to full precision with it;
  *   3. reflect the velocity the flight has at tau (restitution scales its
  *      normal part, or all of it for ISK_RESTITUTION_UNIFORM: with c = 1
  *      the speed at the wall is kept exactly, so energy per bounce is

@@ -31,8 +31,8 @@ void isk_fl_basis(double k, double t, double *e, double *d1, double *d2);
  * (k t = 0.005 for b/m = 0.3 over 1/60 s).  The series phi1 = (1 - e^-z)/z
  * and phi2 = (z - 1 + e^-z)/z^2, eight terms each (the first left out is
  * below 3e-18 of the sum), in Estrin's form (pairs, then pairs of pairs: a
- * short dependency chain, since the root solve's Newton steps wait for
- * each other), no expm1 and no division.  A bounce asked for this eight
+ * short dependency chain, since the root solve's steps wait for each
+ * other), no expm1 and no division.  A bounce asked for this eight
  * times (five through isk_fl_cache): 11 ns a call, 18 when each waits for
  * the one before, against 20 and 36 with expm1 and its divisions.  Inline,
  * and branch-free, so the walls' resting screen (rest_screen.h) runs it
@@ -66,7 +66,7 @@ void isk_fl_fit(double p0, double v0, double p1, double v1, double k, double h, 
  * particles: they mostly share one mass, so the reconstruction of their
  * flights over the same step needs one basis, not one each; and a bounce
  * asks for the same time more than once (the turning point, then the root
- * solve's bracket end there; the Newton step that found the hit, then the
+ * solve's bracket end there; the step that found the hit, then the
  * velocity at it).  A pure function, so the values are the ones a new call
  * would give.  Empty: n = next = 0 (the arrays need no clearing). */
 enum { ISK_FL_CACHE = 4 };
@@ -116,7 +116,8 @@ double isk_fl_turn(double U, double a, double k);
 /* A root of f(t) = c0 + U D1(t) + a D2(t) in [t0, t1], given f(t0) >= 0 and
  * f(t1) < 0 (the flight leaves the side where f > 0 in that interval, and f
  * has no other root there).  Exact for k = 0 (the quadratic's stable root),
- * safeguarded Newton for k > 0; when rounding has put no sign change in the
+ * safeguarded Halley iteration for k > 0 (within a few ulps of the root:
+ * tests/test_flight_root.c); when rounding has put no sign change in the
  * interval it returns the end where |f| is smaller.  cache may be NULL. */
 double isk_fl_root(double c0, double U, double a, double k, double t0, double t1, isk_fl_cache *cache);
 
