@@ -65,7 +65,9 @@ Test(dot_block, weights_are_the_same_on_every_build)
     for (int n = 0; n < 20000; n++) {
         const int w = 1 + (int)isk_rng_below(&r, 64), h = 1 + (int)isk_rng_below(&r, 64);
         const int m = (int)isk_rng_below(&r, DOT_BLOCK + 1);
-        const double Y0 = (double)isk_rng_below(&r, (uint32_t)h), H1 = h - 1.0, W1 = w - 1.0;
+        /* a tile: its first column and row, the canvas's last */
+        const double X0 = (double)isk_rng_below(&r, (uint32_t)w), Y0 = (double)isk_rng_below(&r, (uint32_t)h);
+        const double H1 = h - 1.0, W1 = w - 1.0;
         dot_block ref, got;
         memset(&ref, 0xA5, sizeof ref);
         for (int k = 0; k < m; k++) {
@@ -73,10 +75,10 @@ Test(dot_block, weights_are_the_same_on_every_build)
             ref.y[k] = coord(&r, h);
         }
         got = ref;
-        b[0].weights(&ref, m, W1, Y0, H1);
+        b[0].weights(&ref, m, X0, W1, Y0, H1);
         for (int v = 1; v < nb; v++) {
             dot_block t = got;
-            b[v].weights(&t, m, W1, Y0, H1);
+            b[v].weights(&t, m, X0, W1, Y0, H1);
             for (int k = 0; k < m; k++) {
                 cr_assert_eq(t.fast[k], ref.fast[k], "%s, case %d, point %d of %d: fast %d, scalar %d (x %a y %a)",
                              b[v].name, n, k, m, t.fast[k], ref.fast[k], ref.x[k], ref.y[k]);

@@ -387,6 +387,58 @@ Test(raster_fast, bands_of_rows_equal_the_whole_batch)
     free(y);
 }
 
+/* nb in [1, max] and the cuts 0 = cut[0] <= cut[1] <= ... <= cut[nb] = n,
+ * the inner ones at random (repeats make empty bands); returns nb. */
+static int random_cuts(isk_rng *r, int n, int max, int *cut)
+{
+    const int nb = 1 + (int)isk_rng_below(r, (uint32_t)max);
+    cut[0] = 0;
+    cut[nb] = n;
+    for (int k = 1; k < nb; k++)
+        cut[k] = (int)isk_rng_below(r, (uint32_t)n + 1);
+    for (int i = 1; i < nb; i++)
+        for (int j = i; j > 1 && cut[j - 1] > cut[j]; j--) {
+            int t = cut[j];
+            cut[j] = cut[j - 1];
+            cut[j - 1] = t;
+        }
+    for (int i = 1; i <= nb; i++)
+        cr_assert_leq(cut[i - 1], cut[i]);
+    return nb;
+}
+
+/* One random batch for the threaded draws' tests: a canvas pair, a view,
+ * m points (a third of them on or just inside the far edges when
+ * `far_edges`), a colour, mode and rule; the whole batch drawn on p.c[0]. */
+typedef struct batch {
+    int w, h;
+    pair p;
+    isk_view v;
+    size_t m;
+    isk_color col;
+    isk_blend mode;
+    unsigned rule;
+} batch;
+
+static void random_batch(isk_rng *r, int n, size_t maxn, int far_edges, double *x, double *y, batch *b)
+{
+    b->w = rnd_size(r);
+    b->h = rnd_size(r);
+    b->p = make_pair(r, b->w, b->h);
+    rnd_view(r, n % 2, b->w, b->h, &b->v);
+    b->m = 1 + isk_rng_below(r, (uint32_t)maxn);
+    for (size_t i = 0; i < b->m; i++) {
+        double X = rnd_coord(r, b->w), Y = rnd_coord(r, b->h);
+        if (far_edges && isk_rng_below(r, 3) == 0)
+            Y = b->h - (isk_rng_below(r, 2) ? 0.0 : isk_rng_range(r, 0.0, 1.0));
+        isk_view_to_world(&b->v, X, Y, &x[i], &y[i]);
+    }
+    b->col = rnd_color(r);
+    b->mode = MODES[isk_rng_below(r, 3)];
+    b->rule = isk_rng_below(r, 3) | (isk_rng_below(r, 2) ? ISK__BATCH_KEEP_ON_CANVAS : 0u);
+    isk__draw_batch_rows(&b->p.c[0], &b->v, b->m, x, y, b->col, b->mode, b->rule, 0, b->h);
+}
+
 /* A threaded draw's sorting (isk__batch_bin): each band drawing only the
  * points binned to it, the store split in shares binned one after the other,
  * gives the bytes of the whole batch, for every rule, with and without
@@ -402,33 +454,12 @@ Test(raster_fast, binned_bands_equal_the_whole_batch)
     uint32_t *idx = malloc(MAXN * 5 * sizeof *idx); /* a point reaches at most 5 rows */
     cr_assert(x && y && code && idx);
     for (int n = 0; n < 600; n++) {
-        int w = rnd_size(&r), h = rnd_size(&r);
-        pair p = make_pair(&r, w, h);
-        isk_view v;
-        rnd_view(&r, n % 2, w, h, &v);
-        size_t m = 1 + isk_rng_below(&r, MAXN);
-        for (size_t i = 0; i < m; i++) {
-            double X = rnd_coord(&r, w), Y = rnd_coord(&r, h);
-            isk_view_to_world(&v, X, Y, &x[i], &y[i]);
-        }
-        isk_color col = rnd_color(&r);
-        isk_blend mode = MODES[isk_rng_below(&r, 3)];
-        unsigned rule = isk_rng_below(&r, 3) | (isk_rng_below(&r, 2) ? ISK__BATCH_KEEP_ON_CANVAS : 0u);
-        isk__draw_batch_rows(&p.c[0], &v, m, x, y, col, mode, rule, 0, h);
-        /* nb bands from sorted random cuts (repeats make empty bands) */
-        int cut[MAXB + 1], nb = 1 + (int)isk_rng_below(&r, MAXB);
-        cut[0] = 0;
-        cut[nb] = h;
-        for (int k = 1; k < nb; k++)
-            cut[k] = (int)isk_rng_below(&r, (uint32_t)h + 1);
-        for (int i = 1; i < nb; i++)
-            for (int j = i; j > 1 && cut[j - 1] > cut[j]; j--) {
-                int t = cut[j];
-                cut[j] = cut[j - 1];
-                cut[j - 1] = t;
-            }
-        for (int i = 2; i < nb; i++)
-            cr_assert_leq(cut[i - 1], cut[i]);
+        batch bt;
+        random_batch(&r, n, MAXN, 0, x, y, &bt);
+        const int h = bt.h;
+        const size_t m = bt.m;
+        int cut[MAXB + 1];
+        const int nb = random_cuts(&r, h, MAXB, cut);
         uint8_t *band_of_row = malloc((size_t)h);
         cr_assert(band_of_row);
         for (int b = 0; b < nb; b++)
@@ -436,8 +467,8 @@ Test(raster_fast, binned_bands_equal_the_whole_batch)
                 band_of_row[row] = (uint8_t)b;
         /* two shares, binned apart; band b's list: share 0's, then share 1's */
         size_t count[2][MAXB] = {{0}}, split = isk_rng_below(&r, (uint32_t)m + 1);
-        isk__batch_bin(&v, h, y, 0, split, band_of_row, code, count[0]);
-        isk__batch_bin(&v, h, y, split, m, band_of_row, code, count[1]);
+        isk__batch_bin(&bt.v, h, y, 0, split, band_of_row, code, count[0]);
+        isk__batch_bin(&bt.v, h, y, split, m, band_of_row, code, count[1]);
         size_t pos[2][MAXB], start[MAXB + 1], total = 0;
         for (int b = 0; b < nb; b++) {
             start[b] = total;
@@ -455,15 +486,41 @@ Test(raster_fast, binned_bands_equal_the_whole_batch)
                     idx[pos[t][b]++] = (uint32_t)i;
         }
         for (int b = nb - 1; b >= 0; b--) /* last to first: bands are independent */
-            isk__draw_batch_list_rows(&p.c[1], &v, idx + start[b], start[b + 1] - start[b], x, y, col, mode,
-                                      rule, cut[b], cut[b + 1]);
+            isk__draw_batch_list_rows(&bt.p.c[1], &bt.v, idx + start[b], start[b + 1] - start[b], x, y, bt.col,
+                                      bt.mode, bt.rule, cut[b], cut[b + 1]);
         free(band_of_row);
-        check_pair(&p, "binned bands", n);
+        check_pair(&bt.p, "binned bands", n);
     }
     free(x);
     free(y);
     free(code);
     free(idx);
+}
+
+/* A threaded draw's tiles (isk__draw_batch_tile): the canvas cut into
+ * rows and columns at random, each tile drawn on its own in any order,
+ * gives the bytes of the whole batch, for every rule, with and without
+ * keeping points on the canvas (many of them on its far edges, as a scene
+ * settled on its floor has them). */
+Test(raster_fast, tiles_equal_the_whole_batch)
+{
+    isk_rng r;
+    isk_rng_seed(&r, 13);
+    enum { MAXN = 500, MAXC = 5 };
+    double *x = malloc(MAXN * sizeof *x), *y = malloc(MAXN * sizeof *y);
+    cr_assert(x && y);
+    for (int n = 0; n < 600; n++) {
+        batch bt;
+        random_batch(&r, n, MAXN, 1, x, y, &bt);
+        int rows[MAXC + 1], cols[MAXC + 1];
+        const int nr = random_cuts(&r, bt.h, MAXC, rows), nc = random_cuts(&r, bt.w, MAXC, cols);
+        for (int t = nr * nc - 1; t >= 0; t--) /* last to first: tiles are independent */
+            isk__draw_batch_tile(&bt.p.c[1], &bt.v, bt.m, x, y, bt.col, bt.mode, bt.rule, rows[t / nc],
+                                 rows[t / nc + 1], cols[t % nc], cols[t % nc + 1]);
+        check_pair(&bt.p, "tiles", n);
+    }
+    free(x);
+    free(y);
 }
 
 static double rnd_radius(isk_rng *r)

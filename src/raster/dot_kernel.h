@@ -137,28 +137,38 @@ static ISK__INLINE void isk__blend_2x2(const isk_canvas *c, int ix, int iy, cons
     }
 }
 
-/* The 2x2 block cut to the rows [r0, r1) of c (iy in canvas rows). */
-static ISK__INLINE void isk__blend_2x2_rows(const isk_canvas *c, int r0, int r1, int ix, int iy, const uint32_t w[4],
-                                            isk_color col, const isk__cov_lut *lut, isk_blend mode)
+/* The 2x2 block cut to the rows [r0, r1) and the columns [c0, c1) of c
+ * (ix, iy in canvas columns and rows): a tile of a threaded draw. */
+static ISK__INLINE void isk__blend_2x2_tile(const isk_canvas *c, int r0, int r1, int c0, int c1, int ix, int iy,
+                                            const uint32_t w[4], isk_color col, const isk__cov_lut *lut,
+                                            isk_blend mode)
 {
-    const isk_canvas band = {c->pixels + (size_t)r0 * c->stride, c->width, r1 - r0, c->stride, 0};
-    isk__blend_2x2(&band, ix, iy - r0, w, col, lut, mode);
+    const isk_canvas tile = {c->pixels + (size_t)r0 * c->stride + (size_t)c0 * 4u, c1 - c0, r1 - r0, c->stride, 0};
+    isk__blend_2x2(&tile, ix - c0, iy - r0, w, col, lut, mode);
 }
 
 /* isk_draw_dot for a canvas known to have pixels, its blend cut to the
- * rows [r0, r1) (0 and the height for the whole canvas). */
-static ISK__INLINE void isk__dot_rows(const isk_canvas *c, int r0, int r1, double x, double y, isk_color col,
-                                      const isk__cov_lut *lut, isk_blend mode)
+ * rows [r0, r1) and the columns [c0, c1) (the whole canvas: 0 and the
+ * height, 0 and the width). */
+static ISK__INLINE void isk__dot_tile(const isk_canvas *c, int r0, int r1, int c0, int c1, double x, double y,
+                                      isk_color col, const isk__cov_lut *lut, isk_blend mode)
 {
-    /* The square [x, x+1) x [y, y+1) touches the rows only for x in
-     * (-1, width) and y in (r0 - 1, r1); the test also rejects NaN and
+    /* The square [x, x+1) x [y, y+1) touches the tile only for x in
+     * (c0 - 1, c1) and y in (r0 - 1, r1); the test also rejects NaN and
      * keeps the conversions below defined. */
-    if (!(x > -1.0 && x < c->width && y > r0 - 1.0 && y < r1))
+    if (!(x > c0 - 1.0 && x < c1 && y > r0 - 1.0 && y < r1))
         return;
     int ix = isk__ifloor(x), iy = isk__ifloor(y);
     uint32_t w[4];
     isk__dot_weights_frac(x - ix, y - iy, w);
-    isk__blend_2x2_rows(c, r0, r1, ix, iy, w, col, lut, mode);
+    isk__blend_2x2_tile(c, r0, r1, c0, c1, ix, iy, w, col, lut, mode);
+}
+
+/* isk__dot_tile over whole rows. */
+static ISK__INLINE void isk__dot_rows(const isk_canvas *c, int r0, int r1, double x, double y, isk_color col,
+                                      const isk__cov_lut *lut, isk_blend mode)
+{
+    isk__dot_tile(c, r0, r1, 0, c->width, x, y, col, lut, mode);
 }
 
 static ISK__INLINE void isk__dot(const isk_canvas *c, double x, double y, isk_color col, const isk__cov_lut *lut,
@@ -191,16 +201,23 @@ static ISK__INLINE int isk__dot_weights_browser(double x, double y, int *ix, int
 }
 
 /* isk_draw_dot_browser for a canvas known to have pixels, cut to the rows
- * [r0, r1). */
-static ISK__INLINE void isk__dot_browser_rows(const isk_canvas *c, int r0, int r1, double x, double y,
-                                              isk_color col, const isk__cov_lut *lut, isk_blend mode)
+ * [r0, r1) and the columns [c0, c1). */
+static ISK__INLINE void isk__dot_browser_tile(const isk_canvas *c, int r0, int r1, int c0, int c1, double x,
+                                              double y, isk_color col, const isk__cov_lut *lut, isk_blend mode)
 {
-    if (!(x > -2.0 && x < c->width + 1.0 && y > r0 - 2.0 && y < r1 + 1.0))
+    if (!(x > c0 - 2.0 && x < c1 + 1.0 && y > r0 - 2.0 && y < r1 + 1.0))
         return;
     int ix, iy;
     uint32_t w[4];
     if (isk__dot_weights_browser(x, y, &ix, &iy, w))
-        isk__blend_2x2_rows(c, r0, r1, ix, iy, w, col, lut, mode);
+        isk__blend_2x2_tile(c, r0, r1, c0, c1, ix, iy, w, col, lut, mode);
+}
+
+/* isk__dot_browser_tile over whole rows. */
+static ISK__INLINE void isk__dot_browser_rows(const isk_canvas *c, int r0, int r1, double x, double y,
+                                              isk_color col, const isk__cov_lut *lut, isk_blend mode)
+{
+    isk__dot_browser_tile(c, r0, r1, 0, c->width, x, y, col, lut, mode);
 }
 
 static ISK__INLINE void isk__dot_browser(const isk_canvas *c, double x, double y, isk_color col,

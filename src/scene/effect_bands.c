@@ -1,6 +1,7 @@
 /* A group's draw on the effect's threads: the canvas cut into bands of
- * rows, one per thread, each blending only its own rows (the draw functions
- * of effect_render.c).  Each pixel then sees the same particles in the same
+ * rows (or, for the batched dots when their particles crowd into a few
+ * rows, of columns), one per thread, each blending only its own pixels (the
+ * draw functions of effect_render.c).  Each pixel then sees the same particles in the same
  * order as on one thread, so the bytes are the same for every thread count
  * and every choice of cuts; the cuts are only chosen to share the work
  * evenly.
@@ -11,6 +12,7 @@
  * index order), and a band's thread then reads only its own particles
  * instead of every particle of the store.  Sprites, and any group when the
  * sorting's memory cannot be had, give every band the whole store. */
+#include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -89,28 +91,65 @@ static int cmp_double(const void *a, const void *b)
     return (x > y) - (x < y);
 }
 
+/* The cuts 0 = cut[0] <= ... <= cut[nb] = n at the quantiles of the
+ * sorted sample v[0..m) of screen coordinates in [0, n); returns how many
+ * of the sample the fullest band holds. */
+static int quantile_cuts(const double *v, int m, int nb, int n, int *cut)
+{
+    cut[0] = 0;
+    cut[nb] = n;
+    for (int k = 1; k < nb; k++) {
+        int r = m ? (int)v[(size_t)m * (size_t)k / (size_t)nb] : n * k / nb;
+        cut[k] = r < cut[k - 1] ? cut[k - 1] : r > n ? n : r;
+    }
+    int fullest = 0, i = 0;
+    for (int k = 0; k < nb; k++) {
+        int in = 0;
+        for (; i < m && v[i] < cut[k + 1]; i++)
+            in++;
+        fullest = in > fullest ? in : fullest;
+    }
+    return fullest;
+}
+
 /* Cuts at the quantiles of a sample of the particles' screen rows, so each
  * band holds about the same number of particles (a fire or an explosion
- * fills a small part of the screen). */
-static void place_cuts(const isk_effect *e, const fx_group *g, const isk_canvas *c, int nb, int *cut)
+ * fills a small part of the screen).  When the group's draw takes bands of
+ * columns (FX_BANDS_COLUMNS) and the rows cannot share the particles (a
+ * scene settled on its floor has most of them on its last row, and a row
+ * is never cut), cuts at the quantiles of the columns instead: returns 1
+ * for columns, 0 for rows. */
+static int place_cuts(const isk_effect *e, const fx_group *g, const isk_canvas *c, int nb, unsigned can, int *cut)
 {
-    double ys[FX_BAND_SAMPLES];
+    double xs[FX_BAND_SAMPLES], ys[FX_BAND_SAMPLES];
     const isk_particles *p = &g->store;
     const size_t step = p->count / FX_BAND_SAMPLES ? p->count / FX_BAND_SAMPLES : 1;
     int m = 0;
     for (size_t i = 0; i < p->count && m < FX_BAND_SAMPLES; i += step) {
         double X, Y;
         isk_view_to_screen(&e->view, p->x[i], p->y[i], &X, &Y);
-        if (Y >= 0 && Y < c->height)
-            ys[m++] = Y;
+        if (g->keep_on_canvas) { /* where the draw puts them */
+            X = isk__keep_on_canvas(X, c->width);
+            Y = isk__keep_on_canvas(Y, c->height);
+        }
+        if (X >= 0 && X < c->width && Y >= 0 && Y < c->height) {
+            xs[m] = X;
+            ys[m++] = floor(Y); /* a band holds whole rows */
+        }
     }
     qsort(ys, (size_t)m, sizeof ys[0], cmp_double);
-    cut[0] = 0;
-    cut[nb] = c->height;
-    for (int k = 1; k < nb; k++) {
-        int r = m ? (int)ys[(size_t)m * (size_t)k / (size_t)nb] : c->height * k / nb;
-        cut[k] = r < cut[k - 1] ? cut[k - 1] : r > c->height ? c->height : r;
-    }
+    const int by_rows = quantile_cuts(ys, m, nb, c->height, cut);
+    if (!(can & FX_BANDS_COLUMNS) || 4 * by_rows <= 5 * ((m + nb - 1) / nb))
+        return 0; /* the rows share them within 25 % of even */
+    int col[ISK_POOL_MAX_THREADS + 1];
+    qsort(xs, (size_t)m, sizeof xs[0], cmp_double);
+    for (int k = 0; k < m; k++)
+        xs[k] = floor(xs[k]);
+    const int by_columns = quantile_cuts(xs, m, nb, c->width, col);
+    if (4 * by_columns > 3 * by_rows)
+        return 0; /* columns no better by a quarter: the rows, which can be sorted */
+    memcpy(cut, col, (size_t)(nb + 1) * sizeof *cut);
+    return 1;
 }
 
 static int grow(void **p, size_t *cap, size_t n, size_t size)
@@ -175,7 +214,7 @@ static int sort_into_bands(band_job *j)
     return ok;
 }
 
-isk_status fx_draw_bands(isk_effect *e, isk_canvas *c, fx_group *g, const fx_band *whole, int sortable)
+isk_status fx_draw_bands(isk_effect *e, isk_canvas *c, fx_group *g, const fx_band *whole, unsigned can)
 {
     const int threads = e->pool ? isk_pool_threads(e->pool) : 1;
     if (threads < 2 || g->store.count < FX_BAND_MIN_PARTICLES || c->height < 2 * threads)
@@ -187,17 +226,23 @@ isk_status fx_draw_bands(isk_effect *e, isk_canvas *c, fx_group *g, const fx_ban
     j->c = c;
     j->g = g;
     int cut[ISK_POOL_MAX_THREADS + 1];
-    place_cuts(e, g, c, threads, cut);
+    const int columns = place_cuts(e, g, c, threads, can, cut);
     /* empty bands (cuts that coincide where the particles crowd into a
      * few rows) are dropped: a point then reaches at most 5 bands */
     for (int k = 0; k < threads; k++)
         if (cut[k] < cut[k + 1]) {
-            j->band[j->nb] = *whole;
-            j->band[j->nb].r0 = cut[k];
-            j->band[j->nb].r1 = cut[k + 1];
-            j->nb++;
+            fx_band *b = &j->band[j->nb++];
+            *b = *whole;
+            if (columns) {
+                b->c0 = cut[k];
+                b->c1 = cut[k + 1];
+            } else {
+                b->r0 = cut[k];
+                b->r1 = cut[k + 1];
+            }
         }
-    if (!(sortable && j->nb >= FX_BIN_MIN_BANDS && sort_into_bands(j)))
+    /* the sorting is by rows: bands of columns read the whole store */
+    if (!(!columns && (can & FX_BANDS_SORT) && j->nb >= FX_BIN_MIN_BANDS && sort_into_bands(j)))
         for (int k = 0; k < j->nb; k++)
             j->band[k].list = NULL;
     isk_pool_for(e->pool, (size_t)j->nb, 2, run_band, j);

@@ -65,6 +65,8 @@ typedef struct fx_step_kind {
 /* What one band of a group's draw needs (effect_bands.c). */
 typedef struct fx_band {
     int r0, r1;                                       /* the canvas rows [r0, r1) it blends */
+    int c0, c1;                                       /* and columns [c0, c1) (only the batched dots
+                                                       * get bands of columns: FX_BANDS_COLUMNS) */
     const uint32_t *list;                             /* NULL: every particle; else these, */
     size_t nlist;                                     /* in this order (effect_bands.c) */
     const isk_sprite *sprite[ISK_SPRITE_MAX_SIZE + 1]; /* by whole-pixel size (sprite groups) */
@@ -231,7 +233,12 @@ fx_draw_fn fx_choose_draw(const fx_group *g);
 /* effect_bands.c: g->draw over the canvas, in bands of rows on the
  * effect's threads when the group is big (whole: the band of the canvas,
  * with anything prepared for the draw). */
-isk_status fx_draw_bands(isk_effect *e, isk_canvas *c, fx_group *g, const fx_band *whole, int sortable);
+/* What a group's draw function can take (fx_draw_bands): its particles
+ * sorted into bands of rows first (dots and pixels, which reach at most a
+ * row beyond their own), bands of columns instead of rows (the batched
+ * dots: a scene settled on its floor has its particles on one row). */
+enum { FX_BANDS_SORT = 1, FX_BANDS_COLUMNS = 2 };
+isk_status fx_draw_bands(isk_effect *e, isk_canvas *c, fx_group *g, const fx_band *whole, unsigned can);
 void fx_bins_free(fx_bins *b);
 isk_status fx_bake_ramps(fx_group *g, isk_error *err);
 void fx_free_ramps(fx_group *g);

@@ -217,8 +217,8 @@ static isk_status draw_dots(isk_effect *e, isk_canvas *c, fx_group *g, const fx_
         isk__draw_batch_list_rows(c, &e->view, b->list, b->nlist, g->store.x, g->store.y, g->def->color,
                                   g->def->blend, rule, b->r0, b->r1);
     else
-        isk__draw_batch_rows(c, &e->view, g->store.count, g->store.x, g->store.y, g->def->color, g->def->blend,
-                             rule, b->r0, b->r1);
+        isk__draw_batch_tile(c, &e->view, g->store.count, g->store.x, g->store.y, g->def->color, g->def->blend,
+                             rule, b->r0, b->r1, b->c0, b->c1);
     return ISK_OK;
 }
 
@@ -353,7 +353,7 @@ fx_draw_fn fx_choose_draw(const fx_group *g)
  * (discs cannot: their kernel has no band form). */
 static isk_status render_group(isk_effect *e, isk_canvas *c, fx_group *g)
 {
-    fx_band whole = {.r0 = 0, .r1 = c->height};
+    fx_band whole = {.r0 = 0, .r1 = c->height, .c0 = 0, .c1 = c->width};
     if (g->store.trail) { /* trails under the particles (effect_trail.c) */
         isk_status s = fx_trail_render(e, c, g);
         if (s != ISK_OK)
@@ -369,7 +369,9 @@ static isk_status render_group(isk_effect *e, isk_canvas *c, fx_group *g)
     /* dots and pixels reach at most a row beyond their own (the margin
      * world_batch.h's binning keeps), so their bands can take only their
      * own particles; sprites reach far and read them all */
-    return fx_draw_bands(e, c, g, &whole, g->draw != draw_sprites && g->draw != fx_draw_textures);
+    const unsigned can = (g->draw != draw_sprites && g->draw != fx_draw_textures ? FX_BANDS_SORT : 0u) |
+                         (g->draw == draw_dots ? FX_BANDS_COLUMNS : 0u);
+    return fx_draw_bands(e, c, g, &whole, can);
 }
 
 isk_status fx_render(isk_effect *e, isk_canvas *c)

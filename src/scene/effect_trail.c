@@ -51,11 +51,11 @@ isk_status fx_trail_render(isk_effect *e, isk_canvas *c, fx_group *g)
 {
     if (!g->store.trail)
         return ISK_OK;
-    const fx_band whole = {.r0 = 0, .r1 = c->height};
+    const fx_band whole = {.r0 = 0, .r1 = c->height, .c0 = 0, .c1 = c->width};
     /* the band machinery runs the group's draw: the trails' for this pass */
     const fx_draw_fn own = g->draw;
     g->draw = draw_trails;
-    isk_status s = fx_draw_bands(e, c, g, &whole, 0);
+    isk_status s = fx_draw_bands(e, c, g, &whole, 0u);
     g->draw = own;
     return s;
 }

@@ -63,34 +63,35 @@ static ISK__INLINE void dot_block_prefetch_ahead(const double *x, const double *
 #endif
 }
 
-/* fast[k], for the rows [Y0, H1 + 1] (Y0 >= 0) of a canvas W1 + 1 wide:
- *   DOT_FULL  the point's whole 2x2 block lies on the columns and the rows;
- *   DOT_EDGE  its top-left pixel is on the canvas or the row above Y0 (X in
- *             [0, W1 + 1), Y in [max(Y0 - 1, 0), H1 + 1)) but the block is
- *             cut by the last column, the last row or the first row: the
+/* fast[k], for the tile of columns [X0, X1 + 1] and rows [Y0, H1 + 1]
+ * (X0, Y0 >= 0; the whole canvas: X0 = Y0 = 0, X1 and H1 its last column
+ * and row):
+ *   DOT_FULL  the point's whole 2x2 block lies on the tile;
+ *   DOT_EDGE  its top-left pixel is on the tile or just left of or above
+ *             it (X in [max(X0 - 1, 0), X1 + 1), Y in [max(Y0 - 1, 0),
+ *             H1 + 1)) but the block is cut by the tile's edge: the
  *             weights are computed all the same, and the blend skips the
- *             pixels off the rows and columns (what the single dot's
- *             clipping does).  Reflect walls hold their resting particles
+ *             pixels off the tile (what the single dot's clipping does).  Reflect walls hold their resting particles
  *             on the far edges (isk__keep_on_canvas), so a scene settled on
  *             its floor is almost all edge points: through the single-dot
  *             kernel they cost 3.7 times as much;
  *   DOT_OTHER anything else (off the canvas, negative, NaN): the single
  *             dot's kernel. */
 enum { DOT_OTHER = 0, DOT_FULL = 1, DOT_EDGE = 2 };
-typedef void (*weights_fn)(dot_block *b, int m, double W1, double Y0, double H1);
+typedef void (*weights_fn)(dot_block *b, int m, double X0, double X1, double Y0, double H1);
 
-/* The lowest Y of an edge point (the truncations below need Y >= 0). */
-static ISK__INLINE double dot_edge_top(double Y0)
+/* The lowest X or Y of an edge point (the truncations below need >= 0). */
+static ISK__INLINE double dot_edge_first(double first)
 {
-    return Y0 >= 1.0 ? Y0 - 1.0 : 0.0;
+    return first >= 1.0 ? first - 1.0 : 0.0;
 }
 
-static ISK__INLINE void weight_one(dot_block *b, int k, double W1, double Y0, double H1)
+static ISK__INLINE void weight_one(dot_block *b, int k, double X0, double X1, double Y0, double H1)
 {
     double X = b->x[k], Y = b->y[k];
-    /* the whole 2x2 block on the canvas: floor(X) in [0, width-2] */
-    const int full = (X >= 0.0) & (X < W1) & (Y >= Y0) & (Y < H1);
-    const int edge = (X >= 0.0) & (X < W1 + 1.0) & (Y >= dot_edge_top(Y0)) & (Y < H1 + 1.0);
+    /* the whole 2x2 block on the tile: floor(X) in [X0, X1 - 1] */
+    const int full = (X >= X0) & (X < X1) & (Y >= Y0) & (Y < H1);
+    const int edge = (X >= dot_edge_first(X0)) & (X < X1 + 1.0) & (Y >= dot_edge_first(Y0)) & (Y < H1 + 1.0);
     b->fast[k] = (uint8_t)(full ? DOT_FULL : edge ? DOT_EDGE : DOT_OTHER);
     if (!edge)
         return;
@@ -103,30 +104,30 @@ static ISK__INLINE void weight_one(dot_block *b, int k, double W1, double Y0, do
         b->w[k][q] = (uint8_t)w[q];
 }
 
-static inline void weights_scalar(dot_block *b, int m, double W1, double Y0, double H1)
+static inline void weights_scalar(dot_block *b, int m, double X0, double X1, double Y0, double H1)
 {
     for (int k = 0; k < m; k++)
-        weight_one(b, k, W1, Y0, H1);
+        weight_one(b, k, X0, X1, Y0, H1);
 }
 
 #if ISK__SPAN_AVX2
 /* weights_scalar for 4 points a step.  Each lane does the scalar code's
  * operations: products left to right, floors by truncation of values
  * >= 0, the rank selection as 0/1 doubles (small integers, exact). */
-static inline ISK__AVX2_FN void weights_avx2(dot_block *b, int m, double W1, double Y0, double H1)
+static inline ISK__AVX2_FN void weights_avx2(dot_block *b, int m, double X0, double X1, double Y0, double H1)
 {
-    const __m256d zero = _mm256_setzero_pd(), one = _mm256_set1_pd(1.0), k255 = _mm256_set1_pd(255.0);
-    const __m256d vW1 = _mm256_set1_pd(W1), vY0 = _mm256_set1_pd(Y0), vH1 = _mm256_set1_pd(H1);
-    const __m256d vW = _mm256_set1_pd(W1 + 1.0), vYe = _mm256_set1_pd(dot_edge_top(Y0)), vH = _mm256_set1_pd(H1 + 1.0);
+    const __m256d one = _mm256_set1_pd(1.0), k255 = _mm256_set1_pd(255.0);
+    const __m256d vX0 = _mm256_set1_pd(X0), vX1 = _mm256_set1_pd(X1), vY0 = _mm256_set1_pd(Y0), vH1 = _mm256_set1_pd(H1);
+    const __m256d vXe = _mm256_set1_pd(dot_edge_first(X0)), vW = _mm256_set1_pd(X1 + 1.0);
+    const __m256d vYe = _mm256_set1_pd(dot_edge_first(Y0)), vH = _mm256_set1_pd(H1 + 1.0);
     int k = 0;
     for (; k + 4 <= m; k += 4) {
         __m256d X = _mm256_loadu_pd(b->x + k), Y = _mm256_loadu_pd(b->y + k);
-        const __m256d xin = _mm256_cmp_pd(X, zero, _CMP_GE_OQ);
         const __m256d full =
-            _mm256_and_pd(_mm256_and_pd(xin, _mm256_cmp_pd(X, vW1, _CMP_LT_OQ)),
+            _mm256_and_pd(_mm256_and_pd(_mm256_cmp_pd(X, vX0, _CMP_GE_OQ), _mm256_cmp_pd(X, vX1, _CMP_LT_OQ)),
                           _mm256_and_pd(_mm256_cmp_pd(Y, vY0, _CMP_GE_OQ), _mm256_cmp_pd(Y, vH1, _CMP_LT_OQ)));
         const __m256d ok =
-            _mm256_and_pd(_mm256_and_pd(xin, _mm256_cmp_pd(X, vW, _CMP_LT_OQ)),
+            _mm256_and_pd(_mm256_and_pd(_mm256_cmp_pd(X, vXe, _CMP_GE_OQ), _mm256_cmp_pd(X, vW, _CMP_LT_OQ)),
                           _mm256_and_pd(_mm256_cmp_pd(Y, vYe, _CMP_GE_OQ), _mm256_cmp_pd(Y, vH, _CMP_LT_OQ)));
         const int okbits = _mm256_movemask_pd(ok), fullbits = _mm256_movemask_pd(full);
         for (int q = 0; q < 4; q++)
@@ -166,7 +167,7 @@ static inline ISK__AVX2_FN void weights_avx2(dot_block *b, int m, double W1, dou
         _mm_storeu_si128((__m128i *)(void *)b->w[k], bytes);
     }
     for (; k < m; k++)
-        weight_one(b, k, W1, Y0, H1);
+        weight_one(b, k, X0, X1, Y0, H1);
 }
 #endif
 
@@ -175,20 +176,20 @@ static inline ISK__AVX2_FN void weights_avx2(dot_block *b, int m, double W1, dou
  * operations on the doubles; the rank selection in 32-bit lanes instead of
  * 0/1 doubles (small integers either way: the same comparisons, the same
  * sums), with the comparisons as mask registers. */
-static inline ISK__AVX512_FN void weights_avx512(dot_block *b, int m, double W1, double Y0, double H1)
+static inline ISK__AVX512_FN void weights_avx512(dot_block *b, int m, double X0, double X1, double Y0, double H1)
 {
-    const __m512d zero = _mm512_setzero_pd(), one = _mm512_set1_pd(1.0), k255 = _mm512_set1_pd(255.0);
-    const __m512d vW1 = _mm512_set1_pd(W1), vY0 = _mm512_set1_pd(Y0), vH1 = _mm512_set1_pd(H1);
-    const __m512d vW = _mm512_set1_pd(W1 + 1.0), vYe = _mm512_set1_pd(dot_edge_top(Y0)), vH = _mm512_set1_pd(H1 + 1.0);
+    const __m512d one = _mm512_set1_pd(1.0), k255 = _mm512_set1_pd(255.0);
+    const __m512d vX0 = _mm512_set1_pd(X0), vX1 = _mm512_set1_pd(X1), vY0 = _mm512_set1_pd(Y0), vH1 = _mm512_set1_pd(H1);
+    const __m512d vXe = _mm512_set1_pd(dot_edge_first(X0)), vW = _mm512_set1_pd(X1 + 1.0);
+    const __m512d vYe = _mm512_set1_pd(dot_edge_first(Y0)), vH = _mm512_set1_pd(H1 + 1.0);
     const __m256i i1 = _mm256_set1_epi32(1);
     for (int k = 0; k < m; k += 8) {
         const __mmask8 valid = m - k >= 8 ? (__mmask8)0xFF : (__mmask8)((1u << (m - k)) - 1u);
         __m512d X = _mm512_maskz_loadu_pd(valid, b->x + k), Y = _mm512_maskz_loadu_pd(valid, b->y + k);
-        const __mmask8 xin = valid & _mm512_cmp_pd_mask(X, zero, _CMP_GE_OQ);
-        const __mmask8 full = xin & _mm512_cmp_pd_mask(X, vW1, _CMP_LT_OQ) & _mm512_cmp_pd_mask(Y, vY0, _CMP_GE_OQ) &
-                              _mm512_cmp_pd_mask(Y, vH1, _CMP_LT_OQ);
-        const __mmask8 ok = xin & _mm512_cmp_pd_mask(X, vW, _CMP_LT_OQ) & _mm512_cmp_pd_mask(Y, vYe, _CMP_GE_OQ) &
-                            _mm512_cmp_pd_mask(Y, vH, _CMP_LT_OQ);
+        const __mmask8 full = valid & _mm512_cmp_pd_mask(X, vX0, _CMP_GE_OQ) & _mm512_cmp_pd_mask(X, vX1, _CMP_LT_OQ) &
+                              _mm512_cmp_pd_mask(Y, vY0, _CMP_GE_OQ) & _mm512_cmp_pd_mask(Y, vH1, _CMP_LT_OQ);
+        const __mmask8 ok = valid & _mm512_cmp_pd_mask(X, vXe, _CMP_GE_OQ) & _mm512_cmp_pd_mask(X, vW, _CMP_LT_OQ) &
+                            _mm512_cmp_pd_mask(Y, vYe, _CMP_GE_OQ) & _mm512_cmp_pd_mask(Y, vH, _CMP_LT_OQ);
         _mm_mask_storeu_epi8(b->fast + k, valid,
                              _mm_add_epi8(_mm_maskz_set1_epi8(ok, 1), _mm_maskz_set1_epi8((__mmask16)(ok & ~full), 1)));
         if (!ok)
@@ -241,16 +242,16 @@ static inline ISK__AVX512_FN void weights_avx512(dot_block *b, int m, double W1,
 #endif
 
 /* The browser rule's weights (integer arithmetic, already cheap). */
-static inline void weights_browser(dot_block *b, int m, double W1, double Y0, double H1)
+static inline void weights_browser(dot_block *b, int m, double X0, double X1, double Y0, double H1)
 {
     for (int k = 0; k < m; k++) {
         double X = b->x[k], Y = b->y[k];
         int ix, iy;
         uint32_t w[4];
         /* isk__dot_browser's range test, then its weights; fast when the
-         * 2x2 block is wholly on the canvas */
-        const int full = X > -2.0 && X < W1 + 2.0 && Y > Y0 - 2.0 && Y < H1 + 2.0 &&
-                         isk__dot_weights_browser(X, Y, &ix, &iy, w) && ix >= 0 && ix < W1 && iy >= Y0 && iy < H1;
+         * 2x2 block is wholly on the tile */
+        const int full = X > X0 - 2.0 && X < X1 + 2.0 && Y > Y0 - 2.0 && Y < H1 + 2.0 &&
+                         isk__dot_weights_browser(X, Y, &ix, &iy, w) && ix >= X0 && ix < X1 && iy >= Y0 && iy < H1;
         b->fast[k] = full ? DOT_FULL : DOT_OTHER;
         if (!b->fast[k])
             continue;

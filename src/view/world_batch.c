@@ -30,7 +30,7 @@
  * each inlined copy, so the plain batch pays nothing for it. */
 #define POINT(list, k) ((list) ? (size_t)(list)[k] : (size_t)(k))
 
-static ISK__INLINE void run_pixels(const isk_canvas *c, int r0, int r1, const isk_view *v, size_t n,
+static ISK__INLINE void run_pixels(const isk_canvas *c, int r0, int r1, int c0, int c1, const isk_view *v, size_t n,
                                    const uint32_t *list, const double *x, const double *y, isk_color col,
                                    int camera, int keep, isk_blend mode)
 {
@@ -38,7 +38,7 @@ static ISK__INLINE void run_pixels(const isk_canvas *c, int r0, int r1, const is
      *                     window  X = sx*x + px,          Y = sy*y + py. */
     const double hw = v->width / 2.0, hh = v->height / 2.0, a = v->a, tx = v->tx, ty = v->ty;
     const double sx = v->sx, sy = v->sy, px = v->px, py = v->py;
-    const double W = c->width, Y0 = r0, Y1 = r1;
+    const double X0 = c0, X1 = c1, Y0 = r0, Y1 = r1;
     const size_t stride = c->stride;
     isk__cov_lut t;
     isk__cov_lut_entry(&t, col, 255);
@@ -65,8 +65,8 @@ static ISK__INLINE void run_pixels(const isk_canvas *c, int r0, int r1, const is
              * learn.  An outside point writes a harmless offset and is not
              * counted (the select also keeps NaN and huge values out of the
              * conversions). */
-            const int in = (X >= 0) & (Y >= Y0) & (X < W) & (Y < Y1);
-            const double Xs = in ? X : 0.0, Ys = in ? Y : Y0;
+            const int in = (X >= X0) & (Y >= Y0) & (X < X1) & (Y < Y1);
+            const double Xs = in ? X : X0, Ys = in ? Y : Y0;
             off[k] = (size_t)(int)Ys * stride + (size_t)(int)Xs * 4u;
 #if defined(__GNUC__)
             __builtin_prefetch(c->pixels + off[k], 1);
@@ -93,10 +93,10 @@ static ISK__INLINE void run_pixels(const isk_canvas *c, int r0, int r1, const is
  * processor overlaps it freely; the blends then find their pixels loaded.
  * The stages are view/dot_block.h's. */
 
-/* The pixels of a DOT_EDGE point's block that lie on the rows [r0, r1)
- * and the canvas's columns (the single dot's clipping, isk__blend_2x2, with
- * the weights already known; the top-left pixel's column is on the canvas,
- * its row at least r0 - 1). */
+/* The pixels of a DOT_EDGE point's block that lie on the tile's rows
+ * [r0, r1) and columns [c0, c1) (the single dot's clipping,
+ * isk__blend_2x2, with the weights already known; the top-left pixel is at
+ * least at column c0 - 1 and row r0 - 1, and on the canvas). */
 static ISK__INLINE void edge_row(uint8_t *p, int right, isk_color col, const isk__cov_lut *lut, uint32_t wa,
                                  uint32_t wb, isk_blend mode)
 {
@@ -109,25 +109,32 @@ static ISK__INLINE void edge_row(uint8_t *p, int right, isk_color col, const isk
     }
 }
 
-static ISK__INLINE void edge_block(uint8_t *pixels, size_t stride, int width, int r0, int r1, int ix, int iy,
+static ISK__INLINE void edge_block(uint8_t *pixels, size_t stride, int r0, int r1, int c0, int c1, int ix, int iy,
                                    const uint8_t w[4], isk_color col, const isk__cov_lut *lut, isk_blend mode)
 {
-    const int right = ix + 1 < width;
     uint8_t *p = pixels + (size_t)ix * 4u;
+    uint32_t wa = w[0], wb = w[1], wc = w[2], wd = w[3];
+    int right = ix + 1 < c1;
+    if (ix < c0) { /* only the right column is the tile's */
+        p += 4;
+        wa = wb;
+        wc = wd;
+        right = 0;
+    }
     if (iy >= r0)
-        edge_row(p + (size_t)iy * stride, right, col, lut, w[0], w[1], mode);
+        edge_row(p + (size_t)iy * stride, right, col, lut, wa, wb, mode);
     if (iy + 1 < r1)
-        edge_row(p + (size_t)(iy + 1) * stride, right, col, lut, w[2], w[3], mode);
+        edge_row(p + (size_t)(iy + 1) * stride, right, col, lut, wc, wd, mode);
 }
 
-static ISK__INLINE void run_dots_blocked(const isk_canvas *c, int r0, int r1, const isk_view *v, size_t n,
+static ISK__INLINE void run_dots_blocked(const isk_canvas *c, int r0, int r1, int c0, int c1, const isk_view *v, size_t n,
                                          const uint32_t *list, const double *x, const double *y, isk_color col,
                                          const isk__cov_lut *lut, int camera, int browser, int keep,
                                          isk_blend mode)
 {
     const double hw = v->width / 2.0, hh = v->height / 2.0, a = v->a, tx = v->tx, ty = v->ty;
     const double sx = v->sx, sy = v->sy, px = v->px, py = v->py;
-    const double W1 = c->width - 1.0, Y0 = r0, H1 = r1 - 1.0;
+    const double X0 = c0, X1 = c1 - 1.0, Y0 = r0, H1 = r1 - 1.0;
     /* A point whose dot cannot touch the rows [r0, r1) is dropped before
      * anything else is computed for it: the single-dot kernels' own row
      * test (so dropping it changes nothing), and on a band of a threaded
@@ -138,6 +145,12 @@ static ISK__INLINE void run_dots_blocked(const isk_canvas *c, int r0, int r1, co
     const weights_fn weights = pick_weights(browser);
     const select_fn select = pick_select();
     const select_view sv = {camera, keep, hh, a, ty, sy, py, lo, hi, c->height};
+    /* A band of columns (whole rows, no list) selects its points by their
+     * X instead, with the same select: the camera's X = hw + a (x + tx) is
+     * hw - (-a) (x + tx) exactly, the window's sx x + px has Y's form. */
+    const int by_columns = !list && r0 == 0 && r1 == c->height && (c0 > 0 || c1 < c->width);
+    const select_view sc = {camera, keep, hw, -a, tx, sx, px, browser ? X0 - 2.0 : X0 - 1.0,
+                            browser ? c1 + 1.0 : (double)c1, c->width};
     dot_block b;
     for (size_t i0 = 0; i0 < n; i0 += DOT_BLOCK) {
         const int m = n - i0 < DOT_BLOCK ? (int)(n - i0) : DOT_BLOCK;
@@ -151,13 +164,22 @@ static ISK__INLINE void run_dots_blocked(const isk_canvas *c, int r0, int r1, co
         } else {
             dot_block_prefetch_ahead(x, y, i0, n);
         }
-        const int kept = select(&sv, yb, m, b.y, b.ix);
-        for (int k = 0; k < kept; k++) {
-            const double xi = x[POINT(list, i0 + (size_t)b.ix[k])];
-            const double X = camera ? hw + a * (xi + tx) : sx * xi + px;
-            b.x[k] = keep ? isk__keep_on_canvas(X, c->width) : X;
+        int kept;
+        if (by_columns) {
+            kept = select(&sc, x + i0, m, b.x, b.ix);
+            for (int k = 0; k < kept; k++) {
+                const double Y = screen_y(&sv, y[i0 + (size_t)b.ix[k]]);
+                b.y[k] = keep ? isk__keep_on_canvas(Y, c->height) : Y;
+            }
+        } else {
+            kept = select(&sv, yb, m, b.y, b.ix);
+            for (int k = 0; k < kept; k++) {
+                const double xi = x[POINT(list, i0 + (size_t)b.ix[k])];
+                const double X = camera ? hw + a * (xi + tx) : sx * xi + px;
+                b.x[k] = keep ? isk__keep_on_canvas(X, c->width) : X;
+            }
         }
-        weights(&b, kept, W1, Y0, H1);
+        weights(&b, kept, X0, X1, Y0, H1);
 #if defined(__GNUC__)
         for (int k = 0; k < kept; k++)
             if (b.fast[k] == DOT_FULL) {
@@ -168,7 +190,7 @@ static ISK__INLINE void run_dots_blocked(const isk_canvas *c, int r0, int r1, co
 #endif
         for (int k = 0; k < kept; k++) {
             if (b.fast[k] == DOT_EDGE) {
-                edge_block(pixels, stride, c->width, r0, r1, b.ix[k], b.iy[k], b.w[k], col, lut, mode);
+                edge_block(pixels, stride, r0, r1, c0, c1, b.ix[k], b.iy[k], b.w[k], col, lut, mode);
             } else if (b.fast[k]) {
                 uint8_t *p = pixels + (size_t)b.iy[k] * stride + (size_t)b.ix[k] * 4u;
                 if (lut) {
@@ -181,38 +203,38 @@ static ISK__INLINE void run_dots_blocked(const isk_canvas *c, int r0, int r1, co
                     isk__px_cov(p + stride + 4, col, b.w[k][3], mode);
                 }
             } else if (browser) {
-                isk__dot_browser_rows(c, r0, r1, b.x[k], b.y[k], col, lut, mode);
+                isk__dot_browser_tile(c, r0, r1, c0, c1, b.x[k], b.y[k], col, lut, mode);
             } else {
-                isk__dot_rows(c, r0, r1, b.x[k], b.y[k], col, lut, mode);
+                isk__dot_tile(c, r0, r1, c0, c1, b.x[k], b.y[k], col, lut, mode);
             }
         }
     }
 }
 
-static ISK__INLINE void run_kind(const isk_canvas *c, int r0, int r1, const isk_view *v, size_t n,
+static ISK__INLINE void run_kind(const isk_canvas *c, int r0, int r1, int c0, int c1, const isk_view *v, size_t n,
                                  const uint32_t *list, const double *x, const double *y, isk_color col,
                                  const isk__cov_lut *lut, isk__batch_rule rule, int keep, isk_blend mode)
 {
     const int camera = v->kind == ISK_VIEW_CAMERA;
     if (rule == ISK__BATCH_DOT && camera)
-        run_dots_blocked(c, r0, r1, v, n, list, x, y, col, lut, 1, 0, keep, mode);
+        run_dots_blocked(c, r0, r1, c0, c1, v, n, list, x, y, col, lut, 1, 0, keep, mode);
     else if (rule == ISK__BATCH_DOT)
-        run_dots_blocked(c, r0, r1, v, n, list, x, y, col, lut, 0, 0, keep, mode);
+        run_dots_blocked(c, r0, r1, c0, c1, v, n, list, x, y, col, lut, 0, 0, keep, mode);
     else if (rule == ISK__BATCH_DOT_BROWSER && camera)
-        run_dots_blocked(c, r0, r1, v, n, list, x, y, col, lut, 1, 1, keep, mode);
+        run_dots_blocked(c, r0, r1, c0, c1, v, n, list, x, y, col, lut, 1, 1, keep, mode);
     else if (rule == ISK__BATCH_DOT_BROWSER)
-        run_dots_blocked(c, r0, r1, v, n, list, x, y, col, lut, 0, 1, keep, mode);
+        run_dots_blocked(c, r0, r1, c0, c1, v, n, list, x, y, col, lut, 0, 1, keep, mode);
     else if (camera)
-        run_pixels(c, r0, r1, v, n, list, x, y, col, 1, keep, mode);
+        run_pixels(c, r0, r1, c0, c1, v, n, list, x, y, col, 1, keep, mode);
     else
-        run_pixels(c, r0, r1, v, n, list, x, y, col, 0, keep, mode);
+        run_pixels(c, r0, r1, c0, c1, v, n, list, x, y, col, 0, keep, mode);
 }
 
 /* Batches this short skip the 256-entry table: building it would cost
  * more than it saves. */
 #define LUT_MIN_BATCH 64
 
-static ISK__INLINE void run_rule(const isk_canvas *c, int r0, int r1, const isk_view *v, size_t n,
+static ISK__INLINE void run_rule(const isk_canvas *c, int r0, int r1, int c0, int c1, const isk_view *v, size_t n,
                                  const uint32_t *list, const double *x, const double *y, isk_color col,
                                  unsigned rule, isk_blend mode)
 {
@@ -225,48 +247,55 @@ static ISK__INLINE void run_rule(const isk_canvas *c, int r0, int r1, const isk_
         if (n >= LUT_MIN_BATCH) {
             isk__cov_lut_init(&lut, col);
             if (rule == ISK__BATCH_DOT)
-                run_kind(c, r0, r1, v, n, list, x, y, col, &lut, ISK__BATCH_DOT, keep, mode);
+                run_kind(c, r0, r1, c0, c1, v, n, list, x, y, col, &lut, ISK__BATCH_DOT, keep, mode);
             else
-                run_kind(c, r0, r1, v, n, list, x, y, col, &lut, ISK__BATCH_DOT_BROWSER, keep, mode);
+                run_kind(c, r0, r1, c0, c1, v, n, list, x, y, col, &lut, ISK__BATCH_DOT_BROWSER, keep, mode);
         } else if (rule == ISK__BATCH_DOT) {
-            run_kind(c, r0, r1, v, n, list, x, y, col, NULL, ISK__BATCH_DOT, keep, mode);
+            run_kind(c, r0, r1, c0, c1, v, n, list, x, y, col, NULL, ISK__BATCH_DOT, keep, mode);
         } else {
-            run_kind(c, r0, r1, v, n, list, x, y, col, NULL, ISK__BATCH_DOT_BROWSER, keep, mode);
+            run_kind(c, r0, r1, c0, c1, v, n, list, x, y, col, NULL, ISK__BATCH_DOT_BROWSER, keep, mode);
         }
         break;
     case ISK__BATCH_PIXEL:
-        run_kind(c, r0, r1, v, n, list, x, y, col, NULL, ISK__BATCH_PIXEL, keep, mode);
+        run_kind(c, r0, r1, c0, c1, v, n, list, x, y, col, NULL, ISK__BATCH_PIXEL, keep, mode);
         break;
     default:
         break;
     }
 }
 
-/* Whether there is anything to draw, the rows clamped to the canvas. */
+/* Whether there is anything to draw, the tile clamped to the canvas. */
 static int drawable(const isk_canvas *c, const isk_view *v, size_t n, const double *x, const double *y, int *r0,
-                    int *r1)
+                    int *r1, int *c0, int *c1)
 {
     if (!c || !c->pixels || !v || !x || !y || n == 0)
         return 0;
-    if (*r0 < 0)
-        *r0 = 0;
-    if (*r1 > c->height)
-        *r1 = c->height;
-    return *r0 < *r1;
+    *r0 = *r0 < 0 ? 0 : *r0;
+    *r1 = *r1 > c->height ? c->height : *r1;
+    *c0 = *c0 < 0 ? 0 : *c0;
+    *c1 = *c1 > c->width ? c->width : *c1;
+    return *r0 < *r1 && *c0 < *c1;
+}
+
+void isk__draw_batch_tile(isk_canvas *c, const isk_view *v, size_t n, const double *x, const double *y,
+                          isk_color col, isk_blend mode, unsigned rule, int r0, int r1, int c0, int c1)
+{
+    if (drawable(c, v, n, x, y, &r0, &r1, &c0, &c1))
+        ISK__BLEND_DISPATCH(mode, run_rule, c, r0, r1, c0, c1, v, n, NULL, x, y, col, rule);
 }
 
 void isk__draw_batch_rows(isk_canvas *c, const isk_view *v, size_t n, const double *x, const double *y,
                           isk_color col, isk_blend mode, unsigned rule, int r0, int r1)
 {
-    if (drawable(c, v, n, x, y, &r0, &r1))
-        ISK__BLEND_DISPATCH(mode, run_rule, c, r0, r1, v, n, NULL, x, y, col, rule);
+    isk__draw_batch_tile(c, v, n, x, y, col, mode, rule, r0, r1, 0, c ? c->width : 0);
 }
 
 void isk__draw_batch_list_rows(isk_canvas *c, const isk_view *v, const uint32_t *list, size_t m, const double *x,
                                const double *y, isk_color col, isk_blend mode, unsigned rule, int r0, int r1)
 {
-    if (list && drawable(c, v, m, x, y, &r0, &r1))
-        ISK__BLEND_DISPATCH(mode, run_rule, c, r0, r1, v, m, list, x, y, col, rule);
+    int c0 = 0, c1 = c ? c->width : 0;
+    if (list && drawable(c, v, m, x, y, &r0, &r1, &c0, &c1))
+        ISK__BLEND_DISPATCH(mode, run_rule, c, r0, r1, c0, c1, v, m, list, x, y, col, rule);
 }
 
 void isk__batch_bin(const isk_view *v, int height, const double *y, size_t i0, size_t i1,

@@ -37,6 +37,11 @@ static inline double isk__keep_on_canvas(double v, int n)
 void isk__draw_batch_rows(isk_canvas *c, const isk_view *v, size_t n, const double *x, const double *y,
                           isk_color col, isk_blend mode, unsigned rule, int r0, int r1);
 
+/* The same cut to the columns [c0, c1) too: a tile of a threaded draw
+ * whose particles crowd into a few rows (a scene settled on its floor). */
+void isk__draw_batch_tile(isk_canvas *c, const isk_view *v, size_t n, const double *x, const double *y,
+                          isk_color col, isk_blend mode, unsigned rule, int r0, int r1, int c0, int c1);
+
 /* The same for the points list[0..m) only, in that order (a band's points,
  * which isk__batch_bin found). */
 void isk__draw_batch_list_rows(isk_canvas *c, const isk_view *v, const uint32_t *list, size_t m, const double *x,

@@ -247,6 +247,18 @@ int main(int argc, char **argv)
                "spread = 60\nspeed_min = 2\nspeed_max = 6\nforces = gravity\ndraw = sprite\nsize = 0.5\n"
                "blend = over\nsize_over_life = 0:1, 1:0.2\n",
                "draws", quick ? 10 : 40);
+    /* A layer fallen onto its floor: most particles on the last row, so
+     * the dots' bands are columns (effect_bands.c's place_cuts); exact-area
+     * dots, the browser's and pixels, faint enough that the row does not
+     * saturate (a dot drawn by the wrong band, or by none, shows). */
+    scene_text("[scene]\nwidth = 800\nheight = 60\n[force gravity]\ng = 400\n[bounds]\nrestitution = 0.2\n"
+               "[emitter a]\nsource = layer\ncount = 20000\nlimit = 20000\nrect = -9, 9, -3, 6\n"
+               "forces = gravity\ncolor = #ff804008\n"
+               "[emitter b]\nsource = layer\ncount = 20000\nlimit = 20000\nrect = -9, 9, -3, 6\n"
+               "forces = gravity\ndraw = dot-browser\nblend = add\ncolor = #10204010\n"
+               "[emitter c]\nsource = layer\ncount = 20000\nlimit = 20000\nrect = -9, 9, -3, 6\n"
+               "forces = gravity\ndraw = pixel\ncolor = #40ff8008\n",
+               "settled", quick ? 30 : 60);
     /* An order-dependent list: a potential that switches itself off. */
     scene_text("[force trap]\nkind = potential\nk = 80\nposition = 0, 0\nmax_distance = 0.2\n"
                "[emitter layer]\nsource = layer\ncount = 20000\nlimit = 20000\nrect = -5, 5, -5, 5\n"
