@@ -90,8 +90,9 @@ static ISK__INLINE void weight_one(dot_block *b, int k, double X0, double X1, do
 {
     double X = b->x[k], Y = b->y[k];
     /* the whole 2x2 block on the tile: floor(X) in [X0, X1 - 1] */
+    const double Xe = dot_edge_first(X0), Ye = dot_edge_first(Y0);
     const int full = (X >= X0) & (X < X1) & (Y >= Y0) & (Y < H1);
-    const int edge = (X >= dot_edge_first(X0)) & (X < X1 + 1.0) & (Y >= dot_edge_first(Y0)) & (Y < H1 + 1.0);
+    const int edge = (X >= Xe) & (X < X1 + 1.0) & (Y >= Ye) & (Y < H1 + 1.0);
     b->fast[k] = (uint8_t)(full ? DOT_FULL : edge ? DOT_EDGE : DOT_OTHER);
     if (!edge)
         return;
