@@ -153,11 +153,9 @@ static const char *mode_name(int b)
 
 int main(int argc, char **argv)
 {
-    int reps = argc > 1 ? atoi(argv[1]) : 9;
-    if (reps < 1 || reps > MAXV) {
-        fprintf(stderr, "bench_raster: reps must be 1..%d\n", MAXV);
-        return 1;
-    }
+    const int reps = bench_reps_arg(argc, argv, 9, MAXV,
+                                    "usage: bench_raster [REPS]\n"
+                                    "  REPS: repetitions of each timing (the median is printed), default 9\n");
     static ctx k;
     if (isk_canvas_init(&k.c, W, H) != ISK_OK || isk_view_window(&k.v, W, H, -4, 4, -3, 3) != ISK_OK)
         return 1;

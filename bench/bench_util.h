@@ -3,8 +3,51 @@
 #ifndef ISKRA_BENCH_UTIL_H
 #define ISKRA_BENCH_UTIL_H
 
+#include <errno.h>
+#include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
 #include <time.h>
+
+/* The one optional argument of a benchmark that takes --quick: 1 for
+ * --quick, 0 for none; --help prints `usage` and exits 0, anything else
+ * says what it did not understand and exits 2 (a mistyped flag must not
+ * start a run of several minutes). */
+static inline int bench_quick_arg(int argc, char **argv, const char *usage)
+{
+    if (argc > 1 && (!strcmp(argv[1], "--help") || !strcmp(argv[1], "-h"))) {
+        printf("%s", usage);
+        exit(0);
+    }
+    if (argc > 2 || (argc == 2 && strcmp(argv[1], "--quick"))) {
+        fprintf(stderr, "%s: unexpected argument '%s'\n%s", argv[0], argv[argc > 2 && !strcmp(argv[1], "--quick") ? 2 : 1],
+                usage);
+        exit(2);
+    }
+    return argc == 2;
+}
+
+/* The one optional argument of a benchmark that takes a repetition count:
+ * a whole number in [1, max], `fallback` when there is none; --help prints
+ * `usage` and exits 0, anything else says why it was refused and exits 2. */
+static inline int bench_reps_arg(int argc, char **argv, int fallback, int max, const char *usage)
+{
+    if (argc > 1 && (!strcmp(argv[1], "--help") || !strcmp(argv[1], "-h"))) {
+        printf("%s", usage);
+        exit(0);
+    }
+    if (argc == 1)
+        return fallback;
+    char *end = NULL;
+    errno = 0;
+    const long v = strtol(argv[1], &end, 10);
+    if (argc > 2 || end == argv[1] || *end || errno || v < 1 || v > max) {
+        fprintf(stderr, "%s: '%s': the repetitions must be a whole number from 1 to %d\n%s", argv[0],
+                argv[argc > 2 ? 2 : 1], max, usage);
+        exit(2);
+    }
+    return (int)v;
+}
 
 /* Monotonic seconds. */
 static inline double bench_now(void)

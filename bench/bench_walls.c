@@ -312,7 +312,10 @@ static int measure(size_t n, int steps, int rounds)
 
 int main(int argc, char **argv)
 {
-    const int quick = argc > 1 && !strcmp(argv[1], "--quick");
+    const int quick = bench_quick_arg(argc, argv,
+                                      "usage: bench_walls [--quick]\n"
+                                      "  each stage set's time a particle-step against the memory-bandwidth limit;\n"
+                                      "  --quick: 10^6 and 16384 particles, fewer rounds\n");
     const int rounds = quick ? 5 : ROUNDS_MAX;
     printf("bench_walls: gravity %.2f + drag %.2f + reflect walls, semi-implicit Euler, dt 1/600\n\n", G, DRAG);
     if (measure(1000000, 10, rounds))
