@@ -9,42 +9,52 @@
 #include <string.h>
 #include <time.h>
 
-/* The one optional argument of a benchmark that takes --quick: 1 for
- * --quick, 0 for none; --help prints `usage` and exits 0, anything else
- * says what it did not understand and exits 2 (a mistyped flag must not
- * start a run of several minutes). */
-static inline int bench_quick_arg(int argc, char **argv, const char *usage)
+/* A benchmark's one optional argument.  --help (or -h) prints `usage` and
+ * exits 0; an argument refused is named, with the usage, and exits 2 (a
+ * mistyped flag must not start a run of several minutes). */
+static inline void bench_usage_exit(const char *prog, const char *refused, const char *why, const char *usage)
 {
-    if (argc > 1 && (!strcmp(argv[1], "--help") || !strcmp(argv[1], "-h"))) {
+    if (!refused) {
         printf("%s", usage);
         exit(0);
     }
-    if (argc > 2 || (argc == 2 && strcmp(argv[1], "--quick"))) {
-        fprintf(stderr, "%s: unexpected argument '%s'\n%s", argv[0], argv[argc > 2 && !strcmp(argv[1], "--quick") ? 2 : 1],
-                usage);
-        exit(2);
-    }
+    fprintf(stderr, "%s: '%s': %s\n%s", prog, refused, why, usage);
+    exit(2);
+}
+
+static inline int bench_wants_help(int argc, char **argv)
+{
+    return argc > 1 && (!strcmp(argv[1], "--help") || !strcmp(argv[1], "-h"));
+}
+
+/* 1 for --quick, 0 for no argument. */
+static inline int bench_quick_arg(int argc, char **argv, const char *usage)
+{
+    if (bench_wants_help(argc, argv))
+        bench_usage_exit(argv[0], NULL, NULL, usage);
+    if (argc > 1 && strcmp(argv[1], "--quick"))
+        bench_usage_exit(argv[0], argv[1], "unexpected argument", usage);
+    if (argc > 2)
+        bench_usage_exit(argv[0], argv[2], "unexpected argument", usage);
     return argc == 2;
 }
 
-/* The one optional argument of a benchmark that takes a repetition count:
- * a whole number in [1, max], `fallback` when there is none; --help prints
- * `usage` and exits 0, anything else says why it was refused and exits 2. */
+/* A repetition count: a whole number in [1, max], `fallback` without one. */
 static inline int bench_reps_arg(int argc, char **argv, int fallback, int max, const char *usage)
 {
-    if (argc > 1 && (!strcmp(argv[1], "--help") || !strcmp(argv[1], "-h"))) {
-        printf("%s", usage);
-        exit(0);
-    }
+    if (bench_wants_help(argc, argv))
+        bench_usage_exit(argv[0], NULL, NULL, usage);
+    if (argc > 2)
+        bench_usage_exit(argv[0], argv[2], "unexpected argument", usage);
     if (argc == 1)
         return fallback;
     char *end = NULL;
     errno = 0;
     const long v = strtol(argv[1], &end, 10);
-    if (argc > 2 || end == argv[1] || *end || errno || v < 1 || v > max) {
-        fprintf(stderr, "%s: '%s': the repetitions must be a whole number from 1 to %d\n%s", argv[0],
-                argv[argc > 2 ? 2 : 1], max, usage);
-        exit(2);
+    if (end == argv[1] || *end || errno || v < 1 || v > max) {
+        char why[64];
+        snprintf(why, sizeof why, "the repetitions must be a whole number from 1 to %d", max);
+        bench_usage_exit(argv[0], argv[1], why, usage);
     }
     return (int)v;
 }
