@@ -7,7 +7,7 @@
  * measured in the same process on arrays whose total footprint is that of
  * the store's columns the stage set touches, so both sit in the same level
  * of the memory.  Each column counts once a step: the runner keeps a block
- * of 256 particles in L1 from one stage to the next, so a column two stages
+ * of 128 particles in L1 from one stage to the next, so a column two stages
  * touch is read once and written once (when some stage changes it).
  *   the motion rows (motion, walls, remember, resting, drag, Coulomb): the
  *     motion stage reads x, y, vx, vy, m and writes x, y, vx, vy: 72 B; the

@@ -172,8 +172,8 @@ Test(motion_fused, flags_the_non_finite)
     cr_assert(isk_motion_fused(ISK_INTEGRATE_SEMI_EULER, &f, N, b.x, b.y, b.vx, b.vy, b.m, 1.0 / 600, NULL, &nf));
     cr_assert_eq(nf, 1);
     b = in;
-    b.x[200] = 1.7e308;
-    b.vx[200] = 1e308;
+    b.x[N * 25 / 32] = 1.7e308; /* some particle in the last quarter */
+    b.vx[N * 25 / 32] = 1e308;
     cr_assert(isk_motion_fused(ISK_INTEGRATE_EULER, &f, N, b.x, b.y, b.vx, b.vy, b.m, 0.1, NULL, &nf));
     cr_assert_eq(nf, 1, "x + dt*vx overflows to infinity");
 }
@@ -359,7 +359,8 @@ Test(motion_fused, potentials_beyond_a_block)
             memcpy(m + o, one.m, c * sizeof *m);
         }
         random_case(&pc, &seed, &one, 1 + round);
-        const size_t on = N + 3 + (size_t)round * 101; /* on a centre: in the second block, then the third */
+        /* on a centre: in the second block, then the third (N + 3 ... M - 1 for any N) */
+        const size_t on = N + 3 + (size_t)round * ((M - N - 4) / 3);
         x[on] = pc.pot[0].r.x;
         y[on] = pc.pot[0].r.y;
         isk_forces f = {.gravity = 9.81, .drag = 0.47, .centre = ISK_FIDELITY_SOUND};

@@ -64,7 +64,11 @@
  *
  * The step runs in blocks of ISK_SIM_BLOCK particles so the force
  * accumulators and RK4 stage copies stay in L1 cache: every stage is still a
- * tight loop, just over 256 particles at a time.
+ * tight loop, just over 128 particles at a time.  128, not more: a block's
+ * five columns (5 KiB), the next block's, asked for ahead (5 KiB), and the
+ * start state the walls keep when potentials act (4 KiB) fit the 32 KiB L1
+ * with room to spare; at 256 they filled 28 KiB of it and the copy of the
+ * start state cost 3 ns a particle at 10^6 instead of 0.4 (bench_walls).
  *
  * Example: one RK4 step of a thrown particle under gravity:
  *
@@ -73,7 +77,7 @@
  *     isk_status st = isk_particles_add(&store, 0, 0, 1, 5, 1.0, NULL);   // x, y, vx, vy, m
  *     isk_forces forces = { .gravity = 9.81 };
  *     double dt = 1.0 / 60;
- *     isk_scratch s;                               // 24 KiB, no allocation
+ *     isk_scratch s;                               // 16 KiB, no allocation
  *     if (st == ISK_OK)
  *         st = isk_integrate_range(ISK_INTEGRATE_RK4, &forces, &s, &store, 0, store.count, dt);
  *     if (st == ISK_OK) printf("(%.6f, %.6f)\n", store.x[0], store.y[0]);
@@ -107,7 +111,7 @@ typedef enum isk_integrator {
     ISK_INTEGRATOR_COUNT
 } isk_integrator;
 
-#define ISK_SIM_BLOCK 256
+#define ISK_SIM_BLOCK 128
 
 /* Decaying speeds are flushed to 0 below this (see the top). */
 #define ISK_FLUSH_TINY 1e-200
