@@ -309,31 +309,27 @@ static isk_status draw_sprites(isk_effect *e, isk_canvas *c, fx_group *g, const 
     const int tinted = g->has_color_ramp || g->has_alpha_ramp || p->color;
     const double scale = fabs(e->view.sx);
     /* a band's thread reads every particle: those whose sprite cannot reach
-     * its rows are passed over before their style is worked out (NaN
-     * compares false and goes on to the sprite's own test).  Chunk by
-     * chunk, the positions are transformed and the ones in reach listed
-     * without a branch, then drawn in index order: on two bands of a
-     * shuffled store the test was a coin toss the CPU mispredicted half
-     * the time, a quarter of the threaded sprite draw (perf). */
+     * its rows (NaN included: the sprite would not be placed) are passed
+     * over before their style is worked out, chunk by chunk, by the dots'
+     * branch-free select; the test as a branch was a coin toss on two
+     * bands of a shuffled store, a quarter of the threaded sprite draw.
+     * The reach is a row wider than a sprite can touch, so the select's
+     * strict bounds drop nothing the band would draw. */
     enum { CHUNK = 256 };
-    double xs[CHUNK], ys[CHUNK];
-    unsigned short in_reach[CHUNK];
+    double ys[CHUNK];
+    int32_t in_reach[CHUNK];
     const double lo = b->r0 - b->sprite_reach, hi = b->r1 + b->sprite_reach;
     for (size_t o = 0; o < p->count; o += CHUNK) {
-        const size_t m = p->count - o < CHUNK ? p->count - o : CHUNK;
-        size_t k = 0;
-        for (size_t j = 0; j < m; j++) {
-            isk_view_to_screen(&e->view, p->x[o + j], p->y[o + j], &xs[j], &ys[j]);
-            in_reach[k] = (unsigned short)j;
-            k += !((ys[j] < lo) | (ys[j] > hi)); /* | not ||: no branch */
-        }
-        for (size_t q = 0; q < k; q++) {
-            const size_t j = in_reach[q], i = o + j;
-            double mult;
+        const int m = p->count - o < CHUNK ? (int)(p->count - o) : CHUNK;
+        const int k = isk__batch_select_rows(&e->view, p->y + o, m, lo, hi, ys, in_reach);
+        for (int q = 0; q < k; q++) {
+            const size_t i = o + (size_t)in_reach[q];
+            double X, Y, mult;
+            isk_view_to_screen(&e->view, p->x[i], p->y[i], &X, &Y);
             isk_color col = style(g, p, i, vary, &mult);
             const isk_sprite *spr = b->sprite[sprite_px(g, scale, mult)];
             if (spr)
-                isk__draw_sprite_rows(c, spr, xs[j], ys[j], tinted ? &col : NULL, g->def->blend, b->r0, b->r1);
+                isk__draw_sprite_rows(c, spr, X, Y, tinted ? &col : NULL, g->def->blend, b->r0, b->r1);
         }
     }
     return ISK_OK;

@@ -141,7 +141,7 @@ void isk_pipeline_run(const isk_pipeline *pl, isk_particles *p, size_t begin, si
  * ISK_PIPELINE_MIN_PARALLEL_BLOCKS blocks it runs on the caller.  Returns
  * 1 when a motion stage found a non-finite state (the workers' scratch
  * flags, combined and cleared; isk_scratch.nonfinite), else 0. */
-#define ISK_PIPELINE_MIN_PARALLEL_BLOCKS 16 /* 2048 particles */
+#define ISK_PIPELINE_MIN_PARALLEL_BLOCKS (2048 / ISK_SIM_BLOCK) /* 2048 particles, whatever the block */
 struct isk_pool;
 int isk_pipeline_run_pool(const isk_pipeline *pl, isk_particles *p, size_t begin, size_t end, double h,
                           struct isk_pool *pool);

@@ -298,11 +298,24 @@ void isk__draw_batch_list_rows(isk_canvas *c, const isk_view *v, const uint32_t 
         ISK__BLEND_DISPATCH(mode, run_rule, c, r0, r1, c0, c1, v, m, list, x, y, col, rule);
 }
 
+/* The view's Y arithmetic, for screen_y and the selects (no keep). */
+static select_view rows_view(const isk_view *v, double lo, double hi)
+{
+    return (select_view){.camera = v->kind == ISK_VIEW_CAMERA, .hh = v->height / 2.0, .a = v->a, .ty = v->ty,
+                         .sy = v->sy, .py = v->py, .lo = lo, .hi = hi};
+}
+
+int isk__batch_select_rows(const isk_view *v, const double *y, int m, double lo, double hi, double *oy,
+                           int32_t *oix)
+{
+    const select_view sv = rows_view(v, lo, hi);
+    return pick_select()(&sv, y, m, oy, oix);
+}
+
 void isk__batch_bin(const isk_view *v, int height, const double *y, size_t i0, size_t i1,
                     const uint8_t *band_of_row, uint16_t *code, size_t *count)
 {
-    const select_view sv = {.camera = v->kind == ISK_VIEW_CAMERA, .hh = v->height / 2.0, .a = v->a, .ty = v->ty,
-                            .sy = v->sy, .py = v->py};
+    const select_view sv = rows_view(v, 0.0, 0.0);
     const double lo = -(ISK__BIN_MARGIN + 1.0), hi = height + (double)ISK__BIN_MARGIN;
     /* counted here and added at the end: the threads' count arrays share
      * cache lines, and a store to one every point would bounce them */

@@ -47,6 +47,16 @@ void isk__draw_batch_tile(isk_canvas *c, const isk_view *v, size_t n, const doub
 void isk__draw_batch_list_rows(isk_canvas *c, const isk_view *v, const uint32_t *list, size_t m, const double *x,
                                const double *y, isk_color col, isk_blend mode, unsigned rule, int r0, int r1);
 
+/* The points y[0..m) whose screen Y (isk_view_to_screen's, bit for bit)
+ * lies strictly between lo and hi, NaN never: their places in oix and
+ * their Y in oy, in order; returns how many.  Without branches (on a band
+ * of a threaded draw most points may be another band's, in an order no
+ * predictor learns): the dots' own select, the widest build the CPU has.
+ * oy and oix hold m entries each, rounded up to a multiple of 8 (the
+ * vector builds store whole groups past the last point kept). */
+int isk__batch_select_rows(const isk_view *v, const double *y, int m, double lo, double hi, double *oy,
+                           int32_t *oix);
+
 /* ---- binning a batch by bands of rows (a threaded draw) ------------------
  * So that a band's thread reads only its own points, the points are first
  * sorted into bands (stably: each band keeps index order).  A point goes to
