@@ -93,9 +93,9 @@ static ISK__INLINE void run_pixels(const isk_canvas *c, int r0, int r1, int c0, 
  * Pass 2 is pure arithmetic, independent from point to point, so the
  * processor overlaps it freely.  The canvas's rows are not prefetched:
  * with the weights two groups at a time the blends' loads overlap well
- * enough on their own, and the prefetches' own loop cost more than they
- * saved (bench_raster on Zen 4: 10^6 dots over / add 7.7 / 6.3 ns with
- * them, 6.7 / 5.3 ns without, on canvases from 800x600 to 3840x2160).
+ * enough on their own (the same time for points all over an 800x600
+ * canvas), and where the points crowd into a small part of the canvas
+ * the prefetches' own loop cost 1 ns a dot (docs/vectorization.md).
  * The stages are view/dot_block.h's. */
 
 /* The pixels of a DOT_EDGE point's block that lie on the tile's rows
