@@ -358,9 +358,11 @@ static ISK__INLINE void px4(uint8_t *p, size_t stride, isk_color col, const isk_
 {
 #if ISK__SPAN_SSE2
     if (mode == ISK_BLEND_OVER) {
+        /* integer loads and stores: the rows are 4-byte aligned, and a
+         * double's (_mm_loadh_pd) would claim 8 */
         uint8_t *q = p + stride;
-        const __m128i v = _mm_castpd_si128(
-            _mm_loadh_pd(_mm_castsi128_pd(_mm_loadl_epi64((const __m128i *)(const void *)p)), (const double *)(const void *)q));
+        const __m128i v = _mm_unpacklo_epi64(_mm_loadl_epi64((const __m128i *)(const void *)p),
+                                             _mm_loadl_epi64((const __m128i *)(const void *)q));
         if ((_mm_movemask_epi8(_mm_cmpeq_epi8(v, _mm_set1_epi8(-1))) & 0x8888) == 0x8888) {
             const __m128i z = _mm_setzero_si128();
             const __m128i P0 = _mm_set_epi64x((long long)lut->over_p[w[1]], (long long)lut->over_p[w[0]]);
@@ -371,7 +373,7 @@ static ISK__INLINE void px4(uint8_t *p, size_t stride, isk_color col, const isk_
             const __m128i x1 = _mm_add_epi16(_mm_mullo_epi16(_mm_unpackhi_epi8(v, z), I1), P1);
             const __m128i r = _mm_packus_epi16(isk__s_div255(x0), isk__s_div255(x1));
             _mm_storel_epi64((__m128i *)(void *)p, r);
-            _mm_storeh_pd((double *)(void *)q, _mm_castsi128_pd(r));
+            _mm_storel_epi64((__m128i *)(void *)q, _mm_unpackhi_epi64(r, r));
             return;
         }
     }
