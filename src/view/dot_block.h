@@ -113,15 +113,23 @@ static inline void weights_scalar(dot_block *b, int m, double X0, double X1, dou
         weight_one(b, k, X0, X1, Y0, H1);
 }
 
+/* The vector weights take WEIGHTS_GROUPS groups of points through each
+ * step side by side.  One group is a chain of about 60 dependent
+ * operations, more than the processor's floating-point queue looks past,
+ * so one at a time it waited on each latency in turn: AVX-512 3.3 ns a
+ * point on Zen 4, 2.3 ns with two (AVX2 4.4 -> 3.4); three, four or eight
+ * did no better. */
+#define WEIGHTS_GROUPS 2
+
 #if ISK__SPAN_AVX2
-/* weights_scalar for 4 points a group, two groups side by side (as
- * weights_avx512, below, for the same reason).  Each lane does the scalar
- * code's operations: products left to right, floors by truncation of
- * values >= 0, the rank selection as 0/1 doubles (small integers, exact).
- * The last points (fewer than a pair of groups) take the scalar code. */
+/* weights_scalar for 4 points a group, WEIGHTS_GROUPS groups a step.  Each
+ * lane does the scalar code's operations: products left to right, floors
+ * by truncation of values >= 0, the rank selection as 0/1 doubles (small
+ * integers, exact).  The last points (fewer than a step's groups) take the
+ * scalar code. */
 static inline ISK__AVX2_FN void weights_avx2(dot_block *b, int m, double X0, double X1, double Y0, double H1)
 {
-    enum { G = 2 };
+    enum { G = WEIGHTS_GROUPS };
     const __m256d one = _mm256_set1_pd(1.0), k255 = _mm256_set1_pd(255.0);
     const __m256d vX0 = _mm256_set1_pd(X0), vX1 = _mm256_set1_pd(X1), vY0 = _mm256_set1_pd(Y0), vH1 = _mm256_set1_pd(H1);
     const __m256d vXe = _mm256_set1_pd(dot_edge_first(X0)), vW = _mm256_set1_pd(X1 + 1.0);
@@ -188,20 +196,14 @@ static inline ISK__AVX2_FN void weights_avx2(dot_block *b, int m, double X0, dou
 #endif
 
 #if ISK__SPAN_AVX512
-/* weights_avx2 for 8 points a group: the same operations on the doubles;
- * the rank selection in 32-bit lanes instead of 0/1 doubles (small
- * integers either way: the same comparisons, the same sums), with the
- * comparisons as mask registers.
- *
- * Two groups go through each step side by side (WEIGHTS_GROUPS).  One
- * group is a chain of about 60 dependent operations, more than the
- * processor's floating-point queue looks past, so one at a time it waited
- * on each latency in turn: 3.3 ns a point on Zen 4, 2.3 ns with two.
+/* weights_avx2 for 8 points a group, WEIGHTS_GROUPS groups a step: the
+ * same operations on the doubles; the rank selection in 32-bit lanes
+ * instead of 0/1 doubles (small integers either way: the same comparisons,
+ * the same sums), with the comparisons as mask registers.
  * Plain stores, no masked ones: the block's arrays hold DOT_BLOCK entries
  * and a group never starts past its last 8, so what lands past the m-th
  * point is scratch nobody reads, and a load that follows a masked store
  * must wait for it to reach the cache instead of being forwarded. */
-#define WEIGHTS_GROUPS 2
 _Static_assert(DOT_BLOCK % (8 * WEIGHTS_GROUPS) == 0, "whole groups of 8 fit the block's arrays");
 
 static inline ISK__AVX512_FN void weights_avx512(dot_block *b, int m, double X0, double X1, double Y0, double H1)
