@@ -507,6 +507,36 @@ static uint32_t screen_rests(size_t o, size_t n, double *pos, double *vel, const
     return need;
 }
 
+/* Which particles of [o, o + n) (n <= ISK_WALL_SCREEN) ended outside
+ * [lo, hi] (bit j: particle o + j), and of those, which the memo answers
+ * (*hits).  Small loops, one axis at a time: with both axes and the memo
+ * tests in one loop, gcc spilled the masks and reloaded them through the
+ * stack at every particle (a settled floor of many masses: 13.5 ns a
+ * particle-step then, 9.2 ns now). */
+static uint32_t outside_of(size_t o, size_t n, const double *pos, const double *vel, const double *m, double lo,
+                           double hi, const rest_memo *memo, uint32_t *hits)
+{
+    uint32_t out = 0;
+    for (size_t j = 0; j < n; j++)
+        out |= (uint32_t) !(pos[o + j] >= lo && pos[o + j] <= hi) << j;
+    uint32_t hit = 0;
+    if (out && memo->valid)
+        for (size_t j = 0; j < n; j++)
+            hit |= (uint32_t)memo_has(memo, pos[o + j], vel[o + j], m ? bits_of(m[o + j]) : 0) << j;
+    *hits = hit & out;
+    return out & ~hit;
+}
+
+/* The memo's answer to the particles of `hits`. */
+static void apply_memo(size_t o, uint32_t hits, double *pos, double *vel, const rest_memo *memo)
+{
+    for (uint32_t b = hits; b; b &= b - 1) {
+        const size_t i = o + lowest_bit(b);
+        pos[i] = memo->pos;
+        vel[i] = memo->vel;
+    }
+}
+
 /* The particles [o, o + n) of a group the screen flagged: each axis of each
  * particle that ended outside gets its bounces (the axes are independent:
  * x's touch x and vx, y's y and vy, so the order between them is free).
@@ -519,34 +549,13 @@ static void impact_group(size_t o, size_t n, double *restrict x, double *restric
 {
     const isk_wall_box *w = &iw->box;
     const double *m = iw->drag > 0.0 ? iw->m : NULL; /* the memo's mass key: 0 without drag */
-    const rest_memo mx = memo[0], my = memo[1];
     uint32_t need_x = 0, need_y = 0, hit_x = 0, hit_y = 0; /* bit j: particle o + j, n <= ISK_WALL_SCREEN */
-    for (size_t j = 0; j < n; j++) {
-        const size_t i = o + j;
-        const uint32_t bit = 1u << j;
-        if (iw->x_on && !(x[i] >= w->left && x[i] <= w->right)) {
-            if (mx.valid && memo_has(&mx, x[i], vx[i], m ? bits_of(m[i]) : 0))
-                hit_x |= bit;
-            else
-                need_x |= bit;
-        }
-        if (iw->y_on && !(y[i] >= w->bottom && y[i] <= w->top)) {
-            if (my.valid && memo_has(&my, y[i], vy[i], m ? bits_of(m[i]) : 0))
-                hit_y |= bit;
-            else
-                need_y |= bit;
-        }
-    }
-    for (uint32_t b = hit_x; b; b &= b - 1) {
-        const size_t i = o + lowest_bit(b);
-        x[i] = mx.pos;
-        vx[i] = mx.vel;
-    }
-    for (uint32_t b = hit_y; b; b &= b - 1) {
-        const size_t i = o + lowest_bit(b);
-        y[i] = my.pos;
-        vy[i] = my.vel;
-    }
+    if (iw->x_on)
+        need_x = outside_of(o, n, x, vx, m, w->left, w->right, &memo[0], &hit_x);
+    if (iw->y_on)
+        need_y = outside_of(o, n, y, vy, m, w->bottom, w->top, &memo[1], &hit_y);
+    apply_memo(o, hit_x, x, vx, &memo[0]);
+    apply_memo(o, hit_y, y, vy, &memo[1]);
     need_x = screen_rests(o, n, x, vx, &iw->mx, iw, w->left, w->right, need_x, &memo[0]);
     need_y = screen_rests(o, n, y, vy, &iw->my, iw, w->bottom, w->top, need_y, &memo[1]);
     isk_fl_cache cache; /* the group's basis values (flight.h) */
