@@ -38,7 +38,6 @@
 #define ISKRA_SIM_MOTION_FUSED_H
 
 #include <stddef.h>
-#include <string.h>
 
 #include "iskra/forces.h"
 #include "iskra/integrate.h"
@@ -60,14 +59,22 @@ static inline isk_motion_start isk_motion_start_of(isk_scratch *s)
 
 /* The start state kept by a copy of its own, where no fused loop stores it
  * on the way (the remember stage, a motion stage on the general path, the
- * loops without potentials). */
+ * loops without potentials).  One loop over the four columns rather than
+ * four memcpy: the copy is the first to read a block the prefetch has not
+ * brought in yet, and four streams at once keep four misses in flight where
+ * a memcpy a column waits for one column's lines after another's
+ * (bench_walls at 10^6, "from a remembered start": 2.73-2.85 ns a
+ * particle-step against 2.80-3.13, alternated runs). */
 static inline void isk_motion_start_copy(const isk_motion_start *s, size_t n, const double *x, const double *y,
                                          const double *vx, const double *vy)
 {
-    memcpy(s->x, x, n * sizeof *x);
-    memcpy(s->y, y, n * sizeof *y);
-    memcpy(s->vx, vx, n * sizeof *vx);
-    memcpy(s->vy, vy, n * sizeof *vy);
+    double *restrict sx = s->x, *restrict sy = s->y, *restrict svx = s->vx, *restrict svy = s->vy;
+    for (size_t i = 0; i < n; i++) {
+        sx[i] = x[i];
+        sy[i] = y[i];
+        svx[i] = vx[i];
+        svy[i] = vy[i];
+    }
 }
 
 /* Steps the n particles and returns 1 when the fused pass covers this
