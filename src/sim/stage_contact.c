@@ -12,7 +12,7 @@ static void run_remember(const isk_stage *st, isk_block *b, double h)
 {
     (void)st;
     (void)h;
-    isk_block_prefetch_next(b, 5); /* the first stage to read the block */
+    isk_block_prefetch_ahead(b, 5); /* the first stage to read the block */
     const isk_motion_start start = isk_motion_start_of(b->s);
     isk_motion_start_copy(&start, b->n, b->x, b->y, b->vx, b->vy);
 }

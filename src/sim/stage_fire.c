@@ -37,7 +37,7 @@ const isk_stage_kind isk_stage_slow = {"slow", run_slow, describe_slow};
  * its sign is -a), slow clamped at 0. */
 static void run_drift_slow(const isk_stage *st, isk_block *b, double h)
 {
-    isk_block_prefetch_next(b, 4); /* the first stage to read the block */
+    isk_block_prefetch_ahead(b, 4); /* the first stage to read the block */
     const double dvx = st->u.drift_slow.ax * h, dvy = st->u.drift_slow.ay * h;
     const double f = slow_factor(st->u.drift_slow.slowing, h);
     double *restrict x = b->x, *restrict y = b->y, *restrict vx = b->vx, *restrict vy = b->vy;
@@ -58,14 +58,14 @@ static void describe_drift_slow(const isk_stage *st, FILE *out)
 
 const isk_stage_kind isk_stage_drift_slow = {"drift", run_drift_slow, describe_drift_slow};
 
-/* The sway of step h as sim/sway.h takes it, and a hint for the next
- * block's four columns of it. */
+/* The sway of step h as sim/sway.h takes it, and a hint for the four
+ * columns of it of a block ahead. */
 static isk_sway sway_of(const isk_stage_osc *o, isk_block *b, double h)
 {
     const isk_particles *p = b->p;
     const double *const own[4] = {p->osc_amp, p->osc_phase, p->osc_omega, p->osc_offset};
     for (int c = 0; c < 4; c++)
-        isk_block_prefetch_next_of(b, own[c]);
+        isk_block_prefetch_ahead_of(b, own[c]);
     double decay = 1.0 - o->decay * h;
     if (!(decay > 0.0))
         decay = 0.0;
@@ -123,7 +123,7 @@ static int drift_sway_parts(const isk_stage *st, isk_stage part[3])
  * stands for one after the other: the same bits either way. */
 static void run_drift_sway(const isk_stage *st, isk_block *b, double h)
 {
-    isk_block_prefetch_next(b, 4); /* the first stage to read the block */
+    isk_block_prefetch_ahead(b, 4); /* the first stage to read the block */
     isk_particles *p = b->p;
     const size_t o = b->first;
     const isk_sway w = sway_of(&st->u.drift_sway.osc, b, h);
