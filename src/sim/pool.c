@@ -11,8 +11,7 @@
 
 /* Items a thread takes at a time, at most.  Large enough that each
  * thread streams through long runs of the store: with 4 blocks (1024
- * particles) the two threads' runs interleaved finely, the next-block
- * prefetch fetched the other thread's block half the time, and 2 threads
+ * particles) the two threads' runs interleaved finely, and 2 threads
  * stepped 4*10^6 particles only 1.3x faster than one; 64 blocks (16384
  * particles, tens of microseconds of work) gave 1.7-1.8x in the same runs.
  * The count rule below still gives every thread at least four chunks, and

@@ -4,7 +4,6 @@
 #include <math.h>
 #include <string.h>
 
-#include "sim/block_prefetch.h"
 #include "sim/motion_fused.h" /* isk_motion_start: the state the contact stages read */
 #include "sim/stage.h"
 
@@ -12,7 +11,6 @@ static void run_remember(const isk_stage *st, isk_block *b, double h)
 {
     (void)st;
     (void)h;
-    isk_block_prefetch_ahead(b, 5); /* the first stage to read the block */
     const isk_motion_start start = isk_motion_start_of(b->s);
     isk_motion_start_copy(&start, b->n, b->x, b->y, b->vx, b->vy);
 }

@@ -3,7 +3,6 @@
  * and sway.h). */
 #include <string.h>
 
-#include "sim/block_prefetch.h"
 #include "sim/kernels.h"
 #include "sim/stage.h"
 #include "sim/sway.h"
@@ -37,7 +36,6 @@ const isk_stage_kind isk_stage_slow = {"slow", run_slow, describe_slow};
  * its sign is -a), slow clamped at 0. */
 static void run_drift_slow(const isk_stage *st, isk_block *b, double h)
 {
-    isk_block_prefetch_ahead(b, 4); /* the first stage to read the block */
     const double dvx = st->u.drift_slow.ax * h, dvy = st->u.drift_slow.ay * h;
     const double f = slow_factor(st->u.drift_slow.slowing, h);
     double *restrict x = b->x, *restrict y = b->y, *restrict vx = b->vx, *restrict vy = b->vy;
@@ -58,14 +56,9 @@ static void describe_drift_slow(const isk_stage *st, FILE *out)
 
 const isk_stage_kind isk_stage_drift_slow = {"drift", run_drift_slow, describe_drift_slow};
 
-/* The sway of step h as sim/sway.h takes it, and a hint for the four
- * columns of it of a block ahead. */
-static isk_sway sway_of(const isk_stage_osc *o, isk_block *b, double h)
+/* The sway of step h as sim/sway.h takes it. */
+static isk_sway sway_of(const isk_stage_osc *o, double h)
 {
-    const isk_particles *p = b->p;
-    const double *const own[4] = {p->osc_amp, p->osc_phase, p->osc_omega, p->osc_offset};
-    for (int c = 0; c < 4; c++)
-        isk_block_prefetch_ahead_of(b, own[c]);
     double decay = 1.0 - o->decay * h;
     if (!(decay > 0.0))
         decay = 0.0;
@@ -78,7 +71,7 @@ static void run_oscillate(const isk_stage *st, isk_block *b, double h)
 {
     isk_particles *p = b->p;
     const size_t o = b->first;
-    const isk_sway w = sway_of(&st->u.osc, b, h);
+    const isk_sway w = sway_of(&st->u.osc, h);
     isk_sway_run(&w, b->n, b->x, b->vx, p->osc_amp + o, p->osc_phase + o, p->osc_omega + o, p->osc_offset + o);
 }
 
@@ -123,10 +116,9 @@ static int drift_sway_parts(const isk_stage *st, isk_stage part[3])
  * stands for one after the other: the same bits either way. */
 static void run_drift_sway(const isk_stage *st, isk_block *b, double h)
 {
-    isk_block_prefetch_ahead(b, 4); /* the first stage to read the block */
     isk_particles *p = b->p;
     const size_t o = b->first;
-    const isk_sway w = sway_of(&st->u.drift_sway.osc, b, h);
+    const isk_sway w = sway_of(&st->u.drift_sway.osc, h);
     const isk_sway_drift d = {st->u.drift_sway.ax, st->u.drift_sway.ay, slow_factor(st->u.drift_sway.slowing, h),
                               st->u.drift_sway.order};
     if (isk_sway_drift_build(1, &d, &w, b->n, b->x, b->y, b->vx, b->vy, p->osc_amp + o, p->osc_phase + o,

@@ -2,7 +2,6 @@
  * ageing (see stage.h). */
 #include <math.h>
 
-#include "sim/block_prefetch.h"
 #include "sim/kernels.h"
 #include "sim/motion_fused.h"
 #include "sim/stage.h"
@@ -38,7 +37,6 @@ static void drift_loop(size_t n, double *restrict x, double *restrict y, double 
 
 static void run_drift(const isk_stage *st, isk_block *b, double h)
 {
-    isk_block_prefetch_ahead(b, 4);
     drift_loop(b->n, b->x, b->y, b->vx, b->vy, st->u.drift.ax, st->u.drift.ay, h);
 }
 
@@ -59,7 +57,6 @@ const isk_stage_kind isk_stage_drift = {"drift", run_drift, describe_drift};
  * cannot leave the finite numbers. */
 static void run_motion(const isk_stage *st, isk_block *b, double h)
 {
-    isk_block_prefetch_ahead(b, 5);
     const isk_motion_start start = isk_motion_start_of(b->s);
     int nonfinite;
     if (isk_motion_fused(st->u.motion.method, st->u.motion.forces, b->n, b->x, b->y, b->vx, b->vy, b->m, h,
