@@ -11,16 +11,29 @@
  * compile-time flags G (gravity), A (constant acceleration), D (linear drag,
  * saturated at m/|dt|) and E (explicit Euler, else semi-implicit).  Each
  * force is added to the sums in forces.c's order: gravity, acceleration,
- * drag.  Returns the or-ed non-finite bits of the four new values. */
+ * drag.  K (compile-time too): store the state each particle starts from
+ * in kx..kvy as it is read (the contact stages' start, isk_motion_start),
+ * in the same pass, so the arithmetic overlaps the reads from memory; the
+ * Makefile keeps gcc from hoisting these stores out as memcpy calls
+ * (GCC_NO_COPY_IDIOM), which made them a pass of their own again.
+ * Returns the or-ed non-finite bits of the four new values. */
 static inline uint64_t fused_loop(size_t n, double *restrict x, double *restrict y, double *restrict vx,
-                                  double *restrict vy, const double *restrict m, double g, double ax, double ay,
-                                  double b, double inv_h, double dt, const int G, const int A, const int D,
-                                  const int E)
+                                  double *restrict vy, const double *restrict m, double *restrict kx,
+                                  double *restrict ky, double *restrict kvx, double *restrict kvy, double g,
+                                  double ax, double ay, double b, double inv_h, double dt, const int K,
+                                  const int G, const int A, const int D, const int E)
 {
     uint64_t acc = 0;
     for (size_t i = 0; i < n; i++) {
         const double mi = m[i];
         double ux = vx[i], uy = vy[i];
+        double px = x[i], py = y[i];
+        if (K) {
+            kx[i] = px;
+            ky[i] = py;
+            kvx[i] = ux;
+            kvy[i] = uy;
+        }
         double fx = 0.0, fy = 0.0; /* memset's +0.0 */
         if (G)
             fy = fy + isk_k_gravity_fy(mi, g);
@@ -35,7 +48,6 @@ static inline uint64_t fused_loop(size_t n, double *restrict x, double *restrict
             fx = fx + isk_k_drag(ux, be);
             fy = fy + isk_k_drag(uy, be);
         }
-        double px = x[i], py = y[i];
         if (E)
             isk_k_euler(&px, &py, &ux, &uy, mi, fx, fy, dt);
         else
@@ -51,43 +63,50 @@ static inline uint64_t fused_loop(size_t n, double *restrict x, double *restrict
 }
 
 typedef uint64_t (*fused_fn)(size_t n, double *restrict x, double *restrict y, double *restrict vx,
-                             double *restrict vy, const double *restrict m, double g, double ax, double ay,
-                             double b, double inv_h, double dt);
+                             double *restrict vy, const double *restrict m, const isk_motion_start *restrict sv,
+                             double g, double ax, double ay, double b, double inv_h, double dt);
 
 /* Each combination twice: baseline x86-64 (SSE2, two lanes) and, chosen at
  * run time, AVX2 (four lanes).  The same IEEE operations in the same order
  * either way (no FMA: -ffp-contract=off, and AVX2 does not include it), so
  * the same bits. */
-#define FUSED_AS(name, attr, G, A, D, E)                                                                        \
+#define FUSED_AS(name, attr, K, G, A, D, E)                                                                     \
     static attr uint64_t name(size_t n, double *restrict x, double *restrict y, double *restrict vx,           \
-                              double *restrict vy, const double *restrict m, double g, double ax, double ay,   \
-                              double b, double inv_h, double dt)                                               \
+                              double *restrict vy, const double *restrict m,                                   \
+                              const isk_motion_start *restrict sv, double g, double ax, double ay, double b,   \
+                              double inv_h, double dt)                                                         \
     {                                                                                                            \
-        return fused_loop(n, x, y, vx, vy, m, g, ax, ay, b, inv_h, dt, G, A, D, E);                             \
+        return fused_loop(n, x, y, vx, vy, m, K ? sv->x : NULL, K ? sv->y : NULL, K ? sv->vx : NULL,            \
+                          K ? sv->vy : NULL, g, ax, ay, b, inv_h, dt, K, G, A, D, E);                           \
     }
 #if ISK__SPAN_AVX2
-#define FUSED(G, A, D, E)                                                                                        \
-    FUSED_AS(fused_##G##A##D##E, , G, A, D, E) FUSED_AS(fused_avx2_##G##A##D##E, ISK__AVX2_FN, G, A, D, E)
+#define FUSED(K, G, A, D, E)                                                                                     \
+    FUSED_AS(fused_##K##G##A##D##E, , K, G, A, D, E)                                                             \
+    FUSED_AS(fused_avx2_##K##G##A##D##E, ISK__AVX2_FN, K, G, A, D, E)
 #else
-#define FUSED(G, A, D, E) FUSED_AS(fused_##G##A##D##E, , G, A, D, E)
+#define FUSED(K, G, A, D, E) FUSED_AS(fused_##K##G##A##D##E, , K, G, A, D, E)
 #endif
-FUSED(0, 0, 0, 0) FUSED(0, 0, 0, 1) FUSED(0, 0, 1, 0) FUSED(0, 0, 1, 1)
-FUSED(0, 1, 0, 0) FUSED(0, 1, 0, 1) FUSED(0, 1, 1, 0) FUSED(0, 1, 1, 1)
-FUSED(1, 0, 0, 0) FUSED(1, 0, 0, 1) FUSED(1, 0, 1, 0) FUSED(1, 0, 1, 1)
-FUSED(1, 1, 0, 0) FUSED(1, 1, 0, 1) FUSED(1, 1, 1, 0) FUSED(1, 1, 1, 1)
+#define FUSED_K(K)                                                                                               \
+    FUSED(K, 0, 0, 0, 0) FUSED(K, 0, 0, 0, 1) FUSED(K, 0, 0, 1, 0) FUSED(K, 0, 0, 1, 1)                         \
+    FUSED(K, 0, 1, 0, 0) FUSED(K, 0, 1, 0, 1) FUSED(K, 0, 1, 1, 0) FUSED(K, 0, 1, 1, 1)                         \
+    FUSED(K, 1, 0, 0, 0) FUSED(K, 1, 0, 0, 1) FUSED(K, 1, 0, 1, 0) FUSED(K, 1, 0, 1, 1)                         \
+    FUSED(K, 1, 1, 0, 0) FUSED(K, 1, 1, 0, 1) FUSED(K, 1, 1, 1, 0) FUSED(K, 1, 1, 1, 1)
+FUSED_K(0) FUSED_K(1)
+#undef FUSED_K
 #undef FUSED
 #undef FUSED_AS
 
-/* Indexed by [avx2][G*8 + A*4 + D*2 + E]. */
-#define ROW(p)                                                                                                   \
+/* Indexed by [avx2][K][G*8 + A*4 + D*2 + E]. */
+#define ROW(p, K)                                                                                                \
     {                                                                                                            \
-        p##0000, p##0001, p##0010, p##0011, p##0100, p##0101, p##0110, p##0111, p##1000, p##1001, p##1010,      \
-            p##1011, p##1100, p##1101, p##1110, p##1111,                                                         \
+        p##K##0000, p##K##0001, p##K##0010, p##K##0011, p##K##0100, p##K##0101, p##K##0110, p##K##0111,          \
+            p##K##1000, p##K##1001, p##K##1010, p##K##1011, p##K##1100, p##K##1101, p##K##1110, p##K##1111,      \
     }
 #if ISK__SPAN_AVX2
-static const fused_fn fused_table[2][16] = {ROW(fused_), ROW(fused_avx2_)};
+static const fused_fn fused_table[2][2][16] = {{ROW(fused_, 0), ROW(fused_, 1)},
+                                               {ROW(fused_avx2_, 0), ROW(fused_avx2_, 1)}};
 #else
-static const fused_fn fused_table[1][16] = {ROW(fused_)};
+static const fused_fn fused_table[1][2][16] = {{ROW(fused_, 0), ROW(fused_, 1)}};
 #endif
 #undef ROW
 
@@ -349,10 +368,8 @@ int isk_motion_fused_build(int avx2, isk_integrator method, const isk_forces *f,
     if (np == 0) {
         /* No potential acts (or each one's k*Q is 0): the general path then
          * adds P = +0.0 at most, which changes no sum (never -0.0). */
-        const fused_fn loop = fused_table[avx2 && isk__have_avx2()][G * 8 + A * 4 + D * 2 + E];
-        if (start) /* a copy inside these 32 loops bought 0.1 ns in the caches, none at 10^6 (bench_walls) */
-            isk_motion_start_copy(start, n, x, y, vx, vy);
-        acc = loop(n, x, y, vx, vy, m, f->gravity, f->ax, f->ay, f->drag, inv_h, dt);
+        const fused_fn loop = fused_table[avx2 && isk__have_avx2()][start != NULL][G * 8 + A * 4 + D * 2 + E];
+        acc = loop(n, x, y, vx, vy, m, start, f->gravity, f->ax, f->ay, f->drag, inv_h, dt);
     } else {
         p.g = f->gravity;
         p.gm = G ? ~(uint64_t)0 : 0;
