@@ -38,24 +38,6 @@ ifeq ($(origin CC),default)
 CC := gcc
 endif
 
-# gcc's first scheduling pass, off by default on x86: it interleaves
-# independent dependency chains, so a long chain per particle (a potential's
-# sqrt and division, then the integrator) no longer fills the processor's
-# queues before the next particle's work is in them.  Order of instructions
-# only, so the same bits (-ffp-contract=off still holds); bench_walls on
-# Zen 4: a Coulomb potential 2.97 -> 2.68 ns a particle-step.  -fsched-pressure
-# keeps it from spilling registers.  Not a clang flag.
-GCC_IS := $(shell $(CC) --version 2>/dev/null | grep -i 'free software foundation')
-GCC_SCHEDULE := $(if $(GCC_IS),-fschedule-insns -fsched-pressure)
-
-# gcc's loop distribution finds the copies of the start state that the
-# fused motion loops store as they read (src/sim/motion_fused.c) and hoists
-# them out as memcpy calls before the loop: a pass of its own that waits on
-# memory with no arithmetic to overlap.  Without it, "from a remembered
-# start" in bench_walls went from 3.07-3.18 to 1.76-1.80 ns a particle-step
-# at 10^6.  Only that file: elsewhere the memcpy idiom is welcome.
-GCC_NO_COPY_IDIOM := $(if $(GCC_IS),-fno-tree-loop-distribute-patterns)
-
 ifeq ($(SANITIZE),1)
 BUILD   ?= build-san
 SANFLAGS := -fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer
@@ -88,6 +70,26 @@ BUILD   ?= build
 SANFLAGS :=
 OPT     ?= -O3 -g $(GCC_SCHEDULE)
 endif
+
+# gcc's first scheduling pass, off by default on x86: it interleaves
+# independent dependency chains, so a long chain per particle (a potential's
+# sqrt and division, then the integrator) no longer fills the processor's
+# queues before the next particle's work is in them.  Order of instructions
+# only, so the same bits (-ffp-contract=off still holds); bench_walls on
+# Zen 4: a Coulomb potential 2.97 -> 2.68 ns a particle-step.  -fsched-pressure
+# keeps it from spilling registers.  Not a clang flag.
+GCC_IS := $(shell $(CC) --version 2>/dev/null | grep -i 'free software foundation')
+GCC_SCHEDULE := $(if $(GCC_IS),-fschedule-insns -fsched-pressure)
+
+# gcc's loop distribution finds the copies of the start state that the
+# fused motion loops store as they read (src/sim/motion_fused.c) and hoists
+# them out as memcpy calls before the loop: a pass of its own that waits on
+# memory with no arithmetic to overlap.  Without it, "from a remembered
+# start" in bench_walls went from 3.07-3.18 to 1.76-1.80 ns a particle-step
+# at 10^6.  Only that file: elsewhere the memcpy idiom is welcome.
+GCC_NO_COPY_IDIOM := $(if $(GCC_IS),-fno-tree-loop-distribute-patterns)
+# (After the configurations above: SANITIZE=clang sets CC, and OPT, a
+# recursive variable, reads GCC_SCHEDULE when it is used.)
 
 # Warnings are errors in CI (CI=true is set by the CI runner) or on request.
 ifneq ($(CI),)
