@@ -394,7 +394,8 @@ typedef struct impact_walls {
     isk_wall_box box; /* a missing wall at -inf / +inf */
     int x_on, y_on;
     axis_motion mx, my;
-    const double *m;
+    const double *m;  /* the masses for the drag rate k = b / m; NULL without drag (k = 0 for every mass,
+                         and the memo's mass key is 0) */
     double drag, h, c;
     isk_wall_screen_fn screen;
     isk_rest_screen_fn rest_screen;
@@ -421,31 +422,38 @@ static uint64_t bits_of(double v)
     return u;
 }
 
-/* impact_axis for particle i, through the memo when the flight is known
- * from the end state. */
-static void impact_axis_memo(double *pos, double *vel, const axis_motion *am, size_t i, const impact_walls *iw,
-                             double lo, double hi, rest_memo *memo, isk_fl_cache *cache)
+/* The memo's mass key of particle i: its mass's bits, or 0 without drag
+ * (m NULL), where k = 0 for every mass. */
+static uint64_t mass_key(const double *m, size_t i)
 {
-    const int drag = iw->drag > 0.0;
-    if (am->p0) { /* the start state is an input too: nothing to reuse */
-        impact_axis(pos, vel, am, i, drag ? iw->drag / iw->m[i] : 0.0, iw->h, lo, hi, iw->c, cache);
-        return;
-    }
-    const uint64_t p1 = bits_of(*pos), v1 = bits_of(*vel), m = drag ? bits_of(iw->m[i]) : 0;
-    if (memo->valid && p1 == memo->p1 && v1 == memo->v1 && m == memo->m) {
-        *pos = memo->pos;
-        *vel = memo->vel;
-        return;
-    }
-    if (impact_axis(pos, vel, am, i, drag ? iw->drag / iw->m[i] : 0.0, iw->h, lo, hi, iw->c, cache) ==
-        RESTED_AT_ONCE)
-        *memo = (rest_memo){p1, v1, m, *pos, *vel, 1};
+    return m ? bits_of(m[i]) : 0;
 }
 
 /* Whether the memo holds the answer for (p1, v1) of mass key m. */
 static int memo_has(const rest_memo *memo, double p1, double v1, uint64_t m)
 {
     return memo->valid & (bits_of(p1) == memo->p1) & (bits_of(v1) == memo->v1) & (m == memo->m);
+}
+
+/* impact_axis for particle i, through the memo when the flight is known
+ * from the end state. */
+static void impact_axis_memo(double *pos, double *vel, const axis_motion *am, size_t i, const impact_walls *iw,
+                             double lo, double hi, rest_memo *memo, isk_fl_cache *cache)
+{
+    const double k = iw->m ? iw->drag / iw->m[i] : 0.0;
+    if (am->p0) { /* the start state is an input too: nothing to reuse */
+        impact_axis(pos, vel, am, i, k, iw->h, lo, hi, iw->c, cache);
+        return;
+    }
+    const double p1 = *pos, v1 = *vel;
+    const uint64_t m = mass_key(iw->m, i);
+    if (memo_has(memo, p1, v1, m)) {
+        *pos = memo->pos;
+        *vel = memo->vel;
+        return;
+    }
+    if (impact_axis(pos, vel, am, i, k, iw->h, lo, hi, iw->c, cache) == RESTED_AT_ONCE)
+        *memo = (rest_memo){bits_of(p1), bits_of(v1), m, *pos, *vel, 1};
 }
 
 /* Below this many particles of a group left to look at on an axis, the
@@ -502,7 +510,7 @@ static uint32_t screen_rests(size_t o, size_t n, double *pos, double *vel, const
     if (am->p0 || am->a == 0.0 || !(isfinite(am->a) && isfinite(am->delta)) || bit_count(need) < REST_SCREEN_MIN)
         return need;
     const isk_rest_axis ax = {am->a, am->delta, iw->h, lo, hi};
-    const double *m = iw->drag > 0.0 ? iw->m : NULL;
+    const double *m = iw->m;
     double rest[ISK_WALL_SCREEN];
     iw->rest_screen(n, pos + o, vel + o, m ? m + o : NULL, iw->drag, &ax, rest);
     size_t last = SIZE_MAX; /* the last particle rested: its input and answer go to the memo */
@@ -520,7 +528,7 @@ static uint32_t screen_rests(size_t o, size_t n, double *pos, double *vel, const
         need &= ~(1u << j);
     }
     if (last != SIZE_MAX)
-        *memo = (rest_memo){bits_of(last_p1), bits_of(last_v1), m ? bits_of(m[last]) : 0, pos[last], vel[last], 1};
+        *memo = (rest_memo){bits_of(last_p1), bits_of(last_v1), mass_key(m, last), pos[last], vel[last], 1};
     return need;
 }
 
@@ -554,12 +562,12 @@ static uint32_t outside_of(size_t o, size_t n, const double *pos, const double *
     if (!out || !memo->valid)
         return out;
     const size_t first = o + lowest_bit(out), last = o + highest_bit(out);
-    if (!memo_has(memo, pos[first], vel[first], m ? bits_of(m[first]) : 0) &&
-        !memo_has(memo, pos[last], vel[last], m ? bits_of(m[last]) : 0))
+    if (!memo_has(memo, pos[first], vel[first], mass_key(m, first)) &&
+        !memo_has(memo, pos[last], vel[last], mass_key(m, last)))
         return out;
     uint32_t hit = 0;
     for (j = 0; j < n; j++)
-        hit |= (uint32_t)memo_has(memo, pos[o + j], vel[o + j], m ? bits_of(m[o + j]) : 0) << j;
+        hit |= (uint32_t)memo_has(memo, pos[o + j], vel[o + j], mass_key(m, o + j)) << j;
     *hits = hit & out;
     return out & ~hit;
 }
@@ -585,7 +593,7 @@ static void impact_group(size_t o, size_t n, double *restrict x, double *restric
                          double *restrict vy, const impact_walls *iw, rest_memo memo[2])
 {
     const isk_wall_box *w = &iw->box;
-    const double *m = iw->drag > 0.0 ? iw->m : NULL; /* the memo's mass key: 0 without drag */
+    const double *m = iw->m;
     uint32_t need_x = 0, need_y = 0, hit_x = 0, hit_y = 0; /* bit j: particle o + j, n <= ISK_WALL_SCREEN */
     if (iw->x_on)
         need_x = outside_of(o, n, x, vx, m, w->left, w->right, &memo[0], &hit_x);
@@ -647,7 +655,7 @@ void isk_bounds_apply_step(const isk_bounds *b, const isk_step_motion *mo, size_
         (sd & (ISK_SIDE_BOTTOM | ISK_SIDE_TOP)) != 0,
         {start ? mo->x0 : NULL, start ? mo->vx0 : NULL, mo->ax, mo->offset * mo->ax * mo->h},
         {start ? mo->y0 : NULL, start ? mo->vy0 : NULL, mo->ay, mo->offset * mo->ay * mo->h},
-        mo->m,
+        mo->drag > 0.0 ? mo->m : NULL,
         mo->drag > 0.0 ? mo->drag : 0.0,
         mo->h,
         b->restitution,

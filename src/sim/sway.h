@@ -25,7 +25,8 @@
  *     |t| < 2^31 (t the angle in table steps); the entries by gathers.  A
  *     group of four with a larger, infinite or NaN angle runs the portable
  *     code (huge angles take isk_sinlut_reduce_slow there).  libm's sin
- *     stays one particle at a time (no vector sin without -ffast-math).
+ *     stays one particle at a time (gcc offers a vector sin only under the
+ *     value-changing flags the Makefile refuses).
  * The same IEEE operations in the same order either way (no FMA:
  * -ffp-contract=off, and the avx2 target has none).
  *

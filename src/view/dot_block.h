@@ -324,6 +324,18 @@ static inline weights_fn pick_weights(int browser)
     return weights_scalar;
 }
 
+#if ISK__SPAN_SSE2
+/* Source-over on two opaque pixels whose bytes are the low 8 of v, at
+ * coverages wa, wb: div255(c a' + d (255 - a')) in their 16-bit lanes, from
+ * the coverage table (blend_px.h's isk__over_opaque_lanes, two at once). */
+static ISK__INLINE __m128i over2_opaque(__m128i v, const isk__cov_lut *lut, uint32_t wa, uint32_t wb)
+{
+    const __m128i P = _mm_set_epi64x((long long)lut->over_p[wb], (long long)lut->over_p[wa]);
+    const __m128i I = _mm_set_epi64x((long long)lut->over_inv[wb], (long long)lut->over_inv[wa]);
+    return isk__s_div255(_mm_add_epi16(_mm_mullo_epi16(_mm_unpacklo_epi8(v, _mm_setzero_si128()), I), P));
+}
+#endif
+
 /* Two pixels of a row (8 bytes at p) at coverages wa, wb. */
 static ISK__INLINE void px2(uint8_t *p, isk_color col, const isk__cov_lut *lut, uint32_t wa, uint32_t wb,
                             isk_blend mode)
@@ -339,12 +351,8 @@ static ISK__INLINE void px2(uint8_t *p, isk_color col, const isk__cov_lut *lut, 
         return;
     }
     if (mode == ISK_BLEND_OVER && p[3] == 255u && p[7] == 255u) {
-        /* div255(c a' + d (255 - a')) on both pixels' lanes */
-        __m128i P = _mm_set_epi64x((long long)lut->over_p[wb], (long long)lut->over_p[wa]);
-        __m128i I = _mm_set_epi64x((long long)lut->over_inv[wb], (long long)lut->over_inv[wa]);
-        __m128i v = _mm_loadl_epi64((const __m128i *)(const void *)p);
-        __m128i x = _mm_add_epi16(_mm_mullo_epi16(_mm_unpacklo_epi8(v, _mm_setzero_si128()), I), P);
-        _mm_storel_epi64((__m128i *)(void *)p, _mm_packus_epi16(isk__s_div255(x), x));
+        const __m128i x = over2_opaque(_mm_loadl_epi64((const __m128i *)(const void *)p), lut, wa, wb);
+        _mm_storel_epi64((__m128i *)(void *)p, _mm_packus_epi16(x, x));
         return;
     }
 #endif
@@ -363,17 +371,11 @@ static ISK__INLINE void px4(uint8_t *p, size_t stride, isk_color col, const isk_
         /* integer loads and stores: the rows are 4-byte aligned, and a
          * double's (_mm_loadh_pd) would claim 8 */
         uint8_t *q = p + stride;
-        const __m128i v = _mm_unpacklo_epi64(_mm_loadl_epi64((const __m128i *)(const void *)p),
-                                             _mm_loadl_epi64((const __m128i *)(const void *)q));
+        const __m128i vp = _mm_loadl_epi64((const __m128i *)(const void *)p);
+        const __m128i vq = _mm_loadl_epi64((const __m128i *)(const void *)q);
+        const __m128i v = _mm_unpacklo_epi64(vp, vq);
         if ((_mm_movemask_epi8(_mm_cmpeq_epi8(v, _mm_set1_epi8(-1))) & 0x8888) == 0x8888) {
-            const __m128i z = _mm_setzero_si128();
-            const __m128i P0 = _mm_set_epi64x((long long)lut->over_p[w[1]], (long long)lut->over_p[w[0]]);
-            const __m128i I0 = _mm_set_epi64x((long long)lut->over_inv[w[1]], (long long)lut->over_inv[w[0]]);
-            const __m128i P1 = _mm_set_epi64x((long long)lut->over_p[w[3]], (long long)lut->over_p[w[2]]);
-            const __m128i I1 = _mm_set_epi64x((long long)lut->over_inv[w[3]], (long long)lut->over_inv[w[2]]);
-            const __m128i x0 = _mm_add_epi16(_mm_mullo_epi16(_mm_unpacklo_epi8(v, z), I0), P0);
-            const __m128i x1 = _mm_add_epi16(_mm_mullo_epi16(_mm_unpackhi_epi8(v, z), I1), P1);
-            const __m128i r = _mm_packus_epi16(isk__s_div255(x0), isk__s_div255(x1));
+            const __m128i r = _mm_packus_epi16(over2_opaque(vp, lut, w[0], w[1]), over2_opaque(vq, lut, w[2], w[3]));
             _mm_storel_epi64((__m128i *)(void *)p, r);
             _mm_storel_epi64((__m128i *)(void *)q, _mm_unpackhi_epi64(r, r));
             return;
