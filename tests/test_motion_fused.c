@@ -25,7 +25,7 @@
 #include <stdio.h>
 #include <string.h>
 
-#include "raster/span_simd.h" /* isk__have_avx2 */
+#include "raster/span_simd.h" /* isk__simd_level */
 #include "iskra/integrate.h"
 #include "sim/kernels.h"
 #include "sim/motion_fused.h"
@@ -92,27 +92,27 @@ static void compare(isk_integrator method, const isk_forces *f, const state *in,
     /* keep = 1: the start state stored on the way (the remember stage's
      * copy in the same pass), the bits of the input, and the step's bits
      * unchanged by it */
-    for (int run = 0; run < 2 * (1 + isk__have_avx2()); run++) {
-        const int avx2 = run >> 1, keep = run & 1;
+    for (int run = 0; run < 2 * (1 + isk__simd_level(2)); run++) {
+        const int simd = run >> 1, keep = run & 1;
         static state kept;
         memset(&kept, 0x5a, sizeof kept);
         const isk_motion_start start = {kept.x, kept.y, kept.vx, kept.vy};
         b = *in;
         int got = -1;
-        cr_assert_eq(isk_motion_fused_build(avx2, method, f, n, b.x, b.y, b.vx, b.vy, b.m, dt, keep ? &start : NULL,
+        cr_assert_eq(isk_motion_fused_build(simd, method, f, n, b.x, b.y, b.vx, b.vy, b.m, dt, keep ? &start : NULL,
                                             &got),
                      1, "%s: declined", what);
-        cr_assert_eq(got, want, "%s, n %zu, avx2 %d: non-finite flag %d, general path %d", what, n, avx2, got, want);
+        cr_assert_eq(got, want, "%s, n %zu, simd %d: non-finite flag %d, general path %d", what, n, simd, got, want);
         if (keep)
             cr_assert(memcmp(kept.x, in->x, n * sizeof *kept.x) == 0 && memcmp(kept.y, in->y, n * sizeof *kept.y) == 0 &&
                           memcmp(kept.vx, in->vx, n * sizeof *kept.vx) == 0 &&
                           memcmp(kept.vy, in->vy, n * sizeof *kept.vy) == 0,
-                      "%s, n %zu, avx2 %d: the kept start state is not the input", what, n, avx2);
+                      "%s, n %zu, simd %d: the kept start state is not the input", what, n, simd);
         const double *const ga[4] = {a.x, a.y, a.vx, a.vy}, *const fa[4] = {b.x, b.y, b.vx, b.vy};
         for (int c = 0; c < 4; c++)
             for (size_t i = 0; i < n; i++)
-                cr_assert(same(fa[c][i], ga[c][i]), "%s, n %zu, dt %g, avx2 %d: column %d particle %zu: %a, general %a",
-                          what, n, dt, avx2, c, i, fa[c][i], ga[c][i]);
+                cr_assert(same(fa[c][i], ga[c][i]), "%s, n %zu, dt %g, simd %d: column %d particle %zu: %a, general %a",
+                          what, n, dt, simd, c, i, fa[c][i], ga[c][i]);
         for (size_t i = n; i < N; i++) /* nothing beyond the block */
             cr_assert(same(b.x[i], in->x[i]) && same(b.vy[i], in->vy[i]), "%s: wrote past n", what);
     }
@@ -376,8 +376,8 @@ Test(motion_fused, potentials_beyond_a_block)
                                 1.0 / 600);
             want |= isk_k_any_nonfinite2(c, gx + o, gy + o) | isk_k_any_nonfinite2(c, gvx + o, gvy + o);
         }
-        for (int run = 0; run < 2 * (1 + isk__have_avx2()); run++) {
-            const int avx2 = run >> 1, keep = run & 1; /* keep: the fix-up reads the caller's start state */
+        for (int run = 0; run < 2 * (1 + isk__simd_level(2)); run++) {
+            const int simd = run >> 1, keep = run & 1; /* keep: the fix-up reads the caller's start state */
             static double a[4][M], k[4][M];
             memcpy(a[0], x, sizeof x);
             memcpy(a[1], y, sizeof y);
@@ -386,18 +386,18 @@ Test(motion_fused, potentials_beyond_a_block)
             memset(k, 0x5a, sizeof k);
             const isk_motion_start start = {k[0], k[1], k[2], k[3]};
             int got = -1;
-            cr_assert(isk_motion_fused_build(avx2, ISK_INTEGRATE_SEMI_EULER, &f, M, a[0], a[1], a[2], a[3], m,
+            cr_assert(isk_motion_fused_build(simd, ISK_INTEGRATE_SEMI_EULER, &f, M, a[0], a[1], a[2], a[3], m,
                                              1.0 / 600, keep ? &start : NULL, &got));
             if (keep)
                 cr_assert(memcmp(k[0], x, sizeof x) == 0 && memcmp(k[1], y, sizeof y) == 0 &&
                               memcmp(k[2], vx, sizeof vx) == 0 && memcmp(k[3], vy, sizeof vy) == 0,
-                          "round %d avx2 %d: the kept start state is not the input", round, avx2);
-            cr_assert_eq(got, want, "round %d avx2 %d: non-finite flag", round, avx2);
+                          "round %d simd %d: the kept start state is not the input", round, simd);
+            cr_assert_eq(got, want, "round %d simd %d: non-finite flag", round, simd);
             const double *const g[4] = {gx, gy, gvx, gvy};
             for (int col = 0; col < 4; col++)
                 for (size_t i = 0; i < M; i++)
-                    cr_assert(same(a[col][i], g[col][i]), "round %d avx2 %d: column %d particle %zu: %a, general %a",
-                              round, avx2, col, i, a[col][i], g[col][i]);
+                    cr_assert(same(a[col][i], g[col][i]), "round %d simd %d: column %d particle %zu: %a, general %a",
+                              round, simd, col, i, a[col][i], g[col][i]);
         }
     }
 }

@@ -205,6 +205,17 @@ static inline int isk__have_avx512(void)
 static inline int isk__have_avx512(void) { return 0; }
 #endif
 
+/* The widest build a caller may take, at most `most` (0 baseline x86-64,
+ * 1 AVX2, 2 AVX-512) and what this CPU runs: the index of a table with a
+ * row per build (1 + ISK__SPAN_AVX2 + ISK__SPAN_AVX512 rows).  Tests pass
+ * each `most` in turn to compare the builds' bits. */
+static inline int isk__simd_level(int most)
+{
+    if (most >= 2 && isk__have_avx512())
+        return 2;
+    return most >= 1 && isk__have_avx2();
+}
+
 #if ISK__SPAN_VECTOR
 typedef uint8_t isk__u8x8 __attribute__((vector_size(8)));
 typedef uint8_t isk__u8x16 __attribute__((vector_size(16)));

@@ -17,7 +17,7 @@
  * Makefile keeps gcc from hoisting these stores out as memcpy calls
  * (GCC_NO_COPY_IDIOM), which made them a pass of their own again.
  * Returns the or-ed non-finite bits of the four new values. */
-static inline uint64_t fused_loop(size_t n, double *restrict x, double *restrict y, double *restrict vx,
+static ISK__INLINE uint64_t fused_loop(size_t n, double *restrict x, double *restrict y, double *restrict vx,
                                   double *restrict vy, const double *restrict m, double *restrict kx,
                                   double *restrict ky, double *restrict kvx, double *restrict kvy, double g,
                                   double ax, double ay, double b, double inv_h, double dt, const int K,
@@ -66,10 +66,14 @@ typedef uint64_t (*fused_fn)(size_t n, double *restrict x, double *restrict y, d
                              double *restrict vy, const double *restrict m, const isk_motion_start *restrict sv,
                              double g, double ax, double ay, double b, double inv_h, double dt);
 
-/* Each combination twice: baseline x86-64 (SSE2, two lanes) and, chosen at
- * run time, AVX2 (four lanes).  The same IEEE operations in the same order
- * either way (no FMA: -ffp-contract=off, and AVX2 does not include it), so
- * the same bits. */
+/* Each combination in three builds: baseline x86-64 (SSE2, two lanes) and,
+ * chosen at run time, AVX2 (four lanes) and AVX-512 (eight lanes and 32
+ * registers).  The same IEEE operations in the same order in each (no FMA:
+ * -ffp-contract=off holds in target functions too), so the same bits.  The
+ * AVX-512 build pays in the loops with potentials: their sqrt and two
+ * divisions keep many values alive, and the AVX2 build spills a third of
+ * its operands to the stack (Coulomb 2.7 -> 2.1 ns a particle-step on a
+ * Zen 4, bench_walls; docs/vectorization.md). */
 #define FUSED_AS(name, attr, K, G, A, D, E)                                                                     \
     static attr uint64_t name(size_t n, double *restrict x, double *restrict y, double *restrict vx,           \
                               double *restrict vy, const double *restrict m,                                   \
@@ -79,7 +83,12 @@ typedef uint64_t (*fused_fn)(size_t n, double *restrict x, double *restrict y, d
         return fused_loop(n, x, y, vx, vy, m, K ? sv->x : NULL, K ? sv->y : NULL, K ? sv->vx : NULL,            \
                           K ? sv->vy : NULL, g, ax, ay, b, inv_h, dt, K, G, A, D, E);                           \
     }
-#if ISK__SPAN_AVX2
+#if ISK__SPAN_AVX512
+#define FUSED(K, G, A, D, E)                                                                                     \
+    FUSED_AS(fused_##K##G##A##D##E, , K, G, A, D, E)                                                             \
+    FUSED_AS(fused_avx2_##K##G##A##D##E, ISK__AVX2_FN, K, G, A, D, E)                                            \
+    FUSED_AS(fused_avx512_##K##G##A##D##E, ISK__AVX512_FN, K, G, A, D, E)
+#elif ISK__SPAN_AVX2
 #define FUSED(K, G, A, D, E)                                                                                     \
     FUSED_AS(fused_##K##G##A##D##E, , K, G, A, D, E)                                                             \
     FUSED_AS(fused_avx2_##K##G##A##D##E, ISK__AVX2_FN, K, G, A, D, E)
@@ -96,18 +105,21 @@ FUSED_K(0) FUSED_K(1)
 #undef FUSED
 #undef FUSED_AS
 
-/* Indexed by [avx2][K][G*8 + A*4 + D*2 + E]. */
+/* Indexed by [build][K][G*8 + A*4 + D*2 + E], build as isk__simd_level. */
 #define ROW(p, K)                                                                                                \
     {                                                                                                            \
         p##K##0000, p##K##0001, p##K##0010, p##K##0011, p##K##0100, p##K##0101, p##K##0110, p##K##0111,          \
             p##K##1000, p##K##1001, p##K##1010, p##K##1011, p##K##1100, p##K##1101, p##K##1110, p##K##1111,      \
     }
+static const fused_fn fused_table[1 + ISK__SPAN_AVX2 + ISK__SPAN_AVX512][2][16] = {
+    {ROW(fused_, 0), ROW(fused_, 1)},
 #if ISK__SPAN_AVX2
-static const fused_fn fused_table[2][2][16] = {{ROW(fused_, 0), ROW(fused_, 1)},
-                                               {ROW(fused_avx2_, 0), ROW(fused_avx2_, 1)}};
-#else
-static const fused_fn fused_table[1][2][16] = {{ROW(fused_, 0), ROW(fused_, 1)}};
+    {ROW(fused_avx2_, 0), ROW(fused_avx2_, 1)},
 #endif
+#if ISK__SPAN_AVX512
+    {ROW(fused_avx512_, 0), ROW(fused_avx512_, 1)},
+#endif
+};
 #undef ROW
 
 /* ---- with potentials ----------------------------------------------------- */
@@ -142,7 +154,7 @@ typedef struct pot_par {
  * and then o is not the general path's.  FIX = 1 (pot_fixup): the sound
  * rule applied as the general path does: the force replaced by +0.0 and,
  * right after it, the saturated force added (that path's second pass). */
-static inline uint64_t pot_step(const pot_par *restrict p, double x0, double y0, double vx0, double vy0,
+static ISK__INLINE uint64_t pot_step(const pot_par *restrict p, double x0, double y0, double vx0, double vy0,
                                 double mi, double o[4], const int np, const int A, const int D, const int E,
                                 const int FIX)
 {
@@ -210,7 +222,7 @@ static inline uint64_t pot_step(const pot_par *restrict p, double x0, double y0,
  * Euler; of x and y alone for semi-implicit Euler, where x' = x + dt*v' is
  * not finite whenever v' is not (dt*inf is infinite, or NaN for dt = 0),
  * so the two say what the four would. */
-static inline uint64_t pot_loop(size_t n, double *restrict x, double *restrict y, double *restrict vx,
+static ISK__INLINE uint64_t pot_loop(size_t n, double *restrict x, double *restrict y, double *restrict vx,
                                 double *restrict vy, const double *restrict m, const pot_par *restrict p,
                                 double *restrict kx, double *restrict ky, double *restrict kvx,
                                 double *restrict kvy, uint64_t *over, const int NP, const int A, const int D,
@@ -259,7 +271,7 @@ typedef uint64_t (*pot_fn)(size_t n, double *restrict x, double *restrict y, dou
                            double *restrict vy, const double *restrict m, const pot_par *restrict p,
                            const isk_motion_start *restrict sv, uint64_t *over);
 
-/* Each (NP, A, D, E) twice, portable and AVX2, as the loops above. */
+/* Each (NP, A, D, E) in each build, as the loops above. */
 #define POT_AS(name, attr, NP, A, D, E)                                                                          \
     static attr uint64_t name(size_t n, double *restrict x, double *restrict y, double *restrict vx,           \
                               double *restrict vy, const double *restrict m, const pot_par *restrict p,        \
@@ -267,7 +279,11 @@ typedef uint64_t (*pot_fn)(size_t n, double *restrict x, double *restrict y, dou
     {                                                                                                            \
         return pot_loop(n, x, y, vx, vy, m, p, sv->x, sv->y, sv->vx, sv->vy, over, NP, A, D, E);                \
     }
-#if ISK__SPAN_AVX2
+#if ISK__SPAN_AVX512
+#define POT(NP, A, D, E)                                                                                         \
+    POT_AS(pot_##NP##A##D##E, , NP, A, D, E) POT_AS(pot_avx2_##NP##A##D##E, ISK__AVX2_FN, NP, A, D, E)         \
+    POT_AS(pot_avx512_##NP##A##D##E, ISK__AVX512_FN, NP, A, D, E)
+#elif ISK__SPAN_AVX2
 #define POT(NP, A, D, E)                                                                                         \
     POT_AS(pot_##NP##A##D##E, , NP, A, D, E) POT_AS(pot_avx2_##NP##A##D##E, ISK__AVX2_FN, NP, A, D, E)
 #else
@@ -281,13 +297,16 @@ POT_NP(1) POT_NP(2) POT_NP(3) POT_NP(4)
 #undef POT
 #undef POT_AS
 
-/* Indexed by [avx2][NP - 1][A*4 + D*2 + E]. */
+/* Indexed by [build][NP - 1][A*4 + D*2 + E], build as isk__simd_level. */
 #define ROW(p, NP) {p##NP##000, p##NP##001, p##NP##010, p##NP##011, p##NP##100, p##NP##101, p##NP##110, p##NP##111}
 #define ROWS(p) {ROW(p, 1), ROW(p, 2), ROW(p, 3), ROW(p, 4)}
-static const pot_fn pot_table[1 + ISK__SPAN_AVX2][POT_MAX][8] = {
+static const pot_fn pot_table[1 + ISK__SPAN_AVX2 + ISK__SPAN_AVX512][POT_MAX][8] = {
     ROWS(pot_),
 #if ISK__SPAN_AVX2
     ROWS(pot_avx2_),
+#endif
+#if ISK__SPAN_AVX512
+    ROWS(pot_avx512_),
 #endif
 };
 #undef ROWS
@@ -328,10 +347,10 @@ static int pot_collect(const isk_forces *f, pot_par *p)
 
 /* The loop with potentials over n particles, a block at a time (the
  * size of the state kept for the fix-up: the caller's, or one here). */
-static uint64_t pot_run(int avx2, int np, int A, int D, int E, size_t n, double *x, double *y, double *vx,
+static uint64_t pot_run(int simd, int np, int A, int D, int E, size_t n, double *x, double *y, double *vx,
                         double *vy, const double *m, const pot_par *p, const isk_motion_start *start)
 {
-    const pot_fn loop = pot_table[avx2 && isk__have_avx2()][np - 1][A * 4 + D * 2 + E];
+    const pot_fn loop = pot_table[isk__simd_level(simd)][np - 1][A * 4 + D * 2 + E];
     double own[4][ISK_SIM_BLOCK];
     uint64_t acc = 0;
     for (size_t o = 0; o < n; o += ISK_SIM_BLOCK) {
@@ -347,7 +366,7 @@ static uint64_t pot_run(int avx2, int np, int A, int D, int E, size_t n, double 
     return acc;
 }
 
-int isk_motion_fused_build(int avx2, isk_integrator method, const isk_forces *f, size_t n, double *x, double *y,
+int isk_motion_fused_build(int simd, isk_integrator method, const isk_forces *f, size_t n, double *x, double *y,
                            double *vx, double *vy, const double *m, double dt, const isk_motion_start *start,
                            int *nonfinite)
 {
@@ -368,7 +387,7 @@ int isk_motion_fused_build(int avx2, isk_integrator method, const isk_forces *f,
     if (np == 0) {
         /* No potential acts (or each one's k*Q is 0): the general path then
          * adds P = +0.0 at most, which changes no sum (never -0.0). */
-        const fused_fn loop = fused_table[avx2 && isk__have_avx2()][start != NULL][G * 8 + A * 4 + D * 2 + E];
+        const fused_fn loop = fused_table[isk__simd_level(simd)][start != NULL][G * 8 + A * 4 + D * 2 + E];
         acc = loop(n, x, y, vx, vy, m, start, f->gravity, f->ax, f->ay, f->drag, inv_h, dt);
     } else {
         p.g = f->gravity;
@@ -379,7 +398,7 @@ int isk_motion_fused_build(int avx2, isk_integrator method, const isk_forces *f,
         p.inv_h = inv_h;
         p.dt = dt;
         p.sm = f->centre == ISK_FIDELITY_SOUND ? ~(uint64_t)0 : 0;
-        acc = pot_run(avx2, np, A, D, E, n, x, y, vx, vy, m, &p, start);
+        acc = pot_run(simd, np, A, D, E, n, x, y, vx, vy, m, &p, start);
     }
     *nonfinite = (int)(acc >> 63);
     return 1;
@@ -388,5 +407,5 @@ int isk_motion_fused_build(int avx2, isk_integrator method, const isk_forces *f,
 int isk_motion_fused(isk_integrator method, const isk_forces *f, size_t n, double *x, double *y, double *vx,
                      double *vy, const double *m, double dt, const isk_motion_start *start, int *nonfinite)
 {
-    return isk_motion_fused_build(1, method, f, n, x, y, vx, vy, m, dt, start, nonfinite);
+    return isk_motion_fused_build(2, method, f, n, x, y, vx, vy, m, dt, start, nonfinite);
 }

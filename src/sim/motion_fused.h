@@ -84,10 +84,11 @@ static inline void isk_motion_start_copy(const isk_motion_start *s, size_t n, co
 int isk_motion_fused(isk_integrator method, const isk_forces *f, size_t n, double *x, double *y, double *vx,
                      double *vy, const double *m, double dt, const isk_motion_start *start, int *nonfinite);
 
-/* The same with the build chosen: avx2 = 0 the portable loops, 1 the AVX2
- * ones when isk__have_avx2() (raster/span_simd.h), else the portable ones too.
- * isk_motion_fused takes the fastest; the tests compare both. */
-int isk_motion_fused_build(int avx2, isk_integrator method, const isk_forces *f, size_t n, double *x, double *y,
+/* The same with the widest build it may take: simd = 0 the portable
+ * loops, 1 AVX2, 2 AVX-512, each only when the CPU has it
+ * (raster/span_simd.h's isk__simd_level).  isk_motion_fused takes the
+ * widest; the tests compare them all. */
+int isk_motion_fused_build(int simd, isk_integrator method, const isk_forces *f, size_t n, double *x, double *y,
                            double *vx, double *vy, const double *m, double dt, const isk_motion_start *start,
                            int *nonfinite);
 /* 1 when some potential of f (its pick, or all of them) is enabled: the
