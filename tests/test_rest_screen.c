@@ -69,8 +69,15 @@ static int end_state(uint64_t *s, double wall, double a, double delta, double k,
 
 Test(rest_screen, builds_agree_and_their_rests_are_the_walls_own)
 {
-    isk_rest_screen_fn build[2] = {isk_rest_screen_portable, isk_rest_screen_avx2()};
-    const int nb = build[1] ? 2 : 1;
+    static const char *const name[3] = {"portable", "avx2", "avx512"};
+    isk_rest_screen_fn all[3] = {isk_rest_screen_portable, isk_rest_screen_avx2(), isk_rest_screen_avx512()}, build[3];
+    int nb = 0;
+    const char *bname[3];
+    for (int b = 0; b < 3; b++)
+        if (all[b]) {
+            bname[nb] = name[b];
+            build[nb++] = all[b];
+        }
     cr_log_info("builds: %d", nb);
     const double h = 1.0 / 60;
     uint64_t s = 11;
@@ -83,7 +90,7 @@ Test(rest_screen, builds_agree_and_their_rests_are_the_walls_own)
         const double lo = -3.0 + unit(&s), hi = 3.0 + unit(&s);
         const double wall = a < 0.0 ? lo : hi;
         const size_t n = 1 + lcg(&s) % ISK_WALL_SCREEN;
-        double pos[ISK_WALL_SCREEN], vel[ISK_WALL_SCREEN], m[ISK_WALL_SCREEN], rest[2][ISK_WALL_SCREEN];
+        double pos[ISK_WALL_SCREEN], vel[ISK_WALL_SCREEN], m[ISK_WALL_SCREEN], rest[3][ISK_WALL_SCREEN];
         int resting[ISK_WALL_SCREEN];
         for (size_t j = 0; j < n; j++) {
             m[j] = mass(&s);
@@ -93,9 +100,9 @@ Test(rest_screen, builds_agree_and_their_rests_are_the_walls_own)
         for (int b = 0; b < nb; b++)
             build[b](n, pos, vel, drag > 0.0 ? m : NULL, drag, &ax, rest[b]);
         for (size_t j = 0; j < n; j++) {
-            if (nb == 2)
-                cr_assert(!memcmp(&rest[0][j], &rest[1][j], sizeof rest[0][j]),
-                          "round %d, particle %zu: portable %g, avx2 %g", round, j, rest[0][j], rest[1][j]);
+            for (int b = 1; b < nb; b++)
+                cr_assert(!memcmp(&rest[0][j], &rest[b][j], sizeof rest[0][j]),
+                          "round %d, particle %zu: portable %g, %s %g", round, j, rest[0][j], bname[b], rest[b][j]);
             looked++;
             /* a resting particle of an ordinary mass is the case the screen is
              * for (with k = b/m above ~1/(64 h) the Euler step's drag makes it

@@ -127,22 +127,25 @@ Test(wall_screen, one_outlier_flags_its_own_group_only)
     }
 }
 
-Test(wall_screen, avx2_gives_the_portable_flags_for_every_input)
+Test(wall_screen, avx2_and_avx512_give_the_portable_flags_for_every_input)
 {
-    const isk_wall_screen_fn avx2 = isk_wall_screen_avx2();
+    const isk_wall_screen_fn avx2 = isk_wall_screen_avx2(), avx512 = isk_wall_screen_avx512();
     if (!avx2) {
         cr_log_warn("no AVX2 on this CPU or in this build: only the portable screen is checked");
         return;
     }
-    cr_assert_eq(isk_wall_screen_pick(), avx2);
+    cr_assert_eq(isk_wall_screen_pick(), avx512 ? avx512 : avx2, "the pick is the widest build");
+    const isk_wall_screen_fn builds[2] = {avx2, avx512};
     static double x[N], y[N];
-    for (size_t b = 0; b < sizeof BOXES / sizeof BOXES[0]; b++)
-        for (uint64_t seed = 1; seed <= 40; seed++) {
-            fill(seed * 104729 + b, x, y, &BOXES[b], seed % 2);
-            for (size_t n = 0; n <= N; n += n < 40 ? 1 : 37)
-                cr_assert_eq(avx2(n, x, y, &BOXES[b]), isk_wall_screen_portable(n, x, y, &BOXES[b]),
-                             "box %zu seed %llu n %zu", b, (unsigned long long)seed, n);
-            /* every group with its special values */
-            cr_assert_eq(avx2(N, x, y, &BOXES[b]), isk_wall_screen_portable(N, x, y, &BOXES[b]));
-        }
+    for (int k = 0; k < 2 && builds[k]; k++)
+        for (size_t b = 0; b < sizeof BOXES / sizeof BOXES[0]; b++)
+            for (uint64_t seed = 1; seed <= 40; seed++) {
+                fill(seed * 104729 + b, x, y, &BOXES[b], seed % 2);
+                for (size_t n = 0; n <= N; n += n < 40 ? 1 : 37)
+                    cr_assert_eq(builds[k](n, x, y, &BOXES[b]), isk_wall_screen_portable(n, x, y, &BOXES[b]),
+                                 "%s: box %zu seed %llu n %zu", k ? "avx512" : "avx2", b, (unsigned long long)seed,
+                                 n);
+                /* every group with its special values */
+                cr_assert_eq(builds[k](N, x, y, &BOXES[b]), isk_wall_screen_portable(N, x, y, &BOXES[b]));
+            }
 }

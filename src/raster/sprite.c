@@ -241,9 +241,6 @@ static ISK__INLINE void draw_rows(const isk_canvas *c, const isk_sprite *s, cons
                 b = 0;
                 n = S;
             }
-#if defined(__GNUC__)
-
-#endif
             if (src_kind == SRC_INC_ADD && !(n & 3))
                 span_add16(drow + 4 * b, src + 4 * b, 4 * n); /* padded: whole 16-byte steps */
             else if (src_kind == SRC_INC_ADD) /* a row too short to pad (S not a multiple of 4) */

@@ -1,4 +1,4 @@
-/* The walls' resting screen, portable and AVX2 (see rest_screen.h).
+/* The walls' resting screen, portable, AVX2 and AVX-512 (see rest_screen.h).
  *
  * One C loop, written so that gcc vectorizes it: the tests as isless..
  * combined with `&` (no short circuit), no `a ? b : c ? d : e` chain (gcc
@@ -11,7 +11,7 @@
 #include <float.h>
 #include <math.h>
 
-#include "raster/span_simd.h" /* ISK__SPAN_AVX2, ISK__AVX2_FN, isk__have_avx2 */
+#include "raster/span_simd.h" /* ISK__SPAN_AVX2/512, ISK__AVX2_FN/512_FN, isk__have_avx2/512 */
 #include "sim/flight.h"
 
 static const double EPS = 2.220446049250313e-16;
@@ -77,6 +77,26 @@ static ISK__AVX2_FN void screen_avx2(size_t n, const double *pos, const double *
 }
 #endif
 
+#if ISK__SPAN_AVX512
+static ISK__AVX512_FN void screen_avx512(size_t n, const double *pos, const double *vel, const double *m,
+                                         double drag, const isk_rest_axis *ax, double *rest)
+{
+    if (m && drag > 0.0)
+        screen(n, pos, vel, m, drag, ax, rest, 1);
+    else
+        screen(n, pos, vel, m, drag, ax, rest, 0);
+}
+#endif
+
+isk_rest_screen_fn isk_rest_screen_avx512(void)
+{
+#if ISK__SPAN_AVX512
+    if (isk__have_avx512())
+        return screen_avx512;
+#endif
+    return NULL;
+}
+
 isk_rest_screen_fn isk_rest_screen_avx2(void)
 {
 #if ISK__SPAN_AVX2
@@ -88,6 +108,8 @@ isk_rest_screen_fn isk_rest_screen_avx2(void)
 
 isk_rest_screen_fn isk_rest_screen_pick(void)
 {
-    isk_rest_screen_fn f = isk_rest_screen_avx2();
+    isk_rest_screen_fn f = isk_rest_screen_avx512();
+    if (!f)
+        f = isk_rest_screen_avx2();
     return f ? f : isk_rest_screen_portable;
 }

@@ -18,10 +18,10 @@
  * a disabled wall's infinity against an infinite coordinate gives NaN):
  * the bounces leave non-finite particles to the runner either way.
  *
- * Two builds of the same arithmetic: the portable one (compiler-vectorized
+ * Three builds of the same arithmetic: the portable one (compiler-vectorized
  * loops, baseline x86-64 SSE2 or whatever the target has) and, on x86-64
- * CPUs that have it, AVX2, chosen at run time.  They give the same flags
- * for every input (tests/test_wall_screen.c). */
+ * CPUs that have them, AVX2 and AVX-512, chosen at run time.  They give the
+ * same flags for every input (tests/test_wall_screen.c). */
 #ifndef ISKRA_SIM_WALL_SCREEN_H
 #define ISKRA_SIM_WALL_SCREEN_H
 
@@ -40,8 +40,10 @@ enum { ISK_WALL_SCREEN = 16, ISK_WALL_SCREEN_GROUPS = 64, ISK_WALL_SCREEN_SPAN =
 typedef uint64_t (*isk_wall_screen_fn)(size_t n, const double *x, const double *y, const isk_wall_box *w);
 
 uint64_t isk_wall_screen_portable(size_t n, const double *x, const double *y, const isk_wall_box *w);
-/* The AVX2 build, or NULL when this build or this CPU has none. */
+/* The AVX2 and AVX-512 builds, each NULL when this build or this CPU has
+ * none. */
 isk_wall_screen_fn isk_wall_screen_avx2(void);
+isk_wall_screen_fn isk_wall_screen_avx512(void);
 /* The fastest build this CPU runs. */
 isk_wall_screen_fn isk_wall_screen_pick(void);
 
