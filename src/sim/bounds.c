@@ -462,16 +462,14 @@ static void impact_axis_memo(double *pos, double *vel, const axis_motion *am, si
  * sixteen. */
 #define REST_SCREEN_MIN 4
 
-static int bit_count(uint32_t v)
+/* 1 when v has at least k bits set (k small): k - 1 lowest bits cleared
+ * leave some.  Without -mpopcnt (the baseline target) __builtin_popcount
+ * is a call into libgcc. */
+static int has_bits(uint32_t v, int k)
 {
-#if defined(__GNUC__)
-    return __builtin_popcount(v);
-#else
-    int c = 0;
-    for (; v; v &= v - 1)
-        c++;
-    return c;
-#endif
+    for (int i = 1; i < k && v; i++)
+        v &= v - 1;
+    return v != 0;
 }
 
 /* The index of v's lowest set bit (v != 0). */
@@ -507,29 +505,50 @@ static unsigned highest_bit(uint32_t v)
 static uint32_t screen_rests(size_t o, size_t n, double *pos, double *vel, const axis_motion *am,
                              const impact_walls *iw, double lo, double hi, uint32_t need, rest_memo *memo)
 {
-    if (am->p0 || am->a == 0.0 || !(isfinite(am->a) && isfinite(am->delta)) || bit_count(need) < REST_SCREEN_MIN)
+    if (am->p0 || am->a == 0.0 || !(isfinite(am->a) && isfinite(am->delta)) || !has_bits(need, REST_SCREEN_MIN))
         return need;
     const isk_rest_axis ax = {am->a, am->delta, iw->h, lo, hi};
     const double *m = iw->m;
     double rest[ISK_WALL_SCREEN];
     iw->rest_screen(n, pos + o, vel + o, m ? m + o : NULL, iw->drag, &ax, rest);
-    size_t last = SIZE_MAX; /* the last particle rested: its input and answer go to the memo */
-    double last_p1 = 0.0, last_v1 = 0.0;
-    for (uint32_t b = need; b; b &= b - 1) {
-        const unsigned j = lowest_bit(b);
-        if (rest[j] == 0.0)
-            continue;
-        const size_t i = o + j;
-        last = i;
-        last_p1 = pos[i];
-        last_v1 = vel[i];
-        pos[i] = rest[j] == 1.0 ? lo : hi;
-        vel[i] = am->delta;
-        need &= ~(1u << j);
+    uint32_t rested = 0;
+    size_t j = 0;
+#if defined(__SSE2__)
+    const __m128d Z = _mm_setzero_pd();
+    for (; j + 2 <= n; j += 2)
+        rested |= (uint32_t)_mm_movemask_pd(_mm_cmpneq_pd(_mm_loadu_pd(rest + j), Z)) << j;
+#endif
+    for (; j < n; j++)
+        rested |= (uint32_t)(rest[j] != 0.0) << j;
+    rested &= need;
+    if (!rested)
+        return need;
+    /* the last particle rested: its input and answer go to the memo */
+    const size_t last = o + highest_bit(rested);
+    const double last_p1 = pos[last], last_v1 = vel[last];
+    /* the group rewritten two particles at a time, each with its own value
+     * unless it rests: selects, where a branch a particle cost 3 cycles */
+    const double delta = am->delta;
+    double *p = pos + o, *v = vel + o;
+    j = 0;
+#if defined(__SSE2__)
+    static const uint64_t lane[4][2] = {{0, 0}, {~0ull, 0}, {0, ~0ull}, {~0ull, ~0ull}};
+    const __m128d L = _mm_set1_pd(lo), H = _mm_set1_pd(hi), D = _mm_set1_pd(delta), ONE = _mm_set1_pd(1.0);
+    for (; j + 2 <= n; j += 2) {
+        const __m128d M = _mm_loadu_pd((const double *)(const void *)lane[rested >> j & 3u]);
+        const __m128d at_lo = _mm_cmpeq_pd(_mm_loadu_pd(rest + j), ONE);
+        const __m128d wall = _mm_or_pd(_mm_and_pd(at_lo, L), _mm_andnot_pd(at_lo, H));
+        _mm_storeu_pd(p + j, _mm_or_pd(_mm_and_pd(M, wall), _mm_andnot_pd(M, _mm_loadu_pd(p + j))));
+        _mm_storeu_pd(v + j, _mm_or_pd(_mm_and_pd(M, D), _mm_andnot_pd(M, _mm_loadu_pd(v + j))));
     }
-    if (last != SIZE_MAX)
-        *memo = (rest_memo){bits_of(last_p1), bits_of(last_v1), mass_key(m, last), pos[last], vel[last], 1};
-    return need;
+#endif
+    for (; j < n; j++)
+        if (rested >> j & 1u) {
+            p[j] = rest[j] == 1.0 ? lo : hi;
+            v[j] = delta;
+        }
+    *memo = (rest_memo){bits_of(last_p1), bits_of(last_v1), mass_key(m, last), pos[last], vel[last], 1};
+    return need & ~rested;
 }
 
 /* Which particles of [o, o + n) (n <= ISK_WALL_SCREEN) ended outside
