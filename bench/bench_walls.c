@@ -4,7 +4,8 @@
  *
  * The limit of a row: the bytes its stage set must move to and from memory
  * in a particle-step over the best STREAM kernel (copy, scale, add, triad)
- * measured in the same process on arrays whose total footprint is that of
+ * measured in the same process, once in every round among the stage sets
+ * (the best of the rounds), on arrays whose total footprint is that of
  * the store's columns the stage set touches, so both sit in the same level
  * of the memory.  Each column counts once a step: the runner keeps a block
  * of 128 particles in L1 from one stage to the next, so a column two stages
@@ -73,40 +74,61 @@ static const double DT = 1.0 / 600, G = 9.81, DRAG = 0.47;
 
 /* ---- the bandwidth limit ---------------------------------------------------- */
 
-/* Best bytes per ns over copy, scale, add and triad, each on arrays whose
- * total size is `bytes`. */
-static double stream_limit(size_t bytes, int rounds)
+/* The STREAM arrays of one footprint: two or three arrays whose total size
+ * is the footprint's bytes, kept for the whole measurement so that each
+ * round measures them again beside the stage sets (a disturbance of the
+ * shared machine then lowers one round's figure, not every ratio). */
+typedef struct stream {
+    double *a, *b, *c;
+    size_t n2, n3;
+    double best; /* bytes per ns, the best so far */
+} stream;
+
+static int stream_init(stream *st, size_t bytes)
 {
-    size_t n2 = bytes / 16, n3 = bytes / 24; /* two or three arrays */
-    double *a = malloc(n2 * sizeof *a), *b = malloc(n2 * sizeof *b), *c = malloc(n3 * sizeof *c);
-    if (!a || !b || !c) {
-        free(a), free(b), free(c);
-        return 0;
-    }
-    for (size_t i = 0; i < n2; i++)
-        a[i] = 1.0, b[i] = 2.0;
-    for (size_t i = 0; i < n3; i++)
-        c[i] = 0.5;
-    double best = 0;
-    for (int r = 0; r < rounds; r++)
-        for (int k = 0; k < 4; k++) {
-            double t0 = bench_now(), moved;
-            double *restrict A = a, *restrict B = b, *restrict C = c;
-            const double s = 1.0000001;
-            switch (k) {
-            case 0: for (size_t i = 0; i < n2; i++) A[i] = B[i]; moved = 16.0 * (double)n2; break;
-            case 1: for (size_t i = 0; i < n2; i++) A[i] = s * B[i]; moved = 16.0 * (double)n2; break;
-            case 2: for (size_t i = 0; i < n3; i++) A[i] = B[i] + C[i]; moved = 24.0 * (double)n3; break;
-            default: for (size_t i = 0; i < n3; i++) A[i] = B[i] + s * C[i]; moved = 24.0 * (double)n3; break;
-            }
-            double t = bench_now() - t0;
-            if (t > 0 && moved / (t * 1e9) > best)
-                best = moved / (t * 1e9);
+    st->n2 = bytes / 16;
+    st->n3 = bytes / 24;
+    st->a = malloc(st->n2 * sizeof *st->a);
+    st->b = malloc(st->n2 * sizeof *st->b);
+    st->c = malloc(st->n3 * sizeof *st->c);
+    st->best = 0;
+    if (!st->a || !st->b || !st->c)
+        return 1;
+    for (size_t i = 0; i < st->n2; i++)
+        st->a[i] = 1.0, st->b[i] = 2.0;
+    for (size_t i = 0; i < st->n3; i++)
+        st->c[i] = 0.5;
+    return 0;
+}
+
+static void stream_free(stream *st)
+{
+    free(st->a), free(st->b), free(st->c);
+}
+
+/* One round: copy, scale, add and triad twice each, keeping the best (the
+ * first pass finds the arrays evicted by the stage sets, as their first
+ * step, the warm one, finds the store). */
+static void stream_round(stream *st)
+{
+    const size_t n2 = st->n2, n3 = st->n3;
+    for (int pass = 0; pass < 8; pass++) {
+        const int k = pass % 4;
+        double t0 = bench_now(), moved;
+        double *restrict A = st->a, *restrict B = st->b, *restrict C = st->c;
+        const double s = 1.0000001;
+        switch (k) {
+        case 0: for (size_t i = 0; i < n2; i++) A[i] = B[i]; moved = 16.0 * (double)n2; break;
+        case 1: for (size_t i = 0; i < n2; i++) A[i] = s * B[i]; moved = 16.0 * (double)n2; break;
+        case 2: for (size_t i = 0; i < n3; i++) A[i] = B[i] + C[i]; moved = 24.0 * (double)n3; break;
+        default: for (size_t i = 0; i < n3; i++) A[i] = B[i] + s * C[i]; moved = 24.0 * (double)n3; break;
         }
-    volatile double sink = a[n2 / 2] + c[n3 / 3];
+        double t = bench_now() - t0;
+        if (t > 0 && moved / (t * 1e9) > st->best)
+            st->best = moved / (t * 1e9);
+    }
+    volatile double sink = st->a[n2 / 2] + st->c[n3 / 3];
     (void)sink;
-    free(a), free(b), free(c);
-    return best;
 }
 
 /* ---- the variants ------------------------------------------------------------- */
@@ -242,32 +264,19 @@ static int cmp(const void *a, const void *b)
     return (x > y) - (x < y);
 }
 
-/* The first row with row v's footprint (v itself, or one before it). */
-static int first_of_footprint(int v)
+/* The footprints the rows use: FOOT[f], and row v's index in it. */
+enum { NFOOT = 2 };
+static const int FOOT[NFOOT] = {MOTION_FOOTPRINT, FIRE_FOOTPRINT};
+static int foot_of(int v)
 {
-    int u = 0;
-    while (VARIANT[u].footprint != VARIANT[v].footprint)
-        u++;
-    return u;
+    return VARIANT[v].footprint == FOOT[0] ? 0 : 1;
 }
 
-/* The best STREAM bandwidth (bytes per ns) on each footprint the rows use,
- * measured once per footprint: limit[v] for row v. */
-static void row_limits(size_t n, int rounds, double limit[NV])
+static void print_limits(size_t n, const stream st[NFOOT])
 {
-    for (int v = 0; v < NV; v++) {
-        const int u = first_of_footprint(v);
-        limit[v] = u == v ? stream_limit((size_t)VARIANT[v].footprint * n, rounds) : limit[u];
-    }
-}
-
-static void print_limits(size_t n, const double limit[NV])
-{
-    printf("  bandwidth limit: the best STREAM kernel on the columns a stage set touches\n   ");
-    for (int v = 0; v < NV; v++)
-        if (first_of_footprint(v) == v)
-            printf("  %d B a particle (%.1f MB): %.2f GB/s", VARIANT[v].footprint,
-                   (double)VARIANT[v].footprint * (double)n / 1e6, limit[v]);
+    printf("  bandwidth limit: the best STREAM kernel on the columns a stage set touches (each round)\n   ");
+    for (int f = 0; f < NFOOT; f++)
+        printf("  %d B a particle (%.1f MB): %.2f GB/s", FOOT[f], (double)FOOT[f] * (double)n / 1e6, st[f].best);
     printf("\n");
 }
 
@@ -278,12 +287,27 @@ static int measure(size_t n, int steps, int rounds)
         fprintf(stderr, "bench_walls: out of memory at %zu particles\n", n);
         return 1;
     }
-    double limit[NV]; /* bytes per ns */
-    row_limits(n, rounds, limit);
+    stream st[NFOOT];
+    int bad = 0;
+    for (int f = 0; f < NFOOT; f++)
+        bad |= stream_init(&st[f], (size_t)FOOT[f] * n);
+    if (bad) {
+        fprintf(stderr, "bench_walls: out of memory for the STREAM arrays at %zu particles\n", n);
+        for (int f = 0; f < NFOOT; f++)
+            stream_free(&st[f]);
+        free(w.s);
+        isk_particles_free(&w.p);
+        return 1;
+    }
     double t[NV][ROUNDS_MAX];
     for (int r = 0; r < rounds; r++)
-        for (int k = 0; k < NV; k++) {
-            int v = (k + r) % NV; /* a different order every round */
+        for (int k = 0; k <= NV; k++) {
+            if (k == (r % (NV + 1))) { /* the STREAM round, at a different place in every round */
+                for (int f = 0; f < NFOOT; f++)
+                    stream_round(&st[f]);
+                continue;
+            }
+            int v = (k - (k > r % (NV + 1)) + r) % NV; /* a different order every round */
             fill(&w, n, v == V_REST);
             isk_pipeline_run(&w.pl[v], &w.p, 0, w.p.count, DT, w.s); /* warm */
             double t0 = bench_now();
@@ -292,7 +316,10 @@ static int measure(size_t n, int steps, int rounds)
             t[v][r] = (bench_now() - t0) / ((double)steps * (double)n) * 1e9;
         }
     printf("%zu particles, %d steps per timing, fastest (median) of %d rounds\n", n, steps, rounds);
-    print_limits(n, limit);
+    print_limits(n, st);
+    double limit[NV]; /* bytes per ns */
+    for (int v = 0; v < NV; v++)
+        limit[v] = st[foot_of(v)].best;
     printf("  %-34s %5s %10s %21s %7s\n", "stage set", "bytes", "limit", "time (median)", "ratio");
     double best[NV];
     for (int v = 0; v < NV; v++) {
@@ -305,6 +332,8 @@ static int measure(size_t n, int steps, int rounds)
     printf("  impact / end-of-step rule: %.3f   impact / motion alone: %.3f   (goal: every stage set <= 1.5x "
            "its limit)\n\n",
            best[V_IMPACT] / best[V_END], best[V_IMPACT] / best[V_MOTION]);
+    for (int f = 0; f < NFOOT; f++)
+        stream_free(&st[f]);
     free(w.s);
     isk_particles_free(&w.p);
     return 0;
