@@ -1,10 +1,10 @@
 /* The walls' screen (src/sim/wall_screen.h): the portable build flags
- * the groups with a particle outside the box (the only false alarm for
- * finite values: a -0 on a +0 wall), and the AVX2 build (when this CPU has
- * it) gives the same flags as the portable one for
- * every input: inside, outside, on a wall, signed zeros, subnormals,
- * infinities, NaNs of both signs, missing walls at +-inf, and every
- * length of tail. */
+ * exactly the groups with a finite particle outside the box and gives the
+ * walls' own per-particle masks (no false alarm, not even a -0 on a +0
+ * wall), and the AVX2 and AVX-512 builds (when this CPU has them) give the
+ * same flags and masks as the portable one for every input: inside,
+ * outside, on a wall, signed zeros, subnormals, infinities, NaNs of both
+ * signs, missing walls at +-inf, and every length of tail. */
 #include <criterion/criterion.h>
 #include <criterion/logging.h>
 
@@ -16,25 +16,28 @@
 
 enum { N = ISK_WALL_SCREEN_SPAN };
 
-/* The exact rule for finite coordinates, group by group. */
-static uint64_t reference(size_t n, const double *x, const double *y, const isk_wall_box *w)
+/* The walls' rule, particle by particle: the flags, and the masks of every
+ * group the call covers. */
+static uint64_t reference(size_t n, const double *x, const double *y, const isk_wall_box *w, isk_wall_outside *out)
 {
+    memset(out, 0, sizeof *out);
     uint64_t flags = 0;
-    for (size_t i = 0; i < n; i++)
-        if (!(x[i] >= w->left && x[i] <= w->right && y[i] >= w->bottom && y[i] <= w->top))
-            flags |= (uint64_t)1 << (i / ISK_WALL_SCREEN);
+    for (size_t i = 0; i < n; i++) {
+        const size_t g = i / ISK_WALL_SCREEN, j = i % ISK_WALL_SCREEN;
+        if (!(x[i] >= w->left && x[i] <= w->right))
+            out->x[g] |= (uint16_t)(1u << j);
+        if (!(y[i] >= w->bottom && y[i] <= w->top))
+            out->y[g] |= (uint16_t)(1u << j);
+        if (out->x[g] | out->y[g])
+            flags |= (uint64_t)1 << g;
+    }
     return flags;
 }
 
-/* Groups holding a zero: -0 - (+0) is -0, so a -0 on a +0 wall is flagged
- * though it is inside (a false alarm, dismissed by the exact test). */
-static uint64_t zero_groups(size_t n, const double *x, const double *y)
+/* The groups a call covers. */
+static size_t groups_of(size_t n)
 {
-    uint64_t flags = 0;
-    for (size_t i = 0; i < n; i++)
-        if (x[i] == 0.0 || y[i] == 0.0)
-            flags |= (uint64_t)1 << (i / ISK_WALL_SCREEN);
-    return flags;
+    return (n + ISK_WALL_SCREEN - 1) / ISK_WALL_SCREEN;
 }
 
 static uint64_t lcg(uint64_t *s)
@@ -94,40 +97,49 @@ static const isk_wall_box BOXES[] = {
     {-1e300, 1e300, -1e-300, 1e-300},
 };
 
-Test(wall_screen, portable_flags_the_groups_with_a_particle_outside)
+Test(wall_screen, portable_gives_the_walls_own_masks_for_finite_values)
 {
     static double x[N], y[N];
     for (size_t b = 0; b < sizeof BOXES / sizeof BOXES[0]; b++)
         for (uint64_t seed = 1; seed <= 20; seed++) {
             fill(seed * 7919 + b, x, y, &BOXES[b], 1);
             for (size_t n = 0; n <= N; n += n < 40 ? 1 : 37) {
-                const uint64_t got = isk_wall_screen_portable(n, x, y, &BOXES[b]), want = reference(n, x, y, &BOXES[b]);
-                const uint64_t zero = zero_groups(n, x, y);
-                cr_assert_eq(got & want, want, "box %zu seed %llu n %zu: a group outside not flagged", b,
-                             (unsigned long long)seed, n);
-                cr_assert_eq(got & ~zero, want & ~zero, "box %zu seed %llu n %zu: a false alarm", b,
-                             (unsigned long long)seed, n);
+                isk_wall_outside got, want;
+                memset(&got, 0xa5, sizeof got);
+                const uint64_t fg = isk_wall_screen_portable(n, x, y, &BOXES[b], &got);
+                const uint64_t fw = reference(n, x, y, &BOXES[b], &want);
+                cr_assert_eq(fg, fw, "box %zu seed %llu n %zu: flags %llx, want %llx", b, (unsigned long long)seed, n,
+                             (unsigned long long)fg, (unsigned long long)fw);
+                for (size_t g = 0; g < groups_of(n); g++)
+                    cr_assert(got.x[g] == want.x[g] && got.y[g] == want.y[g],
+                              "box %zu seed %llu n %zu group %zu: masks %x %x, want %x %x", b,
+                              (unsigned long long)seed, n, g, got.x[g], got.y[g], want.x[g], want.y[g]);
             }
         }
 }
 
-Test(wall_screen, one_outlier_flags_its_own_group_only)
+Test(wall_screen, one_outlier_flags_its_own_group_and_bit_only)
 {
     static double x[N], y[N];
     const isk_wall_box *w = &BOXES[0];
+    isk_wall_outside out;
     for (size_t i = 0; i < N; i++)
         x[i] = y[i] = 5.0;
-    x[0] = 0.0, y[N - 1] = 10.0; /* on the walls: inside */
-    cr_assert_eq(isk_wall_screen_portable(N, x, y, w), 0);
-    for (size_t i = 0; i < N; i += 13) {
+    x[0] = 0.0, y[N - 1] = 10.0, x[1] = -0.0; /* on the walls: inside (-0 too) */
+    cr_assert_eq(isk_wall_screen_portable(N, x, y, w, &out), 0);
+    for (size_t i = 2; i < N; i += 13) {
         double *axis = i % 2 ? y : x, keep = axis[i];
         axis[i] = i % 4 < 2 ? nextafter(0.0, -1.0) : nextafter(10.0, 11.0);
-        cr_assert_eq(isk_wall_screen_portable(N, x, y, w), (uint64_t)1 << (i / ISK_WALL_SCREEN), "particle %zu", i);
+        const size_t g = i / ISK_WALL_SCREEN;
+        cr_assert_eq(isk_wall_screen_portable(N, x, y, w, &out), (uint64_t)1 << g, "particle %zu", i);
+        const uint16_t bit = (uint16_t)(1u << (i % ISK_WALL_SCREEN));
+        cr_assert(out.x[g] == (i % 2 ? 0 : bit) && out.y[g] == (i % 2 ? bit : 0), "particle %zu: masks %x %x", i,
+                  out.x[g], out.y[g]);
         axis[i] = keep;
     }
 }
 
-Test(wall_screen, avx2_and_avx512_give_the_portable_flags_for_every_input)
+Test(wall_screen, avx2_and_avx512_give_the_portable_flags_and_masks_for_every_input)
 {
     const isk_wall_screen_fn avx2 = isk_wall_screen_avx2(), avx512 = isk_wall_screen_avx512();
     if (!avx2) {
@@ -141,11 +153,17 @@ Test(wall_screen, avx2_and_avx512_give_the_portable_flags_for_every_input)
         for (size_t b = 0; b < sizeof BOXES / sizeof BOXES[0]; b++)
             for (uint64_t seed = 1; seed <= 40; seed++) {
                 fill(seed * 104729 + b, x, y, &BOXES[b], seed % 2);
-                for (size_t n = 0; n <= N; n += n < 40 ? 1 : 37)
-                    cr_assert_eq(builds[k](n, x, y, &BOXES[b]), isk_wall_screen_portable(n, x, y, &BOXES[b]),
+                for (size_t n = 0; n <= N; n += n < 40 ? 1 : 37) {
+                    isk_wall_outside got, want;
+                    memset(&got, 0xa5, sizeof got);
+                    memset(&want, 0x5a, sizeof want);
+                    cr_assert_eq(builds[k](n, x, y, &BOXES[b], &got), isk_wall_screen_portable(n, x, y, &BOXES[b], &want),
                                  "%s: box %zu seed %llu n %zu", k ? "avx512" : "avx2", b, (unsigned long long)seed,
                                  n);
-                /* every group with its special values */
-                cr_assert_eq(builds[k](N, x, y, &BOXES[b]), isk_wall_screen_portable(N, x, y, &BOXES[b]));
+                    for (size_t g = 0; g < groups_of(n); g++)
+                        cr_assert(got.x[g] == want.x[g] && got.y[g] == want.y[g],
+                                  "%s: box %zu seed %llu n %zu group %zu", k ? "avx512" : "avx2", b,
+                                  (unsigned long long)seed, n, g);
+                }
             }
 }

@@ -551,32 +551,20 @@ static uint32_t screen_rests(size_t o, size_t n, double *pos, double *vel, const
     return need & ~rested;
 }
 
-/* Which particles of [o, o + n) (n <= ISK_WALL_SCREEN) ended outside
- * [lo, hi] (bit j: particle o + j), and of those, which the memo answers
- * (*hits).  Small loops, one axis at a time: with both axes and the memo
- * tests in one loop, gcc spilled the masks and reloaded them through the
- * stack at every particle (a settled floor of many masses: 13.5 ns a
- * particle-step then, 9.2 ns now).
+/* Of the particles of [o, o + n) (n <= ISK_WALL_SCREEN) outside on this
+ * axis (bit j of `out`, the screen's exact mask: particle o + j), which
+ * the memo answers (*hits); returns the others.
  * The memo is asked about every particle only when it answers the first or
  * the last one outside: on a floor of many masses it answers no one, and
  * the resting screen does their work anyway.  It is a cache of
- * impact_axis's answers, so whom it is asked about changes only the time. */
-static uint32_t outside_of(size_t o, size_t n, const double *pos, const double *vel, const double *m, double lo,
-                           double hi, const rest_memo *memo, uint32_t *hits)
+ * impact_axis's answers, so whom it is asked about changes only the time.
+ * (Who is outside was found here, two particles at a time with SSE2, after
+ * a loop over both axes with the memo tests had made gcc spill its masks
+ * through the stack at every particle: 13.5 ns a particle-step of a floor
+ * of many masses, then 9.2; the screen's masks took the last 0.6 ns.) */
+static uint32_t split_by_memo(size_t o, size_t n, const double *pos, const double *vel, const double *m,
+                              uint32_t out, const rest_memo *memo, uint32_t *hits)
 {
-    const double *p = pos + o;
-    uint32_t out = 0;
-    size_t j = 0;
-#if defined(__SSE2__)
-    /* not (lo <= p <= hi), NaN included, two at a time */
-    const __m128d L = _mm_set1_pd(lo), H = _mm_set1_pd(hi);
-    for (; j + 2 <= n; j += 2) {
-        const __m128d v = _mm_loadu_pd(p + j);
-        out |= (uint32_t)_mm_movemask_pd(_mm_or_pd(_mm_cmpnge_pd(v, L), _mm_cmpnle_pd(v, H))) << j;
-    }
-#endif
-    for (; j < n; j++)
-        out |= (uint32_t) !(p[j] >= lo && p[j] <= hi) << j;
     *hits = 0;
     if (!out || !memo->valid)
         return out;
@@ -585,7 +573,7 @@ static uint32_t outside_of(size_t o, size_t n, const double *pos, const double *
         !memo_has(memo, pos[last], vel[last], mass_key(m, last)))
         return out;
     uint32_t hit = 0;
-    for (j = 0; j < n; j++)
+    for (size_t j = 0; j < n; j++)
         hit |= (uint32_t)memo_has(memo, pos[o + j], vel[o + j], mass_key(m, o + j)) << j;
     *hits = hit & out;
     return out & ~hit;
@@ -604,20 +592,21 @@ static void apply_memo(size_t o, uint32_t hits, double *pos, double *vel, const 
 /* The particles [o, o + n) of a group the screen flagged: each axis of each
  * particle that ended outside gets its bounces (the axes are independent:
  * x's touch x and vx, y's y and vy, so the order between them is free).
- * A first pass finds who is outside and which of them the memo answers
- * (in a settled scene almost everyone, among a few hoppers), the resting
- * screen takes the rest when there are many (many masses), and impact_axis
- * whatever is left, one by one. */
+ * The screen's masks (out_x, out_y) say who is outside; the memo answers
+ * those it can (in a settled scene almost everyone, among a few hoppers),
+ * the resting screen takes the rest when there are many (many masses), and
+ * impact_axis whatever is left, one by one. */
 static void impact_group(size_t o, size_t n, double *restrict x, double *restrict y, double *restrict vx,
-                         double *restrict vy, const impact_walls *iw, rest_memo memo[2])
+                         double *restrict vy, const impact_walls *iw, rest_memo memo[2], uint32_t out_x,
+                         uint32_t out_y)
 {
     const isk_wall_box *w = &iw->box;
     const double *m = iw->m;
     uint32_t need_x = 0, need_y = 0, hit_x = 0, hit_y = 0; /* bit j: particle o + j, n <= ISK_WALL_SCREEN */
     if (iw->x_on)
-        need_x = outside_of(o, n, x, vx, m, w->left, w->right, &memo[0], &hit_x);
+        need_x = split_by_memo(o, n, x, vx, m, out_x, &memo[0], &hit_x);
     if (iw->y_on)
-        need_y = outside_of(o, n, y, vy, m, w->bottom, w->top, &memo[1], &hit_y);
+        need_y = split_by_memo(o, n, y, vy, m, out_y, &memo[1], &hit_y);
     apply_memo(o, hit_x, x, vx, &memo[0]);
     apply_memo(o, hit_y, y, vy, &memo[1]);
     need_x = screen_rests(o, n, x, vx, &iw->mx, iw, w->left, w->right, need_x, &memo[0]);
@@ -642,11 +631,13 @@ static void impact_block(size_t n, double *restrict x, double *restrict y, doubl
     rest_memo memo[2] = {{0}}; /* per axis */
     for (size_t o = 0; o < n; o += ISK_WALL_SCREEN_SPAN) {
         const size_t span = n - o < ISK_WALL_SCREEN_SPAN ? n - o : ISK_WALL_SCREEN_SPAN;
-        const uint64_t flags = iw->screen(span, x + o, y + o, &iw->box);
+        isk_wall_outside out;
+        const uint64_t flags = iw->screen(span, x + o, y + o, &iw->box, &out);
         for (size_t g = 0; g < ISK_WALL_SCREEN_GROUPS && (flags >> g) != 0; g++)
             if (flags >> g & 1u) {
                 const size_t first = o + g * ISK_WALL_SCREEN, rest = n - first;
-                impact_group(first, rest < ISK_WALL_SCREEN ? rest : ISK_WALL_SCREEN, x, y, vx, vy, iw, memo);
+                impact_group(first, rest < ISK_WALL_SCREEN ? rest : ISK_WALL_SCREEN, x, y, vx, vy, iw, memo,
+                             out.x[g], out.y[g]);
             }
     }
 }
