@@ -264,20 +264,43 @@ static int cmp(const void *a, const void *b)
     return (x > y) - (x < y);
 }
 
-/* The footprints the rows use: FOOT[f], and row v's index in it. */
-enum { NFOOT = 2 };
-static const int FOOT[NFOOT] = {MOTION_FOOTPRINT, FIRE_FOOTPRINT};
-static int foot_of(int v)
+/* The first row with row v's footprint (v itself, or one before it): the
+ * one whose STREAM arrays measure that footprint's limit. */
+static int first_of_footprint(int v)
 {
-    return VARIANT[v].footprint == FOOT[0] ? 0 : 1;
+    int u = 0;
+    while (VARIANT[u].footprint != VARIANT[v].footprint)
+        u++;
+    return u;
 }
 
-static void print_limits(size_t n, const stream st[NFOOT])
+static void print_limits(size_t n, const stream st[NV])
 {
     printf("  bandwidth limit: the best STREAM kernel on the columns a stage set touches (each round)\n   ");
-    for (int f = 0; f < NFOOT; f++)
-        printf("  %d B a particle (%.1f MB): %.2f GB/s", FOOT[f], (double)FOOT[f] * (double)n / 1e6, st[f].best);
+    for (int v = 0; v < NV; v++)
+        if (first_of_footprint(v) == v)
+            printf("  %d B a particle (%.1f MB): %.2f GB/s", VARIANT[v].footprint,
+                   (double)VARIANT[v].footprint * (double)n / 1e6, st[v].best);
     printf("\n");
+}
+
+/* The STREAM arrays of the footprints (st[v] for the first row of each,
+ * see first_of_footprint; the others stay empty, so freeing them is a
+ * no-op).  Returns 1 when memory runs out. */
+static int streams_init(stream st[NV], size_t n)
+{
+    int bad = 0;
+    memset(st, 0, NV * sizeof *st);
+    for (int v = 0; v < NV; v++)
+        if (first_of_footprint(v) == v)
+            bad |= stream_init(&st[v], (size_t)VARIANT[v].footprint * n);
+    return bad;
+}
+
+static void streams_free(stream st[NV])
+{
+    for (int v = 0; v < NV; v++)
+        stream_free(&st[v]);
 }
 
 static int measure(size_t n, int steps, int rounds)
@@ -287,27 +310,25 @@ static int measure(size_t n, int steps, int rounds)
         fprintf(stderr, "bench_walls: out of memory at %zu particles\n", n);
         return 1;
     }
-    stream st[NFOOT];
-    int bad = 0;
-    for (int f = 0; f < NFOOT; f++)
-        bad |= stream_init(&st[f], (size_t)FOOT[f] * n);
-    if (bad) {
+    stream st[NV];
+    if (streams_init(st, n)) {
         fprintf(stderr, "bench_walls: out of memory for the STREAM arrays at %zu particles\n", n);
-        for (int f = 0; f < NFOOT; f++)
-            stream_free(&st[f]);
+        streams_free(st);
         free(w.s);
         isk_particles_free(&w.p);
         return 1;
     }
     double t[NV][ROUNDS_MAX];
-    for (int r = 0; r < rounds; r++)
+    for (int r = 0; r < rounds; r++) {
+        const int slot = r % (NV + 1); /* the STREAM round's place among the rows, a different one every round */
         for (int k = 0; k <= NV; k++) {
-            if (k == (r % (NV + 1))) { /* the STREAM round, at a different place in every round */
-                for (int f = 0; f < NFOOT; f++)
-                    stream_round(&st[f]);
+            if (k == slot) {
+                for (int v = 0; v < NV; v++)
+                    if (first_of_footprint(v) == v)
+                        stream_round(&st[v]);
                 continue;
             }
-            int v = (k - (k > r % (NV + 1)) + r) % NV; /* a different order every round */
+            const int v = (k - (k > slot) + r) % NV; /* the rows in a different order every round */
             fill(&w, n, v == V_REST);
             isk_pipeline_run(&w.pl[v], &w.p, 0, w.p.count, DT, w.s); /* warm */
             double t0 = bench_now();
@@ -315,11 +336,12 @@ static int measure(size_t n, int steps, int rounds)
                 isk_pipeline_run(&w.pl[v], &w.p, 0, w.p.count, DT, w.s);
             t[v][r] = (bench_now() - t0) / ((double)steps * (double)n) * 1e9;
         }
+    }
     printf("%zu particles, %d steps per timing, fastest (median) of %d rounds\n", n, steps, rounds);
     print_limits(n, st);
     double limit[NV]; /* bytes per ns */
     for (int v = 0; v < NV; v++)
-        limit[v] = st[foot_of(v)].best;
+        limit[v] = st[first_of_footprint(v)].best;
     printf("  %-34s %5s %10s %21s %7s\n", "stage set", "bytes", "limit", "time (median)", "ratio");
     double best[NV];
     for (int v = 0; v < NV; v++) {
@@ -332,8 +354,7 @@ static int measure(size_t n, int steps, int rounds)
     printf("  impact / end-of-step rule: %.3f   impact / motion alone: %.3f   (goal: every stage set <= 1.5x "
            "its limit)\n\n",
            best[V_IMPACT] / best[V_END], best[V_IMPACT] / best[V_MOTION]);
-    for (int f = 0; f < NFOOT; f++)
-        stream_free(&st[f]);
+    streams_free(st);
     free(w.s);
     isk_particles_free(&w.p);
     return 0;

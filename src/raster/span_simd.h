@@ -205,6 +205,20 @@ static inline int isk__have_avx512(void)
 static inline int isk__have_avx512(void) { return 0; }
 #endif
 
+/* Its arguments where this build has AVX2 (AVX-512), else nothing: one
+ * list of a kernel's builds, and one table row per build, without an #if
+ * for each combination of the two. */
+#if ISK__SPAN_AVX2
+#define ISK__IF_AVX2(...) __VA_ARGS__
+#else
+#define ISK__IF_AVX2(...)
+#endif
+#if ISK__SPAN_AVX512
+#define ISK__IF_AVX512(...) __VA_ARGS__
+#else
+#define ISK__IF_AVX512(...)
+#endif
+
 /* The widest build a caller may take, at most `most` (0 baseline x86-64,
  * 1 AVX2, 2 AVX-512) and what this CPU runs: the index of a table with a
  * row per build (1 + ISK__SPAN_AVX2 + ISK__SPAN_AVX512 rows).  Tests pass

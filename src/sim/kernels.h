@@ -21,6 +21,16 @@
 #include "iskra/forces.h"
 #include "iskra/integrate.h"
 
+/* These rules must give the thesis's bits (the trajectories and the
+ * reference images are compared exactly): no reassociation, no reciprocal
+ * for a division, NaN and infinity kept.  gcc and clang announce the flags
+ * that give those up by macros, whatever build turns them on (the
+ * Makefile's flags, -Ofast, a project that compiles these sources with its
+ * own); the Makefile refuses the few that leave no trace (VALUE_CHANGING_FLAGS). */
+#if defined(__FAST_MATH__) || (defined(__FINITE_MATH_ONLY__) && __FINITE_MATH_ONLY__)
+#error "iskra needs IEEE arithmetic: build it without fast math or finite-math-only (its results are compared bit for bit)"
+#endif
+
 /* MaterijalnaTocka.pomakni(dt, F): semi-implicit (symplectic) Euler exactly as
  * the thesis code: c = dt/m first, v += c*F per component (product first,
  * dodajCputaV), then r += dt*v with the NEW velocity. */

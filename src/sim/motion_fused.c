@@ -18,10 +18,10 @@
  * (GCC_NO_COPY_IDIOM), which made them a pass of their own again.
  * Returns the or-ed non-finite bits of the four new values. */
 static ISK__INLINE uint64_t fused_loop(size_t n, double *restrict x, double *restrict y, double *restrict vx,
-                                  double *restrict vy, const double *restrict m, double *restrict kx,
-                                  double *restrict ky, double *restrict kvx, double *restrict kvy, double g,
-                                  double ax, double ay, double b, double inv_h, double dt, const int K,
-                                  const int G, const int A, const int D, const int E)
+                                       double *restrict vy, const double *restrict m, double *restrict kx,
+                                       double *restrict ky, double *restrict kvx, double *restrict kvy, double g,
+                                       double ax, double ay, double b, double inv_h, double dt, const int K,
+                                       const int G, const int A, const int D, const int E)
 {
     uint64_t acc = 0;
     for (size_t i = 0; i < n; i++) {
@@ -83,18 +83,10 @@ typedef uint64_t (*fused_fn)(size_t n, double *restrict x, double *restrict y, d
         return fused_loop(n, x, y, vx, vy, m, K ? sv->x : NULL, K ? sv->y : NULL, K ? sv->vx : NULL,            \
                           K ? sv->vy : NULL, g, ax, ay, b, inv_h, dt, K, G, A, D, E);                           \
     }
-#if ISK__SPAN_AVX512
 #define FUSED(K, G, A, D, E)                                                                                     \
     FUSED_AS(fused_##K##G##A##D##E, , K, G, A, D, E)                                                             \
-    FUSED_AS(fused_avx2_##K##G##A##D##E, ISK__AVX2_FN, K, G, A, D, E)                                            \
-    FUSED_AS(fused_avx512_##K##G##A##D##E, ISK__AVX512_FN, K, G, A, D, E)
-#elif ISK__SPAN_AVX2
-#define FUSED(K, G, A, D, E)                                                                                     \
-    FUSED_AS(fused_##K##G##A##D##E, , K, G, A, D, E)                                                             \
-    FUSED_AS(fused_avx2_##K##G##A##D##E, ISK__AVX2_FN, K, G, A, D, E)
-#else
-#define FUSED(K, G, A, D, E) FUSED_AS(fused_##K##G##A##D##E, , K, G, A, D, E)
-#endif
+    ISK__IF_AVX2(FUSED_AS(fused_avx2_##K##G##A##D##E, ISK__AVX2_FN, K, G, A, D, E))                              \
+    ISK__IF_AVX512(FUSED_AS(fused_avx512_##K##G##A##D##E, ISK__AVX512_FN, K, G, A, D, E))
 #define FUSED_K(K)                                                                                               \
     FUSED(K, 0, 0, 0, 0) FUSED(K, 0, 0, 0, 1) FUSED(K, 0, 0, 1, 0) FUSED(K, 0, 0, 1, 1)                         \
     FUSED(K, 0, 1, 0, 0) FUSED(K, 0, 1, 0, 1) FUSED(K, 0, 1, 1, 0) FUSED(K, 0, 1, 1, 1)                         \
@@ -113,12 +105,8 @@ FUSED_K(0) FUSED_K(1)
     }
 static const fused_fn fused_table[1 + ISK__SPAN_AVX2 + ISK__SPAN_AVX512][2][16] = {
     {ROW(fused_, 0), ROW(fused_, 1)},
-#if ISK__SPAN_AVX2
-    {ROW(fused_avx2_, 0), ROW(fused_avx2_, 1)},
-#endif
-#if ISK__SPAN_AVX512
-    {ROW(fused_avx512_, 0), ROW(fused_avx512_, 1)},
-#endif
+    ISK__IF_AVX2({ROW(fused_avx2_, 0), ROW(fused_avx2_, 1)},)
+    ISK__IF_AVX512({ROW(fused_avx512_, 0), ROW(fused_avx512_, 1)},)
 };
 #undef ROW
 
@@ -155,8 +143,8 @@ typedef struct pot_par {
  * rule applied as the general path does: the force replaced by +0.0 and,
  * right after it, the saturated force added (that path's second pass). */
 static ISK__INLINE uint64_t pot_step(const pot_par *restrict p, double x0, double y0, double vx0, double vy0,
-                                double mi, double o[4], const int np, const int A, const int D, const int E,
-                                const int FIX)
+                                     double mi, double o[4], const int np, const int A, const int D, const int E,
+                                     const int FIX)
 {
     double ux = vx0, uy = vy0;
     double fx = 0.0, fy = isk_k_keep(isk_k_gravity_fy(mi, p->g), p->gm);
@@ -223,10 +211,10 @@ static ISK__INLINE uint64_t pot_step(const pot_par *restrict p, double x0, doubl
  * not finite whenever v' is not (dt*inf is infinite, or NaN for dt = 0),
  * so the two say what the four would. */
 static ISK__INLINE uint64_t pot_loop(size_t n, double *restrict x, double *restrict y, double *restrict vx,
-                                double *restrict vy, const double *restrict m, const pot_par *restrict p,
-                                double *restrict kx, double *restrict ky, double *restrict kvx,
-                                double *restrict kvy, uint64_t *over, const int NP, const int A, const int D,
-                                const int E)
+                                     double *restrict vy, const double *restrict m, const pot_par *restrict p,
+                                     double *restrict kx, double *restrict ky, double *restrict kvx,
+                                     double *restrict kvy, uint64_t *over, const int NP, const int A, const int D,
+                                     const int E)
 {
     uint64_t acc = 0, ov = 0;
     for (size_t i = 0; i < n; i++) {
@@ -279,16 +267,10 @@ typedef uint64_t (*pot_fn)(size_t n, double *restrict x, double *restrict y, dou
     {                                                                                                            \
         return pot_loop(n, x, y, vx, vy, m, p, sv->x, sv->y, sv->vx, sv->vy, over, NP, A, D, E);                \
     }
-#if ISK__SPAN_AVX512
 #define POT(NP, A, D, E)                                                                                         \
-    POT_AS(pot_##NP##A##D##E, , NP, A, D, E) POT_AS(pot_avx2_##NP##A##D##E, ISK__AVX2_FN, NP, A, D, E)         \
-    POT_AS(pot_avx512_##NP##A##D##E, ISK__AVX512_FN, NP, A, D, E)
-#elif ISK__SPAN_AVX2
-#define POT(NP, A, D, E)                                                                                         \
-    POT_AS(pot_##NP##A##D##E, , NP, A, D, E) POT_AS(pot_avx2_##NP##A##D##E, ISK__AVX2_FN, NP, A, D, E)
-#else
-#define POT(NP, A, D, E) POT_AS(pot_##NP##A##D##E, , NP, A, D, E)
-#endif
+    POT_AS(pot_##NP##A##D##E, , NP, A, D, E)                                                                     \
+    ISK__IF_AVX2(POT_AS(pot_avx2_##NP##A##D##E, ISK__AVX2_FN, NP, A, D, E))                                      \
+    ISK__IF_AVX512(POT_AS(pot_avx512_##NP##A##D##E, ISK__AVX512_FN, NP, A, D, E))
 #define POT_NP(NP)                                                                                               \
     POT(NP, 0, 0, 0) POT(NP, 0, 0, 1) POT(NP, 0, 1, 0) POT(NP, 0, 1, 1)                                         \
     POT(NP, 1, 0, 0) POT(NP, 1, 0, 1) POT(NP, 1, 1, 0) POT(NP, 1, 1, 1)
@@ -302,12 +284,8 @@ POT_NP(1) POT_NP(2) POT_NP(3) POT_NP(4)
 #define ROWS(p) {ROW(p, 1), ROW(p, 2), ROW(p, 3), ROW(p, 4)}
 static const pot_fn pot_table[1 + ISK__SPAN_AVX2 + ISK__SPAN_AVX512][POT_MAX][8] = {
     ROWS(pot_),
-#if ISK__SPAN_AVX2
-    ROWS(pot_avx2_),
-#endif
-#if ISK__SPAN_AVX512
-    ROWS(pot_avx512_),
-#endif
+    ISK__IF_AVX2(ROWS(pot_avx2_),)
+    ISK__IF_AVX512(ROWS(pot_avx512_),)
 };
 #undef ROWS
 #undef ROW

@@ -58,8 +58,8 @@ static inline isk_motion_start isk_motion_start_of(isk_scratch *s)
 }
 
 /* The start state kept by a copy of its own, where no fused loop stores it
- * on the way (the remember stage, a motion stage on the general path, the
- * loops without potentials).  One loop over the four columns rather than
+ * on the way (the remember stage, a motion stage on the general path).
+ * One loop over the four columns rather than
  * four memcpy: the copy is the first to read a block from memory, and four
  * streams at once keep four misses in flight where a memcpy a column waits
  * for one column's lines after another's

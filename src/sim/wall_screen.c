@@ -71,22 +71,62 @@ static inline uint64_t screen_tail(size_t n, size_t o, size_t g, const double *x
     return group_portable(n - o < ISK_WALL_SCREEN ? n - o : ISK_WALL_SCREEN, o, g, x, y, w, out);
 }
 
+/* The whole groups of [0, n), one loop for every build: a group FIRES's
+ * cheap test passes over gets zero masks, one it flags gets MASK's exact
+ * ones, STEP particles at a time (lo, hi: the axis's walls in the build's
+ * form); the tail group after them by the portable code.  A macro, not a
+ * function taking the two tests: each build's are compiled for its own
+ * target and inlined into its loop. */
+#define SCREEN_GROUPS(FIRES, MASK, STEP, L, R, B, T)                                                          \
+    uint64_t flags = 0;                                                                                        \
+    size_t g = 0, o = 0;                                                                                       \
+    for (; o + ISK_WALL_SCREEN <= n && g < ISK_WALL_SCREEN_GROUPS; o += ISK_WALL_SCREEN, g++) {              \
+        unsigned mx = 0, my = 0;                                                                               \
+        if (FIRES(x + o, y + o, L, R, B, T))                                                                   \
+            for (unsigned k = 0; k < ISK_WALL_SCREEN; k += (STEP)) {                                           \
+                mx |= MASK(x + o + k, L, R) << k;                                                              \
+                my |= MASK(y + o + k, B, T) << k;                                                              \
+            }                                                                                                  \
+        flags |= store_group(out, g, mx, my);                                                                  \
+    }                                                                                                          \
+    return flags | screen_tail(n, o, g, x, y, w, out)
+
+/* The portable tests on a whole group. */
+static inline int fires16(const double *x, const double *y, double l, double r, double b, double t)
+{
+    const isk_wall_box w = {l, r, b, t};
+    return any_outside(ISK_WALL_SCREEN, x, y, &w);
+}
+static inline unsigned mask16(const double *p, double lo, double hi)
+{
+    return outside_mask(ISK_WALL_SCREEN, p, lo, hi);
+}
+
 uint64_t isk_wall_screen_portable(size_t n, const double *x, const double *y, const isk_wall_box *w,
                                   isk_wall_outside *out)
 {
-    uint64_t flags = 0;
-    size_t g = 0, o = 0;
-    for (; o + ISK_WALL_SCREEN <= n && g < ISK_WALL_SCREEN_GROUPS; o += ISK_WALL_SCREEN, g++)
-        flags |= group_portable(ISK_WALL_SCREEN, o, g, x, y, w, out);
-    return flags | screen_tail(n, o, g, x, y, w, out);
+    SCREEN_GROUPS(fires16, mask16, ISK_WALL_SCREEN, w->left, w->right, w->bottom, w->top);
 }
 
 #if ISK__SPAN_AVX2
 /* The sign test four lanes at a time (IEEE subtraction: the portable
- * loop's results, NaN signs included), then for a group it flags the
- * masks by not-greater-or-equal and not-less-or-equal compares (unordered:
- * true for a NaN), read with movemask. */
-static ISK__AVX2_FN unsigned out4(const double *p, __m256d lo, __m256d hi)
+ * loop's results, NaN signs included), and the masks by
+ * not-greater-or-equal and not-less-or-equal compares (unordered: true
+ * for a NaN), read with movemask. */
+static ISK__INLINE ISK__AVX2_FN int fires4(const double *x, const double *y, __m256d L, __m256d R, __m256d B,
+                                           __m256d T)
+{
+    __m256d acc = _mm256_setzero_pd();
+    for (unsigned k = 0; k < ISK_WALL_SCREEN; k += 4) {
+        const __m256d X = _mm256_loadu_pd(x + k), Y = _mm256_loadu_pd(y + k);
+        const __m256d ox = _mm256_or_pd(_mm256_sub_pd(X, L), _mm256_sub_pd(R, X));
+        const __m256d oy = _mm256_or_pd(_mm256_sub_pd(Y, B), _mm256_sub_pd(T, Y));
+        acc = _mm256_or_pd(acc, _mm256_or_pd(ox, oy));
+    }
+    return _mm256_movemask_pd(acc) != 0;
+}
+
+static ISK__INLINE ISK__AVX2_FN unsigned out4(const double *p, __m256d lo, __m256d hi)
 {
     const __m256d v = _mm256_loadu_pd(p);
     return (unsigned)_mm256_movemask_pd(
@@ -98,32 +138,27 @@ static ISK__AVX2_FN uint64_t screen_avx2(size_t n, const double *x, const double
 {
     const __m256d L = _mm256_set1_pd(w->left), R = _mm256_set1_pd(w->right);
     const __m256d B = _mm256_set1_pd(w->bottom), T = _mm256_set1_pd(w->top);
-    uint64_t flags = 0;
-    size_t g = 0, o = 0;
-    for (; o + ISK_WALL_SCREEN <= n && g < ISK_WALL_SCREEN_GROUPS; o += ISK_WALL_SCREEN, g++) {
-        __m256d acc = _mm256_setzero_pd();
-        for (size_t k = o; k < o + ISK_WALL_SCREEN; k += 4) {
-            const __m256d X = _mm256_loadu_pd(x + k), Y = _mm256_loadu_pd(y + k);
-            const __m256d ox = _mm256_or_pd(_mm256_sub_pd(X, L), _mm256_sub_pd(R, X));
-            const __m256d oy = _mm256_or_pd(_mm256_sub_pd(Y, B), _mm256_sub_pd(T, Y));
-            acc = _mm256_or_pd(acc, _mm256_or_pd(ox, oy));
-        }
-        unsigned mx = 0, my = 0;
-        if (_mm256_movemask_pd(acc))
-            for (unsigned k = 0; k < ISK_WALL_SCREEN; k += 4) {
-                mx |= out4(x + o + k, L, R) << k;
-                my |= out4(y + o + k, B, T) << k;
-            }
-        flags |= store_group(out, g, mx, my);
-    }
-    return flags | screen_tail(n, o, g, x, y, w, out);
+    SCREEN_GROUPS(fires4, out4, 4, L, R, B, T);
 }
 #endif
 
 #if ISK__SPAN_AVX512
 /* The same eight lanes at a time, the signs and the compares read into
  * mask registers. */
-static ISK__AVX512_FN unsigned out8(const double *p, __m512d lo, __m512d hi)
+static ISK__INLINE ISK__AVX512_FN int fires8(const double *x, const double *y, __m512d L, __m512d R, __m512d B,
+                                             __m512d T)
+{
+    __m512d acc = _mm512_setzero_pd();
+    for (unsigned k = 0; k < ISK_WALL_SCREEN; k += 8) {
+        const __m512d X = _mm512_loadu_pd(x + k), Y = _mm512_loadu_pd(y + k);
+        const __m512d ox = _mm512_or_pd(_mm512_sub_pd(X, L), _mm512_sub_pd(R, X));
+        const __m512d oy = _mm512_or_pd(_mm512_sub_pd(Y, B), _mm512_sub_pd(T, Y));
+        acc = _mm512_or_pd(acc, _mm512_or_pd(ox, oy));
+    }
+    return _mm512_movepi64_mask(_mm512_castpd_si512(acc)) != 0;
+}
+
+static ISK__INLINE ISK__AVX512_FN unsigned out8(const double *p, __m512d lo, __m512d hi)
 {
     const __m512d v = _mm512_loadu_pd(p);
     return (unsigned)(_mm512_cmp_pd_mask(v, lo, _CMP_NGE_UQ) | _mm512_cmp_pd_mask(v, hi, _CMP_NLE_UQ));
@@ -134,27 +169,10 @@ static ISK__AVX512_FN uint64_t screen_avx512(size_t n, const double *x, const do
 {
     const __m512d L = _mm512_set1_pd(w->left), R = _mm512_set1_pd(w->right);
     const __m512d B = _mm512_set1_pd(w->bottom), T = _mm512_set1_pd(w->top);
-    uint64_t flags = 0;
-    size_t g = 0, o = 0;
-    for (; o + ISK_WALL_SCREEN <= n && g < ISK_WALL_SCREEN_GROUPS; o += ISK_WALL_SCREEN, g++) {
-        __m512d acc = _mm512_setzero_pd();
-        for (size_t k = o; k < o + ISK_WALL_SCREEN; k += 8) {
-            const __m512d X = _mm512_loadu_pd(x + k), Y = _mm512_loadu_pd(y + k);
-            const __m512d ox = _mm512_or_pd(_mm512_sub_pd(X, L), _mm512_sub_pd(R, X));
-            const __m512d oy = _mm512_or_pd(_mm512_sub_pd(Y, B), _mm512_sub_pd(T, Y));
-            acc = _mm512_or_pd(acc, _mm512_or_pd(ox, oy));
-        }
-        unsigned mx = 0, my = 0;
-        if (_mm512_movepi64_mask(_mm512_castpd_si512(acc)))
-            for (unsigned k = 0; k < ISK_WALL_SCREEN; k += 8) {
-                mx |= out8(x + o + k, L, R) << k;
-                my |= out8(y + o + k, B, T) << k;
-            }
-        flags |= store_group(out, g, mx, my);
-    }
-    return flags | screen_tail(n, o, g, x, y, w, out);
+    SCREEN_GROUPS(fires8, out8, 8, L, R, B, T);
 }
 #endif
+#undef SCREEN_GROUPS
 
 isk_wall_screen_fn isk_wall_screen_avx512(void)
 {
