@@ -30,9 +30,9 @@
 #include <string.h>
 
 #include "bench_util.h"
-#include "iskra/effect.h"
+#include "bench_layer.h"
 
-enum { W = 800, H = 600 };
+enum { W = BENCH_LAYER_W, H = BENCH_LAYER_H };
 
 typedef struct row {
     const char *what;
@@ -64,46 +64,6 @@ static double resident_bytes(void)
         fclose(f);
     }
     return (double)rss * 4096.0;
-}
-
-static isk_status make(isk_effect **fx, const row *r, isk_error *err)
-{
-    isk_effect_def d;
-    isk_effect_def_init(&d);
-    d.width = W;
-    d.height = H;
-    d.xmin = -4;
-    d.xmax = 4;
-    d.ymin = -3;
-    d.ymax = 3;
-    d.dt = 1.0 / 60.0;
-    d.clear = 0; /* the bench clears, so the clear is timed on its own */
-    isk_bounds_reflect(&d.bounds, -4, 4, -3, 3, ISK_SIDE_ALL, 0.0,
-                       0.8);
-    int g = isk_effect_def_add_force(&d, "gravity", ISK_FORCE_GRAVITY);
-    int b = isk_effect_def_add_force(&d, "drag", ISK_FORCE_DRAG);
-    isk_emitter_def *e = isk_effect_def_add_emitter(&d, "layer");
-    isk_status s = ISK_ERR_NOMEM;
-    if (g >= 0 && b >= 0 && e) {
-        d.forces[g].g = 9.81;
-        d.forces[b].b = 0.3;
-        e->forces[0] = g;
-        e->forces[1] = b;
-        e->nforces = 2;
-        e->source = ISK_SOURCE_LAYER;
-        e->rect[0] = -3.9;
-        e->rect[1] = 3.9;
-        e->rect[2] = -2.9;
-        e->rect[3] = 2.9;
-        e->count = e->limit = e->capacity = r->n;
-        e->draw = r->draw;
-        e->color = isk_rgba(255, 200, 120, 160);
-        e->blend = r->draw == ISK_DRAW_SPRITE ? ISK_BLEND_ADD : ISK_BLEND_OVER;
-        e->size = 8.0 * (8.0 / W); /* 8 px sprites */
-        s = isk_effect_create(fx, &d, err);
-    }
-    isk_effect_def_free(&d);
-    return s;
 }
 
 /* ---- the control: cores the machine gives ---------------------------------- */
@@ -178,7 +138,7 @@ int main(int argc, char **argv)
         isk_effect *fx[MAXT] = {NULL};
         isk_error err = {0};
         const double rss0 = resident_bytes();
-        if (make(&fx[0], r, &err) != ISK_OK) {
+        if (bench_layer_effect(&fx[0], r->n, r->draw, &err) != ISK_OK) {
             printf("%-8s %9zu  skipped: %s\n", r->what, r->n, err.message);
             continue;
         }
@@ -186,7 +146,7 @@ int main(int argc, char **argv)
             nt = thread_counts(isk_effect_threads(fx[0]), tc);
         int copies = 1;
         for (int t = 1; t < nt && copies == t; t++)
-            if (make(&fx[t], r, &err) == ISK_OK)
+            if (bench_layer_effect(&fx[t], r->n, r->draw, &err) == ISK_OK)
                 copies++;
         if (copies < nt)
             printf("%-8s %9zu  only %d of %d copies fit: %s\n", r->what, r->n, copies, nt, err.message);
