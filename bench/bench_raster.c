@@ -120,10 +120,18 @@ static void run_dots_browser(ctx *k, const variant *vr)
     isk_draw_dots_browser(&k->c, &k->v, NDOTS, k->wx, k->wy, DOT_COL, (isk_blend)vr->blend);
 }
 
+/* isk_draw_pixel as a program calls it: the macro, inlined into the loop */
 static void run_pixel(ctx *k, const variant *vr)
 {
     for (long i = 0; i < NPIX; i++)
         isk_draw_pixel(&k->c, k->px[i], k->py[i], DOT_COL, (isk_blend)vr->blend);
+}
+
+/* the same through the function (a call a pixel, the mode chosen in it) */
+static void run_pixel_call(ctx *k, const variant *vr)
+{
+    for (long i = 0; i < NPIX; i++)
+        (isk_draw_pixel)(&k->c, k->px[i], k->py[i], DOT_COL, (isk_blend)vr->blend);
 }
 
 static void run_disc(ctx *k, const variant *vr)
@@ -211,6 +219,8 @@ int main(int argc, char **argv)
     for (int b = ISK_BLEND_OVER; b <= ISK_BLEND_ADD; b++)
         ADD_VARIANT(run_pixel, NPIX, b, 0, 0, 0, "pixel, %s (isk_draw_pixel)", mode_name(b));
     for (int b = ISK_BLEND_OVER; b <= ISK_BLEND_ADD; b++)
+        ADD_VARIANT(run_pixel_call, NPIX, b, 0, 0, 0, "pixel, %s ((isk_draw_pixel) called)", mode_name(b));
+    for (int b = ISK_BLEND_OVER; b <= ISK_BLEND_ADD; b++)
         ADD_VARIANT(run_pixels, NPIX, b, 0, 0, 0, "pixels, %s (isk_draw_pixels batch)", mode_name(b));
     for (int r = 0; r < 3; r++)
         ADD_VARIANT(run_disc, NDISC, ISK_BLEND_OVER, r, 0, 0, "AA disc r=%g, over", DISC_R[r]);
@@ -241,7 +251,7 @@ int main(int argc, char **argv)
     printf("%-44s %10s %10s %10s\n", "primitive", "ns/item", "(median)", "x floor");
     for (int i = 0; i < nv; i++) {
         /* dots against the dot floor, pixels against the pixel floor */
-        double fl = i >= pixel_floor && i < pixel_floor + 5 ? vs[pixel_floor].ns : vs[0].ns;
+        double fl = i >= pixel_floor && i < pixel_floor + 7 ? vs[pixel_floor].ns : vs[0].ns;
         printf("%-44s %10.2f %10.2f %10.2f\n", vs[i].name, vs[i].ns, vs[i].med, vs[i].ns / fl);
     }
     for (int kind = 0; kind < 3; kind++)

@@ -12,6 +12,7 @@
 #include <criterion/criterion.h>
 
 #include <float.h>
+#include <limits.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -171,6 +172,47 @@ Test(raster_fast, dot_weights_equal_reference)
 }
 
 /* ---- primitives against the reference ---------------------------------- */
+
+/* isk_draw_pixel is a macro over an inline copy (iskra/draw.h): inlined
+ * into a loop, its colour's part is computed once and its mode chosen
+ * once, so the loop's code is not the function's.  Both must give the
+ * same bytes: the macro in loops of one colour and one mode (the shape a
+ * compiler rearranges most) against the function through a pointer, on
+ * every style of destination, with invalid modes and coordinates off the
+ * canvas (and a NULL canvas, which both ignore). */
+static void pixels_by_macro(isk_canvas *c, const int *xs, const int *ys, int n, isk_color col, isk_blend mode)
+{
+    for (int i = 0; i < n; i++)
+        isk_draw_pixel(c, xs[i], ys[i], col, mode);
+}
+
+Test(raster_fast, pixel_macro_equals_function)
+{
+    void (*fn)(isk_canvas *, int, int, isk_color, isk_blend) = isk_draw_pixel; /* the function, by name */
+    const isk_blend modes[5] = {ISK_BLEND_REPLACE, ISK_BLEND_OVER, ISK_BLEND_ADD, (isk_blend)3, (isk_blend)-1};
+    isk_rng r;
+    isk_rng_seed(&r, 11);
+    int xs[64], ys[64];
+    for (int n = 0; n < 400; n++) {
+        int w = rnd_size(&r), h = rnd_size(&r);
+        pair p = make_pair(&r, w, h);
+        for (int k = 0; k < 6; k++) {
+            const isk_color col = rnd_color(&r);
+            const isk_blend mode = modes[isk_rng_below(&r, 5)];
+            const int m = 1 + (int)isk_rng_below(&r, 64);
+            for (int i = 0; i < m; i++) {
+                xs[i] = (int)isk_rng_below(&r, (uint32_t)w + 4) - 2;
+                ys[i] = isk_rng_below(&r, 9) ? (int)isk_rng_below(&r, (uint32_t)h + 4) - 2 : INT_MIN;
+            }
+            pixels_by_macro(&p.c[0], xs, ys, m, col, mode);
+            for (int i = 0; i < m; i++)
+                (k % 2 ? fn : (isk_draw_pixel))(&p.c[1], xs[i], ys[i], col, mode);
+        }
+        isk_draw_pixel(NULL, 0, 0, ISK_WHITE, ISK_BLEND_OVER);
+        fn(NULL, 0, 0, ISK_WHITE, ISK_BLEND_OVER);
+        check_pair(&p, "isk_draw_pixel macro / function", n);
+    }
+}
 
 Test(raster_fast, pixel_and_rect_equal_reference)
 {

@@ -227,9 +227,12 @@ static void draw(canvases *k, const items *it, const prim *p, int lib, const uin
         }
         break;
     case P_PIXEL:
-        if (lib == LIB_ISKRA || lib == LIB_ISKRA_CALL) {
+        if (lib == LIB_ISKRA) { /* the macro of iskra/draw.h, inlined into this loop */
             for (int i = 0; i < n; i++)
                 isk_draw_pixel(ik, it->px[i], it->py[i], ic, mode);
+        } else if (lib == LIB_ISKRA_CALL) { /* the function, a call a pixel */
+            for (int i = 0; i < n; i++)
+                (isk_draw_pixel)(ik, it->px[i], it->py[i], ic, mode);
         } else if (lib == LIB_CAIRO) {
             for (int i = 0; i < n; i++) {
                 cairo_rectangle(cr, it->px[i], it->py[i], 1, 1);

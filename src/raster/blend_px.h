@@ -1,8 +1,10 @@
 /* src/raster/blend_px.h — the blend rules of iskra/blend.h as inline kernels,
  * one per mode, for the primitives' inner loops.
  *
- * The rule lives here once: isk_blend_pixel / isk_blend_pixel_cov
- * (blend.c) are thin wrappers, and every primitive calls these with the
+ * The rule for one pixel, isk__px, is in iskra/blend_inline.h (public, so
+ * that isk_draw_pixel can be inlined into its callers' loops); the
+ * coverage and table forms built on it are here.  isk_blend_pixel /
+ * isk_blend_pixel_cov (blend.c) are thin wrappers, and every primitive calls these with the
  * mode as a compile-time constant, so the switch below folds away and each
  * primitive gets one loop per mode (AGG's "blender as template argument",
  * in C).  The usual shape is
@@ -20,15 +22,10 @@
 #include <string.h>
 
 #include "iskra/blend.h"
+#include "iskra/blend_inline.h" /* ISK__INLINE, isk__px: the rule for one pixel */
 
 #if defined(__SSE2__)
 #include <emmintrin.h>
-#endif
-
-#if defined(__GNUC__)
-#define ISK__INLINE inline __attribute__((always_inline))
-#else
-#define ISK__INLINE inline
 #endif
 
 /* Calls FN(args..., mode) with mode as a literal constant for each valid
@@ -49,107 +46,6 @@
             break;                                          \
         }                                                   \
     } while (0)
-
-static ISK__INLINE uint8_t isk__sat_add(uint32_t a, uint32_t b)
-{
-    uint32_t s = a + b;
-    return (uint8_t)(s > 255u ? 255u : s);
-}
-
-/* Source-over onto a translucent pixel: the division by the output alpha.
- * Out of line (and marked cold) so the common opaque path stays short. */
-#if defined(__GNUC__)
-__attribute__((noinline, cold, unused))
-#endif
-static void isk__px_over_general(uint8_t *d, isk_color s, uint32_t sa, uint32_t da, uint32_t inv)
-{
-    uint32_t wd = da * inv;              /* destination weight, scaled by 255 */
-    uint32_t A = 255u * sa + wd;         /* 255 * output alpha */
-    uint32_t half = A / 2u;
-    d[0] = (uint8_t)((255u * s.r * sa + d[0] * wd + half) / A);
-    d[1] = (uint8_t)((255u * s.g * sa + d[1] * wd + half) / A);
-    d[2] = (uint8_t)((255u * s.b * sa + d[2] * wd + half) / A);
-    d[3] = (uint8_t)isk_div255(A);
-}
-
-/* Source-over on straight colour (iskra/blend.h). */
-static ISK__INLINE void isk__px_over(uint8_t *d, isk_color s)
-{
-    uint32_t sa = s.a;
-    uint32_t da = d[3];
-    uint32_t inv = 255u - sa;
-    if (da == 255u) {
-        /* Opaque destination: the common case, no division by A, and no
-         * test of the source alpha either: the rule gives sa 0 and 255
-         * their bytes (div255(255 d) = d, div255(255 c) = c). */
-#if defined(__SSE2__)
-        /* the three channels (and alpha: div255(255 sa + 255 inv) = 255) in
-         * one set of 16-bit lanes; div255(x) = high half of (x + 128) * 257 */
-        uint32_t c32, d32; /* x86 is little-endian: memory order r g b a is the value's byte order */
-        memcpy(&c32, &s, 4);
-        c32 |= 0xFF000000u;
-        memcpy(&d32, d, 4);
-        const __m128i z = _mm_setzero_si128();
-        __m128i C = _mm_unpacklo_epi8(_mm_cvtsi32_si128((int)c32), z);
-        __m128i D = _mm_unpacklo_epi8(_mm_cvtsi32_si128((int)d32), z);
-        __m128i x = _mm_add_epi16(_mm_mullo_epi16(C, _mm_set1_epi16((short)sa)),
-                                  _mm_mullo_epi16(D, _mm_set1_epi16((short)inv)));
-        x = _mm_mulhi_epu16(_mm_add_epi16(x, _mm_set1_epi16(128)), _mm_set1_epi16(257));
-        d32 = (uint32_t)_mm_cvtsi128_si32(_mm_packus_epi16(x, x));
-        memcpy(d, &d32, 4);
-#else
-        d[0] = (uint8_t)isk_div255(s.r * sa + d[0] * inv);
-        d[1] = (uint8_t)isk_div255(s.g * sa + d[1] * inv);
-        d[2] = (uint8_t)isk_div255(s.b * sa + d[2] * inv);
-#endif
-        return;
-    }
-    if (sa - 1u >= 254u) { /* sa 0 or 255 (one test) */
-        if (sa)
-            memcpy(d, &s, 4); /* r g b 255 */
-        return;
-    }
-    isk__px_over_general(d, s, sa, da, inv);
-}
-
-static ISK__INLINE void isk__px_add(uint8_t *d, isk_color s)
-{
-#if defined(__SSE2__)
-    /* increments div255(c a) in 16-bit lanes (alpha: div255(255 a) = a),
-     * then saturating byte adds */
-    uint32_t c32, d32; /* x86 is little-endian: memory order r g b a is the value's byte order */
-    memcpy(&c32, &s, 4);
-    c32 |= 0xFF000000u;
-    memcpy(&d32, d, 4);
-    __m128i C = _mm_unpacklo_epi8(_mm_cvtsi32_si128((int)c32), _mm_setzero_si128());
-    __m128i x = _mm_mullo_epi16(C, _mm_set1_epi16((short)s.a));
-    x = _mm_mulhi_epu16(_mm_add_epi16(x, _mm_set1_epi16(128)), _mm_set1_epi16(257));
-    d32 = (uint32_t)_mm_cvtsi128_si32(_mm_adds_epu8(_mm_cvtsi32_si128((int)d32), _mm_packus_epi16(x, x)));
-    memcpy(d, &d32, 4);
-#else
-    d[0] = isk__sat_add(d[0], isk_div255((uint32_t)s.r * s.a));
-    d[1] = isk__sat_add(d[1], isk_div255((uint32_t)s.g * s.a));
-    d[2] = isk__sat_add(d[2], isk_div255((uint32_t)s.b * s.a));
-    d[3] = isk__sat_add(d[3], s.a);
-#endif
-}
-
-static ISK__INLINE void isk__px(uint8_t *d, isk_color s, isk_blend mode)
-{
-    switch (mode) {
-    case ISK_BLEND_REPLACE:
-        d[0] = s.r; d[1] = s.g; d[2] = s.b; d[3] = s.a;
-        break;
-    case ISK_BLEND_OVER:
-        isk__px_over(d, s);
-        break;
-    case ISK_BLEND_ADD:
-        isk__px_add(d, s);
-        break;
-    default: /* not a mode: nothing is drawn */
-        break;
-    }
-}
 
 /* The source alpha scaled by coverage first; coverage 0 leaves the pixel
  * alone in every mode. */

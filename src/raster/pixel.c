@@ -1,18 +1,18 @@
 /* Integer-coordinate primitives: a single pixel and a filled rectangle.
  * All bounds arithmetic is 64-bit so INT_MIN/INT_MAX arguments are safe.
- * The blend mode is chosen once per call (raster/blend_px.h). */
+ * The blend mode is chosen once per call (raster/blend_px.h); the pixel's
+ * own code is inline in iskra/draw.h. */
 #include "iskra/draw.h"
 
 #include "raster/blend_px.h"
 #include "raster/clip.h"
 
-void isk_draw_pixel(isk_canvas *c, int x, int y, isk_color color, isk_blend mode)
+/* The function behind the macro of iskra/draw.h (the name in parentheses
+ * is not expanded): for function pointers, other languages' bindings and
+ * callers that ask for it. */
+void (isk_draw_pixel)(isk_canvas *c, int x, int y, isk_color color, isk_blend mode)
 {
-    /* Unsigned compares reject negative coordinates too; an empty or
-     * pixel-less canvas fails them as well. */
-    if (!c || !c->pixels || (unsigned)x >= (unsigned)c->width || (unsigned)y >= (unsigned)c->height)
-        return;
-    isk__px(isk_canvas_at(c, x, y), color, mode);
+    isk__draw_pixel_inline(c, x, y, color, mode);
 }
 
 static ISK__INLINE void fill_rows(isk_canvas *c, int x0, int y0, int x1, int y1, isk_color color,
