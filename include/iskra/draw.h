@@ -90,10 +90,10 @@ void isk_draw_pixel(isk_canvas *c, int x, int y, isk_color color, isk_blend mode
 
 /* isk_draw_pixel is also a macro over this inline copy of it (C11 7.1.4
  * lets a library function be one): a loop of calls then compiles to a loop
- * of blends, with no call and the mode chosen once (2.7 ns a pixel over,
- * 1.8 add, against 3.5 and 2.8 through the call: bench_raster).  The bytes
- * are the same either way; (isk_draw_pixel)(...) or &isk_draw_pixel reach
- * the function. */
+ * of blends, with no call and the colour's part of the rule computed once
+ * (bench_raster: 2.8 ns a pixel over, 2.5-2.7 add, against 3.9 and 3.1
+ * through the call).  The bytes are the same either way;
+ * (isk_draw_pixel)(...) or &isk_draw_pixel reach the function. */
 static ISK__INLINE void isk__draw_pixel_inline(isk_canvas *c, int x, int y, isk_color color, isk_blend mode)
 {
     /* First, unconditionally, and used by two modes: a loop of one colour
