@@ -580,6 +580,15 @@ static ISK__INLINE ISK__AVX2_FN void isk__span_over_inc_avx2(uint8_t *d, const u
     isk__over_inc_row_k(d, inc, n, col, &k);
 }
 
+/* `rows` whole rows of n pixels (n a constant where it can be). */
+static ISK__INLINE ISK__AVX2_FN void isk__rows_over_whole_avx2(uint8_t *drow, size_t stride, const uint8_t *inc,
+                                                               size_t inc_stride, int rows, int n, isk_color col,
+                                                               const isk__over_k *k)
+{
+    for (int j = 0; j < rows; j++, drow += stride, inc += inc_stride)
+        isk__over_inc_row_k(drow, inc, n, col, k);
+}
+
 /* Every row of a baked sprite wholly on the canvas, over: row j is at
  * drow + j * stride, its increments at inc + j * inc_stride, its span
  * [span[2j], span[2j+1]), or the whole row [0, S) when span is NULL (a'
@@ -591,8 +600,16 @@ static ISK__INLINE ISK__AVX2_FN void isk__rows_over_inc_avx2(uint8_t *drow, size
     isk__over_k k;
     isk__over_k_init(&k, col);
     if (!span) {
-        for (int j = 0; j < S; j++, drow += stride, inc += inc_stride)
-            isk__over_inc_row_k(drow, inc, S, col, &k);
+        /* the small sizes with a constant row length: a row's steps
+         * unrolled, no length test in it */
+        if (S == 8)
+            isk__rows_over_whole_avx2(drow, stride, inc, inc_stride, 8, 8, col, &k);
+        else if (S == 12)
+            isk__rows_over_whole_avx2(drow, stride, inc, inc_stride, 12, 12, col, &k);
+        else if (S == 16)
+            isk__rows_over_whole_avx2(drow, stride, inc, inc_stride, 16, 16, col, &k);
+        else
+            isk__rows_over_whole_avx2(drow, stride, inc, inc_stride, S, S, col, &k);
         return;
     }
     for (int j = 0; j < S; j++, drow += stride, inc += inc_stride) {
