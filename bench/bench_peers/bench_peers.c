@@ -188,6 +188,22 @@ static pixman_color_t pm_color(const uint8_t c[4])
 }
 
 /* Draws items [0, it->n) of primitive p with library lib in colour col. */
+/* iskra's pixel loops, each in a function of its own as AGG's is
+ * (peer_agg_pixels, in another file), not inlined into draw() either:
+ * isk_draw_pixel as a program writes it (the macro of
+ * iskra/draw.h, inlined here), and the function called for each pixel. */
+__attribute__((noinline)) static void iskra_pixels(isk_canvas *c, int n, const int *x, const int *y, isk_color col, isk_blend mode)
+{
+    for (int i = 0; i < n; i++)
+        isk_draw_pixel(c, x[i], y[i], col, mode);
+}
+
+__attribute__((noinline)) static void iskra_pixels_called(isk_canvas *c, int n, const int *x, const int *y, isk_color col, isk_blend mode)
+{
+    for (int i = 0; i < n; i++)
+        (isk_draw_pixel)(c, x[i], y[i], col, mode);
+}
+
 static void draw(canvases *k, const items *it, const prim *p, int lib, const uint8_t col[4])
 {
     const int n = it->n, white = col == WHITE;
@@ -227,12 +243,10 @@ static void draw(canvases *k, const items *it, const prim *p, int lib, const uin
         }
         break;
     case P_PIXEL:
-        if (lib == LIB_ISKRA) { /* the macro of iskra/draw.h, inlined into this loop */
-            for (int i = 0; i < n; i++)
-                isk_draw_pixel(ik, it->px[i], it->py[i], ic, mode);
-        } else if (lib == LIB_ISKRA_CALL) { /* the function, a call a pixel */
-            for (int i = 0; i < n; i++)
-                (isk_draw_pixel)(ik, it->px[i], it->py[i], ic, mode);
+        if (lib == LIB_ISKRA) {
+            iskra_pixels(ik, n, it->px, it->py, ic, mode);
+        } else if (lib == LIB_ISKRA_CALL) {
+            iskra_pixels_called(ik, n, it->px, it->py, ic, mode);
         } else if (lib == LIB_CAIRO) {
             for (int i = 0; i < n; i++) {
                 cairo_rectangle(cr, it->px[i], it->py[i], 1, 1);
