@@ -75,6 +75,28 @@ static int time_effect(isk_effect *fx, isk_canvas *c, int all, frame_times out[2
     return 0;
 }
 
+/* fn on `threads` shares at once, share k's argument at args + k * size:
+ * share 0 on the caller, the others on threads of their own (a share
+ * whose thread cannot start runs on the caller).  Milliseconds of wall
+ * time. */
+static double run_shares_ms(void *(*fn)(void *), void *args, size_t size, int threads)
+{
+    pthread_t t[MAXT];
+    int started[MAXT] = {0};
+    char *a = args;
+    const double t0 = bench_now();
+    for (int k = 1; k < threads; k++) {
+        started[k] = pthread_create(&t[k], NULL, fn, a + (size_t)k * size) == 0;
+        if (!started[k])
+            fn(a + (size_t)k * size);
+    }
+    fn(a);
+    for (int k = 1; k < threads; k++)
+        if (started[k])
+            pthread_join(t[k], NULL);
+    return 1e3 * (bench_now() - t0);
+}
+
 /* ---- 2. the draw in store order and in row order ----------------------- */
 
 typedef struct band_arg {
@@ -101,23 +123,13 @@ static double draw_ms(isk_canvas *c, const isk_view *v, size_t n, const double *
                       const size_t *start)
 {
     band_arg a[MAXT];
-    pthread_t t[MAXT];
-    int started[MAXT] = {0};
-    isk_canvas_fill(c, isk_rgba(0, 0, 0, 255));
-    double t0 = bench_now();
     for (int k = 0; k < threads; k++) {
         const int r0 = H * k / threads, r1 = H * (k + 1) / threads;
         const size_t i0 = start ? start[r0] : 0, i1 = start ? start[r1 + 1] : n;
         a[k] = (band_arg){c, v, i1 - i0, x + i0, y + i0, r0, r1};
-        started[k] = k > 0 && pthread_create(&t[k], NULL, draw_band, &a[k]) == 0;
-        if (k > 0 && !started[k])
-            draw_band(&a[k]);
     }
-    draw_band(&a[0]);
-    for (int k = 1; k < threads; k++)
-        if (started[k])
-            pthread_join(t[k], NULL);
-    return 1e3 * (bench_now() - t0);
+    isk_canvas_fill(c, isk_rgba(0, 0, 0, 255));
+    return run_shares_ms(draw_band, a, sizeof *a, threads);
 }
 
 /* x, y copied in the order of their screen rows, index order within a row
@@ -197,21 +209,10 @@ static void *step_share(void *p)
 static double step_ms(void *col[4], int is_float, size_t n, int threads)
 {
     step_arg a[MAXT];
-    pthread_t t[MAXT];
-    int started[MAXT] = {0};
-    double t0 = bench_now();
-    for (int k = 0; k < threads; k++) {
+    for (int k = 0; k < threads; k++)
         a[k] = (step_arg){is_float, n * (size_t)k / (size_t)threads, n * (size_t)(k + 1) / (size_t)threads,
                           {col[0], col[1], col[2], col[3]}};
-        started[k] = k > 0 && pthread_create(&t[k], NULL, step_share, &a[k]) == 0;
-        if (k > 0 && !started[k])
-            step_share(&a[k]);
-    }
-    step_share(&a[0]);
-    for (int k = 1; k < threads; k++)
-        if (started[k])
-            pthread_join(t[k], NULL);
-    return 1e3 * (bench_now() - t0);
+    return run_shares_ms(step_share, a, sizeof *a, threads);
 }
 
 static int fill_columns(void *col[4], int is_float, size_t n, const double *x, const double *y)

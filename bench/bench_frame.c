@@ -5,8 +5,8 @@
  * thesis's headline is 1,000,192 particles at about 60 FPS and 16M at
  * about 15 FPS on a laptop GPU; the targets here are the same on this CPU.
  *
- * One layer emitter fills the view; gravity and drag move it, reflecting
- * walls keep it on the screen.  The bytes are the same on every thread
+ * The effect is bench_layer.h's (a layer filling the view, gravity, drag
+ * and reflecting walls).  The bytes are the same on every thread
  * count (tests/checks/threads_check.c); this only times them.
  *
  * Every thread count runs its own copy of the effect, and the copies take

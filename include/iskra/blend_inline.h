@@ -159,26 +159,28 @@ static ISK__INLINE void isk__px_add_k(uint8_t *d, isk_color s, isk__src_k K)
 #endif
 }
 
-static ISK__INLINE void isk__px_add(uint8_t *d, isk_color s)
-{
-    isk__px_add_k(d, s, isk__source_k(s));
-}
-
-static ISK__INLINE void isk__px(uint8_t *d, isk_color s, isk_blend mode)
+/* One pixel in any mode, given K = isk__source_k(s) (a caller drawing
+ * many pixels of one colour prepares it once). */
+static ISK__INLINE void isk__px_k(uint8_t *d, isk_color s, isk__src_k K, isk_blend mode)
 {
     switch (mode) {
     case ISK_BLEND_REPLACE:
         d[0] = s.r; d[1] = s.g; d[2] = s.b; d[3] = s.a;
         break;
     case ISK_BLEND_OVER:
-        isk__px_over(d, s);
+        isk__px_over_k(d, s, K);
         break;
     case ISK_BLEND_ADD:
-        isk__px_add(d, s);
+        isk__px_add_k(d, s, K);
         break;
     default: /* not a mode: nothing is drawn */
         break;
     }
+}
+
+static ISK__INLINE void isk__px(uint8_t *d, isk_color s, isk_blend mode)
+{
+    isk__px_k(d, s, isk__source_k(s), mode);
 }
 
 #endif

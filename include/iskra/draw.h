@@ -103,22 +103,10 @@ static ISK__INLINE void isk__draw_pixel_inline(isk_canvas *c, int x, int y, isk_
      * pixel-less canvas fails them as well. */
     if (!c || !c->pixels || (unsigned)x >= (unsigned)c->width || (unsigned)y >= (unsigned)c->height)
         return;
-    uint8_t *d = isk_canvas_at(c, x, y);
-    switch (mode) { /* each mode's rule inlined on its own (isk__px folds its switch) */
-    case ISK_BLEND_REPLACE:
-        isk__px(d, color, ISK_BLEND_REPLACE);
-        break;
-    case ISK_BLEND_OVER:
-        isk__px_over_k(d, color, K);
-        break;
-    case ISK_BLEND_ADD:
-        isk__px_add_k(d, color, K);
-        break;
-    default: /* not a mode: nothing is drawn */
-        break;
-    }
+    isk__px_k(isk_canvas_at(c, x, y), color, K, mode);
 }
 #define isk_draw_pixel(c, x, y, color, mode) isk__draw_pixel_inline((c), (x), (y), (color), (mode))
+
 void isk_fill_rect(isk_canvas *c, int x, int y, int w, int h, isk_color color, isk_blend mode);
 
 void isk_draw_line(isk_canvas *c, double x0, double y0, double x1, double y1,

@@ -254,11 +254,7 @@ static ISK__INLINE void draw_rows(const isk_canvas *c, const isk_sprite *s, cons
             return;
         }
         for (int j = 0; j < S; j++, drow += stride, src += unit * (size_t)S) {
-            int b = span[2 * j], n = span[2 * j + 1] - b;
-            if (uniform) {
-                b = 0;
-                n = S;
-            }
+            const int b = span[2 * j], n = span[2 * j + 1] - b;
             if (src_kind == SRC_INC_ADD && !(n & 3))
                 span_add16(drow + 4 * b, src + 4 * b, 4 * n); /* padded: whole 16-byte steps */
             else if (src_kind == SRC_INC_ADD) /* a row too short to pad (S not a multiple of 4) */
