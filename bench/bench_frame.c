@@ -22,7 +22,7 @@
  * at once, after every row: "cores given" is how many cores' worth of work
  * the machine did, and a row's speedup can only be read against it.
  *
- *     build/bench/bench_frame            every size, and 10^6 settled on the floor
+ *     build/bench/bench_frame            every size, and 10^6 settled on the floor and at rest
  *     build/bench/bench_frame --quick    10^5 and 10^6 only */
 #include <pthread.h>
 #include <stdio.h>
@@ -45,10 +45,13 @@ typedef struct row {
 /* The layer falls for its first 20 frames, bounces for the next few
  * hundred and then lies on the floor: the "settled" row times it after 6 s,
  * when most particles rest or hop on the floor and the walls' bounces at
- * the time of impact (a root solve a hop) are most of the update. */
+ * the time of impact (a root solve a hop) are most of the update; the "at
+ * rest" row after 10 s, when every particle rests and its block with it
+ * (sim/stage.h's isk_rest: the runner skips the motion and the walls). */
 static const row ROWS[] = {
     {"dots", 100000, ISK_DRAW_DOT, 40, 0},    {"dots", 1000000, ISK_DRAW_DOT, 20, 0},
-    {"settled", 1000000, ISK_DRAW_DOT, 10, 360}, {"dots", 4000000, ISK_DRAW_DOT, 8, 0},
+    {"settled", 1000000, ISK_DRAW_DOT, 10, 360}, {"at rest", 1000000, ISK_DRAW_DOT, 10, 600},
+    {"dots", 4000000, ISK_DRAW_DOT, 8, 0},
     {"dots", 16000000, ISK_DRAW_DOT, 4, 0},   {"sprites", 100000, ISK_DRAW_SPRITE, 20, 0},
 };
 enum { NROWS = sizeof ROWS / sizeof ROWS[0] };

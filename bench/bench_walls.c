@@ -35,8 +35,12 @@
  *                  (what runs when potentials act; without them, as here,
  *                  the motion stage copies the block's start first)
  *   resting        the impact walls with every particle resting on the
- *                  floor (c = 0.5): every particle hits every step, the
- *                  worst case of the scalar path
+ *                  floor (c = 0.5) and sliding along it: every particle
+ *                  hits every step, the worst case of the scalar path
+ *   standing still the same without the sliding: every block comes to rest
+ *                  (sim/stage.h's isk_rest, what the effects run with)
+ *                  and the runner skips its stages; the row's bytes stay
+ *                  those of the stage set it stands for
  *   drag alone     the motion with the drag as its only force
  *   + Coulomb      the motion with one potential at the box's centre
  *                  (P = 2, sound centre rule, no distance switches): the
@@ -144,9 +148,9 @@ static void describe_end_walls(const isk_stage *st, FILE *out)
     (void)st;
     fprintf(out, "end-of-step rule");
 }
-static const isk_stage_kind end_walls = {"walls", run_end_walls, describe_end_walls};
+static const isk_stage_kind end_walls = {"walls", run_end_walls, describe_end_walls, NULL};
 
-enum { V_MOTION, V_END, V_IMPACT, V_START, V_REST, V_DRAG, V_COULOMB, V_COULOMB_T, V_COULOMB_WALLS, V_FIRE, NV };
+enum { V_MOTION, V_END, V_IMPACT, V_START, V_REST, V_STILL, V_DRAG, V_COULOMB, V_COULOMB_T, V_COULOMB_WALLS, V_FIRE, NV };
 
 /* A row: its name, the bytes its stage set moves a particle-step and the
  * bytes a particle of the columns it touches (the top comment says why). */
@@ -161,6 +165,7 @@ static const variant VARIANT[NV] = {
     {"walls, at the time of impact", MOTION_BYTES, MOTION_FOOTPRINT},
     {"  the same from a remembered start", MOTION_BYTES, MOTION_FOOTPRINT},
     {"impact, all resting on the floor", MOTION_BYTES, MOTION_FOOTPRINT},
+    {"  standing still: blocks at rest", MOTION_BYTES, MOTION_FOOTPRINT},
     {"drag alone (no walls)", MOTION_BYTES, MOTION_FOOTPRINT},
     {"motion + one Coulomb potential", MOTION_BYTES, MOTION_FOOTPRINT},
     {"  the same, thesis rule, P = 1", MOTION_BYTES, MOTION_FOOTPRINT},
@@ -175,8 +180,11 @@ typedef struct world {
     isk_sinlut sine;
     isk_bounds box, floor;
     isk_pipeline pl[NV];
+    isk_rest rest; /* the standing row's blocks at rest */
     isk_scratch *s;
 } world;
+
+enum { MOVING, SLIDING, STANDING };
 
 static void fill(world *w, size_t n, int resting)
 {
@@ -187,7 +195,7 @@ static void fill(world *w, size_t n, int resting)
         double x = isk_rng_range(&r, 0, 10), y = isk_rng_range(&r, 0, 10);
         double vx = isk_rng_range(&r, -5, 5), vy = isk_rng_range(&r, -5, 5), m = 1 + isk_rng_uniform(&r);
         if (resting)
-            y = 0, vx *= 0.1, vy = 0;
+            y = 0, vx *= resting == SLIDING ? 0.1 : 0.0, vy = 0;
         isk_particles_add(&w->p, x, y, vx, vy, m, NULL);
     }
     for (size_t i = 0; i < n; i++) { /* the fire's sway: 1..3 rad/s, 0.1..0.3 wide */
@@ -248,7 +256,7 @@ static int build(world *w, size_t n)
         if (v == V_MOTION || v == V_DRAG || v == V_COULOMB || v == V_COULOMB_T)
             continue;
         isk_stage *st = isk_pipeline_add(pl, v == V_END ? &end_walls : &isk_stage_walls);
-        st->u.walls.b = v == V_REST ? &w->floor : &w->box;
+        st->u.walls.b = v == V_REST || v == V_STILL ? &w->floor : &w->box;
         st->u.walls.drag = DRAG;
         st->u.walls.start = kept_start;
         st->u.walls.ay = -G; /* the constant acceleration, and semi-implicit Euler's offset */
@@ -315,10 +323,12 @@ static int measure(size_t n, int steps, int rounds)
         fprintf(stderr, "bench_walls: out of memory for the STREAM arrays at %zu particles\n", n);
         streams_free(st);
         free(w.s);
+        isk_rest_free(&w.rest);
         isk_particles_free(&w.p);
         return 1;
     }
     double t[NV][ROUNDS_MAX];
+    size_t still = 0; /* the standing row's blocks at rest */
     for (int r = 0; r < rounds; r++) {
         const int slot = r % (NV + 1); /* the STREAM round's place among the rows, a different one every round */
         for (int k = 0; k <= NV; k++) {
@@ -329,12 +339,17 @@ static int measure(size_t n, int steps, int rounds)
                 continue;
             }
             const int v = (k - (k > slot) + r) % NV; /* the rows in a different order every round */
-            fill(&w, n, v == V_REST);
-            isk_pipeline_run(&w.pl[v], &w.p, 0, w.p.count, DT, w.s); /* warm */
+            fill(&w, n, v == V_REST ? SLIDING : v == V_STILL ? STANDING : MOVING);
+            isk_rest *rest = v == V_STILL ? &w.rest : NULL;
+            isk_rest_forget(&w.rest, 0);
+            for (int s = 0; s < (rest ? 12 : 1); s++) /* warm; standing: every block comes to rest */
+                isk_pipeline_run_rest(&w.pl[v], &w.p, w.p.count, DT, w.s, rest);
             double t0 = bench_now();
             for (int s = 0; s < steps; s++)
-                isk_pipeline_run(&w.pl[v], &w.p, 0, w.p.count, DT, w.s);
+                isk_pipeline_run_rest(&w.pl[v], &w.p, w.p.count, DT, w.s, rest);
             t[v][r] = (bench_now() - t0) / ((double)steps * (double)n) * 1e9;
+            if (rest)
+                still = isk_rest_blocks(rest, w.p.count);
         }
     }
     printf("%zu particles, %d steps per timing, fastest (median) of %d rounds\n", n, steps, rounds);
@@ -352,10 +367,13 @@ static int measure(size_t n, int steps, int rounds)
                t[v][0], t[v][rounds / 2], t[v][0] / floor_ns);
     }
     printf("  impact / end-of-step rule: %.3f   impact / motion alone: %.3f   (goal: every stage set <= 1.5x "
-           "its limit)\n\n",
+           "its limit)\n",
            best[V_IMPACT] / best[V_END], best[V_IMPACT] / best[V_MOTION]);
+    printf("  standing still: %zu of %zu blocks at rest (each of the others would be stepped in full)\n\n", still,
+           (w.p.count + ISK_SIM_BLOCK - 1) / ISK_SIM_BLOCK);
     streams_free(st);
     free(w.s);
+    isk_rest_free(&w.rest);
     isk_particles_free(&w.p);
     return 0;
 }

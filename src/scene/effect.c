@@ -12,10 +12,12 @@
 
 #include "effect_internal.h"
 #include "sim/pool.h"
+#include "sim/store_internal.h"
 
 static void free_group(fx_group *g)
 {
     isk_particles_free(&g->store);
+    isk_rest_free(&g->rest);
     free(g->pick);
     free(g->defl);
     fx_free_ramps(g);
@@ -289,13 +291,18 @@ static isk_status step_group(isk_effect *e, fx_group *g)
     for (int j = 0; s == ISK_OK && j < N; j++) {
         if (g->has_field)
             fx_field_clock(g, time + h * j);
+        /* a multi-Coulomb explosion releases particles of the store as it goes */
+        isk_rest *rest = g->rests && !g->mc_active && !e->no_rest ? &g->rest : NULL;
         if (g->parallel)
-            e->scratch.nonfinite |= isk_pipeline_run_pool(&g->pipeline, &g->store, 0, g->store.count, h, e->pool);
+            e->scratch.nonfinite |=
+                isk_pipeline_run_pool_rest(&g->pipeline, &g->store, g->store.count, h, e->pool, rest);
         else
-            isk_pipeline_run(&g->pipeline, &g->store, 0, g->store.count, h, &e->scratch);
+            isk_pipeline_run_rest(&g->pipeline, &g->store, g->store.count, h, &e->scratch, rest);
         s = run_steps(e, g, g->substep_end, g->nsubstep_end, time + h * j, h);
         if (e->scratch.nonfinite) { /* never kept or drawn: removed and counted (iskra/limits.h) */
-            g->removed_nonfinite += isk_particles_remove_nonfinite(&g->store);
+            size_t first;
+            g->removed_nonfinite += isk_store_remove_nonfinite(&g->store, &first);
+            isk_rest_forget(&g->rest, first);
             e->scratch.nonfinite = 0;
         }
     }

@@ -100,6 +100,9 @@ isk_status fx_compile(isk_effect *e, fx_group *g)
     isk_stage *st = NULL;
     isk_pipeline_init(&g->pipeline);
     g->nframe_start = g->nsubstep_end = 0;
+    /* A recompiled list may differ in anything: what rested is forgotten. */
+    g->rests = 0;
+    isk_rest_forget(&g->rest, 0);
     gather_forces(e, g);
     g->integrator = em->integrator == ISK_INTEGRATE_INHERIT ? d->integrator : em->integrator;
     g->substeps = em->substeps ? em->substeps : d->substeps;
@@ -250,6 +253,11 @@ isk_status fx_compile(isk_effect *e, fx_group *g)
         g->substep_end[g->nsubstep_end++] = &fx_step_hits;
     if (mortal)
         g->substep_end[g->nsubstep_end++] = &fx_step_cull;
+    /* Blocks rest when the pipeline's stages allow it and nothing else moves
+     * the group's particles: no step at the frame's start (the late walls,
+     * the releases) and no carry with the emitter. */
+    g->rests = isk_pipeline_rest_prefix(&g->pipeline) > 0 && g->nframe_start == 0 &&
+               !(em->source == ISK_SOURCE_STREAM && em->space == ISK_SPACE_LOCAL);
     g->draw = fx_choose_draw(g);
     return ISK_OK;
 }
@@ -281,6 +289,13 @@ void fx_describe_group(const isk_effect *e, const fx_group *g, FILE *out)
     describe_steps(e, g, g->frame_start, g->nframe_start, out);
     isk_pipeline_describe(&g->pipeline, out);
     describe_steps(e, g, g->substep_end, g->nsubstep_end, out);
+    if (g->rests) {
+        const int n = isk_pipeline_rest_prefix(&g->pipeline);
+        fprintf(out, "  %-9s skips ", "rest");
+        for (int k = 0; k < n; k++)
+            fprintf(out, "%s%s", k ? (k == n - 1 ? " and " : ", ") : "", g->pipeline.stage[k].kind->name);
+        fprintf(out, " for a block %s exactly as it was: a block at rest\n", n == 1 ? "it leaves" : "they leave");
+    }
     if (!g->parallel)
         fprintf(out, "  %-9s one thread, in particle order (%s)\n", "order",
                 g->forces.npick ? "a potential may switch itself off" : "a deflector draws at random");

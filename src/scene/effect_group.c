@@ -6,6 +6,7 @@
 #include <math.h>
 
 #include "effect_internal.h"
+#include "sim/store_internal.h"
 
 uint64_t fx_group_seed(uint64_t seed, int index)
 {
@@ -75,6 +76,8 @@ isk_status fx_fire_explosion(isk_effect *e, fx_group *g, isk_explosion kind, dou
         break;
     default: return ISK_ERR_RANGE;
     }
+    /* A Coulomb explosion that kicks every particle moves those at rest */
+    isk_rest_forget(&g->rest, kind == ISK_EXPLOSION_COULOMB && kick == ISK_KICK_ALL ? 0 : before);
     if (s == ISK_OK)
         fx_adopt(e, g, before);
     return s;
@@ -146,10 +149,14 @@ static isk_status run_cull(isk_effect *e, fx_group *g, double t0, double h)
         if (s != ISK_OK)
             return s;
     }
+    /* What the blocks at rest must forget: with the holes filled from the
+     * end, the blocks of the dead and the new end; in order, everything
+     * from the first dead on. */
+    size_t first;
     if (g->cull_unordered)
-        isk_particles_cull_unordered(&g->store);
-    else
-        isk_particles_cull(&g->store);
+        isk_rest_wake_dying(&g->rest, &g->store);
+    isk_store_cull(&g->store, g->cull_unordered, &first);
+    isk_rest_forget(&g->rest, g->cull_unordered ? g->store.count : first);
     return ISK_OK;
 }
 

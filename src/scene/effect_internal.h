@@ -104,6 +104,9 @@ struct fx_group {
     int substeps;
     double const_ax, const_ay;     /* the constant part of the acceleration (thesis jitter) */
     int parallel;                  /* its pipeline's blocks are independent: threads may share them */
+    int rests;                     /* its blocks may rest (sim/stage.h's isk_rest): nothing but the
+                                      pipeline moves its particles (effect_compile.c) */
+    isk_rest rest;                 /* which blocks rest; forgotten on a recompile, a cull, a removal */
     int cull_unordered;            /* the order of its particles is seen by nothing (effect_compile.c) */
     int keep_on_canvas;            /* reflect walls hold it: one on the far edge is drawn on it */
     fx_draw_fn draw;
@@ -158,6 +161,7 @@ struct isk_effect {
     int *draw_order;               /* group indices sorted by (order, index) */
     isk_scratch scratch;           /* for the caller's own block runs (births) */
     struct isk_pool *pool;         /* the threads the groups' pipelines run on */
+    int no_rest;                   /* 1: no block rests, every stage runs (the tests' reference) */
     isk_sinlut sin_table;
     double time;
     long frame;

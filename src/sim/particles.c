@@ -317,12 +317,13 @@ static int drops(const isk_particles *p, size_t r, const int what)
 
 /* Removes the particles `drops` picks, keeping the order of the others:
  * column by column from the first one removed. */
-static inline size_t compact(isk_particles *p, const int what)
+static inline size_t compact(isk_particles *p, const int what, size_t *first_moved)
 {
     const size_t n = p->count;
     size_t first = 0;
     while (first < n && !drops(p, first, what))
         first++;
+    *first_moved = first;
     if (first == n)
         return 0;
     /* Every present column, gathered once: the double columns (age and life
@@ -361,12 +362,19 @@ static inline size_t compact(isk_particles *p, const int what)
 
 size_t isk_particles_cull(isk_particles *p)
 {
-    return p ? compact(p, DROP_DEAD) : 0;
+    size_t first;
+    return p ? compact(p, DROP_DEAD, &first) : 0;
 }
 
 size_t isk_particles_remove_nonfinite(isk_particles *p)
 {
-    return p ? compact(p, DROP_NONFINITE) : 0;
+    size_t first;
+    return p ? compact(p, DROP_NONFINITE, &first) : 0;
+}
+
+size_t isk_store_remove_nonfinite(isk_particles *p, size_t *first_moved)
+{
+    return compact(p, DROP_NONFINITE, first_moved);
 }
 
 /* Moves particle r into slot w, every present column. */
@@ -380,17 +388,18 @@ static void move_row(isk_particles *p, size_t w, size_t r)
     }
 }
 
-size_t isk_particles_cull_unordered(isk_particles *p)
+static size_t cull_unordered(isk_particles *p, size_t *first_moved)
 {
-    if (!p)
-        return 0;
     const double *age = p->age, *life = p->life;
     size_t n = p->count, i = 0;
+    *first_moved = n;
     while (i < n) {
         if (!(age[i] >= life[i])) { /* NaN ages and lives are kept, as a live particle's */
             i++;
             continue;
         }
+        if (*first_moved == p->count)
+            *first_moved = i;
         while (n > i + 1 && age[n - 1] >= life[n - 1])
             n--; /* dead at the end: dropped where they lie */
         if (n > i + 1)
@@ -401,6 +410,17 @@ size_t isk_particles_cull_unordered(isk_particles *p)
     size_t removed = p->count - n;
     p->count = n;
     return removed;
+}
+
+size_t isk_particles_cull_unordered(isk_particles *p)
+{
+    size_t first;
+    return p ? cull_unordered(p, &first) : 0;
+}
+
+size_t isk_store_cull(isk_particles *p, int unordered, size_t *first_moved)
+{
+    return unordered ? cull_unordered(p, first_moved) : compact(p, DROP_DEAD, first_moved);
 }
 
 void isk_particles_age(isk_particles *p, size_t begin, size_t end, double dt)

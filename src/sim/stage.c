@@ -3,6 +3,7 @@
 
 #include "sim/pool.h"
 
+#include <stdlib.h>
 #include <string.h>
 
 void isk_pipeline_init(isk_pipeline *pl)
@@ -20,11 +21,174 @@ isk_stage *isk_pipeline_add(isk_pipeline *pl, const isk_stage_kind *kind)
     return s;
 }
 
-/* Every stage, in order, on the block [o, o + n). */
-static void run_block(const isk_pipeline *pl, isk_particles *p, size_t o, size_t n, double h, isk_scratch *s)
+/* ---- blocks at rest ------------------------------------------------------ */
+
+/* A block's state: stepped in full; its samples came out of a look as
+ * they did from the one before, so the next step keeps the whole block's
+ * start and compares; at rest. */
+enum { AWAKE = 0, LOOKED_AT = 1, AT_REST = 2 };
+
+/* An awake block is looked at once in this many runs, blocks in turn:
+ * after its step, while it is in L1, four of its particles are compared
+ * with what they were at its last look (and kept for the next).  Only a
+ * block whose samples stood still pays for the exact test, a copy and a
+ * compare of the whole block, which cost about two steps of it: looking at
+ * every sixteenth block that way slowed a moving layer by 12-20 %, and so
+ * did reading samples before the step (16 cache lines touched ahead of the
+ * stream, each a wait for memory).  A resting particle's velocity is not
+ * zero (with semi-implicit Euler it keeps the offset that brings it back
+ * to the wall), so no sign as cheap tells rest. */
+#define REST_LOOK_EVERY 4
+
+void isk_rest_init(isk_rest *r)
+{
+    memset(r, 0, sizeof *r);
+}
+
+void isk_rest_free(isk_rest *r)
+{
+    free(r->block);
+    isk_rest_init(r);
+}
+
+void isk_rest_forget(isk_rest *r, size_t from)
+{
+    if (from < r->valid)
+        r->valid = from;
+}
+
+void isk_rest_wake_dying(isk_rest *r, const isk_particles *p)
+{
+    const size_t n = p->count < r->valid ? p->count : r->valid;
+    for (size_t k = 0; k * ISK_SIM_BLOCK < n; k++) {
+        if (r->block[k].state != AT_REST)
+            continue; /* an awake block is stepped in full anyway */
+        const size_t o = k * ISK_SIM_BLOCK, len = n - o < ISK_SIM_BLOCK ? n - o : ISK_SIM_BLOCK;
+        const double *age = p->age + o, *life = p->life + o;
+        int dying = 0;
+        for (size_t i = 0; i < len; i++)
+            dying |= age[i] >= life[i];
+        if (dying)
+            r->block[k].state = AWAKE;
+    }
+}
+
+size_t isk_rest_blocks(const isk_rest *r, size_t count)
+{
+    /* the blocks the states describe: a partial last one only when it is
+     * the one they describe */
+    size_t n = 0, blocks = count == r->valid ? (count + ISK_SIM_BLOCK - 1) / ISK_SIM_BLOCK
+                                             : (count < r->valid ? count : r->valid) / ISK_SIM_BLOCK;
+    for (size_t k = 0; k < blocks && k < r->cap; k++)
+        n += r->block[k].state == AT_REST;
+    return n;
+}
+
+isk_rest_role isk_rest_skipped(const isk_stage *st)
+{
+    (void)st;
+    return ISK_REST_SKIPPED;
+}
+
+isk_rest_role isk_rest_beside(const isk_stage *st)
+{
+    (void)st;
+    return ISK_REST_BESIDE;
+}
+
+int isk_pipeline_rest_prefix(const isk_pipeline *pl)
+{
+    int k = 0;
+    while (k < pl->n && pl->stage[k].kind->rest && pl->stage[k].kind->rest(&pl->stage[k]) == ISK_REST_SKIPPED)
+        k++;
+    for (int j = k; j < pl->n; j++)
+        if (!pl->stage[j].kind->rest || pl->stage[j].kind->rest(&pl->stage[j]) != ISK_REST_BESIDE)
+            return 0;
+    return k;
+}
+
+/* Readies the states for a run over [0, end) with step h: blocks that
+ * reach past the particles they describe (and every block after a change
+ * of step) wake.  0 when there is nothing to gain or no memory for them:
+ * the run then steps every block in full, and nothing is described. */
+static int rest_ready(isk_rest *r, const isk_pipeline *pl, size_t end, double h)
+{
+    size_t blocks = (end + ISK_SIM_BLOCK - 1) / ISK_SIM_BLOCK;
+    if (!(r->h == h)) /* == on purpose: a bit-identical step, NaN never */
+        r->valid = 0;
+    r->h = h;
+    if (isk_pipeline_rest_prefix(pl) == 0 || blocks == 0) {
+        r->valid = 0;
+        return 0;
+    }
+    if (blocks > r->cap) {
+        size_t cap = blocks + blocks / 2;
+        isk_rest_block *a = realloc(r->block, cap * sizeof *a);
+        if (!a) {
+            r->valid = 0;
+            return 0;
+        }
+        r->block = a;
+        r->cap = cap;
+    }
+    /* the blocks unchanged: all of them when the particles are those
+     * described, else the whole blocks below the first change */
+    size_t kept = r->valid == end ? blocks : (end < r->valid ? end : r->valid) / ISK_SIM_BLOCK;
+    memset(r->block + kept, 0, (blocks - kept) * sizeof *r->block); /* awake, samples +0 */
+    return 1;
+}
+
+/* The skipped stages on a block looked at: its start state kept, then
+ * compared bit for bit (a -0 that comes back as +0 is a change). */
+static __attribute__((noinline)) int steps_in_place(const isk_pipeline *pl, int prefix, isk_block *b, double h)
+{
+    double start[4][ISK_SIM_BLOCK];
+    double *const col[4] = {b->x, b->y, b->vx, b->vy};
+    for (int c = 0; c < 4; c++)
+        memcpy(start[c], col[c], b->n * sizeof(double));
+    for (int k = 0; k < prefix; k++)
+        pl->stage[k].kind->run(&pl->stage[k], b, h);
+    for (int c = 0; c < 4; c++)
+        if (memcmp(start[c], col[c], b->n * sizeof(double)) != 0)
+            return 0;
+    return 1;
+}
+
+/* After a step: four particles' state against the block's samples, which
+ * then take it.  1 when they stood still since the last look. */
+static int samples_still(const isk_block *b, double sample[16])
+{
+    const double *const col[4] = {b->x, b->y, b->vx, b->vy};
+    double now[16];
+    for (int j = 0; j < 4; j++)
+        for (int c = 0; c < 4; c++)
+            now[4 * j + c] = col[c][(size_t)j * (b->n - 1) / 3];
+    int still = memcmp(now, sample, sizeof now) == 0;
+    memcpy(sample, now, sizeof now);
+    return still;
+}
+
+/* Every stage, in order, on the block [o, o + n); with a record, the
+ * skipped stages only when the block is not at rest, and looked at when
+ * it is its turn (phase: the run's). */
+static void run_block(const isk_pipeline *pl, isk_particles *p, size_t o, size_t n, double h, isk_scratch *s,
+                      int prefix, isk_rest_block *rb, size_t phase)
 {
     isk_block b = {p, o, n, p->x + o, p->y + o, p->vx + o, p->vy + o, p->m + o, s};
-    for (int k = 0; k < pl->n; k++)
+    int k = 0;
+    if (rb) {
+        if (rb->state == AT_REST) {
+            k = prefix;
+        } else if (rb->state == LOOKED_AT) {
+            rb->state = steps_in_place(pl, prefix, &b, h) ? AT_REST : AWAKE;
+            k = prefix;
+        } else if ((o / ISK_SIM_BLOCK + phase) % REST_LOOK_EVERY == 0) {
+            for (; k < prefix; k++)
+                pl->stage[k].kind->run(&pl->stage[k], &b, h);
+            rb->state = samples_still(&b, rb->sample) ? LOOKED_AT : AWAKE;
+        }
+    }
+    for (; k < pl->n; k++)
         pl->stage[k].kind->run(&pl->stage[k], &b, h);
 }
 
@@ -32,7 +196,22 @@ void isk_pipeline_run(const isk_pipeline *pl, isk_particles *p, size_t begin, si
                       isk_scratch *s)
 {
     for (size_t o = begin; o < end; o += ISK_SIM_BLOCK)
-        run_block(pl, p, o, end - o < ISK_SIM_BLOCK ? end - o : ISK_SIM_BLOCK, h, s);
+        run_block(pl, p, o, end - o < ISK_SIM_BLOCK ? end - o : ISK_SIM_BLOCK, h, s, 0, NULL, 0);
+}
+
+void isk_pipeline_run_rest(const isk_pipeline *pl, isk_particles *p, size_t end, double h, isk_scratch *s,
+                           isk_rest *rest)
+{
+    if (!rest || !rest_ready(rest, pl, end, h)) {
+        isk_pipeline_run(pl, p, 0, end, h, s);
+        return;
+    }
+    const int prefix = isk_pipeline_rest_prefix(pl);
+    for (size_t o = 0; o < end; o += ISK_SIM_BLOCK)
+        run_block(pl, p, o, end - o < ISK_SIM_BLOCK ? end - o : ISK_SIM_BLOCK, h, s, prefix,
+                  rest->block + o / ISK_SIM_BLOCK, rest->runs % REST_LOOK_EVERY);
+    rest->valid = end;
+    rest->runs++;
 }
 
 typedef struct pool_run {
@@ -41,31 +220,53 @@ typedef struct pool_run {
     size_t begin, end;
     double h;
     isk_pool *pool;
+    int prefix;
+    isk_rest_block *block; /* NULL: no blocks at rest; else the record of the block at begin */
+    size_t phase;
 } pool_run;
 
+/* Each block's state is its own byte: workers never share one. */
 static void run_item(void *ctx, int worker, size_t item)
 {
     const pool_run *r = ctx;
     size_t o = r->begin + item * ISK_SIM_BLOCK;
     run_block(r->pl, r->p, o, r->end - o < ISK_SIM_BLOCK ? r->end - o : ISK_SIM_BLOCK, r->h,
-              isk_pool_scratch(r->pool, worker));
+              isk_pool_scratch(r->pool, worker), r->prefix, r->block ? r->block + item : NULL, r->phase);
+}
+
+static int run_pool(pool_run *r)
+{
+    if (r->end <= r->begin)
+        return 0;
+    size_t blocks = (r->end - r->begin + ISK_SIM_BLOCK - 1) / ISK_SIM_BLOCK;
+    isk_pool_for(r->pool, blocks, ISK_PIPELINE_MIN_PARALLEL_BLOCKS, run_item, r);
+    /* what the workers' motion stages found, combined after the join */
+    int nonfinite = 0;
+    for (int w = 0; w < isk_pool_threads(r->pool); w++) {
+        isk_scratch *s = isk_pool_scratch(r->pool, w);
+        nonfinite |= s->nonfinite;
+        s->nonfinite = 0;
+    }
+    return nonfinite;
 }
 
 int isk_pipeline_run_pool(const isk_pipeline *pl, isk_particles *p, size_t begin, size_t end, double h,
                           isk_pool *pool)
 {
-    if (end <= begin)
-        return 0;
-    pool_run r = {pl, p, begin, end, h, pool};
-    size_t blocks = (end - begin + ISK_SIM_BLOCK - 1) / ISK_SIM_BLOCK;
-    isk_pool_for(pool, blocks, ISK_PIPELINE_MIN_PARALLEL_BLOCKS, run_item, &r);
-    /* what the workers' motion stages found, combined after the join */
-    int nonfinite = 0;
-    for (int w = 0; w < isk_pool_threads(pool); w++) {
-        isk_scratch *s = isk_pool_scratch(pool, w);
-        nonfinite |= s->nonfinite;
-        s->nonfinite = 0;
-    }
+    pool_run r = {pl, p, begin, end, h, pool, 0, NULL, 0};
+    return run_pool(&r);
+}
+
+int isk_pipeline_run_pool_rest(const isk_pipeline *pl, isk_particles *p, size_t end, double h, isk_pool *pool,
+                               isk_rest *rest)
+{
+    if (!rest || !rest_ready(rest, pl, end, h))
+        return isk_pipeline_run_pool(pl, p, 0, end, h, pool);
+    pool_run r = {pl, p, 0, end, h, pool, isk_pipeline_rest_prefix(pl), rest->block,
+                  rest->runs % REST_LOOK_EVERY};
+    int nonfinite = run_pool(&r);
+    rest->valid = end;
+    rest->runs++;
     return nonfinite;
 }
 

@@ -69,10 +69,21 @@ typedef struct isk_stage_osc {
     double omega_min, omega_max, amp_min, amp_max;   /* for describe only */
 } isk_stage_osc;
 
+/* What a stage is to a block at rest (isk_rest, below). */
+typedef enum isk_rest_role {
+    ISK_REST_BREAKS = 0, /* may move a block at rest, or reads a clock, a random stream, other
+                            particles or columns beyond x, y, vx, vy, m: no block rests */
+    ISK_REST_SKIPPED,    /* a function of each particle's x, y, vx, vy, m and the stage's parameters
+                            alone, writing nothing but x, y, vx, vy (and the scratch): skipped for
+                            a block at rest */
+    ISK_REST_BESIDE      /* neither reads nor writes x, y, vx, vy: runs on every block */
+} isk_rest_role;
+
 typedef struct isk_stage_kind {
     const char *name;                                        /* "drift" */
     void (*run)(const isk_stage *st, isk_block *b, double h);
     void (*describe)(const isk_stage *st, FILE *out);        /* the parameters, in words */
+    isk_rest_role (*rest)(const isk_stage *st);              /* NULL: ISK_REST_BREAKS */
 } isk_stage_kind;
 
 /* Per-kind parameters.  Pointers refer to data the owner keeps alive and
@@ -127,12 +138,73 @@ typedef struct isk_pipeline {
     int n;
 } isk_pipeline;
 
+/* Blocks at rest.  A block that the list's leading ISK_REST_SKIPPED stages
+ * left with its x, y, vx, vy bit for bit as they were is at a fixed point
+ * of those stages: they are one function of its state and their
+ * parameters, so as long as nothing else writes its particles and the list
+ * and the step stay the same, every later step leaves it so again.  The
+ * runner then skips those stages for it and runs only the rest of the list
+ * (ISK_REST_BESIDE: ageing, spin).  The bytes are the same as running every
+ * stage, by that argument, not by a tolerance; a settled layer costs the
+ * ageing and nothing more.
+ *
+ * The runner finds the blocks itself: every few runs it looks at four
+ * particles of each awake block in turn; when they stood still it keeps
+ * the whole block's start state in the next run and compares it after the
+ * skipped stages; equal, the block rests.  The owner says what changed
+ * between runs:
+ *   isk_rest_forget(&r, i)   the particles from i on were moved, removed,
+ *                            or written (a cull that keeps the order: from
+ *                            the first one it moved; one that fills holes:
+ *                            isk_rest_wake_dying before it, its new count
+ *                            after); particles appended need nothing
+ *   isk_rest_forget(&r, 0)   the list or its parameters changed (recompile)
+ * A different step h forgets by itself.  The runs with states cover
+ * [0, end), so blocks count from particle 0.
+ *
+ *     isk_rest r;
+ *     isk_rest_init(&r);
+ *     isk_pipeline_run_rest(&pl, &store, store.count, h, &scratch, &r);
+ *     ...
+ *     isk_rest_free(&r); */
+typedef struct isk_rest_block {
+    double sample[16];   /* four particles' x, y, vx, vy at the block's last look */
+    unsigned char state; /* awake, looked at, at rest */
+} isk_rest_block;
+
+typedef struct isk_rest {
+    isk_rest_block *block; /* one per block */
+    size_t cap;            /* blocks there is room for */
+    size_t valid;         /* particles [0, valid) are those the states describe */
+    double h;             /* the step they were found at */
+    size_t runs;          /* runs so far: whose turn it is to be looked at */
+} isk_rest;
+
+void isk_rest_init(isk_rest *r);
+void isk_rest_free(isk_rest *r);
+void isk_rest_forget(isk_rest *r, size_t from);
+/* Before a cull that fills the holes with the last particles (nothing
+ * else moves): wakes the blocks at rest that hold a particle about to die
+ * (age >= life).  The cull's new count is then forgotten from. */
+void isk_rest_wake_dying(isk_rest *r, const isk_particles *p);
+/* Blocks of [0, count) at rest (for describe and the tests). */
+size_t isk_rest_blocks(const isk_rest *r, size_t count);
+/* How many leading stages of the list a block at rest skips (0: no block
+ * of this list can rest). */
+int isk_pipeline_rest_prefix(const isk_pipeline *pl);
+/* The constant roles, for kinds whose role does not depend on parameters. */
+isk_rest_role isk_rest_skipped(const isk_stage *st);
+isk_rest_role isk_rest_beside(const isk_stage *st);
+
 void isk_pipeline_init(isk_pipeline *pl);
 /* Appends a stage of `kind` with zeroed parameters; NULL when the list is full. */
 isk_stage *isk_pipeline_add(isk_pipeline *pl, const isk_stage_kind *kind);
 /* Runs the list over particles [begin, end) of p with step h. */
 void isk_pipeline_run(const isk_pipeline *pl, isk_particles *p, size_t begin, size_t end, double h,
                       isk_scratch *s);
+/* The same over [0, end) with blocks at rest (rest may be NULL: none). */
+void isk_pipeline_run_rest(const isk_pipeline *pl, isk_particles *p, size_t end, double h, isk_scratch *s,
+                           isk_rest *rest);
 /* The same with the blocks shared out over a pool's threads.  Only for
  * lists whose stages touch nothing outside their block (the compiler of the
  * list decides: a potential that can switch itself off, or a deflector
@@ -145,6 +217,9 @@ void isk_pipeline_run(const isk_pipeline *pl, isk_particles *p, size_t begin, si
 struct isk_pool;
 int isk_pipeline_run_pool(const isk_pipeline *pl, isk_particles *p, size_t begin, size_t end, double h,
                           struct isk_pool *pool);
+/* The same over [0, end) with blocks at rest (rest may be NULL). */
+int isk_pipeline_run_pool_rest(const isk_pipeline *pl, isk_particles *p, size_t end, double h,
+                               struct isk_pool *pool, isk_rest *rest);
 /* One line per stage: "  NAME      parameters". */
 void isk_pipeline_describe(const isk_pipeline *pl, FILE *out);
 /* One stage's line without its newline (for a stage that describes itself

@@ -31,7 +31,7 @@ static isk_step_motion motion_of(const isk_block *b, double drag, double h)
     return mo;
 }
 
-const isk_stage_kind isk_stage_remember = {"remember", run_remember, describe_remember};
+const isk_stage_kind isk_stage_remember = {"remember", run_remember, describe_remember, isk_rest_skipped};
 
 /* A particle's hit byte (iskra/particles.h) after a contact stage that
  * touched it `k` times in this substep: the bounces are counted unless it
@@ -100,7 +100,14 @@ static void describe_walls(const isk_stage *st, FILE *out)
         fprintf(out, ", restitution %g, at the time of impact", w->restitution);
 }
 
-const isk_stage_kind isk_stage_walls = {"walls", run_walls, describe_walls};
+/* Counting bounces writes the hit column, which a block at rest would stop
+ * doing: then no block rests. */
+static isk_rest_role rest_walls(const isk_stage *st)
+{
+    return st->u.walls.hit ? ISK_REST_BREAKS : ISK_REST_SKIPPED;
+}
+
+const isk_stage_kind isk_stage_walls = {"walls", run_walls, describe_walls, rest_walls};
 
 static void run_deflect(const isk_stage *st, isk_block *b, double h)
 {
@@ -145,4 +152,5 @@ static void describe_deflect(const isk_stage *st, FILE *out)
     fprintf(out, "%d segment%s", st->u.deflect.n, st->u.deflect.n == 1 ? "" : "s");
 }
 
-const isk_stage_kind isk_stage_deflect = {"deflect", run_deflect, describe_deflect};
+const isk_stage_kind isk_stage_deflect = {"deflect", run_deflect, describe_deflect,
+                                          NULL /* draws from the owner's stream */};

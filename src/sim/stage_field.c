@@ -85,4 +85,4 @@ static void describe_field(const isk_stage *st, FILE *out)
         fprintf(out, "none");
 }
 
-const isk_stage_kind isk_stage_field = {"field", run_field, describe_field};
+const isk_stage_kind isk_stage_field = {"field", run_field, describe_field, NULL /* a clock */};

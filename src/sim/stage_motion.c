@@ -48,7 +48,7 @@ static void describe_drift(const isk_stage *st, FILE *out)
         fprintf(out, "semi-euler, no forces");
 }
 
-const isk_stage_kind isk_stage_drift = {"drift", run_drift, describe_drift};
+const isk_stage_kind isk_stage_drift = {"drift", run_drift, describe_drift, isk_rest_skipped};
 
 /* Forces are where a finite state can turn non-finite (the thesis's centre
  * rule gives NaN on a potential, iskra/limits.h): the block is checked
@@ -92,7 +92,14 @@ static void describe_motion(const isk_stage *st, FILE *out)
         fprintf(out, "; keeps the start state (bounces at the time of impact)");
 }
 
-const isk_stage_kind isk_stage_motion = {"integrate", run_motion, describe_motion};
+/* Potentials move and switch themselves off: a block under one never rests. */
+static isk_rest_role rest_motion(const isk_stage *st)
+{
+    const isk_forces *f = st->u.motion.forces;
+    return (f->pick ? f->npick : f->npot) ? ISK_REST_BREAKS : ISK_REST_SKIPPED;
+}
+
+const isk_stage_kind isk_stage_motion = {"integrate", run_motion, describe_motion, rest_motion};
 
 static void run_age(const isk_stage *st, isk_block *b, double h)
 {
@@ -106,4 +113,4 @@ static void describe_age(const isk_stage *st, FILE *out)
     fprintf(out, "age += dt");
 }
 
-const isk_stage_kind isk_stage_age = {"age", run_age, describe_age};
+const isk_stage_kind isk_stage_age = {"age", run_age, describe_age, isk_rest_beside};

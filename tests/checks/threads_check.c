@@ -259,6 +259,19 @@ int main(int argc, char **argv)
                "[emitter c]\nsource = layer\ncount = 20000\nlimit = 20000\nrect = -9, 9, -3, 6\n"
                "forces = gravity\ndraw = pixel\ncolor = #40ff8008\n",
                "settled", quick ? 30 : 60);
+    /* Blocks at rest (sim/stage.h's isk_rest): a layer that settles in a
+     * third of a second and stays, sparks that land and die at random
+     * (their holes filled from the end: the dying blocks wake), drops that
+     * die in order (everything after the first dead forgotten). */
+    scene_text("[scene]\nwidth = 200\nheight = 60\n[force gravity]\ng = 400\n[bounds]\nrestitution = 0.2\n"
+               "[emitter a]\nsource = layer\ncount = 20000\nlimit = 20000\nrect = -9, 9, -3, 6\n"
+               "forces = gravity\ncolor = #ff804008\n"
+               "[emitter sparks]\nsource = stream\nposition = -9, 5\nshape = segment\nshape_a = 18\n"
+               "count = 6000\nrate = 200\nlife = 0.5\nlife_range = 1.5\nforces = gravity\nblend = add\n"
+               "color = #2040ff20\n"
+               "[emitter drops]\nsource = stream\nposition = -9, 5\nshape = segment\nshape_a = 18\n"
+               "count = 6000\nrate = 3000\nlife = 0.6\nlife_range = 0.3\nforces = gravity\ncolor = #40ff8020\n",
+               "at rest", quick ? 60 : 120);
     /* An order-dependent list: a potential that switches itself off. */
     scene_text("[force trap]\nkind = potential\nk = 80\nposition = 0, 0\nmax_distance = 0.2\n"
                "[emitter layer]\nsource = layer\ncount = 20000\nlimit = 20000\nrect = -5, 5, -5, 5\n"
