@@ -37,10 +37,12 @@
  *   resting        the impact walls with every particle resting on the
  *                  floor (c = 0.5) and sliding along it: every particle
  *                  hits every step, the worst case of the scalar path
+ *   y at rest      the same with the blocks' states (sim/stage.h's
+ *                  isk_rest, what the effects run with): every block's y
+ *                  axis rests and the runner steps x alone
  *   standing still the same without the sliding: every block comes to rest
- *                  (sim/stage.h's isk_rest, what the effects run with)
- *                  and the runner skips its stages; the row's bytes stay
- *                  those of the stage set it stands for
+ *                  and the runner skips its stages
+ * (the last two rows' bytes stay those of the stage set they stand for)
  *   drag alone     the motion with the drag as its only force
  *   + Coulomb      the motion with one potential at the box's centre
  *                  (P = 2, sound centre rule, no distance switches): the
@@ -150,7 +152,7 @@ static void describe_end_walls(const isk_stage *st, FILE *out)
 }
 static const isk_stage_kind end_walls = {"walls", run_end_walls, describe_end_walls, NULL};
 
-enum { V_MOTION, V_END, V_IMPACT, V_START, V_REST, V_STILL, V_DRAG, V_COULOMB, V_COULOMB_T, V_COULOMB_WALLS, V_FIRE, NV };
+enum { V_MOTION, V_END, V_IMPACT, V_START, V_REST, V_SLIDE, V_STILL, V_DRAG, V_COULOMB, V_COULOMB_T, V_COULOMB_WALLS, V_FIRE, NV };
 
 /* A row: its name, the bytes its stage set moves a particle-step and the
  * bytes a particle of the columns it touches (the top comment says why). */
@@ -165,6 +167,7 @@ static const variant VARIANT[NV] = {
     {"walls, at the time of impact", MOTION_BYTES, MOTION_FOOTPRINT},
     {"  the same from a remembered start", MOTION_BYTES, MOTION_FOOTPRINT},
     {"impact, all resting on the floor", MOTION_BYTES, MOTION_FOOTPRINT},
+    {"  the same, their y axis at rest", MOTION_BYTES, MOTION_FOOTPRINT},
     {"  standing still: blocks at rest", MOTION_BYTES, MOTION_FOOTPRINT},
     {"drag alone (no walls)", MOTION_BYTES, MOTION_FOOTPRINT},
     {"motion + one Coulomb potential", MOTION_BYTES, MOTION_FOOTPRINT},
@@ -256,7 +259,7 @@ static int build(world *w, size_t n)
         if (v == V_MOTION || v == V_DRAG || v == V_COULOMB || v == V_COULOMB_T)
             continue;
         isk_stage *st = isk_pipeline_add(pl, v == V_END ? &end_walls : &isk_stage_walls);
-        st->u.walls.b = v == V_REST || v == V_STILL ? &w->floor : &w->box;
+        st->u.walls.b = v == V_REST || v == V_SLIDE || v == V_STILL ? &w->floor : &w->box;
         st->u.walls.drag = DRAG;
         st->u.walls.start = kept_start;
         st->u.walls.ay = -G; /* the constant acceleration, and semi-implicit Euler's offset */
@@ -328,7 +331,7 @@ static int measure(size_t n, int steps, int rounds)
         return 1;
     }
     double t[NV][ROUNDS_MAX];
-    size_t still = 0; /* the standing row's blocks at rest */
+    size_t still = 0, sliding = 0; /* the standing row's blocks at rest, the sliding row's y at rest */
     for (int r = 0; r < rounds; r++) {
         const int slot = r % (NV + 1); /* the STREAM round's place among the rows, a different one every round */
         for (int k = 0; k <= NV; k++) {
@@ -339,8 +342,8 @@ static int measure(size_t n, int steps, int rounds)
                 continue;
             }
             const int v = (k - (k > slot) + r) % NV; /* the rows in a different order every round */
-            fill(&w, n, v == V_REST ? SLIDING : v == V_STILL ? STANDING : MOVING);
-            isk_rest *rest = v == V_STILL ? &w.rest : NULL;
+            fill(&w, n, v == V_REST || v == V_SLIDE ? SLIDING : v == V_STILL ? STANDING : MOVING);
+            isk_rest *rest = v == V_STILL || v == V_SLIDE ? &w.rest : NULL;
             isk_rest_forget(&w.rest, 0);
             for (int s = 0; s < (rest ? 12 : 1); s++) /* warm; standing: every block comes to rest */
                 isk_pipeline_run_rest(&w.pl[v], &w.p, w.p.count, DT, w.s, rest);
@@ -348,8 +351,10 @@ static int measure(size_t n, int steps, int rounds)
             for (int s = 0; s < steps; s++)
                 isk_pipeline_run_rest(&w.pl[v], &w.p, w.p.count, DT, w.s, rest);
             t[v][r] = (bench_now() - t0) / ((double)steps * (double)n) * 1e9;
-            if (rest)
-                still = isk_rest_blocks(rest, w.p.count);
+            if (v == V_STILL)
+                still = isk_rest_blocks(rest, w.p.count, ISK_REST_X | ISK_REST_Y);
+            if (v == V_SLIDE)
+                sliding = isk_rest_blocks(rest, w.p.count, ISK_REST_Y);
         }
     }
     printf("%zu particles, %d steps per timing, fastest (median) of %d rounds\n", n, steps, rounds);
@@ -369,7 +374,7 @@ static int measure(size_t n, int steps, int rounds)
     printf("  impact / end-of-step rule: %.3f   impact / motion alone: %.3f   (goal: every stage set <= 1.5x "
            "its limit)\n",
            best[V_IMPACT] / best[V_END], best[V_IMPACT] / best[V_MOTION]);
-    printf("  standing still: %zu of %zu blocks at rest (each of the others would be stepped in full)\n\n", still,
+    printf("  blocks at rest: standing %zu, sliding with y at rest %zu, of %zu\n\n", still, sliding,
            (w.p.count + ISK_SIM_BLOCK - 1) / ISK_SIM_BLOCK);
     streams_free(st);
     free(w.s);

@@ -23,14 +23,16 @@ isk_stage *isk_pipeline_add(isk_pipeline *pl, const isk_stage_kind *kind)
 
 /* ---- blocks at rest ------------------------------------------------------ */
 
-/* A block's state: stepped in full; its samples came out of a look as
- * they did from the one before, so the next step keeps the whole block's
- * start and compares; at rest. */
-enum { AWAKE = 0, LOOKED_AT = 1, AT_REST = 2 };
+/* A block's state: which axes rest (ISK_REST_X, ISK_REST_Y: both, the
+ * block rests), and LOOKED_AT: the samples of an axis that does not came
+ * out of a look as they did from the one before, so the next step keeps
+ * those axes' start and compares. */
+enum { AWAKE = 0, AT_REST = ISK_REST_X | ISK_REST_Y, LOOKED_AT = 4 };
 
 /* An awake block is looked at once in this many runs, blocks in turn:
  * after its step, while it is in L1, four of its particles are compared
- * with what they were at its last look (and kept for the next).  Only a
+ * with what they were at its last look (a hash of them, kept for the
+ * next: 16 bytes a block, an eighth of a byte a particle).  Only a
  * block whose samples stood still pays for the exact test, a copy and a
  * compare of the whole block, which cost about two steps of it: looking at
  * every sixteenth block that way slowed a moving layer by 12-20 %, and so
@@ -61,7 +63,7 @@ void isk_rest_wake_dying(isk_rest *r, const isk_particles *p)
 {
     const size_t n = p->count < r->valid ? p->count : r->valid;
     for (size_t k = 0; k * ISK_SIM_BLOCK < n; k++) {
-        if (r->block[k].state != AT_REST)
+        if (!(r->block[k].state & AT_REST))
             continue; /* an awake block is stepped in full anyway */
         const size_t o = k * ISK_SIM_BLOCK, len = n - o < ISK_SIM_BLOCK ? n - o : ISK_SIM_BLOCK;
         const double *age = p->age + o, *life = p->life + o;
@@ -73,14 +75,14 @@ void isk_rest_wake_dying(isk_rest *r, const isk_particles *p)
     }
 }
 
-size_t isk_rest_blocks(const isk_rest *r, size_t count)
+size_t isk_rest_blocks(const isk_rest *r, size_t count, unsigned axes)
 {
     /* the blocks the states describe: a partial last one only when it is
      * the one they describe */
     size_t n = 0, blocks = count == r->valid ? (count + ISK_SIM_BLOCK - 1) / ISK_SIM_BLOCK
                                              : (count < r->valid ? count : r->valid) / ISK_SIM_BLOCK;
     for (size_t k = 0; k < blocks && k < r->cap; k++)
-        n += r->block[k].state == AT_REST;
+        n += (r->block[k].state & axes) == axes;
     return n;
 }
 
@@ -134,59 +136,100 @@ static int rest_ready(isk_rest *r, const isk_pipeline *pl, size_t end, double h)
     /* the blocks unchanged: all of them when the particles are those
      * described, else the whole blocks below the first change */
     size_t kept = r->valid == end ? blocks : (end < r->valid ? end : r->valid) / ISK_SIM_BLOCK;
-    memset(r->block + kept, 0, (blocks - kept) * sizeof *r->block); /* awake, samples +0 */
+    memset(r->block + kept, 0, (blocks - kept) * sizeof *r->block); /* awake */
     return 1;
 }
 
-/* The skipped stages on a block looked at: its start state kept, then
- * compared bit for bit (a -0 that comes back as +0 is a change). */
-static __attribute__((noinline)) int steps_in_place(const isk_pipeline *pl, int prefix, isk_block *b, double h)
+/* An axis's position and velocity columns in a block. */
+static double **axis_col(isk_block *b, int axis, int c)
 {
-    double start[4][ISK_SIM_BLOCK];
-    double *const col[4] = {b->x, b->y, b->vx, b->vy};
-    for (int c = 0; c < 4; c++)
-        memcpy(start[c], col[c], b->n * sizeof(double));
+    return axis ? (c ? &b->vy : &b->y) : (c ? &b->vx : &b->x);
+}
+
+/* The skipped stages on a block looked at: the start of the axes that do
+ * not rest kept, then compared bit for bit (a -0 that comes back as +0 is
+ * a change).  Returns the axes that stood still. */
+static __attribute__((noinline)) unsigned axes_in_place(const isk_pipeline *pl, int prefix, isk_block *b,
+                                                        double h)
+{
+    double start[2][2][ISK_SIM_BLOCK];
+    for (int a = 0; a < 2; a++)
+        for (int c = 0; c < 2 && !(b->frozen >> a & 1u); c++)
+            memcpy(start[a][c], *axis_col(b, a, c), b->n * sizeof(double));
     for (int k = 0; k < prefix; k++)
         pl->stage[k].kind->run(&pl->stage[k], b, h);
-    for (int c = 0; c < 4; c++)
-        if (memcmp(start[c], col[c], b->n * sizeof(double)) != 0)
-            return 0;
-    return 1;
-}
-
-/* After a step: four particles' state against the block's samples, which
- * then take it.  1 when they stood still since the last look. */
-static int samples_still(const isk_block *b, double sample[16])
-{
-    const double *const col[4] = {b->x, b->y, b->vx, b->vy};
-    double now[16];
-    for (int j = 0; j < 4; j++)
-        for (int c = 0; c < 4; c++)
-            now[4 * j + c] = col[c][(size_t)j * (b->n - 1) / 3];
-    int still = memcmp(now, sample, sizeof now) == 0;
-    memcpy(sample, now, sizeof now);
+    unsigned still = 0;
+    for (int a = 0; a < 2; a++)
+        if (!(b->frozen >> a & 1u) && !memcmp(start[a][0], *axis_col(b, a, 0), b->n * sizeof(double)) &&
+            !memcmp(start[a][1], *axis_col(b, a, 1), b->n * sizeof(double)))
+            still |= 1u << a;
     return still;
 }
 
+/* After a step: a hash of four particles' position and velocity on each
+ * axis that does not rest, against the block's samples, which then take
+ * them.  Returns the axes that (most likely) stood still since the last
+ * look; the exact look decides. */
+static unsigned samples_still(isk_block *b, uint64_t sample[2])
+{
+    unsigned still = 0;
+    for (int a = 0; a < 2; a++) {
+        if (b->frozen >> a & 1u)
+            continue;
+        uint64_t h = 0;
+        for (int j = 0; j < 4; j++)
+            for (int c = 0; c < 2; c++) {
+                uint64_t bits;
+                memcpy(&bits, *axis_col(b, a, c) + (size_t)j * (b->n - 1) / 3, sizeof bits);
+                h = (h ^ bits) * 0x9e3779b97f4a7c15u;
+                h ^= h >> 29;
+            }
+        still |= (unsigned)(h == sample[a]) << a;
+        sample[a] = h;
+    }
+    return still;
+}
+
+/* The skipped stages on a block, with the columns of its resting axes
+ * (rb->state's) replaced by stand-ins: the stages are per axis
+ * (ISK_REST_SKIPPED), so what they make of the stand-ins changes nothing
+ * of the other axis, and the resting axis stays as it is.  Looks at it
+ * when it is its turn, or when its samples stood still. */
+static void run_skipped(const isk_pipeline *pl, int prefix, isk_block *b, double h, isk_rest_block *rb, int turn)
+{
+    double stand_in[2][ISK_SIM_BLOCK];
+    const unsigned resting = rb->state & AT_REST;
+    if (resting) {
+        memset(stand_in, 0, sizeof stand_in);
+        const int a = resting == ISK_REST_X ? 0 : 1;
+        *axis_col(b, a, 0) = stand_in[0];
+        *axis_col(b, a, 1) = stand_in[1];
+        b->frozen = resting;
+    }
+    if (rb->state & LOOKED_AT) {
+        rb->state = (unsigned char)(resting | axes_in_place(pl, prefix, b, h));
+    } else {
+        for (int k = 0; k < prefix; k++)
+            pl->stage[k].kind->run(&pl->stage[k], b, h);
+        if (turn && samples_still(b, rb->sample))
+            rb->state |= LOOKED_AT;
+    }
+}
+
 /* Every stage, in order, on the block [o, o + n); with a record, the
- * skipped stages only when the block is not at rest, and looked at when
- * it is its turn (phase: the run's). */
+ * skipped stages only on the axes that do not rest, and looked at when it
+ * is the block's turn (phase: the run's). */
 static void run_block(const isk_pipeline *pl, isk_particles *p, size_t o, size_t n, double h, isk_scratch *s,
                       int prefix, isk_rest_block *rb, size_t phase)
 {
-    isk_block b = {p, o, n, p->x + o, p->y + o, p->vx + o, p->vy + o, p->m + o, s};
+    isk_block b = {p, o, n, p->x + o, p->y + o, p->vx + o, p->vy + o, p->m + o, s, 0};
     int k = 0;
     if (rb) {
-        if (rb->state == AT_REST) {
-            k = prefix;
-        } else if (rb->state == LOOKED_AT) {
-            rb->state = steps_in_place(pl, prefix, &b, h) ? AT_REST : AWAKE;
-            k = prefix;
-        } else if ((o / ISK_SIM_BLOCK + phase) % REST_LOOK_EVERY == 0) {
-            for (; k < prefix; k++)
-                pl->stage[k].kind->run(&pl->stage[k], &b, h);
-            rb->state = samples_still(&b, rb->sample) ? LOOKED_AT : AWAKE;
+        if (rb->state != AT_REST) {
+            run_skipped(pl, prefix, &b, h, rb, (o / ISK_SIM_BLOCK + phase) % REST_LOOK_EVERY == 0);
+            b = (isk_block){p, o, n, p->x + o, p->y + o, p->vx + o, p->vy + o, p->m + o, s, 0};
         }
+        k = prefix;
     }
     for (; k < pl->n; k++)
         pl->stage[k].kind->run(&pl->stage[k], &b, h);

@@ -55,6 +55,9 @@ typedef struct isk_block {
     size_t first, n;                 /* particles [first, first + n) */
     double *x, *y, *vx, *vy, *m;     /* p->x + first, ... */
     isk_scratch *s;
+    unsigned frozen;                 /* ISK_REST_X, ISK_REST_Y: that axis rests, and its two
+                                        pointers are stand-ins whose results are dropped
+                                        (a stage may skip its work on them: the walls do) */
 } isk_block;
 
 typedef struct isk_stage isk_stage;
@@ -74,8 +77,10 @@ typedef enum isk_rest_role {
     ISK_REST_BREAKS = 0, /* may move a block at rest, or reads a clock, a random stream, other
                             particles or columns beyond x, y, vx, vy, m: no block rests */
     ISK_REST_SKIPPED,    /* a function of each particle's x, y, vx, vy, m and the stage's parameters
-                            alone, writing nothing but x, y, vx, vy (and the scratch): skipped for
-                            a block at rest */
+                            alone, writing nothing but x, y, vx, vy (and the scratch), and per
+                            axis: x and vx come out of x, vx and m alone, y and vy of y, vy and
+                            m: skipped for a block at rest, run on the moving axis of a block
+                            whose other axis rests */
     ISK_REST_BESIDE      /* neither reads nor writes x, y, vx, vy: runs on every block */
 } isk_rest_role;
 
@@ -85,6 +90,9 @@ typedef struct isk_stage_kind {
     void (*describe)(const isk_stage *st, FILE *out);        /* the parameters, in words */
     isk_rest_role (*rest)(const isk_stage *st);              /* NULL: ISK_REST_BREAKS */
 } isk_stage_kind;
+
+/* The axes of a block at rest (isk_block.frozen, isk_rest_blocks). */
+enum { ISK_REST_X = 1, ISK_REST_Y = 2 };
 
 /* Per-kind parameters.  Pointers refer to data the owner keeps alive and
  * unchanged while the pipeline runs (recompile after changing them). */
@@ -148,11 +156,17 @@ typedef struct isk_pipeline {
  * stage, by that argument, not by a tolerance; a settled layer costs the
  * ageing and nothing more.
  *
+ * The same holds for one axis: the skipped stages are per axis (x and vx
+ * come out of x, vx and m alone), so a block whose y and vy came out as
+ * they were (a floor under it) while x slides steps x alone from then on,
+ * its y columns replaced by stand-ins the stages may compute on and whose
+ * results are dropped (isk_block.frozen; the walls skip that axis).
+ *
  * The runner finds the blocks itself: every few runs it looks at four
- * particles of each awake block in turn; when they stood still it keeps
- * the whole block's start state in the next run and compares it after the
- * skipped stages; equal, the block rests.  The owner says what changed
- * between runs:
+ * particles of each awake block in turn, axis by axis; when an axis's
+ * stood still it keeps the block's start state in the next run and
+ * compares it after the skipped stages; equal, that axis rests.  The
+ * owner says what changed between runs:
  *   isk_rest_forget(&r, i)   the particles from i on were moved, removed,
  *                            or written (a cull that keeps the order: from
  *                            the first one it moved; one that fills holes:
@@ -168,8 +182,9 @@ typedef struct isk_pipeline {
  *     ...
  *     isk_rest_free(&r); */
 typedef struct isk_rest_block {
-    double sample[16];   /* four particles' x, y, vx, vy at the block's last look */
-    unsigned char state; /* awake, looked at, at rest */
+    uint64_t sample[2];  /* per axis, a hash of four particles' position and velocity at the
+                            block's last look (a collision only costs an exact look that fails) */
+    unsigned char state; /* the axes at rest, and whether to look at the others (stage.c) */
 } isk_rest_block;
 
 typedef struct isk_rest {
@@ -187,8 +202,9 @@ void isk_rest_forget(isk_rest *r, size_t from);
  * else moves): wakes the blocks at rest that hold a particle about to die
  * (age >= life).  The cull's new count is then forgotten from. */
 void isk_rest_wake_dying(isk_rest *r, const isk_particles *p);
-/* Blocks of [0, count) at rest (for describe and the tests). */
-size_t isk_rest_blocks(const isk_rest *r, size_t count);
+/* Blocks of [0, count) at rest on `axes` (ISK_REST_X | ISK_REST_Y: at rest;
+ * for the tests and the benchmarks). */
+size_t isk_rest_blocks(const isk_rest *r, size_t count, unsigned axes);
 /* How many leading stages of the list a block at rest skips (0: no block
  * of this list can rest). */
 int isk_pipeline_rest_prefix(const isk_pipeline *pl);
