@@ -23,16 +23,16 @@ isk_stage *isk_pipeline_add(isk_pipeline *pl, const isk_stage_kind *kind)
 
 /* ---- blocks at rest ------------------------------------------------------ */
 
-/* A block's state: which axes rest (ISK_REST_X, ISK_REST_Y: both, the
- * block rests), and LOOKED_AT: the samples of an axis that does not came
- * out of a look as they did from the one before, so the next step keeps
- * those axes' start and compares. */
+/* A block's state: which axes rest (ISK_REST_X, ISK_REST_Y; both: the
+ * block rests), and LOOKED_AT: at the last look, the samples of an axis
+ * that does not rest were as at the look before, so the next step keeps
+ * the moving axes' start and compares. */
 enum { AWAKE = 0, AT_REST = ISK_REST_X | ISK_REST_Y, LOOKED_AT = 4 };
 
 /* An awake block is looked at once in this many runs, blocks in turn:
  * after its step, while it is in L1, four of its particles are compared
- * with what they were at its last look (a hash of them, kept for the
- * next: 16 bytes a block, an eighth of a byte a particle).  Only a
+ * with what they were at its last look (a hash of them per axis, kept for
+ * the next: 24 bytes a block, a fifth of a byte a particle).  Only a
  * block whose samples stood still pays for the exact test, a copy and a
  * compare of the whole block, which cost about two steps of it: looking at
  * every sixteenth block that way slowed a moving layer by 12-20 %, and so
