@@ -50,6 +50,7 @@ void isk_rest_init(isk_rest *r)
 void isk_rest_free(isk_rest *r)
 {
     free(r->block);
+    free(r->stand_in);
     isk_rest_init(r);
 }
 
@@ -113,7 +114,7 @@ int isk_pipeline_rest_prefix(const isk_pipeline *pl)
  * reach past the particles they describe (and every block after a change
  * of step) wake.  0 when there is nothing to gain or no memory for them:
  * the run then steps every block in full, and nothing is described. */
-static int rest_ready(isk_rest *r, const isk_pipeline *pl, size_t end, double h)
+static int rest_ready(isk_rest *r, const isk_pipeline *pl, size_t end, double h, int workers)
 {
     size_t blocks = (end + ISK_SIM_BLOCK - 1) / ISK_SIM_BLOCK;
     if (!(r->h == h)) /* == on purpose: a bit-identical step, NaN never */
@@ -122,6 +123,16 @@ static int rest_ready(isk_rest *r, const isk_pipeline *pl, size_t end, double h)
     if (isk_pipeline_rest_prefix(pl) == 0 || blocks == 0) {
         r->valid = 0;
         return 0;
+    }
+    if (workers > r->workers) {
+        double *a = calloc((size_t)workers * 2 * ISK_SIM_BLOCK, sizeof *a);
+        if (!a) {
+            r->valid = 0;
+            return 0;
+        }
+        free(r->stand_in);
+        r->stand_in = a;
+        r->workers = workers;
     }
     if (blocks > r->cap) {
         size_t cap = blocks + blocks / 2;
@@ -190,20 +201,19 @@ static unsigned samples_still(isk_block *b, uint64_t sample[2])
     return still;
 }
 
-/* The skipped stages on a block, with the columns of its resting axes
- * (rb->state's) replaced by stand-ins: the stages are per axis
- * (ISK_REST_SKIPPED), so what they make of the stand-ins changes nothing
- * of the other axis, and the resting axis stays as it is.  Looks at it
- * when it is its turn, or when its samples stood still. */
-static void run_skipped(const isk_pipeline *pl, int prefix, isk_block *b, double h, isk_rest_block *rb, int turn)
+/* The skipped stages on a block, with the columns of its resting axis
+ * (rb->state's) replaced by the worker's stand-ins: the stages are per
+ * axis (ISK_REST_SKIPPED), so what they make of the stand-ins changes
+ * nothing of the other axis, and the resting axis stays as it is.  Looks
+ * at it when it is its turn, or when its samples stood still. */
+static void run_skipped(const isk_pipeline *pl, int prefix, isk_block *b, double h, isk_rest_block *rb, int turn,
+                        double *stand_in)
 {
-    double stand_in[2][ISK_SIM_BLOCK];
     const unsigned resting = rb->state & AT_REST;
     if (resting) {
-        memset(stand_in, 0, sizeof stand_in);
         const int a = resting == ISK_REST_X ? 0 : 1;
-        *axis_col(b, a, 0) = stand_in[0];
-        *axis_col(b, a, 1) = stand_in[1];
+        *axis_col(b, a, 0) = stand_in;
+        *axis_col(b, a, 1) = stand_in + ISK_SIM_BLOCK;
         b->frozen = resting;
     }
     if (rb->state & LOOKED_AT) {
@@ -220,13 +230,13 @@ static void run_skipped(const isk_pipeline *pl, int prefix, isk_block *b, double
  * skipped stages only on the axes that do not rest, and looked at when it
  * is the block's turn (phase: the run's). */
 static void run_block(const isk_pipeline *pl, isk_particles *p, size_t o, size_t n, double h, isk_scratch *s,
-                      int prefix, isk_rest_block *rb, size_t phase)
+                      int prefix, isk_rest_block *rb, size_t phase, double *stand_in)
 {
     isk_block b = {p, o, n, p->x + o, p->y + o, p->vx + o, p->vy + o, p->m + o, s, 0};
     int k = 0;
     if (rb) {
         if (rb->state != AT_REST) {
-            run_skipped(pl, prefix, &b, h, rb, (o / ISK_SIM_BLOCK + phase) % REST_LOOK_EVERY == 0);
+            run_skipped(pl, prefix, &b, h, rb, (o / ISK_SIM_BLOCK + phase) % REST_LOOK_EVERY == 0, stand_in);
             b = (isk_block){p, o, n, p->x + o, p->y + o, p->vx + o, p->vy + o, p->m + o, s, 0};
         }
         k = prefix;
@@ -239,20 +249,20 @@ void isk_pipeline_run(const isk_pipeline *pl, isk_particles *p, size_t begin, si
                       isk_scratch *s)
 {
     for (size_t o = begin; o < end; o += ISK_SIM_BLOCK)
-        run_block(pl, p, o, end - o < ISK_SIM_BLOCK ? end - o : ISK_SIM_BLOCK, h, s, 0, NULL, 0);
+        run_block(pl, p, o, end - o < ISK_SIM_BLOCK ? end - o : ISK_SIM_BLOCK, h, s, 0, NULL, 0, NULL);
 }
 
 void isk_pipeline_run_rest(const isk_pipeline *pl, isk_particles *p, size_t end, double h, isk_scratch *s,
                            isk_rest *rest)
 {
-    if (!rest || !rest_ready(rest, pl, end, h)) {
+    if (!rest || !rest_ready(rest, pl, end, h, 1)) {
         isk_pipeline_run(pl, p, 0, end, h, s);
         return;
     }
     const int prefix = isk_pipeline_rest_prefix(pl);
     for (size_t o = 0; o < end; o += ISK_SIM_BLOCK)
         run_block(pl, p, o, end - o < ISK_SIM_BLOCK ? end - o : ISK_SIM_BLOCK, h, s, prefix,
-                  rest->block + o / ISK_SIM_BLOCK, rest->runs % REST_LOOK_EVERY);
+                  rest->block + o / ISK_SIM_BLOCK, rest->runs % REST_LOOK_EVERY, rest->stand_in);
     rest->valid = end;
     rest->runs++;
 }
@@ -266,6 +276,7 @@ typedef struct pool_run {
     int prefix;
     isk_rest_block *block; /* NULL: no blocks at rest; else the record of the block at begin */
     size_t phase;
+    double *stand_in; /* the workers' stand-ins, one after the other */
 } pool_run;
 
 /* Each block's state is its own byte: workers never share one. */
@@ -274,7 +285,8 @@ static void run_item(void *ctx, int worker, size_t item)
     const pool_run *r = ctx;
     size_t o = r->begin + item * ISK_SIM_BLOCK;
     run_block(r->pl, r->p, o, r->end - o < ISK_SIM_BLOCK ? r->end - o : ISK_SIM_BLOCK, r->h,
-              isk_pool_scratch(r->pool, worker), r->prefix, r->block ? r->block + item : NULL, r->phase);
+              isk_pool_scratch(r->pool, worker), r->prefix, r->block ? r->block + item : NULL, r->phase,
+              r->stand_in ? r->stand_in + (size_t)worker * 2 * ISK_SIM_BLOCK : NULL);
 }
 
 static int run_pool(pool_run *r)
@@ -296,17 +308,17 @@ static int run_pool(pool_run *r)
 int isk_pipeline_run_pool(const isk_pipeline *pl, isk_particles *p, size_t begin, size_t end, double h,
                           isk_pool *pool)
 {
-    pool_run r = {pl, p, begin, end, h, pool, 0, NULL, 0};
+    pool_run r = {pl, p, begin, end, h, pool, 0, NULL, 0, NULL};
     return run_pool(&r);
 }
 
 int isk_pipeline_run_pool_rest(const isk_pipeline *pl, isk_particles *p, size_t end, double h, isk_pool *pool,
                                isk_rest *rest)
 {
-    if (!rest || !rest_ready(rest, pl, end, h))
+    if (!rest || !rest_ready(rest, pl, end, h, isk_pool_threads(pool)))
         return isk_pipeline_run_pool(pl, p, 0, end, h, pool);
     pool_run r = {pl, p, 0, end, h, pool, isk_pipeline_rest_prefix(pl), rest->block,
-                  rest->runs % REST_LOOK_EVERY};
+                  rest->runs % REST_LOOK_EVERY, rest->stand_in};
     int nonfinite = run_pool(&r);
     rest->valid = end;
     rest->runs++;

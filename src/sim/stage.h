@@ -193,6 +193,10 @@ typedef struct isk_rest {
     size_t valid;         /* particles [0, valid) are those the states describe */
     double h;             /* the step they were found at */
     size_t runs;          /* runs so far: whose turn it is to be looked at */
+    double *stand_in;     /* per worker, 2 x ISK_SIM_BLOCK: a resting axis's columns while the
+                             other axis steps (zeroed once; what the stages make of them is
+                             never read) */
+    int workers;          /* workers stand_in has room for */
 } isk_rest;
 
 void isk_rest_init(isk_rest *r);
