@@ -200,14 +200,10 @@ Test(rest, threads_give_the_same_bits)
 {
     lists l;
     lists_init(&l);
-    isk_particles ref;
-    store_fill(&ref);
     isk_scratch *s = scratch();
     for (int threads = 2; threads <= 3; threads++) {
-        isk_particles a;
+        isk_particles a, ref;
         store_fill(&a);
-        isk_particles_clear(&ref);
-        isk_particles_free(&ref);
         store_fill(&ref);
         isk_pool *pool;
         cr_assert_eq(isk_pool_create(&pool, threads), ISK_OK);
@@ -222,8 +218,8 @@ Test(rest, threads_give_the_same_bits)
         isk_rest_free(&r);
         isk_pool_destroy(pool);
         isk_particles_free(&a);
+        isk_particles_free(&ref);
     }
-    isk_particles_free(&ref);
     free(s);
 }
 

@@ -112,15 +112,18 @@ int isk_pipeline_rest_prefix(const isk_pipeline *pl)
 
 /* Readies the states for a run over [0, end) with step h: blocks that
  * reach past the particles they describe (and every block after a change
- * of step) wake.  0 when there is nothing to gain or no memory for them:
- * the run then steps every block in full, and nothing is described. */
+ * of step) wake, and after the run the states describe [0, end).  Returns
+ * how many leading stages a block at rest skips; 0 when there is nothing
+ * to gain or no memory for the states: the run then steps every block in
+ * full, and nothing is described. */
 static int rest_ready(isk_rest *r, const isk_pipeline *pl, size_t end, double h, int workers)
 {
     size_t blocks = (end + ISK_SIM_BLOCK - 1) / ISK_SIM_BLOCK;
     if (!(r->h == h)) /* == on purpose: a bit-identical step, NaN never */
         r->valid = 0;
     r->h = h;
-    if (isk_pipeline_rest_prefix(pl) == 0 || blocks == 0) {
+    const int prefix = isk_pipeline_rest_prefix(pl);
+    if (prefix == 0 || blocks == 0) {
         r->valid = 0;
         return 0;
     }
@@ -148,7 +151,8 @@ static int rest_ready(isk_rest *r, const isk_pipeline *pl, size_t end, double h,
      * described, else the whole blocks below the first change */
     size_t kept = r->valid == end ? blocks : (end < r->valid ? end : r->valid) / ISK_SIM_BLOCK;
     memset(r->block + kept, 0, (blocks - kept) * sizeof *r->block); /* awake */
-    return 1;
+    r->valid = end;
+    return prefix;
 }
 
 /* An axis's position and velocity columns in a block. */
@@ -236,8 +240,9 @@ static void run_block(const isk_pipeline *pl, isk_particles *p, size_t o, size_t
     int k = 0;
     if (rb) {
         if (rb->state != AT_REST) {
-            run_skipped(pl, prefix, &b, h, rb, (o / ISK_SIM_BLOCK + phase) % REST_LOOK_EVERY == 0, stand_in);
-            b = (isk_block){p, o, n, p->x + o, p->y + o, p->vx + o, p->vy + o, p->m + o, s, 0};
+            isk_block skipped = b; /* its columns may become stand-ins; b keeps the store's */
+            run_skipped(pl, prefix, &skipped, h, rb, (o / ISK_SIM_BLOCK + phase) % REST_LOOK_EVERY == 0,
+                        stand_in);
         }
         k = prefix;
     }
@@ -255,16 +260,15 @@ void isk_pipeline_run(const isk_pipeline *pl, isk_particles *p, size_t begin, si
 void isk_pipeline_run_rest(const isk_pipeline *pl, isk_particles *p, size_t end, double h, isk_scratch *s,
                            isk_rest *rest)
 {
-    if (!rest || !rest_ready(rest, pl, end, h, 1)) {
+    const int prefix = rest ? rest_ready(rest, pl, end, h, 1) : 0;
+    if (!prefix) {
         isk_pipeline_run(pl, p, 0, end, h, s);
         return;
     }
-    const int prefix = isk_pipeline_rest_prefix(pl);
+    const size_t phase = rest->runs++ % REST_LOOK_EVERY;
     for (size_t o = 0; o < end; o += ISK_SIM_BLOCK)
         run_block(pl, p, o, end - o < ISK_SIM_BLOCK ? end - o : ISK_SIM_BLOCK, h, s, prefix,
-                  rest->block + o / ISK_SIM_BLOCK, rest->runs % REST_LOOK_EVERY, rest->stand_in);
-    rest->valid = end;
-    rest->runs++;
+                  rest->block + o / ISK_SIM_BLOCK, phase, rest->stand_in);
 }
 
 typedef struct pool_run {
@@ -279,7 +283,7 @@ typedef struct pool_run {
     double *stand_in; /* the workers' stand-ins, one after the other */
 } pool_run;
 
-/* Each block's state is its own byte: workers never share one. */
+/* Each block's record is its own: workers never share one. */
 static void run_item(void *ctx, int worker, size_t item)
 {
     const pool_run *r = ctx;
@@ -315,14 +319,11 @@ int isk_pipeline_run_pool(const isk_pipeline *pl, isk_particles *p, size_t begin
 int isk_pipeline_run_pool_rest(const isk_pipeline *pl, isk_particles *p, size_t end, double h, isk_pool *pool,
                                isk_rest *rest)
 {
-    if (!rest || !rest_ready(rest, pl, end, h, isk_pool_threads(pool)))
+    const int prefix = rest ? rest_ready(rest, pl, end, h, isk_pool_threads(pool)) : 0;
+    if (!prefix)
         return isk_pipeline_run_pool(pl, p, 0, end, h, pool);
-    pool_run r = {pl, p, 0, end, h, pool, isk_pipeline_rest_prefix(pl), rest->block,
-                  rest->runs % REST_LOOK_EVERY, rest->stand_in};
-    int nonfinite = run_pool(&r);
-    rest->valid = end;
-    rest->runs++;
-    return nonfinite;
+    pool_run r = {pl, p, 0, end, h, pool, prefix, rest->block, rest->runs++ % REST_LOOK_EVERY, rest->stand_in};
+    return run_pool(&r);
 }
 
 void isk_stage_describe_line(const isk_stage *st, FILE *out)

@@ -57,12 +57,15 @@ static void run_walls(const isk_stage *st, isk_block *b, double h)
     }
     if (!st->u.walls.hit || !b->p->hit) {
         /* a resting axis's columns are stand-ins: its walls have nothing to do */
-        isk_bounds w = *st->u.walls.b;
-        if (b->frozen & ISK_REST_X)
-            w.sides &= ~(unsigned)(ISK_SIDE_LEFT | ISK_SIDE_RIGHT);
-        if (b->frozen & ISK_REST_Y)
-            w.sides &= ~(unsigned)(ISK_SIDE_BOTTOM | ISK_SIDE_TOP);
-        isk_bounds_apply_step(&w, &mo, b->n, b->x, b->y, b->vx, b->vy);
+        const isk_bounds *w = st->u.walls.b;
+        isk_bounds masked;
+        if (b->frozen) {
+            masked = *w;
+            masked.sides &= ~(unsigned)((b->frozen & ISK_REST_X ? ISK_SIDE_LEFT | ISK_SIDE_RIGHT : 0) |
+                                        (b->frozen & ISK_REST_Y ? ISK_SIDE_BOTTOM | ISK_SIDE_TOP : 0));
+            w = &masked;
+        }
+        isk_bounds_apply_step(w, &mo, b->n, b->x, b->y, b->vx, b->vy);
         return;
     }
     /* A sub-emitter's on_hit.  The walls touch only particles that end the
