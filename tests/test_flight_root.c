@@ -42,7 +42,8 @@ static void check(double c0, double U, double a, double k, double t0, double t1,
 {
     const double t = isk_fl_root(c0, U, a, k, t0, t1, NULL), want = root_ref(c0, U, a, k, t0, t1);
     cr_assert(t >= t0 && t <= t1, "%s: %a outside [%a, %a]", what, t, t0, t1);
-    isk_fl_cache cache = {0}; /* through the cache, seeded with an end's basis as bounds.c does: the same bits */
+    isk_fl_cache cache;
+    isk_fl_cache_clear(&cache); /* through the cache, seeded with an end's basis as bounds.c does: the same bits */
     double e, d1, d2;
     isk_fl_basis_cached(&cache, k, t1, &e, &d1, &d2);
     const double tc = isk_fl_root(c0, U, a, k, t0, t1, &cache);

@@ -254,6 +254,28 @@ static double hit_time(double c0, double U, double a, double k, double s, double
     return isk_fl_root(c0, U, a, k, 0.0, s, cache);
 }
 
+/* Whether the turning point of the flight (P, U, a) may lie outside
+ * [lo, hi]: 0 only when it surely lies inside, so that a step whose end
+ * is inside needs neither the turning time (a log1p) nor the point (a
+ * basis) to know that it hit nothing.  A turning point exists only when U
+ * and a have opposite signs (isk_fl_turn), and lies on a's side of P at
+ * a distance between U^2 / (2 (|a| + k|U|)) (the deceleration is at most
+ * that) and U^2 / (2|a|) (drag only shortens the flight): the first, when
+ * it is well above the rounding of P + U D1 + a D2, keeps the computed
+ * point off P's other side, and the second plus the same margin bounds it
+ * on a's side.  Where either is not clear, the caller computes the point
+ * as it always did: the bits are the same either way. */
+static int turn_may_leave(double P, double U, double a, double k, double lo, double hi)
+{
+    if (!(U * a < 0.0))
+        return 0; /* no turning point: isk_fl_turn's -1 */
+    const double reach = U * U / (2.0 * fabs(a)), least = U * U / (2.0 * (fabs(a) + k * fabs(U)));
+    const double margin = 0x1p-30 * (fabs(P) + reach);
+    if (!(least > margin))
+        return 1;
+    return a < 0.0 ? !(P + reach + margin < hi) : !(P - reach - margin > lo);
+}
+
 /* How an axis's flight in the step is known (iskra/impact.h): from the
  * start state (p0, v0), or (start == NULL) from the end state with the
  * constant acceleration a and the integrator's velocity offset delta. */
@@ -324,6 +346,8 @@ static int impact_axis(double *pos, double *vel, const axis_motion *am, size_t i
     double s = h, end = p1, uend = v1 - delta;
     int last = 0, same = 0;
     for (int n = 0;; n++) {
+        if (end >= lo && end <= hi && !turn_may_leave(P, U, a, k, lo, hi))
+            break; /* what the tests below would find, without the turning point */
         double t_turn = isk_fl_turn(U, a, k), p_turn = P;
         const int turn_in = t_turn > 0.0 && t_turn < s;
         if (turn_in) {
@@ -612,7 +636,7 @@ static void impact_group(size_t o, size_t n, double *restrict x, double *restric
     need_x = screen_rests(o, n, x, vx, &iw->mx, iw, w->left, w->right, need_x, &memo[0]);
     need_y = screen_rests(o, n, y, vy, &iw->my, iw, w->bottom, w->top, need_y, &memo[1]);
     isk_fl_cache cache; /* the group's basis values (flight.h) */
-    cache.n = cache.next = 0;
+    isk_fl_cache_clear(&cache);
     for (uint32_t b = need_x | need_y; b; b &= b - 1) {
         const unsigned j = lowest_bit(b);
         const size_t i = o + j;

@@ -333,7 +333,7 @@ static double flight_hit(const flight *f, const seg *s, double t_chord)
     double un = sg * (s->nx * f->ux + s->ny * f->uy), an = sg * (s->nx * f->ax + s->ny * f->ay);
     double e, d1, d2;
     isk_fl_cache cache; /* the root solve asks for f_end's and t_turn's times again */
-    cache.n = cache.next = 0;
+    isk_fl_cache_clear(&cache);
     isk_fl_basis_cached(&cache, f->k, f->s, &e, &d1, &d2);
     double f_end = c0 + un * d1 + an * d2;
     double t_turn = isk_fl_turn(un, an, f->k);

@@ -2,6 +2,7 @@
 #include "sim/flight.h"
 
 #include <math.h>
+#include <stddef.h>
 
 double isk_fl_phi2_series(double h)
 {
@@ -18,17 +19,12 @@ double isk_fl_phi2_series(double h)
 
 void isk_fl_basis(double k, double t, double *e, double *d1, double *d2)
 {
-    if (!(k > 0.0) || t == 0.0) {
-        *e = 1.0;
-        *d1 = t;
-        *d2 = 0.5 * t * t;
-        return;
-    }
-    double z = k * t;
-    if (z < ISK_FL_SERIES_MAX) {
-        isk_fl_basis_series(z, t, e, d1, d2);
-        return;
-    }
+    isk_fl_basis_inline(k, t, e, d1, d2);
+}
+
+void isk_fl_basis_slow(double k, double t, double *e, double *d1, double *d2)
+{
+    const double z = k * t;
     double em = expm1(-z); /* e^-z - 1, accurate for small z */
     *e = 1.0 + em;
     *d1 = -em / k;
@@ -60,7 +56,7 @@ void isk_fl_from_end(double p1, double v1, double a, double k, double h, double 
                      double *P, double *U)
 {
     double e, d1, d2;
-    isk_fl_basis_cached(cache, k, h, &e, &d1, &d2);
+    isk_fl_basis_step(cache, k, h, &e, &d1, &d2);
     /* u(h) = U e + a D1 = v1 - delta;  p(h) = P + U D1 + a D2 = p1 */
     double u0 = ((v1 - delta) - a * d1) / e;
     *U = u0;
@@ -77,7 +73,8 @@ double isk_fl_turn(double U, double a, double k)
     return log1p(-k * U / a) / k;
 }
 
-/* f(t), f'(t) = u(t) and f''(t) = u'(t) = e (a - k U). */
+/* f(t), f'(t) = u(t) and f''(t) = u'(t) = e (a - k U); the basis through
+ * the cache c, or (c NULL) computed. */
 static double f_at(isk_fl_cache *c, double c0, double U, double a, double k, double t, double *fp, double *fpp)
 {
     double e, d1, d2;
@@ -138,12 +135,13 @@ double isk_fl_root(double c0, double U, double a, double k, double t0, double t1
      * step is taken without evaluating f once more to confirm it.  Two
      * evaluations a root instead of Newton's four. */
     double lo = t0, hi = t1;
-    t = lo + (hi - lo) * (fa / (fa - fb)); /* regula falsi start */
     double tq;
     if (quadratic_root(c0, U, a, t0, t1, &tq) && tq > lo && tq < hi)
         t = tq;
+    else
+        t = lo + (hi - lo) * (fa / (fa - fb)); /* regula falsi start */
     for (int it = 0; it < 200; it++) {
-        double f = f_at(cache, c0, U, a, k, t, &fp, &fpp);
+        double f = f_at(NULL, c0, U, a, k, t, &fp, &fpp); /* an iterate: never asked for again */
         if (f == 0.0)
             return t; /* on the root (bisecting on from it cost ~25 more steps) */
         if (f > 0.0)

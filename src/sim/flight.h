@@ -62,26 +62,66 @@ double isk_fl_phi2_series(double h);
 void isk_fl_fit(double p0, double v0, double p1, double v1, double k, double h, double *U, double *a,
                 double *delta);
 
+/* isk_fl_basis, inline but for the expm1 branch (k t >= ISK_FL_SERIES_MAX):
+ * the same branches and operations, so the same bits.  The walls' bounce
+ * solve asks for a basis ten times a hopping particle: as calls, every
+ * double it keeps live was spilled around each (the SysV ABI saves no xmm
+ * register). */
+void isk_fl_basis_slow(double k, double t, double *e, double *d1, double *d2);
+static inline void isk_fl_basis_inline(double k, double t, double *e, double *d1, double *d2)
+{
+    if (!(k > 0.0) || t == 0.0) {
+        *e = 1.0;
+        *d1 = t;
+        *d2 = 0.5 * t * t;
+        return;
+    }
+    const double z = k * t;
+    if (z < ISK_FL_SERIES_MAX)
+        isk_fl_basis_series(z, t, e, d1, d2);
+    else
+        isk_fl_basis_slow(k, t, e, d1, d2);
+}
+
 /* The last few isk_fl_basis(k, t) asked for, for the walls of one group of
- * particles: they mostly share one mass, so the reconstruction of their
- * flights over the same step needs one basis, not one each; and a bounce
- * asks for the same time more than once (the turning point, then the root
- * solve's bracket end there; the step that found the hit, then the
- * velocity at it).  A pure function, so the values are the ones a new call
- * would give.  Empty: n = next = 0 (the arrays need no clearing). */
+ * particles: a bounce asks for the same time more than once (the turning
+ * point, then the root solve's bracket end there; the rest of the step
+ * after a hit, for the end state and then as the next root solve's
+ * bracket end).  Beside them, pinned, the basis over the whole step
+ * (isk_fl_from_end's): the particles of a group mostly share one mass, so
+ * their flights over the step need one basis, not one each, and the four
+ * times each bounce brings would otherwise evict it before the next
+ * particle.  t = 0 and the root solve's own iterates are never looked up
+ * nor kept: the first is free, the others never asked for again.  A pure
+ * function, so the values are the ones a new call would give.  Empty:
+ * isk_fl_cache_clear (the arrays need no clearing). */
 enum { ISK_FL_CACHE = 4 };
 typedef struct isk_fl_cache {
     double k[ISK_FL_CACHE], t[ISK_FL_CACHE], e[ISK_FL_CACHE], d1[ISK_FL_CACHE], d2[ISK_FL_CACHE];
     int n, next;
+    double step_k, step_t, step_e, step_d1, step_d2; /* the pinned entry, when step_set */
+    int step_set;
 } isk_fl_cache;
 
-/* isk_fl_basis through the cache (NULL: none).  Inline: a bounce asks
- * seven or eight times, and as calls the lookups cost a tenth of a
- * settled floor's update. */
+static inline void isk_fl_cache_clear(isk_fl_cache *c)
+{
+    c->n = c->next = 0;
+    c->step_set = 0;
+}
+
+/* isk_fl_basis through the cache (NULL: none), kept in the ring.
+ * Inline: a bounce asks seven or eight times, and as calls the lookups
+ * cost a tenth of a settled floor's update. */
 static inline void isk_fl_basis_cached(isk_fl_cache *c, double k, double t, double *e, double *d1, double *d2)
 {
-    if (!c) {
-        isk_fl_basis(k, t, e, d1, d2);
+    if (!c || t == 0.0) {
+        isk_fl_basis_inline(k, t, e, d1, d2);
+        return;
+    }
+    if (c->step_set && c->step_t == t && c->step_k == k) {
+        *e = c->step_e;
+        *d1 = c->step_d1;
+        *d2 = c->step_d2;
         return;
     }
     for (int i = 0; i < c->n; i++)
@@ -91,7 +131,7 @@ static inline void isk_fl_basis_cached(isk_fl_cache *c, double k, double t, doub
             *d2 = c->d2[i];
             return;
         }
-    isk_fl_basis(k, t, e, d1, d2);
+    isk_fl_basis_inline(k, t, e, d1, d2);
     const int i = c->next;
     c->k[i] = k;
     c->t[i] = t;
@@ -101,6 +141,25 @@ static inline void isk_fl_basis_cached(isk_fl_cache *c, double k, double t, doub
     c->next = (i + 1) % ISK_FL_CACHE;
     if (c->n < ISK_FL_CACHE)
         c->n++;
+}
+
+/* isk_fl_basis through the cache's pinned entry (the step's), which it
+ * replaces when (k, t) is another. */
+static inline void isk_fl_basis_step(isk_fl_cache *c, double k, double t, double *e, double *d1, double *d2)
+{
+    if (!c) {
+        isk_fl_basis_inline(k, t, e, d1, d2);
+        return;
+    }
+    if (!(c->step_set && c->step_t == t && c->step_k == k)) {
+        isk_fl_basis_inline(k, t, &c->step_e, &c->step_d1, &c->step_d2);
+        c->step_k = k;
+        c->step_t = t;
+        c->step_set = 1;
+    }
+    *e = c->step_e;
+    *d1 = c->step_d1;
+    *d2 = c->step_d2;
 }
 
 /* The flight of one axis that ends at (p1, v1) after h with acceleration
