@@ -20,7 +20,9 @@
  * changes from minute to minute.  So each row is followed by a control,
  * a job of pure arithmetic (no memory) on 1 thread and on each thread count
  * at once, after every row: "cores given" is how many cores' worth of work
- * the machine did, and a row's speedup can only be read against it.
+ * the machine did, and a row's speedup can only be read against it;
+ * "memory given" is the same for a pass over arrays beyond the caches,
+ * the most a row whose update is bound by memory can gain there.
  *
  *     build/bench/bench_frame            every size, and 10^6 settled on the floor and at rest
  *     build/bench/bench_frame --quick    10^5 and 10^6 only */
@@ -97,11 +99,91 @@ static double cores_given(int threads)
     return all > 0 ? started * one / all : 0;
 }
 
+/* The same for memory: a semi-implicit Euler step with drag over five
+ * columns of 2*10^6 (x, y, vx, vy, m: 80 MB, beyond the caches; five
+ * streams read and four written, as the update's), on one thread and then
+ * shared out over `threads`: how much more bandwidth that many threads get
+ * than one for the update's pattern.  A row whose update is bound by memory
+ * (a falling layer of 10^6 moves 72 MB a step) can speed up by that much
+ * at most, however many cores it is given.  (A pass over two columns gets
+ * more from a second thread: one thread alone cannot keep enough misses in
+ * flight on two streams, while the update's nine let it take most of the
+ * memory's bandwidth by itself.) */
+enum { MEM_N = 2000000, MEM_COLS = 5 };
+typedef struct mem_share {
+    double *col[MEM_COLS];
+    size_t lo, hi;
+} mem_share;
+
+static void *memory_pass(void *arg)
+{
+    mem_share *s = arg;
+    double *restrict x = s->col[0], *restrict y = s->col[1], *restrict vx = s->col[2], *restrict vy = s->col[3];
+    const double *restrict m = s->col[4];
+    const double h = 1.0 / 60, g = -9.81, b = 0.3;
+    for (size_t i = s->lo; i < s->hi; i++) {
+        const double k = b * m[i]; /* m read as 1/m: no division to bound the pass */
+        vx[i] -= h * k * vx[i];
+        vy[i] += h * (g - k * vy[i]);
+        x[i] += h * vx[i];
+        y[i] += h * vy[i];
+    }
+    return NULL;
+}
+
+/* One pass over the columns shared out over `threads`: seconds, or a
+ * negative number when a thread could not be started. */
+static double memory_pass_time(double **col, int threads)
+{
+    pthread_t t[64];
+    mem_share s[64];
+    int started = 0;
+    const int n = threads < 64 ? threads : 64;
+    const double t0 = bench_now();
+    for (int k = 0; k < n; k++) {
+        memcpy(s[k].col, col, sizeof s[k].col);
+        s[k].lo = (size_t)MEM_N * (size_t)k / (size_t)n;
+        s[k].hi = (size_t)MEM_N * (size_t)(k + 1) / (size_t)n;
+    }
+    for (int k = 1; k < n; k++)
+        started += pthread_create(&t[k], NULL, memory_pass, &s[k]) == 0;
+    memory_pass(&s[0]);
+    for (int k = 1; k <= started; k++)
+        pthread_join(t[k], NULL);
+    return started == n - 1 ? bench_now() - t0 : -1.0;
+}
+
+/* The best of seven passes each way, one thread and `threads` in turn (a
+ * pass takes a millisecond or two: fewer let the machine's load decide). */
+static double memory_given(int threads)
+{
+    double *col[MEM_COLS] = {NULL};
+    int ok = 1;
+    for (int c = 0; c < MEM_COLS; c++) {
+        col[c] = malloc(MEM_N * sizeof *col[c]);
+        ok = ok && col[c];
+        for (size_t i = 0; col[c] && i < MEM_N; i++)
+            col[c][i] = 1.0;
+    }
+    double one = 1e30, all = 1e30;
+    for (int rep = 0; ok && rep < 7; rep++) {
+        const double t1 = memory_pass_time(col, 1), tn = memory_pass_time(col, threads);
+        one = t1 > 0 && t1 < one ? t1 : one;
+        all = tn > 0 && tn < all ? tn : all;
+    }
+    for (int c = 0; c < MEM_COLS; c++)
+        free(col[c]);
+    return ok && one < 1e30 && all < 1e30 ? one / all : 0;
+}
+
 static void print_control(const int *tc, int nt)
 {
     printf("%-8s %9s  control: cores given", "", "");
     for (int t = 1; t < nt; t++)
         printf("  %d threads: %.2f", tc[t], cores_given(tc[t]));
+    printf(";  memory given");
+    for (int t = 1; t < nt; t++)
+        printf("  %d threads: %.2f", tc[t], memory_given(tc[t]));
     printf("\n");
 }
 
