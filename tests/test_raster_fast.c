@@ -407,7 +407,9 @@ Test(raster_fast, bands_of_rows_equal_the_whole_batch)
         }
         isk_color col = rnd_color(&r);
         isk_blend mode = MODES[isk_rng_below(&r, 3)];
-        isk__batch_rule rule = (isk__batch_rule)isk_rng_below(&r, 3);
+        /* every rule, kept on the canvas or not (the banded pixels select
+         * their rows with keep applied, the whole batch without a select) */
+        const unsigned rule = (unsigned)isk_rng_below(&r, 3) | (isk_rng_below(&r, 2) ? ISK__BATCH_KEEP_ON_CANVAS : 0u);
         isk__draw_batch_rows(&p.c[0], &v, m, x, y, col, mode, rule, 0, h);
         /* up to 6 cuts (repeats make empty bands), bands drawn last to first */
         int cut[8], nc = 0;

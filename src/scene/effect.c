@@ -172,6 +172,7 @@ isk_status isk_effect_create(isk_effect **out, const isk_effect_def *def, isk_er
     isk_effect *e = calloc(1, sizeof *e);
     if (!e)
         return isk_error_set(err, ISK_ERR_NOMEM, "effect: out of memory");
+    e->band_min_work = FX_BAND_MIN_WORK;
     s = fx_def_copy(&e->def, def);
     if (s != ISK_OK) {
         free(e);

@@ -20,9 +20,19 @@
 #include "sim/pool.h"
 #include "view/world_batch.h"
 
-/* Below this many particles a group is drawn on the caller alone (the
- * threads' start costs more than they save). */
-#define FX_BAND_MIN_PARTICLES 16384
+/* Below FX_BAND_MIN_WORK (effect_internal.h) a group is drawn on the
+ * caller alone: a second band costs a fixed part (waking a thread, placing
+ * the cuts, and above all the canvas's lines, which the caller's clear
+ * left in its own caches and the other thread must fetch from there) and
+ * the scan every band makes of the store, and below that much work they
+ * cost more than the second core saves.  Measured on two threads, the
+ * whole frame's draw after the caller's clear (bench_layer.h's layer,
+ * 2026-12-04): coverage dots 0.52x at 2*10^4, 0.81-0.92x at 5*10^4-10^5,
+ * 0.98-0.99x at 1.5-2*10^5, 1.1-1.75x at 3*10^5, 1.3-1.9x at 10^6; single
+ * pixels (a third of a dot's work) 0.28x at 2*10^4, 0.88x at 3*10^5, 1.09x
+ * at 10^6; 8 px sprites (about ten dots' work, reading the store whole on
+ * every band) 1.00x at 10^4, 1.13x at 2*10^4, 1.24x at 4*10^4.  Counted
+ * in dots, each draw's crossing point lies near 2*10^5. */
 /* Particles sampled to place the cuts. */
 #define FX_BAND_SAMPLES 1024
 /* isk__batch_bin's codes hold band numbers up to 254. */
@@ -214,10 +224,12 @@ static int sort_into_bands(band_job *j)
     return ok;
 }
 
-isk_status fx_draw_bands(isk_effect *e, isk_canvas *c, fx_group *g, const fx_band *whole, unsigned can)
+isk_status fx_draw_bands(isk_effect *e, isk_canvas *c, fx_group *g, const fx_band *whole, unsigned can,
+                         double dots_each)
 {
     const int threads = e->pool ? isk_pool_threads(e->pool) : 1;
-    if (threads < 2 || g->store.count < FX_BAND_MIN_PARTICLES || c->height < 2 * threads)
+    if (threads < 2 || (double)g->store.count * dots_each < e->band_min_work || g->store.count == 0 ||
+        c->height < 2 * threads)
         return g->draw(e, c, g, whole);
     band_job *j = calloc(1, sizeof *j);
     if (!j) /* the draw itself needs no memory: do it on one thread */

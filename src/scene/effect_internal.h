@@ -162,6 +162,9 @@ struct isk_effect {
     isk_scratch scratch;           /* for the caller's own block runs (births) */
     struct isk_pool *pool;         /* the threads the groups' pipelines run on */
     int no_rest;                   /* 1: no block rests, every stage runs (the tests' reference) */
+    double band_min_work;          /* a group's draw is shared out over the threads only from this much
+                                      work, in batched coverage dots (FX_BAND_MIN_WORK; the tests that
+                                      compare thread counts set 0, so every size is cut into bands) */
     isk_sinlut sin_table;
     double time;
     long frame;
@@ -235,14 +238,19 @@ double fx_prewarm_frames(const isk_effect_def *d, const isk_emitter_def *em);
 isk_status fx_render(isk_effect *e, isk_canvas *c);
 fx_draw_fn fx_choose_draw(const fx_group *g);
 /* effect_bands.c: g->draw over the canvas, in bands of rows on the
- * effect's threads when the group is big (whole: the band of the canvas,
- * with anything prepared for the draw). */
+ * effect's threads when the group's draw is worth it (whole: the band of
+ * the canvas, with anything prepared for the draw; dots_each: what a
+ * particle's draw costs, in batched coverage dots: fx_draw_cost). */
 /* What a group's draw function can take (fx_draw_bands): its particles
  * sorted into bands of rows first (dots and pixels, which reach at most a
  * row beyond their own), bands of columns instead of rows (the batched
  * dots: a scene settled on its floor has its particles on one row). */
 enum { FX_BANDS_SORT = 1, FX_BANDS_COLUMNS = 2 };
-isk_status fx_draw_bands(isk_effect *e, isk_canvas *c, fx_group *g, const fx_band *whole, unsigned can);
+isk_status fx_draw_bands(isk_effect *e, isk_canvas *c, fx_group *g, const fx_band *whole, unsigned can,
+                         double dots_each);
+/* Below this much work a group's draw runs on the caller alone, in batched
+ * coverage dots (effect_bands.c says how it was measured). */
+#define FX_BAND_MIN_WORK 200000.0
 void fx_bins_free(fx_bins *b);
 isk_status fx_bake_ramps(fx_group *g, isk_error *err);
 void fx_free_ramps(fx_group *g);

@@ -359,6 +359,23 @@ fx_draw_fn fx_choose_draw(const fx_group *g)
     }
 }
 
+/* What a particle of g costs to draw on one thread, in batched coverage
+ * dots (8-9 ns each here): fx_draw_bands shares a draw out over the
+ * threads only when the whole is worth it.  Measured on one thread
+ * (bench_layer.h's layer, 2026-12-04): a batched single pixel 3.6-5 ns,
+ * but its bands gain least (every band scans the store for a pixel's
+ * worth of work), so it counts for a third; an 8 px sprite 42-45 ns, and
+ * textures and per-particle colours (a screen transform, a style and a
+ * kernel call each) at least as much.  Those count for ten: their bands
+ * gained from 2*10^4 sprites on (1.13x; 1.00x at 10^4), where the dots'
+ * bands gain from 2*10^5. */
+static double draw_cost(const fx_group *g)
+{
+    if (g->draw == draw_dots)
+        return g->def->draw == ISK_DRAW_PIXEL ? 1.0 / 3.0 : 1.0;
+    return 10.0;
+}
+
 /* A group's draw: on the effect's threads in bands when it can be cut
  * (discs cannot: their kernel has no band form). */
 static isk_status render_group(isk_effect *e, isk_canvas *c, fx_group *g)
@@ -381,7 +398,7 @@ static isk_status render_group(isk_effect *e, isk_canvas *c, fx_group *g)
      * own particles; sprites reach far and read them all */
     const unsigned can = (g->draw != draw_sprites && g->draw != fx_draw_textures ? FX_BANDS_SORT : 0u) |
                          (g->draw == draw_dots ? FX_BANDS_COLUMNS : 0u);
-    return fx_draw_bands(e, c, g, &whole, can);
+    return fx_draw_bands(e, c, g, &whole, can, draw_cost(g));
 }
 
 isk_status fx_render(isk_effect *e, isk_canvas *c)
