@@ -109,6 +109,12 @@ static inline void isk_fl_cache_clear(isk_fl_cache *c)
     c->step_set = 0;
 }
 
+/* Whether the pinned entry holds (k, t). */
+static inline int isk_fl_cache_step_is(const isk_fl_cache *c, double k, double t)
+{
+    return c->step_set && c->step_t == t && c->step_k == k;
+}
+
 /* isk_fl_basis through the cache (NULL: none), kept in the ring.
  * Inline: a bounce asks seven or eight times, and as calls the lookups
  * cost a tenth of a settled floor's update. */
@@ -118,7 +124,7 @@ static inline void isk_fl_basis_cached(isk_fl_cache *c, double k, double t, doub
         isk_fl_basis_inline(k, t, e, d1, d2);
         return;
     }
-    if (c->step_set && c->step_t == t && c->step_k == k) {
+    if (isk_fl_cache_step_is(c, k, t)) {
         *e = c->step_e;
         *d1 = c->step_d1;
         *d2 = c->step_d2;
@@ -151,7 +157,7 @@ static inline void isk_fl_basis_step(isk_fl_cache *c, double k, double t, double
         isk_fl_basis_inline(k, t, e, d1, d2);
         return;
     }
-    if (!(c->step_set && c->step_t == t && c->step_k == k)) {
+    if (!isk_fl_cache_step_is(c, k, t)) {
         isk_fl_basis_inline(k, t, &c->step_e, &c->step_d1, &c->step_d2);
         c->step_k = k;
         c->step_t = t;

@@ -76,12 +76,19 @@ void isk_rest_wake_dying(isk_rest *r, const isk_particles *p)
     }
 }
 
+/* How many leading blocks of a store of `count` particles the states still
+ * describe: all of them when those are the particles described, else the
+ * whole blocks below the first change (a partial last block only when it
+ * is the one they describe). */
+static size_t described_blocks(const isk_rest *r, size_t count)
+{
+    return count == r->valid ? (count + ISK_SIM_BLOCK - 1) / ISK_SIM_BLOCK
+                             : (count < r->valid ? count : r->valid) / ISK_SIM_BLOCK;
+}
+
 size_t isk_rest_blocks(const isk_rest *r, size_t count, unsigned axes)
 {
-    /* the blocks the states describe: a partial last one only when it is
-     * the one they describe */
-    size_t n = 0, blocks = count == r->valid ? (count + ISK_SIM_BLOCK - 1) / ISK_SIM_BLOCK
-                                             : (count < r->valid ? count : r->valid) / ISK_SIM_BLOCK;
+    size_t n = 0, blocks = described_blocks(r, count);
     for (size_t k = 0; k < blocks && k < r->cap; k++)
         n += (r->block[k].state & axes) == axes;
     return n;
@@ -147,9 +154,7 @@ static int rest_ready(isk_rest *r, const isk_pipeline *pl, size_t end, double h,
         r->block = a;
         r->cap = cap;
     }
-    /* the blocks unchanged: all of them when the particles are those
-     * described, else the whole blocks below the first change */
-    size_t kept = r->valid == end ? blocks : (end < r->valid ? end : r->valid) / ISK_SIM_BLOCK;
+    const size_t kept = described_blocks(r, end); /* the others wake */
     memset(r->block + kept, 0, (blocks - kept) * sizeof *r->block); /* awake */
     r->valid = end;
     return prefix;
