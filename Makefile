@@ -41,7 +41,7 @@ endif
 ifeq ($(SANITIZE),1)
 BUILD   ?= build-san
 SANFLAGS := -fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer
-OPT     ?= -O1 -g
+OPT     ?= -O1 $(DEBUG_INFO)
 else ifeq ($(SANITIZE),clang)
 # clang's UBSan also checks float -> integer conversions that overflow
 # (gcc's -fsanitize=undefined has no float-cast-overflow) and integer
@@ -50,13 +50,13 @@ BUILD   ?= build-clang
 override CC := clang
 SANFLAGS := -fsanitize=address,undefined,float-cast-overflow,integer-divide-by-zero \
             -fno-sanitize-recover=all -fno-omit-frame-pointer
-OPT     ?= -O1 -g
+OPT     ?= -O1 $(DEBUG_INFO)
 else ifeq ($(SANITIZE),thread)
 # ThreadSanitizer for what runs on several threads (CI runs the threaded
 # check with it: make threads-check SANITIZE=thread).
 BUILD   ?= build-tsan
 SANFLAGS := -fsanitize=thread -fno-omit-frame-pointer
-OPT     ?= -O1 -g
+OPT     ?= -O1 $(DEBUG_INFO)
 else ifeq ($(NATIVE),1)
 # Opt-in: every loop compiled for this CPU's vector units.  The bits stay
 # those of the portable build (-ffp-contract=off: no FMA; no
@@ -64,11 +64,11 @@ else ifeq ($(NATIVE),1)
 # reference images.  Not portable to older CPUs: for local use.
 BUILD   ?= build-native
 SANFLAGS := -march=native
-OPT     ?= -O3 -g $(GCC_SCHEDULE)
+OPT     ?= -O3 $(DEBUG_INFO) $(GCC_SCHEDULE)
 else
 BUILD   ?= build
 SANFLAGS :=
-OPT     ?= -O3 -g $(GCC_SCHEDULE)
+OPT     ?= -O3 $(DEBUG_INFO) $(GCC_SCHEDULE)
 endif
 
 # gcc's first scheduling pass, off by default on x86: it interleaves
@@ -80,6 +80,13 @@ endif
 # keeps it from spilling registers.  Not a clang flag.
 GCC_IS := $(shell $(CC) --version 2>/dev/null | grep -i 'free software foundation')
 GCC_SCHEDULE := $(if $(GCC_IS),-fschedule-insns -fsched-pressure)
+
+# Debug information, without gcc's tracking of where each variable lives at
+# each instruction (var-tracking-assignments): that pass took half the
+# compile time of the batched-drawing kernels (src/view/world_batch.c, 51 ->
+# 25 s alone) and a fifth of CI's builds.  -g never changes the code, so
+# the bits are the same; a debugger shows fewer locals in optimized frames.
+DEBUG_INFO := -g $(if $(GCC_IS),-fno-var-tracking-assignments)
 
 # gcc's loop distribution finds the copies of the start state that the
 # fused motion loops store as they read (src/sim/motion_fused.c) and hoists

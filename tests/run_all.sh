@@ -1,6 +1,17 @@
 #!/bin/sh
-# Runs every test binary in $BUILD/tests from the repository root and prints
-# one closing line "N passed, N failed" (tests counted across binaries).
+# Runs every test binary in $BUILD/tests from the repository root, and the
+# checks that are programs or scripts (threads_check, cxx_link, the header
+# examples, the install check), and prints one closing line
+# "N passed, N failed" (tests counted across binaries).
+#
+# The jobs run ISKRA_TEST_JOBS at a time (default: the online cores).
+# Criterion already spreads one binary's tests over the cores, but many
+# binaries are a few long tests, so one binary at a time left a core idle
+# about a third of the run.  Each job writes its own log and result; they are
+# reported in one fixed order whatever finished first.  No two binaries share
+# a scratch directory (each writes under out/<its name>), which is what lets
+# them run together.  The install check runs alone at the end: it calls make.
+#
 # Set ISKRA_TEST_FILTER to a Criterion --filter pattern to run a subset.
 set -u
 BUILD=${BUILD:-build}
@@ -12,71 +23,87 @@ if [ -f tests/lsan.supp ]; then
     export LSAN_OPTIONS="suppressions=$(pwd)/tests/lsan.supp:print_suppressions=0"
 fi
 export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
-passed=0; failed=0; bad_bins=""
-log=$(mktemp); trap 'rm -f "$log"' EXIT
-for t in "$BUILD"/tests/test_*; do
-    [ -x "$t" ] || continue
-    name=$(basename "$t")
+
+# run_all.sh --job DIR NAME: runs one job, writes DIR/NAME.log and
+# DIR/NAME.res ("passed failed seconds exit-status summary").
+if [ "${1:-}" = --job ]; then
+    dir=$2; name=$3; log="$dir/$name.log"
     t0=$(date +%s.%N)
-    if [ -n "${ISKRA_TEST_FILTER:-}" ]; then
-        "$t" --filter="$ISKRA_TEST_FILTER" >"$log" 2>&1; rc=$?
-    else
-        "$t" >"$log" 2>&1; rc=$?
-    fi
+    case $name in
+    test_*)
+        if [ -n "${ISKRA_TEST_FILTER:-}" ]; then
+            "$BUILD/tests/$name" --filter="$ISKRA_TEST_FILTER" >"$log" 2>&1; rc=$?
+        else
+            "$BUILD/tests/$name" >"$log" 2>&1; rc=$?
+        fi ;;
+    threads_check | cxx_link) "$BUILD/tests/$name" >"$log" 2>&1; rc=$? ;;
+    header_examples) BUILD="$BUILD" sh tests/header_examples.sh >"$log" 2>&1; rc=$? ;;
+    install_check) sh tests/install_check.sh >"$log" 2>&1; rc=$? ;;
+    *) echo "run_all.sh: no job $name" >"$log"; rc=2 ;;
+    esac
     secs=$(echo "$t0 $(date +%s.%N)" | awk '{printf "%.1f", $2 - $1}')
-    syn=$(grep -a "Synthesis:" "$log" | tail -n 1)
-    # [====] Synthesis: Tested: 12 | Passing: 12 | Failing: 0 | Crashing: 0
-    tested=$(echo "$syn" | sed -n 's/.*Tested: \([0-9]*\).*/\1/p')
-    passing=$(echo "$syn" | sed -n 's/.*Passing: \([0-9]*\).*/\1/p')
-    tested=${tested:-0}; passing=${passing:-0}
-    fails=$((tested - passing))
+    case $name in
+    test_*)
+        # [====] Synthesis: Tested: 12 | Passing: 12 | Failing: 0 | Crashing: 0
+        syn=$(grep -a "Synthesis:" "$log" | tail -n 1)
+        tested=$(echo "$syn" | sed -n 's/.*Tested: \([0-9]*\).*/\1/p')
+        passing=$(echo "$syn" | sed -n 's/.*Passing: \([0-9]*\).*/\1/p')
+        tested=${tested:-0}; passing=${passing:-0}
+        fails=$((tested - passing))
+        what="$passing tests" ;;
+    header_examples)
+        if [ "$rc" -eq 0 ]; then passing=1; else passing=0; fi; fails=0
+        what=$(tail -n 1 "$log" | sed 's/.*: //') ;;
+    *)
+        if [ "$rc" -eq 0 ]; then passing=1; else passing=0; fi; fails=0
+        what="" ;;
+    esac
     if [ "$rc" -ne 0 ] && [ "$fails" -eq 0 ]; then fails=1; fi
-    passed=$((passed + passing)); failed=$((failed + fails))
-    if [ "$fails" -ne 0 ]; then
-        bad_bins="$bad_bins $name"
-        echo "---- $name (exit $rc, $secs s) ----"; cat "$log"
-    else
-        echo "ok   $name: $passing tests ($secs s)"
-    fi
+    echo "$passing $fails $secs $rc $what" >"$dir/$name.res"
+    exit 0
+fi
+
+jobs=${ISKRA_TEST_JOBS:-$(nproc 2>/dev/null || echo 1)}
+case $jobs in '' | *[!0-9]* | 0) echo "ISKRA_TEST_JOBS: a whole number of at least 1, not '$jobs'" >&2; exit 2 ;; esac
+dir=$(mktemp -d); trap 'rm -rf "$dir"' EXIT
+list="$dir/jobs"
+: >"$list"
+for t in "$BUILD"/tests/test_*; do
+    [ -x "$t" ] && basename "$t" >>"$list"
 done
-# Threads never change a byte (a plain program; CI also runs it under TSan).
-if [ -x "$BUILD/tests/threads_check" ] && [ -z "${ISKRA_TEST_FILTER:-}" ]; then
-    if "$BUILD/tests/threads_check" >"$log" 2>&1; then
-        passed=$((passed + 1)); echo "ok   threads_check"
-    else
-        failed=$((failed + 1)); bad_bins="$bad_bins threads_check"
-        echo "---- threads_check ----"; cat "$log"
-    fi
-fi
-# Every public header as C++ (built by the Makefile with the C++ compiler).
-if [ -x "$BUILD/tests/cxx_link" ] && [ -z "${ISKRA_TEST_FILTER:-}" ]; then
-    if "$BUILD/tests/cxx_link" >"$log" 2>&1; then
-        passed=$((passed + 1)); echo "ok   cxx_link"
-    else
-        failed=$((failed + 1)); bad_bins="$bad_bins cxx_link"
-        echo "---- cxx_link ----"; cat "$log"
-    fi
-fi
-# Every public header's usage example and docs/hello_iskra.c, built with
-# this build's compiler and flags and run (a header without one fails).
 if [ -z "${ISKRA_TEST_FILTER:-}" ]; then
-    if BUILD="$BUILD" sh tests/header_examples.sh >"$log" 2>&1; then
-        passed=$((passed + 1)); echo "ok   header_examples: $(tail -n 1 "$log" | sed 's/.*: //')"
-    else
-        failed=$((failed + 1)); bad_bins="$bad_bins header_examples"
-        echo "---- header_examples ----"; cat "$log"
-    fi
+    # Threads never change a byte (a plain program; CI also runs it under TSan).
+    [ -x "$BUILD/tests/threads_check" ] && echo threads_check >>"$list"
+    # Every public header as C++ (built by the Makefile with the C++ compiler).
+    [ -x "$BUILD/tests/cxx_link" ] && echo cxx_link >>"$list"
+    # Every public header's usage example and docs/hello_iskra.c, built with
+    # this build's compiler and flags and run (a header without one fails).
+    echo header_examples >>"$list"
 fi
+xargs -P "$jobs" -n 1 sh "$0" --job "$dir" <"$list"
 # The install check (make install + a pkg-config build) runs once, on the
-# normal build only: a sanitized libiskra would need sanitized users.
+# normal build only (a sanitized libiskra would need sanitized users), and
+# alone: its make must not run beside binaries it could relink.
 if [ "$BUILD" = build ] && [ -z "${ISKRA_TEST_FILTER:-}" ]; then
-    if sh tests/install_check.sh >"$log" 2>&1; then
-        passed=$((passed + 1)); echo "ok   install_check"
-    else
-        failed=$((failed + 1)); bad_bins="$bad_bins install_check"
-        echo "---- install_check ----"; cat "$log"
-    fi
+    echo install_check >>"$list"
+    sh "$0" --job "$dir" install_check
 fi
+
+passed=0; failed=0; bad_bins=""
+while read -r name; do
+    if [ -f "$dir/$name.res" ]; then
+        read -r p f secs rc what <"$dir/$name.res"
+    else
+        p=0; f=1; secs=0; rc=lost; what=""
+    fi
+    passed=$((passed + p)); failed=$((failed + f))
+    if [ "$f" -ne 0 ]; then
+        bad_bins="$bad_bins $name"
+        echo "---- $name (exit $rc, $secs s) ----"; cat "$dir/$name.log" 2>/dev/null
+    else
+        echo "ok   $name${what:+: $what} ($secs s)"
+    fi
+done <"$list"
 [ -n "$bad_bins" ] && echo "failing binaries:$bad_bins"
 echo "$passed passed, $failed failed"
 [ "$failed" -eq 0 ]
