@@ -78,7 +78,9 @@ typedef struct fx_band {
 typedef struct fx_bins {
     uint16_t *code;                /* per particle: its first and last band */
     uint32_t *idx;                 /* every band's particles, band after band */
-    size_t code_cap, idx_cap;
+    uint8_t *copies;               /* bands of columns after the first: their own copies of the
+                                      canvas, in which they draw their columns (effect_bands.c) */
+    size_t code_cap, idx_cap, copies_cap;
 } fx_bins;
 
 typedef isk_status (*fx_draw_fn)(isk_effect *e, isk_canvas *c, fx_group *g, const fx_band *b);

@@ -27,6 +27,9 @@
 static const int THREADS[] = {1, 2, 3, 7};
 #define NT (int)(sizeof THREADS / sizeof THREADS[0])
 static int failures;
+/* Whether a run's bands of columns drew in copies of the canvas of their
+ * own (effect_bands.c), since it was last cleared. */
+static int drew_in_copies;
 
 #define CHECK(cond, ...)                                                                                        \
     do {                                                                                                       \
@@ -66,6 +69,7 @@ static unsigned long long run(const isk_effect_def *d, int threads, long frames,
                 h = (h ^ b) * 1099511628211ull;
             }
     }
+    drew_in_copies |= fx->bins.copies != NULL;
     isk_effect_destroy(fx);
     return h;
 }
@@ -254,6 +258,7 @@ int main(int argc, char **argv)
      * the dots' bands are columns (effect_bands.c's place_cuts); exact-area
      * dots, the browser's and pixels, faint enough that the row does not
      * saturate (a dot drawn by the wrong band, or by none, shows). */
+    drew_in_copies = 0;
     scene_text("[scene]\nwidth = 800\nheight = 60\n[force gravity]\ng = 400\n[bounds]\nrestitution = 0.2\n"
                "[emitter a]\nsource = layer\ncount = 20000\nlimit = 20000\nrect = -9, 9, -3, 6\n"
                "forces = gravity\ncolor = #ff804008\n"
@@ -262,6 +267,7 @@ int main(int argc, char **argv)
                "[emitter c]\nsource = layer\ncount = 20000\nlimit = 20000\nrect = -9, 9, -3, 6\n"
                "forces = gravity\ndraw = pixel\ncolor = #40ff8008\n",
                "settled", quick ? 30 : 60);
+    CHECK(drew_in_copies, "settled: no band of columns drew in a copy of the canvas");
     /* Blocks at rest (sim/stage.h's isk_rest): a layer that settles in a
      * third of a second and stays, sparks that land and die at random
      * (their holes filled from the end: the dying blocks wake), drops that
