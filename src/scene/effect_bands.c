@@ -94,9 +94,8 @@ static void run_band(void *ctx, int worker, size_t item)
         j->status[item] = j->g->draw(j->e, j->c, j->g, b);
         return;
     }
-    isk_canvas own = *j->c;
-    own.pixels = j->copy[item];
-    own.owns_pixels = 0;
+    isk_canvas own; /* the canvas's size and stride: its extent was checked when it was made */
+    isk_canvas_wrap(&own, j->copy[item], j->c->width, j->c->height, j->c->stride);
     copy_columns(own.pixels, j->c->pixels, j->c, b->c0, b->c1);
     j->status[item] = j->g->draw(j->e, &own, j->g, b);
     copy_columns(j->c->pixels, own.pixels, j->c, b->c0, b->c1);
