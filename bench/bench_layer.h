@@ -26,7 +26,7 @@ static inline isk_status bench_layer_effect(isk_effect **fx, size_t n, isk_draw_
     d.ymin = -3;
     d.ymax = 3;
     d.dt = 1.0 / 60.0;
-    d.clear = 0; /* the benches clear, so the clear is timed on its own */
+    d.clear = 1; /* the render clears to the background first, as a scene's does (on the threads) */
     isk_bounds_reflect(&d.bounds, -4, 4, -3, 3, ISK_SIDE_ALL, 0.0, 0.8);
     int g = isk_effect_def_add_force(&d, "gravity", ISK_FORCE_GRAVITY);
     int b = isk_effect_def_add_force(&d, "drag", ISK_FORCE_DRAG);

@@ -31,6 +31,7 @@
 #include <string.h>
 
 #include "effect_internal.h"
+#include "iskra/draw.h"
 #include "sim/pool.h"
 #include "view/world_batch.h"
 
@@ -65,6 +66,7 @@ typedef struct band_job {
     isk_effect *e;
     isk_canvas *c;
     fx_group *g;
+    const isk_color *fill; /* NULL, or the colour every band first fills its own pixels with */
     int nb;
     fx_band band[ISK_POOL_MAX_THREADS];
     isk_status status[ISK_POOL_MAX_THREADS];
@@ -91,12 +93,17 @@ static void run_band(void *ctx, int worker, size_t item)
     band_job *j = ctx;
     const fx_band *b = &j->band[item];
     if (!j->copy[item]) {
+        if (j->fill)
+            isk_fill_rect(j->c, b->c0, b->r0, b->c1 - b->c0, b->r1 - b->r0, *j->fill, ISK_BLEND_REPLACE);
         j->status[item] = j->g->draw(j->e, j->c, j->g, b);
         return;
     }
     isk_canvas own; /* the canvas's size and stride: its extent was checked when it was made */
     isk_canvas_wrap(&own, j->copy[item], j->c->width, j->c->height, j->c->stride);
-    copy_columns(own.pixels, j->c->pixels, j->c, b->c0, b->c1);
+    if (j->fill) /* what the copy would have brought in */
+        isk_fill_rect(&own, b->c0, b->r0, b->c1 - b->c0, b->r1 - b->r0, *j->fill, ISK_BLEND_REPLACE);
+    else
+        copy_columns(own.pixels, j->c->pixels, j->c, b->c0, b->c1);
     j->status[item] = j->g->draw(j->e, &own, j->g, b);
     copy_columns(j->c->pixels, own.pixels, j->c, b->c0, b->c1);
 }
@@ -284,18 +291,22 @@ static int sort_into_bands(band_job *j)
 }
 
 isk_status fx_draw_bands(isk_effect *e, isk_canvas *c, fx_group *g, const fx_band *whole, unsigned can,
-                         double dots_each)
+                         double dots_each, const isk_color *fill)
 {
     const int threads = e->pool ? isk_pool_threads(e->pool) : 1;
-    if (threads < 2 || (double)g->store.count * dots_each < e->band_min_work || g->store.count == 0 ||
-        c->height < 2 * threads)
+    band_job *j = NULL;
+    if (threads >= 2 && (double)g->store.count * dots_each >= e->band_min_work && g->store.count > 0 &&
+        c->height >= 2 * threads)
+        j = calloc(1, sizeof *j);
+    if (!j) { /* on the caller alone (the draw itself needs no memory) */
+        if (fill)
+            isk_canvas_fill(c, *fill);
         return g->draw(e, c, g, whole);
-    band_job *j = calloc(1, sizeof *j);
-    if (!j) /* the draw itself needs no memory: do it on one thread */
-        return g->draw(e, c, g, whole);
+    }
     j->e = e;
     j->c = c;
     j->g = g;
+    j->fill = fill;
     int cut[ISK_POOL_MAX_THREADS + 1];
     const int columns = place_cuts(e, g, c, threads, can, cut);
     /* empty bands (cuts that coincide where the particles crowd into a

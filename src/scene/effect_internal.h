@@ -242,14 +242,16 @@ fx_draw_fn fx_choose_draw(const fx_group *g);
 /* effect_bands.c: g->draw over the canvas, in bands of rows on the
  * effect's threads when the group's draw is worth it (whole: the band of
  * the canvas, with anything prepared for the draw; dots_each: what a
- * particle's draw costs, in batched coverage dots: fx_draw_cost). */
+ * particle's draw costs, in batched coverage dots: fx_draw_cost; fill:
+ * NULL, or a colour the canvas is filled with first, each band filling its
+ * own pixels on its own thread, so they start in its caches). */
 /* What a group's draw function can take (fx_draw_bands): its particles
  * sorted into bands of rows first (dots and pixels, which reach at most a
  * row beyond their own), bands of columns instead of rows (the batched
  * dots: a scene settled on its floor has its particles on one row). */
 enum { FX_BANDS_SORT = 1, FX_BANDS_COLUMNS = 2 };
 isk_status fx_draw_bands(isk_effect *e, isk_canvas *c, fx_group *g, const fx_band *whole, unsigned can,
-                         double dots_each);
+                         double dots_each, const isk_color *fill);
 /* Below this much work a group's draw runs on the caller alone, in batched
  * coverage dots (effect_bands.c says how it was measured). */
 #define FX_BAND_MIN_WORK 200000.0
@@ -321,8 +323,9 @@ extern const fx_step_kind fx_step_hits;       /* substep end: the bounces counte
 /* effect_trail.c */
 /* After a frame: each trailed group's positions as its newest points. */
 void fx_trail_record(isk_effect *e);
-/* The group's trails, drawn before its particles (in bands on the threads). */
-isk_status fx_trail_render(isk_effect *e, isk_canvas *c, fx_group *g);
+/* The group's trails, drawn before its particles (in bands on the threads);
+ * fill as fx_draw_bands'. */
+isk_status fx_trail_render(isk_effect *e, isk_canvas *c, fx_group *g, const isk_color *fill);
 /* effect_render.c: particle i's colour as its own draw gives it. */
 isk_color fx_particle_color(const fx_group *g, size_t i);
 /* ---- end of sub-emitters and trails ---- */

@@ -377,35 +377,47 @@ static double draw_cost(const fx_group *g)
 }
 
 /* A group's draw: on the effect's threads in bands when it can be cut
- * (discs cannot: their kernel has no band form). */
-static isk_status render_group(isk_effect *e, isk_canvas *c, fx_group *g)
+ * (discs cannot: their kernel has no band form).  fill: NULL, or the
+ * background the canvas is cleared to first, by the bands of the group's
+ * first pass. */
+static isk_status render_group(isk_effect *e, isk_canvas *c, fx_group *g, const isk_color *fill)
 {
     fx_band whole = {.r0 = 0, .r1 = c->height, .c0 = 0, .c1 = c->width};
     if (g->store.trail) { /* trails under the particles (effect_trail.c) */
-        isk_status s = fx_trail_render(e, c, g);
+        isk_status s = fx_trail_render(e, c, g, fill);
         if (s != ISK_OK)
             return s;
+        fill = NULL;
     }
     if (g->draw == draw_sprites) {
         isk_status s = prepare_sprites(e, g, &whole);
         if (s != ISK_OK)
             return s;
     }
-    if (g->draw == draw_discs)
+    if (g->draw == draw_discs) {
+        if (fill)
+            isk_canvas_fill(c, *fill);
         return g->draw(e, c, g, &whole);
+    }
     /* dots and pixels reach at most a row beyond their own (the margin
      * world_batch.h's binning keeps), so their bands can take only their
      * own particles; sprites reach far and read them all */
     const unsigned can = (g->draw != draw_sprites && g->draw != fx_draw_textures ? FX_BANDS_SORT : 0u) |
                          (g->draw == draw_dots ? FX_BANDS_COLUMNS : 0u);
-    return fx_draw_bands(e, c, g, &whole, can, draw_cost(g));
+    return fx_draw_bands(e, c, g, &whole, can, draw_cost(g), fill);
 }
 
 isk_status fx_render(isk_effect *e, isk_canvas *c)
 {
     const isk_effect_def *d = &e->def;
-    if (d->clear)
-        isk_canvas_fill(c, d->background);
+    /* The clear goes to the first group's bands when nothing is drawn
+     * before it: each thread then clears the pixels it is about to blend,
+     * and finds them in its own caches instead of the caller's. */
+    const isk_color *fill = d->clear ? &d->background : NULL;
+    if (fill && (d->ndrawings > 0 || e->ngroups == 0)) {
+        isk_canvas_fill(c, *fill);
+        fill = NULL;
+    }
     for (int i = 0; i < d->ndrawings; i++) {
         isk_status s = draw_drawing(e, c, &e->view, &d->drawings[i]);
         if (s != ISK_OK)
@@ -413,9 +425,10 @@ isk_status fx_render(isk_effect *e, isk_canvas *c)
     }
     for (int k = 0; k < e->ngroups; k++) {
         fx_group *g = &e->groups[e->draw_order[k]];
-        isk_status s = render_group(e, c, g);
+        isk_status s = render_group(e, c, g, fill);
         if (s != ISK_OK)
             return s;
+        fill = NULL;
     }
     /* The thesis simulator's potentials: a disc of radius 0.1 (blue attracts,
      * red repels), then the id in white at (x - 0.04, y - 0.06). */

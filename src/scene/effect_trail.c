@@ -47,15 +47,18 @@ static isk_status draw_trails(isk_effect *e, isk_canvas *c, fx_group *g, const f
     return ISK_OK;
 }
 
-isk_status fx_trail_render(isk_effect *e, isk_canvas *c, fx_group *g)
+isk_status fx_trail_render(isk_effect *e, isk_canvas *c, fx_group *g, const isk_color *fill)
 {
-    if (!g->store.trail)
+    if (!g->store.trail) {
+        if (fill)
+            isk_canvas_fill(c, *fill);
         return ISK_OK;
+    }
     const fx_band whole = {.r0 = 0, .r1 = c->height, .c0 = 0, .c1 = c->width};
     /* the band machinery runs the group's draw: the trails' for this pass */
     const fx_draw_fn own = g->draw;
     g->draw = draw_trails;
-    isk_status s = fx_draw_bands(e, c, g, &whole, 0u, (double)g->store.trail_len); /* a segment a point */
+    isk_status s = fx_draw_bands(e, c, g, &whole, 0u, (double)g->store.trail_len, fill); /* a segment a point */
     g->draw = own;
     return s;
 }

@@ -242,7 +242,7 @@ int main(int argc, char **argv)
     /* Every draw cut into bands: browser dots, pixels and sprites (one
      * colour, and sized by a ramp), over and add, on more rows than
      * particles' worth of bands. */
-    scene_text("[scene]\nwidth = 160\nheight = 120\n"
+    scene_text("[scene]\nwidth = 160\nheight = 120\nbackground = #102030\n"
                "[force gravity]\ng = 9.81\n"
                "[emitter a]\nsource = explosion\nexplosion = uniform\ncount = 20000\nlimit = 20000\n"
                "forces = gravity\ndraw = dot-browser\ncolor = #ff8040c0\n"
@@ -259,7 +259,8 @@ int main(int argc, char **argv)
      * dots, the browser's and pixels, faint enough that the row does not
      * saturate (a dot drawn by the wrong band, or by none, shows). */
     drew_in_copies = 0;
-    scene_text("[scene]\nwidth = 800\nheight = 60\n[force gravity]\ng = 400\n[bounds]\nrestitution = 0.2\n"
+    scene_text("[scene]\nwidth = 800\nheight = 60\nbackground = #20304080\n[force gravity]\ng = 400\n"
+               "[bounds]\nrestitution = 0.2\n"
                "[emitter a]\nsource = layer\ncount = 20000\nlimit = 20000\nrect = -9, 9, -3, 6\n"
                "forces = gravity\ncolor = #ff804008\n"
                "[emitter b]\nsource = layer\ncount = 20000\nlimit = 20000\nrect = -9, 9, -3, 6\n"
