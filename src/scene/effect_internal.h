@@ -252,6 +252,12 @@ fx_draw_fn fx_choose_draw(const fx_group *g);
 enum { FX_BANDS_SORT = 1, FX_BANDS_COLUMNS = 2 };
 isk_status fx_draw_bands(isk_effect *e, isk_canvas *c, fx_group *g, const fx_band *whole, unsigned can,
                          double dots_each, const isk_color *fill);
+/* The nb bands' cuts of the canvas for g's draw, at the quantiles of a
+ * sample of its particles' screen rows (or columns, when `can` allows them
+ * and the rows cannot share the particles): cut[0] = 0 <= ... <= cut[nb]
+ * = the canvas's height (or width); returns 1 for columns, 0 for rows.
+ * The cuts only share out the work: any cuts give the same bytes. */
+int fx_place_cuts(const isk_effect *e, const fx_group *g, const isk_canvas *c, int nb, unsigned can, int *cut);
 /* Below this much work a group's draw runs on the caller alone, in batched
  * coverage dots (effect_bands.c says how it was measured). */
 #define FX_BAND_MIN_WORK 200000.0
