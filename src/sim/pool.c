@@ -1,6 +1,6 @@
 /* Worker threads for independent items (see pool.h): POSIX threads, one
  * mutex and two condition variables; items are handed out in chunks by an
- * atomic counter. */
+ * atomic counter, long ones while much is left. */
 #include "sim/pool.h"
 
 #include <pthread.h>
@@ -9,14 +9,17 @@
 #include <stdlib.h>
 #include <unistd.h>
 
-/* Items a thread takes at a time, at most.  Large enough that each
- * thread streams through long runs of the store: with 4 blocks (1024
- * particles) the two threads' runs interleaved finely, and 2 threads
- * stepped 4*10^6 particles only 1.3x faster than one; 64 blocks (16384
- * particles, tens of microseconds of work) gave 1.7-1.8x in the same runs.
- * The count rule below still gives every thread at least four chunks, and
- * a job of few items (a draw's bands: one per thread) is handed out one at
- * a time, or the first thread to come would take them all. */
+/* The fewest items a thread takes at a time (fewer only at the end of a
+ * job, or for a job of few items).  Large enough that each thread streams
+ * through long runs of the store: with 4 blocks (1024 particles) the two
+ * threads' runs interleaved finely, and 2 threads stepped 4*10^6 particles
+ * only 1.3x faster than one; 64 blocks (16384 particles, tens of
+ * microseconds of work) gave 1.7-1.8x in the same runs.  A claim takes
+ * more while much is left (take_items), so the runs are longer still at
+ * the start of a job and the shares even out at its end.  The count rule
+ * in isk_pool_for still gives every thread at least four chunks, and a job
+ * of few items (a draw's bands: one per thread) is handed out one at a
+ * time, or the first thread to come would take them all. */
 enum { CHUNK = 64 };
 
 /* A worker's scratch on cache lines of its own (and 64-byte aligned, for
@@ -47,15 +50,27 @@ typedef struct worker_arg {
     int worker;
 } worker_arg;
 
+/* Claims (guided, as OpenMP calls it): a 1/(4 threads) part of what is
+ * left, and never less than the job's chunk.  The first claims are long
+ * runs (a quarter of a 2-thread job each, on a thread that is already
+ * running while the other wakes), the last are one chunk, so both threads
+ * finish within a chunk of each other. */
 static void take_items(isk_pool *p, int worker)
 {
+    const size_t n = p->n, least = p->chunk, part = 4u * (size_t)p->threads;
+    size_t i = atomic_load_explicit(&p->next, memory_order_relaxed);
     for (;;) {
-        size_t i = atomic_fetch_add_explicit(&p->next, p->chunk, memory_order_relaxed);
-        if (i >= p->n)
+        if (i >= n)
             return;
-        size_t end = i + p->chunk < p->n ? i + p->chunk : p->n;
-        for (; i < end; i++)
+        size_t take = (n - i) / part;
+        take = take < least ? least : take;
+        take = take < n - i ? take : n - i;
+        if (!atomic_compare_exchange_weak_explicit(&p->next, &i, i + take, memory_order_relaxed,
+                                                   memory_order_relaxed))
+            continue; /* i now holds what another thread left: try again from there */
+        for (size_t end = i + take; i < end; i++)
             p->fn(p->ctx, worker, i);
+        i = atomic_load_explicit(&p->next, memory_order_relaxed);
     }
 }
 

@@ -208,10 +208,57 @@ static void items_run_together(void)
     isk_pool_destroy(pool);
 }
 
+/* Every item of a job is handed out once, to one of the pool's threads,
+ * whatever the job's size against the claims' (pool.c's take_items: long
+ * claims while much is left, one chunk at the end). */
+typedef struct tally {
+    atomic_int *count;
+    int threads;
+    atomic_int bad_worker;
+} tally;
+
+static void count_item(void *ctx, int worker, size_t item)
+{
+    tally *t = ctx;
+    atomic_fetch_add(&t->count[item], 1);
+    if (worker < 0 || worker >= t->threads)
+        atomic_store(&t->bad_worker, 1);
+}
+
+static void every_item_once(void)
+{
+    static const size_t SIZES[] = {1, 2, 3, 5, 8, 63, 64, 65, 255, 257, 1000, 7813, 100003};
+    static const int POOLS[] = {2, 3, 7};
+    for (int k = 0; k < 3; k++) {
+        isk_pool *pool = NULL;
+        CHECK(isk_pool_create(&pool, POOLS[k]) == ISK_OK, "pool of %d", POOLS[k]);
+        if (!pool)
+            continue;
+        for (size_t s = 0; s < sizeof SIZES / sizeof SIZES[0]; s++) {
+            const size_t n = SIZES[s];
+            tally t = {calloc(n, sizeof *t.count), POOLS[k], 0};
+            if (!t.count)
+                break;
+            for (size_t i = 0; i < n; i++)
+                atomic_init(&t.count[i], 0);
+            isk_pool_for(pool, n, 1, count_item, &t);
+            size_t wrong = 0;
+            for (size_t i = 0; i < n; i++)
+                wrong += atomic_load(&t.count[i]) != 1;
+            CHECK(wrong == 0, "%zu items on %d threads: %zu not run exactly once", n, POOLS[k], wrong);
+            CHECK(!atomic_load(&t.bad_worker), "%zu items on %d threads: a worker number out of range", n,
+                  POOLS[k]);
+            free(t.count);
+        }
+        isk_pool_destroy(pool);
+    }
+}
+
 int main(int argc, char **argv)
 {
     workers_block_signals();
     items_run_together();
+    every_item_once();
     /* --quick: the large scenes only (ThreadSanitizer is slow) */
     int quick = argc > 1 && !strcmp(argv[1], "--quick");
     for (int i = 0; !quick && i < isk_scene_builtin_count(); i++) {
