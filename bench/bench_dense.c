@@ -258,7 +258,7 @@ int main(int argc, char **argv)
     int failed = time_effect(fx, &c, all, ft);
     for (int k = 0; k < 2 && !failed; k++) {
         const double frame = ft[k].update + ft[k].draw;
-        printf("1. the effect, %d thread%s:  update %6.1f  draw %6.1f  frame %6.1f  (%.1f FPS, %.2fx "
+        printf("1. the effect, %d thread%s:  update %6.1f  clear+draw %6.1f  frame %6.1f  (%.1f FPS, %.2fx "
                "the 15 FPS frame)\n",
                k ? all : 1, k && all > 1 ? "s" : " ", ft[k].update, ft[k].draw, frame, 1e3 / frame,
                frame / TARGET_MS);
