@@ -48,8 +48,9 @@
  * at 10^6; 8 px sprites (about ten dots' work, reading the store whole on
  * every band) 1.00x at 10^4, 1.13x at 2*10^4, 1.24x at 4*10^4.  Counted
  * in dots, each draw's crossing point lies near 2*10^5. */
-/* Particles sampled to place the cuts. */
+/* Particles sampled to place the cuts, in runs of neighbours. */
 #define FX_BAND_SAMPLES 1024
+#define FX_BAND_RUN 8
 /* isk__batch_bin's codes hold band numbers up to 254. */
 #define FX_BIN_MAX_BANDS 255
 /* Sorting costs about two scans of the store (binning, then the lists),
@@ -214,20 +215,26 @@ int fx_place_cuts(const isk_effect *e, const fx_group *g, const isk_canvas *c, i
 {
     int xs[FX_BAND_SAMPLES], ys[FX_BAND_SAMPLES]; /* whole columns and rows */
     const isk_particles *p = &g->store;
-    const size_t step = p->count / FX_BAND_SAMPLES ? p->count / FX_BAND_SAMPLES : 1;
+    /* runs of FX_BAND_RUN neighbours (a cache line of each column) spread
+     * evenly over the store: one sample a run would cost a miss, in cache
+     * and TLB, of each column a sample (0.06 ms for 10^6 particles, 0.13
+     * ms for 1.6*10^7, which the draw waits for) */
+    const size_t runs = FX_BAND_SAMPLES / FX_BAND_RUN;
+    const size_t step = p->count / runs > FX_BAND_RUN ? p->count / runs : FX_BAND_RUN;
     int m = 0;
-    for (size_t i = 0; i < p->count && m < FX_BAND_SAMPLES; i += step) {
-        double X, Y;
-        isk_view_to_screen(&e->view, p->x[i], p->y[i], &X, &Y);
-        if (g->keep_on_canvas) { /* where the draw puts them */
-            X = isk__keep_on_canvas(X, c->width);
-            Y = isk__keep_on_canvas(Y, c->height);
+    for (size_t r = 0; r < runs; r++)
+        for (size_t i = r * step; i < r * step + FX_BAND_RUN && i < p->count; i++) {
+            double X, Y;
+            isk_view_to_screen(&e->view, p->x[i], p->y[i], &X, &Y);
+            if (g->keep_on_canvas) { /* where the draw puts them */
+                X = isk__keep_on_canvas(X, c->width);
+                Y = isk__keep_on_canvas(Y, c->height);
+            }
+            if (X >= 0 && X < c->width && Y >= 0 && Y < c->height) {
+                xs[m] = (int)X;   /* >= 0: truncation is floor */
+                ys[m++] = (int)Y; /* a band holds whole rows */
+            }
         }
-        if (X >= 0 && X < c->width && Y >= 0 && Y < c->height) {
-            xs[m] = (int)X; /* >= 0: truncation is floor */
-            ys[m++] = (int)Y; /* a band holds whole rows */
-        }
-    }
     sort_coordinates(ys, m);
     const int by_rows = quantile_cuts(ys, m, nb, c->height, cut);
     if (!(can & FX_BANDS_COLUMNS) || 4 * by_rows <= 5 * ((m + nb - 1) / nb))
