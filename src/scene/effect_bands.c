@@ -29,6 +29,7 @@
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
+#include <time.h>
 
 #include "effect_internal.h"
 #include "iskra/draw.h"
@@ -71,6 +72,7 @@ typedef struct band_job {
     int nb;
     fx_band band[ISK_POOL_MAX_THREADS];
     isk_status status[ISK_POOL_MAX_THREADS];
+    double seconds[ISK_POOL_MAX_THREADS]; /* each band's time, for the shares */
     uint8_t *copy[ISK_POOL_MAX_THREADS];   /* a band of columns' own canvas pixels, or NULL: in place */
     /* sorting into bands: share t of the store is [t n / nb, (t+1) n / nb)
      * (as many shares as bands, one per thread) */
@@ -88,10 +90,26 @@ static void copy_columns(uint8_t *to, const uint8_t *from, const isk_canvas *c, 
         memcpy(to + (size_t)y * c->stride + at, from + (size_t)y * c->stride + at, len);
 }
 
+static double seconds_now(void)
+{
+    struct timespec t;
+    clock_gettime(CLOCK_MONOTONIC, &t);
+    return (double)t.tv_sec + 1e-9 * (double)t.tv_nsec;
+}
+
+static void draw_band(band_job *j, size_t item);
+
 static void run_band(void *ctx, int worker, size_t item)
 {
     (void)worker;
     band_job *j = ctx;
+    const double t0 = seconds_now();
+    draw_band(j, item);
+    j->seconds[item] = seconds_now() - t0;
+}
+
+static void draw_band(band_job *j, size_t item)
+{
     const fx_band *b = &j->band[item];
     if (!j->copy[item]) {
         if (j->fill)
@@ -184,14 +202,19 @@ static void sort_coordinates(int *v, int m)
 }
 
 /* The cuts 0 = cut[0] <= ... <= cut[nb] = n at the quantiles of the
- * sorted sample v[0..m) of screen coordinates in [0, n); returns how many
- * of the sample the fullest band holds. */
-static int quantile_cuts(const int *v, int m, int nb, int n, int *cut)
+ * sorted sample v[0..m) of screen coordinates in [0, n): even ones, or
+ * those of the shares (share == NULL: even); returns how many of the
+ * sample the fullest band holds. */
+static int quantile_cuts(const int *v, int m, int nb, int n, const double *share, int *cut)
 {
     cut[0] = 0;
     cut[nb] = n;
+    double below = 0.0; /* the shares of the bands before cut k */
     for (int k = 1; k < nb; k++) {
-        int r = m ? v[(size_t)m * (size_t)k / (size_t)nb] : n * k / nb;
+        below += share ? share[k - 1] : 0.0;
+        size_t q = share ? (size_t)(below * m) : (size_t)m * (size_t)k / (size_t)nb;
+        q = q < (size_t)m ? q : (size_t)m - 1;
+        int r = m ? v[q] : n * k / nb;
         cut[k] = r < cut[k - 1] ? cut[k - 1] : r > n ? n : r;
     }
     int fullest = 0, i = 0;
@@ -211,7 +234,8 @@ static int quantile_cuts(const int *v, int m, int nb, int n, int *cut)
  * scene settled on its floor has most of them on its last row, and a row
  * is never cut), cuts at the quantiles of the columns instead: returns 1
  * for columns, 0 for rows. */
-int fx_place_cuts(const isk_effect *e, const fx_group *g, const isk_canvas *c, int nb, unsigned can, int *cut)
+int fx_place_cuts(const isk_effect *e, const fx_group *g, const isk_canvas *c, int nb, unsigned can,
+                  const fx_shares *shares, int *cut)
 {
     int xs[FX_BAND_SAMPLES], ys[FX_BAND_SAMPLES]; /* whole columns and rows */
     const isk_particles *p = &g->store;
@@ -235,17 +259,63 @@ int fx_place_cuts(const isk_effect *e, const fx_group *g, const isk_canvas *c, i
                 ys[m++] = (int)Y; /* a band holds whole rows */
             }
         }
+    /* rows or columns is decided on even cuts; the shares then place them */
+    const int have = shares && shares->nb == nb;
     sort_coordinates(ys, m);
-    const int by_rows = quantile_cuts(ys, m, nb, c->height, cut);
-    if (!(can & FX_BANDS_COLUMNS) || 4 * by_rows <= 5 * ((m + nb - 1) / nb))
-        return 0; /* the rows share them within 25 % of even */
-    int col[ISK_POOL_MAX_THREADS + 1];
-    sort_coordinates(xs, m);
-    const int by_columns = quantile_cuts(xs, m, nb, c->width, col);
-    if (4 * by_columns > 3 * by_rows)
-        return 0; /* columns no better by a quarter: the rows, which can be sorted */
-    memcpy(cut, col, (size_t)(nb + 1) * sizeof *cut);
-    return 1;
+    const int by_rows = quantile_cuts(ys, m, nb, c->height, NULL, cut);
+    int columns = 0;
+    if ((can & FX_BANDS_COLUMNS) && 4 * by_rows > 5 * ((m + nb - 1) / nb)) { /* rows not within 25 % of even */
+        int col[ISK_POOL_MAX_THREADS + 1];
+        sort_coordinates(xs, m);
+        const int by_columns = quantile_cuts(xs, m, nb, c->width, NULL, col);
+        if (4 * by_columns <= 3 * by_rows) { /* columns better by a quarter (else rows, which can be sorted) */
+            columns = 1;
+            memcpy(cut, col, (size_t)(nb + 1) * sizeof *cut);
+        }
+    }
+    if (have && shares->columns == columns)
+        quantile_cuts(columns ? xs : ys, m, nb, columns ? c->width : c->height, shares->share, cut);
+    return columns;
+}
+
+void fx_shares_update(fx_shares *s, int nb, int columns, const double *seconds)
+{
+    if (nb < 2 || nb > FX_SHARES_MAX) {
+        s->nb = 0;
+        return;
+    }
+    if (s->nb != nb || s->columns != columns) { /* start from even */
+        s->nb = nb;
+        s->columns = columns;
+        for (int k = 0; k < nb; k++)
+            s->share[k] = 1.0 / nb;
+    }
+    double rate[FX_SHARES_MAX], total = 0.0;
+    for (int k = 0; k < nb; k++) {
+        rate[k] = s->share[k] / (seconds[k] > 1e-9 ? seconds[k] : 1e-9);
+        total += rate[k];
+    }
+    if (!(total > 0.0) || !isfinite(total))
+        return;
+    /* half-way (the two sum to 1); a band below the floor is raised to
+     * it, and what that takes comes from the others in proportion to what
+     * they hold above it (they hold at least that much: the floors sum to
+     * a quarter) */
+    const double lo = 0.25 / nb;
+    double raised = 0.0, above = 0.0;
+    for (int k = 0; k < nb; k++) {
+        s->share[k] = 0.5 * (s->share[k] + rate[k] / total);
+        if (s->share[k] < lo) {
+            raised += lo - s->share[k];
+            s->share[k] = lo;
+        } else {
+            above += s->share[k] - lo;
+        }
+    }
+    if (raised > 0.0 && above > 0.0)
+        for (int k = 0; k < nb; k++)
+            if (s->share[k] > lo)
+                s->share[k] -= raised * (s->share[k] - lo) / above;
 }
 
 static int grow(void **p, size_t *cap, size_t n, size_t size)
@@ -312,7 +382,7 @@ static int sort_into_bands(band_job *j)
 }
 
 isk_status fx_draw_bands(isk_effect *e, isk_canvas *c, fx_group *g, const fx_band *whole, unsigned can,
-                         double dots_each, const isk_color *fill)
+                         double dots_each, const isk_color *fill, fx_shares *shares)
 {
     const int threads = e->pool ? isk_pool_threads(e->pool) : 1;
     band_job *j = NULL;
@@ -329,7 +399,7 @@ isk_status fx_draw_bands(isk_effect *e, isk_canvas *c, fx_group *g, const fx_ban
     j->g = g;
     j->fill = fill;
     int cut[ISK_POOL_MAX_THREADS + 1];
-    const int columns = fx_place_cuts(e, g, c, threads, can, cut);
+    const int columns = fx_place_cuts(e, g, c, threads, can, shares, cut);
     /* empty bands (cuts that coincide where the particles crowd into a
      * few rows) are dropped: a point then reaches at most 5 bands */
     for (int k = 0; k < threads; k++)
@@ -351,6 +421,12 @@ isk_status fx_draw_bands(isk_effect *e, isk_canvas *c, fx_group *g, const fx_ban
     if (columns)
         give_copies(j);
     isk_pool_for(e->pool, (size_t)j->nb, 2, run_band, j);
+    if (shares) { /* with a band dropped, the next cuts start even */
+        if (j->nb == threads)
+            fx_shares_update(shares, j->nb, columns, j->seconds);
+        else
+            shares->nb = 0;
+    }
     isk_status s = ISK_OK;
     for (int k = 0; k < j->nb && s == ISK_OK; k++)
         s = j->status[k];

@@ -85,6 +85,18 @@ typedef struct fx_bins {
 
 typedef isk_status (*fx_draw_fn)(isk_effect *e, isk_canvas *c, fx_group *g, const fx_band *b);
 
+/* How one of a group's banded draws shares its particles among the bands
+ * (effect_bands.c): each band's share, which the cuts follow, moved after
+ * every threaded draw toward what each band drew in the time it took, so
+ * a band on a slower core gets fewer.  nb == 0: even shares.  Only the
+ * time changes with them, never a byte. */
+enum { FX_SHARES_MAX = 16 };
+typedef struct fx_shares {
+    int nb;                       /* the bands they are for, or 0 */
+    int columns;                  /* bands of columns (else rows) */
+    double share[FX_SHARES_MAX];  /* summing to 1 */
+} fx_shares;
+
 struct fx_group {
     int index;                     /* emitter index in the definition */
     const isk_emitter_def *def;    /* points into effect->def */
@@ -112,6 +124,7 @@ struct fx_group {
     int cull_unordered;            /* the order of its particles is seen by nothing (effect_compile.c) */
     int keep_on_canvas;            /* reflect walls hold it: one on the far edge is drawn on it */
     fx_draw_fn draw;
+    fx_shares shares, trail_shares; /* its particles' and its trails' banded draws */
 
     /* explosions (effect_group.c) */
     isk_multi_coulomb mc;          /* ISK_EXPLOSION_MULTI_COULOMB */
@@ -244,20 +257,28 @@ fx_draw_fn fx_choose_draw(const fx_group *g);
  * the canvas, with anything prepared for the draw; dots_each: what a
  * particle's draw costs, in batched coverage dots: fx_draw_cost; fill:
  * NULL, or a colour the canvas is filled with first, each band filling its
- * own pixels on its own thread, so they start in its caches). */
+ * own pixels on its own thread, so they start in its caches; shares: how
+ * this draw shares its particles among the bands, updated after it, or
+ * NULL for even shares). */
 /* What a group's draw function can take (fx_draw_bands): its particles
  * sorted into bands of rows first (dots and pixels, which reach at most a
  * row beyond their own), bands of columns instead of rows (the batched
  * dots: a scene settled on its floor has its particles on one row). */
 enum { FX_BANDS_SORT = 1, FX_BANDS_COLUMNS = 2 };
 isk_status fx_draw_bands(isk_effect *e, isk_canvas *c, fx_group *g, const fx_band *whole, unsigned can,
-                         double dots_each, const isk_color *fill);
+                         double dots_each, const isk_color *fill, fx_shares *shares);
 /* The nb bands' cuts of the canvas for g's draw, at the quantiles of a
  * sample of its particles' screen rows (or columns, when `can` allows them
  * and the rows cannot share the particles): cut[0] = 0 <= ... <= cut[nb]
  * = the canvas's height (or width); returns 1 for columns, 0 for rows.
  * The cuts only share out the work: any cuts give the same bytes. */
-int fx_place_cuts(const isk_effect *e, const fx_group *g, const isk_canvas *c, int nb, unsigned can, int *cut);
+int fx_place_cuts(const isk_effect *e, const fx_group *g, const isk_canvas *c, int nb, unsigned can,
+                  const fx_shares *shares, int *cut);
+/* The shares after a draw in nb bands whose cuts followed *s (or were even)
+ * took seconds[k] each: moved half-way toward each band's rate (its share
+ * over its time), each kept at 1/(4 nb) at least, so that a band that
+ * stalled once (its thread descheduled) is not starved for long. */
+void fx_shares_update(fx_shares *s, int nb, int columns, const double *seconds);
 /* Below this much work a group's draw runs on the caller alone, in batched
  * coverage dots (effect_bands.c says how it was measured). */
 #define FX_BAND_MIN_WORK 200000.0
