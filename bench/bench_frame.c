@@ -4,9 +4,10 @@
  * 10^5 sprites, on 1 .. all cores (isk_effect_set_threads).  The clear is
  * timed inside the draw ("clr+draw"), not on its own: on the threads, each
  * band clears the pixels it then draws, which a clear timed apart (by the
- * caller, on one thread: 0.15-0.18 ms a frame here) would not show.  The explosion
- * thesis's headline is 1,000,192 particles at about 60 FPS and 16M at
- * about 15 FPS on a laptop GPU; the targets here are the same on this CPU.
+ * caller, on one thread: 0.15-0.18 ms a frame here) would not show.  The
+ * explosion thesis's headline is 1,000,192 particles at about 60 FPS and
+ * 16M at about 15 FPS on a laptop GPU; the targets here are the same on
+ * this CPU.
  *
  * The effect is bench_layer.h's (a layer filling the view, gravity, drag
  * and reflecting walls).  The bytes are the same on every thread
