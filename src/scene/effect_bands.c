@@ -38,17 +38,24 @@
 
 /* Below FX_BAND_MIN_WORK (effect_internal.h) a group is drawn on the
  * caller alone: a second band costs a fixed part (waking a thread, placing
- * the cuts, and above all the canvas's lines, which the caller's clear
- * left in its own caches and the other thread must fetch from there) and
- * the scan every band makes of the store, and below that much work they
- * cost more than the second core saves.  Measured on two threads, the
- * whole frame's draw after the caller's clear (bench_layer.h's layer,
- * 2026-12-04): coverage dots 0.52x at 2*10^4, 0.81-0.92x at 5*10^4-10^5,
- * 0.98-0.99x at 1.5-2*10^5, 1.1-1.75x at 3*10^5, 1.3-1.9x at 10^6; single
- * pixels (a third of a dot's work) 0.28x at 2*10^4, 0.88x at 3*10^5, 1.09x
- * at 10^6; 8 px sprites (about ten dots' work, reading the store whole on
- * every band) 1.00x at 10^4, 1.13x at 2*10^4, 1.24x at 4*10^4.  Counted
- * in dots, each draw's crossing point lies near 2*10^5. */
+ * the cuts, and the canvas's lines, which a clear by the caller left in
+ * its own caches and the other thread must fetch from there) and the scan
+ * every band makes of the store, and below that much work they cost more
+ * than the second core saves.  The render's own clear, when the bands do
+ * it, is work they share (a pixel of it counted as FX_FILL_PIXELS_A_DOT-th
+ * of a dot).  Measured on two threads against one, the draw after the
+ * caller's clear and (in brackets) with the render's own clear in the
+ * bands (bench_layer.h's layer at 800x600, one process, medians of 41;
+ * 2026-12-04): coverage dots 0.54x (0.87x) at 10^4, 0.88x (1.20x) at
+ * 2*10^4, 1.14x (1.33x) at 5*10^4, 1.25x (1.48x) at 10^5; single pixels
+ * (a third of a dot's work) 0.94x (1.11x) at 10^5, 1.04x (1.13x) at
+ * 2*10^5; 8 px sprites (counted as ten dots) 0.40x (0.84x) at 10^3, 0.85x
+ * (1.16x) at 5*10^3, 1.09x (1.29x) at 10^4.  Counted in dots, each
+ * crossing point lies near 5*10^4, the fill of 800x600 counting for 3*10^4.
+ * (Before the render's clear went to the bands and isk_canvas_fill was
+ * vectorized, the crossing lay near 2*10^5.) */
+/* A pixel of the render's clear is this many times less work than a dot. */
+#define FX_FILL_PIXELS_A_DOT 16.0
 /* Particles sampled to place the cuts, in runs of neighbours. */
 #define FX_BAND_SAMPLES 1024
 #define FX_BAND_RUN 8
@@ -389,8 +396,9 @@ isk_status fx_draw_bands(isk_effect *e, isk_canvas *c, fx_group *g, const fx_ban
 {
     const int threads = e->pool ? isk_pool_threads(e->pool) : 1;
     band_job *j = NULL;
-    if (threads >= 2 && (double)g->store.count * dots_each >= e->band_min_work && g->store.count > 0 &&
-        c->height >= 2 * threads)
+    const double work =
+        (double)g->store.count * dots_each + (fill ? (double)c->width * c->height / FX_FILL_PIXELS_A_DOT : 0.0);
+    if (threads >= 2 && work >= e->band_min_work && g->store.count > 0 && c->height >= 2 * threads)
         j = calloc(1, sizeof *j);
     if (!j) { /* on the caller alone (the draw itself needs no memory) */
         if (fill)

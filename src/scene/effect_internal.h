@@ -281,7 +281,7 @@ int fx_place_cuts(const isk_effect *e, const fx_group *g, const isk_canvas *c, i
 void fx_shares_update(fx_shares *s, int nb, int columns, const double *seconds);
 /* Below this much work a group's draw runs on the caller alone, in batched
  * coverage dots (effect_bands.c says how it was measured). */
-#define FX_BAND_MIN_WORK 200000.0
+#define FX_BAND_MIN_WORK 50000.0
 void fx_bins_free(fx_bins *b);
 isk_status fx_bake_ramps(fx_group *g, isk_error *err);
 void fx_free_ramps(fx_group *g);

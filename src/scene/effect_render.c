@@ -367,8 +367,8 @@ fx_draw_fn fx_choose_draw(const fx_group *g)
  * worth of work), so it counts for a third; an 8 px sprite 42-45 ns, and
  * textures and per-particle colours (a screen transform, a style and a
  * kernel call each) at least as much.  Those count for ten: their bands
- * gained from 2*10^4 sprites on (1.13x; 1.00x at 10^4), where the dots'
- * bands gain from 2*10^5. */
+ * gain from 10^4 sprites on, where the dots' gain from 5*10^4 (both after
+ * a clear by the caller; effect_bands.c has the figures). */
 static double draw_cost(const fx_group *g)
 {
     if (g->draw == draw_dots)
