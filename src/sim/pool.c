@@ -24,10 +24,11 @@
  * (2026-12-04).  Each thread starting on a range of its own (the same
  * blocks every frame, still in its caches) then gave 10^5 particles in
  * 0.215-0.267 ms instead of 0.230-0.285, 10^6 and 4*10^6 within 2 % (two
- * effects in one process, one stepped each way, medians of 41).  The count rule
- * in isk_pool_for still gives every thread at least four chunks, and a job
- * of few items (a draw's bands: one per thread) is handed out one at a
- * time, or the first thread to come would take them all. */
+ * effects in one process, one stepped each way, medians of 41).  The
+ * count rule in isk_pool_for still gives every thread at least four
+ * chunks, and a job of few items (a draw's bands: one per thread) is
+ * handed out one at a time, or the first thread to come would take them
+ * all. */
 enum { CHUNK = 64 };
 
 /* How long the caller waits awake for workers that are all running (then
@@ -271,9 +272,10 @@ void isk_pool_for(isk_pool *p, size_t n, size_t min_items, isk_pool_fn fn, void 
     pthread_cond_broadcast(&p->start);
     pthread_mutex_unlock(&p->lock);
     take_items(p, 0);
-    /* When every worker is running its last items, they end soon: waiting
-     * for them asleep would add the time this VM takes to run a woken
-     * thread again (60-90 us).  A worker still asleep is waited for asleep:
+    /* When every worker has started the job, they end soon after the
+     * caller (their last claims are a chunk each): waiting for them asleep
+     * would add the time this VM takes to run a woken thread again (60-90
+     * us).  A worker still asleep is waited for asleep:
      * spinning then kept it from waking (it woke 210-320 us late instead of
      * 13 us: the two virtual cores share a physical one at times). */
     if (atomic_load(&p->awake) == p->threads - 1)
