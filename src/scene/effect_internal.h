@@ -85,6 +85,14 @@ typedef struct fx_bins {
 
 typedef isk_status (*fx_draw_fn)(isk_effect *e, isk_canvas *c, fx_group *g, const fx_band *b);
 
+/* What a group's update costs on the caller alone (effect.c's
+ * update_on_pool), measured now and then. */
+typedef struct fx_step_cost {
+    double per_particle;          /* seconds, at the last measure (0: not yet) */
+    size_t count;                 /* the group's particles then */
+    long since;                   /* updates since */
+} fx_step_cost;
+
 /* How one of a group's banded draws shares its particles among the bands
  * (effect_bands.c): each band's share, which the cuts follow, moved after
  * every threaded draw toward what each band drew in the time it took, so
@@ -125,6 +133,7 @@ struct fx_group {
     int keep_on_canvas;            /* reflect walls hold it: one on the far edge is drawn on it */
     fx_draw_fn draw;
     fx_shares shares, trail_shares; /* its particles' and its trails' banded draws */
+    fx_step_cost step_cost;        /* whether its update pays on the threads (effect.c) */
 
     /* explosions (effect_group.c) */
     isk_multi_coulomb mc;          /* ISK_EXPLOSION_MULTI_COULOMB */
@@ -177,6 +186,7 @@ struct isk_effect {
     isk_scratch scratch;           /* for the caller's own block runs (births) */
     struct isk_pool *pool;         /* the threads the groups' pipelines run on */
     int no_rest;                   /* 1: no block rests, every stage runs (the tests' reference) */
+    int pool_always;               /* tests: every update that can be shared out is, however small */
     double band_min_work;          /* a group's draw is shared out over the threads only from this much
                                       work, in batched coverage dots (FX_BAND_MIN_WORK; the tests that
                                       compare thread counts set 0, so every size is cut into bands) */

@@ -50,8 +50,10 @@ static unsigned long long run(const isk_effect_def *d, int threads, long frames,
     isk_error err = {0};
     memset(c, 0, sizeof *c);
     const int made = isk_effect_create(&fx, &copy, &err) == ISK_OK;
-    if (made)
+    if (made) {
         fx->band_min_work = 0; /* every group's draw in bands, however small: those are what is checked */
+        fx->pool_always = 1;   /* and every update that can be shared out */
+    }
     if (!made || isk_canvas_init(c, d->width, d->height) != ISK_OK || isk_effect_run(fx, c, frames) != ISK_OK) {
         CHECK(0, "%d threads: %s", threads, err.message);
         isk_effect_destroy(fx);

@@ -1,0 +1,60 @@
+/* Which groups' updates are shared out over the threads (effect.c's
+ * update_on_pool): a group whose update takes less than FX_POOL_MIN_SECONDS
+ * on one thread steps on the caller alone, where waking the workers would
+ * cost more than they save; a big one on the threads.  The choice is made
+ * from the group's cost measured on the caller, at its first update and
+ * again when its count halves or doubles.  The bytes are the same either
+ * way (threads_check). */
+#include <criterion/criterion.h>
+
+#include "scene/effect_internal.h"
+#include "scene_text.h"
+
+static isk_effect *layer(const char *count)
+{
+    char text[512];
+    snprintf(text, sizeof text,
+             "[force gravity]\ng = 9.81\n[bounds]\nrestitution = 0.5\n"
+             "[emitter a]\nsource = layer\ncount = %s\nlimit = %s\ncapacity = %s\nrect = -5, 5, -5, 5\n"
+             "forces = gravity\n",
+             count, count, count);
+    return scene_text_open(text, 2);
+}
+
+Test(update_share, a_small_group_steps_on_the_caller_and_a_big_one_on_the_threads)
+{
+    /* 1000 particles take well under 0.1 ms even under the sanitizers;
+     * 300,000 take well over it on any machine */
+    isk_effect *small = layer("1000"), *big = layer("300000");
+    cr_assert_eq(isk_effect_threads(small), 2);
+    for (int f = 0; f < 5; f++) {
+        cr_assert_eq(isk_effect_step(small), ISK_OK);
+        cr_assert_eq(isk_effect_step(big), ISK_OK);
+    }
+    const fx_step_cost *s = &small->groups[0].step_cost, *b = &big->groups[0].step_cost;
+    /* measured on the caller at every update: `since` starts again */
+    cr_expect_gt(s->per_particle, 0.0);
+    cr_expect_eq(s->count, 1000);
+    cr_expect_eq(s->since, 0);
+    /* measured once, then 4 updates on the threads */
+    cr_expect_gt(b->per_particle, 0.0);
+    cr_expect_eq(b->count, 300000);
+    cr_expect_eq(b->since, 4);
+    isk_effect_destroy(small);
+    isk_effect_destroy(big);
+}
+
+Test(update_share, one_thread_and_the_tests_switch_keep_the_old_paths)
+{
+    isk_effect *one = layer("1000"), *forced = layer("1000");
+    cr_assert_eq(isk_effect_set_threads(one, 1), ISK_OK);
+    forced->pool_always = 1;
+    for (int f = 0; f < 3; f++) {
+        cr_assert_eq(isk_effect_step(one), ISK_OK);
+        cr_assert_eq(isk_effect_step(forced), ISK_OK);
+    }
+    cr_expect_eq(one->groups[0].step_cost.per_particle, 0.0); /* never measured */
+    cr_expect_eq(forced->groups[0].step_cost.per_particle, 0.0);
+    isk_effect_destroy(one);
+    isk_effect_destroy(forced);
+}
