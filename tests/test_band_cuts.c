@@ -66,30 +66,33 @@ static void check_shares(isk_effect *fx, const isk_canvas *c, int nb, int column
     }
 }
 
-Test(band_cuts, a_falling_layer_is_cut_into_even_bands_of_rows)
+static void steps(isk_effect *fx, int frames)
+{
+    for (int f = 0; f < frames; f++)
+        cr_assert_eq(isk_effect_step(fx), ISK_OK);
+}
+
+/* The layer after `frames`, cut into 2..7 even bands (of columns or rows). */
+static void even_bands_after(int frames, int columns)
 {
     isk_effect *fx = scene_text_open(LAYER, 1);
     isk_canvas c;
     cr_assert_eq(isk_canvas_init(&c, 640, 480), ISK_OK);
-    for (int f = 0; f < 5; f++)
-        cr_assert_eq(isk_effect_step(fx), ISK_OK);
+    steps(fx, frames);
     for (int nb = 2; nb <= 7; nb++)
-        check_shares(fx, &c, nb, 0, NULL);
+        check_shares(fx, &c, nb, columns, NULL);
     isk_canvas_free(&c);
     isk_effect_destroy(fx);
 }
 
+Test(band_cuts, a_falling_layer_is_cut_into_even_bands_of_rows)
+{
+    even_bands_after(5, 0);
+}
+
 Test(band_cuts, a_layer_settled_on_its_floor_is_cut_into_even_bands_of_columns)
 {
-    isk_effect *fx = scene_text_open(LAYER, 1);
-    isk_canvas c;
-    cr_assert_eq(isk_canvas_init(&c, 640, 480), ISK_OK);
-    for (int f = 0; f < 240; f++)
-        cr_assert_eq(isk_effect_step(fx), ISK_OK);
-    for (int nb = 2; nb <= 7; nb++)
-        check_shares(fx, &c, nb, 1, NULL);
-    isk_canvas_free(&c);
-    isk_effect_destroy(fx);
+    even_bands_after(240, 1);
 }
 
 /* Uneven shares (a band on a slower core gets fewer particles) move the
@@ -101,11 +104,9 @@ Test(band_cuts, the_cuts_follow_the_shares)
     cr_assert_eq(isk_canvas_init(&c, 640, 480), ISK_OK);
     fx_shares rows = {.nb = 3, .columns = 0, .share = {0.2, 0.5, 0.3}};
     fx_shares cols = {.nb = 2, .columns = 1, .share = {0.7, 0.3}};
-    for (int f = 0; f < 5; f++)
-        cr_assert_eq(isk_effect_step(fx), ISK_OK);
+    steps(fx, 5);
     check_shares(fx, &c, 3, 0, &rows);
-    for (int f = 5; f < 240; f++)
-        cr_assert_eq(isk_effect_step(fx), ISK_OK);
+    steps(fx, 235);
     check_shares(fx, &c, 2, 1, &cols);
     /* shares for the other kind of band, or another count, are not used */
     fx_shares other = {.nb = 2, .columns = 0, .share = {0.7, 0.3}};

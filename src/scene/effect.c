@@ -9,7 +9,6 @@
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
-#include <time.h>
 
 #include "effect_internal.h"
 #include "sim/pool.h"
@@ -283,13 +282,6 @@ static isk_status run_steps(isk_effect *e, fx_group *g, const fx_step_kind *cons
     return ISK_OK;
 }
 
-static double seconds_now(void)
-{
-    struct timespec t;
-    clock_gettime(CLOCK_MONOTONIC, &t);
-    return (double)t.tv_sec + 1e-9 * (double)t.tv_nsec;
-}
-
 /* An update is shared out over the threads only when it takes this long on
  * one: waking the workers and waiting for them costs 40-50 us on this VM,
  * and the store's lines move between the cores.  Measured on two threads
@@ -338,16 +330,18 @@ static isk_status step_group(isk_effect *e, fx_group *g)
             fx_field_clock(g, time + h * j);
         /* a multi-Coulomb explosion releases particles of the store as it goes */
         isk_rest *rest = g->rests && !g->mc_active && !e->no_rest ? &g->rest : NULL;
-        if (g->parallel && update_on_pool(e, g)) {
+        const int pool = g->parallel && update_on_pool(e, g);
+        /* on the caller when it could have been shared: update_on_pool's measure */
+        const int timed = g->parallel && !pool && isk_pool_threads(e->pool) > 1;
+        const double t0 = timed ? isk_pool_seconds() : 0.0;
+        if (pool)
             e->scratch.nonfinite |=
                 isk_pipeline_run_pool_rest(&g->pipeline, &g->store, g->store.count, h, e->pool, rest);
-        } else if (g->parallel && isk_pool_threads(e->pool) > 1) { /* timed: update_on_pool's measure */
-            const double t0 = seconds_now();
+        else
             isk_pipeline_run_rest(&g->pipeline, &g->store, g->store.count, h, &e->scratch, rest);
+        if (timed) {
             const size_t n = g->store.count;
-            g->step_cost = (fx_step_cost){n ? (seconds_now() - t0) / (double)n : 0.0, n, 0};
-        } else {
-            isk_pipeline_run_rest(&g->pipeline, &g->store, g->store.count, h, &e->scratch, rest);
+            g->step_cost = (fx_step_cost){n ? (isk_pool_seconds() - t0) / (double)n : 0.0, n, 0};
         }
         s = run_steps(e, g, g->substep_end, g->nsubstep_end, time + h * j, h);
         if (e->scratch.nonfinite) { /* never kept or drawn: removed and counted (iskra/limits.h) */

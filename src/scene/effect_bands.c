@@ -29,7 +29,6 @@
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
-#include <time.h>
 
 #include "effect_internal.h"
 #include "iskra/draw.h"
@@ -97,24 +96,6 @@ static void copy_columns(uint8_t *to, const uint8_t *from, const isk_canvas *c, 
         memcpy(to + (size_t)y * c->stride + at, from + (size_t)y * c->stride + at, len);
 }
 
-static double seconds_now(void)
-{
-    struct timespec t;
-    clock_gettime(CLOCK_MONOTONIC, &t);
-    return (double)t.tv_sec + 1e-9 * (double)t.tv_nsec;
-}
-
-static void draw_band(band_job *j, size_t item);
-
-static void run_band(void *ctx, int worker, size_t item)
-{
-    (void)worker;
-    band_job *j = ctx;
-    const double t0 = seconds_now();
-    draw_band(j, item);
-    j->seconds[item] = seconds_now() - t0;
-}
-
 static void draw_band(band_job *j, size_t item)
 {
     const fx_band *b = &j->band[item];
@@ -132,6 +113,15 @@ static void draw_band(band_job *j, size_t item)
         copy_columns(own.pixels, j->c->pixels, j->c, b->c0, b->c1);
     j->status[item] = j->g->draw(j->e, &own, j->g, b);
     copy_columns(j->c->pixels, own.pixels, j->c, b->c0, b->c1);
+}
+
+static void run_band(void *ctx, int worker, size_t item)
+{
+    (void)worker;
+    band_job *j = ctx;
+    const double t0 = isk_pool_seconds();
+    draw_band(j, item);
+    j->seconds[item] = isk_pool_seconds() - t0;
 }
 
 /* Points every band of columns after the first at a copy of the canvas of

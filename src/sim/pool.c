@@ -33,7 +33,7 @@ enum { CHUNK = 64 };
 
 /* How long the caller waits awake for workers that are all running (then
  * asleep): the last claims of a job are one chunk each. */
-#define CALLER_SPIN_NS 500000ll
+#define CALLER_SPIN_SECONDS 5e-4
 
 /* A worker's scratch on cache lines of its own (and 64-byte aligned, for
  * the vector loops over it): the slots are a whole number of lines. */
@@ -57,7 +57,7 @@ struct isk_pool {
     /* the current job (set under the lock before generation moves on) */
     isk_pool_fn fn;
     void *ctx;
-    size_t n, chunk;
+    size_t chunk;
     pool_range *range;         /* thread t's own items, [t n / threads, (t+1) n / threads) */
     int generation;            /* a new job bumps it */
     atomic_int running;        /* workers still inside the current job (changed under the lock) */
@@ -112,20 +112,24 @@ static void spin_pause(void)
 #endif
 }
 
-/* Spins until *v is 0 or `ns` have passed. */
-static void spin_until_zero(atomic_int *v, long long ns)
+double isk_pool_seconds(void)
 {
     struct timespec t;
     clock_gettime(CLOCK_MONOTONIC, &t);
-    const long long until = (long long)t.tv_sec * 1000000000ll + t.tv_nsec + ns;
+    return (double)t.tv_sec + 1e-9 * (double)t.tv_nsec;
+}
+
+/* Spins until *v is 0 or `seconds` have passed. */
+static void spin_until_zero(atomic_int *v, double seconds)
+{
+    const double until = isk_pool_seconds() + seconds;
     for (;;) {
         for (int k = 0; k < 256; k++) {
             if (atomic_load(v) == 0)
                 return;
             spin_pause();
         }
-        clock_gettime(CLOCK_MONOTONIC, &t);
-        if ((long long)t.tv_sec * 1000000000ll + t.tv_nsec >= until)
+        if (isk_pool_seconds() >= until)
             return;
     }
 }
@@ -256,7 +260,6 @@ void isk_pool_for(isk_pool *p, size_t n, size_t min_items, isk_pool_fn fn, void 
     pthread_mutex_lock(&p->lock);
     p->fn = fn;
     p->ctx = ctx;
-    p->n = n;
     /* every thread can get at least four chunks */
     p->chunk = n / ((size_t)p->threads * 4) < CHUNK ? n / ((size_t)p->threads * 4) : CHUNK;
     if (p->chunk < 1)
@@ -275,11 +278,11 @@ void isk_pool_for(isk_pool *p, size_t n, size_t min_items, isk_pool_fn fn, void 
     /* When every worker has started the job, they end soon after the
      * caller (their last claims are a chunk each): waiting for them asleep
      * would add the time this VM takes to run a woken thread again (60-90
-     * us).  A worker still asleep is waited for asleep:
-     * spinning then kept it from waking (it woke 210-320 us late instead of
-     * 13 us: the two virtual cores share a physical one at times). */
+     * us).  A worker still asleep is waited for asleep: spinning then kept
+     * it from waking (it woke 210-320 us late instead of 13 us: the two
+     * virtual cores share a physical one at times). */
     if (atomic_load(&p->awake) == p->threads - 1)
-        spin_until_zero(&p->running, CALLER_SPIN_NS);
+        spin_until_zero(&p->running, CALLER_SPIN_SECONDS);
     pthread_mutex_lock(&p->lock);
     while (atomic_load(&p->running) > 0)
         pthread_cond_wait(&p->done, &p->lock);

@@ -45,6 +45,9 @@ isk_scratch *isk_pool_scratch(isk_pool *pool, int worker);
  * on the caller in item order. */
 void isk_pool_for(isk_pool *pool, size_t n, size_t min_items, isk_pool_fn fn, void *ctx);
 
+/* A monotonic clock, in seconds: what the pool and the threaded draw time
+ * themselves with. */
+double isk_pool_seconds(void);
 /* The machine's online cores (at least 1). */
 int isk_pool_online_cores(void);
 
