@@ -76,16 +76,35 @@ typedef struct band_job {
     fx_group *g;
     const isk_color *fill; /* NULL, or the colour every band first fills its own pixels with */
     int nb;
-    fx_band band[ISK_POOL_MAX_THREADS];
-    isk_status status[ISK_POOL_MAX_THREADS];
-    double seconds[ISK_POOL_MAX_THREADS]; /* each band's time, for the shares */
-    uint8_t *copy[ISK_POOL_MAX_THREADS];   /* a band of columns' own canvas pixels, or NULL: in place */
+    /* one of each for every thread, in the job's own allocation (job_new):
+     * sized for ISK_POOL_MAX_THREADS, the job was half a megabyte (a band
+     * holds its sprites by size) that calloc zeroed every draw */
+    fx_band *band;
+    isk_status *status;
+    double *seconds; /* each band's time, for the shares */
+    uint8_t **copy;  /* a band of columns' own canvas pixels, or NULL: in place */
     /* sorting into bands: share t of the store is [t n / nb, (t+1) n / nb)
      * (as many shares as bands, one per thread) */
     uint8_t *band_of_row;          /* the canvas's height */
     size_t *count;                 /* [t * nb + b]: share t's particles in band b */
     size_t *pos;                   /* [t * nb + b]: where share t writes them in band b */
 } band_job;
+
+/* A zeroed job for up to `threads` bands, or NULL. */
+static band_job *job_new(int threads)
+{
+    const size_t t = (size_t)threads;
+    band_job *j = calloc(1, sizeof *j + t * (sizeof *j->band + sizeof *j->seconds + sizeof *j->copy +
+                                             sizeof *j->status));
+    if (!j)
+        return NULL;
+    /* widest alignment first: the job's size is a multiple of its own */
+    j->band = (fx_band *)(void *)(j + 1);
+    j->seconds = (double *)(void *)(j->band + t);
+    j->copy = (uint8_t **)(void *)(j->seconds + t);
+    j->status = (isk_status *)(void *)(j->copy + t);
+    return j;
+}
 
 /* Rows [0, height) of the columns [c0, c1) from one canvas's pixels to
  * another's (the same size and stride). */
@@ -389,7 +408,7 @@ isk_status fx_draw_bands(isk_effect *e, isk_canvas *c, fx_group *g, const fx_ban
     const double work =
         (double)g->store.count * dots_each + (fill ? (double)c->width * c->height / FX_FILL_PIXELS_A_DOT : 0.0);
     if (threads >= 2 && work >= e->band_min_work && g->store.count > 0 && c->height >= 2 * threads)
-        j = calloc(1, sizeof *j);
+        j = job_new(threads);
     if (!j) { /* on the caller alone (the draw itself needs no memory) */
         if (fill)
             isk_canvas_fill(c, *fill);
