@@ -2,9 +2,10 @@
  * update_on_pool): a group whose update takes less than FX_POOL_MIN_SECONDS
  * on one thread steps on the caller alone, where waking the workers would
  * cost more than they save; a big one on the threads.  The choice is made
- * from the group's cost measured on the caller, at its first update and
- * again when its count halves or doubles.  The bytes are the same either
- * way (threads_check). */
+ * from the group's cost measured on the caller, at its first update, again
+ * when its count halves or doubles, and now and then while it lies near
+ * the line or its time on the threads falls under 4 times it.  The bytes
+ * are the same either way (threads_check). */
 #include <criterion/criterion.h>
 
 #include "scene/effect_internal.h"
@@ -42,6 +43,31 @@ Test(update_share, a_small_group_steps_on_the_caller_and_a_big_one_on_the_thread
     cr_expect_eq(b->since, 4);
     isk_effect_destroy(small);
     isk_effect_destroy(big);
+}
+
+Test(update_share, a_group_that_became_cheap_is_measured_again)
+{
+    /* A group measured dear (as a falling layer is, before it comes to
+     * rest at the same count) goes to the threads; once its time there
+     * lies near the line, it is measured again on the caller, and its true
+     * cost keeps it there.  (1000 particles: under
+     * ISK_PIPELINE_MIN_PARALLEL_BLOCKS, so "the threads" run it on the
+     * caller, well under 0.4 ms even under the sanitizers.) */
+    isk_effect *fx = layer("1000");
+    fx_step_cost *c = &fx->groups[0].step_cost;
+    cr_assert_eq(isk_effect_step(fx), ISK_OK); /* the first measure */
+    const double cheap = c->per_particle;
+    cr_assert_gt(cheap, 0.0);
+    *c = (fx_step_cost){1e-6, 1000, 1000, 0.0}; /* 1 ms a step, long ago */
+    cr_assert_eq(isk_effect_step(fx), ISK_OK);
+    cr_expect_eq(c->per_particle, 1e-6, "on the threads: no new measure");
+    cr_expect_eq(c->since, 1001);
+    cr_expect_gt(c->pool_seconds, 0.0);
+    cr_assert_eq(isk_effect_step(fx), ISK_OK);
+    cr_expect_lt(c->per_particle, 1e-6, "measured again on the caller");
+    cr_expect_eq(c->since, 0);
+    cr_expect_eq(c->pool_seconds, 0.0);
+    isk_effect_destroy(fx);
 }
 
 Test(update_share, one_thread_and_the_tests_switch_keep_the_old_paths)

@@ -299,11 +299,17 @@ static isk_status run_steps(isk_effect *e, fx_group *g, const fx_step_kind *cons
 /* Whether a group's update goes to the threads: from its cost on the
  * caller alone, measured at its first update, again when its count has
  * halved or doubled since, and every FX_STEP_COST_AGAIN updates while it
- * lies near the line.  (Measured on the threads, the cost would include
- * the lines moving between the cores, which the caller alone does not
- * pay: 5000 particles looked like 0.045 ms of work against a true 0.010.)
- * The bytes are the same either way. */
-#define FX_STEP_COST_AGAIN 256
+ * lies near the line by that measure or its last time on the threads lies
+ * under 4 times the line.  (A group whose particles came to rest costs a
+ * tenth of what it did falling, at the same count: the 10^6 dots at rest
+ * took 0.08-0.10 ms a step on two threads, 0.04-0.05 on one.)  Only the
+ * caller's measure decides: measured on the threads, the cost would
+ * include the lines moving between the cores, which the caller alone does
+ * not pay (5000 particles looked like 0.045 ms of work against a true
+ * 0.010).  A measure on the caller near the line costs at most 0.3 ms
+ * more than on the threads; once every FX_STEP_COST_AGAIN updates, 10 us
+ * an update.  The bytes are the same either way. */
+#define FX_STEP_COST_AGAIN 32
 static int update_on_pool(const isk_effect *e, fx_group *g)
 {
     fx_step_cost *c = &g->step_cost;
@@ -311,7 +317,8 @@ static int update_on_pool(const isk_effect *e, fx_group *g)
         return 1;
     const size_t n = g->store.count;
     const double guess = c->per_particle * (double)n;
-    const int near = guess > 0.25 * FX_POOL_MIN_SECONDS && guess < 4.0 * FX_POOL_MIN_SECONDS;
+    const int near = (guess > 0.25 * FX_POOL_MIN_SECONDS && guess < 4.0 * FX_POOL_MIN_SECONDS) ||
+                     (c->pool_seconds > 0.0 && c->pool_seconds < 4.0 * FX_POOL_MIN_SECONDS);
     if (!(c->per_particle > 0.0) || n > 2 * c->count || 2 * n < c->count || (near && c->since >= FX_STEP_COST_AGAIN))
         return 0; /* measure it on the caller */
     c->since++;
@@ -331,17 +338,20 @@ static isk_status step_group(isk_effect *e, fx_group *g)
         /* a multi-Coulomb explosion releases particles of the store as it goes */
         isk_rest *rest = g->rests && !g->mc_active && !e->no_rest ? &g->rest : NULL;
         const int pool = g->parallel && update_on_pool(e, g);
-        /* on the caller when it could have been shared: update_on_pool's measure */
-        const int timed = g->parallel && !pool && isk_pool_threads(e->pool) > 1;
+        /* timed whenever it could have been shared: update_on_pool's measure on the caller, its
+           hint on the threads */
+        const int timed = g->parallel && isk_pool_threads(e->pool) > 1;
         const double t0 = timed ? isk_pool_seconds() : 0.0;
         if (pool)
             e->scratch.nonfinite |=
                 isk_pipeline_run_pool_rest(&g->pipeline, &g->store, g->store.count, h, e->pool, rest);
         else
             isk_pipeline_run_rest(&g->pipeline, &g->store, g->store.count, h, &e->scratch, rest);
-        if (timed) {
+        if (timed && pool) {
+            g->step_cost.pool_seconds = isk_pool_seconds() - t0;
+        } else if (timed) {
             const size_t n = g->store.count;
-            g->step_cost = (fx_step_cost){n ? (isk_pool_seconds() - t0) / (double)n : 0.0, n, 0};
+            g->step_cost = (fx_step_cost){n ? (isk_pool_seconds() - t0) / (double)n : 0.0, n, 0, 0.0};
         }
         s = run_steps(e, g, g->substep_end, g->nsubstep_end, time + h * j, h);
         if (e->scratch.nonfinite) { /* never kept or drawn: removed and counted (iskra/limits.h) */

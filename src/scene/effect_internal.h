@@ -91,6 +91,7 @@ typedef struct fx_step_cost {
     double per_particle;          /* seconds, at the last measure (0: not yet) */
     size_t count;                 /* the group's particles then */
     long since;                   /* updates since */
+    double pool_seconds;          /* its last update on the threads, whole (0: none since) */
 } fx_step_cost;
 
 /* How one of a group's banded draws shares its particles among the bands
