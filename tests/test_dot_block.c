@@ -64,7 +64,7 @@ Test(dot_block, weights_are_the_same_on_every_build)
     isk_rng_seed(&r, 5);
     for (int n = 0; n < 20000; n++) {
         const int w = 1 + (int)isk_rng_below(&r, 64), h = 1 + (int)isk_rng_below(&r, 64);
-        const int m = (int)isk_rng_below(&r, DOT_BLOCK + 1);
+        const int m = (int)isk_rng_below(&r, DOT_BATCH + 1); /* a draw's batch, up to its whole arrays */
         /* a tile: its first column and row, the canvas's last */
         const double X0 = (double)isk_rng_below(&r, (uint32_t)w), Y0 = (double)isk_rng_below(&r, (uint32_t)h);
         const double H1 = h - 1.0, W1 = w - 1.0;

@@ -122,7 +122,9 @@ static ISK__INLINE void run_pixels(const isk_canvas *c, int r0, int r1, int c0, 
 }
 
 /* The exact-area dot over a batch, in blocks of DOT_BLOCK points:
- *   1. transform the block (the view's arithmetic, as isk_view_to_screen);
+ *   1. transform the block (the view's arithmetic, as isk_view_to_screen),
+ *      keeping the points that can touch the tile, gathered over blocks
+ *      until at least DOT_BLOCK are kept (dot_block.h's DOT_BATCH);
  *   2. for each point whose 2x2 block is wholly on the canvas, its top-left
  *      pixel and four weights (raster/dot_kernel.h's rule; 4 or 8 points
  *      per step with AVX2 or AVX-512 when the CPU has it: the same IEEE
@@ -200,9 +202,10 @@ static ISK__INLINE void run_dots_blocked(const isk_canvas *c, int r0, int r1, in
     const select_view sc = {camera, keep, hw, -a, tx, sx, px, browser ? X0 - 2.0 : X0 - 1.0,
                             browser ? c1 + 1.0 : (double)c1, c->width};
     dot_block b;
+    int have = 0; /* the batch's points (dot_block.h's DOT_BATCH) */
     for (size_t i0 = 0; i0 < n; i0 += DOT_BLOCK) {
         const int m = n - i0 < DOT_BLOCK ? (int)(n - i0) : DOT_BLOCK;
-        /* b.ix: the point's place in the block, until the weights overwrite it */
+        /* b.ix: the point's place in its block, until the weights overwrite it */
         const double *yb = y + i0;
         double gathered[DOT_BLOCK];
         if (list) { /* a band's points: their y gathered into the block first */
@@ -214,21 +217,27 @@ static ISK__INLINE void run_dots_blocked(const isk_canvas *c, int r0, int r1, in
         }
         int kept;
         if (by_columns) {
-            kept = select(&sc, x + i0, m, b.x, b.ix);
-            for (int k = 0; k < kept; k++) {
+            kept = select(&sc, x + i0, m, b.x + have, b.ix + have);
+            for (int k = have; k < have + kept; k++) {
                 const double Y = screen_y(&sv, y[i0 + (size_t)b.ix[k]]);
                 b.y[k] = keep ? isk__keep_on_canvas(Y, c->height) : Y;
             }
         } else {
-            kept = select(&sv, yb, m, b.y, b.ix);
-            for (int k = 0; k < kept; k++) {
+            kept = select(&sv, yb, m, b.y + have, b.ix + have);
+            for (int k = have; k < have + kept; k++) {
                 const double xi = x[POINT(list, i0 + (size_t)b.ix[k])];
                 const double X = camera ? hw + a * (xi + tx) : sx * xi + px;
                 b.x[k] = keep ? isk__keep_on_canvas(X, c->width) : X;
             }
         }
-        weights(&b, kept, X0, X1, Y0, H1);
-        for (int k = 0; k < kept; k++) {
+        have += kept;
+        const int last = i0 + (size_t)m >= n;
+        if (have < DOT_BLOCK && !last)
+            continue;
+        /* the batch's whole steps, or at the end all of it */
+        const int batch = last ? have : have / DOT_STEP * DOT_STEP;
+        weights(&b, batch, X0, X1, Y0, H1);
+        for (int k = 0; k < batch; k++) {
             if (b.fast[k] == DOT_EDGE) {
                 edge_block(pixels, stride, r0, r1, c0, c1, b.ix[k], b.iy[k], b.w[k], col, lut, mode);
             } else if (b.fast[k]) {
@@ -247,6 +256,11 @@ static ISK__INLINE void run_dots_blocked(const isk_canvas *c, int r0, int r1, in
                 isk__dot_tile(c, r0, r1, c0, c1, b.x[k], b.y[k], col, lut, mode);
             }
         }
+        for (int k = batch; k < have; k++) { /* fewer than DOT_STEP: to the next batch */
+            b.x[k - batch] = b.x[k];
+            b.y[k - batch] = b.y[k];
+        }
+        have -= batch;
     }
 }
 
