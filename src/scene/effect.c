@@ -316,13 +316,24 @@ static int update_on_pool(const isk_effect *e, fx_group *g)
     if (e->pool_always || isk_pool_threads(e->pool) < 2)
         return 1;
     const size_t n = g->store.count;
-    const double guess = c->per_particle * (double)n;
-    const int near = (guess > 0.25 * FX_POOL_MIN_SECONDS && guess < 4.0 * FX_POOL_MIN_SECONDS) ||
-                     (c->pool_seconds > 0.0 && c->pool_seconds < 4.0 * FX_POOL_MIN_SECONDS);
+    const double guess = c->per_particle * (double)n, high = 4.0 * FX_POOL_MIN_SECONDS;
+    const int near = (guess > 0.25 * FX_POOL_MIN_SECONDS && guess < high) ||
+                     (c->pool_seconds > 0.0 && c->pool_seconds < high);
     if (!(c->per_particle > 0.0) || n > 2 * c->count || 2 * n < c->count || (near && c->since >= FX_STEP_COST_AGAIN))
         return 0; /* measure it on the caller */
     c->since++;
     return guess >= FX_POOL_MIN_SECONDS;
+}
+
+/* What update_on_pool reads: an update's `seconds` on the caller is a
+ * new measure, on the threads only its hint. */
+static void record_step_cost(fx_group *g, int pool, double seconds)
+{
+    const size_t n = g->store.count;
+    if (pool)
+        g->step_cost.pool_seconds = seconds;
+    else
+        g->step_cost = (fx_step_cost){n ? seconds / (double)n : 0.0, n, 0, 0.0};
 }
 
 static isk_status step_group(isk_effect *e, fx_group *g)
@@ -338,8 +349,7 @@ static isk_status step_group(isk_effect *e, fx_group *g)
         /* a multi-Coulomb explosion releases particles of the store as it goes */
         isk_rest *rest = g->rests && !g->mc_active && !e->no_rest ? &g->rest : NULL;
         const int pool = g->parallel && update_on_pool(e, g);
-        /* timed whenever it could have been shared: update_on_pool's measure on the caller, its
-           hint on the threads */
+        /* timed whenever it could have been shared (record_step_cost) */
         const int timed = g->parallel && isk_pool_threads(e->pool) > 1;
         const double t0 = timed ? isk_pool_seconds() : 0.0;
         if (pool)
@@ -347,12 +357,8 @@ static isk_status step_group(isk_effect *e, fx_group *g)
                 isk_pipeline_run_pool_rest(&g->pipeline, &g->store, g->store.count, h, e->pool, rest);
         else
             isk_pipeline_run_rest(&g->pipeline, &g->store, g->store.count, h, &e->scratch, rest);
-        if (timed && pool) {
-            g->step_cost.pool_seconds = isk_pool_seconds() - t0;
-        } else if (timed) {
-            const size_t n = g->store.count;
-            g->step_cost = (fx_step_cost){n ? (isk_pool_seconds() - t0) / (double)n : 0.0, n, 0, 0.0};
-        }
+        if (timed)
+            record_step_cost(g, pool, isk_pool_seconds() - t0);
         s = run_steps(e, g, g->substep_end, g->nsubstep_end, time + h * j, h);
         if (e->scratch.nonfinite) { /* never kept or drawn: removed and counted (iskra/limits.h) */
             size_t first;
