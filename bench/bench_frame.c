@@ -1,7 +1,9 @@
 /* A whole frame at 800x600, as a program showing an effect spends it:
  * update (isk_effect_step) and draw (isk_effect_render, which clears the
  * canvas to the background first), for 10^5 .. 1.6*10^7 coverage dots and
- * 10^5 sprites, on 1 .. all cores (isk_effect_set_threads).  The clear is
+ * 10^5 sprites and 10^4 discs (both additive: their particles are split
+ * among the threads, effect_bands.c), on 1 .. all cores
+ * (isk_effect_set_threads).  The clear is
  * timed inside the draw ("clr+draw"), not on its own: on the threads, each
  * band clears the pixels it then draws, which a clear timed apart (by the
  * caller, on one thread: 0.15-0.18 ms a frame here) would not show.  The
@@ -59,6 +61,7 @@ static const row ROWS[] = {
     {"settled", 1000000, ISK_DRAW_DOT, 10, 360}, {"at rest", 1000000, ISK_DRAW_DOT, 10, 600},
     {"dots", 4000000, ISK_DRAW_DOT, 8, 0},
     {"dots", 16000000, ISK_DRAW_DOT, 4, 0},   {"sprites", 100000, ISK_DRAW_SPRITE, 20, 0},
+    {"discs", 10000, ISK_DRAW_DISC, 20, 0},
 };
 enum { NROWS = sizeof ROWS / sizeof ROWS[0] };
 

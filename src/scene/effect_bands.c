@@ -25,13 +25,24 @@
  * halves interleaved, medians of 30-40): 7.1-8.8 ms drawn in place against
  * 4.5-5.8 ms each in a canvas of its own while the two cores were far
  * apart (on this shared VM, for part of a session), the same 4.9-5.0 ms
- * when they were close; the copies cost about 0.1 ms. */
+ * when they were close; the copies cost about 0.1 ms..
+ *
+ * A group that adds (ISK_BLEND_ADD) can instead have its particles split
+ * among the threads (FX_BANDS_SPLIT): each draws its share of the store on
+ * the whole canvas, the first onto the canvas itself, the others onto
+ * zeroed copies of their own, and the copies are then added into the
+ * canvas, a strip of rows per thread.  What a particle adds to a pixel
+ * does not depend on the pixel, and saturating adds of amounts >= 0 give
+ * min(255, the sum) however they are grouped, so the bytes are again
+ * those of one thread.  Discs, whose kernel has no form cut to rows, are
+ * shared out only this way. */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
 #include "effect_internal.h"
 #include "iskra/draw.h"
+#include "raster/span_simd.h"
 #include "sim/pool.h"
 #include "view/world_batch.h"
 
@@ -66,6 +77,22 @@
  * 19.4, 20.6, 24.2 ms sorted on 2, 3, 4, 8 threads against 16.4, 18.4,
  * 21.2, 32.5 ms scanned), sorting pays from four bands on. */
 #define FX_BIN_MIN_BANDS 4
+/* When an additive group is split (FX_BANDS_SPLIT) rather than cut into
+ * bands.  A split band reads only its share of the store and draws each
+ * of its particles whole, but it zeroes a canvas of its own, which is added
+ * in after, and its blends spread over the whole canvas where a band's
+ * rows stay in its core's cache.  Measured on two threads, split against
+ * bands, the draw with the render's clear (bench_layer.h's layer made
+ * additive, two effects in one process, frames interleaved, medians of 41,
+ * at two moments of the host on 2026-12-05): 8 px sprites 0.86x the time
+ * at 10^5, then 1.01-1.31x; 1.15x at 2*10^4; coverage dots 1.21x at 10^5,
+ * 1.20x at 3*10^5, 1.01x at 10^6 falling, 1.01x at 4*10^6, 1.00x at
+ * 1.6*10^7, but settled on their floor (bands of columns, which draw in
+ * copies of the canvas too and each scan the whole store) 0.85x then
+ * 0.96-0.97x, at rest 0.87x then 0.96-0.98x.  So a group is split where
+ * its bands would be columns, and where its draw has no form cut to rows
+ * (discs, drawn on the caller alone before: 0.59-0.68x its time there for
+ * 2*10^3-5*10^3 discs of 8 px); bands of rows stay bands. */
 /* The most memory the copies of the bands of columns may take (beyond it
  * the bands draw in place: the same bytes). */
 #define FX_COPIES_MAX_BYTES ((size_t)64 << 20)
@@ -82,7 +109,9 @@ typedef struct band_job {
     fx_band *band;
     isk_status *status;
     double *seconds; /* each band's time, for the shares */
-    uint8_t **copy;  /* a band of columns' own canvas pixels, or NULL: in place */
+    uint8_t **copy;  /* a band of columns' own canvas pixels, or NULL: in place; for a
+                      * split, every band's but the first, zeroed and added in after */
+    int split;       /* the bands split the particles, not the canvas (FX_BANDS_SPLIT) */
     /* sorting into bands: share t of the store is [t n / nb, (t+1) n / nb)
      * (as many shares as bands, one per thread) */
     uint8_t *band_of_row;          /* the canvas's height */
@@ -115,9 +144,23 @@ static void copy_columns(uint8_t *to, const uint8_t *from, const isk_canvas *c, 
         memcpy(to + (size_t)y * c->stride + at, from + (size_t)y * c->stride + at, len);
 }
 
+/* Bytes of a copy of c's pixels (its rows at its stride, the last one
+ * ending with its last pixel). */
+static size_t canvas_bytes(const isk_canvas *c)
+{
+    return (size_t)(c->height - 1) * c->stride + (size_t)c->width * 4u;
+}
+
 static void draw_band(band_job *j, size_t item)
 {
     const fx_band *b = &j->band[item];
+    if (j->split && item > 0) { /* its share of the particles' increments, added in after */
+        isk_canvas own;
+        isk_canvas_wrap(&own, j->copy[item], j->c->width, j->c->height, j->c->stride);
+        memset(own.pixels, 0, canvas_bytes(j->c));
+        j->status[item] = j->g->draw(j->e, &own, j->g, b);
+        return;
+    }
     if (!j->copy[item]) {
         if (j->fill)
             isk_fill_rect(j->c, b->c0, b->r0, b->c1 - b->c0, b->r1 - b->r0, *j->fill, ISK_BLEND_REPLACE);
@@ -149,7 +192,7 @@ static void run_band(void *ctx, int worker, size_t item)
 static void give_copies(band_job *j)
 {
     fx_bins *bins = &j->e->bins;
-    const size_t one = (size_t)(j->c->height - 1) * j->c->stride + (size_t)j->c->width * 4u;
+    const size_t one = canvas_bytes(j->c);
     const size_t n = (size_t)(j->nb - 1);
     if (n == 0 || one > FX_COPIES_MAX_BYTES / n)
         return;
@@ -400,6 +443,65 @@ static int sort_into_bands(band_job *j)
     return ok;
 }
 
+/* Rows [r0, r1) of every split band's copy added into the canvas (the
+ * strips of rows, one per thread, after the draw). */
+static void add_copies(void *ctx, int worker, size_t strip)
+{
+    (void)worker;
+    band_job *j = ctx;
+    const isk_canvas *c = j->c;
+    const int r0 = (int)((long long)c->height * (long long)strip / j->nb);
+    const int r1 = (int)((long long)c->height * (long long)(strip + 1) / j->nb);
+    for (int k = 1; k < j->nb; k++)
+        for (int y = r0; y < r1; y++)
+            isk__span_add_bytes(c->pixels + (size_t)y * c->stride, j->copy[k] + (size_t)y * c->stride,
+                                c->width * 4);
+}
+
+/* The first of the bands' errors, if any; frees the job. */
+static isk_status finish(band_job *j)
+{
+    isk_status s = ISK_OK;
+    for (int k = 0; k < j->nb && s == ISK_OK; k++)
+        s = j->status[k];
+    free(j);
+    return s;
+}
+
+/* Splits the group's particles into as many shares as threads (the first
+ * drawn onto the canvas, each other onto a copy of its own): 0 when the
+ * copies cannot be had. */
+static int split_particles(band_job *j, const fx_band *whole, int threads)
+{
+    j->nb = threads;
+    give_copies(j);
+    if (!j->copy[1]) {
+        j->nb = 0; /* for the bands instead */
+        return 0;
+    }
+    const unsigned long long n = whole->end - whole->first;
+    for (int k = 0; k < j->nb; k++) {
+        fx_band *b = &j->band[k];
+        *b = *whole;
+        b->first = whole->first + (size_t)(n * (unsigned)k / (unsigned)threads);
+        b->end = whole->first + (size_t)(n * (unsigned)(k + 1) / (unsigned)threads);
+        b->list = NULL;
+    }
+    j->split = 1;
+    j->e->bins.splits++;
+    return 1;
+}
+
+fx_band fx_band_whole(const isk_canvas *c, const fx_group *g)
+{
+    return (fx_band){.r0 = 0, .r1 = c->height, .c0 = 0, .c1 = c->width, .first = 0, .end = g->store.count};
+}
+
+unsigned fx_bands_split(const fx_group *g)
+{
+    return g->def->blend == ISK_BLEND_ADD ? FX_BANDS_SPLIT : 0u;
+}
+
 isk_status fx_draw_bands(isk_effect *e, isk_canvas *c, fx_group *g, const fx_band *whole, unsigned can,
                          double dots_each, const isk_color *fill, fx_shares *shares)
 {
@@ -407,19 +509,34 @@ isk_status fx_draw_bands(isk_effect *e, isk_canvas *c, fx_group *g, const fx_ban
     band_job *j = NULL;
     const double work =
         (double)g->store.count * dots_each + (fill ? (double)c->width * c->height / FX_FILL_PIXELS_A_DOT : 0.0);
-    if (threads >= 2 && work >= e->band_min_work && g->store.count > 0 && c->height >= 2 * threads)
+    if (threads >= 2 && work >= e->band_min_work && g->store.count >= (size_t)threads && c->height >= 2 * threads)
         j = job_new(threads);
+    if (j) {
+        j->e = e;
+        j->c = c;
+        j->g = g;
+        j->fill = fill;
+    }
+    int cut[ISK_POOL_MAX_THREADS + 1];
+    const int columns = j && !(can & FX_BANDS_UNCUT) ? fx_place_cuts(e, g, c, threads, can, shares, cut) : 0;
+    /* an additive group is split where bands cannot go, or would be of
+     * columns (which draw in copies of the canvas anyway, and each scan
+     * the whole store; measured above) */
+    if (j && (can & FX_BANDS_SPLIT) && ((can & FX_BANDS_UNCUT) || columns || e->split_always) &&
+        split_particles(j, whole, threads)) {
+        isk_pool_for(e->pool, (size_t)j->nb, 2, run_band, j);
+        isk_pool_for(e->pool, (size_t)j->nb, 1, add_copies, j);
+        return finish(j);
+    }
+    if (j && (can & FX_BANDS_UNCUT)) {
+        free(j);
+        j = NULL;
+    }
     if (!j) { /* on the caller alone (the draw itself needs no memory) */
         if (fill)
             isk_canvas_fill(c, *fill);
         return g->draw(e, c, g, whole);
     }
-    j->e = e;
-    j->c = c;
-    j->g = g;
-    j->fill = fill;
-    int cut[ISK_POOL_MAX_THREADS + 1];
-    const int columns = fx_place_cuts(e, g, c, threads, can, shares, cut);
     /* empty bands (cuts that coincide where the particles crowd into a
      * few rows) are dropped: a point then reaches at most 5 bands */
     for (int k = 0; k < threads; k++)
@@ -447,9 +564,5 @@ isk_status fx_draw_bands(isk_effect *e, isk_canvas *c, fx_group *g, const fx_ban
         else
             shares->nb = 0;
     }
-    isk_status s = ISK_OK;
-    for (int k = 0; k < j->nb && s == ISK_OK; k++)
-        s = j->status[k];
-    free(j);
-    return s;
+    return finish(j);
 }

@@ -67,7 +67,8 @@ typedef struct fx_band {
     int r0, r1;                                       /* the canvas rows [r0, r1) it blends */
     int c0, c1;                                       /* and columns [c0, c1) (only the batched dots
                                                        * get bands of columns: FX_BANDS_COLUMNS) */
-    const uint32_t *list;                             /* NULL: every particle; else these, */
+    size_t first, end;                                /* the particles [first, end) of the store, */
+    const uint32_t *list;                             /* or, when not NULL, these, */
     size_t nlist;                                     /* in this order (effect_bands.c) */
     const isk_sprite *sprite[ISK_SPRITE_MAX_SIZE + 1]; /* by whole-pixel size (sprite groups) */
     double sprite_reach;                              /* rows a sprite can reach from its centre */
@@ -81,6 +82,7 @@ typedef struct fx_bins {
     uint8_t *copies;               /* bands of columns after the first: their own copies of the
                                       canvas, in which they draw their columns (effect_bands.c) */
     size_t code_cap, idx_cap, copies_cap;
+    long splits;                   /* draws whose particles were split among the threads (tests) */
 } fx_bins;
 
 typedef isk_status (*fx_draw_fn)(isk_effect *e, isk_canvas *c, fx_group *g, const fx_band *b);
@@ -191,6 +193,8 @@ struct isk_effect {
     double band_min_work;          /* a group's draw is shared out over the threads only from this much
                                       work, in batched coverage dots (FX_BAND_MIN_WORK; the tests that
                                       compare thread counts set 0, so every size is cut into bands) */
+    int split_always;              /* tests: every additive group's particles split among the threads
+                                      (FX_BANDS_SPLIT) wherever bands would be cut, to check both */
     isk_sinlut sin_table;
     double time;
     long frame;
@@ -274,10 +278,19 @@ fx_draw_fn fx_choose_draw(const fx_group *g);
 /* What a group's draw function can take (fx_draw_bands): its particles
  * sorted into bands of rows first (dots and pixels, which reach at most a
  * row beyond their own), bands of columns instead of rows (the batched
- * dots: a scene settled on its floor has its particles on one row). */
-enum { FX_BANDS_SORT = 1, FX_BANDS_COLUMNS = 2 };
+ * dots: a scene settled on its floor has its particles on one row), its
+ * particles split among the threads instead of the canvas (a group that
+ * adds, ISK_BLEND_ADD: what a particle adds to a pixel does not depend on
+ * the pixel, so shares drawn onto zeroed canvases of their own and added
+ * in after give the same bytes); FX_BANDS_UNCUT: the draw has no form cut
+ * to rows (discs), so only a split can share it out. */
+enum { FX_BANDS_SORT = 1, FX_BANDS_COLUMNS = 2, FX_BANDS_SPLIT = 4, FX_BANDS_UNCUT = 8 };
 isk_status fx_draw_bands(isk_effect *e, isk_canvas *c, fx_group *g, const fx_band *whole, unsigned can,
                          double dots_each, const isk_color *fill, fx_shares *shares);
+/* The band of g's whole draw: every row and column of c, every particle. */
+fx_band fx_band_whole(const isk_canvas *c, const fx_group *g);
+/* FX_BANDS_SPLIT when g's pixels add (its blend is ISK_BLEND_ADD), else 0. */
+unsigned fx_bands_split(const fx_group *g);
 /* The nb bands' cuts of the canvas for g's draw, at the quantiles of a
  * sample of its particles' screen rows (or columns, when `can` allows them
  * and the rows cannot share the particles): cut[0] = 0 <= ... <= cut[nb]

@@ -191,8 +191,8 @@ static isk_status draw_styled_dots(isk_effect *e, isk_canvas *c, fx_group *g, co
     const isk_particles *p = &g->store;
     const isk_blend blend = g->def->blend;
     const int browser = g->def->draw == ISK_DRAW_DOT_BROWSER;
-    const size_t n = b->list ? b->nlist : p->count;
-    for (size_t k = 0; k < n; k++) {
+    const size_t n = b->list ? b->nlist : b->end;
+    for (size_t k = b->list ? 0 : b->first; k < n; k++) {
         const size_t i = b->list ? b->list[k] : k;
         double X, Y, mult;
         screen_point(e, c, g, i, &X, &Y);
@@ -217,16 +217,16 @@ static isk_status draw_dots(isk_effect *e, isk_canvas *c, fx_group *g, const fx_
         isk__draw_batch_list_rows(c, &e->view, b->list, b->nlist, g->store.x, g->store.y, g->def->color,
                                   g->def->blend, rule, b->r0, b->r1);
     else
-        isk__draw_batch_tile(c, &e->view, g->store.count, g->store.x, g->store.y, g->def->color, g->def->blend,
-                             rule, b->r0, b->r1, b->c0, b->c1);
+        isk__draw_batch_tile(c, &e->view, b->end - b->first, g->store.x + b->first, g->store.y + b->first,
+                             g->def->color, g->def->blend, rule, b->r0, b->r1, b->c0, b->c1);
     return ISK_OK;
 }
 
 static isk_status draw_styled_pixels(isk_effect *e, isk_canvas *c, fx_group *g, const fx_band *b)
 {
     const isk_particles *p = &g->store;
-    const size_t n = b->list ? b->nlist : p->count;
-    for (size_t k = 0; k < n; k++) {
+    const size_t n = b->list ? b->nlist : b->end;
+    for (size_t k = b->list ? 0 : b->first; k < n; k++) {
         const size_t i = b->list ? b->list[k] : k;
         double X, Y, mult;
         screen_point(e, c, g, i, &X, &Y);
@@ -237,14 +237,14 @@ static isk_status draw_styled_pixels(isk_effect *e, isk_canvas *c, fx_group *g, 
     return ISK_OK;
 }
 
-/* Discs are drawn whole (fx_band_ok says so): the disc kernel has no band. */
+/* Discs are drawn on the whole canvas (the disc kernel has no form cut to
+ * rows): only the particles can be shared out (FX_BANDS_UNCUT). */
 static isk_status draw_discs(isk_effect *e, isk_canvas *c, fx_group *g, const fx_band *b)
 {
-    (void)b;
     const isk_particles *p = &g->store;
     const int vary = fx_varies(g);
     const double scale = fabs(e->view.sx);
-    for (size_t i = 0; i < p->count; i++) {
+    for (size_t i = b->first; i < b->end; i++) {
         double X, Y, mult;
         isk_view_to_screen(&e->view, p->x[i], p->y[i], &X, &Y);
         isk_color col = style(g, p, i, vary, &mult);
@@ -319,8 +319,8 @@ static isk_status draw_sprites(isk_effect *e, isk_canvas *c, fx_group *g, const 
     double ys[CHUNK];
     int32_t in_reach[CHUNK];
     const double lo = b->r0 - b->sprite_reach, hi = b->r1 + b->sprite_reach;
-    for (size_t o = 0; o < p->count; o += CHUNK) {
-        const int m = p->count - o < CHUNK ? (int)(p->count - o) : CHUNK;
+    for (size_t o = b->first; o < b->end; o += CHUNK) {
+        const int m = b->end - o < CHUNK ? (int)(b->end - o) : CHUNK;
         const int k = isk__batch_select_rows(&e->view, p->y + o, m, lo, hi, ys, in_reach);
         for (int q = 0; q < k; q++) {
             const size_t i = o + (size_t)in_reach[q];
@@ -382,7 +382,7 @@ static double draw_cost(const fx_group *g)
  * first pass. */
 static isk_status render_group(isk_effect *e, isk_canvas *c, fx_group *g, const isk_color *fill)
 {
-    fx_band whole = {.r0 = 0, .r1 = c->height, .c0 = 0, .c1 = c->width};
+    fx_band whole = fx_band_whole(c, g);
     if (g->store.trail) { /* trails under the particles (effect_trail.c) */
         isk_status s = fx_trail_render(e, c, g, fill);
         if (s != ISK_OK)
@@ -394,16 +394,12 @@ static isk_status render_group(isk_effect *e, isk_canvas *c, fx_group *g, const 
         if (s != ISK_OK)
             return s;
     }
-    if (g->draw == draw_discs) {
-        if (fill)
-            isk_canvas_fill(c, *fill);
-        return g->draw(e, c, g, &whole);
-    }
     /* dots and pixels reach at most a row beyond their own (the margin
      * world_batch.h's binning keeps), so their bands can take only their
      * own particles; sprites reach far and read them all */
-    const unsigned can = (g->draw != draw_sprites && g->draw != fx_draw_textures ? FX_BANDS_SORT : 0u) |
-                         (g->draw == draw_dots ? FX_BANDS_COLUMNS : 0u);
+    const unsigned can = (g->draw == draw_discs ? FX_BANDS_UNCUT : 0u) |
+                         (g->draw != draw_sprites && g->draw != fx_draw_textures ? FX_BANDS_SORT : 0u) |
+                         (g->draw == draw_dots ? FX_BANDS_COLUMNS : 0u) | fx_bands_split(g);
     return fx_draw_bands(e, c, g, &whole, can, draw_cost(g), fill, &g->shares);
 }
 

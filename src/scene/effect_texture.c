@@ -57,7 +57,7 @@ isk_status fx_draw_textures(isk_effect *e, isk_canvas *c, fx_group *g, const fx_
     const double scale = fabs(v->sx);
     const double aspect = (double)t->frame_h / (double)t->frame_w;
     const double stretch = streak ? ISK_STREAK_STRETCH : 1.0;
-    for (size_t i = 0; i < p->count; i++) {
+    for (size_t i = b->first; i < b->end; i++) {
         double X, Y, mult;
         isk_view_to_screen(v, p->x[i], p->y[i], &X, &Y);
         isk_color col = fx_style(g, p, i, vary, &mult);

@@ -35,7 +35,7 @@ static isk_status draw_trails(isk_effect *e, isk_canvas *c, fx_group *g, const f
         return ISK_OK;
     const isk_emitter_def *em = g->def;
     double xy[2 * ISK_TRAIL_MAX];
-    for (size_t i = 0; i < p->count; i++) {
+    for (size_t i = b->first; i < b->end; i++) {
         const double *t = p->trail + 2 * (size_t)n * i;
         for (int k = 0; k < n; k++) { /* oldest first: the slot after the newest */
             int slot = (p->trail_head + 1 + k) % n;
@@ -54,11 +54,11 @@ isk_status fx_trail_render(isk_effect *e, isk_canvas *c, fx_group *g, const isk_
             isk_canvas_fill(c, *fill);
         return ISK_OK;
     }
-    const fx_band whole = {.r0 = 0, .r1 = c->height, .c0 = 0, .c1 = c->width};
+    const fx_band whole = fx_band_whole(c, g);
     /* the band machinery runs the group's draw: the trails' for this pass */
     const fx_draw_fn own = g->draw;
     g->draw = draw_trails;
-    isk_status s = fx_draw_bands(e, c, g, &whole, 0u, (double)g->store.trail_len, fill,
+    isk_status s = fx_draw_bands(e, c, g, &whole, fx_bands_split(g), (double)g->store.trail_len, fill,
                                  &g->trail_shares); /* a segment a point */
     g->draw = own;
     return s;

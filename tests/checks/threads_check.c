@@ -30,6 +30,9 @@ static int failures;
 /* Whether a run's bands of columns drew in copies of the canvas of their
  * own (effect_bands.c), since it was last cleared. */
 static int drew_in_copies;
+/* Draws of additive groups split among the threads (effect_bands.c's
+ * FX_BANDS_SPLIT), over the whole check. */
+static long splits;
 
 #define CHECK(cond, ...)                                                                                        \
     do {                                                                                                       \
@@ -40,9 +43,10 @@ static int drew_in_copies;
         }                                                                                                      \
     } while (0)
 
-/* `frames` frames on `threads` threads: the canvas, and a hash of every
- * particle's state (0 when the effect could not be made). */
-static unsigned long long run(const isk_effect_def *d, int threads, long frames, isk_canvas *c)
+/* `frames` frames on `threads` threads, additive groups split among them
+ * (split) or cut into bands like the others: the canvas, and a hash of
+ * every particle's state (0 when the effect could not be made). */
+static unsigned long long run(const isk_effect_def *d, int threads, int split, long frames, isk_canvas *c)
 {
     isk_effect_def copy = *d;
     copy.threads = threads;
@@ -53,6 +57,7 @@ static unsigned long long run(const isk_effect_def *d, int threads, long frames,
     if (made) {
         fx->band_min_work = 0; /* every group's draw in bands, however small: those are what is checked */
         fx->pool_always = 1;   /* and every update that can be shared out */
+        fx->split_always = split;
     }
     if (!made || isk_canvas_init(c, d->width, d->height) != ISK_OK || isk_effect_run(fx, c, frames) != ISK_OK) {
         CHECK(0, "%d threads: %s", threads, err.message);
@@ -72,6 +77,7 @@ static unsigned long long run(const isk_effect_def *d, int threads, long frames,
             }
     }
     drew_in_copies |= fx->bins.copies != NULL;
+    splits += fx->bins.splits;
     isk_effect_destroy(fx);
     return h;
 }
@@ -79,14 +85,16 @@ static unsigned long long run(const isk_effect_def *d, int threads, long frames,
 static void same_on_every_count(const isk_effect_def *d, long frames, const char *name)
 {
     isk_canvas ref;
-    unsigned long long href = run(d, 1, frames, &ref);
-    for (int t = 1; t < NT; t++) {
-        isk_canvas c;
-        unsigned long long h = run(d, THREADS[t], frames, &c);
-        CHECK(isk_canvas_equal(&ref, &c), "%s: %d threads draw other bytes", name, THREADS[t]);
-        CHECK(h == href, "%s: %d threads move the particles differently", name, THREADS[t]);
-        isk_canvas_free(&c);
-    }
+    unsigned long long href = run(d, 1, 0, frames, &ref);
+    for (int t = 1; t < NT; t++)
+        for (int split = 0; split < 2; split++) {
+            isk_canvas c;
+            unsigned long long h = run(d, THREADS[t], split, frames, &c);
+            const char *how = split ? " (additive groups split)" : "";
+            CHECK(isk_canvas_equal(&ref, &c), "%s: %d threads draw other bytes%s", name, THREADS[t], how);
+            CHECK(h == href, "%s: %d threads move the particles differently%s", name, THREADS[t], how);
+            isk_canvas_free(&c);
+        }
     isk_canvas_free(&ref);
 }
 
@@ -303,6 +311,23 @@ int main(int argc, char **argv)
                "spread = 60\nspeed_min = 2\nspeed_max = 6\nforces = gravity\ndraw = sprite\nsize = 0.5\n"
                "blend = over\nsize_over_life = 0:1, 1:0.2\n",
                "draws", quick ? 10 : 40);
+    /* Additive groups of every draw split among the threads: discs (which
+     * have no bands), dots coloured over their life, pixels, and sprites
+     * sized over their life, all faint enough not to saturate (a particle
+     * drawn twice, or by no one, shows). */
+    const long splits_before = splits;
+    scene_text("[scene]\nwidth = 160\nheight = 120\nbackground = #102030\n[force gravity]\ng = 9.81\n"
+               "[emitter discs]\nsource = explosion\nexplosion = gauss\ncount = 3000\nlimit = 3000\n"
+               "forces = gravity\ndraw = disc\nsize = 0.6\nblend = add\ncolor = #ff804010\n"
+               "[emitter ramped]\nsource = explosion\nexplosion = uniform\ncount = 20000\nlimit = 20000\n"
+               "life = 3\nforces = gravity\nblend = add\ncolor_over_life = 0:#ffffff20, 1:#ff400008\n"
+               "[emitter pixels]\nsource = explosion\nexplosion = ring\ncount = 20000\nlimit = 20000\n"
+               "draw = pixel\nblend = add\ncolor = #40ff8010\n"
+               "[emitter sprites]\nsource = stream\nrate = 30000\nlife = 1\nlaunch = cone\nangle = 90\n"
+               "spread = 60\nspeed_min = 2\nspeed_max = 6\nforces = gravity\ndraw = sprite\nsize = 0.5\n"
+               "blend = add\ncolor = #2040ff18\nsize_over_life = 0:1, 1:0.2\n",
+               "additive", quick ? 10 : 40);
+    CHECK(splits > splits_before, "additive: no draw was split among the threads");
     /* A layer fallen onto its floor: most particles on the last row, so
      * the dots' bands are columns (effect_bands.c's place_cuts); exact-area
      * dots, the browser's and pixels, faint enough that the row does not
