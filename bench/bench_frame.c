@@ -1,8 +1,7 @@
 /* A whole frame at 800x600, as a program showing an effect spends it:
  * update (isk_effect_step) and draw (isk_effect_render, which clears the
  * canvas to the background first), for 10^5 .. 1.6*10^7 coverage dots and
- * 10^5 sprites and 10^4 discs (both additive: their particles are split
- * among the threads, effect_bands.c), on 1 .. all cores
+ * 10^5 additive sprites and 10^4 anti-aliased discs, on 1 .. all cores
  * (isk_effect_set_threads).  The clear is
  * timed inside the draw ("clr+draw"), not on its own: on the threads, each
  * band clears the pixels it then draws, which a clear timed apart (by the

@@ -1,7 +1,8 @@
 /* bench/bench_layer.h — the effect bench_frame times and bench_dense
  * dissects: one layer emitter of n particles filling an 800x600 view,
  * gravity and drag moving it, reflecting walls keeping it on the screen,
- * drawn as coverage dots (source-over), or 8 px additive sprites or discs.
+ * drawn as coverage dots or 8 px discs (source-over), or 8 px additive
+ * sprites.
  *
  *     isk_effect *fx;
  *     isk_error err = {0};
@@ -46,7 +47,7 @@ static inline isk_status bench_layer_effect(isk_effect **fx, size_t n, isk_draw_
         e->count = e->limit = e->capacity = n;
         e->draw = draw;
         e->color = isk_rgba(255, 200, 120, 160);
-        e->blend = draw == ISK_DRAW_SPRITE || draw == ISK_DRAW_DISC ? ISK_BLEND_ADD : ISK_BLEND_OVER;
+        e->blend = draw == ISK_DRAW_SPRITE ? ISK_BLEND_ADD : ISK_BLEND_OVER;
         e->size = 8.0 * (8.0 / BENCH_LAYER_W); /* 8 px sprites and discs */
         s = isk_effect_create(fx, &d, err);
     }

@@ -39,18 +39,9 @@ static long splits_of(const char *text, int steps)
 
 #define SCENE "[scene]\nwidth = 200\nheight = 150\n[emitter e]\nsource = explosion\nexplosion = gauss\n"
 
-Test(band_split, additive_discs_are_split_as_they_cannot_be_cut_into_bands)
-{
-    cr_expect_eq(splits_of(SCENE "count = 6000\nlimit = 6000\ndraw = disc\nsize = 0.4\nblend = add\n", 1), 1);
-    /* over: the order of the discs matters, so the caller draws them all */
-    cr_expect_eq(splits_of(SCENE "count = 6000\nlimit = 6000\ndraw = disc\nsize = 0.4\nblend = over\n", 1), 0);
-    /* too little work to share out at all */
-    cr_expect_eq(splits_of(SCENE "count = 100\nlimit = 100\ndraw = disc\nsize = 0.4\nblend = add\n", 1), 0);
-}
-
 /* Additive dots are split where their bands would be columns (a layer on
- * its floor), and stay in bands of rows while it falls; sprites, whose
- * bands are always rows, are never split. */
+ * its floor), and stay in bands of rows while it falls; sprites and discs,
+ * whose bands are always rows, are never split. */
 #define LAYER(draw, blend)                                                                                  \
     "[scene]\nwidth = 640\nheight = 480\n[force gravity]\ng = 400\n[bounds]\nrestitution = 0.2\n"          \
     "[emitter a]\nsource = layer\ncount = 60000\nlimit = 60000\nrect = -9, 9, -9, 9\nforces = gravity\n"   \
@@ -62,6 +53,7 @@ Test(band_split, additive_dots_are_split_where_their_bands_would_be_columns)
     cr_expect_eq(splits_of(LAYER("dot", "add"), 240), 1);
     cr_expect_eq(splits_of(LAYER("dot", "over"), 240), 0);
     cr_expect_eq(splits_of(LAYER("sprite", "add"), 240), 0);
+    cr_expect_eq(splits_of(LAYER("disc", "add"), 240), 0);
 }
 
 /* A 200 x 150 canvas over a buffer whose rows lie `pad` bytes apart beyond

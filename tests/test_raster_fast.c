@@ -22,6 +22,7 @@
 #include "iskra/view.h"
 #include "raster/blend_px.h"
 #include "raster_ref.h"
+#include "raster/circle_rows.h"
 #include "raster/sprite_rows.h"
 #include "view/world_batch.h"
 
@@ -632,6 +633,35 @@ Test(raster_fast, sprites_equal_reference)
         }
         isk_sprite_free(&s);
         check_pair(&p, "sprite", n);
+    }
+}
+
+/* Discs cut into bands of rows (isk__fill_circle_aa_rows) give the bytes
+ * of the whole disc in every mode: small and big row walks, the per-pixel
+ * walk (wider than its row cache) and the tangent rule, the bands drawn
+ * out of order. */
+Test(raster_fast, disc_bands_equal_the_whole_disc)
+{
+    isk_rng r;
+    isk_rng_seed(&r, 17);
+    for (int n = 0; n < 800; n++) {
+        int w = n % 8 == 0 ? 600 : rnd_size(&r), h = rnd_size(&r); /* 600: room for the per-pixel walk */
+        pair p = make_pair(&r, w, h);
+        int cut = (int)isk_rng_below(&r, (uint32_t)h + 1), cut2 = cut + (int)isk_rng_below(&r, (uint32_t)(h - cut) + 1);
+        for (int k = 0; k < 6; k++) {
+            isk_color col = rnd_color(&r);
+            isk_blend mode = MODES[isk_rng_below(&r, 3)];
+            double cx = rnd_coord(&r, w), cy = rnd_coord(&r, h), rad = rnd_radius(&r);
+            if (k == 5) /* wider than the row cache: the per-pixel walk where the canvas is that wide */
+                rad = isk_rng_range(&r, 256.0, 400.0);
+            if (rad > 60000 && isk_rng_below(&r, 2)) /* a huge disc whose edge crosses the canvas */
+                cx = -rad + isk_rng_range(&r, 0, w);
+            isk_fill_circle_aa(&p.c[0], cx, cy, rad, col, mode);
+            isk__fill_circle_aa_rows(&p.c[1], cx, cy, rad, col, mode, cut2, h);
+            isk__fill_circle_aa_rows(&p.c[1], cx, cy, rad, col, mode, 0, cut);
+            isk__fill_circle_aa_rows(&p.c[1], cx, cy, rad, col, mode, cut, cut2);
+        }
+        check_pair(&p, "disc bands", n);
     }
 }
 

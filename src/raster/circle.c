@@ -14,6 +14,7 @@
 
 #include <string.h>
 
+#include "raster/circle_rows.h"
 #include "raster/clip.h"
 #include "raster/span_simd.h"
 
@@ -121,14 +122,15 @@ static double tangent_area(double x0, double y0, double r)
 
 /* The tangent rule for big discs and the plain per-pixel walk for discs
  * wider than the row caches below (the original per-pixel code). */
-static void fill_circle_aa_pixels(isk_canvas *c, double cx, double cy, double r, isk_color color, isk_blend mode)
+static void fill_circle_aa_pixels(isk_canvas *c, double cx, double cy, double r, isk_color color, isk_blend mode,
+                                  int r0, int r1)
 {
     int big = r > BIG_R_AA;
     double r2 = r * r;
     int j0 = isk__floor_clamp(cy - r, -1, c->height);
     int j1 = isk__floor_clamp(cy + r, -1, c->height);
-    if (j0 < 0) j0 = 0;
-    if (j1 > c->height - 1) j1 = c->height - 1;
+    if (j0 < r0) j0 = r0;
+    if (j1 > r1 - 1) j1 = r1 - 1;
     for (int j = j0; j <= j1; j++) {
         double y0 = j - cy, y1 = y0 + 1.0;
         double ny = (y0 <= 0.0 && y1 >= 0.0) ? 0.0 : fmin(fabs(y0), fabs(y1));
@@ -306,14 +308,14 @@ typedef struct aa_scratch {
 } aa_scratch;
 
 static ISK__INLINE void fill_circle_aa_rows(isk_canvas *c, double cx, double cy, double r, isk_color color,
-                                            int i0g, int i1g, const aa_scratch *sc, int cap, span_cov_fn span_cov,
-                                            row_cov_fn row_cov, isk_blend mode)
+                                            int i0g, int i1g, int r0, int r1, const aa_scratch *sc, int cap,
+                                            span_cov_fn span_cov, row_cov_fn row_cov, isk_blend mode)
 {
     double r2 = r * r;
     int j0 = isk__floor_clamp(cy - r, -1, c->height);
     int j1 = isk__floor_clamp(cy + r, -1, c->height);
-    if (j0 < 0) j0 = 0;
-    if (j1 > c->height - 1) j1 = c->height - 1;
+    if (j0 < r0) j0 = r0;
+    if (j1 > r1 - 1) j1 = r1 - 1;
     /* The disc's rows are random accesses a stride apart: ask for the first
      * ones now, so the loads overlap the integrals computed below. */
 #if defined(__GNUC__)
@@ -434,13 +436,14 @@ static ISK__INLINE void fill_circle_aa_rows(isk_canvas *c, double cx, double cy,
  * would share one L1 set, and its frame would span 36 KiB of stack. */
 #define AA_ROWS_FN(NAME, ATTR, CAP, SPAN, ROW)                                                             \
     static ATTR void NAME(isk_canvas *c, double cx, double cy, double r, isk_color color, int i0g, int i1g, \
-                     isk_blend mode)                                                                       \
+                          int r0, int r1, isk_blend mode)                                                  \
     {                                                                                                      \
         double d[7][CAP + 3];                                                                              \
         int srow[CAP];                                                                                     \
         uint8_t cov[CAP + 16];                                                                             \
         const aa_scratch sc = {d[0], d[1], d[2], d[3], d[4], d[5], d[6], srow, cov};                       \
-        ISK__BLEND_DISPATCH(mode, fill_circle_aa_rows, c, cx, cy, r, color, i0g, i1g, &sc, CAP, SPAN, ROW); \
+        ISK__BLEND_DISPATCH(mode, fill_circle_aa_rows, c, cx, cy, r, color, i0g, i1g, r0, r1, &sc, CAP, SPAN, \
+                            ROW);                                                                          \
     }
 AA_ROWS_FN(aa_rows_small, , ROW_SMALL, isk__span_cov, NULL)
 AA_ROWS_FN(aa_rows_big, , ROW_CACHE, isk__span_cov, NULL)
@@ -451,29 +454,37 @@ AA_ROWS_FN(aa_rows_big, , ROW_CACHE, isk__span_cov, NULL)
 AA_ROWS_FN(aa_rows_small_avx2, ISK__AVX2_FN, ROW_SMALL, isk__span_cov_avx2, row_cov_avx2)
 #endif
 
-void isk_fill_circle_aa(isk_canvas *c, double cx, double cy, double r, isk_color color, isk_blend mode)
+void isk__fill_circle_aa_rows(isk_canvas *c, double cx, double cy, double r, isk_color color, isk_blend mode, int r0,
+                              int r1)
 {
     if (!isk__canvas_ok(c) || !isk__finite2(cx, cy) || !isfinite(r) || !(r > 0.0))
         return;
-    if (disc_misses_rect(cx, cy, r, 0.0, 0.0, c->width, c->height))
+    r0 = r0 < 0 ? 0 : r0;
+    r1 = r1 > c->height ? c->height : r1;
+    if (r0 >= r1 || disc_misses_rect(cx, cy, r, 0.0, r0, c->width, r1))
         return;
     /* every row's columns lie in the disc's column range */
     int i0g = isk__floor_clamp(cx - r, -1, c->width), i1g = isk__floor_clamp(cx + r, -1, c->width);
     if (i0g < 0) i0g = 0;
     if (i1g > c->width - 1) i1g = c->width - 1;
     if (r > BIG_R_AA || i1g - i0g + 1 > ROW_CACHE) {
-        fill_circle_aa_pixels(c, cx, cy, r, color, mode);
+        fill_circle_aa_pixels(c, cx, cy, r, color, mode, r0, r1);
         return;
     }
     if (i1g - i0g + 1 <= ROW_SMALL) {
 #if ISK__SPAN_AVX2
         if (isk__have_avx2()) {
-            aa_rows_small_avx2(c, cx, cy, r, color, i0g, i1g, mode);
+            aa_rows_small_avx2(c, cx, cy, r, color, i0g, i1g, r0, r1, mode);
             return;
         }
 #endif
-        aa_rows_small(c, cx, cy, r, color, i0g, i1g, mode);
+        aa_rows_small(c, cx, cy, r, color, i0g, i1g, r0, r1, mode);
         return;
     }
-    aa_rows_big(c, cx, cy, r, color, i0g, i1g, mode);
+    aa_rows_big(c, cx, cy, r, color, i0g, i1g, r0, r1, mode);
+}
+
+void isk_fill_circle_aa(isk_canvas *c, double cx, double cy, double r, isk_color color, isk_blend mode)
+{
+    isk__fill_circle_aa_rows(c, cx, cy, r, color, mode, 0, c ? c->height : 0);
 }

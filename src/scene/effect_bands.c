@@ -25,7 +25,7 @@
  * halves interleaved, medians of 30-40): 7.1-8.8 ms drawn in place against
  * 4.5-5.8 ms each in a canvas of its own while the two cores were far
  * apart (on this shared VM, for part of a session), the same 4.9-5.0 ms
- * when they were close; the copies cost about 0.1 ms..
+ * when they were close; the copies cost about 0.1 ms.
  *
  * A group that adds (ISK_BLEND_ADD) can instead have its particles split
  * among the threads (FX_BANDS_SPLIT): each draws its share of the store on
@@ -34,8 +34,8 @@
  * canvas, a strip of rows per thread.  What a particle adds to a pixel
  * does not depend on the pixel, and saturating adds of amounts >= 0 give
  * min(255, the sum) however they are grouped, so the bytes are again
- * those of one thread.  Discs, whose kernel has no form cut to rows, are
- * shared out only this way. */
+ * those of one thread.  It is taken where the bands would be columns
+ * (measured below, at FX_COPIES_MAX_BYTES). */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -84,15 +84,14 @@
  * rows stay in its core's cache.  Measured on two threads, split against
  * bands, the draw with the render's clear (bench_layer.h's layer made
  * additive, two effects in one process, frames interleaved, medians of 41,
- * at two moments of the host on 2026-12-05): 8 px sprites 0.86x the time
- * at 10^5, then 1.01-1.31x; 1.15x at 2*10^4; coverage dots 1.21x at 10^5,
- * 1.20x at 3*10^5, 1.01x at 10^6 falling, 1.01x at 4*10^6, 1.00x at
- * 1.6*10^7, but settled on their floor (bands of columns, which draw in
- * copies of the canvas too and each scan the whole store) 0.85x then
- * 0.96-0.97x, at rest 0.87x then 0.96-0.98x.  So a group is split where
- * its bands would be columns, and where its draw has no form cut to rows
- * (discs, drawn on the caller alone before: 0.59-0.68x its time there for
- * 2*10^3-5*10^3 discs of 8 px); bands of rows stay bands. */
+ * at two moments of the host on 2026-12-05): coverage dots settled on
+ * their floor (bands of columns, which draw in copies of the canvas too
+ * and each scan the whole store) 0.85x the time then 0.96-0.97x, at rest
+ * 0.87x then 0.96-0.98x; where the bands are rows, 8 px sprites 0.86x at
+ * 10^5 then 1.01-1.31x, 1.15x at 2*10^4; dots 1.21x at 10^5, 1.20x at
+ * 3*10^5, 1.00-1.01x at 10^6, 4*10^6 and 1.6*10^7 falling; 8 px discs
+ * 1.02-1.19x at 3*10^3 and 10^4.  So a group is split only where its
+ * bands would be columns. */
 /* The most memory the copies of the bands of columns may take (beyond it
  * the bands draw in place: the same bytes). */
 #define FX_COPIES_MAX_BYTES ((size_t)64 << 20)
@@ -518,19 +517,14 @@ isk_status fx_draw_bands(isk_effect *e, isk_canvas *c, fx_group *g, const fx_ban
         j->fill = fill;
     }
     int cut[ISK_POOL_MAX_THREADS + 1];
-    const int columns = j && !(can & FX_BANDS_UNCUT) ? fx_place_cuts(e, g, c, threads, can, shares, cut) : 0;
-    /* an additive group is split where bands cannot go, or would be of
-     * columns (which draw in copies of the canvas anyway, and each scan
-     * the whole store; measured above) */
-    if (j && (can & FX_BANDS_SPLIT) && ((can & FX_BANDS_UNCUT) || columns || e->split_always) &&
-        split_particles(j, whole, threads)) {
+    const int columns = j ? fx_place_cuts(e, g, c, threads, can, shares, cut) : 0;
+    /* an additive group is split where its bands would be columns (which
+     * draw in copies of the canvas anyway, and each scan the whole store;
+     * measured above) */
+    if (j && (can & FX_BANDS_SPLIT) && (columns || e->split_always) && split_particles(j, whole, threads)) {
         isk_pool_for(e->pool, (size_t)j->nb, 2, run_band, j);
         isk_pool_for(e->pool, (size_t)j->nb, 1, add_copies, j);
         return finish(j);
-    }
-    if (j && (can & FX_BANDS_UNCUT)) {
-        free(j);
-        j = NULL;
     }
     if (!j) { /* on the caller alone (the draw itself needs no memory) */
         if (fill)

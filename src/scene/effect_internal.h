@@ -282,9 +282,8 @@ fx_draw_fn fx_choose_draw(const fx_group *g);
  * particles split among the threads instead of the canvas (a group that
  * adds, ISK_BLEND_ADD: what a particle adds to a pixel does not depend on
  * the pixel, so shares drawn onto zeroed canvases of their own and added
- * in after give the same bytes); FX_BANDS_UNCUT: the draw has no form cut
- * to rows (discs), so only a split can share it out. */
-enum { FX_BANDS_SORT = 1, FX_BANDS_COLUMNS = 2, FX_BANDS_SPLIT = 4, FX_BANDS_UNCUT = 8 };
+ * in after give the same bytes). */
+enum { FX_BANDS_SORT = 1, FX_BANDS_COLUMNS = 2, FX_BANDS_SPLIT = 4 };
 isk_status fx_draw_bands(isk_effect *e, isk_canvas *c, fx_group *g, const fx_band *whole, unsigned can,
                          double dots_each, const isk_color *fill, fx_shares *shares);
 /* The band of g's whole draw: every row and column of c, every particle. */

@@ -8,6 +8,7 @@
 #include "effect_internal.h"
 #include "iskra/draw.h"
 #include "iskra/text.h"
+#include "raster/circle_rows.h"
 #include "raster/clip.h"
 #include "raster/dot_kernel.h"
 #include "raster/sprite_rows.h"
@@ -237,8 +238,6 @@ static isk_status draw_styled_pixels(isk_effect *e, isk_canvas *c, fx_group *g, 
     return ISK_OK;
 }
 
-/* Discs are drawn on the whole canvas (the disc kernel has no form cut to
- * rows): only the particles can be shared out (FX_BANDS_UNCUT). */
 static isk_status draw_discs(isk_effect *e, isk_canvas *c, fx_group *g, const fx_band *b)
 {
     const isk_particles *p = &g->store;
@@ -249,7 +248,7 @@ static isk_status draw_discs(isk_effect *e, isk_canvas *c, fx_group *g, const fx
         isk_view_to_screen(&e->view, p->x[i], p->y[i], &X, &Y);
         isk_color col = style(g, p, i, vary, &mult);
         const double size = p->size ? p->size[i] : g->def->size; /* size_range: its own */
-        isk_fill_circle_aa(c, X, Y, 0.5 * size * mult * scale, col, g->def->blend);
+        isk__fill_circle_aa_rows(c, X, Y, 0.5 * size * mult * scale, col, g->def->blend, b->r0, b->r1);
     }
     return ISK_OK;
 }
@@ -376,8 +375,7 @@ static double draw_cost(const fx_group *g)
     return 10.0;
 }
 
-/* A group's draw: on the effect's threads in bands when it can be cut
- * (discs cannot: their kernel has no band form).  fill: NULL, or the
+/* A group's draw: on the effect's threads in bands.  fill: NULL, or the
  * background the canvas is cleared to first, by the bands of the group's
  * first pass. */
 static isk_status render_group(isk_effect *e, isk_canvas *c, fx_group *g, const isk_color *fill)
@@ -397,8 +395,9 @@ static isk_status render_group(isk_effect *e, isk_canvas *c, fx_group *g, const 
     /* dots and pixels reach at most a row beyond their own (the margin
      * world_batch.h's binning keeps), so their bands can take only their
      * own particles; sprites reach far and read them all */
-    const unsigned can = (g->draw == draw_discs ? FX_BANDS_UNCUT : 0u) |
-                         (g->draw != draw_sprites && g->draw != fx_draw_textures ? FX_BANDS_SORT : 0u) |
+    const unsigned can = (g->draw != draw_sprites && g->draw != fx_draw_textures && g->draw != draw_discs
+                              ? FX_BANDS_SORT
+                              : 0u) |
                          (g->draw == draw_dots ? FX_BANDS_COLUMNS : 0u) | fx_bands_split(g);
     return fx_draw_bands(e, c, g, &whole, can, draw_cost(g), fill, &g->shares);
 }

@@ -296,9 +296,9 @@ int main(int argc, char **argv)
                "spread = 40\nspeed_min = 5\nspeed_max = 9\nforces = gravity\ndeflectors = floor\n"
                "draw = sprite\nsize = 0.3\nblend = add\ncolor_over_life = 0:white, 1:#ff400000\n",
                "big", quick ? 10 : 40);
-    /* Every draw cut into bands: browser dots, pixels and sprites (one
-     * colour, and sized by a ramp), over and add, on more rows than
-     * particles' worth of bands. */
+    /* Every draw cut into bands: browser dots, pixels, sprites (one
+     * colour, and sized by a ramp) and discs, over and add, on more rows
+     * than particles' worth of bands. */
     scene_text("[scene]\nwidth = 160\nheight = 120\nbackground = #102030\n"
                "[force gravity]\ng = 9.81\n"
                "[emitter a]\nsource = explosion\nexplosion = uniform\ncount = 20000\nlimit = 20000\n"
@@ -309,10 +309,12 @@ int main(int argc, char **argv)
                "draw = sprite\nsize = 0.4\nblend = add\ncolor = #2040ff80\n"
                "[emitter d]\nsource = stream\nrate = 30000\nlife = 1\nlaunch = cone\nangle = 90\n"
                "spread = 60\nspeed_min = 2\nspeed_max = 6\nforces = gravity\ndraw = sprite\nsize = 0.5\n"
-               "blend = over\nsize_over_life = 0:1, 1:0.2\n",
+               "blend = over\nsize_over_life = 0:1, 1:0.2\n"
+               "[emitter e]\nsource = explosion\nexplosion = gauss\ncount = 3000\nlimit = 3000\n"
+               "forces = gravity\ndraw = disc\nsize = 0.3\nblend = over\ncolor = #ffc040a0\n",
                "draws", quick ? 10 : 40);
-    /* Additive groups of every draw split among the threads: discs (which
-     * have no bands), dots coloured over their life, pixels, and sprites
+    /* Additive groups of every draw, split among the threads or cut into
+     * bands: discs, dots coloured over their life, pixels, and sprites
      * sized over their life, all faint enough not to saturate (a particle
      * drawn twice, or by no one, shows). */
     const long splits_before = splits;
