@@ -1,6 +1,6 @@
 /* The threaded draw of an additive group (ISK_BLEND_ADD) by shares of its
  * particles instead of bands of the canvas (effect_bands.c's
- * FX_BANDS_SPLIT): each thread draws its share onto a zeroed canvas of its
+ * split_particles): each thread draws its share onto a zeroed canvas of its
  * own, and the copies are added into the canvas after.  What a particle
  * adds to a pixel does not depend on the pixel, and saturating adds of
  * non-negative amounts give min(255, the sum) in any grouping, so the bytes

@@ -28,7 +28,7 @@
  * when they were close; the copies cost about 0.1 ms.
  *
  * A group that adds (ISK_BLEND_ADD) can instead have its particles split
- * among the threads (FX_BANDS_SPLIT): each draws its share of the store on
+ * among the threads (split_particles): each draws its share of the store on
  * the whole canvas, the first onto the canvas itself, the others onto
  * zeroed copies of their own, and the copies are then added into the
  * canvas, a strip of rows per thread.  What a particle adds to a pixel
@@ -77,7 +77,7 @@
  * 19.4, 20.6, 24.2 ms sorted on 2, 3, 4, 8 threads against 16.4, 18.4,
  * 21.2, 32.5 ms scanned), sorting pays from four bands on. */
 #define FX_BIN_MIN_BANDS 4
-/* When an additive group is split (FX_BANDS_SPLIT) rather than cut into
+/* When an additive group is split (split_particles) rather than cut into
  * bands.  A split band reads only its share of the store and draws each
  * of its particles whole, but it zeroes a canvas of its own, which is added
  * in after, and its blends spread over the whole canvas where a band's
@@ -110,7 +110,7 @@ typedef struct band_job {
     double *seconds; /* each band's time, for the shares */
     uint8_t **copy;  /* a band of columns' own canvas pixels, or NULL: in place; for a
                       * split, every band's but the first, zeroed and added in after */
-    int split;       /* the bands split the particles, not the canvas (FX_BANDS_SPLIT) */
+    int split;       /* the bands split the particles, not the canvas (split_particles) */
     /* sorting into bands: share t of the store is [t n / nb, (t+1) n / nb)
      * (as many shares as bands, one per thread) */
     uint8_t *band_of_row;          /* the canvas's height */
@@ -496,11 +496,6 @@ fx_band fx_band_whole(const isk_canvas *c, const fx_group *g)
     return (fx_band){.r0 = 0, .r1 = c->height, .c0 = 0, .c1 = c->width, .first = 0, .end = g->store.count};
 }
 
-unsigned fx_bands_split(const fx_group *g)
-{
-    return g->def->blend == ISK_BLEND_ADD ? FX_BANDS_SPLIT : 0u;
-}
-
 isk_status fx_draw_bands(isk_effect *e, isk_canvas *c, fx_group *g, const fx_band *whole, unsigned can,
                          double dots_each, const isk_color *fill, fx_shares *shares)
 {
@@ -508,28 +503,26 @@ isk_status fx_draw_bands(isk_effect *e, isk_canvas *c, fx_group *g, const fx_ban
     band_job *j = NULL;
     const double work =
         (double)g->store.count * dots_each + (fill ? (double)c->width * c->height / FX_FILL_PIXELS_A_DOT : 0.0);
-    if (threads >= 2 && work >= e->band_min_work && g->store.count >= (size_t)threads && c->height >= 2 * threads)
+    if (threads >= 2 && work >= e->band_min_work && g->store.count > 0 && c->height >= 2 * threads)
         j = job_new(threads);
-    if (j) {
-        j->e = e;
-        j->c = c;
-        j->g = g;
-        j->fill = fill;
-    }
-    int cut[ISK_POOL_MAX_THREADS + 1];
-    const int columns = j ? fx_place_cuts(e, g, c, threads, can, shares, cut) : 0;
-    /* an additive group is split where its bands would be columns (which
-     * draw in copies of the canvas anyway, and each scan the whole store;
-     * measured above) */
-    if (j && (can & FX_BANDS_SPLIT) && (columns || e->split_always) && split_particles(j, whole, threads)) {
-        isk_pool_for(e->pool, (size_t)j->nb, 2, run_band, j);
-        isk_pool_for(e->pool, (size_t)j->nb, 1, add_copies, j);
-        return finish(j);
-    }
     if (!j) { /* on the caller alone (the draw itself needs no memory) */
         if (fill)
             isk_canvas_fill(c, *fill);
         return g->draw(e, c, g, whole);
+    }
+    j->e = e;
+    j->c = c;
+    j->g = g;
+    j->fill = fill;
+    int cut[ISK_POOL_MAX_THREADS + 1];
+    const int columns = fx_place_cuts(e, g, c, threads, can, shares, cut);
+    /* an additive group is split where its bands would be columns (which
+     * draw in copies of the canvas anyway, and each scan the whole store;
+     * measured above) */
+    if (g->def->blend == ISK_BLEND_ADD && (columns || e->split_always) && split_particles(j, whole, threads)) {
+        isk_pool_for(e->pool, (size_t)j->nb, 2, run_band, j);
+        isk_pool_for(e->pool, (size_t)j->nb, 1, add_copies, j);
+        return finish(j);
     }
     /* empty bands (cuts that coincide where the particles crowd into a
      * few rows) are dropped: a point then reaches at most 5 bands */

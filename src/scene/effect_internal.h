@@ -194,7 +194,7 @@ struct isk_effect {
                                       work, in batched coverage dots (FX_BAND_MIN_WORK; the tests that
                                       compare thread counts set 0, so every size is cut into bands) */
     int split_always;              /* tests: every additive group's particles split among the threads
-                                      (FX_BANDS_SPLIT) wherever bands would be cut, to check both */
+                                      (split_particles) wherever bands would be cut, to check both */
     isk_sinlut sin_table;
     double time;
     long frame;
@@ -278,18 +278,14 @@ fx_draw_fn fx_choose_draw(const fx_group *g);
 /* What a group's draw function can take (fx_draw_bands): its particles
  * sorted into bands of rows first (dots and pixels, which reach at most a
  * row beyond their own), bands of columns instead of rows (the batched
- * dots: a scene settled on its floor has its particles on one row), its
- * particles split among the threads instead of the canvas (a group that
- * adds, ISK_BLEND_ADD: what a particle adds to a pixel does not depend on
- * the pixel, so shares drawn onto zeroed canvases of their own and added
- * in after give the same bytes). */
-enum { FX_BANDS_SORT = 1, FX_BANDS_COLUMNS = 2, FX_BANDS_SPLIT = 4 };
+ * dots: a scene settled on its floor has its particles on one row).
+ * Where a group that adds (ISK_BLEND_ADD) would take columns, its
+ * particles are split among the threads instead (effect_bands.c). */
+enum { FX_BANDS_SORT = 1, FX_BANDS_COLUMNS = 2 };
 isk_status fx_draw_bands(isk_effect *e, isk_canvas *c, fx_group *g, const fx_band *whole, unsigned can,
                          double dots_each, const isk_color *fill, fx_shares *shares);
 /* The band of g's whole draw: every row and column of c, every particle. */
 fx_band fx_band_whole(const isk_canvas *c, const fx_group *g);
-/* FX_BANDS_SPLIT when g's pixels add (its blend is ISK_BLEND_ADD), else 0. */
-unsigned fx_bands_split(const fx_group *g);
 /* The nb bands' cuts of the canvas for g's draw, at the quantiles of a
  * sample of its particles' screen rows (or columns, when `can` allows them
  * and the rows cannot share the particles): cut[0] = 0 <= ... <= cut[nb]

@@ -398,7 +398,7 @@ static isk_status render_group(isk_effect *e, isk_canvas *c, fx_group *g, const 
     const unsigned can = (g->draw != draw_sprites && g->draw != fx_draw_textures && g->draw != draw_discs
                               ? FX_BANDS_SORT
                               : 0u) |
-                         (g->draw == draw_dots ? FX_BANDS_COLUMNS : 0u) | fx_bands_split(g);
+                         (g->draw == draw_dots ? FX_BANDS_COLUMNS : 0u);
     return fx_draw_bands(e, c, g, &whole, can, draw_cost(g), fill, &g->shares);
 }
 

@@ -58,7 +58,7 @@ isk_status fx_trail_render(isk_effect *e, isk_canvas *c, fx_group *g, const isk_
     /* the band machinery runs the group's draw: the trails' for this pass */
     const fx_draw_fn own = g->draw;
     g->draw = draw_trails;
-    isk_status s = fx_draw_bands(e, c, g, &whole, fx_bands_split(g), (double)g->store.trail_len, fill,
+    isk_status s = fx_draw_bands(e, c, g, &whole, 0u, (double)g->store.trail_len, fill,
                                  &g->trail_shares); /* a segment a point */
     g->draw = own;
     return s;

@@ -31,7 +31,7 @@ static int failures;
  * own (effect_bands.c), since it was last cleared. */
 static int drew_in_copies;
 /* Draws of additive groups split among the threads (effect_bands.c's
- * FX_BANDS_SPLIT), over the whole check. */
+ * split_particles), over the whole check. */
 static long splits;
 
 #define CHECK(cond, ...)                                                                                        \
