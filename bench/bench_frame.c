@@ -54,7 +54,9 @@ typedef struct row {
  * when most particles rest or hop on the floor and the walls' bounces at
  * the time of impact (a root solve a hop) are most of the update; the "at
  * rest" row after 10 s, when every particle rests and its block with it
- * (sim/stage.h's isk_rest: the runner skips the motion and the walls). */
+ * (sim/stage.h's isk_rest: the runner skips the motion and the walls, and
+ * the draw replays the blends its first draw at rest recorded,
+ * scene/effect_retain.c). */
 static const row ROWS[] = {
     {"dots", 100000, ISK_DRAW_DOT, 40, 0},    {"dots", 1000000, ISK_DRAW_DOT, 20, 0},
     {"settled", 1000000, ISK_DRAW_DOT, 10, 360}, {"at rest", 1000000, ISK_DRAW_DOT, 10, 600},
@@ -275,7 +277,8 @@ int main(int argc, char **argv)
         /* Smaller rows' columns come from memory the earlier rows gave
          * back to malloc, already resident: their growth means nothing. */
         if (r->n >= 1000000)
-            printf("%-8s %9zu  %.0f bytes a particle resident (the store, the pool's scratch)\n", "", r->n,
+            printf("%-8s %9zu  %.0f bytes a particle resident (the store, the pool's scratch; at rest, the "
+                   "recorded blends)\n", "", r->n,
                    (resident_bytes() - rss0) / ((double)r->n * copies));
         print_control(tc, nt);
         for (int t = 0; t < copies; t++)

@@ -23,6 +23,7 @@
 static long splits_of(const char *text, int steps)
 {
     isk_effect *fx = scene_text_open(text, 2);
+    fx->no_retain = 1; /* at rest its blends would be replayed instead (test_retain.c) */
     isk_canvas c;
     cr_assert_eq(isk_canvas_init(&c, fx->def.width, fx->def.height), ISK_OK);
     long before = 0;

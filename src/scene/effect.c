@@ -18,6 +18,7 @@ static void free_group(fx_group *g)
 {
     isk_particles_free(&g->store);
     isk_rest_free(&g->rest);
+    fx_retain_clear(&g->retained);
     free(g->pick);
     free(g->defl);
     fx_free_ramps(g);
@@ -348,6 +349,8 @@ static isk_status step_group(isk_effect *e, fx_group *g)
             fx_field_clock(g, time + h * j);
         /* a multi-Coulomb explosion releases particles of the store as it goes */
         isk_rest *rest = g->rests && !g->mc_active && !e->no_rest ? &g->rest : NULL;
+        if (!rest) /* every block steps: the states describe nothing after it */
+            isk_rest_forget(&g->rest, 0);
         const int pool = g->parallel && update_on_pool(e, g);
         /* timed whenever it could have been shared (record_step_cost) */
         const int timed = g->parallel && isk_pool_threads(e->pool) > 1;

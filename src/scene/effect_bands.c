@@ -35,7 +35,12 @@
  * does not depend on the pixel, and saturating adds of amounts >= 0 give
  * min(255, the sum) however they are grouped, so the bytes are again
  * those of one thread.  It is taken where the bands would be columns
- * (measured below, at FX_COPIES_MAX_BYTES). */
+ * (measured below, at FX_COPIES_MAX_BYTES).
+ *
+ * A group at rest (FX_BANDS_RETAIN, effect_retain.c) records its blends
+ * band by band at its first draw at rest, then replays them on the same
+ * bands (replay_bands) until they would be stale: no cuts placed, no
+ * split, the shares left as they are. */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -111,6 +116,7 @@ typedef struct band_job {
     uint8_t **copy;  /* a band of columns' own canvas pixels, or NULL: in place; for a
                       * split, every band's but the first, zeroed and added in after */
     int split;       /* the bands split the particles, not the canvas (split_particles) */
+    fx_draw_fn draw; /* each band's: the group's, or effect_retain.c's record or replay */
     /* sorting into bands: share t of the store is [t n / nb, (t+1) n / nb)
      * (as many shares as bands, one per thread) */
     uint8_t *band_of_row;          /* the canvas's height */
@@ -157,13 +163,13 @@ static void draw_band(band_job *j, size_t item)
         isk_canvas own;
         isk_canvas_wrap(&own, j->copy[item], j->c->width, j->c->height, j->c->stride);
         memset(own.pixels, 0, canvas_bytes(j->c));
-        j->status[item] = j->g->draw(j->e, &own, j->g, b);
+        j->status[item] = j->draw(j->e, &own, j->g, b);
         return;
     }
     if (!j->copy[item]) {
         if (j->fill)
             isk_fill_rect(j->c, b->c0, b->r0, b->c1 - b->c0, b->r1 - b->r0, *j->fill, ISK_BLEND_REPLACE);
-        j->status[item] = j->g->draw(j->e, j->c, j->g, b);
+        j->status[item] = j->draw(j->e, j->c, j->g, b);
         return;
     }
     isk_canvas own; /* the canvas's size and stride: its extent was checked when it was made */
@@ -172,7 +178,7 @@ static void draw_band(band_job *j, size_t item)
         isk_fill_rect(&own, b->c0, b->r0, b->c1 - b->c0, b->r1 - b->r0, *j->fill, ISK_BLEND_REPLACE);
     else
         copy_columns(own.pixels, j->c->pixels, j->c, b->c0, b->c1);
-    j->status[item] = j->g->draw(j->e, &own, j->g, b);
+    j->status[item] = j->draw(j->e, &own, j->g, b);
     copy_columns(j->c->pixels, own.pixels, j->c, b->c0, b->c1);
 }
 
@@ -496,10 +502,53 @@ fx_band fx_band_whole(const isk_canvas *c, const fx_group *g)
     return (fx_band){.r0 = 0, .r1 = c->height, .c0 = 0, .c1 = c->width, .first = 0, .end = g->store.count};
 }
 
+/* The group's recorded blends drawn again, on the bands they were recorded
+ * on (effect_retain.c): the same cuts, so the shares are left as they are. */
+static isk_status replay_bands(isk_effect *e, isk_canvas *c, fx_group *g, const fx_band *whole,
+                               const fx_retained *rt, const isk_color *fill)
+{
+    band_job *j = rt->nb > 1 ? job_new(rt->nb) : NULL;
+    if (!j) { /* one band (the whole canvas), or no memory for the job: one after the other */
+        if (fill && rt->nb == 1)
+            isk_canvas_fill(c, *fill);
+        isk_status s = ISK_OK;
+        for (int k = 0; k < rt->nb && s == ISK_OK; k++) {
+            fx_band b = *whole;
+            const fx_tile *t = &rt->tile[k];
+            b.r0 = t->r0, b.r1 = t->r1, b.c0 = t->c0, b.c1 = t->c1, b.index = k;
+            if (fill && rt->nb > 1)
+                isk_fill_rect(c, b.c0, b.r0, b.c1 - b.c0, b.r1 - b.r0, *fill, ISK_BLEND_REPLACE);
+            s = fx_retain_replay(e, c, g, &b);
+        }
+        return s;
+    }
+    j->e = e;
+    j->c = c;
+    j->g = g;
+    j->fill = fill;
+    j->draw = fx_retain_replay;
+    j->nb = rt->nb;
+    for (int k = 0; k < j->nb; k++) {
+        fx_band *b = &j->band[k];
+        const fx_tile *t = &rt->tile[k];
+        *b = *whole;
+        b->r0 = t->r0, b->r1 = t->r1, b->c0 = t->c0, b->c1 = t->c1, b->index = k;
+    }
+    if (rt->columns)
+        give_copies(j);
+    isk_pool_for(e->pool, (size_t)j->nb, 2, run_band, j);
+    return finish(j);
+}
+
 isk_status fx_draw_bands(isk_effect *e, isk_canvas *c, fx_group *g, const fx_band *whole, unsigned can,
                          double dots_each, const isk_color *fill, fx_shares *shares)
 {
     const int threads = e->pool ? isk_pool_threads(e->pool) : 1;
+    fx_retained *rt = (can & FX_BANDS_RETAIN) ? fx_retain_begin(e, c, g, threads) : NULL;
+    if (rt && rt->nb > 0) {
+        rt->replays++;
+        return replay_bands(e, c, g, whole, rt, fill);
+    }
     band_job *j = NULL;
     const double work =
         (double)g->store.count * dots_each + (fill ? (double)c->width * c->height / FX_FILL_PIXELS_A_DOT : 0.0);
@@ -508,18 +557,27 @@ isk_status fx_draw_bands(isk_effect *e, isk_canvas *c, fx_group *g, const fx_ban
     if (!j) { /* on the caller alone (the draw itself needs no memory) */
         if (fill)
             isk_canvas_fill(c, *fill);
-        return g->draw(e, c, g, whole);
+        if (!rt)
+            return g->draw(e, c, g, whole);
+        fx_band one = *whole;
+        one.index = 0;
+        const isk_status s = fx_retain_record(e, c, g, &one);
+        fx_retain_end(rt, &one, 1, 0);
+        return s;
     }
     j->e = e;
     j->c = c;
     j->g = g;
     j->fill = fill;
+    j->draw = rt ? fx_retain_record : g->draw;
     int cut[ISK_POOL_MAX_THREADS + 1];
     const int columns = fx_place_cuts(e, g, c, threads, can, shares, cut);
     /* an additive group is split where its bands would be columns (which
      * draw in copies of the canvas anyway, and each scan the whole store;
-     * measured above) */
-    if (g->def->blend == ISK_BLEND_ADD && (columns || e->split_always) && split_particles(j, whole, threads)) {
+     * measured above); not while its blends are recorded (their replays
+     * take bands) */
+    if (!rt && g->def->blend == ISK_BLEND_ADD && (columns || e->split_always) &&
+        split_particles(j, whole, threads)) {
         isk_pool_for(e->pool, (size_t)j->nb, 2, run_band, j);
         isk_pool_for(e->pool, (size_t)j->nb, 1, add_copies, j);
         return finish(j);
@@ -528,8 +586,9 @@ isk_status fx_draw_bands(isk_effect *e, isk_canvas *c, fx_group *g, const fx_ban
      * few rows) are dropped: a point then reaches at most 5 bands */
     for (int k = 0; k < threads; k++)
         if (cut[k] < cut[k + 1]) {
-            fx_band *b = &j->band[j->nb++];
+            fx_band *b = &j->band[j->nb];
             *b = *whole;
+            b->index = j->nb++;
             if (columns) {
                 b->c0 = cut[k];
                 b->c1 = cut[k + 1];
@@ -551,5 +610,7 @@ isk_status fx_draw_bands(isk_effect *e, isk_canvas *c, fx_group *g, const fx_ban
         else
             shares->nb = 0;
     }
+    if (rt)
+        fx_retain_end(rt, j->band, j->nb, columns);
     return finish(j);
 }

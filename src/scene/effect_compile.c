@@ -103,6 +103,7 @@ isk_status fx_compile(isk_effect *e, fx_group *g)
     /* A recompiled list may differ in anything: what rested is forgotten. */
     g->rests = 0;
     isk_rest_forget(&g->rest, 0);
+    fx_retain_clear(&g->retained);
     gather_forces(e, g);
     g->integrator = em->integrator == ISK_INTEGRATE_INHERIT ? d->integrator : em->integrator;
     g->substeps = em->substeps ? em->substeps : d->substeps;

@@ -33,6 +33,7 @@
 #include "sim/field.h"
 #include "iskra/texture.h"
 #include "sim/stage.h"
+#include "view/world_batch.h"
 
 typedef struct fx_group fx_group;
 
@@ -70,6 +71,7 @@ typedef struct fx_band {
     size_t first, end;                                /* the particles [first, end) of the store, */
     const uint32_t *list;                             /* or, when not NULL, these, */
     size_t nlist;                                     /* in this order (effect_bands.c) */
+    int index;                                        /* which band of its draw (retained records) */
     const isk_sprite *sprite[ISK_SPRITE_MAX_SIZE + 1]; /* by whole-pixel size (sprite groups) */
     double sprite_reach;                              /* rows a sprite can reach from its centre */
 } fx_band;
@@ -108,6 +110,29 @@ typedef struct fx_shares {
     double share[FX_SHARES_MAX];  /* summing to 1 */
 } fx_shares;
 
+/* A group at rest drawn again from the blends its last draw recorded
+ * (effect_retain.c, view/world_batch.h's retained dots). */
+typedef struct fx_tile {
+    int r0, r1, c0, c1;
+} fx_tile;
+typedef struct fx_retained {
+    int nb;                       /* bands recorded, each with its records; 0: none */
+    int columns;                  /* they are bands of columns (drawn in copies of the canvas) */
+    int cap;                      /* bands the arrays below have room for */
+    fx_tile *tile;                /* per band: its rows and columns */
+    isk__dot_rec **rec;           /* per band: its records */
+    size_t *n;                    /* per band: how many */
+    int *failed;                  /* per band, while recording: a point the records cannot hold */
+    /* what they are the blends of */
+    uint64_t changes;             /* the group's isk_rest.changes */
+    size_t count;
+    isk_view view;
+    int width, height, threads;
+    unsigned rule;
+    int refused;                  /* recording failed for this key: not tried again until it changes */
+    long records, replays;        /* draws recorded and replayed (tests) */
+} fx_retained;
+
 struct fx_group {
     int index;                     /* emitter index in the definition */
     const isk_emitter_def *def;    /* points into effect->def */
@@ -136,6 +161,7 @@ struct fx_group {
     int keep_on_canvas;            /* reflect walls hold it: one on the far edge is drawn on it */
     fx_draw_fn draw;
     fx_shares shares, trail_shares; /* its particles' and its trails' banded draws */
+    fx_retained retained;          /* its batched dots' blends while it rests (effect_retain.c) */
     fx_step_cost step_cost;        /* whether its update pays on the threads (effect.c) */
 
     /* explosions (effect_group.c) */
@@ -193,6 +219,8 @@ struct isk_effect {
     double band_min_work;          /* a group's draw is shared out over the threads only from this much
                                       work, in batched coverage dots (FX_BAND_MIN_WORK; the tests that
                                       compare thread counts set 0, so every size is cut into bands) */
+    int no_retain;                 /* tests: a group at rest is drawn in full every time (the reference
+                                      for effect_retain.c's replays) */
     int split_always;              /* tests: every additive group's particles split among the threads
                                       (split_particles) wherever bands would be cut, to check both */
     isk_sinlut sin_table;
@@ -280,8 +308,10 @@ fx_draw_fn fx_choose_draw(const fx_group *g);
  * row beyond their own), bands of columns instead of rows (the batched
  * dots: a scene settled on its floor has its particles on one row).
  * Where a group that adds (ISK_BLEND_ADD) would take columns, its
- * particles are split among the threads instead (effect_bands.c). */
-enum { FX_BANDS_SORT = 1, FX_BANDS_COLUMNS = 2 };
+ * particles are split among the threads instead (effect_bands.c).
+ * FX_BANDS_RETAIN: the group's draw is the batched dots, whose blends may
+ * be recorded while it rests and drawn again (effect_retain.c). */
+enum { FX_BANDS_SORT = 1, FX_BANDS_COLUMNS = 2, FX_BANDS_RETAIN = 4 };
 isk_status fx_draw_bands(isk_effect *e, isk_canvas *c, fx_group *g, const fx_band *whole, unsigned can,
                          double dots_each, const isk_color *fill, fx_shares *shares);
 /* The band of g's whole draw: every row and column of c, every particle. */
@@ -375,5 +405,21 @@ isk_status fx_trail_render(isk_effect *e, isk_canvas *c, fx_group *g, const isk_
 /* effect_render.c: particle i's colour as its own draw gives it. */
 isk_color fx_particle_color(const fx_group *g, size_t i);
 /* ---- end of sub-emitters and trails ---- */
+
+/* effect_retain.c: a group at rest drawn from its recorded blends.
+ *   rt = fx_retain_begin(e, c, g, threads)  NULL: draw as usual; else
+ *        rt->nb > 0: replay rt's bands (fx_retain_replay each);
+ *        rt->nb == 0: record this draw (fx_retain_record each band, no
+ *        split), then fx_retain_end with its bands.
+ * What is recorded is valid while every block of the group rests and its
+ * isk_rest.changes, its count, the view, the canvas's size, the dot rule
+ * and the thread count stay the same. */
+fx_retained *fx_retain_begin(isk_effect *e, const isk_canvas *c, fx_group *g, int threads);
+isk_status fx_retain_record(isk_effect *e, isk_canvas *c, fx_group *g, const fx_band *b);
+isk_status fx_retain_replay(isk_effect *e, isk_canvas *c, fx_group *g, const fx_band *b);
+void fx_retain_end(fx_retained *rt, const fx_band *band, int nb, int columns);
+void fx_retain_clear(fx_retained *rt); /* frees the records; keeps the counters */
+/* effect_render.c: the batched dots' rule for g (ISK__BATCH_*, keep-on-canvas or-ed in). */
+unsigned fx_dots_rule(const fx_group *g);
 
 #endif

@@ -206,14 +206,18 @@ static isk_status draw_styled_dots(isk_effect *e, isk_canvas *c, fx_group *g, co
     return ISK_OK;
 }
 
+unsigned fx_dots_rule(const fx_group *g)
+{
+    const unsigned rule = g->def->draw == ISK_DRAW_DOT_BROWSER ? ISK__BATCH_DOT_BROWSER
+                          : g->def->draw == ISK_DRAW_PIXEL     ? ISK__BATCH_PIXEL
+                                                               : ISK__BATCH_DOT;
+    return g->keep_on_canvas ? rule | ISK__BATCH_KEEP_ON_CANVAS : rule;
+}
+
 /* One colour for the whole group: the batched kernels (iskra/view.h). */
 static isk_status draw_dots(isk_effect *e, isk_canvas *c, fx_group *g, const fx_band *b)
 {
-    unsigned rule = g->def->draw == ISK_DRAW_DOT_BROWSER ? ISK__BATCH_DOT_BROWSER
-                    : g->def->draw == ISK_DRAW_PIXEL     ? ISK__BATCH_PIXEL
-                                                         : ISK__BATCH_DOT;
-    if (g->keep_on_canvas)
-        rule |= ISK__BATCH_KEEP_ON_CANVAS;
+    const unsigned rule = fx_dots_rule(g);
     if (b->list)
         isk__draw_batch_list_rows(c, &e->view, b->list, b->nlist, g->store.x, g->store.y, g->def->color,
                                   g->def->blend, rule, b->r0, b->r1);
@@ -398,7 +402,9 @@ static isk_status render_group(isk_effect *e, isk_canvas *c, fx_group *g, const 
     const unsigned can = (g->draw != draw_sprites && g->draw != fx_draw_textures && g->draw != draw_discs
                               ? FX_BANDS_SORT
                               : 0u) |
-                         (g->draw == draw_dots ? FX_BANDS_COLUMNS : 0u);
+                         (g->draw == draw_dots ? FX_BANDS_COLUMNS : 0u) |
+                         /* the exact-area dots' blends can be recorded (world_batch.h) */
+                         (g->draw == draw_dots && g->def->draw == ISK_DRAW_DOT ? FX_BANDS_RETAIN : 0u);
     return fx_draw_bands(e, c, g, &whole, can, draw_cost(g), fill, &g->shares);
 }
 

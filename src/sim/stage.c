@@ -49,15 +49,19 @@ void isk_rest_init(isk_rest *r)
 
 void isk_rest_free(isk_rest *r)
 {
+    const uint64_t changes = r->changes + 1; /* what was at rest is no more */
     free(r->block);
     free(r->stand_in);
     isk_rest_init(r);
+    r->changes = changes;
 }
 
 void isk_rest_forget(isk_rest *r, size_t from)
 {
-    if (from < r->valid)
+    if (from < r->valid) {
         r->valid = from;
+        r->changes++;
+    }
 }
 
 void isk_rest_wake_dying(isk_rest *r, const isk_particles *p)
@@ -71,8 +75,10 @@ void isk_rest_wake_dying(isk_rest *r, const isk_particles *p)
         int dying = 0;
         for (size_t i = 0; i < len; i++)
             dying |= age[i] >= life[i];
-        if (dying)
+        if (dying) {
             r->block[k].state = AWAKE;
+            r->changes++;
+        }
     }
 }
 
@@ -84,6 +90,17 @@ static size_t described_blocks(const isk_rest *r, size_t count)
 {
     return count == r->valid ? (count + ISK_SIM_BLOCK - 1) / ISK_SIM_BLOCK
                              : (count < r->valid ? count : r->valid) / ISK_SIM_BLOCK;
+}
+
+int isk_rest_all(const isk_rest *r, size_t count)
+{
+    const size_t blocks = (count + ISK_SIM_BLOCK - 1) / ISK_SIM_BLOCK;
+    if (count == 0 || count != r->valid || blocks > r->cap)
+        return 0;
+    for (size_t k = 0; k < blocks; k++)
+        if (r->block[k].state != AT_REST)
+            return 0;
+    return 1;
 }
 
 size_t isk_rest_blocks(const isk_rest *r, size_t count, unsigned axes)
@@ -127,17 +144,17 @@ static int rest_ready(isk_rest *r, const isk_pipeline *pl, size_t end, double h,
 {
     size_t blocks = (end + ISK_SIM_BLOCK - 1) / ISK_SIM_BLOCK;
     if (!(r->h == h)) /* == on purpose: a bit-identical step, NaN never */
-        r->valid = 0;
+        isk_rest_forget(r, 0);
     r->h = h;
     const int prefix = isk_pipeline_rest_prefix(pl);
     if (prefix == 0 || blocks == 0) {
-        r->valid = 0;
+        isk_rest_forget(r, 0);
         return 0;
     }
     if (workers > r->workers) {
         double *a = calloc((size_t)workers * 2 * ISK_SIM_BLOCK, sizeof *a);
         if (!a) {
-            r->valid = 0;
+            isk_rest_forget(r, 0);
             return 0;
         }
         free(r->stand_in);
@@ -148,7 +165,7 @@ static int rest_ready(isk_rest *r, const isk_pipeline *pl, size_t end, double h,
         size_t cap = blocks + blocks / 2;
         isk_rest_block *a = realloc(r->block, cap * sizeof *a);
         if (!a) {
-            r->valid = 0;
+            isk_rest_forget(r, 0);
             return 0;
         }
         r->block = a;
@@ -156,6 +173,7 @@ static int rest_ready(isk_rest *r, const isk_pipeline *pl, size_t end, double h,
     }
     const size_t kept = described_blocks(r, end); /* the others wake */
     memset(r->block + kept, 0, (blocks - kept) * sizeof *r->block); /* awake */
+    r->changes += kept < blocks;
     r->valid = end;
     return prefix;
 }

@@ -197,6 +197,9 @@ typedef struct isk_rest {
                              other axis steps (zeroed once; what the stages make of them is
                              never read) */
     int workers;          /* workers stand_in has room for */
+    uint64_t changes;     /* counts what can end a block's rest (a forget below valid, a
+                             change of step, a wake): while it and the count stay the
+                             same and every block rests, no particle's x, y has changed */
 } isk_rest;
 
 void isk_rest_init(isk_rest *r);
@@ -209,6 +212,9 @@ void isk_rest_wake_dying(isk_rest *r, const isk_particles *p);
 /* Blocks of [0, count) at rest on `axes` (ISK_REST_X | ISK_REST_Y: at rest;
  * for the tests and the benchmarks). */
 size_t isk_rest_blocks(const isk_rest *r, size_t count, unsigned axes);
+/* 1 when count > 0 and every block of [0, count) rests on both axes (the
+ * states describe exactly those particles). */
+int isk_rest_all(const isk_rest *r, size_t count);
 /* How many leading stages of the list a block at rest skips (0: no block
  * of this list can rest). */
 int isk_pipeline_rest_prefix(const isk_pipeline *pl);

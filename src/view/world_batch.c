@@ -177,10 +177,41 @@ static ISK__INLINE void edge_block(uint8_t *pixels, size_t stride, int r0, int r
         edge_row(p + (size_t)(iy + 1) * stride, right, col, lut, wc, wd, mode);
 }
 
+/* A point's 2x2 block at p (rows p and p + stride), wholly on the tile,
+ * at weights w (a block cut by the tile's edges: edge_block): the replay's
+ * (isk__draw_batch_replay), the same blends as run_dots_blocked's loop
+ * (tests/test_retain.c compares them in every mode). */
+static ISK__INLINE void full_block(uint8_t *p, size_t stride, isk_color col, const isk__cov_lut *lut,
+                                   const uint8_t w[4], isk_blend mode)
+{
+    if (lut) {
+        px4(p, stride, col, lut, w, mode);
+    } else {
+        isk__px_cov(p, col, w[0], mode);
+        isk__px_cov(p + 4, col, w[1], mode);
+        isk__px_cov(p + stride, col, w[2], mode);
+        isk__px_cov(p + stride + 4, col, w[3], mode);
+    }
+}
+
+/* A blended point into the recording (world_batch.h): its block and
+ * weights, or, for a point the single-dot kernel clips, the end of it. */
+static ISK__INLINE void record_point(isk__dot_recording *rec, uint8_t fast, int ix, int iy, const uint8_t w[4])
+{
+    if (!fast) {
+        rec->failed = 1;
+        return;
+    }
+    isk__dot_rec *r = &rec->rec[rec->n++];
+    r->ix = (uint16_t)ix; /* both in [0, ISK_CANVAS_MAX_DIM): the flag's bit is free */
+    r->iy = (uint16_t)(iy | (fast == DOT_FULL ? ISK__REC_FULL : 0));
+    memcpy(r->w, w, 4);
+}
+
 static ISK__INLINE void run_dots_blocked(const isk_canvas *c, int r0, int r1, int c0, int c1, const isk_view *v, size_t n,
                                          const uint32_t *list, const double *x, const double *y, isk_color col,
                                          const isk__cov_lut *lut, int camera, int browser, int keep,
-                                         isk_blend mode)
+                                         isk__dot_recording *rec, isk_blend mode)
 {
     const double hw = v->width / 2.0, hh = v->height / 2.0, a = v->a, tx = v->tx, ty = v->ty;
     const double sx = v->sx, sy = v->sy, px = v->px, py = v->py;
@@ -238,9 +269,12 @@ static ISK__INLINE void run_dots_blocked(const isk_canvas *c, int r0, int r1, in
         const int batch = last ? have : have / DOT_STEP * DOT_STEP;
         weights(&b, batch, X0, X1, Y0, H1);
         for (int k = 0; k < batch; k++) {
+            if (rec) /* a constant of each inlined copy: the plain draws pay nothing */
+                record_point(rec, b.fast[k], b.ix[k], b.iy[k], b.w[k]);
             if (b.fast[k] == DOT_EDGE) {
                 edge_block(pixels, stride, r0, r1, c0, c1, b.ix[k], b.iy[k], b.w[k], col, lut, mode);
-            } else if (b.fast[k]) {
+            } else if (b.fast[k]) { /* full_block's blends (written out: through it, the compiler laid this
+                                       loop out otherwise) */
                 uint8_t *p = pixels + (size_t)b.iy[k] * stride + (size_t)b.ix[k] * 4u;
                 if (lut) {
                     px4(p, stride, col, lut, b.w[k], mode);
@@ -266,17 +300,18 @@ static ISK__INLINE void run_dots_blocked(const isk_canvas *c, int r0, int r1, in
 
 static ISK__INLINE void run_kind(const isk_canvas *c, int r0, int r1, int c0, int c1, const isk_view *v, size_t n,
                                  const uint32_t *list, const double *x, const double *y, isk_color col,
-                                 const isk__cov_lut *lut, isk__batch_rule rule, int keep, isk_blend mode)
+                                 const isk__cov_lut *lut, isk__batch_rule rule, int keep, isk__dot_recording *rec,
+                                 isk_blend mode)
 {
     const int camera = v->kind == ISK_VIEW_CAMERA;
     if (rule == ISK__BATCH_DOT && camera)
-        run_dots_blocked(c, r0, r1, c0, c1, v, n, list, x, y, col, lut, 1, 0, keep, mode);
+        run_dots_blocked(c, r0, r1, c0, c1, v, n, list, x, y, col, lut, 1, 0, keep, rec, mode);
     else if (rule == ISK__BATCH_DOT)
-        run_dots_blocked(c, r0, r1, c0, c1, v, n, list, x, y, col, lut, 0, 0, keep, mode);
+        run_dots_blocked(c, r0, r1, c0, c1, v, n, list, x, y, col, lut, 0, 0, keep, rec, mode);
     else if (rule == ISK__BATCH_DOT_BROWSER && camera)
-        run_dots_blocked(c, r0, r1, c0, c1, v, n, list, x, y, col, lut, 1, 1, keep, mode);
+        run_dots_blocked(c, r0, r1, c0, c1, v, n, list, x, y, col, lut, 1, 1, keep, rec, mode);
     else if (rule == ISK__BATCH_DOT_BROWSER)
-        run_dots_blocked(c, r0, r1, c0, c1, v, n, list, x, y, col, lut, 0, 1, keep, mode);
+        run_dots_blocked(c, r0, r1, c0, c1, v, n, list, x, y, col, lut, 0, 1, keep, rec, mode);
     else if (camera)
         run_pixels(c, r0, r1, c0, c1, v, n, list, x, y, col, 1, keep, mode);
     else
@@ -289,28 +324,32 @@ static ISK__INLINE void run_kind(const isk_canvas *c, int r0, int r1, int c0, in
 
 static ISK__INLINE void run_rule(const isk_canvas *c, int r0, int r1, int c0, int c1, const isk_view *v, size_t n,
                                  const uint32_t *list, const double *x, const double *y, isk_color col,
-                                 unsigned rule, isk_blend mode)
+                                 unsigned rule, isk__dot_recording *rec, isk_blend mode)
 {
     const int keep = (rule & ISK__BATCH_KEEP_ON_CANVAS) != 0;
     rule &= ~(unsigned)ISK__BATCH_KEEP_ON_CANVAS;
     isk__cov_lut lut;
+    if (rec && rule != ISK__BATCH_DOT) { /* the browser's dot has no edge blocks: it clips every one */
+        rec->failed = 1;
+        rec = NULL;
+    }
     switch (rule) {
     case ISK__BATCH_DOT:
     case ISK__BATCH_DOT_BROWSER:
         if (n >= LUT_MIN_BATCH) {
             isk__cov_lut_init(&lut, col);
             if (rule == ISK__BATCH_DOT)
-                run_kind(c, r0, r1, c0, c1, v, n, list, x, y, col, &lut, ISK__BATCH_DOT, keep, mode);
+                run_kind(c, r0, r1, c0, c1, v, n, list, x, y, col, &lut, ISK__BATCH_DOT, keep, rec, mode);
             else
-                run_kind(c, r0, r1, c0, c1, v, n, list, x, y, col, &lut, ISK__BATCH_DOT_BROWSER, keep, mode);
+                run_kind(c, r0, r1, c0, c1, v, n, list, x, y, col, &lut, ISK__BATCH_DOT_BROWSER, keep, rec, mode);
         } else if (rule == ISK__BATCH_DOT) {
-            run_kind(c, r0, r1, c0, c1, v, n, list, x, y, col, NULL, ISK__BATCH_DOT, keep, mode);
+            run_kind(c, r0, r1, c0, c1, v, n, list, x, y, col, NULL, ISK__BATCH_DOT, keep, rec, mode);
         } else {
-            run_kind(c, r0, r1, c0, c1, v, n, list, x, y, col, NULL, ISK__BATCH_DOT_BROWSER, keep, mode);
+            run_kind(c, r0, r1, c0, c1, v, n, list, x, y, col, NULL, ISK__BATCH_DOT_BROWSER, keep, rec, mode);
         }
         break;
     case ISK__BATCH_PIXEL:
-        run_kind(c, r0, r1, c0, c1, v, n, list, x, y, col, NULL, ISK__BATCH_PIXEL, keep, mode);
+        run_kind(c, r0, r1, c0, c1, v, n, list, x, y, col, NULL, ISK__BATCH_PIXEL, keep, NULL, mode);
         break;
     default:
         break;
@@ -334,7 +373,7 @@ void isk__draw_batch_tile(isk_canvas *c, const isk_view *v, size_t n, const doub
                           isk_color col, isk_blend mode, unsigned rule, int r0, int r1, int c0, int c1)
 {
     if (drawable(c, v, n, x, y, &r0, &r1, &c0, &c1))
-        ISK__BLEND_DISPATCH(mode, run_rule, c, r0, r1, c0, c1, v, n, NULL, x, y, col, rule);
+        ISK__BLEND_DISPATCH(mode, run_rule, c, r0, r1, c0, c1, v, n, NULL, x, y, col, rule, NULL);
 }
 
 void isk__draw_batch_rows(isk_canvas *c, const isk_view *v, size_t n, const double *x, const double *y,
@@ -348,7 +387,48 @@ void isk__draw_batch_list_rows(isk_canvas *c, const isk_view *v, const uint32_t 
 {
     int c0 = 0, c1 = c ? c->width : 0;
     if (list && drawable(c, v, m, x, y, &r0, &r1, &c0, &c1))
-        ISK__BLEND_DISPATCH(mode, run_rule, c, r0, r1, c0, c1, v, m, list, x, y, col, rule);
+        ISK__BLEND_DISPATCH(mode, run_rule, c, r0, r1, c0, c1, v, m, list, x, y, col, rule, NULL);
+}
+
+void isk__draw_batch_record(isk_canvas *c, const isk_view *v, size_t n, const uint32_t *list, const double *x,
+                            const double *y, isk_color col, isk_blend mode, unsigned rule, int r0, int r1, int c0,
+                            int c1, isk__dot_recording *rec)
+{
+    if (drawable(c, v, n, x, y, &r0, &r1, &c0, &c1))
+        ISK__BLEND_DISPATCH(mode, run_rule, c, r0, r1, c0, c1, v, n, list, x, y, col, rule, rec);
+}
+
+/* The recorded blends, in their order, as run_dots_blocked's loop does them. */
+static ISK__INLINE void replay_rule(isk_canvas *c, const isk__dot_rec *rec, size_t n, isk_color col, int r0, int r1,
+                                    int c0, int c1, isk_blend mode)
+{
+    isk__cov_lut table;
+    const isk__cov_lut *lut = NULL; /* as run_rule's; the bytes are the same either way */
+    if (n >= LUT_MIN_BATCH) {
+        isk__cov_lut_init(&table, col);
+        lut = &table;
+    }
+    for (size_t k = 0; k < n; k++) {
+        const isk__dot_rec *r = &rec[k];
+        const int iy = r->iy & (ISK__REC_FULL - 1u);
+        if (r->iy & ISK__REC_FULL)
+            full_block(c->pixels + (size_t)iy * c->stride + (size_t)r->ix * 4u, c->stride, col, lut, r->w, mode);
+        else
+            edge_block(c->pixels, c->stride, r0, r1, c0, c1, r->ix, iy, r->w, col, lut, mode);
+    }
+}
+
+void isk__draw_batch_replay(isk_canvas *c, const isk__dot_rec *rec, size_t n, isk_color col, isk_blend mode, int r0,
+                            int r1, int c0, int c1)
+{
+    if (!c || !c->pixels || !rec || n == 0)
+        return;
+    r0 = r0 < 0 ? 0 : r0;
+    r1 = r1 > c->height ? c->height : r1;
+    c0 = c0 < 0 ? 0 : c0;
+    c1 = c1 > c->width ? c->width : c1;
+    if (r0 < r1 && c0 < c1)
+        ISK__BLEND_DISPATCH(mode, replay_rule, c, rec, n, col, r0, r1, c0, c1);
 }
 
 /* The view's Y arithmetic, for screen_y and the selects (no keep). */

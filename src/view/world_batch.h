@@ -47,6 +47,40 @@ void isk__draw_batch_tile(isk_canvas *c, const isk_view *v, size_t n, const doub
 void isk__draw_batch_list_rows(isk_canvas *c, const isk_view *v, const uint32_t *list, size_t m, const double *x,
                                const double *y, isk_color col, isk_blend mode, unsigned rule, int r0, int r1);
 
+/* ---- retained dots: a batch drawn again without its arithmetic ----------
+ * While a batch draws it can record what it blended: each point's 2x2
+ * block (its top-left pixel, whether it lies wholly on the tile) and its
+ * four weights, in the order blended.  isk__draw_batch_replay then does
+ * exactly those blends again, in that order, with any colour and blend
+ * mode: the bytes of the batch drawn again, as long as the points, the
+ * view, the canvas's size, the rule and the tile are what they were (an
+ * effect's group at rest, effect_retain.c), at a quarter to a half of the
+ * time.  Only the exact-area dot records; a point the single-dot kernel
+ * must clip (partly off the canvas), or a batch of the browser's dots
+ * (whose blocks cut by an edge, a band's too, are all clipped) or of single
+ * pixels ends the recording as failed (it still draws). */
+#define ISK__REC_FULL 0x8000u /* or-ed into iy: the block lies wholly on the tile */
+typedef struct isk__dot_rec {
+    uint16_t ix, iy; /* the block's top-left pixel (iy | ISK__REC_FULL) */
+    uint8_t w[4];    /* its weights, row by row */
+} isk__dot_rec;
+
+typedef struct isk__dot_recording {
+    isk__dot_rec *rec; /* room for every point the batch reads (n, or m of a list) */
+    size_t n;          /* recorded so far */
+    int failed;        /* a point the records cannot hold was drawn */
+} isk__dot_recording;
+
+/* isk__draw_batch_tile, of list[0..n) when list is not NULL (as
+ * isk__draw_batch_list_rows), recording into *rec as it draws. */
+void isk__draw_batch_record(isk_canvas *c, const isk_view *v, size_t n, const uint32_t *list, const double *x,
+                            const double *y, isk_color col, isk_blend mode, unsigned rule, int r0, int r1, int c0,
+                            int c1, isk__dot_recording *rec);
+/* The recorded blends rec[0..n) on the tile [r0, r1) x [c0, c1) they were
+ * recorded on. */
+void isk__draw_batch_replay(isk_canvas *c, const isk__dot_rec *rec, size_t n, isk_color col, isk_blend mode, int r0,
+                            int r1, int c0, int c1);
+
 /* The points y[0..m) whose screen Y (isk_view_to_screen's, bit for bit)
  * lies strictly between lo and hi, NaN never: their places in oix and
  * their Y in oy, in order; returns how many.  Without branches (on a band

@@ -33,6 +33,8 @@ static int drew_in_copies;
 /* Draws of additive groups split among the threads (effect_bands.c's
  * split_particles), over the whole check. */
 static long splits;
+/* Draws of a group at rest replayed from its recorded blends (effect_retain.c). */
+static long replays;
 
 #define CHECK(cond, ...)                                                                                        \
     do {                                                                                                       \
@@ -44,8 +46,9 @@ static long splits;
     } while (0)
 
 /* `frames` frames on `threads` threads, additive groups split among them
- * (split) or cut into bands like the others: the canvas, and a hash of
- * every particle's state (0 when the effect could not be made). */
+ * (split) or cut into bands like the others, then drawn once more: the
+ * canvas, and a hash of every particle's state (0 when the effect could
+ * not be made). */
 static unsigned long long run(const isk_effect_def *d, int threads, int split, long frames, isk_canvas *c)
 {
     isk_effect_def copy = *d;
@@ -65,6 +68,14 @@ static unsigned long long run(const isk_effect_def *d, int threads, int split, l
         return 0;
     }
     CHECK(isk_effect_threads(fx) == threads, "asked for %d threads, got %d", threads, isk_effect_threads(fx));
+    /* drawn once more, the same state: the same bytes (a group at rest now
+     * replays what the first draw recorded, effect_retain.c) */
+    isk_canvas again;
+    if (d->clear && isk_canvas_init(&again, d->width, d->height) == ISK_OK) {
+        CHECK(isk_effect_render(fx, &again) == ISK_OK && isk_canvas_equal(c, &again),
+              "%d threads: drawn again, other bytes", threads);
+        isk_canvas_free(&again);
+    }
     unsigned long long h = 1469598103934665603ull;
     for (int g = 0; g < isk_effect_emitter_count(fx); g++) {
         const isk_particles *p = isk_effect_particles(fx, g);
@@ -78,6 +89,8 @@ static unsigned long long run(const isk_effect_def *d, int threads, int split, l
     }
     drew_in_copies |= fx->bins.copies != NULL;
     splits += fx->bins.splits;
+    for (int g = 0; g < fx->ngroups; g++)
+        replays += fx->groups[g].retained.replays;
     isk_effect_destroy(fx);
     return h;
 }
@@ -346,7 +359,8 @@ int main(int argc, char **argv)
                "settled", quick ? 30 : 60);
     CHECK(drew_in_copies, "settled: no band of columns drew in a copy of the canvas");
     /* Blocks at rest (sim/stage.h's isk_rest): a layer that settles in a
-     * third of a second and stays, sparks that land and die at random
+     * third of a second and stays (its draws then replayed from what the
+     * first one at rest recorded), sparks that land and die at random
      * (their holes filled from the end: the dying blocks wake), drops that
      * die in order (everything after the first dead forgotten). */
     scene_text("[scene]\nwidth = 200\nheight = 60\n[force gravity]\ng = 400\n[bounds]\nrestitution = 0.2\n"
@@ -358,6 +372,7 @@ int main(int argc, char **argv)
                "[emitter drops]\nsource = stream\nposition = -9, 5\nshape = segment\nshape_a = 18\n"
                "count = 6000\nrate = 3000\nlife = 0.6\nlife_range = 0.3\nforces = gravity\ncolor = #40ff8020\n",
                "at rest", quick ? 60 : 120);
+    CHECK(replays > 0, "at rest: no draw was replayed from recorded blends");
     /* An order-dependent list: a potential that switches itself off. */
     scene_text("[force trap]\nkind = potential\nk = 80\nposition = 0, 0\nmax_distance = 0.2\n"
                "[emitter layer]\nsource = layer\ncount = 20000\nlimit = 20000\nrect = -5, 5, -5, 5\n"
