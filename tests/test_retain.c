@@ -7,7 +7,8 @@
  * partly off the canvas ends the recording.
  *
  * The effect: two layers that settle on their floor (one over, one adding;
- * a third of the browser's dots, never recorded), drawn every frame against the same effect with
+ * a third of the browser's dots, never recorded), the floor on the
+ * canvas's last row or inside the view, drawn every frame against the same effect with
  * retention off, on 1, 2, 3 and 7 threads, the same bytes every frame,
  * through everything that must make the records stale (the view moves, by
  * a live edit or by its owner, a particle is written and forgotten, the
@@ -100,16 +101,19 @@ Test(retain, replays_give_the_bytes_of_full_draws)
     free(rec);
 }
 
-static const char *const SCENE =
-    "[scene]\nwidth = 160\nheight = 120\n[view]\nxmin = -4\nxmax = 4\nymin = -3\nymax = 3\n"
-    "[force gravity]\ng = 9.81\n[force drag]\nkind = drag\nb = 0.4\n[force lift]\nkind = wind\n"
-    "[bounds]\nmode = reflect\nsides = all\nrestitution = 0.3\n"
-    "[emitter layer]\nsource = layer\ncount = 3000\nrect = -3.9, 3.9, -2.9, -1\n"
-    "forces = gravity, drag, lift\ndraw = dot\ncolor = #ffc878a0\n"
-    "[emitter glow]\nsource = layer\ncount = 2000\nrect = -3.9, 3.9, -1, 2.9\n"
-    "forces = gravity, drag, lift\ndraw = dot\nblend = add\ncolor = #20100840\n"
-    "[emitter sparks]\nsource = layer\ncount = 500\nrect = -3.9, 3.9, -1, 2.9\n"
-    "forces = gravity, drag, lift\ndraw = dot-browser\ncolor = #ff304080\n";
+/* The walls on the view's edges (the layers rest on the canvas's last row,
+ * kept on it: their blocks cut by the edge), or a floor inside the view
+ * (their blocks wholly on the canvas, over two rows). */
+#define SCENE(bounds)                                                                                         \
+    "[scene]\nwidth = 160\nheight = 120\n[view]\nxmin = -4\nxmax = 4\nymin = -3\nymax = 3\n"                 \
+    "[force gravity]\ng = 9.81\n[force drag]\nkind = drag\nb = 0.4\n[force lift]\nkind = wind\n"             \
+    "[bounds]\nmode = reflect\nsides = all\nrestitution = 0.3\n" bounds                                    \
+    "[emitter layer]\nsource = layer\ncount = 3000\nrect = -3.9, 3.9, -2.3, -1\n"           \
+    "forces = gravity, drag, lift\ndraw = dot\ncolor = #ffc878a0\n"                                          \
+    "[emitter glow]\nsource = layer\ncount = 2000\nrect = -3.9, 3.9, -1, 2.9\n"                             \
+    "forces = gravity, drag, lift\ndraw = dot\nblend = add\ncolor = #20100840\n"                             \
+    "[emitter sparks]\nsource = layer\ncount = 500\nrect = -3.9, 3.9, -1, 2.9\n"                             \
+    "forces = gravity, drag, lift\ndraw = dot-browser\ncolor = #ff304080\n"
 
 static void set_both(isk_effect *a, isk_effect *b, const char *section, const char *key, const char *value)
 {
@@ -128,12 +132,15 @@ static long replays(const isk_effect *e)
     return e->groups[0].retained.replays + e->groups[1].retained.replays;
 }
 
+static const char *const SCENES[] = {SCENE(""), SCENE("window = -4, 4, -2.43, 3\n")};
+
 Test(retain, groups_at_rest_give_the_bytes_of_full_draws)
 {
     static const int counts[] = {1, 2, 3, 7};
-    for (int t = 0; t < 4; t++) {
-        const int threads = counts[t];
-        isk_effect *a = scene_text_open(SCENE, threads), *b = scene_text_open(SCENE, threads);
+    for (int t = 0; t < 8; t++) {
+        const int threads = counts[t % 4];
+        const char *scene = SCENES[t / 4];
+        isk_effect *a = scene_text_open(scene, threads), *b = scene_text_open(scene, threads);
         b->no_retain = 1;
         a->band_min_work = b->band_min_work = 0; /* every draw in bands, however small */
         isk_canvas ca, cb, wide_a, wide_b; /* wide: rows 20 bytes apart beyond their pixels */
@@ -159,7 +166,7 @@ Test(retain, groups_at_rest_give_the_bytes_of_full_draws)
             cr_assert_eq(isk_effect_render(a, pa), ISK_OK);
             cr_assert_eq(isk_effect_render(b, pb), ISK_OK);
             cr_assert(!memcmp(pa->pixels, pb->pixels, (size_t)pa->stride * (size_t)pa->height),
-                      "%d threads, frame %d: the canvases differ", threads, frame);
+                      "scene %d, %d threads, frame %d: the canvases differ", t / 4, threads, frame);
             if (frame == 20)
                 replays_moving = replays(a);
             if (frame == 430) { /* a particle written, and forgotten, as every writer must */

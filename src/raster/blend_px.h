@@ -28,6 +28,19 @@
 #include <emmintrin.h>
 #endif
 
+/* n pixels from d set to s (ISK_BLEND_REPLACE, whatever the source alpha):
+ * 32-bit words through locals, which the compiler vectorizes (stores
+ * through bytes may alias the caller's fields and kept it from doing so:
+ * an 800x600 fill took 150 us byte by byte, 45 us so). */
+static ISK__INLINE void isk__fill_span(uint8_t *d, size_t n, isk_color s)
+{
+    const uint8_t px[4] = {s.r, s.g, s.b, s.a};
+    uint32_t word;
+    memcpy(&word, px, 4);
+    for (size_t x = 0; x < n; x++)
+        memcpy(d + 4 * x, &word, 4);
+}
+
 /* Calls FN(args..., mode) with mode as a literal constant for each valid
  * mode (an invalid mode draws nothing, as before). */
 #define ISK__BLEND_DISPATCH(mode, FN, ...)                  \

@@ -1,6 +1,8 @@
 /* Canvas memory: owned, wrapped and view canvases. */
 #include "iskra/canvas.h"
 
+#include "raster/blend_px.h" /* isk__fill_span */
+
 #include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
@@ -87,19 +89,10 @@ void isk_canvas_fill(isk_canvas *c, isk_color color)
 {
     if (!c || !c->pixels || c->width <= 0 || c->height <= 0)
         return; /* nothing to fill (a hostile size is not turned into a huge one) */
-    /* whole pixels as 32-bit words, with the canvas's fields in locals
-     * (stores through bytes may alias them, which kept the compiler from
-     * vectorizing): 150 us for 800x600 byte by byte, 45 us so */
-    const uint8_t px[4] = {color.r, color.g, color.b, color.a};
-    uint32_t word;
-    memcpy(&word, px, 4);
     uint8_t *const pixels = c->pixels;
     const size_t w = (size_t)c->width, stride = c->stride;
-    for (size_t y = 0, h = (size_t)c->height; y < h; y++) {
-        uint8_t *row = pixels + y * stride;
-        for (size_t x = 0; x < w; x++)
-            memcpy(row + 4 * x, &word, 4);
-    }
+    for (size_t y = 0, h = (size_t)c->height; y < h; y++)
+        isk__fill_span(pixels + y * stride, w, color);
 }
 
 isk_color isk_canvas_get(const isk_canvas *c, int x, int y)

@@ -20,6 +20,10 @@ static ISK__INLINE void fill_rows(isk_canvas *c, int x0, int y0, int x1, int y1,
 {
     for (int j = y0; j < y1; j++) {
         uint8_t *p = isk_canvas_at(c, x0, j);
+        if (mode == ISK_BLEND_REPLACE) { /* a constant: the copies of the other modes keep the loop */
+            isk__fill_span(p, (size_t)(x1 - x0), color);
+            continue;
+        }
         for (int i = x0; i < x1; i++, p += 4)
             isk__px(p, color, mode);
     }

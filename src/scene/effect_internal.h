@@ -114,6 +114,7 @@ typedef struct fx_shares {
  * (effect_retain.c, view/world_batch.h's retained dots). */
 typedef struct fx_tile {
     int r0, r1, c0, c1;
+    int y0, y1; /* the rows [y0, y1) its records blend (within [r0, r1); y0 == y1: none) */
 } fx_tile;
 typedef struct fx_retained {
     int nb;                       /* bands recorded, each with its records; 0: none */

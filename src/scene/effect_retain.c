@@ -129,6 +129,16 @@ isk_status fx_retain_record(isk_effect *e, isk_canvas *c, fx_group *g, const fx_
     rt->rec[k] = rec.rec;
     rt->n[k] = rec.n;
     rt->failed[k] = rec.failed;
+    int y0 = b->r1, y1 = b->r0; /* a block's rows are iy and iy + 1, cut to the band */
+    for (size_t i = 0; i < rec.n; i++) {
+        const int iy = rec.rec[i].iy & (ISK__REC_FULL - 1u);
+        y0 = iy < y0 ? iy : y0;
+        y1 = iy + 2 > y1 ? iy + 2 : y1;
+    }
+    rt->tile[k].y0 = y0 < b->r0 ? b->r0 : y0;
+    rt->tile[k].y1 = y1 > b->r1 ? b->r1 : y1;
+    if (rt->tile[k].y1 <= rt->tile[k].y0)
+        rt->tile[k].y0 = rt->tile[k].y1 = b->r0;
     return ISK_OK;
 }
 
@@ -159,8 +169,12 @@ void fx_retain_end(fx_retained *rt, const fx_band *band, int nb, int columns)
         rt->refused = 1;
         return;
     }
-    for (int k = 0; k < nb; k++)
-        rt->tile[k] = (fx_tile){band[k].r0, band[k].r1, band[k].c0, band[k].c1};
+    for (int k = 0; k < nb; k++) { /* (the rows its records blend: fx_retain_record's) */
+        rt->tile[k].r0 = band[k].r0;
+        rt->tile[k].r1 = band[k].r1;
+        rt->tile[k].c0 = band[k].c0;
+        rt->tile[k].c1 = band[k].c1;
+    }
     rt->nb = nb;
     rt->columns = columns;
     rt->records++;
