@@ -20,10 +20,10 @@
  * copies of the effect in one process, one replaying and one drawing in
  * full, frames interleaved, medians of 31; 2026-12-05): the render (clear
  * and draw) 2.45 ms against 5.83 on one thread, 1.48-1.53 against
- * 3.61-3.65 on two.  The replay alone takes 2.37 ms on one thread and
- * 1.21-1.24 a band on two: the rest of the two-thread render (0.25 ms) is
- * waking the second thread and waiting for it, which keeps the speedup of
- * the second core near 1.6-1.7. */
+ * 3.61-3.65 on two; with the bands' faster clears and narrower copies
+ * (effect_bands.c's replay_band), 1.33-1.34 ms on two threads against
+ * 2.47-2.51 on one.  The replay alone takes 2.37 ms on one thread and
+ * 1.21-1.24 a band on two (docs/architecture.md). */
 #include <stdlib.h>
 #include <string.h>
 
