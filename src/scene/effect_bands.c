@@ -116,7 +116,7 @@ typedef struct band_job {
     uint8_t **copy;  /* a band of columns' own canvas pixels, or NULL: in place; for a
                       * split, every band's but the first, zeroed and added in after */
     int split;       /* the bands split the particles, not the canvas (split_particles) */
-    fx_draw_fn draw; /* each band's: the group's, or effect_retain.c's record or replay */
+    fx_draw_fn draw; /* each band's (draw_band): the group's, or effect_retain.c's record */
     /* sorting into bands: share t of the store is [t n / nb, (t+1) n / nb)
      * (as many shares as bands, one per thread) */
     uint8_t *band_of_row;          /* the canvas's height */
@@ -570,7 +570,6 @@ static isk_status replay_bands(isk_effect *e, isk_canvas *c, fx_group *g, const 
     j->c = c;
     j->g = g;
     j->fill = fill;
-    j->draw = fx_retain_replay;
     j->nb = rt->nb;
     for (int k = 0; k < j->nb; k++) {
         fx_band *b = &j->band[k];
