@@ -546,6 +546,15 @@ static void replay_band(void *ctx, int worker, size_t item)
         copy_tile(j->c->pixels, own.pixels, j->c, b.r0, b.r1, b.c0, b.c1);
 }
 
+/* Band k of the recorded ones: the whole band cut to its tile. */
+static fx_band retained_band(const fx_band *whole, const fx_retained *rt, int k)
+{
+    fx_band b = *whole;
+    const fx_tile *t = &rt->tile[k];
+    b.r0 = t->r0, b.r1 = t->r1, b.c0 = t->c0, b.c1 = t->c1, b.index = k;
+    return b;
+}
+
 /* The group's recorded blends drawn again, on the bands they were recorded
  * on (effect_retain.c): the same cuts, so the shares are left as they are. */
 static isk_status replay_bands(isk_effect *e, isk_canvas *c, fx_group *g, const fx_band *whole,
@@ -557,9 +566,7 @@ static isk_status replay_bands(isk_effect *e, isk_canvas *c, fx_group *g, const 
             isk_canvas_fill(c, *fill);
         isk_status s = ISK_OK;
         for (int k = 0; k < rt->nb && s == ISK_OK; k++) {
-            fx_band b = *whole;
-            const fx_tile *t = &rt->tile[k];
-            b.r0 = t->r0, b.r1 = t->r1, b.c0 = t->c0, b.c1 = t->c1, b.index = k;
+            const fx_band b = retained_band(whole, rt, k);
             if (fill && rt->nb > 1)
                 isk_fill_rect(c, b.c0, b.r0, b.c1 - b.c0, b.r1 - b.r0, *fill, ISK_BLEND_REPLACE);
             s = fx_retain_replay(e, c, g, &b);
@@ -571,12 +578,8 @@ static isk_status replay_bands(isk_effect *e, isk_canvas *c, fx_group *g, const 
     j->g = g;
     j->fill = fill;
     j->nb = rt->nb;
-    for (int k = 0; k < j->nb; k++) {
-        fx_band *b = &j->band[k];
-        const fx_tile *t = &rt->tile[k];
-        *b = *whole;
-        b->r0 = t->r0, b->r1 = t->r1, b->c0 = t->c0, b->c1 = t->c1, b->index = k;
-    }
+    for (int k = 0; k < j->nb; k++)
+        j->band[k] = retained_band(whole, rt, k);
     if (rt->columns)
         give_copies(j);
     isk_pool_for(e->pool, (size_t)j->nb, 2, replay_band, j);

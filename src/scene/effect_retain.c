@@ -29,7 +29,8 @@
 
 #include "effect_internal.h"
 
-void fx_retain_clear(fx_retained *rt)
+/* Frees the bands and their records; the key stays. */
+static void free_records(fx_retained *rt)
 {
     for (int k = 0; k < rt->cap; k++)
         free(rt->rec[k]);
@@ -37,6 +38,16 @@ void fx_retain_clear(fx_retained *rt)
     free(rt->rec);
     free(rt->n);
     free(rt->failed);
+    rt->tile = NULL;
+    rt->rec = NULL;
+    rt->n = NULL;
+    rt->failed = NULL;
+    rt->nb = rt->cap = rt->columns = 0;
+}
+
+void fx_retain_clear(fx_retained *rt)
+{
+    free_records(rt);
     const long records = rt->records, replays = rt->replays;
     memset(rt, 0, sizeof *rt);
     rt->records = records;
@@ -157,15 +168,7 @@ void fx_retain_end(fx_retained *rt, const fx_band *band, int nb, int columns)
     for (int k = 0; k < nb && !failed; k++)
         failed = rt->failed[k];
     if (failed) { /* the key stays, refused, so the next draws do not try again */
-        const fx_retained key = *rt;
-        fx_retain_clear(rt);
-        rt->changes = key.changes;
-        rt->count = key.count;
-        rt->view = key.view;
-        rt->width = key.width;
-        rt->height = key.height;
-        rt->threads = key.threads;
-        rt->rule = key.rule;
+        free_records(rt);
         rt->refused = 1;
         return;
     }

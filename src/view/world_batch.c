@@ -356,17 +356,21 @@ static ISK__INLINE void run_rule(const isk_canvas *c, int r0, int r1, int c0, in
     }
 }
 
-/* Whether there is anything to draw, the tile clamped to the canvas. */
-static int drawable(const isk_canvas *c, const isk_view *v, size_t n, const double *x, const double *y, int *r0,
-                    int *r1, int *c0, int *c1)
+/* The tile clamped to c: whether anything of it is left. */
+static int clamp_tile(const isk_canvas *c, int *r0, int *r1, int *c0, int *c1)
 {
-    if (!c || !c->pixels || !v || !x || !y || n == 0)
-        return 0;
     *r0 = *r0 < 0 ? 0 : *r0;
     *r1 = *r1 > c->height ? c->height : *r1;
     *c0 = *c0 < 0 ? 0 : *c0;
     *c1 = *c1 > c->width ? c->width : *c1;
     return *r0 < *r1 && *c0 < *c1;
+}
+
+/* Whether there is anything to draw, the tile clamped to the canvas. */
+static int drawable(const isk_canvas *c, const isk_view *v, size_t n, const double *x, const double *y, int *r0,
+                    int *r1, int *c0, int *c1)
+{
+    return c && c->pixels && v && x && y && n > 0 && clamp_tile(c, r0, r1, c0, c1);
 }
 
 void isk__draw_batch_tile(isk_canvas *c, const isk_view *v, size_t n, const double *x, const double *y,
@@ -421,13 +425,7 @@ static ISK__INLINE void replay_rule(isk_canvas *c, const isk__dot_rec *rec, size
 void isk__draw_batch_replay(isk_canvas *c, const isk__dot_rec *rec, size_t n, isk_color col, isk_blend mode, int r0,
                             int r1, int c0, int c1)
 {
-    if (!c || !c->pixels || !rec || n == 0)
-        return;
-    r0 = r0 < 0 ? 0 : r0;
-    r1 = r1 > c->height ? c->height : r1;
-    c0 = c0 < 0 ? 0 : c0;
-    c1 = c1 > c->width ? c->width : c1;
-    if (r0 < r1 && c0 < c1)
+    if (c && c->pixels && rec && n > 0 && clamp_tile(c, &r0, &r1, &c0, &c1))
         ISK__BLEND_DISPATCH(mode, replay_rule, c, rec, n, col, r0, r1, c0, c1);
 }
 
