@@ -27,7 +27,19 @@
  * at once, after every row: "cores given" is how many cores' worth of work
  * the machine did, and a row's speedup can only be read against it;
  * "memory given" is the same for a pass over arrays beyond the caches,
- * the most a row whose update is bound by memory can gain there.
+ * the most a row whose update is bound by memory can gain there; "shared
+ * lines" is how much longer the threads take to write lines the other
+ * thread has just read than lines only they read (bench_controls.h): 1.0
+ * when the VM's two cores share a cache, 3-5 when it places them apart,
+ * and a threaded frame passes every particle's x and y between the cores
+ * (each band of the draw reads them all, the update writes them).
+ *
+ * And each row's work is also done as independent parts, one per core,
+ * each an effect of its share of the particles on one thread of its own,
+ * their frames taken in turn with the copies' (bench_parts.h): what the
+ * machine gives that many cores for this work when they share nothing.
+ * What the threads get beyond or below it is what sharing one store and
+ * one canvas gains or costs.
  *
  *     build/bench/bench_frame            every size, and 10^6 settled on the floor and at rest
  *     build/bench/bench_frame --quick    10^5 and 10^6 only */
@@ -36,8 +48,10 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "bench_util.h"
+#include "bench_controls.h"
 #include "bench_layer.h"
+#include "bench_parts.h"
+#include "bench_util.h"
 
 enum { W = BENCH_LAYER_W, H = BENCH_LAYER_H };
 
@@ -79,111 +93,6 @@ static double resident_bytes(void)
     return (double)rss * 4096.0;
 }
 
-/* ---- the control: cores the machine gives ---------------------------------- */
-
-static void *arithmetic(void *arg)
-{
-    volatile double x = 1.0;
-    for (long i = 0; i < 40000000; i++) /* a dependent chain: no memory, no vector */
-        x = x * 1.0000001;
-    return arg;
-}
-
-/* Work done on `threads` threads at once over the work of one, per unit of
- * time: `threads` when the machine gives that many cores. */
-static double cores_given(int threads)
-{
-    pthread_t t[64];
-    double t0 = bench_now();
-    arithmetic(NULL);
-    const double one = bench_now() - t0;
-    int started = 0;
-    t0 = bench_now();
-    for (int k = 0; k < threads && k < 64; k++)
-        started += pthread_create(&t[k], NULL, arithmetic, NULL) == 0;
-    for (int k = 0; k < started; k++)
-        pthread_join(t[k], NULL);
-    const double all = bench_now() - t0;
-    return all > 0 ? started * one / all : 0;
-}
-
-/* The same for memory: a semi-implicit Euler step with drag over five
- * columns of 2*10^6 (x, y, vx, vy, m: 80 MB, beyond the caches; five
- * streams read and four written, as the update's), on one thread and then
- * shared out over `threads`: how much more bandwidth that many threads get
- * than one for the update's pattern.  A row whose update is bound by memory
- * (a falling layer of 10^6 moves 72 MB a step) can speed up by that much
- * at most, however many cores it is given.  (A pass over two columns gets
- * more from a second thread: one thread alone cannot keep enough misses in
- * flight on two streams, while the update's nine let it take most of the
- * memory's bandwidth by itself.) */
-enum { MEM_N = 2000000, MEM_COLS = 5 };
-typedef struct mem_share {
-    double *col[MEM_COLS];
-    size_t lo, hi;
-} mem_share;
-
-static void *memory_pass(void *arg)
-{
-    mem_share *s = arg;
-    double *restrict x = s->col[0], *restrict y = s->col[1], *restrict vx = s->col[2], *restrict vy = s->col[3];
-    const double *restrict m = s->col[4];
-    const double h = 1.0 / 60, g = -9.81, b = 0.3;
-    for (size_t i = s->lo; i < s->hi; i++) {
-        const double k = b * m[i]; /* m read as 1/m: no division to bound the pass */
-        vx[i] -= h * k * vx[i];
-        vy[i] += h * (g - k * vy[i]);
-        x[i] += h * vx[i];
-        y[i] += h * vy[i];
-    }
-    return NULL;
-}
-
-/* One pass over the columns shared out over `threads`: seconds, or a
- * negative number when a thread could not be started. */
-static double memory_pass_time(double **col, int threads)
-{
-    pthread_t t[64];
-    mem_share s[64];
-    int started = 0;
-    const int n = threads < 64 ? threads : 64;
-    const double t0 = bench_now();
-    for (int k = 0; k < n; k++) {
-        memcpy(s[k].col, col, sizeof s[k].col);
-        s[k].lo = (size_t)MEM_N * (size_t)k / (size_t)n;
-        s[k].hi = (size_t)MEM_N * (size_t)(k + 1) / (size_t)n;
-    }
-    for (int k = 1; k < n; k++)
-        started += pthread_create(&t[k], NULL, memory_pass, &s[k]) == 0;
-    memory_pass(&s[0]);
-    for (int k = 1; k <= started; k++)
-        pthread_join(t[k], NULL);
-    return started == n - 1 ? bench_now() - t0 : -1.0;
-}
-
-/* The best of seven passes each way, one thread and `threads` in turn (a
- * pass takes a millisecond or two: fewer let the machine's load decide). */
-static double memory_given(int threads)
-{
-    double *col[MEM_COLS] = {NULL};
-    int ok = 1;
-    for (int c = 0; c < MEM_COLS; c++) {
-        col[c] = malloc(MEM_N * sizeof *col[c]);
-        ok = ok && col[c];
-        for (size_t i = 0; col[c] && i < MEM_N; i++)
-            col[c][i] = 1.0;
-    }
-    double one = 1e30, all = 1e30;
-    for (int rep = 0; ok && rep < 7; rep++) {
-        const double t1 = memory_pass_time(col, 1), tn = memory_pass_time(col, threads);
-        one = t1 > 0 && t1 < one ? t1 : one;
-        all = tn > 0 && tn < all ? tn : all;
-    }
-    for (int c = 0; c < MEM_COLS; c++)
-        free(col[c]);
-    return ok && one < 1e30 && all < 1e30 ? one / all : 0;
-}
-
 static void print_control(const int *tc, int nt)
 {
     printf("%-8s %9s  control: cores given", "", "");
@@ -192,6 +101,9 @@ static void print_control(const int *tc, int nt)
     printf(";  memory given");
     for (int t = 1; t < nt; t++)
         printf("  %d threads: %.2f", tc[t], memory_given(tc[t]));
+    printf(";  shared lines");
+    for (int t = 1; t < nt; t++)
+        printf("  %d threads: %.2fx", tc[t], shared_lines_cost(tc[t]));
     printf("\n");
 }
 
@@ -244,14 +156,32 @@ int main(int argc, char **argv)
                 copies++;
         if (copies < nt)
             printf("%-8s %9zu  only %d of %d copies fit: %s\n", r->what, r->n, copies, nt, err.message);
-        double tu[MAXT][MAXF], td[MAXT][MAXF], tf[MAXT][MAXF];
+        double tu[MAXT][MAXF], td[MAXT][MAXF], tf[MAXT][MAXF], tp[MAXF];
         for (int t = 0; t < copies && !failed; t++)
             failed = isk_effect_set_threads(fx[t], tc[t]) != ISK_OK;
         for (int f = 0; f < r->settle && !failed; f++)
             for (int t = 0; t < copies && !failed; t++)
                 failed = isk_effect_step(fx[t]) != ISK_OK;
+        /* the same work as independent parts, one per core (bench_parts.h),
+         * started after the copies' warm frames (the resident bytes are the
+         * copies') and brought to the same state */
+        bench_parts parts;
+        const int nparts = tc[nt - 1];
+        int have_parts = 0;
+        double rss1 = 0;
         for (int f = -2; f < r->frames && !failed; f++) /* two frames to warm the caches */
             for (int t = 0; t < copies && !failed; t++) {
+                if (f == 0 && t == 0 && nt > 1 && copies == nt) {
+                    rss1 = resident_bytes();
+                    have_parts = bench_parts_start(&parts, nparts, r->n, r->draw, &err) == ISK_OK;
+                    if (have_parts && (bench_parts_run(&parts, 1, r->settle) < 0 || bench_parts_run(&parts, 0, 2) < 0)) {
+                        bench_parts_stop(&parts);
+                        have_parts = 0;
+                    }
+                    if (!have_parts)
+                        printf("%-8s %9zu  no independent parts: %s\n", r->what, r->n,
+                               err.message[0] ? err.message : "a part's frame failed");
+                }
                 double t0 = bench_now();
                 isk_status s = isk_effect_step(fx[t]);
                 double t1 = bench_now();
@@ -264,22 +194,36 @@ int main(int argc, char **argv)
                     td[t][f] = 1e3 * (t2 - t1);
                     tf[t][f] = 1e3 * (t2 - t0);
                 }
+                if (t == copies - 1 && have_parts && !failed) { /* the parts' frame f, in turn with the copies' */
+                    const double sp = bench_parts_run(&parts, 0, 1);
+                    failed = sp < 0;
+                    tp[f] = 1e3 * sp; /* f >= 0: the parts start at frame 0 */
+                }
             }
-        double frame1 = 0;
+        double frame1 = 0, frame_all = 0;
         for (int t = 0; t < copies && !failed; t++) {
             double u = bench_median(tu[t], r->frames);
             double dr = bench_median(td[t], r->frames), fr = bench_median(tf[t], r->frames);
             if (t == 0)
                 frame1 = fr;
+            frame_all = fr;
             printf("%-8s %9zu %7d %8.2f %8.2f %8.2f %7.1f %7.2fx\n", r->what, r->n, tc[t], u, dr, fr,
                    1e3 / fr, frame1 / fr);
         }
+        if (have_parts && !failed) {
+            const double fp = bench_median(tp, r->frames);
+            printf("%-8s %9zu  as %d independent parts at once, one thread each: %.2f ms, %.2fx; the %d threads "
+                   "got %.2f of that\n",
+                   "", r->n, nparts, fp, frame1 / fp, nparts, fp / frame_all);
+        }
+        if (have_parts)
+            bench_parts_stop(&parts);
         /* Smaller rows' columns come from memory the earlier rows gave
          * back to malloc, already resident: their growth means nothing. */
         if (r->n >= 1000000)
             printf("%-8s %9zu  %.0f bytes a particle resident (the store, the pool's scratch; at rest, the "
                    "recorded blends)\n", "", r->n,
-                   (resident_bytes() - rss0) / ((double)r->n * copies));
+                   ((rss1 > 0 ? rss1 : resident_bytes()) - rss0) / ((double)r->n * copies));
         print_control(tc, nt);
         for (int t = 0; t < copies; t++)
             isk_effect_destroy(fx[t]);
