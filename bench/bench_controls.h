@@ -68,7 +68,7 @@ static inline double cores_given(int threads)
     const double one = bench_now() - t0;
     int started = 0;
     t0 = bench_now();
-    for (int k = 0; k < threads && k < 64; k++)
+    for (int k = 0; k < threads && k < 64 && started == k; k++) /* the first failure ends it: t[] stays dense */
         started += pthread_create(&t[k], NULL, arithmetic, NULL) == 0;
     for (int k = 0; k < started; k++)
         pthread_join(t[k], NULL);
@@ -122,7 +122,7 @@ static inline double memory_pass_time(double **col, int threads)
         s[k].lo = (size_t)MEM_N * (size_t)k / (size_t)n;
         s[k].hi = (size_t)MEM_N * (size_t)(k + 1) / (size_t)n;
     }
-    for (int k = 1; k < n; k++)
+    for (int k = 1; k < n && started == k - 1; k++)
         started += pthread_create(&t[k], NULL, memory_pass, &s[k]) == 0;
     memory_pass(&s[0]);
     for (int k = 1; k <= started; k++)
