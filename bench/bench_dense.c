@@ -5,7 +5,9 @@
  * Three measurements, each in one run, medians of wall-clock time:
  *
  *   1. the frame as bench_frame times it (bench_layer.h's effect), on one
- *      thread and on all of them, against the 66.7 ms a frame of 15 FPS has;
+ *      thread and on all of them, against the 66.7 ms a frame of 15 FPS has,
+ *      and the same work as independent effects, one per core, sharing
+ *      nothing (bench_parts.h): the most the threads could make of it;
  *   2. the draw of the same points (isk_draw_dots' kernels, one band per
  *      thread) in the store's order and sorted by screen row: what a store
  *      kept in row order would give (the canvas's lines then come from the
@@ -28,6 +30,7 @@
 #include <string.h>
 
 #include "bench_layer.h"
+#include "bench_parts.h"
 #include "bench_util.h"
 #include "iskra/view.h"
 #include "view/world_batch.h"
@@ -43,10 +46,13 @@ typedef struct frame_times {
 } frame_times;
 
 /* Frames alternate between one thread and all, so a change in the
- * machine's load hits both alike. */
-static int time_effect(isk_effect *fx, isk_canvas *c, int all, frame_times out[2])
+ * machine's load hits both alike; with parts (bench_parts.h: the same
+ * work as independent effects, one per core, sharing nothing), a frame of
+ * theirs follows each pair (*parts_ms: their median). */
+static int time_effect(isk_effect *fx, isk_canvas *c, int all, frame_times out[2], bench_parts *parts,
+                       double *parts_ms)
 {
-    double tu[2][FRAMES], td[2][FRAMES];
+    double tu[2][FRAMES], td[2][FRAMES], tp[FRAMES];
     for (int f = -1; f < FRAMES; f++) /* one frame to warm up */
         for (int k = 0; k < 2; k++) {
             if (isk_effect_set_threads(fx, k ? all : 1) != ISK_OK)
@@ -63,11 +69,20 @@ static int time_effect(isk_effect *fx, isk_canvas *c, int all, frame_times out[2
                 tu[k][f] = 1e3 * (t1 - t0);
                 td[k][f] = 1e3 * (t2 - t1);
             }
+            if (k == 1 && parts) {
+                const double sp = bench_parts_run(parts, 0, 1);
+                if (sp < 0)
+                    return 1;
+                if (f >= 0)
+                    tp[f] = 1e3 * sp;
+            }
         }
     for (int k = 0; k < 2; k++) {
         out[k].update = bench_median(tu[k], FRAMES);
         out[k].draw = bench_median(td[k], FRAMES);
     }
+    if (parts)
+        *parts_ms = bench_median(tp, FRAMES);
     return 0;
 }
 
@@ -255,7 +270,12 @@ int main(int argc, char **argv)
            n, W, H, all, TARGET_MS);
 
     frame_times ft[2];
-    int failed = time_effect(fx, &c, all, ft);
+    bench_parts parts;
+    const int have_parts = all > 1 && bench_parts_start(&parts, all, n, ISK_DRAW_DOT, &err) == ISK_OK;
+    double parts_ms = 0;
+    int failed = time_effect(fx, &c, all, ft, have_parts ? &parts : NULL, &parts_ms);
+    if (have_parts)
+        bench_parts_stop(&parts);
     for (int k = 0; k < 2 && !failed; k++) {
         const double frame = ft[k].update + ft[k].draw;
         printf("1. the effect, %d thread%s:  update %6.1f  clear+draw %6.1f  frame %6.1f  (%.1f FPS, %.2fx "
@@ -263,6 +283,12 @@ int main(int argc, char **argv)
                k ? all : 1, k && all > 1 ? "s" : " ", ft[k].update, ft[k].draw, frame, 1e3 / frame,
                frame / TARGET_MS);
     }
+    if (have_parts && !failed) /* what the threads could get at best, sharing nothing */
+        printf("   the same work as %d independent effects at once, one thread each (bench_parts.h): frame %6.1f  "
+               "(%.1f FPS, %.2fx the 15 FPS frame)\n",
+               all, parts_ms, 1e3 / parts_ms, parts_ms / TARGET_MS);
+    else if (all > 1 && !failed)
+        printf("   no independent parts: %s\n", err.message[0] ? err.message : "they could not be started");
 
     const isk_particles *p = isk_effect_particles(fx, 0);
     const size_t m = isk_effect_particle_count(fx);
