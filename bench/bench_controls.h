@@ -10,6 +10,9 @@
  * same for the update's pattern over columns beyond the caches.
  * shared_lines_cost: how much longer the threads take to write lines that
  * every thread has just read than lines only the writer read.
+ * bench_run_shares: a function on shares of a job at once, one thread
+ * each, the caller taking the first (what the controls and bench_dense's
+ * threaded loops time).
  *
  * Header-only (static functions) so each benchmark stays one program. */
 #ifndef ISKRA_BENCH_CONTROLS_H
@@ -50,6 +53,34 @@ static inline void bench_gate_open(bench_gate *g, int all_started)
     pthread_mutex_unlock(&g->lock);
 }
 
+/* fn on `threads` shares at once (at most BENCH_SHARES_MAX), share k's
+ * argument at args + k * size: share 0 on the caller, the others on
+ * threads of their own.  Seconds of wall time.  A share whose thread
+ * cannot be started runs on the caller instead (the time then says so),
+ * and *all_started, when not NULL, is 0. */
+enum { BENCH_SHARES_MAX = 64 };
+static inline double bench_run_shares(void *(*fn)(void *), void *args, size_t size, int threads, int *all_started)
+{
+    pthread_t t[BENCH_SHARES_MAX];
+    int started[BENCH_SHARES_MAX] = {0}, all = 1;
+    threads = threads < BENCH_SHARES_MAX ? threads : BENCH_SHARES_MAX;
+    char *a = args;
+    const double t0 = bench_now();
+    for (int k = 1; k < threads; k++) {
+        started[k] = pthread_create(&t[k], NULL, fn, a + (size_t)k * size) == 0;
+        if (!started[k])
+            fn(a + (size_t)k * size);
+        all &= started[k];
+    }
+    fn(a);
+    for (int k = 1; k < threads; k++)
+        if (started[k])
+            pthread_join(t[k], NULL);
+    if (all_started)
+        *all_started = all;
+    return bench_now() - t0;
+}
+
 static inline void *arithmetic(void *arg)
 {
     volatile double x = 1.0;
@@ -59,21 +90,16 @@ static inline void *arithmetic(void *arg)
 }
 
 /* Work done on `threads` threads at once over the work of one, per unit of
- * time: `threads` when the machine gives that many cores. */
+ * time: `threads` when the machine gives that many cores (0 when a thread
+ * could not be started). */
 static inline double cores_given(int threads)
 {
-    pthread_t t[64];
-    double t0 = bench_now();
-    arithmetic(NULL);
-    const double one = bench_now() - t0;
-    int started = 0;
-    t0 = bench_now();
-    for (int k = 0; k < threads && k < 64 && started == k; k++) /* the first failure ends it: t[] stays dense */
-        started += pthread_create(&t[k], NULL, arithmetic, NULL) == 0;
-    for (int k = 0; k < started; k++)
-        pthread_join(t[k], NULL);
-    const double all = bench_now() - t0;
-    return all > 0 ? started * one / all : 0;
+    char none; /* arithmetic takes no argument */
+    threads = threads < BENCH_SHARES_MAX ? threads : BENCH_SHARES_MAX;
+    const double one = bench_run_shares(arithmetic, &none, 0, 1, NULL);
+    int all = 0;
+    const double at_once = bench_run_shares(arithmetic, &none, 0, threads, &all);
+    return all && at_once > 0 ? threads * one / at_once : 0;
 }
 
 /* The same for memory: a semi-implicit Euler step with drag over five
@@ -112,22 +138,16 @@ static inline void *memory_pass(void *arg)
  * negative number when a thread could not be started. */
 static inline double memory_pass_time(double **col, int threads)
 {
-    pthread_t t[64];
-    mem_share s[64];
-    int started = 0;
-    const int n = threads < 64 ? threads : 64;
-    const double t0 = bench_now();
+    mem_share s[BENCH_SHARES_MAX];
+    const int n = threads < BENCH_SHARES_MAX ? threads : BENCH_SHARES_MAX;
     for (int k = 0; k < n; k++) {
         memcpy(s[k].col, col, sizeof s[k].col);
         s[k].lo = (size_t)MEM_N * (size_t)k / (size_t)n;
         s[k].hi = (size_t)MEM_N * (size_t)(k + 1) / (size_t)n;
     }
-    for (int k = 1; k < n && started == k - 1; k++)
-        started += pthread_create(&t[k], NULL, memory_pass, &s[k]) == 0;
-    memory_pass(&s[0]);
-    for (int k = 1; k <= started; k++)
-        pthread_join(t[k], NULL);
-    return started == n - 1 ? bench_now() - t0 : -1.0;
+    int all = 0;
+    const double seconds = bench_run_shares(memory_pass, s, sizeof *s, n, &all);
+    return all ? seconds : -1.0;
 }
 
 /* The best of seven passes each way, one thread and `threads` in turn (a

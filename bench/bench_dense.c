@@ -35,7 +35,7 @@
 #include "iskra/view.h"
 #include "view/world_batch.h"
 
-enum { W = BENCH_LAYER_W, H = BENCH_LAYER_H, FRAMES = 6, REPS = 5, MAXT = 64 };
+enum { W = BENCH_LAYER_W, H = BENCH_LAYER_H, FRAMES = 6, REPS = 5, MAXT = BENCH_SHARES_MAX };
 
 static const double TARGET_MS = 1000.0 / 15.0;
 
@@ -53,7 +53,7 @@ static int time_effect(isk_effect *fx, isk_canvas *c, int all, frame_times out[2
                        double *parts_ms)
 {
     double tu[2][FRAMES], td[2][FRAMES], tp[FRAMES];
-    for (int f = -1; f < FRAMES; f++) /* one frame to warm up */
+    for (int f = -1; f < FRAMES; f++) { /* one frame to warm up */
         for (int k = 0; k < 2; k++) {
             if (isk_effect_set_threads(fx, k ? all : 1) != ISK_OK)
                 return 1;
@@ -69,14 +69,15 @@ static int time_effect(isk_effect *fx, isk_canvas *c, int all, frame_times out[2
                 tu[k][f] = 1e3 * (t1 - t0);
                 td[k][f] = 1e3 * (t2 - t1);
             }
-            if (k == 1 && parts) {
-                const double sp = bench_parts_run(parts, 0, 1);
-                if (sp < 0)
-                    return 1;
-                if (f >= 0)
-                    tp[f] = 1e3 * sp;
-            }
         }
+        if (parts) {
+            const double sp = bench_parts_run(parts, 0, 1);
+            if (sp < 0)
+                return 1;
+            if (f >= 0)
+                tp[f] = 1e3 * sp;
+        }
+    }
     for (int k = 0; k < 2; k++) {
         out[k].update = bench_median(tu[k], FRAMES);
         out[k].draw = bench_median(td[k], FRAMES);
@@ -84,28 +85,6 @@ static int time_effect(isk_effect *fx, isk_canvas *c, int all, frame_times out[2
     if (parts)
         *parts_ms = bench_median(tp, FRAMES);
     return 0;
-}
-
-/* fn on `threads` shares at once, share k's argument at args + k * size:
- * share 0 on the caller, the others on threads of their own (a share
- * whose thread cannot start runs on the caller).  Milliseconds of wall
- * time. */
-static double run_shares_ms(void *(*fn)(void *), void *args, size_t size, int threads)
-{
-    pthread_t t[MAXT];
-    int started[MAXT] = {0};
-    char *a = args;
-    const double t0 = bench_now();
-    for (int k = 1; k < threads; k++) {
-        started[k] = pthread_create(&t[k], NULL, fn, a + (size_t)k * size) == 0;
-        if (!started[k])
-            fn(a + (size_t)k * size);
-    }
-    fn(a);
-    for (int k = 1; k < threads; k++)
-        if (started[k])
-            pthread_join(t[k], NULL);
-    return 1e3 * (bench_now() - t0);
 }
 
 /* ---- 2. the draw in store order and in row order ----------------------- */
@@ -140,7 +119,7 @@ static double draw_ms(isk_canvas *c, const isk_view *v, size_t n, const double *
         a[k] = (band_arg){c, v, i1 - i0, x + i0, y + i0, r0, r1};
     }
     isk_canvas_fill(c, isk_rgba(0, 0, 0, 255));
-    return run_shares_ms(draw_band, a, sizeof *a, threads);
+    return 1e3 * bench_run_shares(draw_band, a, sizeof *a, threads, NULL);
 }
 
 /* x, y copied in the order of their screen rows, index order within a row
@@ -223,7 +202,7 @@ static double step_ms(void *col[4], int is_float, size_t n, int threads)
     for (int k = 0; k < threads; k++)
         a[k] = (step_arg){is_float, n * (size_t)k / (size_t)threads, n * (size_t)(k + 1) / (size_t)threads,
                           {col[0], col[1], col[2], col[3]}};
-    return run_shares_ms(step_share, a, sizeof *a, threads);
+    return 1e3 * bench_run_shares(step_share, a, sizeof *a, threads, NULL);
 }
 
 static int fill_columns(void *col[4], int is_float, size_t n, const double *x, const double *y)

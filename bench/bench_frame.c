@@ -164,17 +164,19 @@ int main(int argc, char **argv)
                 failed = isk_effect_step(fx[t]) != ISK_OK;
         /* the same work as independent parts, one per core (bench_parts.h),
          * started after the copies' warm frames (the resident bytes are the
-         * copies') and brought to the same state */
+         * copies') and brought to the same state; a frame of theirs follows
+         * each frame of the copies */
         bench_parts parts;
         const int nparts = tc[nt - 1];
         int have_parts = 0;
         double rss1 = 0;
-        for (int f = -2; f < r->frames && !failed; f++) /* two frames to warm the caches */
-            for (int t = 0; t < copies && !failed; t++) {
-                if (f == 0 && t == 0 && nt > 1 && copies == nt) {
-                    rss1 = resident_bytes();
+        for (int f = -2; f < r->frames && !failed; f++) { /* two frames to warm the caches */
+            if (f == 0) {
+                rss1 = resident_bytes();
+                if (nt > 1 && copies == nt) {
                     have_parts = bench_parts_start(&parts, nparts, r->n, r->draw, &err) == ISK_OK;
-                    if (have_parts && (bench_parts_run(&parts, 1, r->settle) < 0 || bench_parts_run(&parts, 0, 2) < 0)) {
+                    if (have_parts &&
+                        (bench_parts_run(&parts, 1, r->settle) < 0 || bench_parts_run(&parts, 0, 2) < 0)) {
                         bench_parts_stop(&parts);
                         have_parts = 0;
                     }
@@ -182,6 +184,8 @@ int main(int argc, char **argv)
                         printf("%-8s %9zu  no independent parts: %s\n", r->what, r->n,
                                err.message[0] ? err.message : "a part's frame failed");
                 }
+            }
+            for (int t = 0; t < copies && !failed; t++) {
                 double t0 = bench_now();
                 isk_status s = isk_effect_step(fx[t]);
                 double t1 = bench_now();
@@ -194,12 +198,13 @@ int main(int argc, char **argv)
                     td[t][f] = 1e3 * (t2 - t1);
                     tf[t][f] = 1e3 * (t2 - t0);
                 }
-                if (t == copies - 1 && have_parts && !failed) { /* the parts' frame f, in turn with the copies' */
-                    const double sp = bench_parts_run(&parts, 0, 1);
-                    failed = sp < 0;
-                    tp[f] = 1e3 * sp; /* f >= 0: the parts start at frame 0 */
-                }
             }
+            if (have_parts && !failed) { /* f >= 0: the parts start at frame 0 */
+                const double sp = bench_parts_run(&parts, 0, 1);
+                failed = sp < 0;
+                tp[f] = 1e3 * sp;
+            }
+        }
         double frame1 = 0, frame_all = 0;
         for (int t = 0; t < copies && !failed; t++) {
             double u = bench_median(tu[t], r->frames);
@@ -220,10 +225,10 @@ int main(int argc, char **argv)
             bench_parts_stop(&parts);
         /* Smaller rows' columns come from memory the earlier rows gave
          * back to malloc, already resident: their growth means nothing. */
-        if (r->n >= 1000000)
+        if (r->n >= 1000000 && !failed)
             printf("%-8s %9zu  %.0f bytes a particle resident (the store, the pool's scratch; at rest, the "
                    "recorded blends)\n", "", r->n,
-                   ((rss1 > 0 ? rss1 : resident_bytes()) - rss0) / ((double)r->n * copies));
+                   (rss1 - rss0) / ((double)r->n * copies));
         print_control(tc, nt);
         for (int t = 0; t < copies; t++)
             isk_effect_destroy(fx[t]);
