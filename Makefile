@@ -377,7 +377,7 @@ FUZZ_DEPS := clang libclang-rt-14-dev
 FUZZ_BIN  := $(BUILD)/fuzz/fuzz_scene
 FUZZ_FLAGS := $(CSTD) -g -O1 -ffp-contract=off -fno-math-errno -Iinclude -Isrc -I$(BUILD)/gen \
               -fno-sanitize-recover=undefined
-FUZZ_CFLAGS := $(FUZZ_FLAGS) -fsanitize=fuzzer,address,undefined
+FUZZ_SAN  := address,undefined
 # The library compiled once for both targets, a file at a time on every
 # core (one clang command per target compiling every file took most of
 # CI's fuzz step: 266 s of which 32 s fuzzing), instrumented for the
@@ -395,12 +395,13 @@ fuzz: fuzz-deps
 $(BUILD)/fuzz/obj/%.o: %.c
 	@mkdir -p $(dir $@)
 	$(call say,FUZZCC,$<)
-	$(Q)$(FUZZ_CC) $(FUZZ_FLAGS) -fsanitize=fuzzer-no-link,address,undefined -MMD -MP -c $< -o $@
+	$(Q)$(FUZZ_CC) $(FUZZ_FLAGS) -fsanitize=fuzzer-no-link,$(FUZZ_SAN) -MMD -MP -c $< -o $@
 $(BUILD)/fuzz/obj/src/scene/scene_builtin.o: $(BUILD)/gen/scenes_gen.h
 
-$(FUZZ_BIN): tests/fuzz/fuzz_scene.c $(FUZZ_OBJ)
+# Each target: its tests/fuzz/fuzz_NAME.c with libFuzzer's main.
+$(BUILD)/fuzz/fuzz_%: tests/fuzz/fuzz_%.c $(FUZZ_OBJ)
 	$(call say,FUZZLD,$@)
-	$(Q)$(FUZZ_CC) $(FUZZ_CFLAGS) -o $@ tests/fuzz/fuzz_scene.c $(FUZZ_OBJ) $(FUZZ_LIBS)
+	$(Q)$(FUZZ_CC) $(FUZZ_FLAGS) -fsanitize=fuzzer,$(FUZZ_SAN) -o $@ $< $(FUZZ_OBJ) $(FUZZ_LIBS)
 
 # $(call run_fuzzer,BINARY,CORPUS,CRASHER_DIR,MAX_LEN,SECONDS): fuzz, then
 # print the summary lines and the number of executions.
@@ -417,9 +418,6 @@ fuzz-run: $(FUZZ_BIN)
 	@$(call run_fuzzer,$(FUZZ_BIN),$(BUILD)/fuzz/corpus,tests/fuzz/regressions,8192,$(FUZZ_TIME))
 
 FUZZ_PNG_BIN := $(BUILD)/fuzz/fuzz_png
-$(FUZZ_PNG_BIN): tests/fuzz/fuzz_png.c $(FUZZ_OBJ)
-	$(call say,FUZZLD,$@)
-	$(Q)$(FUZZ_CC) $(FUZZ_CFLAGS) -o $@ tests/fuzz/fuzz_png.c $(FUZZ_OBJ) $(FUZZ_LIBS)
 
 fuzz-png: fuzz-deps
 	@$(MAKE) --no-print-directory fuzz-png-run

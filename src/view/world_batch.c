@@ -415,37 +415,37 @@ void isk__draw_batch_rows(isk_canvas *c, const isk_view *v, size_t n, const doub
     isk__draw_batch_tile(c, v, n, x, y, col, mode, rule, r0, r1, 0, c ? c->width : 0);
 }
 
-/* isk__draw_batch_tile of list[0..m). */
-static void draw_list_tile(isk_canvas *c, const isk_view *v, const uint32_t *list, size_t m, const double *x,
-                           const double *y, isk_color col, isk_blend mode, unsigned rule, int r0, int r1, int c0,
-                           int c1)
+/* isk__draw_batch_tile of list[0..m), or of every point when list is NULL
+ * (each its own copy of the loops: a list's is read through it). */
+static void draw_points(isk_canvas *c, const isk_view *v, const uint32_t *list, size_t m, const double *x,
+                        const double *y, isk_color col, isk_blend mode, unsigned rule, int r0, int r1, int c0, int c1)
 {
-    if (list && drawable(c, v, m, x, y, &r0, &r1, &c0, &c1))
+    if (!list)
+        isk__draw_batch_tile(c, v, m, x, y, col, mode, rule, r0, r1, c0, c1);
+    else if (drawable(c, v, m, x, y, &r0, &r1, &c0, &c1))
         ISK__BLEND_DISPATCH(mode, run_rule, c, r0, r1, c0, c1, v, m, list, x, y, col, rule);
 }
 
 void isk__draw_batch_list_rows(isk_canvas *c, const isk_view *v, const uint32_t *list, size_t m, const double *x,
                                const double *y, isk_color col, isk_blend mode, unsigned rule, int r0, int r1)
 {
-    draw_list_tile(c, v, list, m, x, y, col, mode, rule, r0, r1, 0, c ? c->width : 0);
+    if (list)
+        draw_points(c, v, list, m, x, y, col, mode, rule, r0, r1, 0, c ? c->width : 0);
 }
 
 void isk__draw_batch_record(isk_canvas *c, const isk_view *v, size_t n, const uint32_t *list, const double *x,
                             const double *y, isk_color col, isk_blend mode, unsigned rule, int r0, int r1, int c0,
                             int c1, isk__dot_recording *rec)
 {
-    const int keep = (rule & ISK__BATCH_KEEP_ON_CANVAS) != 0;
     /* Only the exact-area dot is recorded: the browser's dot has no edge
      * blocks (it clips every one), and pixels have no weights. */
     if (!rec || (rule & ~(unsigned)ISK__BATCH_KEEP_ON_CANVAS) != ISK__BATCH_DOT) {
         if (rec)
             rec->failed = 1;
-        if (list)
-            draw_list_tile(c, v, list, n, x, y, col, mode, rule, r0, r1, c0, c1);
-        else
-            isk__draw_batch_tile(c, v, n, x, y, col, mode, rule, r0, r1, c0, c1);
+        draw_points(c, v, list, n, x, y, col, mode, rule, r0, r1, c0, c1);
         return;
     }
+    const int keep = (rule & ISK__BATCH_KEEP_ON_CANVAS) != 0;
     if (drawable(c, v, n, x, y, &r0, &r1, &c0, &c1))
         ISK__BLEND_DISPATCH(mode, record_dots, c, r0, r1, c0, c1, v, n, list, x, y, col, keep, rec);
 }
