@@ -10,7 +10,9 @@
  *              that diameter, tinted, beside it
  *   trails     random short trails: N = 4, 8, 16, 32 points along a gentle
  *              curve a few px long (3 px per 4 points), widths 1 and 3,
- *              fade 1, over and add
+ *              fade 1, over and add; and wide ones: 32 points 6 px apart
+ *              along a bending path, 64 and 512 px wide, over (the search
+ *              for each pixel's nearest segment is what they cost)
  *
  * Every variant draws the same precomputed items onto an 800x600 opaque
  * canvas (refilled, untimed, before each pass); passes of all variants are
@@ -30,13 +32,14 @@
 #include "iskra/sprite.h"
 #include "iskra/texture.h"
 
-enum { W = 800, H = 600, NSPR = 1 << 12, NTRAIL = 1 << 11, MAXN = 32, MAXV = 64 };
+enum { W = 800, H = 600, NSPR = 1 << 12, NTRAIL = 1 << 11, NWIDE = 16, MAXN = 32, MAXV = 64 };
 
 static const double PI = 3.14159265358979323846;
 static const isk_color COL = {255, 180, 60, 200};
 static const int SIZES[3] = {8, 16, 32};
 static const int TRAIL_N[4] = {4, 8, 16, 32};
 static const double TRAIL_W[2] = {1.0, 3.0};
+static const double WIDE_W[2] = {64.0, 512.0};
 
 typedef struct ctx {
     isk_canvas c;
@@ -44,6 +47,7 @@ typedef struct ctx {
     isk_sprite spr[3];
     double *cx, *cy, *ang;
     double *trail; /* NTRAIL trails of MAXN points, x y pairs */
+    double *wide;  /* NWIDE trails of MAXN points */
 } ctx;
 
 typedef struct variant {
@@ -78,6 +82,13 @@ static void run_trail(ctx *k, const variant *v)
                          TRAIL_W[v->width], COL, 1.0, (isk_blend)v->blend);
 }
 
+static void run_wide_trail(ctx *k, const variant *v)
+{
+    for (long i = 0; i < NWIDE; i++)
+        isk_stroke_trail(&k->c, k->wide + (size_t)i * 2 * MAXN, MAXN, WIDE_W[v->width], COL, 1.0,
+                         (isk_blend)v->blend);
+}
+
 static const char *mode_name(int b)
 {
     return b == ISK_BLEND_ADD ? "add" : "over";
@@ -98,7 +109,8 @@ int main(int argc, char **argv)
     k.cy = malloc(NSPR * sizeof *k.cy);
     k.ang = malloc(NSPR * sizeof *k.ang);
     k.trail = malloc((size_t)NTRAIL * 2 * MAXN * sizeof *k.trail);
-    if (!k.cx || !k.cy || !k.ang || !k.trail)
+    k.wide = malloc((size_t)NWIDE * 2 * MAXN * sizeof *k.wide);
+    if (!k.cx || !k.cy || !k.ang || !k.trail || !k.wide)
         return 1;
     unsigned long long seed = 14;
     for (long i = 0; i < NSPR; i++) {
@@ -117,6 +129,18 @@ int main(int argc, char **argv)
             p[2 * j + 1] = y;
             x += 0.75 * cos(a);
             y += 0.75 * sin(a);
+            a += turn;
+        }
+    }
+    for (long i = 0; i < NWIDE; i++) {
+        double x = 200 + bench_urand(&seed) * (W - 400), y = 150 + bench_urand(&seed) * (H - 300);
+        double a = bench_urand(&seed) * 2 * PI, turn = (bench_urand(&seed) - 0.5) * 0.3;
+        double *p = k.wide + (size_t)i * 2 * MAXN;
+        for (int j = 0; j < MAXN; j++) {
+            p[2 * j] = x;
+            p[2 * j + 1] = y;
+            x += 6.0 * cos(a);
+            y += 6.0 * sin(a);
             a += turn;
         }
     }
@@ -145,6 +169,9 @@ int main(int argc, char **argv)
             for (int b = ISK_BLEND_OVER; b <= ISK_BLEND_ADD; b++)
                 ADD(run_trail, NTRAIL, b, 0, 0, 0, n, w, -1, "trail N=%d width %g, %s", TRAIL_N[n], TRAIL_W[w],
                     mode_name(b));
+    for (int w = 0; w < 2; w++)
+        ADD(run_wide_trail, NWIDE, ISK_BLEND_OVER, 0, 0, 0, 0, w, -1, "trail N=%d width %g, 6 px apart, over", MAXN,
+            WIDE_W[w]);
 
     for (int rep = 0; rep < reps; rep++)
         for (int i = 0; i < nv; i++) {
@@ -174,6 +201,7 @@ int main(int argc, char **argv)
     free(k.cy);
     free(k.ang);
     free(k.trail);
+    free(k.wide);
     isk_canvas_free(&k.c);
     return 0;
 }

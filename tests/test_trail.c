@@ -222,6 +222,38 @@ Test(trail, equals_the_rule_across_tiles)
     }
 }
 
+/* Wide trails (trail.c skips, tile by tile, the segments that cannot be
+ * nearest to any of its pixels): long walks that turn and cross
+ * themselves, 20 to 600 px wide, over canvases several tiles across. */
+Test(trail, wide_trails_equal_the_rule)
+{
+    isk_rng r;
+    isk_rng_seed(&r, 23);
+    double xy[2 * MAXP];
+    for (int n = 0; n < 60; n++) {
+        int w = 40 + (int)isk_rng_below(&r, 60), h = 20 + (int)isk_rng_below(&r, 40);
+        canvas_pair p = canvas_pair_make(&r, w, h);
+        int m = 2 + (int)isk_rng_below(&r, MAXP - 1);
+        double x = isk_rng_range(&r, -30, w + 30), y = isk_rng_range(&r, -30, h + 30);
+        double a = isk_rng_range(&r, 0, 6.283), turn = isk_rng_range(&r, -0.9, 0.9), step = isk_rng_range(&r, 1, 9);
+        for (int k = 0; k < m; k++) {
+            xy[2 * k] = x;
+            xy[2 * k + 1] = y;
+            x += step * cos(a);
+            y += step * sin(a);
+            a += turn;
+        }
+        double width = isk_rng_range(&r, 20, 600), fade = rnd_fade(&r);
+        isk_color col = rnd_color(&r);
+        isk_blend mode = MODES[isk_rng_below(&r, 3)];
+        isk_stroke_trail(&p.c[0], xy, m, width, col, fade, mode);
+        ref_trail(&p.c[1], xy, m, width, col, fade, mode);
+        size_t at;
+        cr_assert(canvas_pair_equal(&p, &at), "case %d: byte %zu differs: %d points, width %.17g", n, at, m, width);
+        canvas_pair_free(&p);
+    }
+}
+
 Test(trail, bands_of_rows_equal_the_whole_call)
 {
     isk_rng r;
