@@ -89,6 +89,26 @@ static void run_wide_trail(ctx *k, const variant *v)
                          (isk_blend)v->blend);
 }
 
+/* count paths of MAXN points, each starting at random at least
+ * (mx, my) inside the canvas and turning by a random constant angle of at
+ * most turn / 2 a step. */
+static void make_paths(double *xy, long count, double mx, double my, double step, double turn,
+                       unsigned long long *seed)
+{
+    for (long i = 0; i < count; i++) {
+        double x = mx + bench_urand(seed) * (W - 2 * mx), y = my + bench_urand(seed) * (H - 2 * my);
+        double a = bench_urand(seed) * 2 * PI, da = (bench_urand(seed) - 0.5) * turn;
+        double *p = xy + (size_t)i * 2 * MAXN;
+        for (int j = 0; j < MAXN; j++) {
+            p[2 * j] = x;
+            p[2 * j + 1] = y;
+            x += step * cos(a);
+            y += step * sin(a);
+            a += da;
+        }
+    }
+}
+
 static const char *mode_name(int b)
 {
     return b == ISK_BLEND_ADD ? "add" : "over";
@@ -120,30 +140,8 @@ int main(int argc, char **argv)
     }
     /* a trail: MAXN points 0.75 px apart along a slowly turning path; the
      * shorter variants use its newest points */
-    for (long i = 0; i < NTRAIL; i++) {
-        double x = 20 + bench_urand(&seed) * (W - 40), y = 20 + bench_urand(&seed) * (H - 40);
-        double a = bench_urand(&seed) * 2 * PI, turn = (bench_urand(&seed) - 0.5) * 0.2;
-        double *p = k.trail + (size_t)i * 2 * MAXN;
-        for (int j = 0; j < MAXN; j++) {
-            p[2 * j] = x;
-            p[2 * j + 1] = y;
-            x += 0.75 * cos(a);
-            y += 0.75 * sin(a);
-            a += turn;
-        }
-    }
-    for (long i = 0; i < NWIDE; i++) {
-        double x = 200 + bench_urand(&seed) * (W - 400), y = 150 + bench_urand(&seed) * (H - 300);
-        double a = bench_urand(&seed) * 2 * PI, turn = (bench_urand(&seed) - 0.5) * 0.3;
-        double *p = k.wide + (size_t)i * 2 * MAXN;
-        for (int j = 0; j < MAXN; j++) {
-            p[2 * j] = x;
-            p[2 * j + 1] = y;
-            x += 6.0 * cos(a);
-            y += 6.0 * sin(a);
-            a += turn;
-        }
-    }
+    make_paths(k.trail, NTRAIL, 20, 20, 0.75, 0.2, &seed);
+    make_paths(k.wide, NWIDE, 200, 150, 6.0, 0.3, &seed);
 
     static variant vs[MAXV * 2];
     int nv = 0;

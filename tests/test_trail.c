@@ -171,6 +171,22 @@ static double rnd_fade(isk_rng *r)
     }
 }
 
+/* The trail drawn by the library on p's first canvas and by the rule on
+ * its second, with a random fade, colour and mode: the bytes must agree. */
+static void expect_the_rule(canvas_pair *p, isk_rng *r, const double *xy, int m, double width, int n, int k)
+{
+    double fade = rnd_fade(r);
+    isk_color col = rnd_color(r);
+    isk_blend mode = MODES[isk_rng_below(r, 3)];
+    isk_stroke_trail(&p->c[0], xy, m, width, col, fade, mode);
+    ref_trail(&p->c[1], xy, m, width, col, fade, mode);
+    size_t at;
+    cr_assert(canvas_pair_equal(p, &at),
+              "case %d.%d: byte %zu differs (library %d, rule %d): %d points, width %.17g, fade %.17g, mode %d, "
+              "canvas %dx%d",
+              n, k, at, p->buf[0][at], p->buf[1][at], m, width, fade, mode, p->c[0].width, p->c[0].height);
+}
+
 Test(trail, equals_the_rule)
 {
     isk_rng r;
@@ -181,16 +197,7 @@ Test(trail, equals_the_rule)
         canvas_pair p = canvas_pair_make(&r, w, h);
         for (int k = 0; k < 2; k++) {
             int m = rnd_trail(&r, xy, w, h);
-            double width = rnd_width(&r), fade = rnd_fade(&r);
-            isk_color col = rnd_color(&r);
-            isk_blend mode = MODES[isk_rng_below(&r, 3)];
-            isk_stroke_trail(&p.c[0], xy, m, width, col, fade, mode);
-            ref_trail(&p.c[1], xy, m, width, col, fade, mode);
-            size_t at;
-            cr_assert(canvas_pair_equal(&p, &at),
-                      "case %d.%d: byte %zu differs (library %d, rule %d): %d points, width %.17g, fade %.17g, mode %d, "
-                      "canvas %dx%d",
-                      n, k, at, p.buf[0][at], p.buf[1][at], m, width, fade, mode, w, h);
+            expect_the_rule(&p, &r, xy, m, rnd_width(&r), n, k);
         }
         canvas_pair_free(&p);
     }
@@ -211,13 +218,7 @@ Test(trail, equals_the_rule_across_tiles)
             xy[2 * k] = isk_rng_range(&r, -10, w + 10);
             xy[2 * k + 1] = isk_rng_range(&r, -10, h + 10);
         }
-        double width = rnd_width(&r), fade = rnd_fade(&r);
-        isk_color col = rnd_color(&r);
-        isk_blend mode = MODES[isk_rng_below(&r, 3)];
-        isk_stroke_trail(&p.c[0], xy, m, width, col, fade, mode);
-        ref_trail(&p.c[1], xy, m, width, col, fade, mode);
-        size_t at;
-        cr_assert(canvas_pair_equal(&p, &at), "case %d: byte %zu differs", n, at);
+        expect_the_rule(&p, &r, xy, m, rnd_width(&r), n, 0);
         canvas_pair_free(&p);
     }
 }
@@ -243,13 +244,7 @@ Test(trail, wide_trails_equal_the_rule)
             y += step * sin(a);
             a += turn;
         }
-        double width = isk_rng_range(&r, 20, 600), fade = rnd_fade(&r);
-        isk_color col = rnd_color(&r);
-        isk_blend mode = MODES[isk_rng_below(&r, 3)];
-        isk_stroke_trail(&p.c[0], xy, m, width, col, fade, mode);
-        ref_trail(&p.c[1], xy, m, width, col, fade, mode);
-        size_t at;
-        cr_assert(canvas_pair_equal(&p, &at), "case %d: byte %zu differs: %d points, width %.17g", n, at, m, width);
+        expect_the_rule(&p, &r, xy, m, isk_rng_range(&r, 20, 600), n, 0);
         canvas_pair_free(&p);
     }
 }

@@ -205,6 +205,13 @@ static void visit(const trail *tr, tile *tl, const seg *s, int k, double s0)
     }
 }
 
+/* Whether the segment can reach a pixel centre in [X0, X1] x [Y0, Y1]
+ * (the tile's, widened by the reach). */
+static inline int reaches(const seg *s, double X0, double X1, double Y0, double Y1)
+{
+    return s->ok && s->x0 <= X1 && s->x1 >= X0 && s->y0 <= Y1 && s->y1 >= Y0;
+}
+
 /* Squared distance from the segment's bounding box to the box of pixel
  * centres [cx0, cx1] x [cy0, cy1]: at most the distance from any of those
  * pixels to the segment. */
@@ -236,7 +243,7 @@ static double nearest_bound(const trail *tr, const tile *tl, double X0, double X
     for (int k = 0; k < tr->nseg; k++) {
         seg tmp;
         const seg *s = get_seg(tr, k, &tmp);
-        if (!(s->ok && s->x0 <= X1 && s->x1 >= X0 && s->y0 <= Y1 && s->y1 >= Y0))
+        if (!reaches(s, X0, X1, Y0, Y1))
             continue;
         double tau, dx, dy, most = seg_d2(s, cx0, cy0, &tau, &dx, &dy), d2;
         d2 = seg_d2(s, cx1, cy0, &tau, &dx, &dy);
@@ -364,7 +371,7 @@ void isk__stroke_trail_rows(isk_canvas *c, const double *xy, int n, double width
             for (int k = 0; k < tr.nseg; k++) {
                 seg tmp;
                 const seg *s = get_seg(&tr, k, &tmp);
-                if (s->ok && s->x0 <= X1 && s->x1 >= X0 && s->y0 <= Y1 && s->y1 >= Y0 &&
+                if (reaches(s, X0, X1, Y0, Y1) &&
                     !(box_d2(s, tl.x + 0.5, tl.x + tl.w - 0.5, tl.y + 0.5, tl.y + tl.h - 0.5) > far))
                     visit(&tr, &tl, s, k, s0);
                 s0 += s->len;
