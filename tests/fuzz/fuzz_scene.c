@@ -18,6 +18,17 @@
 #define MAX_PIXELS (256 * 256)
 #define MAX_SUBSTEPS 8
 #define FRAMES 3
+/* A trail costs, each frame, the pixels within its reach times its
+ * segments that reach them: a click's 1000 ribbons 4096 px wide covered
+ * the whole canvas each (13 s a frame under the sanitizers), and at
+ * dt = 1000 s 5000 trails of 1 px crossed it each (4 s).  So trails are
+ * kept narrow (but wide enough for trail.c's culling of wide ones) and
+ * an emitter with trails small. */
+#define MAX_TRAIL_WIDTH 32.0
+#define MAX_TRAILED 200u
+/* Likewise a disc or sprite may cover the whole canvas: 5000 discs
+ * 1500 px across on a 2114 x 31 canvas took over 10 s. */
+#define MAX_SIZED 500u
 
 static size_t at_most(size_t v, size_t m) { return v < m ? v : m; }
 static int at_most_i(int v, int m) { return v < m ? v : m; }
@@ -26,7 +37,9 @@ static int at_most_i(int v, int m) { return v < m ? v : m; }
  * a big canvas is shrunk (aspect kept, the same world window on it, so the
  * view's scale changes but not what is in view), pools, counts and limits
  * are capped (taking the minimum keeps count <= limit <= capacity), and so
- * are substeps.  The default 600x600 canvas is therefore fuzzed too (every
+ * are substeps and the trails' widths, and the particles of an emitter
+ * whose particles may each cover much of the canvas (trails, discs,
+ * sprites).  The default 600x600 canvas is therefore fuzzed too (every
  * scene used to be skipped above 256x256, and the burst_every hang with
  * them).  0 when even that cannot make it small (huge sprites). */
 static int make_small(isk_effect_def *d)
@@ -45,6 +58,16 @@ static int make_small(isk_effect_def *d)
         e->capacity = at_most(e->capacity, MAX_PARTICLES / 4);
         e->limit = at_most(e->limit, MAX_PARTICLES / 4);
         e->count = at_most(e->count, MAX_PARTICLES / 4);
+        if (e->trail_width > MAX_TRAIL_WIDTH)
+            e->trail_width = MAX_TRAIL_WIDTH;
+        const int sized = e->draw == ISK_DRAW_DISC || e->draw == ISK_DRAW_SPRITE;
+        if (e->trail > 0 || sized) {
+            const size_t most = e->trail > 0 ? MAX_TRAILED : MAX_SIZED;
+            e->capacity = at_most(e->capacity, most);
+            e->limit = at_most(e->limit, most);
+            e->count = at_most(e->count, most);
+            d->click.count = at_most(d->click.count, most); /* it may land in this emitter */
+        }
         /* sprites and discs are drawn at size * pixels-per-unit */
         if (e->size * (double)d->width > 1e5)
             return 0;
