@@ -10,7 +10,6 @@
 #include <criterion/criterion.h>
 
 #include <math.h>
-#include <stdint.h>
 
 #include "iskra/canvas.h"
 #include "iskra/view.h"
@@ -94,42 +93,6 @@ Test(band_cuts, a_falling_layer_is_cut_into_even_bands_of_rows)
 Test(band_cuts, a_layer_settled_on_its_floor_is_cut_into_even_bands_of_columns)
 {
     even_bands_after(240, 1);
-}
-
-/* Bands of columns meet in every row, so their inner cuts lie on the
- * canvas's 64-byte line boundaries (no line written by two threads), where
- * every row starts at the same offset in its line; elsewhere (a stride not
- * a multiple of 64 bytes) the cuts stay at the quantiles. */
-Test(band_cuts, cuts_between_columns_lie_on_cache_line_boundaries)
-{
-    isk_effect *fx = scene_text_open(LAYER, 1);
-    steps(fx, 240);
-    const fx_group *g = &fx->groups[0];
-    isk_canvas c;
-    cr_assert_eq(isk_canvas_init(&c, 640, 480), ISK_OK); /* a row is 40 lines */
-    int aligned = 0, cut[ISK_POOL_MAX_THREADS + 1];
-    for (int nb = 2; nb <= 7; nb++) {
-        cr_assert_eq(fx_place_cuts(fx, g, &c, nb, FX_BANDS_COLUMNS, NULL, cut), 1);
-        for (int k = 1; k < nb; k++) {
-            cr_expect_eq((uintptr_t)(c.pixels + 4 * cut[k]) % 64, 0, "%d bands: cut %d at column %d", nb, k,
-                         cut[k]);
-            aligned += (uintptr_t)(c.pixels + 4 * cut[k]) % 64 == 0;
-        }
-    }
-    cr_assert_eq(aligned, 1 + 2 + 3 + 4 + 5 + 6);
-    isk_canvas_free(&c);
-
-    /* 650 pixels a row: rows start at every offset, the cuts are the quantiles' */
-    cr_assert_eq(isk_canvas_init(&c, 650, 480), ISK_OK);
-    int off_line = 0;
-    for (int nb = 2; nb <= 7; nb++) {
-        cr_assert_eq(fx_place_cuts(fx, g, &c, nb, FX_BANDS_COLUMNS, NULL, cut), 1);
-        for (int k = 1; k < nb; k++)
-            off_line += (uintptr_t)(c.pixels + 4 * cut[k]) % 64 != 0;
-    }
-    cr_expect_gt(off_line, 0, "no cut left at its quantile on a canvas whose rows start anywhere in a line");
-    isk_canvas_free(&c);
-    isk_effect_destroy(fx);
 }
 
 /* Uneven shares (a band on a slower core gets fewer particles) move the

@@ -42,7 +42,6 @@
  * bands (replay_bands) until they would be stale: no cuts placed, no
  * split, the shares left as they are. */
 #include <math.h>
-#include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -299,26 +298,6 @@ static int quantile_cuts(const int *v, int m, int nb, int n, const double *share
     return fullest;
 }
 
-/* Bands of columns meet in every row, and a cut inside a cache line has
- * both threads write that line in every row: each clears its columns in
- * place, at rest at the same moments (replay_band), so the lines pass to and
- * fro between the cores.  Where every row starts at the same offset in its
- * line, each inner cut moves to the nearest line boundary that leaves both
- * its bands a line wide; the bytes do not depend on where the cuts lie. */
-#define FX_LINE_BYTES 64
-static void align_column_cuts(const isk_canvas *c, int nb, int *cut)
-{
-    const int line = FX_LINE_BYTES / 4; /* pixels */
-    if (c->stride % FX_LINE_BYTES)
-        return;
-    const int off = (int)((uintptr_t)c->pixels % FX_LINE_BYTES) / 4; /* the row's first pixel in its line */
-    for (int k = 1; k < nb; k++) {
-        const int a = (cut[k] + off + line / 2) / line * line - off;
-        if (a - cut[k - 1] >= line && cut[k + 1] - a >= line)
-            cut[k] = a;
-    }
-}
-
 /* Cuts at the quantiles of a sample of the particles' screen rows, so each
  * band holds about the same number of particles (a fire or an explosion
  * fills a small part of the screen).  When the group's draw takes bands of
@@ -368,8 +347,6 @@ int fx_place_cuts(const isk_effect *e, const fx_group *g, const isk_canvas *c, i
     }
     if (have && shares->columns == columns)
         quantile_cuts(columns ? xs : ys, m, nb, columns ? c->width : c->height, shares->share, cut);
-    if (columns)
-        align_column_cuts(c, nb, cut);
     return columns;
 }
 
