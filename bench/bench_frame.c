@@ -142,11 +142,12 @@ static void print_targets(const row_result *res, int quick)
             parts += res[i].parts2 > 0;
             parts_met += res[i].parts2 >= 1.8;
         }
+    const char *threads = "2 threads >= 1.8x one, 10^6 and more:";
     if (!rows) {
-        printf("  %-40s not measured (one core)\n", "2 threads >= 1.8x one, 10^6 and more:");
+        printf("  %-40s not measured (one core)\n", threads);
         return;
     }
-    printf("  %-40s met on %d of %d rows", "2 threads >= 1.8x one, 10^6 and more:", met, rows);
+    printf("  %-40s met on %d of %d rows", threads, met, rows);
     if (parts)
         printf("; 2 independent parts reached 1.8x on %d of %d", parts_met, parts);
     printf("\n");

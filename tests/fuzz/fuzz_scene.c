@@ -51,23 +51,17 @@ static int make_small(isk_effect_def *d)
         d->height = d->height * k >= 1 ? (int)(d->height * k) : 1;
     }
     d->substeps = at_most_i(d->substeps, MAX_SUBSTEPS);
-    d->click.count = at_most(d->click.count, MAX_PARTICLES / 4);
     for (int i = 0; i < d->nemitters; i++) {
         isk_emitter_def *e = &d->emitters[i];
         e->substeps = at_most_i(e->substeps, MAX_SUBSTEPS);
-        e->capacity = at_most(e->capacity, MAX_PARTICLES / 4);
-        e->limit = at_most(e->limit, MAX_PARTICLES / 4);
-        e->count = at_most(e->count, MAX_PARTICLES / 4);
+        const int sized = e->draw == ISK_DRAW_DISC || e->draw == ISK_DRAW_SPRITE;
+        const size_t most = e->trail > 0 ? MAX_TRAILED : sized ? MAX_SIZED : MAX_PARTICLES / 4;
+        e->capacity = at_most(e->capacity, most);
+        e->limit = at_most(e->limit, most);
+        e->count = at_most(e->count, most);
+        d->click.count = at_most(d->click.count, most); /* it may land in this emitter */
         if (e->trail_width > MAX_TRAIL_WIDTH)
             e->trail_width = MAX_TRAIL_WIDTH;
-        const int sized = e->draw == ISK_DRAW_DISC || e->draw == ISK_DRAW_SPRITE;
-        if (e->trail > 0 || sized) {
-            const size_t most = e->trail > 0 ? MAX_TRAILED : MAX_SIZED;
-            e->capacity = at_most(e->capacity, most);
-            e->limit = at_most(e->limit, most);
-            e->count = at_most(e->count, most);
-            d->click.count = at_most(d->click.count, most); /* it may land in this emitter */
-        }
         /* sprites and discs are drawn at size * pixels-per-unit */
         if (e->size * (double)d->width > 1e5)
             return 0;
