@@ -70,7 +70,11 @@ Test(update_share, a_group_that_became_cheap_is_measured_again)
     cr_expect_eq(c->per_particle, 1e-5, "on the threads: no new measure");
     cr_expect_eq(c->since, 1001);
     cr_expect_gt(c->pool_seconds, 0.0);
-    cr_assert_eq(isk_effect_step(fx), ISK_OK);
+    /* The update on the threads is wall time: one that the host
+     * descheduled (CI under ASan, the VM busy) can take over 0.4 ms and
+     * delay the new measure by an update, so a few are allowed. */
+    for (int f = 0; f < 8 && !(c->per_particle < 1e-5); f++)
+        cr_assert_eq(isk_effect_step(fx), ISK_OK);
     cr_expect_lt(c->per_particle, 1e-5, "measured again on the caller");
     cr_expect_eq(c->since, 0);
     cr_expect_eq(c->pool_seconds, 0.0);
