@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 # iskra — GNU make build.
 #
 #   make            libraries, the iskra tool, examples, tests, benchmarks

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* bench/bench_controls.h — what the machine gives a second thread, measured
  * beside a benchmark's own rows: on a shared VM that changes from minute to
  * minute, and a speedup can only be read against it.

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* How far 16·10⁶ coverage dots are from 15 frames a second on this CPU,
  * and what would close the gap: the explosion thesis's GPU headline, which
  * the speed goals ask to report on when it is not reached.

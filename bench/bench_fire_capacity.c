@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The fire thesis's interactive capacity: "several tens of thousands of
  * particles" (its conclusion, no figures given).  The fire digest makes it a
  * check: 30,000 particles drawn as 8-pixel additive gradient sprites on an

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The fire thesis's Table 5.1: update time of 10^3 .. 10^6 oscillating fire
  * particles with libm sin and with a sine lookup table.
  *

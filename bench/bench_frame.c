@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* A whole frame at 800x600, as a program showing an effect spends it:
  * update (isk_effect_step) and draw (isk_effect_render, which clears the
  * canvas to the background first), for 10^5 .. 1.6*10^7 coverage dots and

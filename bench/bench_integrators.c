@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* bench_integrators — particle-steps per second of every integrator on 10^6
  * particles under gravity + linear drag + a floor bounce, against a plain
  * array-of-structs loop of the thesis's kind (per particle: force, pomakni,

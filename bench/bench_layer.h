@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* bench/bench_layer.h — the effect bench_frame times and bench_dense
  * dissects: one layer emitter of n particles filling an 800x600 view,
  * gravity and drag moving it, reflecting walls keeping it on the screen,

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* A 10^7-step run with drag: do decaying velocities make steps slower?
  *
  * Linear drag alone multiplies every velocity by about (1 - b dt/m) per

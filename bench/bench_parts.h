@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* bench/bench_parts.h — a bench_frame row's work done as independent
  * parts: `parts` copies of bench_layer.h's effect with n / parts particles
  * each, every one on one thread of its own, their frames all at once.

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* bench_pipeline — what a scene's pipeline costs compared with the loop you
  * would write by hand.
  *

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The rasterizer's primitives against the "touch floor" (issue 12, goal 1).
  *
  * Touch floor: a loop that does the same world->screen transform as the

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* bench_stages — what each optional stage of a scene costs per particle,
  * measured in one run: a stream at a steady ~100,000 particles, stepped and
  * drawn with and without one key (or section) at a time.

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Textured sprites and trails (iskra/texture.h, isk_stroke_trail), against
  * the radial sprite of the same size (iskra/sprite.h) drawn at the same
  * random centres.

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* bench/bench_util.h — the clock and the median every benchmark uses.
  * Header-only (static functions) so each benchmark stays one program. */
 #ifndef ISKRA_BENCH_UTIL_H

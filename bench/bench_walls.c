@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* bench_walls — the walls against the memory-bandwidth limit, and the
  * bounce at the time of impact (iskra/impact.h) against the end-of-step
  * rule it replaced, measured in one run.

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The README's first program: a circle and some text, written to a PNG. */
 #include <iskra.h>
 #include <stdio.h>

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* A pixel-exact test of your own drawing with nothing but assert().
  *
  *     cc refimg_assert.c -o refimg_assert $(pkg-config --cflags --libs iskra)

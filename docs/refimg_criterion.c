@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Pixel-exact tests of your own drawing in a Criterion test suite.
  *
  *     cc refimg_criterion.c -o tests $(pkg-config --cflags --libs iskra criterion)

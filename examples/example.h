@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* examples/example.h — the command line every example shares.
  *
  * Each example is one small program; this header keeps the option parsing

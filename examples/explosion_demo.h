@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* examples/explosion_demo.h — the thesis's explosion demo page, shared by
  * figures 16-20 (each figure's file names its explosion and its numbers).
  *

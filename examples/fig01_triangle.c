@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Thesis figure 1: one stroked triangle on a 500x500 canvas.
  *
  * The thesis's first canvas example: a path moveTo(250,200), lineTo(175,300),

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Thesis figure 4: three triangles drawn straight in pixel coordinates.
  *
  * One local triangle A(0,0), B(150,0), C(75,150) is moved by (200,0),

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Thesis figure 8: the triangles of figure 4 drawn through a view.
  *
  * The world window -400..400 on both axes is mapped onto the 500x500 canvas

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Thesis figure 9: one particle that does not move.
  *
  * The first particle of the thesis: new Cestica(0.1, new MaterijalnaTocka(1,

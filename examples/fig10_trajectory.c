@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Thesis figure 10: the trajectory of a particle with no force acting.
  *
  * Mass 1, start (-4,-4), velocity (1,-2), time step dt = 0.25 s, 1000 steps

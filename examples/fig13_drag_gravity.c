@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Thesis figure 13: the trajectory under gravity and drag together.
  *
  * As figure 10 (mass 1, start (-4,-4), velocity (1,-2), dt = 0.25, 1000

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Thesis figure 14: the motion of figure 13 as an animation, shown as a strip.
  *
  * Same particle and forces as figure 13 (mass 1, start (-4,-4), velocity

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Thesis figure 16: the regular (ring) explosion.
  *
  * pravilnaEksplozija(0, -3, 10000, ...): 10,000 particles of mass 2, all at

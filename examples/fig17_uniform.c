@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Thesis figure 17: the uniform random explosion.
  *
  * 10,000 particles of mass 2 at (0, -3), each with velocity

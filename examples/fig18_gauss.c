@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Thesis figure 18: the Gaussian explosion.
  *
  * gaussEksplozija(0, -3, 10000, ...): 10,000 particles at (0, -3) with

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Thesis figure 19: the Coulomb explosion.
  *
  * coulombEksplozija(0, -3, 10000, ...): 10,000 particles at rest in a tiny

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Thesis figure 20: the multiple Coulomb explosion.
  *
  * visestrukiCoulombEksplozija(0, -3, 10000, ...): the Coulomb explosion of

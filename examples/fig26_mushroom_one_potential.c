@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Thesis figure 26: the "atomic mushroom", one fixed attracting potential.
  *
  * Scene nepokretni_privlacni_potencijal: view 0..10 (60 px per unit),

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Thesis figure 27: the "atomic mushroom" with a rising potential.
  *
  * Scene pokretni_privlacni_potencijal: view 0..10, gravity 9.81, drag 0.47,

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Thesis figure 28: the "atomic mushroom" shaped by three potentials.
  *
  * Scene vise_potencijala_1: view 0..40 (15 px per unit), gravity 9.81,

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Thesis figure 29: the "atomic mushroom" with four potentials, no gravity.
  *
  * Scene vise_potencijala_2: view 0..40 (15 px per unit), gravity 0, drag

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* A campfire: fire + sparks + smoke from stacked emitters (fire thesis
  * figure 5.5, "fire, sparks and smoke", with iskra's extensions).
  *

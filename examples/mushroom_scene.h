@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* examples/mushroom_scene.h — the thesis's simulator running an "atomic
  * mushroom" scene, shared by figures 26-29 (each figure's file gives its
  * numbers and its potentials).

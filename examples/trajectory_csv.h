@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* examples/trajectory_csv.h — the --csv output of the single-particle figures
  * (fig10–fig14).
  *

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The widget layer (iskra/ui.h) in an SDL demo: a panel of controls beside a
  * drawing they change.
  *

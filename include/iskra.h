@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* iskra.h — umbrella header: includes every public module of libiskra.
  *
  * iskra is a C11 2D particle toolkit with its own software rasterizer.

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* tests/canvas_pair.h — two identical random canvases for tests that draw
  * the same thing two ways and compare every byte (header-only; include it
  * after <criterion/criterion.h>).

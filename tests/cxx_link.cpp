@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 // Every public header, compiled and linked as C++ (g++ -std=c++11 -Wall
 // -Wextra -Wpedantic -Werror): the extern "C" guards, no C-only syntax in a
 // header, and the symbols link.  tests/run_all.sh runs the result.

@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: MIT
 # Every public header's usage example, and docs/hello_iskra.c, compiled and
 # run as a user would: the convention (docs/architecture.md, "Header
 # examples") is that a header's top comment has one line starting with

@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: MIT
 # The README's install recipe, as written: installs iskra into a scratch
 # prefix (outside the system library path), builds docs/hello_iskra.c with
 # `pkg-config --cflags --libs iskra` only, and runs it WITHOUT

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* What every emitter key owes (tests/key_case.h). */
 #include "key_case.h"
 

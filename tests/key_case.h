@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* tests/key_case.h — what every emitter key owes, checked in one line each:
  * with it the bytes differ, at its default (or without it) they are
  * today's, and a bad value names FILE:LINE and exits 2.

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* tests/raster_kernels_body.h — the row kernels of src/raster/span_simd.h
  * against the per-pixel reference (tests/raster_ref.h), over random rows.
  * Included by two test programs: test_raster_kernels.c (the build's own

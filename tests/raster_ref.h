@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* tests/raster_ref.h — the rasterizer's per-pixel reference implementation,
  * frozen as it was before the span kernels (one isk_blend_pixel_cov-style call
  * and a blend-mode switch per pixel).  The fast paths in src/raster must give

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The suite's reference-image checks: a thin wrapper over iskra/refimg.h
  * with the project's layout (see tests/refimg.h). */
 #include "refimg.h"

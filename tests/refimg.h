@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* tests/refimg.h — reference-image checks for the test suite (olive.c/cairo style).
  *
  *     Test(refimg, fill_circle) {

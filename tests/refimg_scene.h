@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* tests/refimg_scene.h — a reference-image test's canvas, made and checked
  * (header-only; include it after <criterion/criterion.h>).
  *

@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: MIT
 # Runs every test binary in $BUILD/tests from the repository root, and the
 # checks that are programs or scripts (threads_check, cxx_link, the header
 # examples, the install check), and prints one closing line

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* tests/sanitized.h — is this test built under AddressSanitizer?
  *
  *     #include "sanitized.h"

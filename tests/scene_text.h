@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* tests/scene_text.h — an effect from a scene's text, and its stage lists
  * as text (header-only; include it after <criterion/criterion.h>).
  *

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Every shipped scene rendered by the iskra tool with its n-th allocation
  * failing, for every n up to the number it makes: each run must either stop
  * with exit status 1, "out of memory" on stderr and no output file, or

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Where the threaded draw cuts the canvas (effect_bands.c's
  * fx_place_cuts): at the quantiles of a sample of the particles' screen
  * rows, or of their columns when the particles crowd into a few rows.  The

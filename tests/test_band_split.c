@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The threaded draw of an additive group (ISK_BLEND_ADD) by shares of its
  * particles instead of bands of the canvas (effect_bands.c's
  * split_particles): each thread draws its share onto a zeroed canvas of its

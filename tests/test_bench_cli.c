@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* `iskra bench accuracy`: usage errors exit 2 with a clear message, --help
  * exits 0, and a quick run of the integrator study writes well-formed CSV
  * files (one row per setting) and readable charts.  Timings are machine

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* `iskra bench accuracy --quick --only knobs`: the smoke run finishes with
  * status 0 and leaves, for every knob, a CSV whose header and rows are what
  * the docs read and a readable chart PNG, and no temporary files.  Under

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Every frame's work is bounded: births per frame are capped by the pool's
  * room, and the loops over time cannot spin (intervals down to 1e-300, the
  * largest rate at the longest step).  The timeouts only catch a hang: no

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Canvas creation, wrapping, views and validation. */
 #include <criterion/criterion.h>
 #include <string.h>

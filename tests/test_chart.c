@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Charts (iskra/chart.h): reference images of whole charts (suite refimg)
  * and unit tests of validation, ranges, ticks and labels (suite chart).
  * The image data is synthetic but shaped like real work-precision results:

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Chart extras (iskra/chart.h): notes at data points and a second x axis
  * along the top, drawn exactly as refimg/chart_notes_top_axis.png; off by
  * default, so every other chart is unchanged; and their checks. */

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* What a newcomer meets first: every output of every command creates its
  * missing parent directories and works from any working directory (not
  * only the repository), scene names get a did-you-mean, `iskra list`

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Public functions of the particle store, the explosions, spawn shapes, the
  * teaching API, effects, scenes, presets and the key table keep their
  * contract on hostile arguments: NULL, zero, negative and overflowing sizes

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Convergence orders and energy behaviour on the closed-form problems of
  * iskra/problems.h, run through the real pipeline (isk_system_step); the
  * closed forms themselves checked independently; validation. */

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Deflectors: the theses' checks, touching conventions, tunnelling, nearest
  * hit, probability, kill/stick, and a long closed-box stability run. */
 #include <criterion/criterion.h>

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Deflector segments that reach far away (endpoints at +-1e12, +-1e16,
  * +-1e150) keep their precision near the particles: short paths that cross
  * them near the origin never tunnel (before: most did at 1e12, and at 1e150

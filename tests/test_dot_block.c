@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The block stages of a batched dot draw (src/view/dot_block.h) on every
  * build this CPU runs: the scalar code, AVX2 and AVX-512 give the same
  * selected points and the same pixels and weights, bit for bit, for every

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The effect runtime: thesis bit-exactness, only-what-is-used, frame-rate
  * independent emission, validation. */
 #include <criterion/criterion.h>

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Every example program, run headless with --png, must reproduce its
  * reference image refimg/<example>.png exactly.  The list of examples comes
  * from the build ($BUILD/gen/examples.txt, one name per line).

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* No accepted input yields a non-finite state.  Every numeric key of the
  * key table (iskra/keys.h) is set, one at a time, to its extremes — its
  * min, its max, +-1e308 on a side its range leaves open — in a scene that

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The fire runtime (issue 4): stream emission, births, lifetime, pool,
  * forces (wind, buoyancy, slowing, gravity multiplier), flame oscillation
  * and the slowing order, with the numbers of the fire thesis's checks

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The campfire example: its strip of the first second matches
  * refimg/fire_campfire_strip.png exactly, the same seed gives the same
  * bytes, and the wind leans the fire and smoke.  (The default frame is

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The presets (iskra/presets.h): their numbers, their validation, and one
  * reference image each (suite "refimg"). */
 #include <criterion/criterion.h>

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Drawing fire: tinted sprites (one mask per size serves a whole colour
  * ramp), additive order independence, draw order, over-life ramps read
  * through the effect, per-emitter colour/size/blend. */

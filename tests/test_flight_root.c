@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The hit-time solver of the bounces at the time of impact (src/sim/flight.h's
  * isk_fl_root) against a long-double bisection of the same flight: on
  * random drag flights of the sizes a step has, and on the flights where

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The built-in bitmap font: metrics, glyph sanity, clipping, reference images. */
 #include <criterion/criterion.h>
 #include <limits.h>

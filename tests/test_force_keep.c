@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The sound mode's "force representable" mask (src/sim/kernels.h,
  * isk_k_force_keep): all ones exactly when islessequal(|gx|, limit) and
  * islessequal(|gy|, limit), the quiet tests it replaces, for ordinary

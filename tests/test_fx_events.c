@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Sub-emitters (on_death, on_hit, source = sub, count, inherit): exact
  * counts of children, drops counted, hits equal to bounces, children that do
  * not depend on which emitter steps first or on the threads, inherited

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Every key of the sub-emitters and trails (on_death, on_hit, inherit,
  * count of a sub-emitter, trail, trail_width, trail_fade): with it the bytes
  * differ, at its default they are today's, a bad value is refused with

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The looks of a particle (issue 14): rotation, spin, align, size_range,
  * color_pick, texture, texture_grid, texture_fps.  Per key: bytes differ
  * with it, equal at its default, bad values refused with FILE:LINE and

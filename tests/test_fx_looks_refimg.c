@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Reference images of the looks (issue 14), byte for byte: a still scene
  * of textured particles at known angles and flipbook frames (the example
  * scene scenes/looks_pinwheel.ini is compared with its image by

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Issue 14, how emitters and particles move: what every key owes
  * (tests/key_case.h): with it the bytes differ, at its default they are
  * today's, a bad value is refused with FILE:LINE and the CLI exits 2; and

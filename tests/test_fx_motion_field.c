@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Issue 14: the accelerations that depend on where a particle is
  * (src/sim/field.h): radial and tangential around the emitter's current
  * position, and turbulence, the curl of a seeded gradient noise -- its

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Issue 14: a stream's time.  `duration` emits floor(rate*duration)
  * particles per cycle and `loop` restarts the cycle, bursts included (the
  * counts are exact, at any step); `prewarm` runs whole frames before frame

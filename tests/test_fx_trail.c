@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Trails (trail, trail_width, trail_fade): the store's history column (a
  * ring of the last N positions that moves with its particle through
  * growth, removal and both culls), recorded once per frame; the drawing

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The README gallery's strips: each preset scene's frames side by side, as
  * `iskra render SCENE --frames N --every K --strip FILE.png` draws them,
  * byte for byte against refimg/NAME_strip.png (suite "refimg"). */

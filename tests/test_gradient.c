@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Baked gradients: exact at stops on the grid, within ceil(max slope / R)
  * levels elsewhere, clamping, validation, the index fix-up. */
 #include <criterion/criterion.h>

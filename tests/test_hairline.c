@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Anti-aliased hairlines (the browser's width-1 strokes): coverage rule,
  * symmetry, clipping, reference image. */
 #include <criterion/criterion.h>

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Every public function of core, raster, view, chart and io keeps its
  * contract on hostile arguments: NULL pointers, zero, negative and
  * overflowing sizes, NaN and infinities.  Functions that can fail return

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Library hygiene: the shared libraries export only the public API (isk_*),
  * the version is one fact (header, library, tool), and every public header
  * stands alone in C (and in C++: tests/cxx_link.cpp, run by run_all.sh). */
@@ -81,4 +82,38 @@ Test(hygiene, every_public_header_stands_alone, .timeout = 120)
     }
     pclose(ls);
     cr_assert_gt(n, 25);
+}
+
+/* The licence is MIT (LICENSE), and every source file says so on its first
+ * lines (after a script's #! line), so a file copied out of the tree still
+ * carries its terms. */
+Test(hygiene, every_source_file_names_its_licence)
+{
+    FILE *lic = fopen("LICENSE", "r");
+    cr_assert_not_null(lic, "LICENSE is missing at the root");
+    char first[64] = "";
+    cr_assert_not_null(fgets(first, sizeof first, lic));
+    fclose(lic);
+    cr_assert_str_eq(first, "MIT License\n");
+    FILE *p = popen("find src include tools tests bench examples docs .ci Makefile -type f "
+                    "\\( -name '*.c' -o -name '*.h' -o -name '*.cpp' -o -name '*.js' -o -name '*.sh' "
+                    "-o -name Makefile -o -name run -o -name refimg \\) -not -path '*/regressions/*' | sort",
+                    "r");
+    cr_assert_not_null(p);
+    char path[1024];
+    int files = 0;
+    while (fgets(path, sizeof path, p)) {
+        path[strcspn(path, "\n")] = 0;
+        FILE *f = fopen(path, "r");
+        cr_assert_not_null(f, "%s", path);
+        char line[256];
+        int found = 0;
+        for (int i = 0; i < 2 && fgets(line, sizeof line, f); i++)
+            found |= strstr(line, "SPDX-License-Identifier: MIT") != NULL;
+        fclose(f);
+        cr_assert(found, "%s: no 'SPDX-License-Identifier: MIT' on its first lines", path);
+        files++;
+    }
+    cr_assert_eq(pclose(p), 0);
+    cr_assert_gt(files, 300, "only %d source files found: run from the project's root", files);
 }

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Bounces at the time of impact (iskra/impact.h), for walls and deflector
  * segments, every integrator: a dropped ball keeps its apex, restitution
  * scales the bounce energy by exactly c^2, a ball in a box follows an

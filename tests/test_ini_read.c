@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* INI reading: line numbers, errors as FILE:LINE, did-you-mean. */
 #include <criterion/criterion.h>
 #include <stdio.h>

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The key-case checks themselves (tests/key_case.h), on keys that exist:
  * each check must be able to fail. */
 #include <criterion/criterion.h>

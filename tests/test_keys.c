@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The key table (iskra/keys.h): every row is consistent, its default is a
  * valid value that reads back to itself, the parser and isk_effect_create
  * refuse the same values with the same message, `iskra keys --csv` has the

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The deterministic claims of `iskra bench accuracy --only knobs`
  * (tools/iskra/study_knobs_*.c), checked against the library.  Timings are
  * never asserted; these are the error figures the study prints, which do

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Bounded memory and work within the documented limits: the memory an
  * effect could take with every pool full is checked at create against a
  * budget (isk_effect_def.max_memory, `--max-memory`), and the pool bounds

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Changing a running effect: isk_effect_set / isk_effect_get through the key
  * table, the stage lists following every change, refused values changing
  * nothing, the same sets at the same frames giving the same bytes, keys

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The fused motion pass (src/sim/motion_fused.h) against the general path
  * (isk_integrate_block, then the runner's non-finite checks): the same bits
  * of x, y, vx, vy and the same non-finite flag, for semi-implicit and

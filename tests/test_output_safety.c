@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Outputs never destroy what they replace (iskra/outfile.h): a regular file
  * is replaced atomically with its permissions kept, a symlink is followed
  * (the link stays, its target is replaced), a dangling link, a directory

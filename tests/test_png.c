@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* PNG write/read: exact round trips, atomic writes, reported errors. */
 #include <criterion/criterion.h>
 #include <stdio.h>

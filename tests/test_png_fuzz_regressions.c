@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Replays every input kept for the PNG fuzzer (tests/fuzz/png_regressions/,
  * crashers; tests/fuzz/png_corpus/, seeds) through the reader: each must be
  * read, or refused with a message and no canvas (the suite also runs under

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* PNG reading is bounded: a chunk that declares gigabytes costs nothing, a
  * tiny file declaring a huge image is refused from its header before any
  * pixel memory is taken (isk_png_read's cap, `iskra compare --max-pixels`),

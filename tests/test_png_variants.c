@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* isk_png_read against known pixel values: every colour type and bit depth
  * (grey 1/2/4/8/16, grey+alpha, RGB, RGBA, palette 1/2/4/8), tRNS colour
  * keys and palette alpha, Adam7 interlacing, and gAMA / sRGB / cHRM /

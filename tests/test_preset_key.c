@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* `preset = NAME[, SCALE]` in scene files: the same emitter as the C
  * function, keys after it override it, and every misuse named at its line. */
 #include <criterion/criterion.h>

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The GIF writer's per-frame palette (src/io/quantize.h): exact colours up
  * to 256, median cut above, deterministic, alpha composited over black. */
 #include <criterion/criterion.h>

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Value tests for the rasterizer primitives (iskra/draw.h) and the blend
  * rules they rely on: exact bytes, exact pixel sets and counts. */
 #include <criterion/criterion.h>

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Byte identity of the rasterizer's fast paths (span kernels, tables, SWAR
  * and vector code, batched draws) with the per-pixel reference
  * implementation frozen in tests/raster_ref.h.

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Fuzz test for the rasterizer: 100,000 random primitives of every kind and
  * blend mode, with extreme and invalid coordinates (huge, ±1e300, ±Inf, NaN,
  * DBL_MAX, INT_MIN/INT_MAX), drawn into a view in the middle of a larger

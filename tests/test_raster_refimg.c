@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Reference images for the rasterizer primitives: one small scene per
  * primitive, compared byte for byte with refimg/<name>.png (tests/refimg.h).
  * Regenerate on purpose with ISKRA_REFIMG_UPDATE=1 and look at the result. */

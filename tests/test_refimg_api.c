@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The public reference-image check (iskra/refimg.h): exact by default, the
  * actual and diff images on a mismatch with how many pixels differ and by
  * how much, update mode from opts or from ISKRA_REFIMG_UPDATE read at each

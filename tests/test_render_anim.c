@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Animated output of `iskra render`: GIF read back with giflib (frames,
  * delays, loop, palette), YUV4MPEG2 parsed and checked against BT.601,
  * raw RGBA frames through a pipe (the README's ffmpeg line, with the

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* An interrupted render leaves nothing half-written: SIGINT, SIGTERM,
  * SIGHUP and SIGPIPE remove the temporary files and exit with 128 + the
  * signal; a sequence render says which frames were written, and --resume

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Blocks at rest (sim/stage.h's isk_rest): the runner skips the motion
  * stages of a block that they leave bit for bit as it was, and the bytes
  * stay those of running every stage.

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The walls' resting screen (src/sim/rest_screen.h) on every build this
  * CPU runs: the portable one and AVX2 give the same verdicts, and every
  * particle a build says rests is one the walls themselves rest, bit for

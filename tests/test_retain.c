@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Retained dots: a group at rest drawn again from its recorded blends
  * (effect_retain.c, view/world_batch.h's isk__draw_batch_record and
  * isk__draw_batch_replay).

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The hybrid Tausworthe generator: determinism, range, distribution. */
 #include <criterion/criterion.h>
 #include <math.h>

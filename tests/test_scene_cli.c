@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The iskra command: list, describe, render, play; exit statuses 0/1/2,
  * --help everywhere, nothing written on a scene error or a bad option. */
 #include <criterion/criterion.h>

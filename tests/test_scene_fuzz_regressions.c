@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Replays every input the scene fuzzer ever found (tests/fuzz/regressions/)
  * and the broken scenes of tests/data/bad_scenes/: each must be rejected with
  * a message or parse, compile and run a few frames without crashing (the

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Scene files: value syntax, every section and key into the definition,
  * errors as exact FILE:LINE messages with did-you-mean, bounds. */
 #include <criterion/criterion.h>

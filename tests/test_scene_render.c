@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Scenes rendered through the runtime: every scenes/NAME.ini gives the same
  * bytes as its C example's reference image refimg/NAME.png, and a scene pays
  * only for what it uses (unreferenced, zero-strength and disabled forces

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* tests/test_sdl.c — value tests of the SDL2 presenter's input and frame loop,
  * headless under SDL_VIDEODRIVER=dummy.  Complements tests/test_window.c
  * (open/present/close, bad sizes, basic scripted input, run stopping) with

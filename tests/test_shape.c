@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Spawn shapes and velocity generators: inequalities, distributions, draw
  * counts, rotation, validation. */
 #include <criterion/criterion.h>

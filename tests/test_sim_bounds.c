@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Bounce stages: the thesis's zarobi bit for bit, and the sound reflection
  * that keeps every particle inside. */
 #include <criterion/criterion.h>

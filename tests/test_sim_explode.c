@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Emitters: counts, validation, the thesis's formulas and draw order, and
  * the multi-Coulomb batch plan and schedule. */
 #include <criterion/criterion.h>

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Gravity, drag and the thesis's Coulomb potential against hand-computed
  * values; the store stages against the single-particle function. */
 #include <criterion/criterion.h>

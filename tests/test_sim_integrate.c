@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Integrators with real numbers: projectile errors, convergence order,
  * exact drag against the closed form, stability, long runs. */
 #include <criterion/criterion.h>

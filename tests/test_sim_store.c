@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Particle store: growth, O(1) removal, stable cull, iteration order, checks. */
 #include <criterion/criterion.h>
 #include <math.h>

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The system: the thesis simulator's frame bit for bit, determinism,
  * potential ids, substeps, ageing, hard cases. */
 #include <criterion/criterion.h>

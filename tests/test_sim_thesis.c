@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The thesis's single-particle figures through the teaching API, checked
  * against the catalogue (§5.4–5.8), and the same runs through a one-particle
  * system (same kernels: identical bits). */

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* `iskra play` as the thesis's simulator, driven by scripted sessions under
  * SDL's dummy driver (--fixed-clock: one step per frame, so a script gives
  * the same pixels every time): the console's controls change the running

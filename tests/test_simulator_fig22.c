@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Thesis figure 22 (the regular explosion in the simulator) reproduced by
  * the simulator.
  *

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The simulator's Save: isk_scene_write / isk_scene_save write a definition
  * as a scene file that parses back to the very same definition (every
  * built-in scene, and effects changed while running), and refuse what a

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The thesis's simulator scenes, built in: simulator (figure 21) and
  * fig22..fig25_simulator_* hold the parameters of their thesis pages, start
  * with an empty layer that clicks fill, and the mushroom scenes (26-29) ask

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Sine lookup table: error bounds for every size and mode, exact table
  * points, wrap-around, huge and non-finite angles, the generated table. */
 #include <criterion/criterion.h>

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Sprites: the fire thesis's checks, masks against the analytic falloff,
  * byte-identity with isk_blend_pixel_cov, additive order independence,
  * clipping, the cache, and reference images. */

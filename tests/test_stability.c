@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The hard cases that must stay numerically stable, one test per case, each
  * asserting the documented behaviour (docs/accuracy.md, "Hard cases"):
  * a particle on a potential's centre, tiny distances with large exponents,

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* iskra render --state / --state-every: every live particle as CSV in
  * round-trip precision (the values read back are the library's bits), the
  * sequence beside the frames, the option checks; and the report of

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The fire's sway (src/sim/sway.h) against a frozen copy of the scalar
  * code it replaced (the lookups of iskra/sinlut.h with libm's floor, the
  * oscillate stage's loop): the same bits of x, vx, amplitude, phase and

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* tests/test_text.c — isk_draw_text checked pixel by pixel against an
  * independent model of the layout, plus metric edge cases.  Complements
  * tests/test_font.c (metrics basics, glyph sanity, the text_* reference

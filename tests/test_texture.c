@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Textures (iskra/texture.h): making them (grids, premultiplication, mip
  * levels, bad input), drawing them against a plain per-pixel transcription
  * of the documented rule (every path: the blit, the rotated walker forced,

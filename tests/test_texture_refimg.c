@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Reference images of textured sprites (iskra/texture.h), compared byte for
  * byte with refimg/<name>.png (tests/refimg.h): rotations, sizes (mip
  * levels), a flipbook, tints, the blend modes, and streaks made from a

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The --csv output of the single-particle figures (fig10–fig14) must equal,
  * byte for byte, what the thesis's JavaScript computes (IEEE doubles).
  *

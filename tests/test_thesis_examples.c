@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Facts about the thesis-figure examples, checked on their output:
  * the trajectories' bounces and resting point (from --csv, catalogue
  * §5.5–5.8), and the determinism of the random animated examples (same

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* How close the examples come to the thesis's own screenshots.
  *
  * The screenshots live in ../shared/reference/thesis-figures/ (not part of

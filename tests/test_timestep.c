@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The fixed-step accumulator: exact step counts, no spiral of death. */
 #include <criterion/criterion.h>
 #include <math.h>

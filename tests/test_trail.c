@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Trails (isk_stroke_trail, iskra/draw.h): the library against a brute-force
  * transcription of the rule (every pixel against every segment, no tiles,
  * no culling), bands of rows, the coverage area against exact polygon

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Reference images of trails (isk_stroke_trail), compared byte for byte with
  * refimg/<name>.png (tests/refimg.h): straight, curved and self-crossing
  * ribbons at widths 1 and 3, fade 0 and 1; the blend modes; a burst of short

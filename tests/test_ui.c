@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The widget layer (iskra/ui.h) driven by scripted input, without SDL:
  * what each widget returns, focus and editing, the input queue, layout,
  * and reference images of every widget in every state. */

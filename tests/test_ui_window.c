@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* What the widget layer and the simulator need from the SDL window
  * (iskra/sdl.h): text and editing-key events, Escape left to the program,
  * a canvas that changes size, events into the widget layer

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Which groups' updates are shared out over the threads (effect.c's
  * update_on_pool): a group whose update takes less than FX_POOL_MIN_SECONDS
  * on one thread steps on the caller alone, where waking the workers would

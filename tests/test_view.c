@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The two world-to-screen mappings and their inverses, with the theses'
  * own numbers. */
 #include <criterion/criterion.h>

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The walls' screen (src/sim/wall_screen.h): the portable build flags
  * exactly the groups with a finite particle outside the box and gives the
  * walls' own per-particle masks (no false alarm, not even a -0 on a +0

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The SDL2 presenter, driven headless (SDL_VIDEODRIVER=dummy): opening,
  * presenting, scripted input, the frame loop, errors. */
 #include <criterion/criterion.h>

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Running the built `iskra` command from a test (see tool_cli.h). */
 #include "tool_cli.h"
 

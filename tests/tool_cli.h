@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* tests/tool_cli.h — running the built `iskra` command from a test.
  *
  *     cli_fresh("out/test_x/case");                       // empty directory

@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: MIT
 # Installs the Debian packages iskra needs that are missing; does nothing
 # when all are present.  Usage: tools/deps.sh PKG...   (called by `make deps`)
 set -eu

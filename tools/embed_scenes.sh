@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: MIT
 # Embeds scene files into C: writes a header defining the built-in scene
 # table (names sorted, texts as byte arrays so no string-length limit
 # applies) and the table of the files they use (the textures of

@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: MIT
 # Regenerates the key tables of docs/scene-format.md from the key table
 # (iskra keys --markdown SECTION), between the lines
 #     <!-- keys SECTION -->   and   <!-- end keys -->

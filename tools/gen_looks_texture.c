@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Writes the textures of scenes/textures/ (tools/looks_texture.h draws
  * them) with the library's own PNG writer, so the repository holds no image
  * made elsewhere:

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* tools/looks_texture.h — the textures of the scenes in scenes/textures/,
  * drawn with the library (header-only, shared by tools/gen_looks_texture.c,
  * which writes the files, and tests/test_fx_looks.c, which checks that the

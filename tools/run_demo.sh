@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: MIT
 # `make run`: the main demo.  With a display it plays the campfire scene in
 # the simulator's window; with none (no DISPLAY or WAYLAND_DISPLAY, or one
 # that does not answer: `iskra play` then says so and exits 1) it renders

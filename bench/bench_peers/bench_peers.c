@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* bench_peers: iskra's raster primitives against the Debian packages of
  * cairo, pixman, AGG, SDL2 (surface blits) and SDL2_gfx, per primitive, in
  * one run (issue 12, goal 5).

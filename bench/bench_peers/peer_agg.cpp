@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 // The AGG side of bench_peers (see peer_agg.h): AGG 2.6 as Debian ships it,
 // used the way its examples do (rasterizer_scanline_aa + scanline_p8 +
 // render_scanlines_aa_solid for shapes, renderer_base for spans and images).

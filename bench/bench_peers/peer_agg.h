@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* bench/bench_peers/peer_agg.h — the AGG side of bench_peers behind a C
  * interface (AGG is C++; peer_agg.cpp is the only C++ in the project and
  * is built only for this benchmark).  Every call draws n items into an

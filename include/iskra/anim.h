@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* iskra/anim.h — animations written frame by frame: animated GIF (giflib),
  * YUV4MPEG2 (what ffmpeg, mpv and VLC read) and raw RGBA frames (for a
  * pipe into ffmpeg or anything else).

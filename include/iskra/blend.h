@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* iskra/blend.h — how a source colour combines with the pixel underneath.
  *
  * Every drawing primitive takes an isk_blend.  All arithmetic is integer and

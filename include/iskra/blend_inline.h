@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* iskra/blend_inline.h — the blend rules of iskra/blend.h for one pixel,
  * as inline code (included by iskra/draw.h; not called directly).
  *

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* iskra/bounds.h — walls that keep particles in the view: the thesis's
  * zarobi, and a physically sound reflection.
  *

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* iskra/canvas.h — the RGBA8 pixel buffer every drawing call writes into.
  *
  * Memory layout: bytes R,G,B,A per pixel, rows `stride` bytes apart, top row

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* iskra/chart.h — line charts drawn by iskra's own rasterizer.
  *
  * Made for work-precision diagrams (error against time, log–log) and other

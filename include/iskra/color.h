@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* iskra/color.h — the straight (non-premultiplied) RGBA8 colour every layer
  * shares: the rasterizer draws it, particles carry it, ramps bake it.
  *

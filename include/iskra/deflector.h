@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* iskra/deflector.h — line segments that particles bounce off, stick to or
  * die on, tested on the whole path of a step so nothing tunnels through.
  *

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* iskra/draw.h — the software rasterizer's primitives, in pixel coordinates.
  *
  * Pixel (i, j) is the unit square [i, i+1) x [j, j+1); its centre is

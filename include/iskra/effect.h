@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* iskra/effect.h — a whole particle effect: named forces, deflectors, walls
  * and emitters, compiled into one list of stages per emitter, stepped and
  * drawn frame by frame, and changeable while it runs.

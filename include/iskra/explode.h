@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* iskra/explode.h — the thesis's explosion generators (emitters) and its
  * stationary particle layer, adding particles to a store.
  *

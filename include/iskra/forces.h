@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* iskra/forces.h — gravity, linear drag and the thesis's Coulomb potentials.
  *
  * Forces are stages: each one is a tight loop that ADDS its force into the

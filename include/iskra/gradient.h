@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* iskra/gradient.h — colour and scalar ramps over a particle's life, baked
  * into a table so a lookup is one multiply and one read.
  *

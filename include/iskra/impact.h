@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* iskra/impact.h — bounces at the time of impact: what walls and
  * deflectors are told about the motion inside the step they correct.
  *

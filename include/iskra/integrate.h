@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* iskra/integrate.h — time integrators over the particle arrays.
  *
  * Eight methods, selectable per system (isk_system.integrator) and per scene

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* iskra/keys.h — every key of a scene file, as one table: the only place
  * where a key's type, field, range, default, enum names, liveness and
  * meaning are written down.

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* iskra/limits.h — the largest numbers iskra accepts, and why: no accepted
  * input may ever give a NaN or an infinity.
  *

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* iskra/outfile.h — writing a file without ever destroying what it replaces.
  *
  * Example:

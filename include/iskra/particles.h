@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* iskra/particles.h — the particle store: structure of arrays, doubles.
  *
  * One array per attribute so the simulation stages are tight loops the

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* iskra/png.h — write and read canvases as PNG files (libpng).
  *
  * Example: a canvas written, then read back:

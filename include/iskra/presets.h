@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* iskra/presets.h — ready-made stream emitters: fire, smoke, sparks,
  * fountain, snow, explosion, galaxy, fireworks, rain and magic.
  *

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* iskra/problems.h — reference problems with closed-form answers, for
  * measuring how accurate the integrators are (tests, `iskra bench accuracy`).
  *

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* iskra/refimg.h — pixel-exact tests of your own rendered buffers.
  *
  * Compare a canvas with a reference PNG, byte for byte by default; on a

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* iskra/rng.h — the seeded random number generator every random draw uses.
  *
  * The explosion thesis's hybrid Tausworthe generator (its WebGPU chapter,

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* iskra/scene.h — scene files: INI text that becomes an isk_effect_def.
  *
  * A scene file describes a whole effect (canvas, view, time step, forces,

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* iskra/sdl.h — show canvases in an SDL2 window (library libiskra-sdl).
  *
  * Kept out of libiskra so that the core needs no SDL.  The window uploads a

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* iskra/shape.h — where particles are born and how fast they start.
  *
  * Spawn shapes (the fire thesis §5.5's point / circle / segment and the

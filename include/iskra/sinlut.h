@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* iskra/sinlut.h — sine (and cosine) by table lookup, for hot loops.
  *
  * The fire thesis replaces libm sin() in its flame oscillation by a table of

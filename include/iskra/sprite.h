@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* iskra/sprite.h — round particle sprites, baked once per kind/size/colour.
  *
  * The fire thesis draws each particle as a GL point sprite of S x S pixels,

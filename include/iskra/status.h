@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* iskra/status.h — error codes shared by every module.
  *
  * Every iskra function that can fail returns an isk_status; ISK_OK is 0, so

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* iskra/system.h — one particle system: store + rng + forces + integrator +
  * substeps + bounds + time, stepped frame by frame.
  *

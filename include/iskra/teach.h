@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* iskra/teach.h — the thesis's classes, one particle at a time.
  *
  * For the single-particle examples (figures 9–14) and for teaching: reads

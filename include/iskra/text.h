@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* iskra/text.h — text from iskra's own built-in bitmap font.
  *
  * The font covers printable ASCII 32..126 in fixed-width cells; any other

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* iskra/texture.h — RGBA images drawn as particle sprites: scaled, rotated,
  * tinted, optionally one frame of a sprite sheet (a flipbook).
  *

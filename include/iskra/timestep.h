@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* iskra/timestep.h — a fixed simulation step driven by a variable frame clock.
  *
  * Interactive programs get frames at whatever rate the display allows, but

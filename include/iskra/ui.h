@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* iskra/ui.h — a small immediate-mode widget layer, drawn by iskra's own
  * rasterizer and bitmap font into any canvas (no other dependency).
  *

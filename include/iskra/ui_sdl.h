@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* iskra/ui_sdl.h — feeds the SDL window's events (iskra/sdl.h) to the
  * widget layer (iskra/ui.h).  Header-only, so neither library depends on
  * the other.  Only the left button drives widgets; keypad + and - count as

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* iskra/vec2.h — a 2D vector of doubles, the thesis's Vektor2D.
  *
  * Header-only value type used by the teaching API (iskra/teach.h), the

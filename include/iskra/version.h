@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* iskra/version.h — which iskra this is, at compile time and at run time.
  *
  * Example:

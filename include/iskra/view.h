@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* iskra/view.h — world coordinates to canvas pixels, and back.
  *
  * Two ways to set up a view, both from the theses:

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* src/chart/chart.c — isk_chart_draw: checks, layout, and the drawing order.
  *
  * Everything that can fail is decided before the first pixel is written,

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* src/chart/chart_axis.c — axis ranges, tick positions and tick labels.
  *
  * Linear axes step by m * 10^e with m in {1, 2, 5}: the first step (from a

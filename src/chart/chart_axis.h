@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* src/chart/chart_axis.h — the chart's coordinates: axes in "t" space,
  * the pixel layout and the ticks (internal; chart_axis.c).
  *

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* src/chart/chart_frame.c — everything around the data: grid, frame, ticks,
  * tick labels, title, axis labels (the y label rotated) and the legend.
  *

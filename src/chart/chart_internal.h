@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* src/chart/chart_internal.h — the steps of drawing a chart (internal).
  *
  * A chart is drawn in three steps: validate everything and compute the

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* src/chart/chart_series.c — series styles, lines and markers.
  *
  * Lines are clipped to the plot in axis-fraction space (Liang–Barsky on

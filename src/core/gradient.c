@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Colour and scalar gradients baked into lookup tables (iskra/gradient.h). */
 #include "iskra/gradient.h"
 

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Hybrid Tausworthe generator (three Tausworthe steps xor an LCG). */
 #include "iskra/rng.h"
 

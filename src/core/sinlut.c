@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Sine lookup table: set-up, the slow huge-angle reduction and the bounds.
  * The lookups themselves are static inline in iskra/sinlut.h; the table is
  * generated into sinlut_table.c by tools/gen_sinlut.c. */

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Status strings and the detailed error helper. */
 #include "iskra/status.h"
 

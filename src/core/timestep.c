@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Fixed-step accumulator with a cap on steps per frame. */
 #include "iskra/timestep.h"
 

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The library's version at run time (iskra/version.h). */
 #include "iskra/version.h"
 

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Animations: the table of formats and what every format shares
  * (iskra/anim.h). */
 #include <math.h>

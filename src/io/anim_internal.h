@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* src/io/anim_internal.h — what the animation formats share (anim.c holds
  * the table of formats, gif.c and y4m.c the writers). */
 #ifndef ISKRA_IO_ANIM_INTERNAL_H

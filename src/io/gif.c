@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Animated GIF through giflib (iskra/anim.h): GIF89a, looping forever, a
  * local palette per frame (src/io/quantize.h), delays in centiseconds. */
 #include <gif_lib.h>

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Output files that never destroy what they replace (iskra/outfile.h). */
 #define _XOPEN_SOURCE 700 /* realpath */
 #include "iskra/outfile.h"

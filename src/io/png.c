@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* PNG files (iskra/png.h).  Writing: libpng's simplified API into an
  * isk_outfile.  Reading: libpng's full API, so the limits, the skipped
  * chunks and the conversion to RGBA8 (no gamma, 16 bits scaled by 1/257)

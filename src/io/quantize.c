@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Per-frame palettes by exact colours or median cut (src/io/quantize.h). */
 #include "io/quantize.h"
 

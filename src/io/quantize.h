@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* src/io/quantize.h — one frame's 256-colour palette, for GIF output.
  *
  *     isk__quant q;

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Reference-image checks for anyone's tests (iskra/refimg.h). */
 #include "iskra/refimg.h"
 

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* src/io/sdl_window.c — the SDL2 window of libiskra-sdl (see iskra/sdl.h).
  *
  * A window shows a canvas through a streaming SDL_PIXELFORMAT_RGBA32 texture

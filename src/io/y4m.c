@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* YUV4MPEG2 and raw RGBA frames (iskra/anim.h). */
 #include <math.h>
 #include <stdlib.h>

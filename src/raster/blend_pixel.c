@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Pixel blending: replace, straight-alpha source-over, saturating add.
  * The formulas and rounding rule are documented in iskra/blend.h; the
  * arithmetic lives once, in raster/blend_px.h, shared with the primitives. */

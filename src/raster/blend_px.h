@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* src/raster/blend_px.h — the blend rules of iskra/blend.h as inline kernels,
  * one per mode, for the primitives' inner loops.
  *

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Canvas memory: owned, wrapped and view canvases. */
 #include "iskra/canvas.h"
 

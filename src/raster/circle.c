@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Filled circles: aliased (pixel centres strictly inside) and anti-aliased
  * (exact area of disc ∩ pixel square, computed analytically).
  *

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* src/raster/circle_rows.h — an anti-aliased disc (isk_fill_circle_aa,
  * iskra/draw.h) drawn on a band of canvas rows (internal; the renderer's
  * threads each take a band).

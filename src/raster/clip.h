@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* src/raster/clip.h — internal geometry helpers shared by the raster primitives:
  * safe double→int conversion, Liang–Barsky segment clipping, convex polygon
  * clipping (Sutherland–Hodgman) and area, and the coverage→byte rounding rule.

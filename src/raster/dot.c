@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The coverage dot: how the thesis's browser drew every particle (a 1x1
  * fillRect whose top-left corner is the particle), spread over up to 2x2
  * pixels by exact area.

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* src/raster/dot_kernel.h — the coverage dot's weights and its 2x2 blend as
  * inline kernels, shared by the single-dot calls (dot.c) and the batched
  * draws over a particle store (src/view/world_draw.c, isk_draw_dots).

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* src/raster/font.c — iskra's built-in bitmap font (our own design).
  *
  * Covers printable ASCII 32..126; isk_font_glyph() returns the 8 row bytes of

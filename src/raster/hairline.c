@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Anti-aliased hairlines: how a browser's canvas draws stroke() at width 1.
  *
  * Chrome's Skia treats an anti-aliased stroke no wider than one device pixel

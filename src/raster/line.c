@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Aliased 1-pixel lines (Bresenham) and triangle outlines.
  *
  * The line is defined in closed form so it can be clipped exactly: between the

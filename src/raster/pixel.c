@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Integer-coordinate primitives: a single pixel and a filled rectangle.
  * All bounds arithmetic is 64-bit so INT_MIN/INT_MAX arguments are safe.
  * The blend mode is chosen once per call (raster/blend_px.h); the pixel's

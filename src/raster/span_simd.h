@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* src/raster/span_simd.h — row ("span") kernels: one colour blended along a
  * row of pixels with per-pixel coverage bytes, several pixels per step.
  * Three builds of the same arithmetic, chosen at compile time, all portable

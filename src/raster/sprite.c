@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Baked round sprites, their cache, and drawing them.
  * Kinds, snapping rule and cache policy are documented in iskra/sprite.h. */
 #include "iskra/sprite.h"

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* src/raster/sprite_rows.h — a sprite drawn on a band of canvas rows
  * (internal; the renderer's threads each take a band).
  *

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Anti-aliased width-1 strokes that look like HTML canvas stroke(): a single
  * segment (isk_stroke_line) and a whole path drawn as one shape
  * (isk_stroke_polyline; a line is a path of two points, so both agree).

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* src/raster/text.c — measuring and drawing strings in the built-in font.
  *
  * Layout (see iskra/text.h): every byte except '\n' advances the pen by one

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Textures made from a canvas or a sprite kind: premultiplied frames with a
  * transparent border and mip levels (the layout is in iskra/texture.h).
  * Drawing is texture_draw.c; PNG files and the cache are texture_load.c. */

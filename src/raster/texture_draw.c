@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Drawing textured sprites: the rule of iskra/texture.h (mip level,
  * fixed-point inverse mapping, footprint, bilinear sample, tint, blend of a
  * premultiplied source), in two row walkers that compute the same integers:

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Textures from PNG files (isk_texture_load) and the cache that loads each
  * file once (iskra/texture.h).  The one part of the texture module that
  * reads files: it uses the bounded PNG reader of iskra/png.h (src/io). */

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* src/raster/texture_rows.h — a textured sprite drawn on a band of canvas
  * rows (internal; the renderer's threads each take a band).
  *

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* isk_stroke_trail: a fading ribbon through a particle's last positions
  * (the rule is in iskra/draw.h).
  *

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* src/raster/trail_rows.h — a trail (isk_stroke_trail, iskra/draw.h) drawn
  * on a band of canvas rows (internal; the renderer's threads each take a
  * band).

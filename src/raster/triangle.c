@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Aliased filled triangles: pixels whose centre is inside, top-left rule for
  * centres exactly on an edge.
  *

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The effect runtime: lifecycle and the frame loop (see effect_internal.h
  * for what lives where).
  *

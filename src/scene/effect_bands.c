@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* A group's draw on the effect's threads: the canvas cut into bands of
  * rows (or, for the batched dots when their particles crowd into a few
  * rows, of columns), one per thread, each blending only its own pixels (the

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Validation of effect definitions (see effect_check.h): the key table's
  * rows for every field, one function per section for what spans fields. */
 #include "effect_check.h"

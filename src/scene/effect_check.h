@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* src/scene/effect_check.h — validation of effect definitions (internal).
  *
  * One set of checks serves the scene parser and isk_effect_create: the

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Compilation: an emitter's definition becomes its group's lists (see
  * effect_internal.h), holding exactly the stages that emitter needs, in the
  * only order they ever run:

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Building and copying effect definitions (plain data, see iskra/effect.h). */
 #include <math.h>
 #include <stdint.h>

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Sub-emitters: the deaths and bounces of one emitter's particles become
  * events of another (source = sub), whose children are born where they
  * happened (issue 14).

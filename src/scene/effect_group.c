@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Births and deaths of a group's particles: the thesis's explosions (at
  * create, timed, scheduled or clicked), and the frame-level stages that
  * release and cull them.  Every source's new particles go through fx_adopt,

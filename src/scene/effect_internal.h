@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* src/scene/effect_internal.h — the compiled form of an isk_effect (internal).
  *
  * An effect is a copy of its definition, the live potentials, and one

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Changing a running effect (isk_effect_set / isk_effect_get, adding and
  * removing forces): every value goes through its row of the key table, so
  * a live change is parsed, checked and refused exactly as a scene file's

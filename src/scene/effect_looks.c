@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The looks of a particle (issue 14): its angle and spin, its own size and
  * base colour drawn at birth, and the texture it is drawn as.
  *

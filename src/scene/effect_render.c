@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Drawing an effect: static drawings, then each emitter in draw order, then
  * the potentials (as the thesis simulator draws them).  Over-life ramps are
  * baked once per emitter at create and read per particle. */

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* A group at rest drawn again from what its last draw blended.
  *
  * When every block of a group rests (sim/stage.h's isk_rest: the runner no

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Stream emitters: continuous emission and bursts (the fire thesis's
  * emitters, with the particle-engine thesis's back-dated births).
  *

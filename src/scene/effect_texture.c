@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The draw of a group whose particles are textures (issue 14): the
  * emitter's PNG, one frame of its sprite sheet, or a sprite kind baked into
  * a texture and drawn as a streak (effect_looks.c prepares g->texture).

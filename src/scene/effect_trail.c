@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Trails (issue 14): each particle of an emitter with trail = N keeps its
  * last N positions in the store's trail column (a ring, newest at the
  * store's trail_head; it moves with its particle on cull and removal), and

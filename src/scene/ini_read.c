@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* INI reading with line numbers on top of libinih (see ini_read.h). */
 #include "ini_read.h"
 

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* src/scene/ini_read.h — INI reading with line numbers (internal).
  *
  * libinih splits each line into key and value (trimming, inline comments).

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* A field's value checked against its row (see key_value.h): what
  * isk_effect_create runs for C definitions, with the parser's messages. */
 #include "key_value.h"

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Field -> text that parses back to the same bits (see key_value.h), and
  * the table's defaults set through the parser. */
 #include "key_value.h"

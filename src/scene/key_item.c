@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The items of a definition the key table addresses (see key_value.h):
  * sections, their items, names, lines and kinds; and the shared helpers of
  * the key_*.c files: field access, ranges and expectations in words. */

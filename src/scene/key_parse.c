@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Text -> field, by the row's type (see key_value.h). */
 #include "key_value.h"
 

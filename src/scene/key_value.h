@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* src/scene/key_value.h — a key's value as text and as a field (internal).
  *
  * Three operations per row of the key table (iskra/keys.h), driven by its

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The key table (iskra/keys.h): one row per key of a scene file.
  *
  * Every fact about a key is here and nowhere else: the parser, the

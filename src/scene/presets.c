@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Ready-made emitters (iskra/presets.h): cocos2d-x's preset numbers in
  * world units.  Every number is documented in the header and docs/fire.md. */
 #include "iskra/presets.h"

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Built-in scenes (the shipped scenes/ *.ini, embedded at build time by
  * tools/embed_scenes.sh into $(BUILD)/gen/scenes_gen.h, with the textures
  * they use) and isk_scene_load. */

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Scene files -> isk_effect_def (see iskra/scene.h, docs/scene-format.md).
  *
  * The key table (iskra/keys.h) knows every key: its field, type, range,

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Value syntax of scene files (see scene_values.h). */
 #include "scene_values.h"
 #include "scene/ini_read.h"

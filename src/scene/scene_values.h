@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* src/scene/scene_values.h — value syntax of scene files (internal).
  *
  * Pure string -> value functions, no messages: each returns 1 when the whole

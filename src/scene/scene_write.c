@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* A definition written as a scene file (isk_scene_write, isk_scene_save in
  * iskra/scene.h): every key of every item, walked from the key table and
  * formatted by its row (fx_key_format gives text that parses back to the

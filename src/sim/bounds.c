@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Bounce stages: the thesis's zarobi and a sound reflection. */
 #include "iskra/bounds.h"
 

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Segment deflectors: exact path-crossing tests, side tests that keep
  * their precision for segments of any length, and the bounce / kill /
  * stick responses, with the bounce at the time of impact when the motion

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Explosion generators of the thesis, and the multi-Coulomb scheduler. */
 #include "iskra/explode.h"
 

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* src/sim/field.h — accelerations that depend on where a particle is
  * (internal): the emitter-centred radial and tangential accelerations and
  * turbulence, the curl of a seeded gradient noise.

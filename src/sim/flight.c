@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The motion of one particle within one step (see flight.h). */
 #include "sim/flight.h"
 

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* src/sim/flight.h — the motion of one particle within one step, for
  * bounces at the time of impact (internal; iskra/impact.h documents the
  * model for users).

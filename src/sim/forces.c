@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Force stages: gravity, linear drag, Coulomb potentials (thesis semantics). */
 #include "iskra/forces.h"
 

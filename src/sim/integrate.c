@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Integrators: thesis semi-implicit Euler, explicit Euler, velocity Verlet,
  * RK4, exact linear-drag update, leapfrog, Yoshida's fourth order, Strang
  * splitting with exact drag. */

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* src/sim/kernels.h — per-particle update rules, internal.
  *
  * Every rule the thesis applies to one particle lives here once, as a static

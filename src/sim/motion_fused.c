@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Forces + integrator in one pass for the common case (see motion_fused.h). */
 #include "sim/motion_fused.h"
 

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* src/sim/motion_fused.h — forces + integrator in one pass over a block, for
  * the common cases (internal).
  *

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Gradient noise for turbulence (src/sim/field.h): Perlin's improved noise
  * in three dimensions, with the lattice gradients picked by a hash of the
  * lattice point and the key instead of a permutation table, so that a

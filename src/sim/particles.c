@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Particle store: SoA arrays, geometric growth, O(1) removal. */
 #include "iskra/particles.h"
 

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Worker threads for independent items (see pool.h): POSIX threads, one
  * mutex and two condition variables; every thread takes its own range of
  * the items first, in chunks (long ones while much is left) claimed by an

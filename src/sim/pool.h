@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* src/sim/pool.h — a fixed set of worker threads for the block runner and
  * the renderer (internal).
  *

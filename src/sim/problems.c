@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Reference problems with closed forms (see iskra/problems.h). */
 #include "iskra/problems.h"
 

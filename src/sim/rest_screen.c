@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The walls' resting screen, portable, AVX2 and AVX-512 (see rest_screen.h).
  *
  * One C loop, written so that gcc vectorizes it: the tests as isless..

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* src/sim/rest_screen.h — the walls' resting screen: which particles of a
  * group the bounces at the time of impact rest at once (internal).
  *

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Spawn shapes and velocity generators (iskra/shape.h documents the draws). */
 #include "iskra/shape.h"
 

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The block runner (see stage.h). */
 #include "sim/stage.h"
 

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* src/sim/stage.h — the block runner: a list of stages, each a kernel on
  * plain arrays with its own parameters, run over a particle store in fixed
  * blocks of ISK_SIM_BLOCK particles (internal).

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Contact stages: the walls and the deflector segments, with the state
  * before the move that their bounces at the time of impact need (see
  * stage.h and iskra/impact.h). */

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The field stage (src/sim/field.h, src/sim/stage.h): v += a(x, y, t)*h for
  * the accelerations that depend on where a particle is, before the move.
  *

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The fire thesis's stages: slowing (in both orders), the horizontal
  * oscillation, and the drift and the oscillation in one pass (see stage.h
  * and sway.h). */

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Motion stages: the constant-acceleration drift, forces + integrator, and
  * ageing (see stage.h). */
 #include <math.h>

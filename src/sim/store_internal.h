@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* src/sim/store_internal.h — unchecked store helpers for the emitters. */
 #ifndef ISKRA_SIM_STORE_INTERNAL_H
 #define ISKRA_SIM_STORE_INTERNAL_H

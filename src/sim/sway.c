@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The fire's sway over a block, portable and AVX2 (see sway.h). */
 #include "sim/sway.h"
 

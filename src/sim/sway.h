@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* src/sim/sway.h — the fire thesis's horizontal sway over a block of the
  * store (internal; the oscillate stage of stage_fire.c runs it).
  *

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The particle system: stage pipeline per frame (see iskra/system.h). */
 #include "iskra/system.h"
 

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Teaching API: the thesis's classes on top of the store's kernels. */
 #include "iskra/teach.h"
 

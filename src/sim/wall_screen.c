@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The walls' screen, portable, AVX2 and AVX-512 (see wall_screen.h). */
 #include "sim/wall_screen.h"
 

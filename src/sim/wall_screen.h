@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* src/sim/wall_screen.h — the walls' screen: which particles of a block
  * ended their step outside the walls, by groups (internal).
  *

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The widget layer's frame and input bookkeeping (see iskra/ui.h): the
  * input queue, which events one frame takes, names and rectangles of the
  * widgets, hover/press/focus. */

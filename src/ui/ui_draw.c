@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Drawing for the widget layer: rounded boxes, text placed in rectangles,
  * icons, and the drawing-only widgets (clear, panel, box, label, text).
  * Everything goes through the rasterizer (iskra/draw.h, iskra/text.h) and

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Text and number fields (see iskra/ui.h): one edit buffer in the isk_ui,
  * owned by the focused field; Return, Tab or a click elsewhere apply the
  * text, Escape cancels.  A click gives a field the focus from the next

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* src/ui/ui_internal.h — what the widget files of src/ui share (internal).
  *
  * A widget is identified by the hash of its name (ui_id), records its

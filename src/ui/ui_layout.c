@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Layout by cutting rectangles, and the metrics every widget shares (see
  * iskra/ui.h). */
 #include "iskra/text.h"

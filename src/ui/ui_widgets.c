@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The widgets that are not text fields: buttons, toggles, slider, radio
  * group, list, area (see iskra/ui.h).  Each records its rectangle under its
  * name, asks ui_interact what the pointer does to it, draws itself in the

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* src/view/dot_block.h — the stages of a batched dot draw over a block of
  * points (world_batch.c: a store drawn onto a band of rows), in a header of
  * their own so that tests/test_dot_block.c can check every build of them,

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* World <-> screen transforms: the explosion thesis's window mapping and the
  * fire thesis's camera.  Formulas are evaluated in exactly the order the
  * theses write them, so results match their code bit for bit. */

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Batched drawing of a particle store through a view (isk_draw_dots,
  * isk_draw_dots_browser, isk_draw_pixels in iskra/view.h).
  *

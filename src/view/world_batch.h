@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* src/view/world_batch.h — the batched store drawing of iskra/view.h,
  * restricted to a band of canvas rows (internal).
  *

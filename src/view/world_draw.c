@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Drawing in world units: the thesis's piksel, puniKrug and tekst, plus a
  * world-space polyline.  One call does the transform, so examples never
  * repeat the screen arithmetic. */

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* tests/alloc_fail.c — allocation failure injection for a test build of the
  * iskra tool (linked with -Wl,--wrap=malloc,--wrap=calloc,--wrap=realloc,
  * --wrap=aligned_alloc: every allocation iskra's own code makes goes

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Threads never change a byte: every shipped scene, and scenes large enough
  * that the blocks really are shared out, give the same canvas and the same
  * particles, bit for bit, on 1, 2, 3 and 7 threads; lists whose particles'

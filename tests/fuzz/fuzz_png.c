@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* libFuzzer target: bytes -> isk_png_read_memory (the bounded PNG reader),
  * and what it accepts written back and read again, which must give the
  * same pixels.  Built and run by `make fuzz FUZZ_TARGET=png` (clang with

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* libFuzzer target: scene text -> isk_scene_load_string -> isk_effect_create
  * -> a few steps and renders.  Built and run by `make fuzz` (clang with
  * -fsanitize=fuzzer,address,undefined); crashers land in

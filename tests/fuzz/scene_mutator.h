@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* tests/fuzz/scene_mutator.h — a structure-aware mutator for scene files,
  * driven by the key table (iskra/keys.h), for tests/fuzz/fuzz_scene.c.
  *

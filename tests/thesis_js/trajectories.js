@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 // tests/thesis_js/trajectories.js — the thesis's JavaScript for figures 10–14,
 // transcribed faithfully, printing the CSV that the iskra examples print with
 // --csv.  Run with node (IEEE doubles, like the browser the thesis used):

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Temporaries removed on signals (see cleanup.h). */
 #include "cleanup.h"
 

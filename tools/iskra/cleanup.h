@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Nothing half-written survives a signal.  The commands that write files
  * open them through here: each temporary (iskra/outfile.h) is registered
  * while it exists, and SIGINT, SIGTERM, SIGHUP or SIGPIPE removes every

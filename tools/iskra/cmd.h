@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Sub-commands of the `iskra` tool.  Each takes (argc, argv) with argv[0] =
  * the command name and returns the process exit status:
  * 0 success, 1 runtime failure, 2 usage error. */

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* iskra bench accuracy [--out DIR] [--quick] [--only STUDY]
  * What accuracy costs in time: every study measures error against time on
  * problems with known answers and writes a CSV and a chart per problem. */

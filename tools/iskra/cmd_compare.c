@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* iskra compare A.png B.png [--diff OUT.png] [--max-pixels N] [--json]
  * Pixel-exact comparison for people testing rendered buffers: the number of
  * differing pixels and by how much (the figures of iskra/refimg.h), as a

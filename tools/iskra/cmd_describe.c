@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* iskra describe SCENE — the compiled pipeline: per emitter, its stages in
  * the order they run, one per line. */
 #include <stdio.h>

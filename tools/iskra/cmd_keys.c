@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* iskra keys [SECTION] [--csv | --markdown] — every key of a scene file,
  * printed from the key table (iskra/keys.h), the one place keys are
  * described.  docs/scene-format.md's key tables are this command's

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* iskra list — the built-in scenes, one per line with the first sentence
  * of the scene's leading comment (its own description, so there is no
  * second copy to keep in step); --names prints the bare names. */

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* iskra play SCENE — the scene in an SDL2 window: the thesis's simulator.
  *
  * The canvas sits at the window's top-left with the thesis's console

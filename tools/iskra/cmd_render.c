@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* iskra render SCENE [--frames N] --out FILE.png
  * iskra render SCENE [--frames N] [--every K] [--fps F] --out FILE.gif|FILE.y4m
  * iskra render SCENE [--frames N] [--every K] --raw --out FILE|-

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The `iskra` command line: dispatches to one sub-command per file. */
 #include <stdio.h>
 #include <string.h>

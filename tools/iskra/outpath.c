@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Output directories and input/output clashes (see outpath.h). */
 #include "outpath.h"
 

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Output paths of the iskra commands: every command creates the missing
  * parent directories of what it writes (nothing assumes the working
  * directory is the repository), and refuses an output that is one of its

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The simulator behind `iskra play` (internal to the tool): one player
  * holds the running effect, the window's canvas and the widget layer; the
  * play_*.c files each do one part of a frame.

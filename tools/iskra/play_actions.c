@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The simulator's actions: one table gives each its widget name, label,
  * shortcut and meaning, so the buttons, the keys and the list of shortcuts
  * in the panel cannot disagree. */

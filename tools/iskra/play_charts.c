@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The simulator's live charts (iskra/chart.h): kinetic, potential and total
  * energy over time, and the number of particles; and the integrator table,
  * which puts each integrator's measured cost (ns per particle-step, the

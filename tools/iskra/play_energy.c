@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The energy of the running state, for the simulator's chart and its
  * integrators' drift: kinetic (1/2 m v^2), gravitational (m g y per gravity
  * force an emitter uses, times its gravity multiplier; a wind's -m a.r) and

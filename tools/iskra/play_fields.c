@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The console's fields: what each shows is isk_effect_get of its key, and
  * what is typed goes to isk_effect_set, so ranges and messages are the key
  * table's (a refused value keeps the field open with the table's message

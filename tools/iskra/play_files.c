@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The simulator's files: reload (the button, F5, and by itself when the
  * scene file changes, so a scene can be edited in any editor and watched),
  * save (the parameters as they are now, as a scene file that reproduces

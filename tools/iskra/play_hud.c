@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Over the canvas: the thesis's FPS text (white, at pixel (15, 30), the
  * frames shown divided by the seconds since the start, six decimals) and,
  * with H, the HUD: the effective speed and whether real time is kept, the

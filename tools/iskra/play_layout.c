@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Where the simulator's parts sit in the window: the canvas at the
  * top-left, the console beside it, the charts and integrators beside that,
  * the click modes, potentials and layer below (sizes in play.h). */

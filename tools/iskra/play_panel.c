@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The thesis's console, control for control (its figures 21-25), beside
  * and below the canvas, plus what iskra adds:
  *

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The scene the simulator runs: starting it (from the definition's values:
  * speed, click mode, the first potential selected, start paused), after a
  * reset, and its frames (stepping, drawing, the cost per particle-step for

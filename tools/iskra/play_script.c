@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* --script: a session played into the window as if a user did it, for
  * tests and unattended demos.  Tokens, separated by spaces, run in order;
  * everything up to a wait:N happens at the end of one frame (the events

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Progress bar (see progress.h). */
 #include "progress.h"
 

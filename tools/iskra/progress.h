@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* A progress bar on stderr for long renders: drawn only when stderr is a
  * terminal and the work has run for more than half a second, so scripted
  * and quick runs stay silent. */

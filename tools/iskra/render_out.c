@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The outputs of `iskra render` (see render_out.h). */
 #include "render_out.h"
 

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The outputs of `iskra render`, written as the frames come:
  *
  *   png        --out FILE: the last frame (frame N) as a PNG

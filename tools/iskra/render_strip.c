@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The strip of `iskra render --strip` (render_strip.h). */
 #include "render_strip.h"
 

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* `iskra render --strip FILE.png`: frames K, 2K, ... <= N side by side at
  * half size, each labelled with its simulated time, in one PNG (the gallery strips of
  * the README).  Frame 0, the empty start, is left out.

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Shared scene options for the iskra commands (see scene_args.h). */
 #include "scene_args.h"
 #include "scene/scene_values.h"

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Options shared by the scene commands (describe, render, play): the scene
  * argument, the overrides --seed, --size WxH, --dt, --substeps, and loading
  * + compiling the scene with messages on stderr. */

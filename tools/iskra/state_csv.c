@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* iskra render's particle state as CSV, and the removal report (see
  * state_csv.h). */
 #include "state_csv.h"

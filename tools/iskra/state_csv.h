@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* iskra render's particle state: --state FILE.csv writes every live
  * particle at the last frame, --state-every K (with --out-dir) writes
  * DIR/state_NNNNNN.csv beside every K-th frame, and the report of

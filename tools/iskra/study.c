@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Shared pieces of `iskra bench accuracy` (see study.h). */
 #include "study.h"
 

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* tools/iskra/study.h — shared pieces of `iskra bench accuracy`: options,
  * the clock, a growing text buffer for CSV, and output files written to a
  * temporary name and renamed (a failed or interrupted run never leaves a

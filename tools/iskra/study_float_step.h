@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* tools/iskra/study_float_step.h — the float study's fused semi-implicit
  * Euler step (gravity + linear drag), written once for double and float so
  * the two cannot drift apart; tests/test_knobs.c checks that the double one

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* `iskra bench accuracy --only integrators`: what accuracy costs in time.
  *
  * Every integrator x time step x substeps {1, 2, 4} on the problems of

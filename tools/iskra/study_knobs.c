@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* `iskra bench accuracy --only knobs`: what the library's accuracy knobs
  * cost and buy, each measured against a known answer:
  *

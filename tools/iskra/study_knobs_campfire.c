@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Knob study "campfire": what the sine table's lookup changes on a real
  * picture.  The campfire scene (scenes/fire_campfire.ini: four emitters
  * that sway through the oscillation stage) is rendered at its frame 180

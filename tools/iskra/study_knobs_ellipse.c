@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Knob study "ellipse": the spawn ellipse's two samplers (iskra/shape.h),
  * ISK_ELLIPSE_UNIFORM (the unit disc sample scaled: area-uniform) and
  * ISK_ELLIPSE_THESIS (the particle-engine thesis's x = a(2u1 - 1),

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Knob studies "emission_rate" and "emission_birth": the stream emitter's
  * two fidelity choices (iskra/effect.h), run through the real effect
  * runtime (isk_effect_create / isk_effect_step), at 24 .. 240 steps per

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Knob study "float": what a float particle state would buy.  AN
  * EXPERIMENT, NOT A LIBRARY PATH: iskra keeps doubles (the thesis's
  * JavaScript is doubles and its trajectories are reproduced bit for bit),

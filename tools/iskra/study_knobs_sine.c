@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Knob study "sine": the sine table (iskra/sinlut.h) at every size from 64
  * to 65536 entries, with each lookup (floor, round, linear interpolation),
  * against libm sin: the largest |error| over many angles, and nanoseconds

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* `iskra bench accuracy --only longrun`: energy over 10^5 periods.
  *
  * One particle on the Kepler ellipse of iskra/problems.h (the P = 3 law,

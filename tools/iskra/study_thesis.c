@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* `iskra bench accuracy --only thesis`: error against step on the
  * thesis's own scene, figure 29 (the mushroom with four potentials: a
  * layer of 15,000 particles and a click of 1,000, drag, three P = 9
