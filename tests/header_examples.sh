@@ -41,7 +41,9 @@ extract() {
     awk -v hdr="$1" -v out="$2" '
     function fail(msg) { print hdr ": " msg > "/dev/stderr"; bad = 1; exit 1 }
     function emit(s) { print s > out; nout++ }
-    NR == 1 && !/^\/\*/ { fail("does not start with its top comment") }
+    # the licence line, then the top comment
+    NR == 1 && /^\/\* SPDX-License-Identifier: [^*]*\*\/$/ { spdx = 1; next }
+    NR == 1 + spdx && !/^\/\*/ { fail("does not start with its top comment") }
     done { next }
     /\*\// { done = 1; next }
     /^ \* Example.*:$/ {

@@ -293,7 +293,8 @@ typedef struct isk_emitter_def {
     double duration;           /* STREAM: emits for this many seconds from start, then stops (0: forever) */
     int loop;                  /* STREAM with a duration: starts again every duration, bursts included */
     double prewarm;            /* STREAM: seconds simulated before frame 0 (whole frames of dt;
-                                  frame 0 shows the emitter as it is after them) */
+                                  frame 0 shows the emitter, and the sub-emitters it feeds, as
+                                  they are after them) */
 
     /* looks (issue 14): rotation, spin, size and colour variation, textures
      * and flipbooks (docs/scene-format.md, "The looks of a particle").  At
@@ -577,6 +578,10 @@ void isk_effect_describe(const isk_effect *e, FILE *out);
 
 /* Read-only views for overlays and tests. */
 size_t isk_effect_particle_count(const isk_effect *e);
+/* The simulated time: the sum of every frame's dt / speed_divisor since
+ * create or reset, each as it was at that frame (a live change of either
+ * never rescales the time already elapsed, so the clock only moves
+ * forward). */
 double isk_effect_time(const isk_effect *e);
 long isk_effect_frame(const isk_effect *e);
 const isk_view *isk_effect_view(const isk_effect *e);

@@ -93,23 +93,60 @@ static isk_status populate(isk_effect *e, fx_group *g)
     return s;
 }
 
-static isk_status step_group(isk_effect *e, fx_group *g);
+static isk_status advance(isk_effect *e);
 
-/* prewarm (issue 14): the group alone runs its whole frames before frame
- * 0, exactly as it would run frames 0..n-1 (its clock is the frame count
- * times the frame's time, as the effect's); from then on its clock is n
- * frames ahead of the effect's, which still starts at 0.  Potentials stand
- * still meanwhile (they move with the effect's frames). */
-static isk_status prewarm(isk_effect *e, fx_group *g)
+/* Every clock at frame 0 of a frame length of `step`. */
+static void start_clocks(isk_effect *e, double step)
 {
-    const double n = fx_prewarm_frames(&e->def, g->def); /* bounded by the check (iskra/limits.h) */
-    isk_status s = ISK_OK;
-    for (long f = 0; f < (long)n && s == ISK_OK; f++) {
-        g->frame_offset = f;
-        s = step_group(e, g);
+    e->clock = (fx_clock){0.0, 0, step};
+    for (int gi = 0; gi < e->ngroups; gi++)
+        e->groups[gi].clock = e->clock;
+    e->frame = 0;
+    e->time = 0.0;
+}
+
+/* The frame's simulated time changed (a live dt or speed_divisor): every
+ * clock goes on from where it is now at the new rate. */
+static void rebase_clocks(isk_effect *e, double step)
+{
+    e->clock = (fx_clock){fx_clock_at(&e->clock, e->frame), e->frame, step};
+    for (int gi = 0; gi < e->ngroups; gi++) {
+        fx_group *g = &e->groups[gi];
+        const long f = e->frame + g->frame_offset;
+        g->clock = (fx_clock){fx_clock_at(&g->clock, f), f, step};
     }
-    g->frame_offset = (long)n;
-    return s != ISK_OK ? s : fx_compile(e, g);
+}
+
+double fx_clock_at(const fx_clock *c, long frame) { return c->t0 + (double)(frame - c->f0) * c->step; }
+
+/* prewarm: the whole effect, every group built, runs the frames before
+ * frame 0 that its prewarmed emitters ask for.  An emitter prewarmed by n
+ * frames starts n frames before frame 0 (its clock at 0 then), a
+ * sub-emitter with the emitters that feed it (fx_prewarm_offsets); every
+ * other group, and the potentials, start at frame 0, so they stand still
+ * meanwhile.  The children of events are released and the trails recorded
+ * after each of these frames, as after any other, so frame 0 of an effect
+ * prewarmed by T holds what frame T/dt holds without it. */
+static isk_status prewarm(isk_effect *e)
+{
+    const isk_effect_def *d = &e->def;
+    double *frames = calloc((size_t)(e->ngroups ? e->ngroups : 1), sizeof *frames);
+    if (!frames)
+        return ISK_ERR_NOMEM;
+    long most = 0;
+    fx_prewarm_offsets(d, frames); /* each bounded by the check (iskra/limits.h) */
+    for (int gi = 0; gi < e->ngroups; gi++) {
+        e->groups[gi].frame_offset = (long)frames[gi];
+        if ((long)frames[gi] > most)
+            most = (long)frames[gi];
+    }
+    free(frames);
+    isk_status s = ISK_OK;
+    e->frame = -most;
+    e->time = fx_clock_at(&e->clock, e->frame);
+    while (s == ISK_OK && e->frame < 0)
+        s = advance(e);
+    return s;
 }
 
 /* Builds all groups from the definition: the state right after create. */
@@ -117,8 +154,6 @@ static isk_status build(isk_effect *e, isk_error *err)
 {
     const isk_effect_def *d = &e->def;
     reset_potentials(e);
-    e->time = 0;
-    e->frame = 0;
     e->last_frame_time = 0;
     for (int gi = 0; gi < e->ngroups; gi++) {
         fx_group *g = &e->groups[gi];
@@ -135,14 +170,20 @@ static isk_status build(isk_effect *e, isk_error *err)
             return s;
         if ((s = fx_compile(e, g)) != ISK_OK)
             return isk_error_set(err, s, "emitter '%s': cannot compile: %s", em->name, isk_status_str(s));
-        if ((s = populate(e, g)) != ISK_OK)
-            return isk_error_set(err, s, "emitter '%s': cannot create its particles: %s", em->name,
-                                 isk_status_str(s));
-        if ((s = prewarm(e, g)) != ISK_OK)
-            return isk_error_set(err, s, "emitter '%s': cannot prewarm: %s", em->name, isk_status_str(s));
     }
+    start_clocks(e, d->dt / d->speed_divisor);
+    for (int gi = 0; gi < e->ngroups; gi++) {
+        fx_group *g = &e->groups[gi];
+        isk_status s = populate(e, g);
+        if (s != ISK_OK)
+            return isk_error_set(err, s, "emitter '%s': cannot create its particles: %s", g->def->name,
+                                 isk_status_str(s));
+    }
+    isk_status s = prewarm(e);
+    if (s != ISK_OK)
+        return isk_error_set(err, s, "prewarm: %s", isk_status_str(s));
     if (d->click.at_start && d->click.after_frames == 0) {
-        isk_status s = isk_effect_click(e, d->click.x, d->click.y);
+        s = isk_effect_click(e, d->click.x, d->click.y);
         if (s != ISK_OK)
             return isk_error_set(err, s, "click: %s", isk_status_str(s));
     }
@@ -386,23 +427,31 @@ static int lost_a_potential(const isk_effect *e, const fx_group *g)
     return 0;
 }
 
-isk_status isk_effect_step(isk_effect *e)
+/* One frame of every group that has started (effect.c's prewarm runs the
+ * frames before 0; isk_effect_step the others). */
+static isk_status advance(isk_effect *e)
 {
-    if (!e)
-        return ISK_ERR_NULL;
     const isk_effect_def *d = &e->def;
+    const double frame_time = d->dt / d->speed_divisor;
+    if (frame_time != e->clock.step)
+        rebase_clocks(e, frame_time);
+    /* The potentials start at frame 0, as every group not prewarmed. */
+    const long stepped = e->frame;
+    const int started = stepped >= 0;
     /* The thesis draws the potentials, then moves them: the move of the
      * previous frame happens now, after that frame was rendered. */
-    if (e->last_frame_time != 0)
+    if (started && e->last_frame_time != 0)
         for (size_t k = 0; k < e->npots; k++)
             isk_potential_move(&e->pots[k], e->last_frame_time);
     size_t total = 0;
-    const double frame_time = d->dt / d->speed_divisor;
     for (int gi = 0; gi < e->ngroups; gi++) {
-        isk_status s = step_group(e, &e->groups[gi]);
+        fx_group *g = &e->groups[gi];
+        if (!fx_group_started(e, g))
+            continue;
+        isk_status s = step_group(e, g);
         if (s != ISK_OK)
             return s;
-        total += e->groups[gi].store.count;
+        total += g->store.count;
     }
     for (int gi = 0; gi < e->ngroups; gi++)
         if (lost_a_potential(e, &e->groups[gi])) {
@@ -411,20 +460,24 @@ isk_status isk_effect_step(isk_effect *e)
                 return s;
         }
     e->frame++;
-    /* Multiplied, not accumulated: 144 steps of 1/144 s end at 1 s as
-     * exactly as 30 steps of 1/30 s do. */
-    e->time = (double)e->frame * frame_time;
+    e->time = fx_clock_at(&e->clock, e->frame);
     /* The thesis's h stays unassigned when there are no particles: then its
      * potentials do not move. */
-    e->last_frame_time = total ? frame_time : 0.0;
-    /* sub-emitters' children, then the trails' newest points (issue 14) */
+    if (started)
+        e->last_frame_time = total ? frame_time : 0.0;
+    /* sub-emitters' children, then the trails' newest points */
     isk_status se = fx_events_release(e);
     if (se != ISK_OK)
         return se;
-    fx_trail_record(e);
+    fx_trail_record(e, stepped);
     if (d->click.at_start && d->click.after_frames > 0 && e->frame == d->click.after_frames)
         return isk_effect_click(e, d->click.x, d->click.y);
     return ISK_OK;
+}
+
+isk_status isk_effect_step(isk_effect *e)
+{
+    return e ? advance(e) : ISK_ERR_NULL;
 }
 
 isk_status isk_effect_step_render(isk_effect *e, isk_canvas *c)

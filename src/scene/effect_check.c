@@ -189,13 +189,20 @@ static isk_status check_emitter(ctx *c)
     default:
         break;
     }
-    /* issue 14, motion: a prewarm runs at create and reset, so it is bounded (iskra/limits.h) */
-    if (e->source == ISK_SOURCE_STREAM && e->prewarm > 0) {
-        const double steps = fx_prewarm_frames(d, e) * (double)(e->substeps ? e->substeps : d->substeps);
-        if (!(steps <= ISK_PREWARM_MAX_STEPS))
-            return bad_key(c, "prewarm", "%.15g s is %.15g substeps of this emitter at dt %.15g; at most %d "
-                                         "(iskra/limits.h)",
-                           e->prewarm, steps, d->dt, ISK_PREWARM_MAX_STEPS);
+    /* A prewarm runs at create and reset, so it is bounded (iskra/limits.h):
+     * a stream's own, and a sub-emitter's, which runs as long as the
+     * longest prewarm of the emitters that feed it. */
+    double frames[ISK_EFFECT_MAX_EMITTERS];
+    fx_prewarm_offsets(d, frames);
+    const double steps = frames[c->index] * (double)(e->substeps ? e->substeps : d->substeps);
+    if (frames[c->index] > 0 && !(steps <= ISK_PREWARM_MAX_STEPS)) {
+        if (e->source == ISK_SOURCE_SUB)
+            return bad_item(c, "substeps", "the emitters feeding this sub-emitter prewarm %.15g frames, %.15g of its "
+                                           "substeps; at most %d (iskra/limits.h): lower their prewarm or its substeps",
+                            frames[c->index], steps, ISK_PREWARM_MAX_STEPS);
+        return bad_key(c, "prewarm", "%.15g s is %.15g substeps of this emitter at dt %.15g; at most %d "
+                                     "(iskra/limits.h)",
+                       e->prewarm, steps, d->dt, ISK_PREWARM_MAX_STEPS);
     }
     char why[200];
     const char *looks = fx_looks_check(e, why, sizeof why);

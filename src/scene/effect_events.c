@@ -145,7 +145,7 @@ static isk_status release_group(isk_effect *e, fx_group *g)
         }
         l.shape.cx = ev->x;
         l.shape.cy = ev->y;
-        double age = e->time - ev->t;
+        double age = fx_group_time(e, g) - ev->t;
         if (!(age > 0))
             age = 0;
         const double dv[2] = {em->inherit * ev->vx, em->inherit * ev->vy};

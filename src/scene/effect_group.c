@@ -91,7 +91,7 @@ static isk_status run_release(isk_effect *e, fx_group *g, double t0, double h)
     (void)t0;
     (void)h;
     const isk_emitter_def *em = g->def;
-    if (em->source == ISK_SOURCE_EXPLOSION && !g->fired && e->time >= em->start) {
+    if (em->source == ISK_SOURCE_EXPLOSION && !g->fired && fx_group_time(e, g) >= em->start) {
         g->fired = 1;
         isk_status s = fx_fire_explosion(e, g, em->explosion, em->pos.x, em->pos.y, em->count, em->kick);
         if (s != ISK_OK)

@@ -38,6 +38,19 @@
 
 typedef struct fx_group fx_group;
 
+/* A simulated clock: the time at frame f is t0 + (f - f0) * step, a product
+ * and not a running sum, so 144 frames of 1/144 s end at 1 s as exactly as
+ * 30 of 1/30 s.  The step is the frame's simulated time (dt /
+ * speed_divisor); when a live change alters it, the clock is rebased (t0:
+ * the time now, f0: this frame), so the time already elapsed is never
+ * rescaled and the clock only moves forward (effect.c). */
+typedef struct fx_clock {
+    double t0;
+    long f0;
+    double step;
+} fx_clock;
+double fx_clock_at(const fx_clock *c, long frame);
+
 /* ---- sub-emitters and trails (issue 14) ----
  * An event waiting in a sub-emitter's group: where and how fast the parent
  * was at the end of the substep in which it died or bounced, and that time. */
@@ -182,6 +195,7 @@ struct fx_group {
     isk_field field;               /* the field stage's terms, and its clock (set every substep) */
     int has_field;                 /* the field stage is in the pipeline */
     long frame_offset;             /* prewarm: the frames this group ran before frame 0 */
+    fx_clock clock;                /* its time at its frame (the effect's frame + frame_offset) */
     isk_vec2 path_base;            /* position(t) = path_base + emitter_velocity*(t - path_t) ... */
     double path_t;
     isk_vec2 path_from;            /* ... except during a live move: from path_from at path_t0 */
@@ -226,8 +240,9 @@ struct isk_effect {
     int split_always;              /* tests: every additive group's particles split among the threads
                                       (split_particles) wherever bands would be cut, to check both */
     isk_sinlut sin_table;
-    double time;
-    long frame;
+    fx_clock clock;                /* the effect's simulated time at its frame */
+    double time;                   /* fx_clock_at(&clock, frame), kept current */
+    long frame;                    /* frames stepped since create or reset (negative while prewarming) */
     double last_frame_time;        /* potentials move by this at the next step */
     isk_sprite_cache *sprites;
     fx_bins bins;
@@ -278,6 +293,9 @@ extern const fx_step_kind fx_step_carry;      /* substep end, before spawn: loca
 /* The group's clock at the current frame: the effect's time, plus the
  * frames a prewarm ran before frame 0. */
 double fx_group_time(const isk_effect *e, const fx_group *g);
+/* The group's clock has started: its emitter is prewarmed at least as far
+ * back as the effect's frame (always true from frame 0 on). */
+int fx_group_started(const isk_effect *e, const fx_group *g);
 /* Where the emitter is at time t (its path; em: its definition, which may
  * be an older copy than g->def during a live change). */
 isk_vec2 fx_emitter_pos(const fx_group *g, const isk_emitter_def *em, double t);
@@ -293,6 +311,11 @@ void fx_path_changed(isk_effect *e, fx_group *g, const isk_emitter_def *old, con
 void fx_stream_rate_changed(isk_effect *e, fx_group *g);
 /* The whole frames a prewarm runs (a double: it may be beyond any count). */
 double fx_prewarm_frames(const isk_effect_def *d, const isk_emitter_def *em);
+/* Every emitter's prewarm in frames (frames[i] for emitter i): a stream's
+ * own, and a sub-emitter's the largest of the emitters whose on_death or
+ * on_hit reach it, directly or through a chain, so its children live on
+ * the clock of the particles they came from. */
+void fx_prewarm_offsets(const isk_effect_def *d, double *frames);
 
 /* effect_render.c */
 isk_status fx_render(isk_effect *e, isk_canvas *c);
@@ -399,8 +422,10 @@ isk_status fx_events_release(isk_effect *e);
 extern const fx_step_kind fx_step_hits;       /* substep end: the bounces counted in hit as events */
 
 /* effect_trail.c */
-/* After a frame: each trailed group's positions as its newest points. */
-void fx_trail_record(isk_effect *e);
+/* After frame `stepped`: each trailed group that stepped in it (a group
+ * not yet started by a prewarm did not) takes its positions as its newest
+ * points. */
+void fx_trail_record(isk_effect *e, long stepped);
 /* The group's trails, drawn before its particles (in bands on the threads);
  * fill as fx_draw_bands'. */
 isk_status fx_trail_render(isk_effect *e, isk_canvas *c, fx_group *g, const isk_color *fill);

@@ -143,7 +143,7 @@ static void update_potentials(isk_effect *e, int f, const char *key)
  * of the new one), so no burst of catch-up births and no gap. */
 static void rebase_stream(isk_effect *e, fx_group *g, double old_rate)
 {
-    const double t = e->time, rate = g->def->rate;
+    const double t = fx_group_time(e, g), rate = g->def->rate;
     double f = 0.0;
     if (old_rate > 0 && g->def->rate_mode == ISK_RATE_ACCUMULATE) {
         double last = g->origin + (double)g->emitted / old_rate;

@@ -73,11 +73,10 @@ void fx_stream_reset(fx_group *g, double time)
 
 double fx_group_time(const isk_effect *e, const fx_group *g)
 {
-    if (!g->frame_offset)
-        return e->time;
-    /* as isk_effect_step computes the effect's time: multiplied, not summed */
-    return (double)(e->frame + g->frame_offset) * (e->def.dt / e->def.speed_divisor);
+    return fx_clock_at(&g->clock, e->frame + g->frame_offset);
 }
+
+int fx_group_started(const isk_effect *e, const fx_group *g) { return e->frame + g->frame_offset >= 0; }
 
 static isk_vec2 on_path(const fx_group *g, const isk_emitter_def *em, double t)
 {
@@ -177,6 +176,30 @@ double fx_prewarm_frames(const isk_effect_def *d, const isk_emitter_def *em)
         return 0;
     double n = floor(em->prewarm / (d->dt / d->speed_divisor) + 0.5);
     return n < 1 ? 1 : n;
+}
+
+void fx_prewarm_offsets(const isk_effect_def *d, double *frames)
+{
+    for (int i = 0; i < d->nemitters; i++)
+        frames[i] = fx_prewarm_frames(d, &d->emitters[i]);
+    /* a longest path in the graph of events visits each emitter once, so
+     * nemitters rounds of "a target takes its largest source" settle it
+     * (a cycle only carries the same largest value round) */
+    for (int round = 0; round < d->nemitters; round++) {
+        int changed = 0;
+        for (int i = 0; i < d->nemitters; i++) {
+            const isk_emitter_def *em = &d->emitters[i];
+            const int to[2] = {em->on_death, em->on_hit};
+            for (int k = 0; k < 2; k++)
+                if (to[k] >= 0 && to[k] < d->nemitters && d->emitters[to[k]].source == ISK_SOURCE_SUB &&
+                    frames[to[k]] < frames[i]) {
+                    frames[to[k]] = frames[i];
+                    changed = 1;
+                }
+        }
+        if (!changed)
+            break;
+    }
 }
 
 /* Where and how fast new particles start: built once per spawn call. */

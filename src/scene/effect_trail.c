@@ -21,10 +21,10 @@
 #include "iskra/limits.h"
 #include "raster/trail_rows.h"
 
-void fx_trail_record(isk_effect *e)
+void fx_trail_record(isk_effect *e, long stepped)
 {
     for (int i = 0; i < e->ngroups; i++)
-        if (e->groups[i].store.trail)
+        if (e->groups[i].store.trail && stepped + e->groups[i].frame_offset >= 0)
             isk_particles_record_trail(&e->groups[i].store);
 }
 
