@@ -74,6 +74,7 @@
 #include "bench_util.h"
 #include "iskra/sinlut.h"
 #include "iskra/system.h"
+#include "sim/rest.h"
 #include "sim/stage.h"
 
 enum { ROUNDS_MAX = 7 };
@@ -151,7 +152,7 @@ static void describe_end_walls(const isk_stage *st, FILE *out)
     (void)st;
     fprintf(out, "end-of-step rule");
 }
-static const isk_stage_kind end_walls = {"walls", run_end_walls, describe_end_walls, NULL};
+static const isk_stage_kind end_walls = {.name = "walls", .run = run_end_walls, .describe = describe_end_walls};
 
 enum { V_MOTION, V_END, V_IMPACT, V_START, V_REST, V_SLIDE, V_STILL, V_DRAG, V_COULOMB, V_COULOMB_T, V_COULOMB_WALLS, V_FIRE, NV };
 
@@ -346,11 +347,12 @@ static int measure(size_t n, int steps, int rounds)
             fill(&w, n, v == V_REST || v == V_SLIDE ? SLIDING : v == V_STILL ? STANDING : MOVING);
             isk_rest *rest = v == V_STILL || v == V_SLIDE ? &w.rest : NULL;
             isk_rest_forget(&w.rest, 0);
+            const isk_run_context ctx = {NULL, rest};
             for (int s = 0; s < (rest ? 12 : 1); s++) /* warm; standing: every block comes to rest */
-                isk_pipeline_run_rest(&w.pl[v], &w.p, w.p.count, DT, w.s, rest);
+                isk_pipeline_run(&w.pl[v], &w.p, 0, w.p.count, DT, w.s, &ctx);
             double t0 = bench_now();
             for (int s = 0; s < steps; s++)
-                isk_pipeline_run_rest(&w.pl[v], &w.p, w.p.count, DT, w.s, rest);
+                isk_pipeline_run(&w.pl[v], &w.p, 0, w.p.count, DT, w.s, &ctx);
             t[v][r] = (bench_now() - t0) / ((double)steps * (double)n) * 1e9;
             if (v == V_STILL)
                 still = isk_rest_blocks(rest, w.p.count, ISK_REST_X | ISK_REST_Y);

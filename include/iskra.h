@@ -18,6 +18,7 @@
  *   iskra/texture.h  image sprites: scaled, rotated, tinted, sprite-sheet frames
  *   iskra/shape.h    spawn shapes, velocity generators
  *   iskra/timestep.h fixed-step accumulator  iskra/effect.h  whole effects (stage lists)
+ *   iskra/tasks.h    an effect's work on your own job system
  *   iskra/scene.h    INI scene files      iskra/presets.h  fire, smoke, sparks, ...
  *   iskra/keys.h     every scene key: type, range, default, meaning (one table)
  *   iskra/chart.h    line charts (work-precision diagrams, log/linear axes)
@@ -80,6 +81,7 @@
 #include "iskra/deflector.h"
 #include "iskra/shape.h"
 #include "iskra/timestep.h"
+#include "iskra/tasks.h"
 #include "iskra/effect.h"
 #include "iskra/scene.h"
 #include "iskra/keys.h"

@@ -117,3 +117,31 @@ Test(hygiene, every_source_file_names_its_licence)
     cr_assert_eq(pclose(p), 0);
     cr_assert_gt(files, 300, "only %d source files found: run from the project's root", files);
 }
+
+/* No clock in the library: nothing it computes or decides can depend on
+ * when it runs (scheduling is from counts; docs/architecture.md).  The
+ * SDL window's library and the tools may read one; libiskra may not. */
+Test(hygiene, the_library_reads_no_clock)
+{
+    char cmd[512];
+    snprintf(cmd, sizeof cmd, "nm -u %s/lib/libiskra.a", refimg_build_dir());
+    FILE *p = popen(cmd, "r");
+    cr_assert_not_null(p, "%s", cmd);
+    static const char *const clocks[] = {"clock_gettime", "gettimeofday", "time", "clock", "timespec_get",
+                                         "clock_getres", "times", "ftime"};
+    char line[512];
+    int symbols = 0;
+    while (fgets(line, sizeof line, p)) {
+        char type[8], name[400];
+        if (sscanf(line, "%7s %399s", type, name) != 2)
+            continue;
+        symbols++;
+        char *at = strchr(name, '@'); /* name@GLIBC_x */
+        if (at)
+            *at = 0;
+        for (size_t k = 0; k < sizeof clocks / sizeof clocks[0]; k++)
+            cr_assert(strcmp(name, clocks[k]) != 0, "libiskra.a calls %s", name);
+    }
+    cr_assert_eq(pclose(p), 0, "%s failed", cmd);
+    cr_assert_gt(symbols, 10, "%s listed nothing", cmd);
+}

@@ -513,8 +513,8 @@ Test(raster_fast, binned_bands_equal_the_whole_batch)
                 band_of_row[row] = (uint8_t)b;
         /* two shares, binned apart; band b's list: share 0's, then share 1's */
         size_t count[2][MAXB] = {{0}}, split = isk_rng_below(&r, (uint32_t)m + 1);
-        isk__batch_bin(&bt.v, h, y, 0, split, band_of_row, code, count[0]);
-        isk__batch_bin(&bt.v, h, y, split, m, band_of_row, code, count[1]);
+        isk__batch_bin(&bt.v, h, y, 0, split, ISK__DOT_REACH, band_of_row, code, count[0]);
+        isk__batch_bin(&bt.v, h, y, split, m, ISK__DOT_REACH, band_of_row, code, count[1]);
         size_t pos[2][MAXB], start[MAXB + 1], total = 0;
         for (int b = 0; b < nb; b++) {
             start[b] = total;

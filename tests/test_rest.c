@@ -1,13 +1,13 @@
 /* SPDX-License-Identifier: MIT */
-/* Blocks at rest (sim/stage.h's isk_rest): the runner skips the motion
+/* Blocks at rest (sim/rest.h): the runner skips the motion
  * stages of a block that they leave bit for bit as it was, and the bytes
  * stay those of running every stage.
  *
  * The stage lists: a store half of which settles on the floor (blocks
  * 0..7: no sideways speed) and half of which slides along it (blocks
  * 8..15, whose drag never quite stops them), run with and without the
- * states, compared bit for bit along the way, on the caller and on pools
- * of 2 and 3 threads; blocks do come to rest, and only the settled ones.
+ * states, compared bit for bit along the way, on the caller and on 2 and
+ * 3 workers; blocks do come to rest, and only the settled ones.
  * What the owner must say: a particle written and forgotten gives the same
  * bytes, written and not forgotten it stays where it rested (so the stages
  * really were skipped, and forgetting is what keeps the bytes); a new step
@@ -28,7 +28,8 @@
 #include "iskra/particles.h"
 #include "scene/effect_internal.h"
 #include "scene_text.h"
-#include "sim/pool.h"
+#include "sim/rest.h"
+#include "sim/workers.h"
 #include "sim/stage.h"
 
 enum { N = 16 * ISK_SIM_BLOCK, SETTLING = 8 * ISK_SIM_BLOCK, BOTH = ISK_REST_X | ISK_REST_Y };
@@ -86,15 +87,12 @@ static isk_scratch *scratch(void)
 }
 
 /* steps of the lists over p with rest (NULL: every stage), on the caller or
- * a pool */
-static void steps(lists *l, isk_particles *p, isk_rest *rest, isk_scratch *s, isk_pool *pool, int n, double h)
+ * workers (NULL: the caller) */
+static void steps(lists *l, isk_particles *p, isk_rest *rest, isk_scratch *s, isk_workers *w, int n, double h)
 {
-    for (int k = 0; k < n; k++) {
-        if (pool)
-            isk_pipeline_run_pool_rest(&l->pl, p, p->count, h, pool, rest);
-        else
-            isk_pipeline_run_rest(&l->pl, p, p->count, h, s, rest);
-    }
+    const isk_run_context ctx = {w, rest};
+    for (int k = 0; k < n; k++)
+        isk_pipeline_run(&l->pl, p, 0, p->count, h, s, &ctx);
 }
 
 Test(rest, settled_blocks_rest_with_the_same_bits)
@@ -206,18 +204,19 @@ Test(rest, threads_give_the_same_bits)
         isk_particles a, ref;
         store_fill(&a);
         store_fill(&ref);
-        isk_pool *pool;
-        cr_assert_eq(isk_pool_create(&pool, threads), ISK_OK);
+        isk_workers pool;
+        isk_workers_init(&pool);
+        cr_assert_eq(isk_workers_start(&pool, threads), ISK_OK);
         isk_rest r;
         isk_rest_init(&r);
         for (int round = 0; round < 30; round++) {
-            steps(&l, &a, &r, s, pool, 80, H);
+            steps(&l, &a, &r, s, &pool, 80, H);
             steps(&l, &ref, NULL, s, NULL, 80, H);
             cr_assert(same_store(&a, &ref), "%d threads, round %d", threads, round);
         }
         cr_assert_eq(isk_rest_blocks(&r, a.count, BOTH), SETTLING / ISK_SIM_BLOCK);
         isk_rest_free(&r);
-        isk_pool_destroy(pool);
+        isk_workers_free(&pool);
         isk_particles_free(&a);
         isk_particles_free(&ref);
     }
@@ -297,7 +296,7 @@ Test(rest, effect_same_bytes_on_every_thread_count)
     for (int threads = 1; threads <= 3; threads++) {
         isk_effect *a = scene_text_open(SCENE, threads), *b = scene_text_open(SCENE, threads);
         b->no_rest = 1;
-        a->pool_always = b->pool_always = 1; /* the groups are small: share their updates all the same */
+        a->update_min_work = b->update_min_work = 0; /* the groups are small: share their updates all the same */
         cr_assert(a->groups[0].rests && a->groups[1].rests && a->groups[2].rests, "every group may rest");
         isk_canvas ca, cb;
         cr_assert_eq(isk_canvas_init(&ca, 160, 120), ISK_OK);

@@ -337,7 +337,7 @@ static void run_stages(const isk_pipeline *pl, const state *in, size_t n, double
     memcpy(p.osc_phase, in->ph, n * sizeof *p.osc_phase);
     memcpy(p.osc_omega, in->om, n * sizeof *p.osc_omega);
     memcpy(p.osc_offset, in->off, n * sizeof *p.osc_offset);
-    isk_pipeline_run(pl, &p, 0, n, h, &scratch);
+    isk_pipeline_run(pl, &p, 0, n, h, &scratch, NULL);
     *out = *in;
     memcpy(out->x, p.x, n * sizeof *p.x);
     memcpy(out->y, p.y, n * sizeof *p.y);

@@ -1,18 +1,19 @@
 /* SPDX-License-Identifier: MIT */
-/* Which groups' updates are shared out over the threads (effect.c's
- * update_on_pool): a group whose update takes less than FX_POOL_MIN_SECONDS
- * on one thread steps on the caller alone, where waking the workers would
- * cost more than they save; a big one on the threads.  The choice is made
- * from the group's cost measured on the caller, at its first update, again
- * when its count halves or doubles, and now and then while it lies near
- * the line or its time on the threads falls under 4 times it.  The bytes
- * are the same either way (threads_check). */
+/* Which groups' updates are shared out among the workers (effect.c's
+ * update_work against FX_UPDATE_MIN_WORK): decided from counts alone, the
+ * particles times what the group's stages declare they cost, a block at
+ * rest counting only the stages it does not skip.  No clock: the same
+ * decisions on every run.  A caller's own job system (isk_effect_set_tasks)
+ * runs them instead of the effect's threads, with the same bytes whatever
+ * order and worker it runs the items in. */
 #include <criterion/criterion.h>
+
+#include <string.h>
 
 #include "scene/effect_internal.h"
 #include "scene_text.h"
 
-static isk_effect *layer(const char *count)
+static isk_effect *layer(const char *count, int threads)
 {
     char text[512];
     snprintf(text, sizeof text,
@@ -20,79 +21,127 @@ static isk_effect *layer(const char *count)
              "[emitter a]\nsource = layer\ncount = %s\nlimit = %s\ncapacity = %s\nrect = -5, 5, -5, 5\n"
              "forces = gravity\n",
              count, count, count);
-    return scene_text_open(text, 2);
+    return scene_text_open(text, threads);
 }
 
-Test(update_share, a_small_group_steps_on_the_caller_and_a_big_one_on_the_threads)
+Test(update_share, a_small_group_steps_on_the_caller_and_a_big_one_on_the_workers)
 {
-    /* 100 particles take well under 0.1 ms even under the sanitizers;
-     * 300,000 take well over it on any machine */
-    isk_effect *small = layer("100"), *big = layer("300000");
+    isk_effect *small = layer("100", 2), *big = layer("300000", 2);
     cr_assert_eq(isk_effect_threads(small), 2);
-    /* A fresh effect's first update also pays its one-time costs (under
-     * clang's sanitizers 100 particles then took 0.3 ms, and went to the
-     * threads until the next measure, FX_STEP_COST_AGAIN updates later):
-     * one warming update, then the measures start afresh. */
-    cr_assert_eq(isk_effect_step(small), ISK_OK);
-    cr_assert_eq(isk_effect_step(big), ISK_OK);
-    small->groups[0].step_cost = (fx_step_cost){0};
-    big->groups[0].step_cost = (fx_step_cost){0};
     for (int f = 0; f < 5; f++) {
         cr_assert_eq(isk_effect_step(small), ISK_OK);
         cr_assert_eq(isk_effect_step(big), ISK_OK);
     }
-    const fx_step_cost *s = &small->groups[0].step_cost, *b = &big->groups[0].step_cost;
-    /* measured on the caller at every update: `since` starts again */
-    cr_expect_gt(s->per_particle, 0.0);
-    cr_expect_eq(s->count, 100);
-    cr_expect_eq(s->since, 0);
-    /* measured once, then 4 updates on the threads */
-    cr_expect_gt(b->per_particle, 0.0);
-    cr_expect_eq(b->count, 300000);
-    cr_expect_eq(b->since, 4);
+    cr_expect_eq(small->groups[0].shared_updates, 0);
+    cr_expect_eq(big->groups[0].shared_updates, 5);
     isk_effect_destroy(small);
     isk_effect_destroy(big);
 }
 
-Test(update_share, a_group_that_became_cheap_is_measured_again)
+/* A layer of 10^5 falls on the workers; once it lies at rest on its floor
+ * its blocks skip their motion and what is left is too little to share. */
+Test(update_share, a_group_at_rest_is_cheap)
 {
-    /* A group measured dear (as a falling layer is, before it comes to
-     * rest at the same count) goes to the threads; once its time there
-     * lies near the line, it is measured again on the caller, and its true
-     * cost keeps it there.  (100 particles: under
-     * ISK_PIPELINE_MIN_PARALLEL_BLOCKS, so "the threads" run it on the
-     * caller, well under 0.4 ms even under the sanitizers.) */
-    isk_effect *fx = layer("100");
-    fx_step_cost *c = &fx->groups[0].step_cost;
-    cr_assert_eq(isk_effect_step(fx), ISK_OK); /* the first measure */
-    cr_assert_gt(c->per_particle, 0.0);
-    *c = (fx_step_cost){1e-5, 100, 1000, 0.0}; /* 1 ms a step, long ago */
+    isk_effect *fx = layer("100000", 2);
     cr_assert_eq(isk_effect_step(fx), ISK_OK);
-    cr_expect_eq(c->per_particle, 1e-5, "on the threads: no new measure");
-    cr_expect_eq(c->since, 1001);
-    cr_expect_gt(c->pool_seconds, 0.0);
-    /* The update on the threads is wall time: one that the host
-     * descheduled (CI under ASan, the VM busy) can take over 0.4 ms and
-     * delay the new measure by an update, so a few are allowed. */
-    for (int f = 0; f < 8 && !(c->per_particle < 1e-5); f++)
+    cr_expect_eq(fx->groups[0].shared_updates, 1, "falling, it is shared");
+    for (int f = 0; f < 1200; f++)
         cr_assert_eq(isk_effect_step(fx), ISK_OK);
-    cr_expect_lt(c->per_particle, 1e-5, "measured again on the caller");
-    cr_expect_eq(c->since, 0);
-    cr_expect_eq(c->pool_seconds, 0.0);
+    const fx_group *g = &fx->groups[0];
+    cr_assert(isk_rest_all(&g->rest, g->store.count), "the layer has not come to rest");
+    const long before = g->shared_updates;
+    for (int f = 0; f < 10; f++)
+        cr_assert_eq(isk_effect_step(fx), ISK_OK);
+    cr_expect_eq(g->shared_updates, before, "at rest, it steps on the caller");
     isk_effect_destroy(fx);
 }
 
-Test(update_share, one_thread_and_the_tests_switch_keep_the_old_paths)
+/* Two runs of the same effect decide the same, update by update. */
+Test(update_share, the_same_decisions_on_every_run)
 {
-    isk_effect *one = layer("1000"), *forced = layer("1000");
-    cr_assert_eq(isk_effect_set_threads(one, 1), ISK_OK);
-    forced->pool_always = 1;
-    for (int f = 0; f < 3; f++) {
-        cr_assert_eq(isk_effect_step(one), ISK_OK);
-        cr_assert_eq(isk_effect_step(forced), ISK_OK);
+    isk_effect *a = layer("60000", 2), *b = layer("60000", 2);
+    for (int f = 0; f < 400; f++) {
+        cr_assert_eq(isk_effect_step(a), ISK_OK);
+        cr_assert_eq(isk_effect_step(b), ISK_OK);
+        cr_assert_eq(a->groups[0].shared_updates, b->groups[0].shared_updates, "frame %d", f);
     }
-    cr_expect_eq(one->groups[0].step_cost.per_particle, 0.0); /* never measured */
-    cr_expect_eq(forced->groups[0].step_cost.per_particle, 0.0);
+    isk_effect_destroy(a);
+    isk_effect_destroy(b);
+}
+
+Test(update_share, one_worker_never_shares)
+{
+    isk_effect *one = layer("300000", 1);
+    for (int f = 0; f < 3; f++)
+        cr_assert_eq(isk_effect_step(one), ISK_OK);
+    cr_expect_eq(one->groups[0].shared_updates, 0);
     isk_effect_destroy(one);
-    isk_effect_destroy(forced);
+}
+
+/* ---- a caller's job system ------------------------------------------------- */
+
+/* Runs the items last to first, on worker numbers that go round: any order
+ * and any worker must give the same bytes.  Counts what it ran. */
+typedef struct backwards {
+    int workers;
+    long tasks, items;
+} backwards;
+
+static void run_backwards(void *user, isk_task_fn *fn, void *task, size_t n)
+{
+    backwards *b = user;
+    b->tasks++;
+    for (size_t i = n; i-- > 0;) {
+        fn(task, (int)(i % (size_t)b->workers), i);
+        b->items++;
+    }
+}
+
+Test(update_share, a_callers_tasks_give_the_same_bytes)
+{
+    isk_effect *mine = layer("200000", 1), *theirs = layer("200000", 1);
+    backwards b = {3, 0, 0};
+    const isk_tasks tasks = {3, run_backwards, &b};
+    cr_assert_eq(isk_effect_set_tasks(theirs, &tasks), ISK_OK);
+    cr_assert_eq(isk_effect_threads(theirs), 3);
+    theirs->band_min_work = 0; /* and every draw in bands */
+    isk_canvas ca, cb;
+    const isk_effect_def *d = isk_effect_definition(mine);
+    cr_assert_eq(isk_canvas_init(&ca, d->width, d->height), ISK_OK);
+    cr_assert_eq(isk_canvas_init(&cb, d->width, d->height), ISK_OK);
+    for (int f = 0; f < 40; f++) {
+        cr_assert_eq(isk_effect_step_render(mine, &ca), ISK_OK);
+        cr_assert_eq(isk_effect_step_render(theirs, &cb), ISK_OK);
+    }
+    const isk_particles *p = isk_effect_particles(mine, 0), *q = isk_effect_particles(theirs, 0);
+    cr_assert(!memcmp(p->x, q->x, p->count * sizeof(double)) && !memcmp(p->vy, q->vy, p->count * sizeof(double)));
+    cr_assert(!memcmp(ca.pixels, cb.pixels, (size_t)ca.stride * (size_t)ca.height), "the canvases differ");
+    cr_expect_geq(b.tasks, 80, "the updates and the draws went through the caller's tasks: %ld", b.tasks);
+    cr_expect_gt(b.items, 40 * (200000 / ISK_SIM_BLOCK));
+    /* back to threads of its own */
+    cr_assert_eq(isk_effect_set_tasks(theirs, NULL), ISK_OK);
+    const long tasks_then = b.tasks;
+    cr_assert_eq(isk_effect_step(theirs), ISK_OK);
+    cr_expect_eq(b.tasks, tasks_then);
+    isk_canvas_free(&ca);
+    isk_canvas_free(&cb);
+    isk_effect_destroy(mine);
+    isk_effect_destroy(theirs);
+}
+
+Test(update_share, bad_tasks_are_refused_and_change_nothing)
+{
+    isk_effect *fx = layer("100", 2);
+    backwards b = {2, 0, 0};
+    isk_tasks t = {2, NULL, &b};
+    cr_expect_eq(isk_effect_set_tasks(fx, &t), ISK_ERR_NULL);
+    t.run = run_backwards;
+    t.workers = 0;
+    cr_expect_eq(isk_effect_set_tasks(fx, &t), ISK_ERR_RANGE);
+    t.workers = ISK_TASKS_MAX_WORKERS + 1;
+    cr_expect_eq(isk_effect_set_tasks(fx, &t), ISK_ERR_RANGE);
+    cr_expect_eq(isk_effect_set_tasks(NULL, &t), ISK_ERR_NULL);
+    cr_expect_eq(isk_effect_threads(fx), 2, "a refused job system keeps the threads");
+    cr_assert_eq(isk_effect_step(fx), ISK_OK);
+    isk_effect_destroy(fx);
 }

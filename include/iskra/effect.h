@@ -75,6 +75,7 @@
 #include "iskra/sinlut.h"
 #include "iskra/sprite.h"
 #include "iskra/status.h"
+#include "iskra/tasks.h"
 #include "iskra/vec2.h"
 #include "iskra/view.h"
 
@@ -564,6 +565,14 @@ isk_status isk_effect_remove_force(isk_effect *e, const char *name, isk_error *e
  * ISK_ERR_RANGE, ISK_ERR_NOMEM, ISK_ERR_UNSUPPORTED. */
 int isk_effect_threads(const isk_effect *e);
 isk_status isk_effect_set_threads(isk_effect *e, int threads);
+/* Your own job system instead of the effect's threads (iskra/tasks.h):
+ * from now on the effect's independent items run through tasks->run on
+ * tasks->workers workers (isk_effect_threads says how many); NULL: back to
+ * threads of its own, as isk_effect_def.threads = 0 gives.  The bytes are
+ * the same whatever runs them.  ISK_ERR_NULL (no effect, or no run),
+ * ISK_ERR_RANGE (workers not in 1..ISK_TASKS_MAX_WORKERS), ISK_ERR_NOMEM;
+ * on error the effect keeps what it had. */
+isk_status isk_effect_set_tasks(isk_effect *e, const isk_tasks *tasks);
 
 /* The live potentials (where they are now, whether they are still on), in
  * force order; *count receives how many.  Valid until the next change. */

@@ -13,6 +13,7 @@
 
 #include "effect_internal.h"
 #include "sim/pool.h"
+#include "sim/workers.h"
 #include "sim/store_internal.h"
 
 static void free_group(fx_group *g)
@@ -215,7 +216,9 @@ isk_status isk_effect_create(isk_effect **out, const isk_effect_def *def, isk_er
     isk_effect *e = calloc(1, sizeof *e);
     if (!e)
         return isk_error_set(err, ISK_ERR_NOMEM, "effect: out of memory");
+    isk_workers_init(&e->workers);
     e->band_min_work = FX_BAND_MIN_WORK;
+    e->update_min_work = FX_UPDATE_MIN_WORK;
     s = fx_def_copy(&e->def, def);
     if (s != ISK_OK) {
         free(e);
@@ -267,7 +270,7 @@ void isk_effect_destroy(isk_effect *e)
     isk_sprite_cache_destroy(e->sprites);
     isk_texture_cache_destroy(e->textures);
     fx_bins_free(&e->bins);
-    isk_pool_destroy(e->pool);
+    isk_workers_free(&e->workers);
     isk_effect_def_free(&e->def);
     free(e);
 }
@@ -278,32 +281,35 @@ static int default_threads(void)
     const char *v = getenv("ISKRA_THREADS");
     char *end = NULL;
     long n = v ? strtol(v, &end, 10) : 0;
-    if (v && *v && end && !*end && n >= 1 && n <= ISK_POOL_MAX_THREADS)
+    if (v && *v && end && !*end && n >= 1 && n <= ISK_TASKS_MAX_WORKERS)
         return (int)n;
     return isk_pool_online_cores();
 }
 
 int isk_effect_threads(const isk_effect *e)
 {
-    return e && e->pool ? isk_pool_threads(e->pool) : 1;
+    return e ? isk_workers_count(&e->workers) : 1;
 }
 
 isk_status isk_effect_set_threads(isk_effect *e, int threads)
 {
     if (!e)
         return ISK_ERR_NULL;
-    if (threads < 0 || threads > ISK_POOL_MAX_THREADS)
+    if (threads < 0 || threads > ISK_TASKS_MAX_WORKERS)
         return ISK_ERR_RANGE;
     int n = threads ? threads : default_threads();
-    if (e->pool && isk_pool_threads(e->pool) == n)
+    if (e->workers.pool && isk_workers_count(&e->workers) == n)
         return ISK_OK;
-    isk_pool *p;
-    isk_status s = isk_pool_create(&p, n);
-    if (s != ISK_OK)
-        return s;
-    isk_pool_destroy(e->pool);
-    e->pool = p;
-    return ISK_OK;
+    return isk_workers_start(&e->workers, n);
+}
+
+isk_status isk_effect_set_tasks(isk_effect *e, const isk_tasks *tasks)
+{
+    if (!e)
+        return ISK_ERR_NULL;
+    if (!tasks)
+        return isk_workers_start(&e->workers, default_threads());
+    return isk_workers_use(&e->workers, tasks);
 }
 
 isk_status isk_effect_reset(isk_effect *e)
@@ -325,58 +331,19 @@ static isk_status run_steps(isk_effect *e, fx_group *g, const fx_step_kind *cons
     return ISK_OK;
 }
 
-/* An update is shared out over the threads only when it takes this long on
- * one: waking the workers and waiting for them costs 40-50 us on this VM,
- * and the store's lines move between the cores.  Measured on two threads
- * against one (bench_layer.h's layer, gravity, drag and walls, one
- * process, 2026-12-04): 5000 particles 0.058 against 0.010 ms, 10^4 0.057
- * against 0.019, 3*10^4 0.092 against 0.060, 10^5 0.21 against 0.20,
- * 3*10^5 0.55 against 0.63.  Where the draw runs in bands (from 2*10^4
- * dots with the render's clear), both cores have read the store, and the
- * update on the caller alone fetches half its lines from the other: 3*10^4
- * then took 0.11 ms on the caller against 0.09 shared.  With this line,
- * 5000 and 10^4 particles step on two threads in 0.009 and 0.018 ms, as
- * on one, and nothing above moved by more than 3 %. */
-#define FX_POOL_MIN_SECONDS 1e-4
-
-/* Whether a group's update goes to the threads: from its cost on the
- * caller alone, measured at its first update, again when its count has
- * halved or doubled since, and every FX_STEP_COST_AGAIN updates while it
- * lies near the line by that measure or its last time on the threads lies
- * under 4 times the line.  (A group whose particles came to rest costs a
- * tenth of what it did falling, at the same count: the 10^6 dots at rest
- * took 0.08-0.10 ms a step on two threads, 0.04-0.05 on one.)  Only the
- * caller's measure decides: measured on the threads, the cost would
- * include the lines moving between the cores, which the caller alone does
- * not pay (5000 particles looked like 0.045 ms of work against a true
- * 0.010).  A measure on the caller near the line costs at most 0.3 ms
- * more than on the threads; once every FX_STEP_COST_AGAIN updates, 10 us
- * an update.  The bytes are the same either way. */
-#define FX_STEP_COST_AGAIN 32
-static int update_on_pool(const isk_effect *e, fx_group *g)
-{
-    fx_step_cost *c = &g->step_cost;
-    if (e->pool_always || isk_pool_threads(e->pool) < 2)
-        return 1;
-    const size_t n = g->store.count;
-    const double guess = c->per_particle * (double)n, high = 4.0 * FX_POOL_MIN_SECONDS;
-    const int near = (guess > 0.25 * FX_POOL_MIN_SECONDS && guess < high) ||
-                     (c->pool_seconds > 0.0 && c->pool_seconds < high);
-    if (!(c->per_particle > 0.0) || n > 2 * c->count || 2 * n < c->count || (near && c->since >= FX_STEP_COST_AGAIN))
-        return 0; /* measure it on the caller */
-    c->since++;
-    return guess >= FX_POOL_MIN_SECONDS;
-}
-
-/* What update_on_pool reads: an update's `seconds` on the caller is a
- * new measure, on the threads only its hint. */
-static void record_step_cost(fx_group *g, int pool, double seconds)
+/* Whether a group's update goes to the workers, from counts alone (no
+ * clock: the same decision on every run): its particles times what its
+ * stages declare they cost, a block at rest counting only the stages it
+ * does not skip, against FX_UPDATE_MIN_WORK.  The bytes are the same
+ * either way. */
+static double update_work(const fx_group *g)
 {
     const size_t n = g->store.count;
-    if (pool)
-        g->step_cost.pool_seconds = seconds;
-    else
-        g->step_cost = (fx_step_cost){n ? seconds / (double)n : 0.0, n, 0, 0.0};
+    const isk_pipeline *pl = &g->pipeline;
+    const int prefix = g->rests ? isk_pipeline_rest_prefix(pl) : 0;
+    size_t resting = prefix ? isk_rest_blocks(&g->rest, n, ISK_REST_X | ISK_REST_Y) * ISK_SIM_BLOCK : 0;
+    resting = resting < n ? resting : n;
+    return (double)(n - resting) * isk_pipeline_cost(pl, 0) + (double)resting * isk_pipeline_cost(pl, prefix);
 }
 
 static isk_status step_group(isk_effect *e, fx_group *g)
@@ -393,17 +360,10 @@ static isk_status step_group(isk_effect *e, fx_group *g)
         isk_rest *rest = g->rests && !g->mc_active && !e->no_rest ? &g->rest : NULL;
         if (!rest) /* every block steps: the states describe nothing after it */
             isk_rest_forget(&g->rest, 0);
-        const int pool = g->parallel && update_on_pool(e, g);
-        /* timed whenever it could have been shared (record_step_cost) */
-        const int timed = g->parallel && isk_pool_threads(e->pool) > 1;
-        const double t0 = timed ? isk_pool_seconds() : 0.0;
-        if (pool)
-            e->scratch.nonfinite |=
-                isk_pipeline_run_pool_rest(&g->pipeline, &g->store, g->store.count, h, e->pool, rest);
-        else
-            isk_pipeline_run_rest(&g->pipeline, &g->store, g->store.count, h, &e->scratch, rest);
-        if (timed)
-            record_step_cost(g, pool, isk_pool_seconds() - t0);
+        const int shared = g->parallel && isk_workers_count(&e->workers) > 1 && update_work(g) >= e->update_min_work;
+        const isk_run_context ctx = {shared ? &e->workers : NULL, rest};
+        g->shared_updates += shared;
+        isk_pipeline_run(&g->pipeline, &g->store, 0, g->store.count, h, &e->scratch, &ctx);
         s = run_steps(e, g, g->substep_end, g->nsubstep_end, time + h * j, h);
         if (e->scratch.nonfinite) { /* never kept or drawn: removed and counted (iskra/limits.h) */
             size_t first;

@@ -41,7 +41,7 @@
  * A group at rest (FX_BANDS_RETAIN, effect_retain.c) records its blends
  * band by band at its first draw at rest, then replays them on the same
  * bands (replay_bands) until they would be stale: no cuts placed, no
- * split, the shares left as they are. */
+ * split. */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -49,7 +49,7 @@
 #include "effect_internal.h"
 #include "iskra/draw.h"
 #include "raster/span_simd.h"
-#include "sim/pool.h"
+#include "sim/workers.h"
 #include "view/world_batch.h"
 
 /* Below FX_BAND_MIN_WORK (effect_internal.h) a group is drawn on the
@@ -109,15 +109,15 @@ typedef struct band_job {
     const isk_color *fill; /* NULL, or the colour every band first fills its own pixels with */
     int nb;
     /* one of each for every thread, in the job's own allocation (job_new):
-     * sized for ISK_POOL_MAX_THREADS, the job was half a megabyte (a band
+     * sized for ISK_TASKS_MAX_WORKERS, the job was half a megabyte (a band
      * holds its sprites by size) that calloc zeroed every draw */
     fx_band *band;
     isk_status *status;
-    double *seconds; /* each band's time, for the shares */
     uint8_t **copy;  /* a band of columns' own canvas pixels, or NULL: in place; for a
                       * split, every band's but the first, zeroed and added in after */
     int split;       /* the bands split the particles, not the canvas (split_particles) */
-    fx_draw_fn draw; /* each band's (draw_band): the group's, or effect_retain.c's record */
+    fx_draw_fn draw; /* each band's (draw_band): the kind's, or effect_retain.c's record */
+    int reach;       /* the kind's: rows beyond a particle's own its draw may touch */
     /* sorting into bands: share t of the store is [t n / nb, (t+1) n / nb)
      * (as many shares as bands, one per thread) */
     uint8_t *band_of_row;          /* the canvas's height */
@@ -129,14 +129,12 @@ typedef struct band_job {
 static band_job *job_new(int threads)
 {
     const size_t t = (size_t)threads;
-    band_job *j = calloc(1, sizeof *j + t * (sizeof *j->band + sizeof *j->seconds + sizeof *j->copy +
-                                             sizeof *j->status));
+    band_job *j = calloc(1, sizeof *j + t * (sizeof *j->band + sizeof *j->copy + sizeof *j->status));
     if (!j)
         return NULL;
     /* widest alignment first: the job's size is a multiple of its own */
     j->band = (fx_band *)(void *)(j + 1);
-    j->seconds = (double *)(void *)(j->band + t);
-    j->copy = (uint8_t **)(void *)(j->seconds + t);
+    j->copy = (uint8_t **)(void *)(j->band + t);
     j->status = (isk_status *)(void *)(j->copy + t);
     return j;
 }
@@ -191,10 +189,7 @@ static void draw_band(band_job *j, size_t item)
 static void run_band(void *ctx, int worker, size_t item)
 {
     (void)worker;
-    band_job *j = ctx;
-    const double t0 = isk_pool_seconds();
-    draw_band(j, item);
-    j->seconds[item] = isk_pool_seconds() - t0;
+    draw_band(ctx, item);
 }
 
 /* Points every band of columns after the first at a copy of the canvas of
@@ -228,7 +223,7 @@ static void bin_share(void *ctx, int worker, size_t t)
 {
     (void)worker;
     band_job *j = ctx;
-    isk__batch_bin(&j->e->view, j->c->height, j->g->store.y, share_start(j, t), share_start(j, t + 1),
+    isk__batch_bin(&j->e->view, j->c->height, j->g->store.y, share_start(j, t), share_start(j, t + 1), j->reach,
                    j->band_of_row, j->e->bins.code, j->count + t * (size_t)j->nb);
 }
 
@@ -271,20 +266,17 @@ static void sort_coordinates(int *v, int m)
     /* after an even number of passes the sorted values are back in v */
 }
 
-/* The cuts 0 = cut[0] <= ... <= cut[nb] = n at the quantiles of the
- * sorted sample v[0..m) of screen coordinates in [0, n): even ones, or
- * those of the shares (share == NULL: even); returns how many of the
- * sample the fullest band holds. */
-static int quantile_cuts(const int *v, int m, int nb, int n, const double *share, int *cut)
+/* The cuts 0 = cut[0] <= ... <= cut[nb] = n at even quantiles of the
+ * sorted sample v[0..m) of screen coordinates in [0, n); returns how many
+ * of the sample the fullest band holds. */
+static int quantile_cuts(const int *v, int m, int nb, int n, int *cut)
 {
     cut[0] = 0;
     cut[nb] = n;
-    double below = 0.0; /* the shares of the bands before cut k */
     for (int k = 1; k < nb; k++) {
-        below += share ? share[k - 1] : 0.0;
         int r = n * k / nb;
         if (m) {
-            size_t q = share ? (size_t)(below * m) : (size_t)m * (size_t)k / (size_t)nb;
+            size_t q = (size_t)m * (size_t)k / (size_t)nb;
             r = v[q < (size_t)m ? q : (size_t)m - 1];
         }
         cut[k] = r < cut[k - 1] ? cut[k - 1] : r > n ? n : r;
@@ -306,8 +298,7 @@ static int quantile_cuts(const int *v, int m, int nb, int n, const double *share
  * scene settled on its floor has most of them on its last row, and a row
  * is never cut), cuts at the quantiles of the columns instead: returns 1
  * for columns, 0 for rows. */
-int fx_place_cuts(const isk_effect *e, const fx_group *g, const isk_canvas *c, int nb, unsigned can,
-                  const fx_shares *shares, int *cut)
+int fx_place_cuts(const isk_effect *e, const fx_group *g, const isk_canvas *c, int nb, int columns_may, int *cut)
 {
     int xs[FX_BAND_SAMPLES], ys[FX_BAND_SAMPLES]; /* whole columns and rows */
     const isk_particles *p = &g->store;
@@ -332,63 +323,19 @@ int fx_place_cuts(const isk_effect *e, const fx_group *g, const isk_canvas *c, i
                 ys[m++] = (int)Y; /* a band holds whole rows */
             }
         }
-    /* rows or columns is decided on even cuts; the shares then place them */
-    const int have = shares && shares->nb == nb;
     sort_coordinates(ys, m);
-    const int by_rows = quantile_cuts(ys, m, nb, c->height, NULL, cut);
+    const int by_rows = quantile_cuts(ys, m, nb, c->height, cut);
     int columns = 0;
-    if ((can & FX_BANDS_COLUMNS) && 4 * by_rows > 5 * ((m + nb - 1) / nb)) { /* rows not within 25 % of even */
-        int col[ISK_POOL_MAX_THREADS + 1];
+    if (columns_may && 4 * by_rows > 5 * ((m + nb - 1) / nb)) { /* rows not within 25 % of even */
+        int col[ISK_TASKS_MAX_WORKERS + 1];
         sort_coordinates(xs, m);
-        const int by_columns = quantile_cuts(xs, m, nb, c->width, NULL, col);
+        const int by_columns = quantile_cuts(xs, m, nb, c->width, col);
         if (4 * by_columns <= 3 * by_rows) { /* columns better by a quarter (else rows, which can be sorted) */
             columns = 1;
             memcpy(cut, col, (size_t)(nb + 1) * sizeof *cut);
         }
     }
-    if (have && shares->columns == columns)
-        quantile_cuts(columns ? xs : ys, m, nb, columns ? c->width : c->height, shares->share, cut);
     return columns;
-}
-
-void fx_shares_update(fx_shares *s, int nb, int columns, const double *seconds)
-{
-    if (nb < 2 || nb > FX_SHARES_MAX) {
-        s->nb = 0;
-        return;
-    }
-    if (s->nb != nb || s->columns != columns) { /* start from even */
-        s->nb = nb;
-        s->columns = columns;
-        for (int k = 0; k < nb; k++)
-            s->share[k] = 1.0 / nb;
-    }
-    double rate[FX_SHARES_MAX], total = 0.0;
-    for (int k = 0; k < nb; k++) {
-        rate[k] = s->share[k] / (seconds[k] > 1e-9 ? seconds[k] : 1e-9);
-        total += rate[k];
-    }
-    if (!(total > 0.0) || !isfinite(total))
-        return;
-    /* half-way (the two sum to 1); a band below the floor is raised to
-     * it, and what that takes comes from the others in proportion to what
-     * they hold above it (they hold at least that much: the floors sum to
-     * a quarter) */
-    const double lo = 0.25 / nb;
-    double raised = 0.0, above = 0.0;
-    for (int k = 0; k < nb; k++) {
-        s->share[k] = 0.5 * (s->share[k] + rate[k] / total);
-        if (s->share[k] < lo) {
-            raised += lo - s->share[k];
-            s->share[k] = lo;
-        } else {
-            above += s->share[k] - lo;
-        }
-    }
-    if (raised > 0.0 && above > 0.0)
-        for (int k = 0; k < nb; k++)
-            if (s->share[k] > lo)
-                s->share[k] -= raised * (s->share[k] - lo) / above;
 }
 
 static int grow(void **p, size_t *cap, size_t n, size_t size)
@@ -427,7 +374,7 @@ static int sort_into_bands(band_job *j)
     if (ok) {
         for (int b = 0; b < j->nb; b++)
             memset(j->band_of_row + j->band[b].r0, b, (size_t)(j->band[b].r1 - j->band[b].r0));
-        isk_pool_for(j->e->pool, nb, 1, bin_share, j);
+        isk_workers_for(&j->e->workers, nb, 1, bin_share, j);
         /* band b's list: share 0's particles, then share 1's, ...: index order */
         size_t total = 0;
         for (size_t b = 0; b < nb; b++) {
@@ -445,7 +392,7 @@ static int sort_into_bands(band_job *j)
                 j->band[b].list = bins->idx + start;
                 start += j->band[b].nlist;
             }
-            isk_pool_for(j->e->pool, nb, 1, fill_share, j);
+            isk_workers_for(&j->e->workers, nb, 1, fill_share, j);
         }
     }
     free(j->band_of_row);
@@ -557,7 +504,7 @@ static fx_band retained_band(const fx_band *whole, const fx_retained *rt, int k)
 }
 
 /* The group's recorded blends drawn again, on the bands they were recorded
- * on (effect_retain.c): the same cuts, so the shares are left as they are. */
+ * on (effect_retain.c): the same cuts. */
 static isk_status replay_bands(isk_effect *e, isk_canvas *c, fx_group *g, const fx_band *whole,
                                const fx_retained *rt, const isk_color *fill)
 {
@@ -583,29 +530,30 @@ static isk_status replay_bands(isk_effect *e, isk_canvas *c, fx_group *g, const 
         j->band[k] = retained_band(whole, rt, k);
     if (rt->columns)
         give_copies(j);
-    isk_pool_for(e->pool, (size_t)j->nb, 2, replay_band, j);
+    isk_workers_for(&e->workers, (size_t)j->nb, 2, replay_band, j);
     return finish(j);
 }
 
-isk_status fx_draw_bands(isk_effect *e, isk_canvas *c, fx_group *g, const fx_band *whole, unsigned can,
-                         double dots_each, const isk_color *fill, fx_shares *shares)
+isk_status fx_draw_bands(isk_effect *e, isk_canvas *c, fx_group *g, const fx_draw_kind *k, const fx_band *whole,
+                         double units, const isk_color *fill)
 {
-    const int threads = e->pool ? isk_pool_threads(e->pool) : 1;
-    fx_retained *rt = (can & FX_BANDS_RETAIN) ? fx_retain_begin(e, c, g, threads) : NULL;
+    const int threads = isk_workers_count(&e->workers);
+    fx_retained *rt = (k->may & FX_MAY_RETAIN) ? fx_retain_begin(e, c, g, threads) : NULL;
     if (rt && rt->nb > 0) {
         rt->replays++;
         return replay_bands(e, c, g, whole, rt, fill);
     }
     band_job *j = NULL;
-    const double work =
-        (double)g->store.count * dots_each + (fill ? (double)c->width * c->height / FX_FILL_PIXELS_A_DOT : 0.0);
-    if (threads >= 2 && work >= e->band_min_work && g->store.count > 0 && c->height >= 2 * threads)
+    const double work = (double)g->store.count * units * k->cost +
+                        (fill ? (double)c->width * c->height / FX_FILL_PIXELS_A_DOT : 0.0);
+    if ((k->may & FX_MAY_BANDS) && threads >= 2 && work >= e->band_min_work && g->store.count > 0 &&
+        c->height >= 2 * threads)
         j = job_new(threads);
     if (!j) { /* on the caller alone (the draw itself needs no memory) */
         if (fill)
             isk_canvas_fill(c, *fill);
         if (!rt)
-            return g->draw(e, c, g, whole);
+            return k->draw(e, c, g, whole);
         fx_band one = *whole;
         one.index = 0;
         const isk_status s = fx_retain_record(e, c, g, &one);
@@ -616,47 +564,42 @@ isk_status fx_draw_bands(isk_effect *e, isk_canvas *c, fx_group *g, const fx_ban
     j->c = c;
     j->g = g;
     j->fill = fill;
-    j->draw = rt ? fx_retain_record : g->draw;
-    int cut[ISK_POOL_MAX_THREADS + 1];
-    const int columns = fx_place_cuts(e, g, c, threads, can, shares, cut);
+    j->draw = rt ? fx_retain_record : k->draw;
+    j->reach = k->reach;
+    int cut[ISK_TASKS_MAX_WORKERS + 1];
+    const int columns = fx_place_cuts(e, g, c, threads, (k->may & FX_MAY_COLUMNS) != 0, cut);
     /* an additive group is split where its bands would be columns (which
      * draw in copies of the canvas anyway, and each scan the whole store;
-     * measured above); not while its blends are recorded (their replays
-     * take bands) */
-    if (!rt && g->def->blend == ISK_BLEND_ADD && (columns || e->split_always) &&
+     * docs/performance.md has the measures); not while its blends are
+     * recorded (their replays take bands) */
+    if (!rt && (k->may & FX_MAY_SPLIT) && g->def->blend == ISK_BLEND_ADD && (columns || e->split_always) &&
         split_particles(j, whole, threads)) {
-        isk_pool_for(e->pool, (size_t)j->nb, 2, run_band, j);
-        isk_pool_for(e->pool, (size_t)j->nb, 1, add_copies, j);
+        isk_workers_for(&e->workers, (size_t)j->nb, 2, run_band, j);
+        isk_workers_for(&e->workers, (size_t)j->nb, 1, add_copies, j);
         return finish(j);
     }
     /* empty bands (cuts that coincide where the particles crowd into a
      * few rows) are dropped: a point then reaches at most 5 bands */
-    for (int k = 0; k < threads; k++)
-        if (cut[k] < cut[k + 1]) {
-            fx_band *b = &j->band[j->nb];
-            *b = *whole;
-            b->index = j->nb++;
+    for (int b = 0; b < threads; b++)
+        if (cut[b] < cut[b + 1]) {
+            fx_band *band = &j->band[j->nb];
+            *band = *whole;
+            band->index = j->nb++;
             if (columns) {
-                b->c0 = cut[k];
-                b->c1 = cut[k + 1];
+                band->c0 = cut[b];
+                band->c1 = cut[b + 1];
             } else {
-                b->r0 = cut[k];
-                b->r1 = cut[k + 1];
+                band->r0 = cut[b];
+                band->r1 = cut[b + 1];
             }
         }
     /* the sorting is by rows: bands of columns read the whole store */
-    if (!(!columns && (can & FX_BANDS_SORT) && j->nb >= FX_BIN_MIN_BANDS && sort_into_bands(j)))
-        for (int k = 0; k < j->nb; k++)
-            j->band[k].list = NULL;
+    if (!(!columns && (k->may & FX_MAY_SORT) && j->nb >= FX_BIN_MIN_BANDS && sort_into_bands(j)))
+        for (int b = 0; b < j->nb; b++)
+            j->band[b].list = NULL;
     if (columns)
         give_copies(j);
-    isk_pool_for(e->pool, (size_t)j->nb, 2, run_band, j);
-    if (shares) { /* with a band dropped, the next cuts start even */
-        if (j->nb == threads)
-            fx_shares_update(shares, j->nb, columns, j->seconds);
-        else
-            shares->nb = 0;
-    }
+    isk_workers_for(&e->workers, (size_t)j->nb, 2, run_band, j);
     if (rt)
         fx_retain_end(rt, j->band, j->nb, columns);
     return finish(j);

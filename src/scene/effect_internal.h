@@ -33,7 +33,9 @@
 #include "iskra/sinlut.h"
 #include "sim/field.h"
 #include "iskra/texture.h"
+#include "sim/rest.h"
 #include "sim/stage.h"
+#include "sim/workers.h"
 #include "view/world_batch.h"
 
 typedef struct fx_group fx_group;
@@ -75,13 +77,11 @@ typedef struct fx_step_kind {
 
 #define FX_MAX_STEP_STAGES 4
 
-/* Draws a group's store (effect_render.c picks one per group); ISK_ERR_NOMEM
- * when a sprite could not be baked. */
 /* What one band of a group's draw needs (effect_bands.c). */
 typedef struct fx_band {
     int r0, r1;                                       /* the canvas rows [r0, r1) it blends */
     int c0, c1;                                       /* and columns [c0, c1) (only the batched dots
-                                                       * get bands of columns: FX_BANDS_COLUMNS) */
+                                                       * get bands of columns: FX_MAY_COLUMNS) */
     size_t first, end;                                /* the particles [first, end) of the store, */
     const uint32_t *list;                             /* or, when not NULL, these, */
     size_t nlist;                                     /* in this order (effect_bands.c) */
@@ -101,28 +101,10 @@ typedef struct fx_bins {
     long splits;                   /* draws whose particles were split among the threads (tests) */
 } fx_bins;
 
+/* Draws one band of a group's store (a draw kind's routine); ISK_ERR_NOMEM
+ * when a sprite could not be baked. */
 typedef isk_status (*fx_draw_fn)(isk_effect *e, isk_canvas *c, fx_group *g, const fx_band *b);
-
-/* What a group's update costs on the caller alone (effect.c's
- * update_on_pool), measured now and then. */
-typedef struct fx_step_cost {
-    double per_particle;          /* seconds, at the last measure (0: not yet) */
-    size_t count;                 /* the group's particles then */
-    long since;                   /* updates since */
-    double pool_seconds;          /* its last update on the threads, whole (0: none since) */
-} fx_step_cost;
-
-/* How one of a group's banded draws shares its particles among the bands
- * (effect_bands.c): each band's share, which the cuts follow, moved after
- * every threaded draw toward what each band drew in the time it took, so
- * a band on a slower core gets fewer.  nb == 0: even shares.  Only the
- * time changes with them, never a byte. */
-enum { FX_SHARES_MAX = 16 };
-typedef struct fx_shares {
-    int nb;                       /* the bands they are for, or 0 */
-    int columns;                  /* bands of columns (else rows) */
-    double share[FX_SHARES_MAX];  /* summing to 1 */
-} fx_shares;
+typedef struct fx_draw_kind fx_draw_kind; /* effect_draws.c: a row per draw kind */
 
 /* A group at rest drawn again from the blends its last draw recorded
  * (effect_retain.c, view/world_batch.h's retained dots). */
@@ -174,10 +156,9 @@ struct fx_group {
     isk_rest rest;                 /* which blocks rest; forgotten on a recompile, a cull, a removal */
     int cull_unordered;            /* the order of its particles is seen by nothing (effect_compile.c) */
     int keep_on_canvas;            /* reflect walls hold it: one on the far edge is drawn on it */
-    fx_draw_fn draw;
-    fx_shares shares, trail_shares; /* its particles' and its trails' banded draws */
+    const fx_draw_kind *draw;      /* its particles' draw kind (effect_draws.c) */
     fx_retained retained;          /* its batched dots' blends while it rests (effect_retain.c) */
-    fx_step_cost step_cost;        /* whether its update pays on the threads (effect.c) */
+    long shared_updates;           /* substeps whose update was shared out among the workers (tests) */
 
     /* explosions (effect_group.c) */
     isk_multi_coulomb mc;          /* ISK_EXPLOSION_MULTI_COULOMB */
@@ -229,9 +210,11 @@ struct isk_effect {
     int ngroups;
     int *draw_order;               /* group indices sorted by (order, index) */
     isk_scratch scratch;           /* for the caller's own block runs (births) */
-    struct isk_pool *pool;         /* the threads the groups' pipelines run on */
+    isk_workers workers;           /* who runs the groups' blocks and the draws' bands: its own
+                                      threads or the caller's (isk_effect_set_tasks) */
     int no_rest;                   /* 1: no block rests, every stage runs (the tests' reference) */
-    int pool_always;               /* tests: every update that can be shared out is, however small */
+    double update_min_work;        /* a group's update is shared out among the workers only from this
+                                      much work (effect.c's FX_UPDATE_MIN_WORK; tests set 0) */
     double band_min_work;          /* a group's draw is shared out over the threads only from this much
                                       work, in batched coverage dots (FX_BAND_MIN_WORK; the tests that
                                       compare thread counts set 0, so every size is cut into bands) */
@@ -319,43 +302,48 @@ void fx_prewarm_offsets(const isk_effect_def *d, double *frames);
 
 /* effect_render.c */
 isk_status fx_render(isk_effect *e, isk_canvas *c);
-fx_draw_fn fx_choose_draw(const fx_group *g);
-/* effect_bands.c: g->draw over the canvas, in bands of rows on the
- * effect's threads when the group's draw is worth it (whole: the band of
- * the canvas, with anything prepared for the draw; dots_each: what a
- * particle's draw costs, in batched coverage dots: fx_draw_cost; fill:
- * NULL, or a colour the canvas is filled with first, each band filling its
- * own pixels on its own thread, so they start in its caches; shares: how
- * this draw shares its particles among the bands, updated after it, or
- * NULL for even shares). */
-/* What a group's draw function can take (fx_draw_bands): its particles
- * sorted into bands of rows first (dots and pixels, which reach at most a
- * row beyond their own), bands of columns instead of rows (the batched
- * dots: a scene settled on its floor has its particles on one row).
- * Where a group that adds (ISK_BLEND_ADD) would take columns, its
- * particles are split among the threads instead (effect_bands.c).
- * FX_BANDS_RETAIN: the group's draw is the batched dots, whose blends may
- * be recorded while it rests and drawn again (effect_retain.c). */
-enum { FX_BANDS_SORT = 1, FX_BANDS_COLUMNS = 2, FX_BANDS_RETAIN = 4 };
-isk_status fx_draw_bands(isk_effect *e, isk_canvas *c, fx_group *g, const fx_band *whole, unsigned can,
-                         double dots_each, const isk_color *fill, fx_shares *shares);
+
+/* effect_draws.c: the draw kinds, one row each (the meaning of every field
+ * is written there, above the rows).  The band scheduler reads a group's
+ * row and nothing else. */
+enum { FX_MAY_BANDS = 1, FX_MAY_SORT = 2, FX_MAY_COLUMNS = 4, FX_MAY_SPLIT = 8, FX_MAY_RETAIN = 16 };
+struct fx_draw_kind {
+    const char *name;
+    fx_draw_fn draw;                                                 /* one band of the group */
+    isk_status (*prepare)(isk_effect *e, fx_group *g, fx_band *whole); /* before the bands, or NULL */
+    double cost;                                                     /* a particle, in batched coverage dots */
+    int reach;                                                       /* FX_MAY_SORT: rows beyond its own */
+    unsigned may;                                                    /* FX_MAY_*: 0, drawn whole on the caller */
+};
+extern const fx_draw_kind fx_kind_dots, fx_kind_browser_dots, fx_kind_pixels, fx_kind_styled_dots,
+    fx_kind_styled_pixels, fx_kind_discs, fx_kind_sprites, fx_kind_textures, fx_kind_nothing;
+const fx_draw_kind *fx_choose_draw(const fx_group *g);
+
+/* effect_bands.c: kind k's draw of g over the canvas, in bands on the
+ * effect's workers when its row allows and the draw is worth it (whole:
+ * the band of the canvas, with anything the kind prepared; units: the
+ * kind's cost is per particle times this, a trail's points; fill: NULL, or
+ * a colour the canvas is filled with first, each band filling its own
+ * pixels on its own thread, so they start in its caches). */
+isk_status fx_draw_bands(isk_effect *e, isk_canvas *c, fx_group *g, const fx_draw_kind *k, const fx_band *whole,
+                         double units, const isk_color *fill);
 /* The band of g's whole draw: every row and column of c, every particle. */
 fx_band fx_band_whole(const isk_canvas *c, const fx_group *g);
 /* The nb bands' cuts of the canvas for g's draw, at the quantiles of a
- * sample of its particles' screen rows (or columns, when `can` allows them
- * and the rows cannot share the particles): cut[0] = 0 <= ... <= cut[nb]
- * = the canvas's height (or width); returns 1 for columns, 0 for rows.
- * The cuts only share out the work: any cuts give the same bytes. */
-int fx_place_cuts(const isk_effect *e, const fx_group *g, const isk_canvas *c, int nb, unsigned can,
-                  const fx_shares *shares, int *cut);
-/* The shares after a draw in nb bands whose cuts followed *s (or were even)
- * took seconds[k] each: moved half-way toward each band's rate (its share
- * over its time), each kept at 1/(4 nb) at least, so that a band that
- * stalled once (its thread descheduled) is not starved for long. */
-void fx_shares_update(fx_shares *s, int nb, int columns, const double *seconds);
+ * sample of its particles' screen rows (or columns, when `columns` allows
+ * them and the rows cannot share the particles): cut[0] = 0 <= ... <=
+ * cut[nb] = the canvas's height (or width); returns 1 for columns, 0 for
+ * rows.  The cuts only share out the work: any cuts give the same bytes;
+ * they depend on the particles alone, so they are the same on every run. */
+int fx_place_cuts(const isk_effect *e, const fx_group *g, const isk_canvas *c, int nb, int columns, int *cut);
 /* Below this much work a group's draw runs on the caller alone, in batched
- * coverage dots (effect_bands.c says how it was measured). */
+ * coverage dots (docs/performance.md, "When a draw is shared out"). */
 #define FX_BAND_MIN_WORK 50000.0
+/* Below this much work, in drifts of a particle (isk_stage_kind.cost), a
+ * group's update runs on the caller alone: waking the workers would cost
+ * more than they save (docs/performance.md, "When an update is shared
+ * out"). */
+#define FX_UPDATE_MIN_WORK 150000.0
 void fx_bins_free(fx_bins *b);
 isk_status fx_bake_ramps(fx_group *g, isk_error *err);
 void fx_free_ramps(fx_group *g);

@@ -121,7 +121,7 @@ isk_status fx_retain_record(isk_effect *e, isk_canvas *c, fx_group *g, const fx_
     isk__dot_recording rec = {m ? malloc(m * sizeof *rec.rec) : NULL, 0, 0};
     if (m && !rec.rec) { /* drawn in full, not recorded */
         rt->failed[k] = 1;
-        return g->draw(e, c, g, b);
+        return g->draw->draw(e, c, g, b);
     }
     const double *x = g->store.x, *y = g->store.y;
     if (!b->list) {

@@ -48,6 +48,11 @@ static isk_status draw_trails(isk_effect *e, isk_canvas *c, fx_group *g, const f
     return ISK_OK;
 }
 
+/* A trail's stroke blends only the band's rows (isk__stroke_trail_rows);
+ * its reach is its width, so a band reads every particle; cost: a dot a
+ * segment, times the points (fx_trail_render's units). */
+static const fx_draw_kind trails = {"trails", draw_trails, NULL, 1.0, 0, FX_MAY_BANDS | FX_MAY_SPLIT};
+
 isk_status fx_trail_render(isk_effect *e, isk_canvas *c, fx_group *g, const isk_color *fill)
 {
     if (!g->store.trail) {
@@ -56,11 +61,5 @@ isk_status fx_trail_render(isk_effect *e, isk_canvas *c, fx_group *g, const isk_
         return ISK_OK;
     }
     const fx_band whole = fx_band_whole(c, g);
-    /* the band machinery runs the group's draw: the trails' for this pass */
-    const fx_draw_fn own = g->draw;
-    g->draw = draw_trails;
-    isk_status s = fx_draw_bands(e, c, g, &whole, 0u, (double)g->store.trail_len, fill,
-                                 &g->trail_shares); /* a segment a point */
-    g->draw = own;
-    return s;
+    return fx_draw_bands(e, c, g, &trails, &whole, (double)g->store.trail_len, fill); /* a segment a point */
 }

@@ -9,7 +9,6 @@
 #include <signal.h>
 #include <stdatomic.h>
 #include <stdlib.h>
-#include <time.h>
 #include <unistd.h>
 
 /* The fewest items a thread takes at a time (fewer only at the end of a
@@ -33,15 +32,11 @@
 enum { CHUNK = 64 };
 
 /* How long the caller waits awake for workers that are all running (then
- * asleep): the last claims of a job are one chunk each. */
-#define CALLER_SPIN_SECONDS 5e-4
-
-/* A worker's scratch on cache lines of its own (and 64-byte aligned, for
- * the vector loops over it): the slots are a whole number of lines. */
-typedef union pool_scratch {
-    isk_scratch s;
-    unsigned char line[(sizeof(isk_scratch) + 63) / 64 * 64];
-} pool_scratch;
+ * asleep), in spin-loop hints: the last claims of a job are one chunk
+ * each.  A count, not a time: the library reads no clock, and the wait
+ * only decides how soon the caller notices, never what is computed
+ * (docs/performance.md, "Threads", has what it is worth). */
+#define CALLER_SPIN_ROUNDS 32768
 
 /* A thread's own part of a job's items, on cache lines of its own. */
 typedef struct pool_range {
@@ -51,12 +46,11 @@ typedef struct pool_range {
 
 struct isk_pool {
     int threads;
-    pool_scratch *scratch;     /* one per worker, from a 64-byte boundary */
     pthread_t *tid;            /* threads - 1 of them */
     pthread_mutex_t lock;
     pthread_cond_t start, done;
     /* the current job (set under the lock before generation moves on) */
-    isk_pool_fn fn;
+    isk_task_fn *fn;
     void *ctx;
     size_t chunk;
     pool_range *range;         /* thread t's own items, [t n / threads, (t+1) n / threads) */
@@ -113,25 +107,13 @@ static void spin_pause(void)
 #endif
 }
 
-double isk_pool_seconds(void)
+/* Spins until *v is 0 or `rounds` hints have passed. */
+static void spin_until_zero(atomic_int *v, long rounds)
 {
-    struct timespec t;
-    clock_gettime(CLOCK_MONOTONIC, &t);
-    return (double)t.tv_sec + 1e-9 * (double)t.tv_nsec;
-}
-
-/* Spins until *v is 0 or `seconds` have passed. */
-static void spin_until_zero(atomic_int *v, double seconds)
-{
-    const double until = isk_pool_seconds() + seconds;
-    for (;;) {
-        for (int k = 0; k < 256; k++) {
-            if (atomic_load(v) == 0)
-                return;
-            spin_pause();
-        }
-        if (isk_pool_seconds() >= until)
+    for (long k = 0; k < rounds; k++) {
+        if (atomic_load(v) == 0)
             return;
+        spin_pause();
     }
 }
 
@@ -162,7 +144,7 @@ static void *worker_main(void *arg)
 int isk_pool_online_cores(void)
 {
     long n = sysconf(_SC_NPROCESSORS_ONLN);
-    return n < 1 ? 1 : n > ISK_POOL_MAX_THREADS ? ISK_POOL_MAX_THREADS : (int)n;
+    return n < 1 ? 1 : n > ISK_TASKS_MAX_WORKERS ? ISK_TASKS_MAX_WORKERS : (int)n;
 }
 
 isk_status isk_pool_create(isk_pool **out, int threads)
@@ -170,17 +152,15 @@ isk_status isk_pool_create(isk_pool **out, int threads)
     if (!out)
         return ISK_ERR_NULL;
     *out = NULL;
-    if (threads < 1 || threads > ISK_POOL_MAX_THREADS)
+    if (threads < 1 || threads > ISK_TASKS_MAX_WORKERS)
         return ISK_ERR_RANGE;
     isk_pool *p = calloc(1, sizeof *p);
     if (!p)
         return ISK_ERR_NOMEM;
     p->threads = threads;
-    p->scratch = aligned_alloc(64, sizeof *p->scratch * (size_t)threads);
     p->range = aligned_alloc(64, sizeof *p->range * (size_t)threads);
     p->tid = calloc((size_t)threads, sizeof *p->tid);
-    if (!p->scratch || !p->range || !p->tid) {
-        free(p->scratch);
+    if (!p->range || !p->tid) {
         free(p->range);
         free(p->tid);
         free(p);
@@ -239,7 +219,6 @@ void isk_pool_destroy(isk_pool *p)
     pthread_mutex_destroy(&p->lock);
     pthread_cond_destroy(&p->start);
     pthread_cond_destroy(&p->done);
-    free(p->scratch);
     free(p->range);
     free(p->tid);
     free(p);
@@ -247,13 +226,11 @@ void isk_pool_destroy(isk_pool *p)
 
 int isk_pool_threads(const isk_pool *p) { return p ? p->threads : 1; }
 
-isk_scratch *isk_pool_scratch(isk_pool *p, int worker) { return &p->scratch[worker].s; }
-
-void isk_pool_for(isk_pool *p, size_t n, size_t min_items, isk_pool_fn fn, void *ctx)
+void isk_pool_for(isk_pool *p, size_t n, isk_task_fn *fn, void *ctx)
 {
     if (n == 0)
         return;
-    if (p->threads == 1 || n < min_items || n < 2) {
+    if (p->threads == 1 || n < 2) {
         for (size_t i = 0; i < n; i++)
             fn(ctx, 0, i);
         return;
@@ -283,7 +260,7 @@ void isk_pool_for(isk_pool *p, size_t n, size_t min_items, isk_pool_fn fn, void 
      * it from waking (it woke 210-320 us late instead of 13 us: the two
      * virtual cores share a physical one at times). */
     if (atomic_load(&p->awake) == p->threads - 1)
-        spin_until_zero(&p->running, CALLER_SPIN_SECONDS);
+        spin_until_zero(&p->running, CALLER_SPIN_ROUNDS);
     pthread_mutex_lock(&p->lock);
     while (atomic_load(&p->running) > 0)
         pthread_cond_wait(&p->done, &p->lock);

@@ -2,7 +2,8 @@
 /* The block runner (see stage.h). */
 #include "sim/stage.h"
 
-#include "sim/pool.h"
+#include "sim/rest.h"
+#include "sim/workers.h"
 
 #include <stdlib.h>
 #include <string.h>
@@ -22,332 +23,74 @@ isk_stage *isk_pipeline_add(isk_pipeline *pl, const isk_stage_kind *kind)
     return s;
 }
 
-/* ---- blocks at rest ------------------------------------------------------ */
-
-/* A block's state: which axes rest (ISK_REST_X, ISK_REST_Y; both: the
- * block rests), and LOOKED_AT: at the last look, the samples of an axis
- * that does not rest were as at the look before, so the next step keeps
- * the moving axes' start and compares. */
-enum { AWAKE = 0, AT_REST = ISK_REST_X | ISK_REST_Y, LOOKED_AT = 4 };
-
-/* An awake block is looked at once in this many runs, blocks in turn:
- * after its step, while it is in L1, four of its particles are compared
- * with what they were at its last look (a hash of them per axis, kept for
- * the next: 24 bytes a block, a fifth of a byte a particle).  Only a
- * block whose samples stood still pays for the exact test, a copy and a
- * compare of the whole block, which cost about two steps of it: looking at
- * every sixteenth block that way slowed a moving layer by 12-20 %, and so
- * did reading samples before the step (16 cache lines touched ahead of the
- * stream, each a wait for memory).  A resting particle's velocity is not
- * zero (with semi-implicit Euler it keeps the offset that brings it back
- * to the wall), so no sign as cheap tells rest. */
-#define REST_LOOK_EVERY 4
-
-void isk_rest_init(isk_rest *r)
+double isk_pipeline_cost(const isk_pipeline *pl, int from)
 {
-    memset(r, 0, sizeof *r);
+    double c = 0.0;
+    for (int k = from; k < pl->n; k++)
+        c += pl->stage[k].kind->cost ? pl->stage[k].kind->cost(&pl->stage[k]) : 1.0;
+    return c;
 }
 
-void isk_rest_free(isk_rest *r)
-{
-    const uint64_t changes = r->changes + 1; /* what was at rest is no more */
-    free(r->block);
-    free(r->stand_in);
-    isk_rest_init(r);
-    r->changes = changes;
-}
+/* ---- the runner ------------------------------------------------------------ */
 
-void isk_rest_forget(isk_rest *r, size_t from)
-{
-    if (from < r->valid) {
-        r->valid = from;
-        r->changes++;
-    }
-}
-
-void isk_rest_wake_dying(isk_rest *r, const isk_particles *p)
-{
-    const size_t n = p->count < r->valid ? p->count : r->valid;
-    for (size_t k = 0; k * ISK_SIM_BLOCK < n; k++) {
-        if (!(r->block[k].state & AT_REST))
-            continue; /* an awake block is stepped in full anyway */
-        const size_t o = k * ISK_SIM_BLOCK, len = n - o < ISK_SIM_BLOCK ? n - o : ISK_SIM_BLOCK;
-        const double *age = p->age + o, *life = p->life + o;
-        int dying = 0;
-        for (size_t i = 0; i < len; i++)
-            dying |= age[i] >= life[i];
-        if (dying) {
-            r->block[k].state = AWAKE;
-            r->changes++;
-        }
-    }
-}
-
-/* How many leading blocks of a store of `count` particles the states still
- * describe: all of them when those are the particles described, else the
- * whole blocks below the first change (a partial last block only when it
- * is the one they describe). */
-static size_t described_blocks(const isk_rest *r, size_t count)
-{
-    return count == r->valid ? (count + ISK_SIM_BLOCK - 1) / ISK_SIM_BLOCK
-                             : (count < r->valid ? count : r->valid) / ISK_SIM_BLOCK;
-}
-
-int isk_rest_all(const isk_rest *r, size_t count)
-{
-    const size_t blocks = (count + ISK_SIM_BLOCK - 1) / ISK_SIM_BLOCK;
-    if (count == 0 || count != r->valid || blocks > r->cap)
-        return 0;
-    for (size_t k = 0; k < blocks; k++)
-        if (r->block[k].state != AT_REST)
-            return 0;
-    return 1;
-}
-
-size_t isk_rest_blocks(const isk_rest *r, size_t count, unsigned axes)
-{
-    size_t n = 0, blocks = described_blocks(r, count);
-    for (size_t k = 0; k < blocks && k < r->cap; k++)
-        n += (r->block[k].state & axes) == axes;
-    return n;
-}
-
-isk_rest_role isk_rest_skipped(const isk_stage *st)
-{
-    (void)st;
-    return ISK_REST_SKIPPED;
-}
-
-isk_rest_role isk_rest_beside(const isk_stage *st)
-{
-    (void)st;
-    return ISK_REST_BESIDE;
-}
-
-int isk_pipeline_rest_prefix(const isk_pipeline *pl)
-{
-    int k = 0;
-    while (k < pl->n && pl->stage[k].kind->rest && pl->stage[k].kind->rest(&pl->stage[k]) == ISK_REST_SKIPPED)
-        k++;
-    for (int j = k; j < pl->n; j++)
-        if (!pl->stage[j].kind->rest || pl->stage[j].kind->rest(&pl->stage[j]) != ISK_REST_BESIDE)
-            return 0;
-    return k;
-}
-
-/* Readies the states for a run over [0, end) with step h: blocks that
- * reach past the particles they describe (and every block after a change
- * of step) wake, and after the run the states describe [0, end).  Returns
- * how many leading stages a block at rest skips; 0 when there is nothing
- * to gain or no memory for the states: the run then steps every block in
- * full, and nothing is described. */
-static int rest_ready(isk_rest *r, const isk_pipeline *pl, size_t end, double h, int workers)
-{
-    size_t blocks = (end + ISK_SIM_BLOCK - 1) / ISK_SIM_BLOCK;
-    if (!(r->h == h)) /* == on purpose: a bit-identical step, NaN never */
-        isk_rest_forget(r, 0);
-    r->h = h;
-    const int prefix = isk_pipeline_rest_prefix(pl);
-    if (prefix == 0 || blocks == 0) {
-        isk_rest_forget(r, 0);
-        return 0;
-    }
-    if (workers > r->workers) {
-        double *a = calloc((size_t)workers * 2 * ISK_SIM_BLOCK, sizeof *a);
-        if (!a) {
-            isk_rest_forget(r, 0);
-            return 0;
-        }
-        free(r->stand_in);
-        r->stand_in = a;
-        r->workers = workers;
-    }
-    if (blocks > r->cap) {
-        size_t cap = blocks + blocks / 2;
-        isk_rest_block *a = realloc(r->block, cap * sizeof *a);
-        if (!a) {
-            isk_rest_forget(r, 0);
-            return 0;
-        }
-        r->block = a;
-        r->cap = cap;
-    }
-    const size_t kept = described_blocks(r, end); /* the others wake */
-    memset(r->block + kept, 0, (blocks - kept) * sizeof *r->block); /* awake */
-    r->changes += kept < blocks;
-    r->valid = end;
-    return prefix;
-}
-
-/* An axis's position and velocity columns in a block. */
-static double **axis_col(isk_block *b, int axis, int c)
-{
-    return axis ? (c ? &b->vy : &b->y) : (c ? &b->vx : &b->x);
-}
-
-/* The skipped stages on a block looked at: the start of the axes that do
- * not rest kept, then compared bit for bit (a -0 that comes back as +0 is
- * a change).  Returns the axes that stood still. */
-static __attribute__((noinline)) unsigned axes_in_place(const isk_pipeline *pl, int prefix, isk_block *b,
-                                                        double h)
-{
-    double start[2][2][ISK_SIM_BLOCK];
-    for (int a = 0; a < 2; a++)
-        for (int c = 0; c < 2 && !(b->frozen >> a & 1u); c++)
-            memcpy(start[a][c], *axis_col(b, a, c), b->n * sizeof(double));
-    for (int k = 0; k < prefix; k++)
-        pl->stage[k].kind->run(&pl->stage[k], b, h);
-    unsigned still = 0;
-    for (int a = 0; a < 2; a++)
-        if (!(b->frozen >> a & 1u) && !memcmp(start[a][0], *axis_col(b, a, 0), b->n * sizeof(double)) &&
-            !memcmp(start[a][1], *axis_col(b, a, 1), b->n * sizeof(double)))
-            still |= 1u << a;
-    return still;
-}
-
-/* After a step: a hash of four particles' position and velocity on each
- * axis that does not rest, against the block's samples, which then take
- * them.  Returns the axes that (most likely) stood still since the last
- * look; the exact look decides. */
-static unsigned samples_still(isk_block *b, uint64_t sample[2])
-{
-    unsigned still = 0;
-    for (int a = 0; a < 2; a++) {
-        if (b->frozen >> a & 1u)
-            continue;
-        uint64_t h = 0;
-        for (int j = 0; j < 4; j++)
-            for (int c = 0; c < 2; c++) {
-                uint64_t bits;
-                memcpy(&bits, *axis_col(b, a, c) + (size_t)j * (b->n - 1) / 3, sizeof bits);
-                h = (h ^ bits) * 0x9e3779b97f4a7c15u;
-                h ^= h >> 29;
-            }
-        still |= (unsigned)(h == sample[a]) << a;
-        sample[a] = h;
-    }
-    return still;
-}
-
-/* The skipped stages on a block, with the columns of its resting axis
- * (rb->state's) replaced by the worker's stand-ins: the stages are per
- * axis (ISK_REST_SKIPPED), so what they make of the stand-ins changes
- * nothing of the other axis, and the resting axis stays as it is.  Looks
- * at it when it is its turn, or when its samples stood still. */
-static void run_skipped(const isk_pipeline *pl, int prefix, isk_block *b, double h, isk_rest_block *rb, int turn,
-                        double *stand_in)
-{
-    const unsigned resting = rb->state & AT_REST;
-    if (resting) {
-        const int a = resting == ISK_REST_X ? 0 : 1;
-        *axis_col(b, a, 0) = stand_in;
-        *axis_col(b, a, 1) = stand_in + ISK_SIM_BLOCK;
-        b->frozen = resting;
-    }
-    if (rb->state & LOOKED_AT) {
-        rb->state = (unsigned char)(resting | axes_in_place(pl, prefix, b, h));
-    } else {
-        for (int k = 0; k < prefix; k++)
-            pl->stage[k].kind->run(&pl->stage[k], b, h);
-        if (turn && samples_still(b, rb->sample))
-            rb->state |= LOOKED_AT;
-    }
-}
-
-/* Every stage, in order, on the block [o, o + n); with a record, the
- * skipped stages only on the axes that do not rest, and looked at when it
- * is the block's turn (phase: the run's). */
-static void run_block(const isk_pipeline *pl, isk_particles *p, size_t o, size_t n, double h, isk_scratch *s,
-                      int prefix, isk_rest_block *rb, size_t phase, double *stand_in)
-{
-    isk_block b = {p, o, n, p->x + o, p->y + o, p->vx + o, p->vy + o, p->m + o, s, 0};
-    int k = 0;
-    if (rb) {
-        if (rb->state != AT_REST) {
-            isk_block skipped = b; /* its columns may become stand-ins; b keeps the store's */
-            run_skipped(pl, prefix, &skipped, h, rb, (o / ISK_SIM_BLOCK + phase) % REST_LOOK_EVERY == 0,
-                        stand_in);
-        }
-        k = prefix;
-    }
-    for (; k < pl->n; k++)
-        pl->stage[k].kind->run(&pl->stage[k], &b, h);
-}
-
-void isk_pipeline_run(const isk_pipeline *pl, isk_particles *p, size_t begin, size_t end, double h,
-                      isk_scratch *s)
-{
-    for (size_t o = begin; o < end; o += ISK_SIM_BLOCK)
-        run_block(pl, p, o, end - o < ISK_SIM_BLOCK ? end - o : ISK_SIM_BLOCK, h, s, 0, NULL, 0, NULL);
-}
-
-void isk_pipeline_run_rest(const isk_pipeline *pl, isk_particles *p, size_t end, double h, isk_scratch *s,
-                           isk_rest *rest)
-{
-    const int prefix = rest ? rest_ready(rest, pl, end, h, 1) : 0;
-    if (!prefix) {
-        isk_pipeline_run(pl, p, 0, end, h, s);
-        return;
-    }
-    const size_t phase = rest->runs++ % REST_LOOK_EVERY;
-    for (size_t o = 0; o < end; o += ISK_SIM_BLOCK)
-        run_block(pl, p, o, end - o < ISK_SIM_BLOCK ? end - o : ISK_SIM_BLOCK, h, s, prefix,
-                  rest->block + o / ISK_SIM_BLOCK, phase, rest->stand_in);
-}
-
-typedef struct pool_run {
+typedef struct run_job {
     const isk_pipeline *pl;
     isk_particles *p;
     size_t begin, end;
     double h;
-    isk_pool *pool;
-    int prefix;
-    isk_rest_block *block; /* NULL: no blocks at rest; else the record of the block at begin */
-    size_t phase;
-    double *stand_in; /* the workers' stand-ins, one after the other */
-} pool_run;
+    isk_workers *workers; /* NULL: on the caller */
+    isk_rest *rest;       /* NULL: no block rests in this run */
+    int prefix;           /* the stages a block at rest skips */
+    size_t phase;         /* the rest's look schedule */
+} run_job;
 
-/* Each block's record is its own: workers never share one. */
-static void run_item(void *ctx, int worker, size_t item)
+/* Every stage, in order, on block `item` of the run; a block under the
+ * rest's watch runs its skippable stages through it (rest.c), then the
+ * others. */
+static void run_block(const run_job *r, size_t item, int worker, isk_scratch *s)
 {
-    const pool_run *r = ctx;
-    size_t o = r->begin + item * ISK_SIM_BLOCK;
-    run_block(r->pl, r->p, o, r->end - o < ISK_SIM_BLOCK ? r->end - o : ISK_SIM_BLOCK, r->h,
-              isk_pool_scratch(r->pool, worker), r->prefix, r->block ? r->block + item : NULL, r->phase,
-              r->stand_in ? r->stand_in + (size_t)worker * 2 * ISK_SIM_BLOCK : NULL);
-}
-
-static int run_pool(pool_run *r)
-{
-    if (r->end <= r->begin)
-        return 0;
-    size_t blocks = (r->end - r->begin + ISK_SIM_BLOCK - 1) / ISK_SIM_BLOCK;
-    isk_pool_for(r->pool, blocks, ISK_PIPELINE_MIN_PARALLEL_BLOCKS, run_item, r);
-    /* what the workers' motion stages found, combined after the join */
-    int nonfinite = 0;
-    for (int w = 0; w < isk_pool_threads(r->pool); w++) {
-        isk_scratch *s = isk_pool_scratch(r->pool, w);
-        nonfinite |= s->nonfinite;
-        s->nonfinite = 0;
+    const size_t o = r->begin + item * ISK_SIM_BLOCK;
+    const size_t n = r->end - o < ISK_SIM_BLOCK ? r->end - o : ISK_SIM_BLOCK;
+    isk_particles *p = r->p;
+    isk_block b = {p, o, n, p->x + o, p->y + o, p->vx + o, p->vy + o, p->m + o, s, 0};
+    int k = 0;
+    if (r->rest) {
+        isk_rest_step(r->rest, r->pl, r->prefix, &b, r->phase, worker);
+        k = r->prefix;
     }
-    return nonfinite;
+    for (; k < r->pl->n; k++)
+        r->pl->stage[k].kind->run(&r->pl->stage[k], &b, r->h);
 }
 
-int isk_pipeline_run_pool(const isk_pipeline *pl, isk_particles *p, size_t begin, size_t end, double h,
-                          isk_pool *pool)
+static void run_item(void *task, int worker, size_t item)
 {
-    pool_run r = {pl, p, begin, end, h, pool, 0, NULL, 0, NULL};
-    return run_pool(&r);
+    const run_job *r = task;
+    run_block(r, item, worker, isk_workers_scratch(r->workers, worker));
 }
 
-int isk_pipeline_run_pool_rest(const isk_pipeline *pl, isk_particles *p, size_t end, double h, isk_pool *pool,
-                               isk_rest *rest)
+int isk_pipeline_run(const isk_pipeline *pl, isk_particles *p, size_t begin, size_t end, double h, isk_scratch *s,
+                     const isk_run_context *ctx)
 {
-    const int prefix = rest ? rest_ready(rest, pl, end, h, isk_pool_threads(pool)) : 0;
-    if (!prefix)
-        return isk_pipeline_run_pool(pl, p, 0, end, h, pool);
-    pool_run r = {pl, p, 0, end, h, pool, prefix, rest->block, rest->runs++ % REST_LOOK_EVERY, rest->stand_in};
-    return run_pool(&r);
+    run_job r = {pl, p, begin, end, h, ctx ? ctx->workers : NULL, NULL, 0, 0};
+    if (end <= begin)
+        return s->nonfinite;
+    const int workers = r.workers ? isk_workers_count(r.workers) : 1;
+    if (ctx && ctx->rest && begin == 0 && (r.prefix = isk_rest_begin(ctx->rest, pl, end, h, workers, &r.phase)))
+        r.rest = ctx->rest;
+    const size_t blocks = (end - begin + ISK_SIM_BLOCK - 1) / ISK_SIM_BLOCK;
+    if (!r.workers) {
+        for (size_t i = 0; i < blocks; i++)
+            run_block(&r, i, 0, s);
+        return s->nonfinite;
+    }
+    isk_workers_for(r.workers, blocks, ISK_PIPELINE_MIN_PARALLEL_BLOCKS, run_item, &r);
+    /* what the workers' motion stages found, combined after the join */
+    for (int w = 0; w < workers; w++) {
+        isk_scratch *ws = isk_workers_scratch(r.workers, w);
+        s->nonfinite |= ws->nonfinite;
+        ws->nonfinite = 0;
+    }
+    return s->nonfinite;
 }
 
 void isk_stage_describe_line(const isk_stage *st, FILE *out)

@@ -21,7 +21,7 @@
  *     isk_stage *s = isk_pipeline_add(&pl, &isk_stage_motion);   // NULL when full
  *     s->u.motion.method = ISK_INTEGRATE_SEMI_EULER;
  *     s->u.motion.forces = &forces;
- *     isk_pipeline_run(&pl, &store, 0, store.count, h, &scratch);
+ *     isk_pipeline_run(&pl, &store, 0, store.count, h, &scratch, NULL);
  *
  * A stage kind is a row of plain data: its name (for `iskra describe`), its
  * kernel, and a function that writes its parameters in words.  Adding a
@@ -73,7 +73,7 @@ typedef struct isk_stage_osc {
     double omega_min, omega_max, amp_min, amp_max;   /* for describe only */
 } isk_stage_osc;
 
-/* What a stage is to a block at rest (isk_rest, below). */
+/* What a stage is to a block at rest (src/sim/rest.h). */
 typedef enum isk_rest_role {
     ISK_REST_BREAKS = 0, /* may move a block at rest, or reads a clock, a random stream, other
                             particles or columns beyond x, y, vx, vy, m: no block rests */
@@ -90,6 +90,10 @@ typedef struct isk_stage_kind {
     void (*run)(const isk_stage *st, isk_block *b, double h);
     void (*describe)(const isk_stage *st, FILE *out);        /* the parameters, in words */
     isk_rest_role (*rest)(const isk_stage *st);              /* NULL: ISK_REST_BREAKS */
+    double (*cost)(const isk_stage *st);                     /* a particle's step, in drifts (the drift
+                                                                of a particle is 1); NULL: 1.  What
+                                                                decides whether a run is shared out
+                                                                among workers, never a byte */
 } isk_stage_kind;
 
 /* The axes of a block at rest (isk_block.frozen, isk_rest_blocks). */
@@ -147,77 +151,11 @@ typedef struct isk_pipeline {
     int n;
 } isk_pipeline;
 
-/* Blocks at rest.  A block that the list's leading ISK_REST_SKIPPED stages
- * left with its x, y, vx, vy bit for bit as they were is at a fixed point
- * of those stages: they are one function of its state and their
- * parameters, so as long as nothing else writes its particles and the list
- * and the step stay the same, every later step leaves it so again.  The
- * runner then skips those stages for it and runs only the rest of the list
- * (ISK_REST_BESIDE: ageing, spin).  The bytes are the same as running every
- * stage, by that argument, not by a tolerance; a settled layer costs the
- * ageing and nothing more.
- *
- * The same holds for one axis: the skipped stages are per axis (x and vx
- * come out of x, vx and m alone), so a block whose y and vy came out as
- * they were (a floor under it) while x slides steps x alone from then on,
- * its y columns replaced by stand-ins the stages may compute on and whose
- * results are dropped (isk_block.frozen; the walls skip that axis).
- *
- * The runner finds the blocks itself: every few runs it looks at four
- * particles of each awake block in turn, axis by axis; when an axis's
- * stood still it keeps the block's start state in the next run and
- * compares it after the skipped stages; equal, that axis rests.  The
- * owner says what changed between runs:
- *   isk_rest_forget(&r, i)   the particles from i on were moved, removed,
- *                            or written (a cull that keeps the order: from
- *                            the first one it moved; one that fills holes:
- *                            isk_rest_wake_dying before it, its new count
- *                            after); particles appended need nothing
- *   isk_rest_forget(&r, 0)   the list or its parameters changed (recompile)
- * A different step h forgets by itself.  The runs with states cover
- * [0, end), so blocks count from particle 0.
- *
- *     isk_rest r;
- *     isk_rest_init(&r);
- *     isk_pipeline_run_rest(&pl, &store, store.count, h, &scratch, &r);
- *     ...
- *     isk_rest_free(&r); */
-typedef struct isk_rest_block {
-    uint64_t sample[2];  /* per axis, a hash of four particles' position and velocity at the
-                            block's last look (a collision only costs an exact look that fails) */
-    unsigned char state; /* the axes at rest, and whether to look at the others (stage.c) */
-} isk_rest_block;
-
-typedef struct isk_rest {
-    isk_rest_block *block; /* one per block */
-    size_t cap;            /* blocks there is room for */
-    size_t valid;         /* particles [0, valid) are those the states describe */
-    double h;             /* the step they were found at */
-    size_t runs;          /* runs so far: whose turn it is to be looked at */
-    double *stand_in;     /* per worker, 2 x ISK_SIM_BLOCK: a resting axis's columns while the
-                             other axis steps (zeroed once; what the stages make of them is
-                             never read) */
-    int workers;          /* workers stand_in has room for */
-    uint64_t changes;     /* counts what can end a block's rest (a forget below valid, a
-                             change of step, a wake): while it and the count stay the
-                             same and every block rests, no particle's x, y has changed */
-} isk_rest;
-
-void isk_rest_init(isk_rest *r);
-void isk_rest_free(isk_rest *r);
-void isk_rest_forget(isk_rest *r, size_t from);
-/* Before a cull that fills the holes with the last particles (nothing
- * else moves): wakes the blocks at rest that hold a particle about to die
- * (age >= life).  The cull's new count is then forgotten from. */
-void isk_rest_wake_dying(isk_rest *r, const isk_particles *p);
-/* Blocks of [0, count) at rest on `axes` (ISK_REST_X | ISK_REST_Y: at rest;
- * for the tests and the benchmarks). */
-size_t isk_rest_blocks(const isk_rest *r, size_t count, unsigned axes);
-/* 1 when count > 0 and every block of [0, count) rests on both axes (the
- * states describe exactly those particles). */
-int isk_rest_all(const isk_rest *r, size_t count);
+/* What stages [from, n) of the list declare a particle's step costs, in
+ * drifts (isk_stage_kind.cost). */
+double isk_pipeline_cost(const isk_pipeline *pl, int from);
 /* How many leading stages of the list a block at rest skips (0: no block
- * of this list can rest). */
+ * of this list can rest; rest.c). */
 int isk_pipeline_rest_prefix(const isk_pipeline *pl);
 /* The constant roles, for kinds whose role does not depend on parameters. */
 isk_rest_role isk_rest_skipped(const isk_stage *st);
@@ -226,27 +164,31 @@ isk_rest_role isk_rest_beside(const isk_stage *st);
 void isk_pipeline_init(isk_pipeline *pl);
 /* Appends a stage of `kind` with zeroed parameters; NULL when the list is full. */
 isk_stage *isk_pipeline_add(isk_pipeline *pl, const isk_stage_kind *kind);
-/* Runs the list over particles [begin, end) of p with step h. */
-void isk_pipeline_run(const isk_pipeline *pl, isk_particles *p, size_t begin, size_t end, double h,
-                      isk_scratch *s);
-/* The same over [0, end) with blocks at rest (rest may be NULL: none). */
-void isk_pipeline_run_rest(const isk_pipeline *pl, isk_particles *p, size_t end, double h, isk_scratch *s,
-                           isk_rest *rest);
-/* The same with the blocks shared out over a pool's threads.  Only for
- * lists whose stages touch nothing outside their block (the compiler of the
- * list decides: a potential that can switch itself off, or a deflector
- * that draws from the owner's random stream, makes the order of particles
- * matter); then the bytes are the same for every number of threads.  Below
- * ISK_PIPELINE_MIN_PARALLEL_BLOCKS blocks it runs on the caller.  Returns
- * 1 when a motion stage found a non-finite state (the workers' scratch
- * flags, combined and cleared; isk_scratch.nonfinite), else 0. */
+/* What a run may use beyond the calling thread: both optional. */
+struct isk_workers;
+struct isk_rest;
+typedef struct isk_run_context {
+    struct isk_workers *workers; /* NULL: every block on the caller; else the blocks shared out
+                                    among the workers (src/sim/workers.h), each with its own
+                                    scratch.  Only for lists whose stages touch nothing outside
+                                    their block (the list's compiler decides: a potential that can
+                                    switch itself off, or a deflector that draws from the owner's
+                                    random stream, makes the order of particles matter); then the
+                                    bytes are the same for every number of workers.  Below
+                                    ISK_PIPELINE_MIN_PARALLEL_BLOCKS blocks it runs on the caller. */
+    struct isk_rest *rest;       /* NULL: every block steps in full; else blocks at rest skip the
+                                    stages that would leave them as they are (src/sim/rest.h;
+                                    only with begin = 0) */
+} isk_run_context;
 #define ISK_PIPELINE_MIN_PARALLEL_BLOCKS (2048 / ISK_SIM_BLOCK) /* 2048 particles, whatever the block */
-struct isk_pool;
-int isk_pipeline_run_pool(const isk_pipeline *pl, isk_particles *p, size_t begin, size_t end, double h,
-                          struct isk_pool *pool);
-/* The same over [0, end) with blocks at rest (rest may be NULL). */
-int isk_pipeline_run_pool_rest(const isk_pipeline *pl, isk_particles *p, size_t end, double h,
-                               struct isk_pool *pool, isk_rest *rest);
+
+/* Runs the list over particles [begin, end) of p with step h: the one loop
+ * at the top of this file.  s: the caller's scratch; ctx: NULL, or what
+ * the run may use.  Returns s->nonfinite, 1 when a motion stage found a
+ * non-finite state (the workers' flags are combined into it and cleared:
+ * iskra/integrate.h's isk_scratch.nonfinite). */
+int isk_pipeline_run(const isk_pipeline *pl, isk_particles *p, size_t begin, size_t end, double h, isk_scratch *s,
+                     const isk_run_context *ctx);
 /* One line per stage: "  NAME      parameters". */
 void isk_pipeline_describe(const isk_pipeline *pl, FILE *out);
 /* One stage's line without its newline (for a stage that describes itself

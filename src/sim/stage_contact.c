@@ -32,7 +32,8 @@ static isk_step_motion motion_of(const isk_block *b, double drag, double h)
     return mo;
 }
 
-const isk_stage_kind isk_stage_remember = {"remember", run_remember, describe_remember, isk_rest_skipped};
+const isk_stage_kind isk_stage_remember = {
+    .name = "remember", .run = run_remember, .describe = describe_remember, .rest = isk_rest_skipped};
 
 /* A particle's hit byte (iskra/particles.h) after a contact stage that
  * touched it `k` times in this substep: the bounces are counted unless it
@@ -117,7 +118,8 @@ static isk_rest_role rest_walls(const isk_stage *st)
     return st->u.walls.hit ? ISK_REST_BREAKS : ISK_REST_SKIPPED;
 }
 
-const isk_stage_kind isk_stage_walls = {"walls", run_walls, describe_walls, rest_walls};
+const isk_stage_kind isk_stage_walls = {
+    .name = "walls", .run = run_walls, .describe = describe_walls, .rest = rest_walls};
 
 static void run_deflect(const isk_stage *st, isk_block *b, double h)
 {
@@ -162,5 +164,9 @@ static void describe_deflect(const isk_stage *st, FILE *out)
     fprintf(out, "%d segment%s", st->u.deflect.n, st->u.deflect.n == 1 ? "" : "s");
 }
 
-const isk_stage_kind isk_stage_deflect = {"deflect", run_deflect, describe_deflect,
-                                          NULL /* draws from the owner's stream */};
+/* A crossing test against every segment. */
+static double cost_deflect(const isk_stage *st) { return 1.0 + (double)st->u.deflect.n; }
+
+const isk_stage_kind isk_stage_deflect = {
+    .name = "deflect", .run = run_deflect, .describe = describe_deflect,
+    .rest = NULL /* draws from the owner's stream */, .cost = cost_deflect};

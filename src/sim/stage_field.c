@@ -86,4 +86,8 @@ static void describe_field(const isk_stage *st, FILE *out)
         fprintf(out, "none");
 }
 
-const isk_stage_kind isk_stage_field = {"field", run_field, describe_field, NULL /* a clock */};
+/* The emitter-centred terms, and a gradient noise's curl per turbulence. */
+static double cost_field(const isk_stage *st) { return 2.0 + 6.0 * (double)st->u.field.f->nturb; }
+
+const isk_stage_kind isk_stage_field = {
+    .name = "field", .run = run_field, .describe = describe_field, .rest = NULL /* a clock */, .cost = cost_field};

@@ -31,7 +31,8 @@ static void describe_slow(const isk_stage *st, FILE *out)
     fprintf(out, "v *= max(0, 1 - %g*dt)", st->u.slow.slowing);
 }
 
-const isk_stage_kind isk_stage_slow = {"slow", run_slow, describe_slow, isk_rest_skipped};
+const isk_stage_kind isk_stage_slow = {
+    .name = "slow", .run = run_slow, .describe = describe_slow, .rest = isk_rest_skipped};
 
 /* The fire thesis's Emitter::Advance: v -= F*dt; v *= slow; p += v*dt (F in
  * its sign is -a), slow clamped at 0. */
@@ -55,7 +56,8 @@ static void describe_drift_slow(const isk_stage *st, FILE *out)
             st->u.drift_slow.ay, st->u.drift_slow.slowing);
 }
 
-const isk_stage_kind isk_stage_drift_slow = {"drift", run_drift_slow, describe_drift_slow, isk_rest_skipped};
+const isk_stage_kind isk_stage_drift_slow = {
+    .name = "drift", .run = run_drift_slow, .describe = describe_drift_slow, .rest = isk_rest_skipped};
 
 /* The sway of step h as sim/sway.h takes it. */
 static isk_sway sway_of(const isk_stage_osc *o, double h)
@@ -85,8 +87,9 @@ static void describe_oscillate(const isk_stage *st, FILE *out)
             mode == ISK_SINLUT_LIBM ? "" : " (4096-entry table)");
 }
 
-const isk_stage_kind isk_stage_oscillate = {"oscillate", run_oscillate, describe_oscillate,
-                                            NULL /* a phase that moves on */};
+const isk_stage_kind isk_stage_oscillate = {
+    .name = "oscillate", .run = run_oscillate, .describe = describe_oscillate,
+    .rest = NULL /* a phase that moves on */};
 
 /* The stages a drift+sway stage stands for, in list order: the drift (or
  * the thesis-order drift), the slow stage for the sound order, the sway.
@@ -145,6 +148,6 @@ static void describe_drift_sway(const isk_stage *st, FILE *out)
     }
 }
 
-const isk_stage_kind isk_stage_drift_sway = {"drift", run_drift_sway, describe_drift_sway,
-                                             NULL /* the sway's phase */};
+const isk_stage_kind isk_stage_drift_sway = {
+    .name = "drift", .run = run_drift_sway, .describe = describe_drift_sway, .rest = NULL /* the sway's phase */};
 

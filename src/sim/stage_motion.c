@@ -49,7 +49,8 @@ static void describe_drift(const isk_stage *st, FILE *out)
         fprintf(out, "semi-euler, no forces");
 }
 
-const isk_stage_kind isk_stage_drift = {"drift", run_drift, describe_drift, isk_rest_skipped};
+const isk_stage_kind isk_stage_drift = {
+    .name = "drift", .run = run_drift, .describe = describe_drift, .rest = isk_rest_skipped};
 
 /* Forces are where a finite state can turn non-finite (the thesis's centre
  * rule gives NaN on a potential, iskra/limits.h): the block is checked
@@ -100,7 +101,15 @@ static isk_rest_role rest_motion(const isk_stage *st)
     return (f->pick ? f->npick : f->npot) ? ISK_REST_BREAKS : ISK_REST_SKIPPED;
 }
 
-const isk_stage_kind isk_stage_motion = {"integrate", run_motion, describe_motion, rest_motion};
+/* The integrator's force sums and update, and a pass per potential. */
+static double cost_motion(const isk_stage *st)
+{
+    const isk_forces *f = st->u.motion.forces;
+    return 2.0 + 4.0 * (double)(f->pick ? f->npick : f->npot);
+}
+
+const isk_stage_kind isk_stage_motion = {
+    .name = "integrate", .run = run_motion, .describe = describe_motion, .rest = rest_motion, .cost = cost_motion};
 
 static void run_age(const isk_stage *st, isk_block *b, double h)
 {
@@ -114,4 +123,5 @@ static void describe_age(const isk_stage *st, FILE *out)
     fprintf(out, "age += dt");
 }
 
-const isk_stage_kind isk_stage_age = {"age", run_age, describe_age, isk_rest_beside};
+const isk_stage_kind isk_stage_age = {
+    .name = "age", .run = run_age, .describe = describe_age, .rest = isk_rest_beside};

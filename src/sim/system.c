@@ -287,7 +287,7 @@ isk_status isk_system_step(isk_system *s, double dt)
      * off by particle i in substep j is off for every particle in substep
      * j+1.  A state gone non-finite is removed and counted (limits.h). */
     for (int j = 0; j < N; j++) {
-        isk_pipeline_run(&pl, p, 0, p->count, h, &s->scratch);
+        isk_pipeline_run(&pl, p, 0, p->count, h, &s->scratch, NULL);
         if (s->scratch.nonfinite) {
             s->removed_nonfinite += isk_particles_remove_nonfinite(p);
             s->scratch.nonfinite = 0;

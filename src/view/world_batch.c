@@ -492,11 +492,11 @@ int isk__batch_select_rows(const isk_view *v, const double *y, int m, double lo,
     return pick_select()(&sv, y, m, oy, oix);
 }
 
-void isk__batch_bin(const isk_view *v, int height, const double *y, size_t i0, size_t i1,
+void isk__batch_bin(const isk_view *v, int height, const double *y, size_t i0, size_t i1, int reach,
                     const uint8_t *band_of_row, uint16_t *code, size_t *count)
 {
     const select_view sv = rows_view(v, 0.0, 0.0);
-    const double lo = -(ISK__BIN_MARGIN + 1.0), hi = height + (double)ISK__BIN_MARGIN;
+    const double lo = -(reach + 1.0), hi = height + (double)reach;
     /* counted here and added at the end: the threads' count arrays share
      * cache lines, and a store to one every point would bounce them */
     size_t mine[256] = {0};
@@ -505,9 +505,9 @@ void isk__batch_bin(const isk_view *v, int height, const double *y, size_t i0, s
         const double Y = screen_y(&sv, y[i]);
         uint16_t k = ISK__BIN_NONE;
         if (Y > lo && Y < hi) { /* also false for NaN; keeps the conversion defined */
-            const int fy = (int)(Y + (ISK__BIN_MARGIN + 1.0)) - (ISK__BIN_MARGIN + 1); /* floor */
-            const int rlo = fy - ISK__BIN_MARGIN < 0 ? 0 : fy - ISK__BIN_MARGIN;
-            const int rhi = fy + ISK__BIN_MARGIN >= height ? height - 1 : fy + ISK__BIN_MARGIN;
+            const int fy = (int)(Y + (reach + 1.0)) - (reach + 1); /* floor */
+            const int rlo = fy - reach < 0 ? 0 : fy - reach;
+            const int rhi = fy + reach >= height ? height - 1 : fy + reach;
             if (rlo <= rhi) {
                 const unsigned first = band_of_row[rlo], last = band_of_row[rhi];
                 k = (uint16_t)(first | last << 8);

@@ -95,17 +95,20 @@ int isk__batch_select_rows(const isk_view *v, const double *y, int m, double lo,
 /* ---- binning a batch by bands of rows (a threaded draw) ------------------
  * So that a band's thread reads only its own points, the points are first
  * sorted into bands (stably: each band keeps index order).  A point goes to
- * every band holding one of the rows floor(Y) - ISK__BIN_MARGIN ..
- * floor(Y) + ISK__BIN_MARGIN (Y its screen row, the kernels' arithmetic):
- * a superset of the rows any dot rule or pixel can touch, so the kernels'
- * own row test, run again on the band, decides exactly as on the whole
- * batch, and the bytes are the same.  band_of_row[r] is the band of canvas
- * row r (bands in row order, at most 255 of them).  code[i] gets
+ * every band holding one of the rows floor(Y) - reach .. floor(Y) + reach
+ * (Y its screen row, the kernels' arithmetic; reach: the rows beyond its
+ * own that the point's draw may touch, as its draw kind declares it), so
+ * the draw's own row test, run again on the band, decides exactly as on
+ * the whole batch, and the bytes are the same.  band_of_row[r] is the band
+ * of canvas row r (bands in row order, at most 255 of them).  code[i] gets
  * first | last << 8, the bands the point goes to, or ISK__BIN_NONE;
  * count[b] grows by the points band b gets. */
-#define ISK__BIN_MARGIN 2
 #define ISK__BIN_NONE 0xFFFFu
-void isk__batch_bin(const isk_view *v, int height, const double *y, size_t i0, size_t i1,
+/* The rows beyond its own (floor of its screen Y) that a dot of any rule
+ * or a pixel may touch: floor(Y) + 1, and a row spare (their draw kinds'
+ * reach). */
+#define ISK__DOT_REACH 2
+void isk__batch_bin(const isk_view *v, int height, const double *y, size_t i0, size_t i1, int reach,
                     const uint8_t *band_of_row, uint16_t *code, size_t *count);
 
 #endif

@@ -60,7 +60,7 @@ static unsigned long long run(const isk_effect_def *d, int threads, int split, l
     const int made = isk_effect_create(&fx, &copy, &err) == ISK_OK;
     if (made) {
         fx->band_min_work = 0; /* every group's draw in bands, however small: those are what is checked */
-        fx->pool_always = 1;   /* and every update that can be shared out */
+        fx->update_min_work = 0; /* and every update that can be shared out */
         fx->split_always = split;
     }
     if (!made || isk_canvas_init(c, d->width, d->height) != ISK_OK || isk_effect_run(fx, c, frames) != ISK_OK) {
@@ -227,7 +227,7 @@ static void items_run_together(void)
     if (!pool)
         return;
     together t = {.started = 0};
-    isk_pool_for(pool, 3, 2, wait_for_all, &t);
+    isk_pool_for(pool, 3, wait_for_all, &t);
     CHECK(t.ok[0] && t.ok[1] && t.ok[2], "3 items on 3 threads did not run at the same time");
     isk_pool_destroy(pool);
 }
@@ -265,7 +265,7 @@ static void every_item_once(void)
                 break;
             for (size_t i = 0; i < n; i++)
                 atomic_init(&t.count[i], 0);
-            isk_pool_for(pool, n, 1, count_item, &t);
+            isk_pool_for(pool, n, count_item, &t);
             size_t wrong = 0;
             for (size_t i = 0; i < n; i++)
                 wrong += atomic_load(&t.count[i]) != 1;
