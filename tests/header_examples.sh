@@ -1,6 +1,7 @@
 #!/bin/sh
 # SPDX-License-Identifier: MIT
-# Every public header's usage example, and docs/hello_iskra.c, compiled and
+# Every public header's usage example, docs/hello_iskra.c and the tutorial's
+# docs/tutorial/fountain.c, compiled and
 # run as a user would: the convention (docs/architecture.md, "Header
 # examples") is that a header's top comment has one line starting with
 # "Example" and ending with ":", followed by the example, indented four
@@ -41,7 +42,10 @@ extract() {
     awk -v hdr="$1" -v out="$2" '
     function fail(msg) { print hdr ": " msg > "/dev/stderr"; bad = 1; exit 1 }
     function emit(s) { print s > out; nout++ }
-    NR == 1 && !/^\/\*/ { fail("does not start with its top comment") }
+    # the licence line comes first, a comment of its own (see LICENSE)
+    NR == 1 && /^\/\* SPDX-License-Identifier: [^*]* \*\/$/ { next }
+    !started && !/^\/\*/ { fail("does not start with its top comment") }
+    { started = 1 }
     done { next }
     /\*\// { done = 1; next }
     /^ \* Example.*:$/ {
@@ -131,6 +135,8 @@ for hdr in include/iskra.h include/iskra/*.h; do
     check "$name" "$src" "$hdr" "$libs"
 done
 check hello_iskra docs/hello_iskra.c docs/hello_iskra.c "$EX_LIBS" hello.png
+# The tutorial's program (docs/tutorial.md; test_tutorial checks its pixels).
+check tutorial_fountain docs/tutorial/fountain.c docs/tutorial/fountain.c "$EX_LIBS" fountain.png
 
 echo "header examples: $passed passed, $failed failed"
 [ "$failed" -eq 0 ]
