@@ -1,6 +1,7 @@
 #!/bin/sh
 # SPDX-License-Identifier: MIT
-# Every public header's usage example, and docs/hello_iskra.c, compiled and
+# Every public header's usage example, docs/hello_iskra.c and the tutorial's
+# docs/tutorial/fountain.c, compiled and
 # run as a user would: the convention (docs/architecture.md, "Header
 # examples") is that a header's top comment has one line starting with
 # "Example" and ending with ":", followed by the example, indented four
@@ -133,6 +134,8 @@ for hdr in include/iskra.h include/iskra/*.h; do
     check "$name" "$src" "$hdr" "$libs"
 done
 check hello_iskra docs/hello_iskra.c docs/hello_iskra.c "$EX_LIBS" hello.png
+# The tutorial's program (docs/tutorial.md; test_tutorial checks its pixels).
+check tutorial_fountain docs/tutorial/fountain.c docs/tutorial/fountain.c "$EX_LIBS" fountain.png
 
 echo "header examples: $passed passed, $failed failed"
 [ "$failed" -eq 0 ]

@@ -119,7 +119,7 @@ typedef struct isk_force_def {
     int draw;              /* POTENTIAL: draw as a disc of radius 0.1 with its id while on */
     int line;              /* where it was defined (scene files), 0 if unknown */
 
-    /* turbulence (issue 14, motion): a = strength * curl psi, psi a smooth
+    /* turbulence: a = strength * curl psi, psi a smooth
      * gradient noise psi(x/scale, y/scale, speed*t) seeded from the scene's
      * seed and the force's index.  The curl is taken in the noise's own
      * coordinates (x/scale), so |a| is of the order of strength at any
@@ -283,7 +283,7 @@ typedef struct isk_emitter_def {
                                   isk_preset_apply (scene files: `preset = NAME`); only a record:
                                   the fields hold what the preset set */
 
-    /* motion (issue 14): how emitters and particles move.  Each is a stage
+    /* motion: how emitters and particles move.  Each is a stage
      * only for the emitters that use it (isk_effect_describe shows it). */
     double radial_accel;       /* units/s^2 away from the emitter's current position (negative:
                                   towards it); none exactly at the position */
@@ -297,7 +297,7 @@ typedef struct isk_emitter_def {
                                   frame 0 shows the emitter, and the sub-emitters it feeds, as
                                   they are after them) */
 
-    /* looks (issue 14): rotation, spin, size and colour variation, textures
+    /* looks: rotation, spin, size and colour variation, textures
      * and flipbooks (docs/scene-format.md, "The looks of a particle").  At
      * their defaults none of them costs or changes anything: the angle
      * column and the spin stage exist only with a rotation or spin, each
@@ -319,7 +319,7 @@ typedef struct isk_emitter_def {
     double texture_fps;        /* 0: the frames play once over the life, floor(t*frames); > 0: at this
                                   rate of age, wrapping */
 
-    /* ---- sub-emitters and trails (issue 14) ----
+    /* ---- sub-emitters and trails ----
      * on_death / on_hit name (by index, -1: none) an emitter of source SUB
      * that fires `count` particles where one of these particles dies (its
      * age reaches its life, or a killing deflector takes it) / bounces on a

@@ -95,7 +95,7 @@ extern "C" {
 #define ISK_PRESET_SCALE_MAX 1e6     /* a preset's scale (iskra/presets.h): its largest length, speed
                                         or acceleration, 300 cocos2d points x 1e4, stays far inside
                                         every limit above */
-/* issue 14, motion */
+/* motion: prewarm and turbulence */
 #define ISK_PREWARM_MAX 3600.0       /* seconds of prewarm ... */
 #define ISK_PREWARM_MAX_STEPS 100000 /* ... and at most this many of the emitter's substeps */
 #define ISK_TURBULENCE_SCALE_MIN 1e-9 /* world units */

@@ -49,9 +49,9 @@ enum {
     ISK_PARTICLES_COLOR = 1u << 0, /* allocate the colour array */
     ISK_PARTICLES_SIZE = 1u << 1,  /* allocate the size array */
     ISK_PARTICLES_OSC = 1u << 2,   /* allocate the four oscillation arrays */
-    /* looks (issue 14) */
+    /* looks */
     ISK_PARTICLES_ANGLE = 1u << 3, /* allocate the angle and spin arrays */
-    /* ---- sub-emitters and trails (issue 14) ---- */
+    /* ---- sub-emitters and trails ---- */
     ISK_PARTICLES_HIT = 1u << 4,   /* allocate hit: bounces in the current substep */
     /* ---- end of sub-emitters and trails ---- */
     ISK_PARTICLES_FLAGS = 31u,     /* every flag init and add_columns take */
@@ -59,7 +59,7 @@ enum {
                                       adds it with its length; init and add_columns refuse it) */
 };
 
-/* ---- sub-emitters and trails (issue 14): the bits of isk_particles.hit ---- */
+/* ---- sub-emitters and trails: the bits of isk_particles.hit ---- */
 enum { ISK_HIT_COUNT = 0x3Fu, ISK_HIT_DEFLECTOR = 0x40u, ISK_HIT_WALL = 0x80u };
 
 /* Largest capacity a store accepts (about 2.7e8 particles; more is an error,
@@ -78,10 +78,10 @@ typedef struct isk_particles {
     double *osc_phase;
     double *osc_omega;
     double *osc_offset;  /* the offset already added to x */
-    /* looks (issue 14): NULL unless ISK_PARTICLES_ANGLE (new particles: 0) */
+    /* looks: NULL unless ISK_PARTICLES_ANGLE (new particles: 0) */
     double *angle;       /* radians, counter-clockwise in the world, kept in [-pi, pi) */
     double *spin;        /* rad/s */
-    /* ---- sub-emitters and trails (issue 14) ---- */
+    /* ---- sub-emitters and trails ---- */
     unsigned char *hit;  /* NULL unless ISK_PARTICLES_HIT: the bounces (walls, deflectors) the
                             contact stages counted in this substep (ISK_HIT_COUNT bits, saturating),
                             and whether it touched a wall / a deflector in the substep before
@@ -151,7 +151,7 @@ void isk_particles_age(isk_particles *p, size_t begin, size_t end, double dt);
 
 void isk_particles_clear(isk_particles *p);
 
-/* ---- sub-emitters and trails (issue 14) ----
+/* ---- sub-emitters and trails ----
  * Adds the trail column with `points` points per particle (1..ISK_TRAIL_MAX,
  * iskra/limits.h) to a store, or changes its length; every particle's trail
  * starts again at its position.  0 removes the column.  All-or-nothing.
