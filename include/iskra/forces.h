@@ -155,6 +155,27 @@ typedef struct isk_forces {
     isk_fidelity centre;  /* behaviour exactly on a potential without min (see top) */
 } isk_forces;
 
+/* The force laws, as bits of a set: what acts in an isk_forces.  Every
+ * evaluation sums the laws that act, in this order (gravity, constant
+ * acceleration, drag, then the potentials summed on their own and added
+ * last); a fast path that knows only some laws runs only when the set
+ * holds nothing else, so a law added to the library is never skipped. */
+enum {
+    ISK_LAW_GRAVITY = 1u << 0,  /* F = (0, m*(-g)) */
+    ISK_LAW_ACCEL = 1u << 1,    /* F = m*(ax, ay) */
+    ISK_LAW_DRAG = 1u << 2,     /* F = -b*v */
+    ISK_LAW_POWER_2 = 1u << 3,  /* a potential with P = 2 (Coulomb's inverse square) */
+    ISK_LAW_POWER_1 = 1u << 4,  /* a potential with P = 1 */
+    ISK_LAW_POWER = 1u << 5,    /* a potential with any other P (a pow() a particle) */
+    ISK_LAW_CUTOFF = 1u << 6    /* a potential that switches itself off at max_dist */
+};
+/* The laws that act in f: those whose strength is not 0, and each enabled
+ * potential of non-zero k*charge (0: no force at all). */
+unsigned isk_forces_laws(const isk_forces *f);
+/* A law's name ("gravity", "drag", "power 2", ...), NULL for anything but
+ * one ISK_LAW_* bit. */
+const char *isk_force_law_name(unsigned law);
+
 /* Stage kernels on n particles (pointers may be offset into a store).
  * Each ADDS into its accumulators. */
 void isk_force_gravity(size_t n, const double *m, double g, double *fy);

@@ -123,19 +123,6 @@ isk_status fx_compile(isk_effect *e, fx_group *g)
         can_kill |= g->defl[k].reaction == ISK_DEFLECT_KILL;
     }
     const int walls = em->bounded && d->bounds.sides != 0;
-    /* Blocks are independent unless a potential can switch itself off (the
-     * first particle that comes close decides for all later ones) or a
-     * deflector draws from the group's random stream (the draws go in
-     * particle order): then one thread runs the blocks in order. */
-    g->parallel = 1;
-    for (size_t k = 0; k < f->npick; k++)
-        g->parallel &= !(e->pots[f->pick[k]].max_dist > 0.0);
-    for (int k = 0; k < g->ndefl; k++)
-        g->parallel &= !(g->defl[k].probability > 0.0 && g->defl[k].probability < 1.0);
-    /* The dead may be replaced by the last live particles (moving only as
-     * many as died) when nothing sees the order: the stages (as for
-     * threads) and the drawing (saturating adds commute; no draw). */
-    g->cull_unordered = g->parallel && (em->draw == ISK_DRAW_NONE || em->blend == ISK_BLEND_ADD);
     /* Reflect walls (margin 0) leave a resting particle exactly on the floor
      * line, which the view maps to y = height: one pixel outside the canvas.
      * There the drawing moves a screen coordinate in (n - 1, n] to n - 1, so
@@ -143,12 +130,6 @@ isk_status fx_compile(isk_effect *e, fx_group *g)
      * keep the thesis's picture (its browser clipped them the same way), and
      * without walls the view is a plain window. */
     g->keep_on_canvas = walls && d->bounds.mode == ISK_BOUNCE_REFLECT;
-    /* Sound walls and deflectors bounce at the time of impact: deflectors
-     * need the state before the move, walls only when potentials act (with
-     * constant forces alone the step's flight is known from its end:
-     * iskra/impact.h). */
-    const int step_walls =
-        walls && !em->draw_before_bounce && d->bounds.mode == ISK_BOUNCE_REFLECT && f->npick > 0;
 
     if (walls && em->draw_before_bounce)
         g->frame_start[g->nframe_start++] = &fx_step_late_walls;
@@ -164,11 +145,7 @@ isk_status fx_compile(isk_effect *e, fx_group *g)
      * drift loop that reads no mass (gravity becomes a = -g). */
     const int fast = g->integrator == ISK_INTEGRATE_SEMI_EULER && f->drag == 0 && f->npick == 0 &&
                      d->fidelity == ISK_FIDELITY_SOUND;
-    /* The contact stages' start state: a stage of its own before a drift,
-     * kept by the motion stage in its own pass otherwise. */
-    const int remember = g->ndefl || step_walls;
-    if (remember && fast && !ADD(isk_stage_remember))
-        return ISK_ERR_FULL;
+    const int motion_at = g->pipeline.n; /* where the remember stage goes, if the list needs it */
     const int fused_slow = fast && em->slow_faithful && em->slowing > 0;
     /* The thesis's jitter applies the constant part of the acceleration. */
     g->const_ax = f->ax;
@@ -202,7 +179,6 @@ isk_status fx_compile(isk_effect *e, fx_group *g)
             return ISK_ERR_FULL;
         st->u.motion.method = g->integrator;
         st->u.motion.forces = f;
-        st->u.motion.remember = remember;
     }
     if (em->slowing > 0 && !fused_slow && !drift_sway) {
         if (!ADD(isk_stage_slow))
@@ -219,7 +195,8 @@ isk_status fx_compile(isk_effect *e, fx_group *g)
             return ISK_ERR_FULL;
         st->u.walls.b = &d->bounds;
         st->u.walls.drag = f->drag;
-        st->u.walls.start = g->ndefl || step_walls;
+        /* with potentials the flight is not known from its end alone (iskra/impact.h) */
+        st->u.walls.curved = d->bounds.mode == ISK_BOUNCE_REFLECT && f->npick > 0;
         st->u.walls.ax = g->const_ax;
         st->u.walls.ay = g->const_ay;
         st->u.walls.offset = isk_integrator_velocity_offset(g->integrator);
@@ -241,6 +218,27 @@ isk_status fx_compile(isk_effect *e, fx_group *g)
         st->u.spin.spin = em->spin;
         st->u.spin.spin_range = em->spin_range;
     }
+    /* What the stages need, folded: the start state (bounces at the time
+     * of impact) kept by the motion stage's own pass, or by a stage of its
+     * own before a drift; particle order (a potential that switches itself
+     * off, a deflector that draws at random) keeps the list on one thread. */
+    const unsigned needs = isk_pipeline_needs(&g->pipeline);
+    if (needs & ISK_NEEDS_START) {
+        for (int k = 0; k < g->pipeline.n; k++) {
+            isk_stage *s = &g->pipeline.stage[k];
+            if (s->kind == &isk_stage_motion)
+                s->u.motion.remember = 1;
+            if (s->kind == &isk_stage_walls)
+                s->u.walls.start = 1;
+        }
+        if (fast && !isk_pipeline_insert(&g->pipeline, motion_at, &isk_stage_remember))
+            return ISK_ERR_FULL;
+    }
+    g->parallel = !(needs & ISK_NEEDS_ORDER);
+    /* The dead may be replaced by the last live particles (moving only as
+     * many as died) when nothing sees the order: the stages (as for
+     * threads) and the drawing (saturating adds commute; no draw). */
+    g->cull_unordered = g->parallel && (em->draw == ISK_DRAW_NONE || em->blend == ISK_BLEND_ADD);
     const int mortal = isfinite(em->life) || can_kill;
     /* a flipbook played at a rate reads the age of immortal particles too */
     const int flips = g->texture && g->texture->frames > 1 && em->texture_fps > 0;

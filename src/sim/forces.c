@@ -263,25 +263,119 @@ int isk_forces_potentials_on(const isk_forces *f)
     return any;
 }
 
+/* ---- the laws, as rows ------------------------------------------------------
+ * Each row: the laws it stands for, which of them act in f, and how it adds
+ * its force into (fx, fy).  isk_forces_eval_step runs the rows in this
+ * order, and that order is the sum's (the thesis's: gravity, then the
+ * constant acceleration, drag, then the potentials summed on their own
+ * and added last); isk_forces_laws is the union of what acts. */
+typedef struct law_args {
+    isk_forces *f;
+    size_t n;
+    const double *x, *y, *m;
+    double *vx, *vy, *fx, *fy, *px, *py;
+    double h;
+} law_args;
+
+typedef struct law_row {
+    unsigned laws;                          /* the ISK_LAW_* bits this row evaluates */
+    const char *names[4];                   /* their names, bit by bit */
+    unsigned (*acts)(const isk_forces *f); /* which of them act in f */
+    int (*runs)(const isk_forces *f);      /* whether add runs; NULL: when something acts */
+    int drag;                               /* left out when the integrator takes the drag itself */
+    void (*add)(const law_args *a);
+} law_row;
+
+static unsigned gravity_acts(const isk_forces *f) { return f->gravity != 0.0 ? ISK_LAW_GRAVITY : 0u; }
+static void gravity_add(const law_args *a) { isk_force_gravity(a->n, a->m, a->f->gravity, a->fy); }
+
+static unsigned accel_acts(const isk_forces *f) { return f->ax != 0.0 || f->ay != 0.0 ? ISK_LAW_ACCEL : 0u; }
+static void accel_add(const law_args *a) { isk_force_accel(a->n, a->m, a->f->ax, a->f->ay, a->fx, a->fy); }
+
+static unsigned drag_acts(const isk_forces *f) { return f->drag != 0.0 ? ISK_LAW_DRAG : 0u; }
+static void drag_add(const law_args *a) { drag_stage(a->n, a->vx, a->vy, a->m, a->f->drag, a->h, a->fx, a->fy); }
+
+/* What one enabled potential is, by the laws (k*charge == 0: nothing). */
+static unsigned potential_law(const isk_potential *pot)
+{
+    if (!pot->enabled || 1.0 * (pot->charge * pot->k) == 0.0)
+        return 0u;
+    const unsigned power = pot->P == 2.0 ? ISK_LAW_POWER_2 : pot->P == 1.0 ? ISK_LAW_POWER_1 : ISK_LAW_POWER;
+    return power | (pot->max_dist > 0.0 ? ISK_LAW_CUTOFF : 0u);
+}
+
+static unsigned potentials_acts(const isk_forces *f)
+{
+    const size_t np = f->pick ? f->npick : f->npot;
+    unsigned laws = 0;
+    for (size_t k = 0; k < np; k++)
+        laws |= potential_law(&f->pot[f->pick ? f->pick[k] : k]);
+    return laws;
+}
+
+/* Every enabled potential in list order into (px, py) from +0, then added:
+ * a potential of zero strength adds +0 there, as here (it is run, not
+ * skipped, whenever one potential is on: the bits of the sum). */
+static void potentials_add(const law_args *a)
+{
+    isk_forces *f = a->f;
+    const size_t np = f->pick ? f->npick : f->npot;
+    memset(a->px, 0, a->n * sizeof *a->px);
+    memset(a->py, 0, a->n * sizeof *a->py);
+    for (size_t k = 0; k < np; k++)
+        isk_force_potential(&f->pot[f->pick ? f->pick[k] : k], a->n, a->x, a->y, a->px, a->py, f->centre);
+    add_into(a->n, a->fx, a->fy, a->px, a->py);
+}
+
+static const law_row law_rows[] = {
+    {ISK_LAW_GRAVITY, {"gravity"}, gravity_acts, NULL, 0, gravity_add},
+    {ISK_LAW_ACCEL, {"acceleration"}, accel_acts, NULL, 0, accel_add},
+    {ISK_LAW_DRAG, {"drag"}, drag_acts, NULL, 1, drag_add},
+    /* run whenever a potential is on, even of zero strength: its +0 turns
+     * a -0 sum into +0, and the bits are the thesis's */
+    {ISK_LAW_POWER_2 | ISK_LAW_POWER_1 | ISK_LAW_POWER | ISK_LAW_CUTOFF,
+     {"power 2", "power 1", "power P", "cutoff"},
+     potentials_acts,
+     isk_forces_potentials_on,
+     0,
+     potentials_add},
+};
+
+unsigned isk_forces_laws(const isk_forces *f)
+{
+    unsigned laws = 0;
+    for (size_t r = 0; f && r < sizeof law_rows / sizeof law_rows[0]; r++)
+        laws |= law_rows[r].acts(f);
+    return laws;
+}
+
+const char *isk_force_law_name(unsigned law)
+{
+    for (size_t r = 0; r < sizeof law_rows / sizeof law_rows[0]; r++) {
+        int k = 0;
+        for (unsigned bit = 1; bit; bit <<= 1)
+            if (law_rows[r].laws & bit) {
+                if (bit == law)
+                    return law_rows[r].names[k];
+                k++;
+            }
+    }
+    return NULL;
+}
+
 void isk_forces_eval_step(isk_forces *f, size_t n, const double *x, const double *y, double *vx, double *vy,
                           const double *m, double *fx, double *fy, double *px, double *py, int with_drag, double h)
 {
     memset(fx, 0, n * sizeof *fx); /* all-bits-zero is +0.0 */
     memset(fy, 0, n * sizeof *fy);
-    if (f->gravity != 0.0)
-        isk_force_gravity(n, m, f->gravity, fy);
-    if (f->ax != 0.0 || f->ay != 0.0)
-        isk_force_accel(n, m, f->ax, f->ay, fx, fy);
-    if (with_drag && f->drag != 0.0)
-        drag_stage(n, vx, vy, m, f->drag, h, fx, fy);
-    if (!isk_forces_potentials_on(f))
-        return;
-    const size_t np = f->pick ? f->npick : f->npot;
-    memset(px, 0, n * sizeof *px);
-    memset(py, 0, n * sizeof *py);
-    for (size_t k = 0; k < np; k++)
-        isk_force_potential(&f->pot[f->pick ? f->pick[k] : k], n, x, y, px, py, f->centre);
-    add_into(n, fx, fy, px, py);
+    const law_args a = {f, n, x, y, m, vx, vy, fx, fy, px, py, h};
+    for (size_t r = 0; r < sizeof law_rows / sizeof law_rows[0]; r++) {
+        const law_row *row = &law_rows[r];
+        if (row->drag && !with_drag)
+            continue; /* the exact drag integrator takes the drag itself */
+        if (row->runs ? row->runs(f) : row->acts(f) != 0u)
+            row->add(&a);
+    }
 }
 
 void isk_forces_eval(isk_forces *f, size_t n, const double *x, const double *y, double *vx, double *vy,

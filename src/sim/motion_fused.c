@@ -352,6 +352,8 @@ int isk_motion_fused_build(int simd, isk_integrator method, const isk_forces *f,
     const int E = method == ISK_INTEGRATE_EULER;
     if (!E && method != ISK_INTEGRATE_SEMI_EULER)
         return 0;
+    if (isk_forces_laws(f) & ~ISK__FUSED_LAWS)
+        return 0; /* a law it does not know: the general path sums every law */
     pot_par p;
     const int np = pot_collect(f, &p);
     if (np < 0)

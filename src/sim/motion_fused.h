@@ -43,6 +43,11 @@
 #include "iskra/forces.h"
 #include "iskra/integrate.h"
 
+/* The force laws the pass knows (iskra/forces.h): it declines any set
+ * with another, so a law the library gains is summed by the general path
+ * until the pass learns it. */
+#define ISK__FUSED_LAWS (ISK_LAW_GRAVITY | ISK_LAW_ACCEL | ISK_LAW_DRAG | ISK_LAW_POWER_2 | ISK_LAW_POWER_1)
+
 /* Where the pass stores the state each particle starts the step from (n
  * entries each), for the contact stages that bounce at the time of impact
  * (iskra/impact.h): what the remember stage copies, stored by the loop as

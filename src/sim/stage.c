@@ -23,6 +23,26 @@ isk_stage *isk_pipeline_add(isk_pipeline *pl, const isk_stage_kind *kind)
     return s;
 }
 
+isk_stage *isk_pipeline_insert(isk_pipeline *pl, int at, const isk_stage_kind *kind)
+{
+    if (pl->n >= ISK_PIPELINE_MAX || at < 0 || at > pl->n)
+        return NULL;
+    memmove(&pl->stage[at + 1], &pl->stage[at], (size_t)(pl->n - at) * sizeof pl->stage[0]);
+    pl->n++;
+    isk_stage *s = &pl->stage[at];
+    memset(s, 0, sizeof *s);
+    s->kind = kind;
+    return s;
+}
+
+unsigned isk_pipeline_needs(const isk_pipeline *pl)
+{
+    unsigned needs = 0;
+    for (int k = 0; k < pl->n; k++)
+        needs |= pl->stage[k].kind->needs ? pl->stage[k].kind->needs(&pl->stage[k]) : 0u;
+    return needs;
+}
+
 double isk_pipeline_cost(const isk_pipeline *pl, int from)
 {
     double c = 0.0;

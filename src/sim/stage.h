@@ -85,6 +85,18 @@ typedef enum isk_rest_role {
     ISK_REST_BESIDE      /* neither reads nor writes x, y, vx, vy: runs on every block */
 } isk_rest_role;
 
+/* What a stage needs of the runner and of the list (isk_stage_kind.needs);
+ * the list's compiler folds them (isk_pipeline_needs) instead of asking
+ * about the scene:
+ *   ISK_NEEDS_ORDER  its blocks must run one after the other, in particle
+ *                    order (it changes what the next particle sees: a
+ *                    potential that switches itself off, draws from the
+ *                    owner's random stream): the list runs on one thread
+ *   ISK_NEEDS_START  the state each particle starts the step from (a
+ *                    bounce at the time of impact): the list keeps it, by
+ *                    the remember stage or in the motion stage's own pass */
+enum { ISK_NEEDS_ORDER = 1u, ISK_NEEDS_START = 2u };
+
 typedef struct isk_stage_kind {
     const char *name;                                        /* "drift" */
     void (*run)(const isk_stage *st, isk_block *b, double h);
@@ -94,6 +106,7 @@ typedef struct isk_stage_kind {
                                                                 of a particle is 1); NULL: 1.  What
                                                                 decides whether a run is shared out
                                                                 among workers, never a byte */
+    unsigned (*needs)(const isk_stage *st);                  /* ISK_NEEDS_*; NULL: none */
 } isk_stage_kind;
 
 /* The axes of a block at rest (isk_block.frozen, isk_rest_blocks). */
@@ -123,8 +136,10 @@ struct isk_stage {
         struct {
             const isk_bounds *b;
             double drag;                                     /* the motion's linear drag b (impact.h) */
-            int start;                                       /* 1: the start state was remembered (potentials
-                                                                act): the remember stage or motion.remember */
+            int curved;                                      /* 1: the flight is not a constant acceleration's
+                                                                (potentials act): it needs the start state */
+            int start;                                       /* 1: the list keeps the start state (the
+                                                                remember stage or motion.remember) */
             double ax, ay, offset;                           /* else: the constant acceleration and the
                                                                 integrator's velocity offset */
             int hit;                                         /* count bounces into p->hit (on_hit) */
@@ -151,6 +166,11 @@ typedef struct isk_pipeline {
     int n;
 } isk_pipeline;
 
+/* What the stages of the list need, or-ed (ISK_NEEDS_*). */
+unsigned isk_pipeline_needs(const isk_pipeline *pl);
+/* Inserts a stage of `kind` with zeroed parameters before stage `at` (0 ..
+ * pl->n); NULL when the list is full. */
+isk_stage *isk_pipeline_insert(isk_pipeline *pl, int at, const isk_stage_kind *kind);
 /* What stages [from, n) of the list declare a particle's step costs, in
  * drifts (isk_stage_kind.cost). */
 double isk_pipeline_cost(const isk_pipeline *pl, int from);

@@ -118,8 +118,15 @@ static isk_rest_role rest_walls(const isk_stage *st)
     return st->u.walls.hit ? ISK_REST_BREAKS : ISK_REST_SKIPPED;
 }
 
-const isk_stage_kind isk_stage_walls = {
-    .name = "walls", .run = run_walls, .describe = describe_walls, .rest = rest_walls};
+/* At the time of impact, a flight that is not a constant acceleration's
+ * is read from its start state (iskra/impact.h). */
+static unsigned needs_walls(const isk_stage *st) { return st->u.walls.curved ? ISK_NEEDS_START : 0u; }
+
+const isk_stage_kind isk_stage_walls = {.name = "walls",
+                                        .run = run_walls,
+                                        .describe = describe_walls,
+                                        .rest = rest_walls,
+                                        .needs = needs_walls};
 
 static void run_deflect(const isk_stage *st, isk_block *b, double h)
 {
@@ -167,6 +174,21 @@ static void describe_deflect(const isk_stage *st, FILE *out)
 /* A crossing test against every segment. */
 static double cost_deflect(const isk_stage *st) { return 1.0 + (double)st->u.deflect.n; }
 
-const isk_stage_kind isk_stage_deflect = {
-    .name = "deflect", .run = run_deflect, .describe = describe_deflect,
-    .rest = NULL /* draws from the owner's stream */, .cost = cost_deflect};
+/* The crossings are found from the start state; a segment that lets a
+ * particle through by chance draws from the owner's stream, in particle
+ * order. */
+static unsigned needs_deflect(const isk_stage *st)
+{
+    unsigned needs = ISK_NEEDS_START;
+    for (int k = 0; k < st->u.deflect.n; k++)
+        if (st->u.deflect.segs[k].probability > 0.0 && st->u.deflect.segs[k].probability < 1.0)
+            needs |= ISK_NEEDS_ORDER;
+    return needs;
+}
+
+const isk_stage_kind isk_stage_deflect = {.name = "deflect",
+                                          .run = run_deflect,
+                                          .describe = describe_deflect,
+                                          .rest = NULL /* draws from the owner's stream */,
+                                          .cost = cost_deflect,
+                                          .needs = needs_deflect};

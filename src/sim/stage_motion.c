@@ -108,8 +108,19 @@ static double cost_motion(const isk_stage *st)
     return 2.0 + 4.0 * (double)(f->pick ? f->npick : f->npot);
 }
 
-const isk_stage_kind isk_stage_motion = {
-    .name = "integrate", .run = run_motion, .describe = describe_motion, .rest = rest_motion, .cost = cost_motion};
+/* A potential that switches itself off at its max distance does so at the
+ * first particle that comes near, for every later one: particle order. */
+static unsigned needs_motion(const isk_stage *st)
+{
+    return isk_forces_laws(st->u.motion.forces) & ISK_LAW_CUTOFF ? ISK_NEEDS_ORDER : 0u;
+}
+
+const isk_stage_kind isk_stage_motion = {.name = "integrate",
+                                         .run = run_motion,
+                                         .describe = describe_motion,
+                                         .rest = rest_motion,
+                                         .cost = cost_motion,
+                                         .needs = needs_motion};
 
 static void run_age(const isk_stage *st, isk_block *b, double h)
 {
