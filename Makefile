@@ -8,6 +8,7 @@
 #   make test SANITIZE=clang   the same built by clang, with float-cast-overflow
 #                  and integer-divide-by-zero too (build-clang/)
 #   make test NATIVE=1     built with -march=native (build-native/): same bits
+#   make test REFERENCE=1  every fast path compiled out (build-ref/): same bits
 #   make fuzz-smoke   every kept fuzz crasher and corpus file, then a short
 #                  fuzz run of each target (scene, png)
 #   make run        install missing packages, then run the main demo
@@ -58,6 +59,14 @@ else ifeq ($(SANITIZE),thread)
 BUILD   ?= build-tsan
 SANFLAGS := -fsanitize=thread -fno-omit-frame-pointer
 OPT     ?= -O1 $(DEBUG_INFO)
+else ifeq ($(REFERENCE),1)
+# Every fast path compiled out (src/core/fast_paths.h): one thread, no
+# bands, no rest, dots one at a time, no fused motion, the portable loops.
+# The build to read first; the suite passes in it against the same
+# reference images, which is what proves each fast path gives its bytes.
+BUILD   ?= build-ref
+SANFLAGS := -DISKRA_REFERENCE=1
+OPT     ?= -O2 $(DEBUG_INFO)
 else ifeq ($(NATIVE),1)
 # Opt-in: every loop compiled for this CPU's vector units.  The bits stay
 # those of the portable build (-ffp-contract=off: no FMA; no
@@ -497,7 +506,7 @@ uninstall:
 	rm -f $(DESTDIR)$(BINDIR)/iskra
 
 clean:
-	rm -rf build build-san build-clang build-tsan build-native out
+	rm -rf build build-san build-clang build-tsan build-native build-ref out
 
 help:
 	@sed -n '1,12p' Makefile

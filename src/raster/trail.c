@@ -19,6 +19,7 @@
 #include <math.h>
 #include <string.h>
 
+#include "core/fast_paths.h"
 #include "raster/blend_px.h"
 #include "raster/clip.h"
 #include "raster/trail_rows.h"
@@ -370,7 +371,7 @@ void isk__stroke_trail_rows(isk_canvas *c, const double *xy, int n, double width
             /* pixel centres of the tile, and widened by the reach */
             const centres b = {tx + 0.5, tx + tl.w - 0.5, ty + 0.5, ty + tl.h - 0.5};
             const double X0 = b.x0 - R, X1 = b.x1 + R, Y0 = b.y0 - R, Y1 = b.y1 + R;
-            const int wide = tr.reach >= WIDE_REACH;
+            const int wide = ISK__FAST_CULL && tr.reach >= WIDE_REACH; /* the reference: every segment */
             const double far = wide ? nearest_bound(&tr, &b, X0, X1, Y0, Y1) : INFINITY;
             double s0 = 0.0;
             for (int k = 0; k < tr.nseg; k++) {

@@ -49,6 +49,7 @@
 #include "effect_internal.h"
 #include "iskra/draw.h"
 #include "raster/span_simd.h"
+#include "core/fast_paths.h"
 #include "sim/workers.h"
 #include "view/world_batch.h"
 
@@ -537,8 +538,13 @@ static isk_status replay_bands(isk_effect *e, isk_canvas *c, fx_group *g, const 
 isk_status fx_draw_bands(isk_effect *e, isk_canvas *c, fx_group *g, const fx_draw_kind *k, const fx_band *whole,
                          double units, const isk_color *fill)
 {
+    if (!ISK__FAST_BANDS) { /* the reference: the group drawn whole */
+        if (fill)
+            isk_canvas_fill(c, *fill);
+        return k->draw(e, c, g, whole);
+    }
     const int threads = isk_workers_count(&e->workers);
-    fx_retained *rt = (k->may & FX_MAY_RETAIN) ? fx_retain_begin(e, c, g, threads) : NULL;
+    fx_retained *rt = ISK__FAST_RETAIN && (k->may & FX_MAY_RETAIN) ? fx_retain_begin(e, c, g, threads) : NULL;
     if (rt && rt->nb > 0) {
         rt->replays++;
         return replay_bands(e, c, g, whole, rt, fill);

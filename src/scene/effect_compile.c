@@ -21,6 +21,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "core/fast_paths.h"
 #include "effect_internal.h"
 
 /* Sums the referenced forces into the group's isk_forces; the live
@@ -152,7 +153,7 @@ isk_status fx_compile(isk_effect *e, fx_group *g)
     g->const_ay = f->ay - f->gravity;
     /* The sway right after the drift (no stage between them but the sound
      * order's slow): both in one pass, one stage that stands for them all. */
-    const int sway = g->store.osc_amp != NULL, drift_sway = fast && sway;
+    const int sway = g->store.osc_amp != NULL, drift_sway = ISK__FAST_FUSED && fast && sway;
     if (drift_sway) {
         if (!ADD(isk_stage_drift_sway))
             return ISK_ERR_FULL;

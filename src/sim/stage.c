@@ -2,6 +2,7 @@
 /* The block runner (see stage.h). */
 #include "sim/stage.h"
 
+#include "core/fast_paths.h"
 #include "sim/rest.h"
 #include "sim/workers.h"
 
@@ -95,7 +96,8 @@ int isk_pipeline_run(const isk_pipeline *pl, isk_particles *p, size_t begin, siz
     if (end <= begin)
         return s->nonfinite;
     const int workers = r.workers ? isk_workers_count(r.workers) : 1;
-    if (ctx && ctx->rest && begin == 0 && (r.prefix = isk_rest_begin(ctx->rest, pl, end, h, workers, &r.phase)))
+    if (ISK__FAST_REST && ctx && ctx->rest && begin == 0 &&
+        (r.prefix = isk_rest_begin(ctx->rest, pl, end, h, workers, &r.phase)))
         r.rest = ctx->rest;
     const size_t blocks = (end - begin + ISK_SIM_BLOCK - 1) / ISK_SIM_BLOCK;
     if (!r.workers) {

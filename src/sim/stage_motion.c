@@ -3,6 +3,7 @@
  * ageing (see stage.h). */
 #include <math.h>
 
+#include "core/fast_paths.h"
 #include "sim/kernels.h"
 #include "sim/motion_fused.h"
 #include "sim/stage.h"
@@ -61,7 +62,7 @@ static void run_motion(const isk_stage *st, isk_block *b, double h)
 {
     const isk_motion_start start = isk_motion_start_of(b->s);
     int nonfinite;
-    if (isk_motion_fused(st->u.motion.method, st->u.motion.forces, b->n, b->x, b->y, b->vx, b->vy, b->m, h,
+    if (ISK__FAST_FUSED && isk_motion_fused(st->u.motion.method, st->u.motion.forces, b->n, b->x, b->y, b->vx, b->vy, b->m, h,
                          st->u.motion.remember ? &start : NULL, &nonfinite)) {
         b->s->nonfinite |= nonfinite; /* the common case in one pass: the same bits (motion_fused.h) */
         return;

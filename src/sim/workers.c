@@ -5,6 +5,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "core/fast_paths.h"
 #include "sim/pool.h"
 
 /* A worker's scratch on cache lines of its own (and 64-byte aligned, for
@@ -54,7 +55,7 @@ isk_status isk_workers_start(isk_workers *w, int threads)
     if (!slot)
         return ISK_ERR_NOMEM;
     isk_pool *pool = NULL;
-    isk_status s = threads > 1 ? isk_pool_create(&pool, threads) : ISK_OK;
+    isk_status s = ISK__FAST_WORKERS && threads > 1 ? isk_pool_create(&pool, threads) : ISK_OK;
     if (s != ISK_OK) {
         free(slot);
         return s;
@@ -91,7 +92,7 @@ void isk_workers_for(isk_workers *w, size_t n, size_t min_items, isk_task_fn *fn
 {
     if (n == 0)
         return;
-    if (w->n == 1 || n < min_items || n < 2) {
+    if (!ISK__FAST_WORKERS || w->n == 1 || n < min_items || n < 2) { /* the reference: in order */
         run_on_caller(NULL, fn, task, n);
         return;
     }

@@ -15,6 +15,7 @@
 #include <stdint.h>
 #include <string.h>
 
+#include "core/fast_paths.h"
 #include "view/dot_block.h"
 #include "view/world_batch.h"
 
@@ -357,7 +358,7 @@ static ISK__INLINE void run_rule(const isk_canvas *c, int r0, int r1, int c0, in
     switch (rule) {
     case ISK__BATCH_DOT:
     case ISK__BATCH_DOT_BROWSER:
-        if (n < LUT_MIN_BATCH) {
+        if (!ISK__FAST_BATCH || n < LUT_MIN_BATCH) { /* the reference: one dot at a time */
             run_dots_single(c, r0, r1, c0, c1, v, n, list, x, y, col, rule == ISK__BATCH_DOT_BROWSER, keep, mode);
             break;
         }
