@@ -10,7 +10,7 @@
 #   make test NATIVE=1     built with -march=native (build-native/): same bits
 #   make fuzz-smoke   every kept fuzz crasher and corpus file, then a short
 #                  fuzz run of each target (scene, png)
-#   make run        install missing packages, then run the main demo
+#   make run        install missing packages, build the iskra tool, run the main demo
 #   make bench      run the benchmarks (ratios measured in one run)
 #   make install PREFIX=/usr/local DESTDIR=   headers, libraries, iskra.pc, iskra
 #                (an rpath in iskra.pc for a non-system LIBDIR; RPATH=no|yes)
@@ -148,6 +148,10 @@ LIBA     := $(BUILD)/lib/libiskra.a
 LIBSO    := $(BUILD)/lib/libiskra.so
 SDLA     := $(BUILD)/lib/libiskra-sdl.a
 SDLSO    := $(BUILD)/lib/libiskra-sdl.so
+# The names the run-time loader looks for (the sonames): links to the
+# libraries above, so a program linked against $(BUILD)/lib starts with
+# LD_LIBRARY_PATH=$(BUILD)/lib (or an rpath to it).
+SONAME_LINKS := $(LIBSO).$(SOVERSION) $(SDLSO).$(SOVERSION)
 TOOL     := $(BUILD)/bin/iskra
 EXAMPLES := $(EX_SRC:examples/%.c=$(BUILD)/examples/%)
 TESTS    := $(TEST_SRC:tests/%.c=$(BUILD)/tests/%)
@@ -179,7 +183,7 @@ ALLOC_TOOL := $(BUILD)/tests/iskra_allocfail
 
 all: lib $(TOOL) examples tests benches $(CXX_CHECK) $(ALLOC_TOOL) $(THREADS_CHECK)
 
-lib: $(LIBA) $(LIBSO) $(SDLA) $(SDLSO)
+lib: $(LIBA) $(LIBSO) $(SDLA) $(SDLSO) $(SONAME_LINKS)
 examples: $(EXAMPLES)
 tests: $(TESTS)
 benches: $(BENCHES)
@@ -225,6 +229,10 @@ $(SDLSO): $(SDL_OBJ) $(LIBSO) src/exports.map
 	$(call say,LD,$@)
 	$(Q)$(CC) -shared $(SANFLAGS) -Wl,-soname,libiskra-sdl.so.$(SOVERSION) -Wl,--version-script,src/exports.map \
 	    -o $@ $(SDL_OBJ) $(LDFLAGS) -L$(BUILD)/lib -liskra $(LIBS_SDL) $(LIBS_CORE)
+
+$(SONAME_LINKS): $(BUILD)/lib/%.$(SOVERSION): $(BUILD)/lib/%
+	$(call say,LN,$@)
+	$(Q)ln -sf $(notdir $<) $@
 
 # ---- programs (statically linked against our own libraries) ----------------
 $(TOOL): $(TOOL_OBJ) $(SDLA) $(LIBA)
@@ -317,8 +325,10 @@ test: deps
 test-run: all $(BUILD)/gen/examples.txt $(BUILD)/gen/header_examples.env
 	@BUILD=$(BUILD) sh tests/run_all.sh
 
+# The demo needs the iskra tool alone (and the libraries it links): not the
+# tests, examples or benchmarks `all` builds.
 run: deps
-	@$(MAKE) --no-print-directory all
+	@$(MAKE) --no-print-directory $(TOOL)
 	@BUILD=$(BUILD) sh tools/run_demo.sh
 
 bench: deps
@@ -499,7 +509,8 @@ uninstall:
 clean:
 	rm -rf build build-san build-clang build-tsan build-native out
 
+# The comment atop this file, up to its first blank line.
 help:
-	@sed -n '1,12p' Makefile
+	@sed -n '2,/^$$/p' Makefile
 
 -include $(shell find $(BUILD)/obj $(BUILD)/fuzz/obj -name '*.d' 2>/dev/null)
