@@ -8,17 +8,30 @@
 
 #include "cmd.h"
 #include "iskra/keys.h"
+#include "scene/scene_values.h"
+
+/* "scene, view, force, ... or click": every section, from the key table. */
+static void section_list(char *buf, size_t n)
+{
+    size_t used = 0;
+    buf[0] = 0;
+    for (int s = 0; s < ISK_SECTION_COUNT && used < n; s++)
+        used += (size_t)snprintf(buf + used, n - used, "%s%s", s == 0 ? "" : s == ISK_SECTION_COUNT - 1 ? " or " : ", ",
+                                 isk_section_name((isk_section_kind)s));
+}
 
 static void help(FILE *f)
 {
+    char sections[200];
+    section_list(sections, sizeof sections);
     fprintf(f, "usage: iskra keys [SECTION] [--csv | --markdown]\n"
                "  Prints every key of a scene file: type, default, range, the kinds it applies to,\n"
                "  whether a running effect takes a change at once (isk_effect_set), and what it means.\n"
-               "  SECTION       only that section: scene, view, force, deflector, bounds, emitter,\n"
-               "                drawing or click\n"
+               "  SECTION       only that section: %s\n"
                "  --csv         one row per key: section,key,type,default,min,max,applies_to,meaning\n"
                "  --markdown    the tables of docs/scene-format.md (needs SECTION)\n"
-               "  exit status: 0 success, 2 usage error\n");
+               "  exit status: 0 success, 2 usage error\n",
+            sections);
 }
 
 /* A CSV field, quoted when it must be. */
@@ -73,13 +86,15 @@ static void print_csv(int section)
         csv_field(lo, 0);
         csv_field(hi, 0);
         csv_field(kinds[0] ? kinds : "all", 0);
-        csv_field(k->meaning, 1);
+        char meaning[2000];
+        isk_key_meaning_text(k, meaning, sizeof meaning);
+        csv_field(meaning, 1);
     }
 }
 
 /* A row's columns in words. */
 typedef struct row_text {
-    char dflt[200], range[300], kinds[200], live[200];
+    char dflt[200], range[300], kinds[200], live[200], meaning[2000];
 } row_text;
 
 static void row_words(const isk_key *k, row_text *t)
@@ -88,6 +103,7 @@ static void row_words(const isk_key *k, row_text *t)
     isk_key_range_text(k, t->range, sizeof t->range);
     isk_key_kinds_text(k, k->applies, t->kinds, sizeof t->kinds);
     isk_key_live_text(k, t->live, sizeof t->live);
+    isk_key_meaning_text(k, t->meaning, sizeof t->meaning);
 }
 
 /* One markdown cell (a '|' inside is escaped). */
@@ -124,7 +140,7 @@ static void print_markdown(int section)
         md_cell(t.dflt);
         md_cell(t.range);
         md_cell(t.live);
-        md_cell(k->meaning);
+        md_cell(t.meaning);
         putchar('\n');
     }
 }
@@ -156,7 +172,7 @@ static void print_readable(int section)
             if (*t.kinds)
                 printf("; for %s", t.kinds);
             printf("; live: %s\n", t.live);
-            printf("  %-19s %s\n", "", k->meaning);
+            printf("  %-19s %s\n", "", t.meaning);
         }
         printf("\n");
     }
@@ -182,9 +198,14 @@ int cmd_keys(int argc, char **argv)
                     isk_section_name((isk_section_kind)section));
             return 2;
         } else if ((section = isk_section_find(argv[i])) < 0) {
-            fprintf(stderr, "iskra keys: no section '%s' (scene, view, force, deflector, bounds, emitter, drawing, "
-                            "click)\n",
-                    argv[i]);
+            char sections[200];
+            section_list(sections, sizeof sections);
+            const char *names[ISK_SECTION_COUNT];
+            for (int s = 0; s < ISK_SECTION_COUNT; s++)
+                names[s] = isk_section_name((isk_section_kind)s);
+            const char *guess = scv_suggest(argv[i], names, ISK_SECTION_COUNT);
+            fprintf(stderr, "iskra keys: no section '%s'%s%s%s (%s)\n", argv[i], guess ? "; did you mean '" : "",
+                    guess ? guess : "", guess ? "'?" : "", sections);
             return 2;
         }
     }
