@@ -2,7 +2,8 @@
 /* A scene that draws nothing (an empty file, a [scene] section alone,
  * emitters that all have draw = none) renders its background with exit 0,
  * and the scene commands warn on stderr, naming the file, that nothing is
- * drawn; a scene that draws anything gets no warning. */
+ * drawn; a scene that draws anything (a particle, a drawing, a drawn
+ * potential, a deflector shown) gets no warning. */
 #include <criterion/criterion.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -78,8 +79,9 @@ Test(nothing_drawn, a_scene_that_draws_anything_gets_no_warning)
         "[emitter a]\nsource = particle\n",
         "[drawing d]\nkind = disc\nposition = 0, 0\nradius = 1\n",
         "[emitter a]\nsource = particle\ndraw = none\n[force p]\nkind = potential\nk = 1\nposition = 0, 0\n",
+        "[deflector roof]\nsegment = -5, 0, 5, 1\nshow = true\n",
     };
-    for (int i = 0; i < 3; i++) {
+    for (int i = 0; i < 4; i++) {
         char dir[200];
         snprintf(dir, sizeof dir, OUT "/drawn%d", i);
         char *err = run(dir, "render %s --out %s/x.png", texts[i], 0);

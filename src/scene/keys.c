@@ -128,6 +128,7 @@ static const char *const units_notes[2] = {
 
 #define DEFL(key) .section = ISK_SECTION_DEFLECTOR, .name = key
 #define SEG(f) .offset = offsetof(isk_deflector_def, seg.f)
+#define DFL(f) .offset = offsetof(isk_deflector_def, f)
 
 /* ---- [bounds]: isk_bounds -------------------------------------------------- */
 
@@ -276,6 +277,11 @@ static const isk_key keys[] = {
      .live = ALL, .meaning = "what a hit does"},
     {DEFL("restitution_mode"), .type = ISK_KEY_ENUM, SEG(mode), NAMES(isk_restitution_mode_names),
      NOTES(restitution_mode_notes), .dflt = "uniform", .live = ALL, .meaning = "what restitution scales"},
+    {DEFL("show"), .type = ISK_KEY_BOOL, DFL(show), .dflt = "false", .live = ALL,
+     .meaning = "draw the segment, after the drawings and before the particles, as a line 1 px wide (where the "
+                "segment is at each frame)"},
+    {DEFL("color"), .type = ISK_KEY_COLOR, DFL(color), .dflt = "white", .live = ALL,
+     .meaning = "the colour of the line show draws"},
 
     /* [bounds] */
     {BOUNDS("mode"), .type = ISK_KEY_ENUM, BND(mode), NAMES(isk_bounce_mode_names), NOTES(bounce_mode_notes),

@@ -165,13 +165,16 @@ void scene_args_help(FILE *f)
                "                   or with K, M, G (default 4G); a scene that could need more is refused\n");
 }
 
-/* What the scene shows besides its background: a drawing, an emitter that
- * draws its particles, a potential drawn as a disc.  NULL when nothing is
- * drawn, else the first such thing. */
+/* What the scene shows besides its background: a drawing, a deflector
+ * shown, an emitter that draws its particles, a potential drawn as a disc.
+ * NULL when nothing is drawn, else the first such thing. */
 static const char *first_drawn(const isk_effect_def *d)
 {
     if (d->ndrawings > 0)
         return "drawing";
+    for (int i = 0; i < d->ndeflectors; i++)
+        if (d->deflectors[i].show)
+            return "deflector";
     for (int i = 0; i < d->nemitters; i++)
         if (d->emitters[i].draw != ISK_DRAW_NONE)
             return "emitter";
