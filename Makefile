@@ -12,8 +12,11 @@
 #                  fuzz run of each target (scene, png)
 #   make run        install missing packages, build the iskra tool, run the main demo
 #   make bench      run the benchmarks (ratios measured in one run)
-#   make install PREFIX=/usr/local DESTDIR=   headers, libraries, iskra.pc, iskra
-#                (an rpath in iskra.pc for a non-system LIBDIR; RPATH=no|yes)
+#   make install PREFIX=/usr/local DESTDIR=   headers, libraries, iskra.pc, iskra,
+#                its manual pages (an rpath in iskra.pc for a non-system LIBDIR;
+#                RPATH=no|yes)
+#   make man        write man/iskra.1 and man/iskra-scene.5 again (after a change
+#                to a command's help, the key table or man/*.in)
 #
 # Sources are discovered, not listed: every src/**/*.c goes into libiskra
 # except src/io/sdl_*.c (libiskra-sdl); every examples/*.c, tests/test_*.c and
@@ -169,7 +172,7 @@ say = @printf '  %-6s %s\n' $(1) $(2)
 endif
 LIBS_SDL  = $(PKG_SDL_LIBS)
 
-.PHONY: all lib examples tests benches test test-run run bench install uninstall clean deps help fuzz
+.PHONY: all lib examples tests benches test test-run run bench install uninstall clean deps help fuzz man
 # Objects are intermediate files of the program rules; keep them (no
 # deletion noise, no rebuilds).
 .SECONDARY:
@@ -336,6 +339,13 @@ bench: deps
 	@set -e; for b in $(BENCHES); do echo "== $$b"; $$b; done
 	@echo "== iskra bench accuracy"; $(TOOL) bench accuracy --out out/accuracy
 
+# ---- manual pages ------------------------------------------------------------
+# man/iskra.1 and man/iskra-scene.5 are written from man/*.in by the iskra
+# tool itself (every command's --help, `iskra keys --man`), and committed;
+# tests/test_man_pages.c fails when they differ from what this writes.
+man: $(TOOL)
+	$(Q)sh tools/gen_man.sh $(TOOL) man
+
 # ---- peer benchmark (bench_peers) ------------------------------------------
 # bench/bench_peers/ times iskra's primitives against cairo, pixman, AGG (a
 # small C++ file), SDL2 and SDL2_gfx from Debian.  `make bench` installs them
@@ -469,6 +479,7 @@ LIBDIR ?= $(PREFIX)/lib
 INCDIR ?= $(PREFIX)/include
 BINDIR ?= $(PREFIX)/bin
 PCDIR  ?= $(LIBDIR)/pkgconfig
+MANDIR ?= $(PREFIX)/share/man
 
 # Programs built with `pkg-config --libs iskra` find libiskra.so at run time
 # without LD_LIBRARY_PATH: for a LIBDIR outside the default system library
@@ -497,6 +508,9 @@ install: lib $(TOOL)
 	install -m 755 $(TOOL) $(DESTDIR)$(BINDIR)/iskra
 	$(PC_SED) iskra.pc.in > $(DESTDIR)$(PCDIR)/iskra.pc
 	$(PC_SED) iskra-sdl.pc.in > $(DESTDIR)$(PCDIR)/iskra-sdl.pc
+	install -d $(DESTDIR)$(MANDIR)/man1 $(DESTDIR)$(MANDIR)/man5
+	install -m 644 man/iskra.1 $(DESTDIR)$(MANDIR)/man1/iskra.1
+	install -m 644 man/iskra-scene.5 $(DESTDIR)$(MANDIR)/man5/iskra-scene.5
 
 uninstall:
 	rm -f $(DESTDIR)$(INCDIR)/iskra.h
@@ -505,6 +519,7 @@ uninstall:
 	rm -f $(DESTDIR)$(LIBDIR)/libiskra.so* $(DESTDIR)$(LIBDIR)/libiskra-sdl.so*
 	rm -f $(DESTDIR)$(PCDIR)/iskra.pc $(DESTDIR)$(PCDIR)/iskra-sdl.pc
 	rm -f $(DESTDIR)$(BINDIR)/iskra
+	rm -f $(DESTDIR)$(MANDIR)/man1/iskra.1 $(DESTDIR)$(MANDIR)/man5/iskra-scene.5
 
 clean:
 	rm -rf build build-san build-clang build-tsan build-native out
