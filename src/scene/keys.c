@@ -47,8 +47,8 @@ static const char *const centre_notes[ISK_FIDELITY_COUNT] = {
 };
 static const char *const fidelity_notes[ISK_FIDELITY_COUNT] = {
     [ISK_FIDELITY_SOUND] = "the physically sound arithmetic (constant accelerations take a fast path)",
-    [ISK_FIDELITY_THESIS] = "the thesis code's arithmetic everywhere (gravity as m*(-g) then dt/m, no "
-                            "constant-acceleration fast path), for bit-exact thesis scenes with random masses",
+    [ISK_FIDELITY_THESIS] = ("the thesis code's arithmetic everywhere (gravity as m*(-g) then dt/m, no "
+                             "constant-acceleration fast path), for bit-exact thesis scenes with random masses"),
 };
 static const char *const law_notes[ISK_COULOMB_LAW_COUNT] = {
     [ISK_COULOMB_LAW_CODE] = "exponent is the code's P, |F| = k|Q| d^(1-P)",
@@ -60,16 +60,16 @@ static const char *const restitution_mode_notes[ISK_RESTITUTION_MODE_COUNT] = {
 };
 static const char *const bounce_mode_notes[ISK_BOUNCE_MODE_COUNT] = {
     [ISK_BOUNCE_THESIS] = "the thesis's zarobi (sign flip, only the floor clamps)",
-    [ISK_BOUNCE_REFLECT] = "the bounce at the time of impact with restitution (include/iskra/impact.h), never "
-                           "tunnels or sticks",
+    [ISK_BOUNCE_REFLECT] = ("the bounce at the time of impact with restitution (include/iskra/impact.h), never "
+                            "tunnels or sticks"),
 };
 static const char *const source_notes[ISK_SOURCE_KIND_COUNT] = {
     [ISK_SOURCE_PARTICLE] = "one particle",
     [ISK_SOURCE_EXPLOSION] = "a thesis explosion",
     [ISK_SOURCE_LAYER] = "the stationary layer",
     [ISK_SOURCE_STREAM] = "continuous emission",
-    [ISK_SOURCE_SUB] = "a sub-emitter: count particles where another emitter's particle dies (on_death) or "
-                       "bounces (on_hit)",
+    [ISK_SOURCE_SUB] = ("a sub-emitter: count particles where another emitter's particle dies (on_death) or "
+                        "bounces (on_hit)"),
 };
 static const char *const kick_notes[ISK_KICK_COUNT] = {
     [ISK_KICK_ALL] = "the whole emitter (the thesis)",
