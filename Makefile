@@ -11,10 +11,13 @@
 #   make test REFERENCE=1  every fast path compiled out (build-ref/): same bits
 #   make fuzz-smoke   every kept fuzz crasher and corpus file, then a short
 #                  fuzz run of each target (scene, png)
-#   make run        install missing packages, then run the main demo
+#   make run        install missing packages, build the iskra tool, run the main demo
 #   make bench      run the benchmarks (ratios measured in one run)
-#   make install PREFIX=/usr/local DESTDIR=   headers, libraries, iskra.pc, iskra
-#                (an rpath in iskra.pc for a non-system LIBDIR; RPATH=no|yes)
+#   make install PREFIX=/usr/local DESTDIR=   headers, libraries, iskra.pc, iskra,
+#                its manual pages (an rpath in iskra.pc for a non-system LIBDIR;
+#                RPATH=no|yes)
+#   make man        write man/iskra.1 and man/iskra-scene.5 again (after a change
+#                to a command's help, the key table or man/*.in)
 #
 # Sources are discovered, not listed: every src/**/*.c goes into libiskra
 # except src/io/sdl_*.c (libiskra-sdl); every examples/*.c, tests/test_*.c and
@@ -157,6 +160,10 @@ LIBA     := $(BUILD)/lib/libiskra.a
 LIBSO    := $(BUILD)/lib/libiskra.so
 SDLA     := $(BUILD)/lib/libiskra-sdl.a
 SDLSO    := $(BUILD)/lib/libiskra-sdl.so
+# The names the run-time loader looks for (the sonames): links to the
+# libraries above, so a program linked against $(BUILD)/lib starts with
+# LD_LIBRARY_PATH=$(BUILD)/lib (or an rpath to it).
+SONAME_LINKS := $(LIBSO).$(SOVERSION) $(SDLSO).$(SOVERSION)
 TOOL     := $(BUILD)/bin/iskra
 EXAMPLES := $(EX_SRC:examples/%.c=$(BUILD)/examples/%)
 TESTS    := $(TEST_SRC:tests/%.c=$(BUILD)/tests/%)
@@ -174,7 +181,7 @@ say = @printf '  %-6s %s\n' $(1) $(2)
 endif
 LIBS_SDL  = $(PKG_SDL_LIBS)
 
-.PHONY: all lib examples tests benches test test-run run bench install uninstall clean deps help fuzz
+.PHONY: all lib examples tests benches test test-run run bench install uninstall clean deps help fuzz man
 # Objects are intermediate files of the program rules; keep them (no
 # deletion noise, no rebuilds).
 .SECONDARY:
@@ -188,7 +195,7 @@ ALLOC_TOOL := $(BUILD)/tests/iskra_allocfail
 
 all: lib $(TOOL) examples tests benches $(CXX_CHECK) $(ALLOC_TOOL) $(THREADS_CHECK)
 
-lib: $(LIBA) $(LIBSO) $(SDLA) $(SDLSO)
+lib: $(LIBA) $(LIBSO) $(SDLA) $(SDLSO) $(SONAME_LINKS)
 examples: $(EXAMPLES)
 tests: $(TESTS)
 benches: $(BENCHES)
@@ -234,6 +241,10 @@ $(SDLSO): $(SDL_OBJ) $(LIBSO) src/exports.map
 	$(call say,LD,$@)
 	$(Q)$(CC) -shared $(SANFLAGS) -Wl,-soname,libiskra-sdl.so.$(SOVERSION) -Wl,--version-script,src/exports.map \
 	    -o $@ $(SDL_OBJ) $(LDFLAGS) -L$(BUILD)/lib -liskra $(LIBS_SDL) $(LIBS_CORE)
+
+$(SONAME_LINKS): $(BUILD)/lib/%.$(SOVERSION): $(BUILD)/lib/%
+	$(call say,LN,$@)
+	$(Q)ln -sf $(notdir $<) $@
 
 # ---- programs (statically linked against our own libraries) ----------------
 $(TOOL): $(TOOL_OBJ) $(SDLA) $(LIBA)
@@ -326,14 +337,23 @@ test: deps
 test-run: all $(BUILD)/gen/examples.txt $(BUILD)/gen/header_examples.env
 	@BUILD=$(BUILD) sh tests/run_all.sh
 
+# The demo needs the iskra tool alone (and the libraries it links): not the
+# tests, examples or benchmarks `all` builds.
 run: deps
-	@$(MAKE) --no-print-directory all
+	@$(MAKE) --no-print-directory $(TOOL)
 	@BUILD=$(BUILD) sh tools/run_demo.sh
 
 bench: deps
 	@$(MAKE) --no-print-directory benches $(TOOL)
 	@set -e; for b in $(BENCHES); do echo "== $$b"; $$b; done
 	@echo "== iskra bench accuracy"; $(TOOL) bench accuracy --out out/accuracy
+
+# ---- manual pages ------------------------------------------------------------
+# man/iskra.1 and man/iskra-scene.5 are written from man/*.in by the iskra
+# tool itself (every command's --help, `iskra keys --man`), and committed;
+# tests/test_man_pages.c fails when they differ from what this writes.
+man: $(TOOL)
+	$(Q)sh tools/gen_man.sh $(TOOL) man
 
 # ---- peer benchmark (bench_peers) ------------------------------------------
 # bench/bench_peers/ times iskra's primitives against cairo, pixman, AGG (a
@@ -468,6 +488,7 @@ LIBDIR ?= $(PREFIX)/lib
 INCDIR ?= $(PREFIX)/include
 BINDIR ?= $(PREFIX)/bin
 PCDIR  ?= $(LIBDIR)/pkgconfig
+MANDIR ?= $(PREFIX)/share/man
 
 # Programs built with `pkg-config --libs iskra` find libiskra.so at run time
 # without LD_LIBRARY_PATH: for a LIBDIR outside the default system library
@@ -496,6 +517,9 @@ install: lib $(TOOL)
 	install -m 755 $(TOOL) $(DESTDIR)$(BINDIR)/iskra
 	$(PC_SED) iskra.pc.in > $(DESTDIR)$(PCDIR)/iskra.pc
 	$(PC_SED) iskra-sdl.pc.in > $(DESTDIR)$(PCDIR)/iskra-sdl.pc
+	install -d $(DESTDIR)$(MANDIR)/man1 $(DESTDIR)$(MANDIR)/man5
+	install -m 644 man/iskra.1 $(DESTDIR)$(MANDIR)/man1/iskra.1
+	install -m 644 man/iskra-scene.5 $(DESTDIR)$(MANDIR)/man5/iskra-scene.5
 
 uninstall:
 	rm -f $(DESTDIR)$(INCDIR)/iskra.h
@@ -504,11 +528,13 @@ uninstall:
 	rm -f $(DESTDIR)$(LIBDIR)/libiskra.so* $(DESTDIR)$(LIBDIR)/libiskra-sdl.so*
 	rm -f $(DESTDIR)$(PCDIR)/iskra.pc $(DESTDIR)$(PCDIR)/iskra-sdl.pc
 	rm -f $(DESTDIR)$(BINDIR)/iskra
+	rm -f $(DESTDIR)$(MANDIR)/man1/iskra.1 $(DESTDIR)$(MANDIR)/man5/iskra-scene.5
 
 clean:
 	rm -rf build build-san build-clang build-tsan build-native build-ref out
 
+# The comment atop this file, up to its first blank line.
 help:
-	@sed -n '1,12p' Makefile
+	@sed -n '2,/^$$/p' Makefile
 
 -include $(shell find $(BUILD)/obj $(BUILD)/fuzz/obj -name '*.d' 2>/dev/null)

@@ -5,7 +5,7 @@
 # `pkg-config --cflags --libs iskra` only, and runs it WITHOUT
 # LD_LIBRARY_PATH: the program must find libiskra.so by itself (the rpath
 # iskra.pc carries for such a prefix).  Then the same with the static
-# library, the installed iskra tool, and uninstall.
+# library, the installed iskra tool and its manual pages, and uninstall.
 # Prints "install check: ok" on success; exit status says the rest.
 set -eu
 prefix="$(pwd)/out/install-check"
@@ -27,6 +27,9 @@ readelf -d "$work/hello" | grep -Eq "R(UN)?PATH.*$prefix/lib" || fail "hello has
 (cd "$work" && env -u LD_LIBRARY_PATH ./hello) || fail "hello does not run without LD_LIBRARY_PATH"
 test -s "$work/hello.png" || fail "hello wrote no hello.png"
 "$prefix/bin/iskra" --version >/dev/null
+# The manual pages, where man looks (PREFIX/share/man/manN).
+cmp -s man/iskra.1 "$prefix/share/man/man1/iskra.1" || fail "iskra.1 is not installed in share/man/man1"
+cmp -s man/iskra-scene.5 "$prefix/share/man/man5/iskra-scene.5" || fail "iskra-scene.5 is not installed in share/man/man5"
 
 # The static library alone works too.
 mkdir -p "$work/static"
@@ -59,4 +62,6 @@ done
 
 make --no-print-directory -s uninstall PREFIX="$prefix" >/dev/null
 test ! -e "$prefix/lib/libiskra.so" && test ! -e "$prefix/include/iskra.h"
+test ! -e "$prefix/share/man/man1/iskra.1" || fail "uninstall left iskra.1"
+test ! -e "$prefix/share/man/man5/iskra-scene.5" || fail "uninstall left iskra-scene.5"
 echo "install check: ok"

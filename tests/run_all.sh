@@ -2,8 +2,9 @@
 # SPDX-License-Identifier: MIT
 # Runs every test binary in $BUILD/tests from the repository root, and the
 # checks that are programs or scripts (threads_check, cxx_link, the header
-# examples, the install check), and prints one closing line
-# "N passed, N failed" (tests counted across binaries).
+# examples, the build tree's shared libraries, the install check), and
+# prints one closing line "N passed, N failed" (tests counted across
+# binaries).  A binary whose tests were skipped says how many and why.
 #
 # The jobs run ISKRA_TEST_JOBS at a time (default: the online cores).
 # Criterion already spreads one binary's tests over the cores, but many
@@ -32,9 +33,12 @@ if [ "${1:-}" = --job ]; then
     dir=$2; name=$3; log="$dir/$name.log"
     case $name in
     test_* | threads_check | cxx_link) set -- "$BUILD/tests/$name" ;;
-    header_examples | install_check) set -- sh "tests/$name.sh" ;;
+    header_examples | install_check | build_tree_link) set -- sh "tests/$name.sh" ;;
     *) exit 0 ;; # no such job: no result, which the report counts as a failure
     esac
+    # Criterion's TAP report (beside its usual output) names the skipped
+    # tests and why they were skipped.
+    case $name in test_*) set -- "$@" --tap="$dir/$name.tap" ;; esac
     case $name in test_*) [ -n "${ISKRA_TEST_FILTER:-}" ] && set -- "$@" --filter="$ISKRA_TEST_FILTER" ;; esac
     t0=$(date +%s.%N)
     "$@" >"$log" 2>&1; rc=$?
@@ -47,7 +51,14 @@ if [ "${1:-}" = --job ]; then
         passing=$(echo "$syn" | sed -n 's/.*Passing: \([0-9]*\).*/\1/p')
         tested=${tested:-0}; passing=${passing:-0}
         fails=$((tested - passing))
-        what="$passing tests" ;;
+        what="$passing tests"
+        # "ok - x::y  # SKIP why": a skipped test is no pass; say how many
+        # and why (each distinct reason once)
+        skipped=$(grep -c '^ok .* # SKIP' "$dir/$name.tap" 2>/dev/null)
+        if [ "${skipped:-0}" -gt 0 ]; then
+            why=$(sed -n 's/^ok .* # SKIP *//p' "$dir/$name.tap" | sort -u | awk '{printf "%s%s", (NR > 1 ? "; " : ""), $0}')
+            what="$what, $skipped skipped: ${why:-no reason given}"
+        fi ;;
     *)
         # a check that is one program: one test, passed when it exits with 0
         passing=$((rc == 0)); fails=0; what=""
@@ -76,6 +87,8 @@ if [ -z "${ISKRA_TEST_FILTER:-}" ]; then
     # Every public header's usage example and docs/hello_iskra.c, built with
     # this build's compiler and flags and run (a header without one fails).
     echo header_examples >>"$list"
+    # A program linked against $BUILD/lib's shared libraries starts.
+    echo build_tree_link >>"$list"
 fi
 xargs -P "$jobs" -n 1 sh "$0" --job "$dir" <"$list"
 # The install check (make install + a pkg-config build) runs once, on the

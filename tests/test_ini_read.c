@@ -102,5 +102,9 @@ Test(ini_read, suggestions)
     cr_assert_str_eq(isk_ini_suggest("substep", keys, 5), "substeps");
     cr_assert_str_eq(isk_ini_suggest("sed", keys, 5), "seed");
     cr_assert_null(isk_ini_suggest("colour", keys, 5));
+    /* a third of the word, rounded up: 2 edits in 5 letters */
+    const char *names[] = {"sparks", "a"};
+    cr_assert_str_eq(isk_ini_suggest("sparx", names, 2), "sparks");
+    cr_assert_null(isk_ini_suggest("spx", names, 2));
     cr_assert_null(isk_ini_suggest(NULL, keys, 5));
 }

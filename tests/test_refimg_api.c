@@ -293,7 +293,7 @@ Test(refimg_api, compare_json_prints_the_same_figures)
     cr_assert_not_null(strstr(out, "\"identical\": true"), "%s", out);
     cr_assert_not_null(strstr(out, "\"diff\": \"" OUT "/json/q\\\"d.png\""), "%s", out);
     free(out);
-    cr_assert_eq(cli_run(OUT "/json", "compare --json " OUT "/json/ref.png " OUT "/json/none.png"), 1);
+    cr_assert_eq(cli_run(OUT "/json", "compare --json " OUT "/json/ref.png " OUT "/json/none.png"), 2);
     out = cli_slurp(OUT "/json/stdout.txt");
     cr_assert_not_null(strstr(out, "\"error\": \"" OUT "/json/none.png: No such file or directory\"}"), "%s", out);
     free(out);

@@ -462,7 +462,7 @@ Test(scene_errors, references)
 Test(scene_errors, kinds_and_required_keys)
 {
     load_fails("[force air]\nkind = drag\ng = 9.81\n", "t.ini:3: [force air] g: only for kind = gravity (this force has kind = drag)");
-    load_fails("[force air]\nb = 1\n", "t.ini:1: [force air] needs kind = gravity, drag, wind or potential");
+    load_fails("[force air]\nb = 1\n", "t.ini:1: [force air] needs kind = gravity, drag, wind, potential or turbulence");
     load_fails("[force P]\nkind = potential\nposition = 1, 1\n", "t.ini:1: [force P] needs k (the potential's strength)");
     load_fails("[emitter e]\nsource = stream\nrect = 0, 1, 0, 1\n",
                "t.ini:3: [emitter e] rect: only for source = layer (this emitter has source = stream)");

@@ -40,6 +40,9 @@ static int have_figures(void)
     return stat(FIG_DIR, &st) == 0;
 }
 
+/* The skip's reason, which the test runner prints (tests/run_all.sh). */
+#define NO_FIGURES "no " FIG_DIR " (the thesis screenshots are not part of the repository)"
+
 static void render(const char *example, isk_canvas *out)
 {
     char cmd[1024], png[512];
@@ -135,7 +138,7 @@ static fig_stats compare(const char *example, const char *figure, int ignore_red
  * to 11 (Skia rounds the end points to 1/64 px first). */
 Test(thesis, fig01_stroke_matches_screenshot)
 {
-    if (!have_figures()) cr_skip_test("thesis screenshots not available");
+    if (!have_figures()) cr_skip_test(NO_FIGURES);
     fig_stats s = compare("fig01_triangle", "fig01-OsnovniCanvasTrokut.png", 0);
     cr_assert_leq(s.differing, 2);
     cr_assert_leq(s.max_diff, 1);
@@ -143,7 +146,7 @@ Test(thesis, fig01_stroke_matches_screenshot)
 
 Test(thesis, fig04_stroke_matches_screenshot)
 {
-    if (!have_figures()) cr_skip_test("thesis screenshots not available");
+    if (!have_figures()) cr_skip_test(NO_FIGURES);
     fig_stats s = compare("fig04_raw_coordinates", "fig04-ZaslonskeKoordinateCanvas.png", 0);
     cr_assert_leq(s.differing, 2);
     cr_assert_leq(s.max_diff, 1);
@@ -151,7 +154,7 @@ Test(thesis, fig04_stroke_matches_screenshot)
 
 Test(thesis, fig08_stroke_close_to_screenshot)
 {
-    if (!have_figures()) cr_skip_test("thesis screenshots not available");
+    if (!have_figures()) cr_skip_test(NO_FIGURES);
     fig_stats s = compare("fig08_view_transform", "fig08-TransformiraniTrokutiCanvas.png", 0);
     cr_assert_lt(s.mean_abs, 0.005);
     cr_assert_leq(s.max_diff, 12);
@@ -195,7 +198,7 @@ static void strict_figure(const char *example, const char *figure, int ignore_re
 
 Test(thesis, fig09_particle_matches_screenshot)
 {
-    if (!have_figures()) cr_skip_test("thesis screenshots not available");
+    if (!have_figures()) cr_skip_test(NO_FIGURES);
     fig_stats s = compare("fig09_stationary_particle", "fig09-CesticaNaPlatnu.png", 1);
     cr_assert_eq(s.lit_mismatch, 0);
     cr_assert_eq(s.lit_ours, 1);
@@ -204,25 +207,25 @@ Test(thesis, fig09_particle_matches_screenshot)
 
 Test(thesis, fig10_trajectory_matches_screenshot)
 {
-    if (!have_figures()) cr_skip_test("thesis screenshots not available");
+    if (!have_figures()) cr_skip_test(NO_FIGURES);
     strict_figure("fig10_trajectory", "fig10-PutanjaCestice.png", 0, 1);
 }
 
 Test(thesis, fig12_gravity_matches_screenshot)
 {
-    if (!have_figures()) cr_skip_test("thesis screenshots not available");
+    if (!have_figures()) cr_skip_test(NO_FIGURES);
     strict_figure("fig12_gravity", "fig12-PutanjaCesticeSilaTeza.png", 0, 1);
 }
 
 Test(thesis, fig11_drag_matches_screenshot)
 {
-    if (!have_figures()) cr_skip_test("thesis screenshots not available");
+    if (!have_figures()) cr_skip_test(NO_FIGURES);
     strict_figure("fig11_drag", "fig11-PutanjaCesticeSOtporom.png", 0, 8);
 }
 
 Test(thesis, fig13_drag_gravity_matches_screenshot)
 {
-    if (!have_figures()) cr_skip_test("thesis screenshots not available");
+    if (!have_figures()) cr_skip_test(NO_FIGURES);
     strict_figure("fig13_drag_gravity", "fig13-PutanjaCesticeOtporSilaTeza.png", 0, 8);
 }
 
@@ -285,7 +288,7 @@ static fig_stats browser_model(const char *fig, const char *figure)
 
 Test(thesis_model, browser_rule_reproduces_figures_10_to_13)
 {
-    if (!have_figures()) cr_skip_test("thesis screenshots not available");
+    if (!have_figures()) cr_skip_test(NO_FIGURES);
     static const char *figs[4][2] = {{"fig10", "fig10-PutanjaCestice.png"},
                                      {"fig11", "fig11-PutanjaCesticeSOtporom.png"},
                                      {"fig12", "fig12-PutanjaCesticeSilaTeza.png"},

@@ -135,6 +135,9 @@ typedef struct isk_deflector_def {
     char name[ISK_NAME_MAX];
     int line;
     isk_deflector seg;     /* the segment and how particles react (iskra/deflector.h) */
+    int show;              /* 1: drawn after the drawings, before the particles, as a
+                              1-px line from the segment as it is at each render */
+    isk_color color;       /* of the line shown (default white) */
 } isk_deflector_def;
 
 /* ---- emitters ---------------------------------------------------------- */
@@ -400,9 +403,6 @@ typedef struct isk_show_def {
  * the parser, describe, error messages and `iskra keys` all read these). */
 extern const char *const isk_force_kind_names[ISK_FORCE_KIND_COUNT];     /* gravity drag wind potential turbulence */
 extern const char *const isk_space_names[ISK_SPACE_COUNT];               /* world local */
-extern const char *const isk_source_names[ISK_SOURCE_KIND_COUNT];        /* particle explosion layer stream */
-
-extern const char *const isk_force_kind_names[ISK_FORCE_KIND_COUNT];     /* gravity drag wind potential */
 extern const char *const isk_source_names[ISK_SOURCE_KIND_COUNT];        /* particle explosion layer stream sub */
 extern const char *const isk_rate_mode_names[ISK_RATE_MODE_COUNT];       /* accumulate thesis */
 extern const char *const isk_birth_mode_names[ISK_BIRTH_MODE_COUNT];     /* backdate thesis-jitter frame */
@@ -582,7 +582,9 @@ const isk_potential *isk_effect_potentials(const isk_effect *e, size_t *count);
  * isk_effect_set(e, "scene", "substeps", ...) with an int (1..1000). */
 isk_status isk_effect_set_substeps(isk_effect *e, int substeps);
 
-/* The compiled stage lists, one line per stage, per emitter. */
+/* The compiled stage lists, one line per stage, per emitter; the drawings;
+ * then the keys of [scene], [bounds], each [deflector NAME] and [click]
+ * as "key = value; ..." lines. */
 void isk_effect_describe(const isk_effect *e, FILE *out);
 
 /* Read-only views for overlays and tests. */

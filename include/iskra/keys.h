@@ -96,7 +96,8 @@ typedef struct isk_key {
                                  item for lists; of the degrees for angles; of the count of
                                  points for POINTS; of the values of scalar stops) */
     double min, max;
-    const char *const *names; /* ENUM: names[value], nnames of them; SIDES: the side names */
+    const char *const *names; /* ENUM: names[value], nnames of them; SIDES: the side names; TEXT:
+                                 the names it accepts (`preset`), or NULL for any text */
     int nnames;
     const isk_key_word *words; /* NUMBER, WHOLE, COUNT, ENUM: words standing for values (NULL-terminated) */
     const char *what;         /* how messages name the value ("a number of seconds"); for lists of
@@ -109,7 +110,10 @@ typedef struct isk_key {
     int create_only;          /* 1: only at creation (isk_effect_set refuses it) */
     int directive;            /* 1: acts where it stands in a scene file (`preset`); what it did is in
                                  the other fields, so scene files are written without it */
-    const char *meaning;      /* one line */
+    const char *meaning;      /* one line; it never lists the names: the range text lists them
+                                 (isk_key_range_text), and `notes` say what each means */
+    const char *const *notes; /* ENUM: notes[value], what each name means (nnames of them), or
+                                 NULL; isk_key_meaning_text joins them to the meaning */
 } isk_key;
 
 #define ISK_KEY_ALL_KINDS (~0u)
@@ -139,7 +143,8 @@ const char *isk_key_type_name(isk_key_type type);
 int isk_key_choices(const isk_key *k, const char **out, int max);
 
 /* A row in words, for tables (`iskra keys`, docs/scene-format.md, panels):
- *   range:   "0..10000000", "> 0", "semi-euler, euler, ..." (enums), ""
+ *   range:   "0..10000000", "> 0", "semi-euler, euler, ..." (the names of enums and of
+ *            keys that take a name from a list), ""
  *   kinds:   the kinds of `mask` ("explosion, layer, stream"); "" for every kind
  *   default: the default as written, how it is chosen, or "required"
  *   live:    "yes", "at reset", "no" (only at creation), or "stream (others at reset)" */
@@ -147,6 +152,9 @@ void isk_key_range_text(const isk_key *k, char *buf, size_t n);
 void isk_key_kinds_text(const isk_key *k, unsigned mask, char *buf, size_t n);
 void isk_key_default_text(const isk_key *k, char *buf, size_t n);
 void isk_key_live_text(const isk_key *k, char *buf, size_t n);
+/* The meaning with what each name means, when the row has notes:
+ *   "what the emitter is: particle = one particle; explosion = ..." */
+void isk_key_meaning_text(const isk_key *k, char *buf, size_t n);
 
 #ifdef __cplusplus
 }

@@ -11,6 +11,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "effect_describe.h"
 #include "effect_internal.h"
 #include "sim/pool.h"
 #include "sim/workers.h"
@@ -492,7 +493,8 @@ isk_status isk_effect_click(isk_effect *e, double x, double y)
 /* ---- inspection ------------------------------------------------------------ */
 
 /* The canvas and view, then each emitter's lists, then the drawings (so a
- * scene that only draws says what it draws). */
+ * scene that only draws says what it draws), then the settings no list
+ * shows (effect_describe.c). */
 void isk_effect_describe(const isk_effect *e, FILE *out)
 {
     if (!e || !out)
@@ -519,6 +521,7 @@ void isk_effect_describe(const isk_effect *e, FILE *out)
         fprintf(out, ", %s, %s%s\n", isk_blend_names[g->blend], isk_units_names[g->pixels ? 1 : 0],
                 g->pixels ? "" : " units");
     }
+    fx_describe_settings(d, out);
 }
 
 size_t isk_effect_particle_count(const isk_effect *e)

@@ -89,6 +89,7 @@ int isk_effect_def_add_deflector(isk_effect_def *d, const char *name, isk_deflec
     isk_deflector_def *g = grow((void **)&d->deflectors, &d->ndeflectors, ISK_EFFECT_MAX_DEFLECTORS, sizeof *g);
     if (!g)
         return -1;
+    fx_section_defaults(ISK_SECTION_DEFLECTOR, g); /* show, color */
     set_name(g->name, name);
     g->seg = seg;
     return d->ndeflectors - 1;

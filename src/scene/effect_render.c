@@ -1,7 +1,8 @@
 /* SPDX-License-Identifier: MIT */
-/* Drawing an effect: static drawings, then each emitter in draw order (its
- * trails, then its particles, each through the band scheduler), then the
- * potentials (as the thesis simulator draws them). */
+/* Drawing an effect: static drawings and the deflectors shown, then each
+ * emitter in draw order (its trails, then its particles, each through the
+ * band scheduler), then the potentials (as the thesis simulator draws
+ * them). */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -77,6 +78,29 @@ static isk_status draw_drawing(isk_effect *e, isk_canvas *c, const isk_view *v, 
     return ISK_OK;
 }
 
+/* The deflectors with show = true: each segment drawn as a drawing's
+ * polyline of two points is (the exact-area stroke 1 px wide, over), read
+ * from the definition at every render, so a live change of the segment is
+ * drawn where it now is. */
+static void draw_deflectors(isk_canvas *c, const isk_view *v, const isk_effect_def *d)
+{
+    for (int i = 0; i < d->ndeflectors; i++) {
+        const isk_deflector_def *f = &d->deflectors[i];
+        if (!f->show)
+            continue;
+        const double xy[4] = {f->seg.x0, f->seg.y0, f->seg.x1, f->seg.y1};
+        isk_world_polyline(c, v, xy, 2, 0, f->color, ISK_BLEND_OVER);
+    }
+}
+
+static int any_deflector_shown(const isk_effect_def *d)
+{
+    for (int i = 0; i < d->ndeflectors; i++)
+        if (d->deflectors[i].show)
+            return 1;
+    return 0;
+}
+
 /* A group's draw: its trails, then its particles, each on the workers in
  * bands where its kind allows (effect_bands.c).  fill: NULL, or the
  * background the canvas is cleared to first, by the bands of the group's
@@ -106,7 +130,7 @@ isk_status fx_render(isk_effect *e, isk_canvas *c)
      * before it: each thread then clears the pixels it is about to blend,
      * and finds them in its own caches instead of the caller's. */
     const isk_color *fill = d->clear ? &d->background : NULL;
-    if (fill && (d->ndrawings > 0 || e->ngroups == 0)) {
+    if (fill && (d->ndrawings > 0 || any_deflector_shown(d) || e->ngroups == 0)) {
         isk_canvas_fill(c, *fill);
         fill = NULL;
     }
@@ -115,6 +139,7 @@ isk_status fx_render(isk_effect *e, isk_canvas *c)
         if (s != ISK_OK)
             return s;
     }
+    draw_deflectors(c, &e->view, d);
     for (int k = 0; k < e->ngroups; k++) {
         fx_group *g = &e->groups[e->draw_order[k]];
         isk_status s = render_group(e, c, g, fill);

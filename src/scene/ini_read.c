@@ -257,7 +257,9 @@ const char *isk_ini_suggest(const char *word, const char *const *candidates, siz
     if (!word)
         return NULL;
     size_t len = strlen(word);
-    size_t limit = len / 3 > 1 ? len / 3 : 1;
+    /* a third of the word, rounded up: "sparx" (5 letters) is 2 edits
+     * from "sparks" */
+    size_t limit = (len + 2) / 3 > 1 ? (len + 2) / 3 : 1;
     const char *best = NULL;
     size_t best_d = (size_t)-1;
     for (size_t i = 0; i < n; i++) {

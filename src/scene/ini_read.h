@@ -67,7 +67,7 @@ isk_status isk_ini_error(isk_error *err, const char *name, int line, const char 
     ;
 
 /* The candidate closest to `word` by edit distance if it is close enough to
- * be a likely misspelling (distance <= max(1, len/3)), else NULL. */
+ * be a likely misspelling (distance <= max(1, ceil(len/3))), else NULL. */
 const char *isk_ini_suggest(const char *word, const char *const *candidates, size_t n);
 
 #endif

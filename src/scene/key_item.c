@@ -255,7 +255,12 @@ void fx_key_expect(const isk_key *k, char *buf, size_t n)
     case ISK_KEY_COLOR_STOPS: snprintf(buf, n, "stops \"t:colour, t:colour, ...\" or off"); return;
     case ISK_KEY_SCALAR_STOPS: snprintf(buf, n, "stops \"t:value, t:value, ...\" or off"); return;
     case ISK_KEY_TEXT: snprintf(buf, n, "text of at most %zu characters", k->aux - 1); return;
-    case ISK_KEY_SIDES: snprintf(buf, n, "sides \"top, right, bottom, left\" (any of them), all or none"); return;
+    case ISK_KEY_SIDES: {
+        char sides[120];
+        fx_join_names(sides, sizeof sides, k->names, k->nnames, (1u << k->nnames) - 1u);
+        snprintf(buf, n, "%s (or all, none)", sides);
+        return;
+    }
     case ISK_KEY_POINTS:
         snprintf(buf, n, "%.15g to %.15g points \"x0, y0, x1, y1, ...\" (an even count of numbers)", k->min, k->max);
         return;

@@ -145,10 +145,7 @@ static isk_status parse_sides(const isk_key *k, void *item, const char *text, ch
     for (int j = 0; j < count; j++) {
         int sd = scv_lookup(items[j], k->names, k->nnames);
         if (sd < 0) {
-            const char *s = scv_suggest(items[j], k->names, k->nnames);
-            snprintf(why, n, "expected top, right, bottom or left (or all, none), got \"%s\"%s%s%s", items[j],
-                     s ? "; did you mean \"" : "", s ? s : "", s ? "\"?" : "");
-            return ISK_ERR_RANGE;
+            return fx_expected_or_guess(k, items[j], k->names, k->nnames, why, n);
         }
         if (mask & (1u << sd)) {
             snprintf(why, n, "'%s' is listed twice", k->names[sd]);

@@ -15,6 +15,7 @@
 #include "iskra/effect.h"
 #include "iskra/limits.h"
 #include "iskra/texture.h"
+#include "preset_list.h"
 
 #define N(a) ((int)(sizeof(a) / sizeof((a)[0])))
 #define BIT(k) (1u << (k))
@@ -33,6 +34,77 @@ static const isk_key_word off_words[] = {{"off", ISK_DIST_OFF}, {"none", ISK_DIS
 static const isk_key_word scene_words[] = {{"scene", 0}, {NULL, 0}};
 static const isk_key_word inherit_words[] = {{"scene", ISK_INTEGRATE_INHERIT}, {NULL, 0}};
 static const isk_key_word table_words[] = {{"true", ISK_SINLUT_FLOOR}, {"false", ISK_SINLUT_LIBM}, {NULL, 0}};
+
+/* ---- what each name of an enum means (a row's `notes`) ---------------------
+ * Indexed by value and sized by the enum's count, so a name without a note
+ * is a NULL that tests/test_key_meanings.c finds.  A meaning never lists
+ * the names itself: isk_key_meaning_text joins these to it. */
+#define NOTES(a) .notes = (a)
+
+static const char *const centre_notes[ISK_FIDELITY_COUNT] = {
+    [ISK_FIDELITY_SOUND] = "zero force",
+    [ISK_FIDELITY_THESIS] = "the thesis code's NaN",
+};
+static const char *const fidelity_notes[ISK_FIDELITY_COUNT] = {
+    [ISK_FIDELITY_SOUND] = "the physically sound arithmetic (constant accelerations take a fast path)",
+    [ISK_FIDELITY_THESIS] = ("the thesis code's arithmetic everywhere (gravity as m*(-g) then dt/m, no "
+                             "constant-acceleration fast path), for bit-exact thesis scenes with random masses"),
+};
+static const char *const law_notes[ISK_COULOMB_LAW_COUNT] = {
+    [ISK_COULOMB_LAW_CODE] = "exponent is the code's P, |F| = k|Q| d^(1-P)",
+    [ISK_COULOMB_LAW_TEXT] = "the thesis text's p, P = p + 2",
+};
+static const char *const restitution_mode_notes[ISK_RESTITUTION_MODE_COUNT] = {
+    [ISK_RESTITUTION_UNIFORM] = "c*(v - 2(v.n)n) (fire thesis)",
+    [ISK_RESTITUTION_NORMAL] = "only the normal part scaled (particle-engine thesis)",
+};
+static const char *const bounce_mode_notes[ISK_BOUNCE_MODE_COUNT] = {
+    [ISK_BOUNCE_THESIS] = "the thesis's zarobi (sign flip, only the floor clamps)",
+    [ISK_BOUNCE_REFLECT] = ("the bounce at the time of impact with restitution (include/iskra/impact.h), never "
+                            "tunnels or sticks"),
+};
+static const char *const source_notes[ISK_SOURCE_KIND_COUNT] = {
+    [ISK_SOURCE_PARTICLE] = "one particle",
+    [ISK_SOURCE_EXPLOSION] = "a thesis explosion",
+    [ISK_SOURCE_LAYER] = "the stationary layer",
+    [ISK_SOURCE_STREAM] = "continuous emission",
+    [ISK_SOURCE_SUB] = ("a sub-emitter: count particles where another emitter's particle dies (on_death) or "
+                        "bounces (on_hit)"),
+};
+static const char *const kick_notes[ISK_KICK_COUNT] = {
+    [ISK_KICK_ALL] = "the whole emitter (the thesis)",
+    [ISK_KICK_NEW] = "only the new particles",
+};
+static const char *const rate_mode_notes[ISK_RATE_MODE_COUNT] = {
+    [ISK_RATE_ACCUMULATE] = "fractional carry (exact over time)",
+    [ISK_RATE_THESIS] = "the fire thesis's rounding per frame",
+};
+static const char *const sine_notes[ISK_SINLUT_MODE_COUNT] = {
+    [ISK_SINLUT_FLOOR] = "a 4096-entry table read by floor (the fire thesis; true is its old spelling)",
+    [ISK_SINLUT_ROUND] = "the table's nearest entry",
+    [ISK_SINLUT_LERP] = "linear interpolation in the table (1e-6)",
+    [ISK_SINLUT_LIBM] = "libm's sin (false is its old spelling)",
+};
+static const char *const draw_notes[ISK_DRAW_COUNT] = {
+    [ISK_DRAW_DOT] = "exact-area 1x1 square at the point",
+    [ISK_DRAW_PIXEL] = "the single pixel containing the point",
+    [ISK_DRAW_DISC] = "a disc of diameter size",
+    [ISK_DRAW_SPRITE] = "a sprite of diameter size",
+    [ISK_DRAW_NONE] = "simulated only",
+    [ISK_DRAW_DOT_BROWSER] = "the thesis browser's rule",
+};
+static const char *const space_notes[ISK_SPACE_COUNT] = {
+    [ISK_SPACE_WORLD] = "particles leave the emitter behind",
+    [ISK_SPACE_LOCAL] = "they move with it",
+};
+static const char *const align_notes[ISK_ALIGN_COUNT] = {
+    [ISK_ALIGN_NONE] = "by its angle only",
+    [ISK_ALIGN_VELOCITY] = "turned along the velocity (a sprite kind becomes a streak 4 sizes long)",
+};
+static const char *const units_notes[2] = {
+    [0] = "world units",
+    [1] = "canvas pixels (y down)",
+};
 
 /* ---- [scene] and [view]: fields of isk_effect_def ------------------------- */
 
@@ -56,6 +128,7 @@ static const isk_key_word table_words[] = {{"true", ISK_SINLUT_FLOOR}, {"false",
 
 #define DEFL(key) .section = ISK_SECTION_DEFLECTOR, .name = key
 #define SEG(f) .offset = offsetof(isk_deflector_def, seg.f)
+#define DFL(f) .offset = offsetof(isk_deflector_def, f)
 
 /* ---- [bounds]: isk_bounds -------------------------------------------------- */
 
@@ -118,18 +191,15 @@ static const isk_key keys[] = {
      IN(ISK_SPEED_DIVISOR_MIN, ISK_SPEED_DIVISOR_MAX), .dflt = "1", .live = ALL,
      .meaning = "the thesis simulator's speed slider f: each frame simulates dt/f seconds, so the whole "
                 "simulation (particles and moving potentials) runs f times slower"},
-    {SCENE("centre"), .type = ISK_KEY_ENUM, DEF(centre), NAMES(isk_fidelity_names), .dflt = "sound", .live = ALL,
-     .meaning = "exactly on a potential without a min distance: thesis = the thesis code's NaN, sound = zero "
-                "force"},
+    {SCENE("centre"), .type = ISK_KEY_ENUM, DEF(centre), NAMES(isk_fidelity_names), NOTES(centre_notes),
+     .dflt = "sound", .live = ALL, .meaning = "the force exactly on a potential without a min distance"},
     {SCENE("frames"), .type = ISK_KEY_LONG, DEF(show.frames), IN(0, 1e8), .dflt = "0", .live = ALL,
      .meaning = "the frame `iskra render` shows when --frames is not given (the effect ignores it)"},
     {SCENE("start_paused"), .type = ISK_KEY_BOOL, DEF(show.start_paused), .dflt = "false", .live = ALL,
      .meaning = "`iskra play` pauses after the first frame, as the thesis's simulator scenes do (prviFrame), so "
                 "the class sees the start (the effect ignores it)"},
-    {SCENE("fidelity"), .type = ISK_KEY_ENUM, DEF(fidelity), NAMES(isk_fidelity_names), .dflt = "sound",
-     .live = ALL,
-     .meaning = "thesis: the thesis code's arithmetic everywhere (gravity as m*(-g) then dt/m, no "
-                "constant-acceleration fast path), for bit-exact thesis scenes with random masses"},
+    {SCENE("fidelity"), .type = ISK_KEY_ENUM, DEF(fidelity), NAMES(isk_fidelity_names), NOTES(fidelity_notes),
+     .dflt = "sound", .live = ALL, .meaning = "whose arithmetic the forces use"},
 
     /* [view] */
     {VIEW("xmin"), .type = ISK_KEY_NUMBER, DEF(xmin), .applies = WIN, .dflt = "-10", .live = ALL,
@@ -165,9 +235,8 @@ static const isk_key keys[] = {
      IN(ISK_P_MIN - 2, ISK_P_MAX), .dflt = "2", .live = ALL,
      .meaning = "the distance exponent, read by law; the code's P must be 0..17 (|F| ~ d^(1-P): from a "
                 "spring's d to d^-16)"},
-    {FORCE("law"), .type = ISK_KEY_ENUM, FRC(law), .applies = POT, NAMES(isk_coulomb_law_names), .dflt = "code",
-     .live = ALL,
-     .meaning = "code: exponent is the code's P, |F| = k|Q| d^(1-P); text: the thesis text's p, P = p + 2"},
+    {FORCE("law"), .type = ISK_KEY_ENUM, FRC(law), .applies = POT, NAMES(isk_coulomb_law_names), NOTES(law_notes),
+     .dflt = "code", .live = ALL, .meaning = "how exponent is read"},
     {FORCE("min_distance"), .type = ISK_KEY_NUMBER, FRC(pot.min_dist), .applies = POT, .words = off_words,
      .dflt = "off", .live = ALL,
      .meaning = "distances below it are clamped (softens the centre); <= 0 is off"},
@@ -185,7 +254,7 @@ static const isk_key keys[] = {
     {FORCE("draw"), .type = ISK_KEY_BOOL, FRC(draw), .applies = POT, .dflt = "true", .live = ALL,
      .meaning = "draw it as a disc of radius 0.1 with its number, while it is on"},
 
-    /* [force NAME] turbulence (issue 14, motion: src/sim/stage_field.c) */
+    /* [force NAME] turbulence (motion: src/sim/stage_field.c) */
     {FORCE("strength"), .type = ISK_KEY_NUMBER, FRC(strength), .applies = TURB, STRENGTH, .dflt = "0", .live = ALL,
      .meaning = "a = strength * curl psi (units/s^2): a divergence-free stirring, the same for every mass"},
     {FORCE("scale"), .type = ISK_KEY_NUMBER, FRC(scale), .applies = TURB,
@@ -207,14 +276,16 @@ static const isk_key keys[] = {
     {DEFL("reaction"), .type = ISK_KEY_ENUM, SEG(reaction), NAMES(isk_deflect_reaction_names), .dflt = "bounce",
      .live = ALL, .meaning = "what a hit does"},
     {DEFL("restitution_mode"), .type = ISK_KEY_ENUM, SEG(mode), NAMES(isk_restitution_mode_names),
-     .dflt = "uniform", .live = ALL,
-     .meaning = "uniform: c*(v - 2(v.n)n) (fire thesis); normal: only the normal part scaled (particle-engine "
-                "thesis)"},
+     NOTES(restitution_mode_notes), .dflt = "uniform", .live = ALL, .meaning = "what restitution scales"},
+    {DEFL("show"), .type = ISK_KEY_BOOL, DFL(show), .dflt = "false", .live = ALL,
+     .meaning = "draw the segment, after the drawings and before the particles, as a line 1 px wide (where the "
+                "segment is at each frame)"},
+    {DEFL("color"), .type = ISK_KEY_COLOR, DFL(color), .dflt = "white", .live = ALL,
+     .meaning = "the colour of the line show draws"},
 
     /* [bounds] */
-    {BOUNDS("mode"), .type = ISK_KEY_ENUM, BND(mode), NAMES(isk_bounce_mode_names), .dflt = "reflect", .live = ALL,
-     .meaning = "thesis: the thesis's zarobi (sign flip, only the floor clamps); reflect: the bounce at the time "
-                "of impact with restitution (include/iskra/impact.h), never tunnels or sticks"},
+    {BOUNDS("mode"), .type = ISK_KEY_ENUM, BND(mode), NAMES(isk_bounce_mode_names), NOTES(bounce_mode_notes),
+     .dflt = "reflect", .live = ALL, .meaning = "how a particle bounces off a wall"},
     {BOUNDS("sides"), .type = ISK_KEY_SIDES, BND(sides), NAMES(isk_side_names), .dflt = "none",
      .dflt_doc = "all when the scene has a [bounds] section", .live = ALL, .meaning = "which walls exist"},
     {BOUNDS("margin"), .type = ISK_KEY_NUMBER, BND(margin), GE(0), .dflt = "0",
@@ -229,13 +300,12 @@ static const isk_key keys[] = {
 
     /* [emitter NAME] */
     {EMITTER("preset"), .type = ISK_KEY_TEXT, EM(preset), .aux = sizeof(((isk_emitter_def *)0)->preset),
-     .what = "a preset's name, or NAME, SCALE", .dflt = "", .create_only = 1, .directive = 1,
-     .meaning = "the section's first key: starts the emitter from a preset (fire, smoke, sparks, fountain, snow, "
-                "explosion; iskra/presets.h) at SCALE world units per 100 cocos2d points (default 1); keys after "
-                "it override it"},
-    {EMITTER("source"), .type = ISK_KEY_ENUM, EM(source), NAMES(isk_source_names), .dflt = "particle",
-     .create_only = 1,
-     .meaning = "one particle; a thesis explosion; the stationary layer; continuous emission"},
+     .names = fx_preset_names, .nnames = FX_PRESET_COUNT, .what = "a preset's name, or NAME, SCALE", .dflt = "",
+     .create_only = 1, .directive = 1,
+     .meaning = "the section's first key: starts the emitter from a preset (iskra/presets.h) at SCALE world units "
+                "per 100 cocos2d points (default 1); keys after it override it"},
+    {EMITTER("source"), .type = ISK_KEY_ENUM, EM(source), NAMES(isk_source_names), NOTES(source_notes),
+     .dflt = "particle", .create_only = 1, .meaning = "where the particles come from"},
     {EMITTER("position"), .type = ISK_KEY_VECTOR, EM(pos), .applies = S_P | S_E | S_S, COORD, .dflt = "0, 0",
      .live = S_S,
      .meaning = "the particle / explosion centre / stream origin"},
@@ -257,9 +327,8 @@ static const isk_key keys[] = {
     {EMITTER("limit"), .type = ISK_KEY_COUNT, EM(limit), .applies = S_E | S_L | S_S, IN(0, MAXP), .dflt = "0",
      .live = ALL,
      .meaning = "largest accepted explosion, clicks included (0: the thesis's 10,000)"},
-    {EMITTER("kick"), .type = ISK_KEY_ENUM, EM(kick), .applies = S_E, NAMES(isk_kick_names), .dflt = "all",
-     .live = ALL,
-     .meaning = "which particles a Coulomb kick pushes: the whole emitter (thesis) or only the new ones"},
+    {EMITTER("kick"), .type = ISK_KEY_ENUM, EM(kick), .applies = S_E, NAMES(isk_kick_names), NOTES(kick_notes),
+     .dflt = "all", .live = ALL, .meaning = "which particles a Coulomb kick pushes"},
     {EMITTER("start"), .type = ISK_KEY_NUMBER, EM(start), .applies = S_E | S_S, GE(0), .dflt = "0",
      .what = "a number of seconds", .meaning = "time of the explosion / first burst and of the stream's start"},
     {EMITTER("rect"), .type = ISK_KEY_NUMBERS4, EM(rect), .applies = S_L, .required = S_L, COORD,
@@ -291,8 +360,7 @@ static const isk_key keys[] = {
     {EMITTER("rate"), .type = ISK_KEY_NUMBER, EM(rate), .applies = S_S, IN(0, 1e7), .dflt = "0", .live = S_S,
      .meaning = "particles per second (0: bursts only)"},
     {EMITTER("rate_mode"), .type = ISK_KEY_ENUM, EM(rate_mode), .applies = S_S, NAMES(isk_rate_mode_names),
-     .dflt = "accumulate", .live = S_S,
-     .meaning = "fractional carry (exact over time), or the fire thesis's rounding per frame"},
+     NOTES(rate_mode_notes), .dflt = "accumulate", .live = S_S, .meaning = "how rate*dt becomes whole particles"},
     {EMITTER("birth"), .type = ISK_KEY_ENUM, EM(birth), .applies = S_S, NAMES(isk_birth_mode_names),
      .dflt = "backdate", .live = S_S, .meaning = "when within a frame particles are born"},
     {EMITTER("burst_every"), .type = ISK_KEY_NUMBER, EM(burst_every), .applies = S_S, GE(0), .dflt = "0",
@@ -334,19 +402,16 @@ static const isk_key keys[] = {
      .meaning = "amplitude *= max(0, 1 - decay*dt)"},
     {EMITTER("osc_faithful"), .type = ISK_KEY_BOOL, EM(osc_faithful), .dflt = "false", .live = ALL,
      .meaning = "also add the offset change to vx (the fire thesis's code)"},
-    {EMITTER("osc_table"), .type = ISK_KEY_ENUM, EM(osc_table), NAMES(isk_sinlut_mode_names), .words = table_words,
-     .dflt = "floor", .live = ALL,
-     .meaning = "the sine: a 4096-entry table read by floor (the fire thesis), nearest entry (round), linear "
-                "interpolation (lerp: 1e-6), or libm (true and false: the old spellings of floor and libm)"},
+    {EMITTER("osc_table"), .type = ISK_KEY_ENUM, EM(osc_table), NAMES(isk_sinlut_mode_names), NOTES(sine_notes),
+     .words = table_words, .dflt = "floor", .live = ALL, .meaning = "the sine the oscillation reads"},
     {EMITTER("osc_random_phase"), .type = ISK_KEY_BOOL, EM(osc_random_phase), .dflt = "false", .live = ALL,
      .meaning = "start each particle at a random phase (its offset preset, so it does not jump)"},
     {EMITTER("integrator"), .type = ISK_KEY_ENUM, EM(integrator), NAMES(isk_integrator_names),
      .words = inherit_words, .dflt = "scene", .live = ALL, .meaning = "time integrator (scene: the scene's)"},
     {EMITTER("substeps"), .type = ISK_KEY_WHOLE, EM(substeps), IN(1, 1000), .words = scene_words, .dflt = "scene",
      .live = ALL, .meaning = "substeps per frame (scene: the scene's)"},
-    {EMITTER("draw"), .type = ISK_KEY_ENUM, EM(draw), NAMES(isk_draw_mode_names), .dflt = "dot", .live = ALL,
-     .meaning = "dot: exact-area 1x1 square at the point; dot-browser: the thesis browser's rule; pixel; disc "
-                "of diameter size; sprite; none (simulated only)"},
+    {EMITTER("draw"), .type = ISK_KEY_ENUM, EM(draw), NAMES(isk_draw_mode_names), NOTES(draw_notes), .dflt = "dot",
+     .live = ALL, .meaning = "how a particle is drawn"},
     {EMITTER("sprite"), .type = ISK_KEY_ENUM, EM(sprite), NAMES(isk_sprite_kind_names), .dflt = "linear",
      .live = ALL, .meaning = "sprite shape (include/iskra/sprite.h)"},
     {EMITTER("size"), .type = ISK_KEY_NUMBER, EM(size), GT_LE(0, 1e6), .dflt = "0.1", .live = ALL,
@@ -365,7 +430,7 @@ static const isk_key keys[] = {
      .dflt_doc = "its definition index", .live = ALL,
      .meaning = "draw order (lower first; ties by definition order)"},
 
-    /* [emitter NAME] motion (issue 14: src/sim/stage_field.c, src/scene/effect_stream.c) */
+    /* [emitter NAME] motion (src/sim/stage_field.c, src/scene/effect_stream.c) */
     {EMITTER("radial_accel"), .type = ISK_KEY_NUMBER, EM(radial_accel), STRENGTH, .dflt = "0", .live = ALL,
      .meaning = "units/s^2 away from the emitter's current position (negative: towards it; none exactly on it)"},
     {EMITTER("tangential_accel"), .type = ISK_KEY_NUMBER, EM(tangential_accel), STRENGTH, .dflt = "0", .live = ALL,
@@ -373,8 +438,8 @@ static const isk_key keys[] = {
     {EMITTER("emitter_velocity"), .type = ISK_KEY_VECTOR, EM(emitter_velocity), .applies = S_S, SPEED,
      .dflt = "0, 0", .live = S_S,
      .meaning = "the emitter moves: position(t) = position + v*t, births placed on the path at their exact times"},
-    {EMITTER("space"), .type = ISK_KEY_ENUM, EM(space), .applies = S_S, NAMES(isk_space_names), .dflt = "world",
-     .live = S_S, .meaning = "world: particles leave the emitter behind; local: they move with it"},
+    {EMITTER("space"), .type = ISK_KEY_ENUM, EM(space), .applies = S_S, NAMES(isk_space_names), NOTES(space_notes),
+     .dflt = "world", .live = S_S, .meaning = "whether the particles follow the emitter's motion"},
     {EMITTER("duration"), .type = ISK_KEY_NUMBER, EM(duration), .applies = S_S, IN(0, ISK_DURATION_MAX),
      .dflt = "0", .what = "a number of seconds", .meaning = "emit for this many seconds from start, then stop "
                                                              "(0: forever); floor(rate*duration) per cycle"},
@@ -383,7 +448,7 @@ static const isk_key keys[] = {
     {EMITTER("prewarm"), .type = ISK_KEY_NUMBER, EM(prewarm), .applies = S_S, IN(0, ISK_PREWARM_MAX), .dflt = "0",
      .what = "a number of seconds",
      .meaning = "simulated before frame 0 (rounded to whole frames), so the effect is already going in frame 0"},
-    /* ---- looks (issue 14): rotation, spin, variation, textures and flipbooks ---- */
+    /* ---- looks: rotation, spin, variation, textures and flipbooks ---- */
     {EMITTER("rotation"), .type = ISK_KEY_ANGLE, EM(rotation), IN(-3600, 3600), .dflt = "0", .live = ALL,
      .meaning = "initial angle, counter-clockwise (textures and streaks; a round sprite looks the same at every "
                 "angle)"},
@@ -393,8 +458,8 @@ static const isk_key keys[] = {
      .what = "degrees per second", .meaning = "angular speed, degrees per second (counter-clockwise)"},
     {EMITTER("spin_range"), .type = ISK_KEY_ANGLE, EM(spin_range), IN(0, ISK_SPIN_MAX), .dflt = "0", .live = ALL,
      .what = "degrees per second", .meaning = "angular speed = spin + U*spin_range"},
-    {EMITTER("align"), .type = ISK_KEY_ENUM, EM(align), NAMES(isk_align_names), .dflt = "none", .live = ALL,
-     .meaning = "velocity: turned along the velocity (a sprite kind becomes a streak 4 sizes long)"},
+    {EMITTER("align"), .type = ISK_KEY_ENUM, EM(align), NAMES(isk_align_names), NOTES(align_notes), .dflt = "none",
+     .live = ALL, .meaning = "how a particle is turned"},
     {EMITTER("size_range"), .type = ISK_KEY_NUMBER, EM(size_range), IN(0, 1e6), .dflt = "0", .live = ALL,
      .meaning = "size = size + U*size_range, world units (fixed at birth)"},
     {EMITTER("color_pick"), .type = ISK_KEY_COLOR_STOPS, EM(color_pick), .dflt = "off", .live = ALL,
@@ -408,7 +473,7 @@ static const isk_key keys[] = {
      .meaning = "the texture is a sprite sheet of cols x rows frames, played over the life"},
     {EMITTER("texture_fps"), .type = ISK_KEY_NUMBER, EM(texture_fps), IN(0, 1e6), .dflt = "0", .live = ALL,
      .meaning = "frames per second of age, wrapping (0: once over the life)"},
-    /* [emitter NAME]: sub-emitters and trails (issue 14) */
+    /* [emitter NAME]: sub-emitters and trails */
     {EMITTER("on_death"), .type = ISK_KEY_REF, EM(on_death), .refers = ISK_SECTION_EMITTER, .dflt = "",
      .dflt_doc = "none", .live = ALL,
      .meaning = "a sub-emitter (source = sub) that fires where one of these particles dies (its life ends, or a "
@@ -433,8 +498,8 @@ static const isk_key keys[] = {
     {DRAWING("kind"), .type = ISK_KEY_ENUM, DRW(kind), NAMES(isk_drawing_kind_names), .dflt = "polyline",
      .dflt_doc = "the NAME when it is a kind, else polyline with points, disc with radius, text with text",
      .create_only = 1, .meaning = "what the drawing is"},
-    {DRAWING("units"), .type = ISK_KEY_ENUM, DRW(pixels), NAMES(isk_units_names), .dflt = "world", .live = ALL,
-     .meaning = "coordinates in world units or canvas pixels (y down)"},
+    {DRAWING("units"), .type = ISK_KEY_ENUM, DRW(pixels), NAMES(isk_units_names), NOTES(units_notes),
+     .dflt = "world", .live = ALL, .meaning = "what its coordinates are"},
     {DRAWING("points"), .type = ISK_KEY_POINTS, DRW(points), .aux = offsetof(isk_drawing_def, npoints),
      .applies = D_LINE | D_POLY, .required = D_LINE | D_POLY, IN(2, 64), .dflt = "", .live = ALL,
      .meaning = "x0, y0, x1, y1, ...: a polyline's path (2..64 points), a polygon's corners (3..64)"},
@@ -579,7 +644,7 @@ void isk_key_range_text(const isk_key *k, char *buf, size_t n)
         snprintf(buf, n, "0..2^64-1");
         return;
     }
-    if (k->type == ISK_KEY_ENUM || k->type == ISK_KEY_SIDES) {
+    if (k->names) { /* enums, sides, and text that is a name from a list (`preset`) */
         const char *all[64];
         int m = isk_key_choices(k, all, 64);
         size_t used = 0;
@@ -661,4 +726,17 @@ void isk_key_live_text(const isk_key *k, char *buf, size_t n)
         isk_key_kinds_text(k, k->live & applies, kinds, sizeof kinds);
         snprintf(buf, n, "%s (others at reset)", kinds);
     }
+}
+
+void isk_key_meaning_text(const isk_key *k, char *buf, size_t n)
+{
+    if (!buf || n == 0)
+        return;
+    buf[0] = 0;
+    if (!k)
+        return;
+    size_t used = (size_t)snprintf(buf, n, "%s", k->meaning);
+    for (int i = 0; k->notes && i < k->nnames; i++)
+        used += (size_t)snprintf(buf + (used < n ? used : n), used < n ? n - used : 0, "%s%s = %s",
+                                 i ? "; " : ": ", k->names[i], k->notes[i] ? k->notes[i] : "?");
 }

@@ -9,6 +9,7 @@
 
 #include "iskra/limits.h"
 #include "key_value.h"
+#include "preset_list.h"
 
 #define DEG (3.14159265358979323846 / 180.0)
 
@@ -444,31 +445,25 @@ static int fill_magic(isk_effect_def *d, int i, double u)
     return 1;
 }
 
-/* ---- the table: one row per preset -------------------------------------- */
+/* ---- the table: one entry per preset (preset_list.h) --------------------- */
 
-typedef struct preset_row {
-    const char *name;
-    /* Fills emitter i (already at the key table's defaults) with lengths in
-     * units of u = scale/100; 0 when a force it needs found no room. */
-    int (*fill)(isk_effect_def *d, int i, double u);
-} preset_row;
+#define PRESET_NAME(name) #name,
+const char *const fx_preset_names[FX_PRESET_COUNT] = {FX_PRESETS(PRESET_NAME)};
 
-static const preset_row presets[] = {
-    {"fire", fill_fire},         {"smoke", fill_smoke}, {"sparks", fill_sparks},
-    {"fountain", fill_fountain}, {"snow", fill_snow},   {"explosion", fill_explosion},
-    {"galaxy", fill_galaxy},     {"fireworks", fill_fireworks}, {"rain", fill_rain},
-    {"magic", fill_magic},
-};
-#define NPRESETS ((int)(sizeof presets / sizeof presets[0]))
+/* Fills emitter i (already at the key table's defaults) with lengths in
+ * units of u = scale/100; 0 when a force it needs found no room. */
+typedef int preset_fill(isk_effect_def *d, int i, double u);
+#define PRESET_FILL(name) fill_##name,
+static preset_fill *const fills[FX_PRESET_COUNT] = {FX_PRESETS(PRESET_FILL)};
 
-int isk_preset_count(void) { return NPRESETS; }
+int isk_preset_count(void) { return FX_PRESET_COUNT; }
 
-const char *isk_preset_name(int i) { return i >= 0 && i < NPRESETS ? presets[i].name : NULL; }
+const char *isk_preset_name(int i) { return i >= 0 && i < FX_PRESET_COUNT ? fx_preset_names[i] : NULL; }
 
 int isk_preset_find(const char *name)
 {
-    for (int i = 0; name && i < NPRESETS; i++)
-        if (!strcmp(presets[i].name, name))
+    for (int i = 0; name && i < FX_PRESET_COUNT; i++)
+        if (!strcmp(fx_preset_names[i], name))
             return i;
     return -1;
 }
@@ -489,9 +484,9 @@ isk_status isk_preset_apply(isk_effect_def *d, int emitter, const char *preset, 
     e->line = keep.line;
     e->order = keep.order;
     e->pos = keep.pos;
-    snprintf(e->preset, sizeof e->preset, "%s", presets[p].name);
+    snprintf(e->preset, sizeof e->preset, "%s", fx_preset_names[p]);
     const int nforces = d->nforces, ndeflectors = d->ndeflectors, nemitters = d->nemitters;
-    if (!presets[p].fill(d, emitter, scale / 100.0)) {
+    if (!fills[p](d, emitter, scale / 100.0)) {
         /* an item of its own found no room, or could not be allocated */
         const isk_status why = d->nforces >= ISK_EFFECT_MAX_FORCES || d->ndeflectors >= ISK_EFFECT_MAX_DEFLECTORS ||
                                        d->nemitters >= ISK_EFFECT_MAX_EMITTERS

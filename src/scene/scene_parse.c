@@ -313,10 +313,12 @@ static isk_status apply_preset(parser *P, section *s, const isk_key *k, int line
     for (char *t = name + strlen(name); t > name && (t[-1] == ' ' || t[-1] == '\t');)
         *--t = 0;
     if (isk_preset_find(name) < 0) {
-        char list[200] = "";
-        for (int i = 0; i < isk_preset_count(); i++)
-            snprintf(list + strlen(list), sizeof list - strlen(list), "%s%s", i ? ", " : "", isk_preset_name(i));
-        return fail_at(P, s, line, k->name, "no preset '%s' (the presets: %s)", name, list);
+        /* the row's names are the presets (preset_list.h) */
+        char list[300];
+        fx_join_names(list, sizeof list, k->names, k->nnames, (1u << k->nnames) - 1u);
+        const char *guess = scv_suggest(name, k->names, k->nnames);
+        return fail_at(P, s, line, k->name, "no preset '%s'%s%s%s (the presets: %s)", name,
+                       guess ? "; did you mean '" : "", guess ? guess : "", guess ? "'?" : "", list);
     }
     isk_status st = isk_preset_apply(P->d, s->index, name, scale);
     if (st == ISK_ERR_NOMEM)
@@ -370,6 +372,20 @@ static isk_status on_key(void *user, const char *section_name, const char *key, 
 
 /* ---- the end of the file -------------------------------------------------------- */
 
+/* "needs kind = gravity, drag, ... or turbulence" from the kind key's
+ * names, and a did-you-mean when the section's name is close to one
+ * ([force gravty]). */
+static isk_status needs_kind(parser *P, section *s, const isk_key *kk)
+{
+    char list[300];
+    fx_join_names(list, sizeof list, kk->names, kk->nnames, (1u << kk->nnames) - 1u);
+    const char *guess = scv_suggest(s->name, kk->names, kk->nnames);
+    if (guess)
+        return fail_at(P, s, s->line, NULL, "needs kind = %s; did you mean [%s %s]?", list, isk_section_name(s->type),
+                       guess);
+    return fail_at(P, s, s->line, NULL, "needs kind = %s", list);
+}
+
 /* The kind a section has when `kind` is not given: its name, if it is a
  * kind; for drawings, what its keys say. */
 static isk_status derive_kind(parser *P, section *s)
@@ -379,13 +395,13 @@ static isk_status derive_kind(parser *P, section *s)
     if (!kk || given(s, kk))
         return ISK_OK;
     if (s->type == ISK_SECTION_FORCE) {
-        int k = scv_lookup(s->name, isk_force_kind_names, ISK_FORCE_KIND_COUNT);
+        int k = scv_lookup(s->name, kk->names, kk->nnames);
         if (k < 0)
-            return fail_at(P, s, s->line, NULL, "needs kind = gravity, drag, wind or potential");
+            return needs_kind(P, s, kk);
         d->forces[s->index].kind = (isk_force_kind)k;
         return ISK_OK;
     }
-    int k = scv_lookup(s->name, isk_drawing_kind_names, ISK_DRAWING_KIND_COUNT);
+    int k = scv_lookup(s->name, kk->names, kk->nnames);
     if (k < 0 && given(s, isk_key_find(s->type, "points")))
         k = ISK_DRAWING_POLYLINE;
     else if (k < 0 && given(s, isk_key_find(s->type, "radius")))
@@ -393,7 +409,7 @@ static isk_status derive_kind(parser *P, section *s)
     else if (k < 0 && given(s, isk_key_find(s->type, "text")))
         k = ISK_DRAWING_TEXT;
     if (k < 0)
-        return fail_at(P, s, s->line, NULL, "needs kind = polyline, polygon, disc, sprite or text");
+        return needs_kind(P, s, kk);
     d->drawings[s->index].kind = (isk_drawing_kind)k;
     return ISK_OK;
 }

@@ -1,7 +1,8 @@
 /* SPDX-License-Identifier: MIT */
 /* Sub-commands of the `iskra` tool.  Each takes (argc, argv) with argv[0] =
  * the command name and returns the process exit status:
- * 0 success, 1 runtime failure, 2 usage error. */
+ * 0 success, 1 runtime failure, 2 usage error (compare, as cmp(1): 0 the
+ * same, 1 different, 2 unreadable or a usage error). */
 #ifndef ISKRA_TOOL_CMD_H
 #define ISKRA_TOOL_CMD_H
 

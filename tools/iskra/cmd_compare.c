@@ -1,9 +1,13 @@
 /* SPDX-License-Identifier: MIT */
 /* iskra compare A.png B.png [--diff OUT.png] [--max-pixels N] [--json]
- * Pixel-exact comparison for people testing rendered buffers: the number of
- * differing pixels and by how much (the figures of iskra/refimg.h), as a
- * sentence or as JSON for CI scripts.
- * Exit 0 identical, 1 different (or unreadable), 2 usage error. */
+ *               [--max-channel-diff N] [--max-differing N] [--reason TEXT]
+ * Comparison for people testing rendered buffers: the number of differing
+ * pixels and by how much (the figures of iskra/refimg.h), as a sentence or
+ * as JSON for CI scripts; exact by default, or within the tolerance that
+ * isk_refimg_opts has (a tolerance needs a written reason).
+ * Exit 0 the same (or within the tolerance), 1 different, 2 an image
+ * unreadable, the diff image not written, or a usage error: as cmp(1). */
+#include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -15,9 +19,13 @@
 #include "outpath.h"
 #include "scene_args.h"
 
+/* The exit statuses (help() and the tests say the same). */
+enum { SAME = 0, DIFFERENT = 1, TROUBLE = 2 };
+
 static void help(FILE *f)
 {
     fprintf(f, "usage: iskra compare A.png B.png [--diff OUT.png] [--max-pixels N] [--json]\n"
+               "                     [--max-channel-diff N] [--max-differing N] [--reason TEXT]\n"
                "  Compares two images pixel by pixel (all four channels).  The headers\n"
                "  are compared first: images of different sizes differ without decoding.\n"
                "  --diff OUT.png  write an image with differing pixels in magenta (missing\n"
@@ -25,21 +33,64 @@ static void help(FILE *f)
                "  --max-pixels N  decode at most N pixels per image (default %lld,\n"
                "                  8192x8192; up to %lld): a small file can declare a\n"
                "                  huge image\n"
+               "  --max-channel-diff N  a pixel whose channels all differ by at most N (0..255)\n"
+               "                  counts as the same (default 0: exact)\n"
+               "  --max-differing N  the images count as the same when at most N pixels are\n"
+               "                  beyond --max-channel-diff (default 0)\n"
+               "  --reason TEXT   why exactness cannot hold here; required with a tolerance\n"
+               "                  (the rule of isk_refimg_opts, iskra/refimg.h)\n"
                "  --json          print the figures as one JSON object on stdout:\n"
                "                  a, b, a_width, a_height, b_width, b_height, same_size,\n"
-               "                  pixels, differing, max_channel, mean_abs, identical, diff\n"
+               "                  pixels, differing, max_channel, mean_abs, identical,\n"
+               "                  beyond_tolerance, within_tolerance, tolerance, diff\n"
                "                  (or a, b, error when an image cannot be read)\n"
-               "  exit status: 0 identical, 1 different or unreadable, 2 usage error\n",
+               "  exit status: 0 the same (or within the tolerance), 1 different,\n"
+               "               2 an image unreadable or too large, the diff image not\n"
+               "               written, or a usage error\n",
             (long long)ISK_PNG_MAX_PIXELS_DEFAULT, (long long)ISK_CANVAS_MAX_DIM * ISK_CANVAS_MAX_DIM);
 }
+
+/* How far the images may differ and still count as the same. */
+typedef struct tolerance {
+    int max_channel_diff; /* 0..255 */
+    long max_differing;   /* pixels beyond max_channel_diff */
+    const char *reason;   /* NULL unless given */
+} tolerance;
 
 typedef struct report {
     const char *a, *b, *diff_path; /* diff_path: NULL unless written */
     isk_png_info ia, ib;
     int same_size;
     isk_canvas_diff d;             /* zero when the sizes differ */
+    long beyond;                   /* pixels beyond the tolerance's channel difference */
+    tolerance tol;
     char error[600];               /* set: the comparison could not be made */
 } report;
+
+static int tolerance_set(const tolerance *t) { return t->max_channel_diff || t->max_differing; }
+
+/* Same size, and at most max_differing pixels beyond the channel tolerance
+ * (with no tolerance: identical). */
+static int within(const report *r) { return r->same_size && r->beyond <= r->tol.max_differing; }
+
+/* Pixels whose largest channel difference exceeds tol (same sizes): the
+ * rule isk_refimg_check applies (iskra/refimg.h). */
+static long count_beyond(const isk_canvas *a, const isk_canvas *b, int tol)
+{
+    long n = 0;
+    for (int y = 0; y < a->height; y++) {
+        const uint8_t *p = a->pixels + (size_t)y * a->stride, *q = b->pixels + (size_t)y * b->stride;
+        for (int x = 0; x < 4 * a->width; x += 4) {
+            int m = 0;
+            for (int k = 0; k < 4; k++) {
+                int dd = p[x + k] > q[x + k] ? p[x + k] - q[x + k] : q[x + k] - p[x + k];
+                m = dd > m ? dd : m;
+            }
+            n += m > tol;
+        }
+    }
+    return n;
+}
 
 static void json_string(const char *s)
 {
@@ -69,9 +120,23 @@ static void print_json(const report *r)
     }
     printf(", \"a_width\": %d, \"a_height\": %d, \"b_width\": %d, \"b_height\": %d, \"same_size\": %s,"
            " \"pixels\": %ld, \"differing\": %ld, \"max_channel\": %d, \"mean_abs\": %.6f, \"identical\": %s,"
-           " \"diff\": ",
+           " \"beyond_tolerance\": ",
            r->ia.width, r->ia.height, r->ib.width, r->ib.height, r->same_size ? "true" : "false", r->d.pixels,
            r->d.differing, r->d.max_channel, r->d.mean_abs, r->same_size && !r->d.differing ? "true" : "false");
+    if (r->same_size)
+        printf("%ld", r->beyond);
+    else
+        printf("null");
+    printf(", \"within_tolerance\": %s, \"tolerance\": ", within(r) ? "true" : "false");
+    if (tolerance_set(&r->tol)) {
+        printf("{\"max_channel_diff\": %d, \"max_differing\": %ld, \"reason\": ", r->tol.max_channel_diff,
+               r->tol.max_differing);
+        json_string(r->tol.reason);
+        printf("}");
+    } else {
+        printf("null");
+    }
+    printf(", \"diff\": ");
     if (r->diff_path)
         json_string(r->diff_path);
     else
@@ -88,7 +153,12 @@ static void print_text(const report *r)
         return;
     }
     char line[300];
-    printf("%s\n", isk_refimg_summary(&r->d, line, sizeof line));
+    printf("%s", isk_refimg_summary(&r->d, line, sizeof line));
+    if (tolerance_set(&r->tol))
+        printf("; %s the tolerance (%ld pixel%s beyond %d per channel, %ld allowed: %s)",
+               within(r) ? "within" : "beyond", r->beyond, r->beyond == 1 ? "" : "s", r->tol.max_channel_diff,
+               r->tol.max_differing, r->tol.reason);
+    printf("\n");
 }
 
 /* The comparison itself; fills r (r->error on failure, also printed). */
@@ -122,6 +192,8 @@ static void run(report *r, long long max_pixels)
         snprintf(r->error, sizeof r->error, "out of memory for the diff image");
     } else {
         r->same_size = isk_canvas_compare(&a, &b, &r->d, r->diff_path ? &img : NULL);
+        if (r->same_size)
+            r->beyond = r->tol.max_channel_diff ? count_beyond(&a, &b, r->tol.max_channel_diff) : r->d.differing;
         if (r->diff_path) {
             if (outpath_make_parents("compare", r->diff_path))
                 snprintf(r->error, sizeof r->error, "cannot write %s", r->diff_path);
@@ -151,35 +223,55 @@ int cmd_compare(int argc, char **argv)
             json = 1;
         } else if ((k = arg_value("compare", argc, argv, &i, "--diff", &v)) != 0) {
             if (k < 0)
-                return 2;
+                return TROUBLE;
             r.diff_path = v;
         } else if ((k = arg_value("compare", argc, argv, &i, "--max-pixels", &v)) != 0) {
             long n;
             if (k < 0 || !arg_long("compare", "--max-pixels", v, 1, (long)ISK_CANVAS_MAX_DIM * ISK_CANVAS_MAX_DIM, &n))
-                return 2;
+                return TROUBLE;
             max_pixels = n;
+        } else if ((k = arg_value("compare", argc, argv, &i, "--max-channel-diff", &v)) != 0) {
+            long n;
+            if (k < 0 || !arg_long("compare", "--max-channel-diff", v, 0, 255, &n))
+                return TROUBLE;
+            r.tol.max_channel_diff = (int)n;
+        } else if ((k = arg_value("compare", argc, argv, &i, "--max-differing", &v)) != 0) {
+            long n;
+            if (k < 0 || !arg_long("compare", "--max-differing", v, 0, (long)ISK_CANVAS_MAX_DIM * ISK_CANVAS_MAX_DIM,
+                                   &n))
+                return TROUBLE;
+            r.tol.max_differing = n;
+        } else if ((k = arg_value("compare", argc, argv, &i, "--reason", &v)) != 0) {
+            if (k < 0)
+                return TROUBLE;
+            r.tol.reason = v;
         } else if (argv[i][0] == '-' && argv[i][1]) {
             fprintf(stderr, "iskra compare: unknown option '%s'\n", argv[i]);
             help(stderr);
-            return 2;
+            return TROUBLE;
         } else if (nfiles < 2) {
             files[nfiles++] = argv[i];
         } else {
             fprintf(stderr, "iskra compare: too many files\n");
-            return 2;
+            return TROUBLE;
         }
     }
     if (nfiles != 2) {
         help(stderr);
-        return 2;
+        return TROUBLE;
+    }
+    if (tolerance_set(&r.tol) && (!r.tol.reason || !*r.tol.reason)) {
+        fprintf(stderr, "iskra compare: a tolerance (--max-channel-diff, --max-differing) needs --reason: why "
+                        "exactness cannot hold here\n");
+        return TROUBLE;
     }
     if (r.diff_path && !*r.diff_path) {
         fprintf(stderr, "iskra compare: --diff needs a file name\n");
-        return 2;
+        return TROUBLE;
     }
     if (outpath_refuse_input("compare", r.diff_path, files[0]) ||
         outpath_refuse_input("compare", r.diff_path, files[1]))
-        return 2;
+        return TROUBLE;
     r.a = files[0];
     r.b = files[1];
     cleanup_install("compare");
@@ -192,5 +284,5 @@ int cmd_compare(int argc, char **argv)
         print_json(&r);
     else
         print_text(&r);
-    return r.error[0] || !r.same_size || r.d.differing ? 1 : 0;
+    return r.error[0] ? TROUBLE : within(&r) ? SAME : DIFFERENT;
 }

@@ -1,6 +1,7 @@
 /* SPDX-License-Identifier: MIT */
 /* iskra describe SCENE — the compiled pipeline: per emitter, its stages in
- * the order they run, one per line. */
+ * the order they run, one per line; then the drawings and the settings
+ * (isk_effect_describe). */
 #include <stdio.h>
 #include <string.h>
 
@@ -13,7 +14,9 @@ static void help(FILE *f)
     fprintf(f, "usage: iskra describe SCENE [--seed N] [--size WxH] [--dt S] [--substeps N]\n"
                "  Prints the pipeline the scene compiles to: for each emitter, the stages\n"
                "  that run every step, in order, one per line.  Forces no emitter uses,\n"
-               "  zero-strength forces and disabled potentials are not in it.\n");
+               "  zero-strength forces and disabled potentials are not in it.  Then the\n"
+               "  drawings, and every key of [scene], [bounds], each [deflector NAME] and\n"
+               "  [click] as key = value (the seed, the clicks, start_paused, ...).\n");
     scene_args_help(f);
     fprintf(f, "  exit status: 0 success, 2 usage or scene error\n");
 }

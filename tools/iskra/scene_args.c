@@ -165,6 +165,41 @@ void scene_args_help(FILE *f)
                "                   or with K, M, G (default 4G); a scene that could need more is refused\n");
 }
 
+/* What the scene shows besides its background: a drawing, a deflector
+ * shown, an emitter that draws its particles, a potential drawn as a disc.
+ * NULL when nothing is drawn, else the first such thing. */
+static const char *first_drawn(const isk_effect_def *d)
+{
+    if (d->ndrawings > 0)
+        return "drawing";
+    for (int i = 0; i < d->ndeflectors; i++)
+        if (d->deflectors[i].show)
+            return "deflector";
+    for (int i = 0; i < d->nemitters; i++)
+        if (d->emitters[i].draw != ISK_DRAW_NONE)
+            return "emitter";
+    for (int i = 0; i < d->nforces; i++)
+        if (d->forces[i].kind == ISK_FORCE_POTENTIAL && d->forces[i].draw && d->forces[i].pot.enabled)
+            return "potential";
+    return NULL;
+}
+
+/* A scene that draws nothing renders its background alone, which looks
+ * like a broken renderer: say so (a warning; the scene is valid). */
+static void warn_if_nothing_drawn(const scene_args *a, const isk_effect_def *d)
+{
+    if (first_drawn(d))
+        return;
+    if (d->nemitters > 0)
+        fprintf(stderr, "iskra %s: warning: %s: nothing is drawn: every emitter has draw = none and there is no "
+                        "[drawing NAME] section (the picture is the background alone)\n",
+                a->cmd, a->scene);
+    else
+        fprintf(stderr, "iskra %s: warning: %s: nothing is drawn: the scene has no [emitter NAME] or "
+                        "[drawing NAME] section (the picture is the background alone)\n",
+                a->cmd, a->scene);
+}
+
 int scene_args_open(const scene_args *a, isk_effect_def *def, isk_effect **fx)
 {
     isk_error err;
@@ -203,5 +238,6 @@ int scene_args_open(const scene_args *a, isk_effect_def *def, isk_effect **fx)
         isk_effect_def_init(def);
         return s == ISK_ERR_NOMEM ? 1 : 2;
     }
+    warn_if_nothing_drawn(a, def);
     return 0;
 }
