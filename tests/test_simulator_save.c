@@ -245,3 +245,42 @@ Test(save, what_a_line_cannot_hold_is_refused)
     cr_assert(strstr(err.message, "[drawing path] points"), "%s", err.message);
     isk_effect_def_free(&d);
 }
+
+/* A save writes what a person would: an enum by its name, never an old
+ * spelling (osc_table = true was floor's), and no empty line for a text
+ * key that is not given (texture =). */
+Test(save, names_not_old_spellings_and_no_empty_keys)
+{
+    int n = isk_scene_builtin_count();
+    for (int i = 0; i < n; i++) {
+        isk_effect_def d;
+        isk_error err;
+        cr_assert_eq(isk_scene_load(&d, isk_scene_builtin_name(i), &err), ISK_OK, "%s", err.message);
+        char *text;
+        cr_assert_eq(isk_scene_write(&d, &text, &err), ISK_OK, "%s", err.message);
+        cr_expect_null(strstr(text, "osc_table = true"), "%s", isk_scene_builtin_name(i));
+        cr_expect_null(strstr(text, "osc_table = false"), "%s", isk_scene_builtin_name(i));
+        for (const char *line = text; *line; line = strchr(line, '\n') ? strchr(line, '\n') + 1 : "") {
+            size_t len = strcspn(line, "\n");
+            cr_expect(!(len >= 2 && line[len - 1] == '=' && line[len - 2] == ' ') &&
+                          !(len >= 3 && !strncmp(line + len - 2, "= ", 2)),
+                      "%s: an empty value: %.*s", isk_scene_builtin_name(i), (int)len, line);
+        }
+        free(text);
+        isk_effect_def_free(&d);
+    }
+    /* the old spelling is still read, and written as the name */
+    isk_effect_def d;
+    isk_error err;
+    cr_assert_eq(isk_scene_load_string(&d, "[emitter e]\nsource = stream\nrate = 10\nosc_table = true\n", "old", &err), ISK_OK,
+                 "%s", err.message);
+    isk_effect *fx;
+    cr_assert_eq(isk_effect_create(&fx, &d, &err), ISK_OK, "%s", err.message);
+    char v[32];
+    cr_assert_eq(isk_effect_get(fx, "emitter e", "osc_table", v, sizeof v, &err), ISK_OK);
+    cr_assert_str_eq(v, "floor");
+    cr_assert_eq(isk_effect_get(fx, "emitter e", "integrator", v, sizeof v, &err), ISK_OK);
+    cr_assert_str_eq(v, "scene", "a word for a value no name has is still the word");
+    isk_effect_destroy(fx);
+    isk_effect_def_free(&d);
+}

@@ -169,3 +169,83 @@ Test(ui_window, a_display_that_does_not_answer_is_refused)
     cr_assert_eq(isk_window_open(&w, "on purpose", 20, 20, &err), ISK_OK, "%s", err.message);
     isk_window_close(w);
 }
+
+/* A window made larger than its canvas scales the canvas by the largest
+ * whole number that fits, never by a fraction (which blurs pixels); a
+ * window smaller than the canvas shows it 1:1. */
+Test(ui_window, the_canvas_is_scaled_by_whole_numbers_only)
+{
+    isk_window *w = NULL;
+    isk_error err = {0};
+    cr_assert_eq(isk_window_open(&w, "scale", 100, 80, &err), ISK_OK, "%s", err.message);
+    isk_canvas c;
+    cr_assert_eq(isk_canvas_init(&c, 100, 80), ISK_OK);
+    static const struct {
+        int w, h;
+        double scale;
+    } sizes[] = {{100, 80, 1}, {250, 250, 2}, {299, 239, 2}, {300, 240, 3}, {199, 500, 1}, {60, 40, 1}};
+    for (size_t i = 0; i < sizeof sizes / sizeof sizes[0]; i++) {
+        cr_assert_eq(isk_window_set_size(w, sizes[i].w, sizes[i].h), ISK_OK);
+        isk_event ev;
+        while (isk_window_poll(w, &ev)) /* the resize reaches the renderer through SDL's events */
+            ;
+        cr_assert_eq(isk_window_present(w, &c, &err), ISK_OK, "%s", err.message);
+        cr_expect_eq(isk_window_scale(w), sizes[i].scale, "a %dx%d window: scale %g", sizes[i].w, sizes[i].h,
+                     isk_window_scale(w));
+    }
+    cr_assert_eq(isk_window_scale(NULL), 0);
+    isk_canvas_free(&c);
+    isk_window_close(w);
+}
+
+/* Modifiers and double clicks come through the window: Ctrl+A reaches
+ * the widget layer as ISK_UI_MOD_CTRL | 'a', a double click's second
+ * press with clicks = 2, and a field takes both as "select all". */
+Test(ui_window, ctrl_a_and_double_clicks_reach_the_widgets)
+{
+    isk_window *w = NULL;
+    isk_error err = {0};
+    cr_assert_eq(isk_window_open(&w, "keys", 100, 40, &err), ISK_OK, "%s", err.message);
+    const isk_event evs[] = {
+        {.type = ISK_EVENT_KEY_DOWN, .key = 'a', .mods = ISK_MOD_CTRL},
+        {.type = ISK_EVENT_MOUSE_DOWN, .button = 1, .x = 20, .y = 15, .clicks = 2},
+    };
+    for (size_t i = 0; i < 2; i++)
+        cr_assert_eq(isk_window_push_event(w, &evs[i]), ISK_OK);
+    isk_event ev;
+    int ctrl_a = 0, twice = 0;
+    while (isk_window_poll(w, &ev)) {
+        ctrl_a |= ev.type == ISK_EVENT_KEY_DOWN && ev.key == 'a' && (ev.mods & ISK_MOD_CTRL);
+        twice |= ev.type == ISK_EVENT_MOUSE_DOWN && ev.clicks == 2;
+    }
+    cr_expect(ctrl_a, "Ctrl+A came back as 'a' with ISK_MOD_CTRL");
+    cr_expect(twice, "the double click came back with clicks = 2");
+    isk_window_close(w);
+
+    /* the widgets: a field's text, its selection ended by End, then Ctrl+A and typing */
+    isk_ui ui;
+    isk_ui_init(&ui, 1);
+    isk_canvas c;
+    cr_assert_eq(isk_canvas_init(&c, 100, 40), ISK_OK);
+    const isk_ui_rect r = {10, 10, 80, 20};
+    char out[32] = "";
+    const isk_event session[] = {
+        {.type = ISK_EVENT_MOUSE_DOWN, .button = 1, .x = 20, .y = 15, .clicks = 1},
+        {.type = ISK_EVENT_MOUSE_UP, .button = 1, .x = 20, .y = 15, .clicks = 1},
+        {.type = ISK_EVENT_KEY_DOWN, .key = ISK_KEY_END},
+        {.type = ISK_EVENT_KEY_DOWN, .key = 'a', .mods = ISK_MOD_CTRL},
+        {.type = ISK_EVENT_TEXT, .text = "7"},
+        {.type = ISK_EVENT_KEY_DOWN, .key = ISK_KEY_RETURN},
+    };
+    int applied = 0;
+    for (size_t i = 0; i < sizeof session / sizeof session[0]; i++)
+        isk_ui_feed_event(&ui, &session[i]);
+    for (int f = 0; f < 6; f++) {
+        isk_ui_begin(&ui, &c);
+        applied |= isk_ui_field(&ui, "f", r, "9.81", 0, out, sizeof out) == ISK_UI_FIELD_APPLY;
+        isk_ui_end(&ui);
+    }
+    cr_assert(applied);
+    cr_expect_str_eq(out, "7", "Ctrl+A selected the whole value, so 7 replaced it");
+    isk_canvas_free(&c);
+}

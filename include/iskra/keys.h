@@ -142,6 +142,42 @@ const char *isk_key_type_name(isk_key_type type);
  * stand for values ("scene"); at most max into out, returns how many. */
 int isk_key_choices(const isk_key *k, const char **out, int max);
 
+/* ---- a definition's sections, item by item ---------------------------------
+ * For panels that show a running scene's keys (`iskra play`'s inspector):
+ *
+ *     const isk_effect_def *d = isk_effect_definition(fx);
+ *     for (int i = 0; i < isk_key_items(d, ISK_SECTION_EMITTER); i++) {
+ *         int kind = isk_key_item_kind(d, ISK_SECTION_EMITTER, i);          // its source
+ *         for (int r = 0; r < isk_key_count(); r++) {
+ *             const isk_key *k = isk_key_at(r);
+ *             if (k->section == ISK_SECTION_EMITTER && isk_key_applies(k, kind) &&
+ *                 isk_key_when_set(k, kind) != ISK_KEY_WHEN_CREATED)
+ *                 ...;  // "emitter NAME", k->name: a key isk_effect_set takes
+ *         }
+ *     }
+ */
+struct isk_effect_def;
+/* How many items of section s the definition holds (1 for the unnamed
+ * sections [scene], [view], [bounds], [click]; 0 for a NULL definition). */
+int isk_key_items(const struct isk_effect_def *d, isk_section_kind s);
+/* Item i's name ("" for the unnamed sections and out of range), its kind
+ * (the value of its kind key: a force's kind, an emitter's source, the
+ * walls' mode, the view's window or camera; -1 for sections without kinds
+ * and out of range), and the struct its keys' offsets point into (NULL
+ * out of range). */
+const char *isk_key_item_name(const struct isk_effect_def *d, isk_section_kind s, int i);
+int isk_key_item_kind(const struct isk_effect_def *d, isk_section_kind s, int i);
+const void *isk_key_item(const struct isk_effect_def *d, isk_section_kind s, int i);
+/* Whether the key applies to an item of that kind (-1: any kind). */
+int isk_key_applies(const isk_key *k, int kind);
+/* What isk_effect_set does with the key for an item of that kind. */
+typedef enum isk_key_when {
+    ISK_KEY_WHEN_LIVE = 0, /* applies from the next step */
+    ISK_KEY_WHEN_RESET,    /* stored at once, used from the next isk_effect_reset */
+    ISK_KEY_WHEN_CREATED   /* refused: fixed when the effect is created (the kinds, width, height) */
+} isk_key_when;
+isk_key_when isk_key_when_set(const isk_key *k, int kind);
+
 /* A row in words, for tables (`iskra keys`, docs/scene-format.md, panels):
  *   range:   "0..10000000", "> 0", "semi-euler, euler, ..." (the names of enums and of
  *            keys that take a name from a list), ""

@@ -47,11 +47,16 @@
  *   - Text: what a key types (Shift and the layout applied: "A", "_", "+")
  *     arrives as a separate ISK_EVENT_TEXT after its KEY_DOWN; text fields
  *     read these, shortcuts read the keys.
+ *   - Modifiers: a key event's `mods` says which of Shift, Ctrl and Alt
+ *     were held (ISK_MOD_*), so Ctrl+A can be told from A.
  *   - Mouse: x, y are canvas pixels.  The window is resizable; the canvas is
- *     scaled to fit with its aspect ratio kept (black bars), and positions
- *     are mapped back to canvas pixels, so they can lie outside
- *     0..width-1 / 0..height-1 when the pointer is over a bar.  Buttons
- *     other than left/middle/right are not reported.
+ *     scaled by the largest whole number that fits (never a fraction, so
+ *     pixels stay sharp: 1 when the window is smaller than the canvas) and
+ *     centred with black bars, and positions are mapped back to canvas
+ *     pixels, so they can lie outside 0..width-1 / 0..height-1 when the
+ *     pointer is over a bar.  A press's `clicks` is 2 for the second click
+ *     of a double click (the system's timing).  Buttons other than
+ *     left/middle/right are not reported.
  *   - Wheel: +1 / -1 per notch, in the physical direction even with
  *     "natural scrolling"; horizontal scrolling is not reported.
  *   - All windows share SDL's one event queue: with two windows open, poll
@@ -105,6 +110,9 @@ typedef enum isk_event_type {
     ISK_EVENT_TEXT    /* text typed (after the keyboard layout and Shift): `text` */
 } isk_event_type;
 
+/* Modifier keys held with a key (isk_event.mods, a bit set). */
+enum { ISK_MOD_SHIFT = 1, ISK_MOD_CTRL = 2, ISK_MOD_ALT = 4 };
+
 typedef struct isk_event {
     isk_event_type type;
     int key;          /* KEY_DOWN/UP: ISK_KEY_* or lower-case ASCII */
@@ -112,6 +120,8 @@ typedef struct isk_event {
     int x, y;         /* mouse position in canvas pixels */
     int wheel;        /* WHEEL: +1 away from the user, -1 towards */
     char text[32];    /* TEXT: the characters, UTF-8, NUL-terminated */
+    int mods;         /* KEY_DOWN/UP: ISK_MOD_* held */
+    int clicks;       /* MOUSE_DOWN/UP: 1, or 2 for a double click's second (0 in a pushed event counts as 1) */
 } isk_event;
 
 /* Opens a window of the given size (the canvas size shown 1:1).  Sizes
@@ -128,6 +138,10 @@ isk_status isk_window_set_size(isk_window *w, int width, int height);
  * new size.  ISK_ERR_SIZE for sizes outside 1..ISK_CANVAS_MAX_DIM,
  * ISK_ERR_DISPLAY if SDL fails (the window then keeps its old size). */
 isk_status isk_window_resize_canvas(isk_window *w, int width, int height, isk_error *err);
+
+/* How many screen pixels a canvas pixel is across now: a whole number
+ * (1 when the window is smaller than the canvas); 0 for NULL. */
+double isk_window_scale(const isk_window *w);
 
 /* The usable size of the display the window is on (without task bars), for
  * choosing how large to lay out; ISK_ERR_DISPLAY if SDL cannot tell. */

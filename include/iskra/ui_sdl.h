@@ -1,8 +1,9 @@
 /* SPDX-License-Identifier: MIT */
 /* iskra/ui_sdl.h — feeds the SDL window's events (iskra/sdl.h) to the
  * widget layer (iskra/ui.h).  Header-only, so neither library depends on
- * the other.  Only the left button drives widgets; keypad + and - count as
- * + and -.
+ * the other.  Only the left button drives widgets (a double click's second
+ * press selects a field's text); keypad + and - count as + and -; a key
+ * held with Ctrl arrives or'ed with ISK_UI_MOD_CTRL (Ctrl+A selects all).
  *
  * Example: a window with one button, until Escape (pressed by the program):
  *
@@ -79,11 +80,17 @@ static inline void isk_ui_feed_event(isk_ui *ui, const isk_event *ev)
     case ISK_EVENT_MOUSE_DOWN:
     case ISK_EVENT_MOUSE_UP:
         if (ev->button == 1)
-            isk_ui_input_button(ui, ev->x, ev->y, ev->type == ISK_EVENT_MOUSE_DOWN);
+            isk_ui_input_button_clicks(ui, ev->x, ev->y, ev->type == ISK_EVENT_MOUSE_DOWN, ev->clicks);
         break;
     case ISK_EVENT_WHEEL: isk_ui_input_wheel(ui, ev->wheel); break;
     case ISK_EVENT_TEXT: isk_ui_input_text(ui, ev->text); break;
-    case ISK_EVENT_KEY_DOWN: isk_ui_input_key(ui, isk_ui_key_from_window(ev->key)); break;
+    case ISK_EVENT_KEY_DOWN: {
+        int key = isk_ui_key_from_window(ev->key);
+        if (key && (ev->mods & ISK_MOD_CTRL))
+            key |= ISK_UI_MOD_CTRL;
+        isk_ui_input_key(ui, key);
+        break;
+    }
     default: break;
     }
 }

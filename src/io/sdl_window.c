@@ -20,7 +20,9 @@
  *
  * Scaling: the window is resizable; SDL_RenderSetLogicalSize keeps the canvas
  * at its aspect ratio (letterboxed) and makes SDL translate mouse coordinates
- * of our window into canvas pixels before we see them.
+ * of our window into canvas pixels before we see them, and
+ * SDL_RenderSetIntegerScale keeps the scale a whole number, so a pixel of
+ * the canvas is always a square of whole screen pixels (never blurred).
  */
 #include <SDL.h>
 #include <limits.h>
@@ -126,6 +128,8 @@ static int convert(const isk_window *w, const SDL_Event *e, isk_event *ev)
     case SDL_KEYUP:
         ev->type = e->type == SDL_KEYDOWN ? ISK_EVENT_KEY_DOWN : ISK_EVENT_KEY_UP;
         ev->key = key_from_sdl(e->key.keysym.sym);
+        ev->mods = (e->key.keysym.mod & KMOD_SHIFT ? ISK_MOD_SHIFT : 0) |
+                   (e->key.keysym.mod & KMOD_CTRL ? ISK_MOD_CTRL : 0) | (e->key.keysym.mod & KMOD_ALT ? ISK_MOD_ALT : 0);
         return 1;
     case SDL_MOUSEBUTTONDOWN:
     case SDL_MOUSEBUTTONUP:
@@ -138,6 +142,7 @@ static int convert(const isk_window *w, const SDL_Event *e, isk_event *ev)
         ev->type = e->type == SDL_MOUSEBUTTONDOWN ? ISK_EVENT_MOUSE_DOWN : ISK_EVENT_MOUSE_UP;
         ev->x = e->button.x; /* already canvas pixels: see the logical size */
         ev->y = e->button.y;
+        ev->clicks = e->button.clicks > 1 ? 2 : 1;
         return 1;
     case SDL_MOUSEMOTION:
         ev->type = ISK_EVENT_MOUSE_MOVE;
@@ -264,7 +269,7 @@ isk_status isk_window_open(isk_window **out, const char *title, int width, int h
         isk_window_close(w);
         return ISK_ERR_DISPLAY;
     }
-    if (SDL_RenderSetLogicalSize(w->ren, width, height) != 0) {
+    if (SDL_RenderSetLogicalSize(w->ren, width, height) != 0 || SDL_RenderSetIntegerScale(w->ren, SDL_TRUE) != 0) {
         display_error(err, "cannot set the logical size");
         isk_window_close(w);
         return ISK_ERR_DISPLAY;
@@ -324,6 +329,15 @@ isk_status isk_window_resize_canvas(isk_window *w, int width, int height, isk_er
             SDL_SetWindowPosition(w->win, nx, ny);
     }
     return ISK_OK;
+}
+
+double isk_window_scale(const isk_window *w)
+{
+    if (!w)
+        return 0;
+    float sx = 1, sy = 1;
+    SDL_RenderGetScale(w->ren, &sx, &sy);
+    return sx < sy ? sx : sy;
 }
 
 isk_status isk_window_display_size(const isk_window *w, int *width, int *height)
@@ -416,6 +430,8 @@ isk_status isk_window_push_event(isk_window *w, const isk_event *ev)
         e.key.state = ev->type == ISK_EVENT_KEY_DOWN ? SDL_PRESSED : SDL_RELEASED;
         e.key.keysym.sym = key_to_sdl(ev->key);
         e.key.keysym.scancode = SDL_GetScancodeFromKey(e.key.keysym.sym);
+        e.key.keysym.mod = (Uint16)((ev->mods & ISK_MOD_SHIFT ? KMOD_LSHIFT : 0) |
+                                    (ev->mods & ISK_MOD_CTRL ? KMOD_LCTRL : 0) | (ev->mods & ISK_MOD_ALT ? KMOD_LALT : 0));
         break;
     case ISK_EVENT_MOUSE_DOWN:
     case ISK_EVENT_MOUSE_UP:
@@ -425,7 +441,7 @@ isk_status isk_window_push_event(isk_window *w, const isk_event *ev)
         e.button.state = ev->type == ISK_EVENT_MOUSE_DOWN ? SDL_PRESSED : SDL_RELEASED;
         e.button.button = (Uint8)(ev->button == 1 ? SDL_BUTTON_LEFT
                                   : ev->button == 2 ? SDL_BUTTON_MIDDLE : SDL_BUTTON_RIGHT);
-        e.button.clicks = 1;
+        e.button.clicks = (Uint8)(ev->clicks > 1 ? 2 : 1);
         e.button.x = ev->x;
         e.button.y = ev->y;
         break;

@@ -1,10 +1,10 @@
 /* SPDX-License-Identifier: MIT */
-/* src/raster/text.c — measuring and drawing strings in the built-in font.
+/* src/raster/text.c — measuring and drawing strings in the built-in fonts.
  *
  * Layout (see iskra/text.h): every byte except '\n' advances the pen by one
- * ISK_FONT_CELL_W x ISK_FONT_CELL_H cell (times scale); the glyph's 5x8 box
- * sits at the cell's top-left and the last column and row of the cell are
- * spacing.  '\n' moves the pen to the start x of the next line.
+ * cell (cell_w x cell_h of the font's metrics, times scale; 6x9 for the 5x8
+ * font); the glyph's box sits at the cell's top-left and the rest of the
+ * cell is spacing.  '\n' moves the pen to the start x of the next line.
  *
  *     int w = isk_text_width("FPS: 60", 2), h = isk_text_height("FPS: 60", 2);
  *     isk_draw_text(&c, 15, 30, "FPS: 60", 2, ISK_WHITE, ISK_BLEND_OVER);
@@ -21,6 +21,28 @@
 #include <stddef.h>
 #include <stdint.h>
 
+/* The 6x13 font's table (src/raster/font_6x13.c). */
+const uint8_t *isk__font_6x13_glyph(unsigned char ch);
+
+static const isk_font_metrics metrics[ISK_FONT_COUNT] = {
+    [ISK_FONT_5X8] = {ISK_FONT_CELL_W, ISK_FONT_CELL_H, ISK_FONT_GLYPH_W, ISK_FONT_GLYPH_H, 7},
+    [ISK_FONT_6X13] = {7, 14, 6, 13, 10},
+};
+
+const isk_font_metrics *isk_font_metrics_of(isk_font font)
+{
+    return (unsigned)font < ISK_FONT_COUNT ? &metrics[font] : NULL;
+}
+
+const uint8_t *isk_font_rows(isk_font font, unsigned char ch)
+{
+    switch (font) {
+    case ISK_FONT_5X8: return isk_font_glyph(ch);
+    case ISK_FONT_6X13: return isk__font_6x13_glyph(ch);
+    default: return NULL;
+    }
+}
+
 /* n * unit, saturated at INT_MAX (unit > 0). */
 static int saturated_product(unsigned long long n, long long unit)
 {
@@ -31,9 +53,10 @@ static int saturated_product(unsigned long long n, long long unit)
     return (int)((long long)n * unit);
 }
 
-int isk_text_width(const char *s, int scale)
+int isk_font_text_width(isk_font font, const char *s, int scale)
 {
-    if (!s || scale < 1)
+    const isk_font_metrics *m = isk_font_metrics_of(font);
+    if (!m || !s || scale < 1)
         return 0;
     unsigned long long widest = 0, cur = 0;
     for (; *s; s++) {
@@ -43,19 +66,24 @@ int isk_text_width(const char *s, int scale)
             widest = cur;
         }
     }
-    return saturated_product(widest, (long long)ISK_FONT_CELL_W * scale);
+    return saturated_product(widest, (long long)m->cell_w * scale);
 }
 
-int isk_text_height(const char *s, int scale)
+int isk_font_text_height(isk_font font, const char *s, int scale)
 {
-    if (!s || scale < 1 || !*s)
+    const isk_font_metrics *m = isk_font_metrics_of(font);
+    if (!m || !s || scale < 1 || !*s)
         return 0;
     unsigned long long lines = 1;
     for (; *s; s++)
         if (*s == '\n')
             lines++;
-    return saturated_product(lines, (long long)ISK_FONT_CELL_H * scale);
+    return saturated_product(lines, (long long)m->cell_h * scale);
 }
+
+int isk_text_width(const char *s, int scale) { return isk_font_text_width(ISK_FONT_5X8, s, scale); }
+
+int isk_text_height(const char *s, int scale) { return isk_font_text_height(ISK_FONT_5X8, s, scale); }
 
 /* Blends the rectangle [x0, x0+w) x [y0, y0+h), clipped to the canvas. */
 static void fill_block(isk_canvas *c, long long x0, long long y0, long long w, long long h,
@@ -75,21 +103,22 @@ static void fill_block(isk_canvas *c, long long x0, long long y0, long long w, l
     }
 }
 
-/* Draws one glyph whose box has its top-left at (x, y). */
-static void draw_glyph(isk_canvas *c, long long x, long long y, const uint8_t *rows,
+/* Draws one glyph whose box (m->glyph_w x m->glyph_h) has its top-left at (x, y). */
+static void draw_glyph(isk_canvas *c, const isk_font_metrics *m, long long x, long long y, const uint8_t *rows,
                        long long scale, isk_color color, isk_blend mode)
 {
-    for (int r = 0; r < ISK_FONT_GLYPH_H; r++) {
+    const unsigned left = 1u << (m->glyph_w - 1); /* the bit of the leftmost pixel */
+    for (int r = 0; r < m->glyph_h; r++) {
         long long py = y + r * scale;
         if (py >= c->height || py + scale <= 0 || rows[r] == 0u)
             continue;
-        for (int col = 0; col < ISK_FONT_GLYPH_W; col++) {
-            if (!(rows[r] & (0x10u >> col)))
+        for (int col = 0; col < m->glyph_w; col++) {
+            if (!(rows[r] & (left >> col)))
                 continue;
             /* Merge a horizontal run of ink into one block: fewer clip
              * computations at large scales, same pixels. */
             int end = col + 1;
-            while (end < ISK_FONT_GLYPH_W && (rows[r] & (0x10u >> end)))
+            while (end < m->glyph_w && (rows[r] & (left >> end)))
                 end++;
             fill_block(c, x + col * scale, py, (end - col) * scale, scale, color, mode);
             col = end;
@@ -97,15 +126,16 @@ static void draw_glyph(isk_canvas *c, long long x, long long y, const uint8_t *r
     }
 }
 
-void isk_draw_text(isk_canvas *c, int x, int y, const char *s, int scale,
-                   isk_color color, isk_blend mode)
+void isk_font_draw_text(isk_canvas *c, isk_font font, int x, int y, const char *s, int scale, isk_color color,
+                        isk_blend mode)
 {
-    if (!c || !c->pixels || c->width <= 0 || c->height <= 0 || !s || scale < 1)
+    const isk_font_metrics *m = isk_font_metrics_of(font);
+    if (!m || !c || !c->pixels || c->width <= 0 || c->height <= 0 || !s || scale < 1)
         return;
     if (!isk_blend_name(mode))
         return; /* unknown mode: draw nothing rather than guess */
     const long long k = scale;
-    const long long cell_w = ISK_FONT_CELL_W * k, cell_h = ISK_FONT_CELL_H * k;
+    const long long cell_w = m->cell_w * k, cell_h = m->cell_h * k;
     long long pen_x = x, pen_y = y;
     while (*s) {
         if (pen_y >= c->height)
@@ -117,7 +147,7 @@ void isk_draw_text(isk_canvas *c, int x, int y, const char *s, int scale,
                 continue;
             if (pen_x + cell_w > 0) {
                 unsigned char ch = (unsigned char)*s;
-                draw_glyph(c, pen_x, pen_y, isk_font_glyph(ch), k, color, mode);
+                draw_glyph(c, m, pen_x, pen_y, isk_font_rows(font, ch), k, color, mode);
             }
             pen_x += cell_w;
         }
@@ -127,4 +157,9 @@ void isk_draw_text(isk_canvas *c, int x, int y, const char *s, int scale,
             pen_y += cell_h;
         }
     }
+}
+
+void isk_draw_text(isk_canvas *c, int x, int y, const char *s, int scale, isk_color color, isk_blend mode)
+{
+    isk_font_draw_text(c, ISK_FONT_5X8, x, y, s, scale, color, mode);
 }

@@ -98,11 +98,14 @@ isk_status fx_key_format(const isk_key *k, const void *item, const isk_effect_de
     case ISK_KEY_BOOL: return put(buf, n, "%s", *FX_AT_C(int, item, k->offset) ? "true" : "false");
     case ISK_KEY_COLOR: return colour_text(buf, n, *FX_AT_C(isk_color, item, k->offset));
     case ISK_KEY_ENUM: {
+        /* A value's name first: a word for a named value is an old
+         * spelling (osc_table's true = floor); words name the others
+         * (an emitter's integrator "scene"). */
         int v = *FX_AT_C(int, item, k->offset);
+        if (v >= 0 && v < k->nnames)
+            return put(buf, n, "%s", k->names[v]);
         const char *w = fx_word_of(k, v);
-        if (w)
-            return put(buf, n, "%s", w);
-        return put(buf, n, "%s", v >= 0 && v < k->nnames ? k->names[v] : "?");
+        return put(buf, n, "%s", w ? w : "?");
     }
     case ISK_KEY_VECTOR:
     case ISK_KEY_PAIR: return numbers_text(buf, n, FX_AT_C(double, item, k->offset), 2);

@@ -326,3 +326,36 @@ const char *fx_word_of(const isk_key *k, double v)
             return k->words[i].word;
     return NULL;
 }
+
+/* ---- the public view of the items (iskra/keys.h) ------------------------------------------- */
+
+int isk_key_items(const isk_effect_def *d, isk_section_kind s)
+{
+    return d && (unsigned)s < ISK_SECTION_COUNT ? fx_section_items(d, s) : 0;
+}
+
+const char *isk_key_item_name(const isk_effect_def *d, isk_section_kind s, int i)
+{
+    return d && (unsigned)s < ISK_SECTION_COUNT ? fx_item_name(d, s, i) : "";
+}
+
+int isk_key_item_kind(const isk_effect_def *d, isk_section_kind s, int i)
+{
+    return d && (unsigned)s < ISK_SECTION_COUNT ? fx_item_kind(d, s, i) : -1;
+}
+
+const void *isk_key_item(const isk_effect_def *d, isk_section_kind s, int i)
+{
+    return d && (unsigned)s < ISK_SECTION_COUNT ? fx_section_item_c(d, s, i) : NULL;
+}
+
+int isk_key_applies(const isk_key *k, int kind) { return k && fx_key_applies(k, kind); }
+
+isk_key_when isk_key_when_set(const isk_key *k, int kind)
+{
+    if (!k || k->create_only)
+        return ISK_KEY_WHEN_CREATED;
+    if (k->live == ISK_KEY_ALL_KINDS || (kind < 0 && k->live) || (kind >= 0 && kind < 32 && (k->live >> kind & 1u)))
+        return ISK_KEY_WHEN_LIVE;
+    return ISK_KEY_WHEN_RESET;
+}

@@ -10,10 +10,11 @@
  * written, keys at their defaults too, so nothing depends on a default
  * that might change.  Keys that do not apply to an item's kind are left
  * out (the parser refuses them), and so is a reference to "the first
- * emitter" (its default).  What a line cannot hold is refused with
- * ISK_ERR_FORMAT rather than written wrong: a value longer than a scene
- * line, text that starts or ends with blanks or holds a comment, a
- * potential moved by a C function. */
+ * emitter" (its default) and empty text that is not required (an emitter
+ * without a texture: "texture =" would say nothing).  What a line cannot
+ * hold is refused with ISK_ERR_FORMAT rather than written wrong: a value
+ * longer than a scene line, text that starts or ends with blanks or holds
+ * a comment, a potential moved by a C function. */
 #include <errno.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -65,6 +66,12 @@ static int survives_ini(const char *v)
     return !strchr(v, '\n') && !strchr(v, '\r') && v[0] != ';';
 }
 
+/* Whether a scene file must give the key for an item of that kind. */
+static int required(const isk_key *k, int kind)
+{
+    return kind < 0 ? k->required != 0 : kind < 32 && (k->required >> kind & 1u);
+}
+
 static isk_status write_item(out *o, const isk_effect_def *d, isk_section_kind s, int index, isk_error *err)
 {
     const char *name = fx_item_name(d, s, index);
@@ -83,6 +90,8 @@ static isk_status write_item(out *o, const isk_effect_def *d, isk_section_kind s
             continue;
         if (k->type == ISK_KEY_REF && *(const int *)((const char *)item + k->offset) < 0)
             continue; /* "the first emitter" is the default, and has no name to write */
+        if (k->type == ISK_KEY_TEXT && !*((const char *)item + k->offset) && !required(k, kind))
+            continue; /* empty text ("texture =") is the key's absence: nothing to write */
         if (fx_key_format(k, item, d, value, sizeof value) != ISK_OK || strlen(k->name) + 3 + strlen(value) >
                                                                              ISK_INI_MAX_LINE)
             return isk_error_set(err, ISK_ERR_FORMAT, "%s %s: the value is longer than a scene line holds (%d "

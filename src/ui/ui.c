@@ -27,6 +27,7 @@ void isk_ui_style_dark(isk_ui_style *s)
     s->knob = isk_rgba(0x67, 0x67, 0x74, 255);
     s->bar_on = isk_rgba(0x75, 0x75, 0x75, 255);
     s->error = isk_rgba(0xff, 0x6b, 0x5e, 255);
+    s->selection = isk_rgba(0x2a, 0x4d, 0x80, 255);
 }
 
 void isk_ui_init(isk_ui *ui, int scale)
@@ -35,6 +36,7 @@ void isk_ui_init(isk_ui *ui, int scale)
         return;
     memset(ui, 0, sizeof *ui);
     ui->scale = scale < 1 ? 1 : scale;
+    ui->font = ISK_FONT_5X8;
     isk_ui_style_dark(&ui->style);
     ui->mouse_x = ui->mouse_y = -1;
 }
@@ -104,26 +106,28 @@ static void push(isk_ui *ui, isk_ui_event ev)
 
 void isk_ui_input_mouse(isk_ui *ui, int x, int y)
 {
-    isk_ui_event e = {UI_EV_MOVE, x, y, 0, {0}};
+    isk_ui_event e = {UI_EV_MOVE, x, y, 0, {0}, 0};
     push(ui, e);
 }
 
-void isk_ui_input_button(isk_ui *ui, int x, int y, int down)
+void isk_ui_input_button_clicks(isk_ui *ui, int x, int y, int down, int clicks)
 {
-    isk_ui_event e = {UI_EV_BUTTON, x, y, down != 0, {0}};
+    isk_ui_event e = {UI_EV_BUTTON, x, y, down != 0, {0}, clicks > 1 ? clicks : 1};
     push(ui, e);
 }
+
+void isk_ui_input_button(isk_ui *ui, int x, int y, int down) { isk_ui_input_button_clicks(ui, x, y, down, 1); }
 
 void isk_ui_input_wheel(isk_ui *ui, int dy)
 {
-    isk_ui_event e = {UI_EV_WHEEL, 0, 0, dy > 0 ? 1 : dy < 0 ? -1 : 0, {0}};
+    isk_ui_event e = {UI_EV_WHEEL, 0, 0, dy > 0 ? 1 : dy < 0 ? -1 : 0, {0}, 0};
     if (dy)
         push(ui, e);
 }
 
 void isk_ui_input_key(isk_ui *ui, int key)
 {
-    isk_ui_event e = {UI_EV_KEY, 0, 0, key, {0}};
+    isk_ui_event e = {UI_EV_KEY, 0, 0, key, {0}, 0};
     if (key > 0)
         push(ui, e);
 }
@@ -131,7 +135,7 @@ void isk_ui_input_key(isk_ui *ui, int key)
 void isk_ui_input_text(isk_ui *ui, const char *utf8)
 {
     /* Printable ASCII only (the font has nothing else), in pieces of 7. */
-    isk_ui_event e = {UI_EV_TEXT, 0, 0, 0, {0}};
+    isk_ui_event e = {UI_EV_TEXT, 0, 0, 0, {0}, 0};
     size_t k = 0;
     for (const unsigned char *p = (const unsigned char *)(utf8 ? utf8 : ""); *p; p++) {
         if (*p < 32 || *p > 126)
@@ -163,6 +167,7 @@ static int ends_frame_input(int key)
 static void take_input(isk_ui *ui)
 {
     ui->pressed = ui->released = ui->wheel = 0;
+    ui->press_clicks = 0;
     ui->nkeys = 0;
     ui->keys_taken = 0;
     int i = 0;
@@ -192,6 +197,7 @@ static void take_input(isk_ui *ui)
             ui->mouse_y = e->y;
             if (e->value) {
                 ui->pressed = ui->mouse_down = 1;
+                ui->press_clicks = e->clicks;
                 const isk_ui_event *n = i + 1 < ui->queue_len ? &ui->queue[i + 1] : NULL;
                 if (n && n->type == UI_EV_BUTTON && !n->value && n->x == e->x && n->y == e->y) {
                     ui->released = 1;
@@ -230,9 +236,63 @@ void isk_ui_begin(isk_ui *ui, isk_canvas *canvas)
     ui->focus_seen = 0;
     ui->disabled = 0;
     ui->nitems = 0;
+    ui->npanels = 0;
+    ui->error_placed = 0;
+    ui->popup_seen = 0;
+    ui->popup_pick = -1;
+    ui->popup_closed_id = 0;
+    ui_popup_input(ui);
     /* A press anywhere else clears a refused value's message. */
     if (ui->pressed && ui->error_id && ui->focus != ui->error_id)
         ui->error_id = 0;
+}
+
+/* The container of a floating message: the smallest panel drawn this
+ * frame that holds the field, else the canvas. */
+static isk_ui_rect message_container(const isk_ui *ui, isk_ui_rect field)
+{
+    isk_ui_rect best = {0, 0, ui->canvas->width, ui->canvas->height};
+    long best_area = -1;
+    for (int i = 0; i < ui->npanels; i++) {
+        isk_ui_rect p = ui->panels[i];
+        long area = (long)p.w * p.h;
+        if (field.x >= p.x && field.y >= p.y && field.x + field.w <= p.x + p.w && field.y + field.h <= p.y + p.h &&
+            (best_area < 0 || area < best_area)) {
+            best = p;
+            best_area = area;
+        }
+    }
+    return best;
+}
+
+/* A refused value's message the program did not place: in a box under its
+ * field (above it when the container ends), as wide as its longest line,
+ * wrapped to the container's width and kept inside it. */
+static void floating_message(isk_ui *ui)
+{
+    const int s = ui->scale, pad = 3 * s;
+    const isk_ui_rect in = message_container(ui, ui->error_rect);
+    char lines[sizeof ui->error + 64];
+    const int n = isk_ui_wrap(ui, ui->error, in.w - 2 * pad, lines, sizeof lines);
+    if (n <= 0)
+        return;
+    int w = isk_ui_text_width(ui, lines) + 2 * pad;
+    int h = (n - 1) * isk_ui_line_height(ui) + isk_font_metrics_of(ui->font)->glyph_h * s + 2 * pad;
+    if (n == 1) /* one line: the height the box always had */
+        h = isk_ui_line_height(ui) + 2 * pad;
+    isk_ui_rect box = {ui->error_rect.x, ui->error_rect.y + ui->error_rect.h + s, w, h};
+    if (box.x + box.w > in.x + in.w)
+        box.x = in.x + in.w - box.w;
+    if (box.x < in.x)
+        box.x = in.x;
+    if (box.y + box.h > in.y + in.h)
+        box.y = ui->error_rect.y - h - s;
+    ui_round_outline(ui, box, 2 * s, s, ui->style.error, ui->style.panel);
+    isk_ui_rect t = isk_ui_inset(box, pad);
+    if (n == 1)
+        ui_text_line(ui, t, lines, ui->style.error, ISK_UI_LEFT);
+    else
+        isk_ui_text(ui, t, lines, ui->style.error, ISK_UI_LEFT);
 }
 
 void isk_ui_end(isk_ui *ui)
@@ -243,20 +303,11 @@ void isk_ui_end(isk_ui *ui)
         ui->focus = 0;
     if (ui->released)
         ui->active = 0;
-    if (ui->error_id && ui->error[0] && ui->canvas) {
-        /* The message under its field, on top of everything, within the canvas. */
-        const int s = ui->scale, pad = 3 * s;
-        int w = isk_ui_text_width(ui, ui->error) + 2 * pad, h = 9 * s + 2 * pad;
-        isk_ui_rect box = {ui->error_rect.x, ui->error_rect.y + ui->error_rect.h + s, w, h};
-        if (box.x + box.w > ui->canvas->width)
-            box.x = ui->canvas->width - box.w;
-        if (box.x < 0)
-            box.x = 0;
-        if (box.y + box.h > ui->canvas->height)
-            box.y = ui->error_rect.y - h - s;
-        ui_round_outline(ui, box, 2 * s, s, ui->style.error, ui->style.panel);
-        ui_text_line(ui, isk_ui_inset(box, pad), ui->error, ui->style.error, ISK_UI_LEFT);
-    }
+    if (ui->popup_id && !ui->popup_seen)
+        ui->popup_id = 0; /* its choice was not drawn: the list goes with it */
+    if (ui->error_id && ui->error[0] && ui->canvas && !ui->error_placed)
+        floating_message(ui);
+    ui_popup_draw(ui);
     ui->frame++;
 }
 
@@ -281,6 +332,15 @@ int isk_ui_editing(const isk_ui *ui) { return ui && ui->focus != 0; }
 
 int isk_ui_hovering(const isk_ui *ui) { return ui && ui->hot != 0; }
 
+int isk_ui_hovered(const isk_ui *ui, isk_ui_rect r)
+{
+    if (!ui || !isk_ui_contains(r, ui->mouse_x, ui->mouse_y))
+        return 0;
+    return !(ui->popup_id && isk_ui_contains(ui->popup_rect, ui->mouse_x, ui->mouse_y));
+}
+
+int isk_ui_wheel(const isk_ui *ui, isk_ui_rect r) { return isk_ui_hovered(ui, r) ? ui->wheel : 0; }
+
 void isk_ui_set_disabled(isk_ui *ui, int disabled)
 {
     if (ui)
@@ -297,12 +357,14 @@ void isk_ui_focus(isk_ui *ui, const char *id)
         ui->focus = ui->focus_next = 0;
 }
 
+int isk_ui_focused(const isk_ui *ui, const char *id) { return ui && id && ui->focus && ui->focus == ui_id(id); }
+
 ui_state ui_interact(isk_ui *ui, uint32_t id, isk_ui_rect r)
 {
     ui_state st = {0, 0, 0, 0, 0};
     if (ui->disabled)
         return st;
-    const int inside = isk_ui_contains(r, ui->mouse_x, ui->mouse_y);
+    const int inside = isk_ui_hovered(ui, r);
     if (inside) {
         st.hover = 1;
         ui->hot = id;

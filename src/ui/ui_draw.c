@@ -114,10 +114,24 @@ void ui_round_outline(isk_ui *ui, isk_ui_rect r, int rad, int width, isk_color o
 
 /* ---- text ------------------------------------------------------------------------------ */
 
+const isk_font_metrics *ui_font(const isk_ui *ui)
+{
+    const isk_font_metrics *m = isk_font_metrics_of(ui->font);
+    return m ? m : isk_font_metrics_of(ISK_FONT_5X8);
+}
+
 int ui_text_y(const isk_ui *ui, isk_ui_rect r)
 {
-    /* Capitals and digits are 7 font rows tall: centre those. */
-    return r.y + (r.h - 7 * ui->scale) / 2;
+    /* Capitals and digits (7 font rows of the 5x8 font, 10 of the 6x13): centre those. */
+    return r.y + (r.h - ui_font(ui)->cap_h * ui->scale) / 2;
+}
+
+isk_ui_rect isk_ui_text_line(const isk_ui *ui, isk_ui_rect r)
+{
+    if (!ui)
+        return r;
+    const int y = ui_text_y(ui, r);
+    return (isk_ui_rect){r.x, y, r.w, r.y + r.h - y};
 }
 
 int ui_text_x(const isk_ui *ui, isk_ui_rect r, const char *s, isk_ui_align align)
@@ -135,16 +149,17 @@ void ui_text_clip(isk_ui *ui, isk_ui_rect clip, int x, int y, const char *s, isk
     isk_canvas v;
     int ox, oy;
     if (s && *s && view_of(ui, clip, &v, &ox, &oy))
-        isk_draw_text(&v, x - ox, y - oy, s, ui->scale, c, ISK_BLEND_OVER);
+        isk_font_draw_text(&v, ui->font, x - ox, y - oy, s, ui->scale, c, ISK_BLEND_OVER);
 }
 
 void ui_text_scaled(isk_ui *ui, isk_ui_rect r, const char *s, isk_color c, int scale)
 {
     isk_canvas v;
     int ox, oy;
-    int w = isk_text_width(s, scale) - scale;
+    int w = isk_font_text_width(ui->font, s, scale) - scale;
     if (s && *s && view_of(ui, r, &v, &ox, &oy))
-        isk_draw_text(&v, r.x + (r.w - w) / 2 - ox, r.y + (r.h - 7 * scale) / 2 - oy, s, scale, c, ISK_BLEND_OVER);
+        isk_font_draw_text(&v, ui->font, r.x + (r.w - w) / 2 - ox, r.y + (r.h - ui_font(ui)->cap_h * scale) / 2 - oy,
+                           s, scale, c, ISK_BLEND_OVER);
 }
 
 void ui_text_line(isk_ui *ui, isk_ui_rect r, const char *s, isk_color c, isk_ui_align align)
@@ -156,7 +171,7 @@ void ui_text_line(isk_ui *ui, isk_ui_rect r, const char *s, isk_color c, isk_ui_
 static void text_lines(isk_ui *ui, isk_ui_rect r, int y, const char *s, isk_color c, isk_ui_align align)
 {
     char line[256];
-    const int lh = ISK_FONT_CELL_H * ui->scale;
+    const int lh = isk_ui_line_height(ui);
     while (s && *s) {
         size_t n = strcspn(s, "\n");
         size_t k = n < sizeof line ? n : sizeof line - 1;
@@ -252,8 +267,11 @@ void isk_ui_clear(isk_ui *ui)
 
 void isk_ui_panel(isk_ui *ui, isk_ui_rect r)
 {
-    if (ui)
-        ui_round(ui, r, 3 * ui->scale, ui->style.panel);
+    if (!ui)
+        return;
+    ui_round(ui, r, 3 * ui->scale, ui->style.panel);
+    if (ui->npanels < ISK_UI_PANELS_MAX)
+        ui->panels[ui->npanels++] = r; /* where a message about a field inside may go */
 }
 
 void isk_ui_box(isk_ui *ui, isk_ui_rect r)
@@ -267,7 +285,7 @@ void isk_ui_label(isk_ui *ui, isk_ui_rect r, const char *text, isk_ui_align alig
     if (!ui || !text)
         return;
     int lines = count_lines(text);
-    int y = ui_text_y(ui, r) - (lines - 1) * ISK_FONT_CELL_H * ui->scale / 2;
+    int y = ui_text_y(ui, r) - (lines - 1) * isk_ui_line_height(ui) / 2;
     text_lines(ui, r, y, text, ui->disabled ? ui_dim(ui, ui->style.label) : ui->style.label, align);
 }
 
@@ -275,4 +293,82 @@ void isk_ui_text(isk_ui *ui, isk_ui_rect r, const char *text, isk_color color, i
 {
     if (ui && text)
         text_lines(ui, r, r.y, text, ui->disabled ? ui_dim(ui, color) : color, align);
+}
+
+/* Greedy wrapping by characters of the fixed-width font: words move to the
+ * next line when they do not fit, a word longer than a line is cut. */
+int isk_ui_wrap(const isk_ui *ui, const char *text, int width, char *out, size_t out_size)
+{
+    if (!out || out_size == 0)
+        return 0;
+    out[0] = 0;
+    if (!ui || !text || !*text)
+        return 0;
+    const int per_line = width / (ui_font(ui)->cell_w * ui->scale);
+    if (per_line <= 4)
+        return 0;
+    size_t o = 0;
+    int col = 0, lines = 1;
+    for (const char *w = text; *w && o + 2 < out_size;) {
+        if (*w == '\n') {
+            out[o++] = '\n';
+            col = 0;
+            lines++;
+            w++;
+            continue;
+        }
+        size_t len = strcspn(w, " \n");
+        if (col && col + 1 + (int)len > per_line) {
+            out[o++] = '\n';
+            col = 0;
+            lines++;
+        } else if (col) {
+            out[o++] = ' ';
+            col++;
+        }
+        for (size_t i = 0; i < len && o + 2 < out_size; i++, col++) {
+            if (col == per_line) {
+                out[o++] = '\n';
+                col = 0;
+                lines++;
+            }
+            out[o++] = w[i];
+        }
+        w += len;
+        while (*w == ' ')
+            w++;
+    }
+    out[o] = 0;
+    return lines;
+}
+
+int isk_ui_text_wrapped(isk_ui *ui, isk_ui_rect r, const char *text, isk_color color)
+{
+    char lines[1024];
+    if (!ui)
+        return 0;
+    int n = isk_ui_wrap(ui, text, r.w, lines, sizeof lines);
+    if (n > 0)
+        isk_ui_text(ui, r, lines, color, ISK_UI_LEFT);
+    return n * isk_ui_line_height(ui);
+}
+
+void isk_ui_swatches(isk_ui *ui, isk_ui_rect r, const isk_color *colors, int n)
+{
+    if (!ui || !ui->canvas || !colors || n <= 0 || r.w <= 0 || r.h <= 0)
+        return;
+    const int s = ui->scale, sq = 4 * s;
+    ui_fill(ui, r, ui->style.border);
+    isk_ui_rect in = isk_ui_inset(r, s);
+    /* the checkerboard, in squares from the rectangle's corner */
+    for (int y = 0; y < in.h; y += sq)
+        for (int x = 0; x < in.w; x += sq) {
+            isk_ui_rect c = {in.x + x, in.y + y, x + sq > in.w ? in.w - x : sq, y + sq > in.h ? in.h - y : sq};
+            ui_fill(ui, c, ((x / sq + y / sq) & 1) ? isk_rgba(0x99, 0x99, 0x99, 255) : isk_rgba(0x66, 0x66, 0x66, 255));
+        }
+    for (int i = 0; i < n; i++) {
+        int x0 = (int)((long)in.w * i / n), x1 = (int)((long)in.w * (i + 1) / n);
+        if (x1 > x0)
+            isk_fill_rect(ui->canvas, in.x + x0, in.y, x1 - x0, in.h, colors[i], ISK_BLEND_OVER);
+    }
 }

@@ -52,5 +52,14 @@ int ui_text_x(const isk_ui *ui, isk_ui_rect r, const char *s, isk_ui_align align
 /* Top of a line of text vertically centred in r. */
 int ui_text_y(const isk_ui *ui, isk_ui_rect r);
 void ui_icon(isk_ui *ui, isk_ui_rect r, isk_ui_icon icon, isk_color c);
+/* The font's metrics (never NULL: an unknown font counts as 5x8). */
+const isk_font_metrics *ui_font(const isk_ui *ui);
+
+/* The open choice's list (ui_choice.c): at isk_ui_begin, a press on it
+ * picks an option (and no widget under it gets the press), a press
+ * elsewhere or Escape closes it; at isk_ui_end it is drawn over
+ * everything. */
+void ui_popup_input(isk_ui *ui);
+void ui_popup_draw(isk_ui *ui);
 
 #endif

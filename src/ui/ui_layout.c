@@ -7,12 +7,19 @@
 int isk_ui_px(const isk_ui *ui, int units) { return units * (ui ? ui->scale : 1); }
 
 /* Text of one cell's height plus 3 units above and below. */
-int isk_ui_row_height(const isk_ui *ui) { return isk_ui_px(ui, ISK_FONT_CELL_H + 6); }
+int isk_ui_row_height(const isk_ui *ui) { return isk_ui_line_height(ui) + isk_ui_px(ui, 6); }
+
+int isk_ui_line_height(const isk_ui *ui)
+{
+    const isk_font_metrics *m = ui ? isk_font_metrics_of(ui->font) : NULL;
+    return isk_ui_px(ui, m ? m->cell_h : ISK_FONT_CELL_H);
+}
 
 int isk_ui_text_width(const isk_ui *ui, const char *s)
 {
     /* Without the spacing column after the last character. */
-    int w = isk_text_width(s, ui ? ui->scale : 1);
+    int w = ui ? isk_font_text_width(isk_font_metrics_of(ui->font) ? ui->font : ISK_FONT_5X8, s, ui->scale)
+               : isk_text_width(s, 1);
     return w > 0 ? w - (ui ? ui->scale : 1) : 0;
 }
 

@@ -46,14 +46,14 @@ int isk_ui_icon_button(isk_ui *ui, const char *id, isk_ui_rect r, isk_ui_icon ic
     isk_color bg = hover_shade(color, st);
     ui_round(ui, r, 3 * s, ui->disabled ? ui_dim(ui, bg) : bg);
     isk_ui_rect pic = r;
-    const int line = ISK_FONT_CELL_H * s;
+    const int cell_h = ui_font(ui)->cell_h, line = cell_h * s;
     if (label && *label && r.h >= 3 * line) {
         /* The label under the picture, a size smaller when it would not fit. */
         int ts = s;
-        while (ts > 1 && isk_text_width(label, ts) - ts > r.w - 2 * s)
+        while (ts > 1 && isk_font_text_width(ui->font, label, ts) - ts > r.w - 2 * s)
             ts--;
-        isk_ui_rect under = isk_ui_cut_bottom(&pic, ISK_FONT_CELL_H * ts + 2 * s);
-        isk_ui_rect t = isk_ui_cut_top(&under, ISK_FONT_CELL_H * ts);
+        isk_ui_rect under = isk_ui_cut_bottom(&pic, cell_h * ts + 2 * s);
+        isk_ui_rect t = isk_ui_cut_top(&under, cell_h * ts);
         ui_text_scaled(ui, t, label, text_colour(ui, ui->style.icon), ts);
     }
     ui_icon(ui, pic, icon, text_colour(ui, ui->style.icon));
@@ -133,36 +133,109 @@ static double snap(double v, double min, double max, double step)
     return v < min ? min : v > max ? max : v;
 }
 
-int isk_ui_slider(isk_ui *ui, const char *id, isk_ui_rect r, double *value, double min, double max, double step)
+/* Where a value lies along a slider's track (0..1) and back.  Linear, or a
+ * symmetric log: g(v) = sign(v) * log10(1 + |v| / linear), so every decade
+ * above `linear` gets the same length and the track passes through 0. */
+typedef struct track {
+    double min, max, linear; /* linear 0: a linear track */
+} track;
+
+static double symlog(double v, double linear) { return (v < 0 ? -1 : 1) * log10(1 + fabs(v) / linear); }
+
+static double symexp(double g, double linear) { return (g < 0 ? -1 : 1) * linear * (pow(10, fabs(g)) - 1); }
+
+static double track_f(const track *t, double v)
 {
-    if (!ui || !id || !value || !(max > min) || !isfinite(min) || !isfinite(max))
-        return 0;
+    if (t->linear <= 0)
+        return (v - t->min) / (t->max - t->min);
+    double a = symlog(t->min, t->linear), b = symlog(t->max, t->linear);
+    return (symlog(v, t->linear) - a) / (b - a);
+}
+
+static double track_v(const track *t, double f)
+{
+    f = f < 0 ? 0 : f > 1 ? 1 : f;
+    if (t->linear <= 0)
+        return t->min + f * (t->max - t->min);
+    double a = symlog(t->min, t->linear), b = symlog(t->max, t->linear);
+    return symexp(a + f * (b - a), t->linear);
+}
+
+/* v to 3 significant digits (whole when asked), within [min, max]. */
+static double round_3(double v, double min, double max, int whole)
+{
+    if (v != 0 && isfinite(v)) {
+        double p = pow(10, floor(log10(fabs(v))) - 2);
+        v = floor(v / p + 0.5) * p;
+    }
+    if (whole)
+        v = floor(v + 0.5);
+    return v < min ? min : v > max ? max : v;
+}
+
+static int slider(isk_ui *ui, const char *id, isk_ui_rect r, double *value, const track *t, double step, int whole)
+{
     ui_record(ui, id, r);
     ui_state st = ui_interact(ui, ui_id(id), r);
     const int s = ui->scale, knob = 7 * s;
     const double x0 = r.x + knob, x1 = r.x + r.w - knob;
+    const double min = t->min, max = t->max;
     double v = isfinite(*value) ? *value : min;
-    if (st.active && (ui->mouse_down || st.released) && x1 > x0)
-        v = min + (ui->mouse_x - x0) / (x1 - x0) * (max - min);
-    if (st.hover && ui->wheel)
-        v += ui->wheel * (step > 0 ? step : (max - min) / 100.0);
-    v = snap(v, min, max, step);
-    const int changed = v != *value;
-    *value = v;
+    int moved = 0;
+    if (st.active && (ui->mouse_down || st.released) && x1 > x0) {
+        v = t->linear > 0 ? track_v(t, (ui->mouse_x - x0) / (x1 - x0))
+                          : min + (ui->mouse_x - x0) / (x1 - x0) * (max - min);
+        moved = 1;
+    }
+    if (st.hover && ui->wheel) {
+        if (t->linear > 0)
+            v = track_v(t, track_f(t, v) + ui->wheel / 50.0);
+        else
+            v += ui->wheel * (step > 0 ? step : (max - min) / 100.0);
+        moved = 1;
+    }
+    /* Only the user moves the value: one outside the track is shown at its
+     * end, and stays what it is until the knob is moved. */
+    if (moved) {
+        v = t->linear > 0 ? round_3(v, min, max, whole) : snap(v, min, max, step);
+    } else {
+        v = v < min ? min : v > max ? max : v;
+    }
+    const int changed = moved && v != *value;
+    if (moved)
+        *value = v;
 
-    const double f = (v - min) / (max - min);
+    const double f = t->linear > 0 ? track_f(t, v) : (v - min) / (max - min);
     const double kx = x0 + f * (x1 - x0), cy = r.y + r.h / 2.0;
-    isk_ui_rect track = {(int)x0, (int)lround(cy) - 2 * s, (int)(x1 - x0), 4 * s};
-    isk_ui_rect left = track, right = track;
-    left.w = (int)lround(kx) - track.x;
-    right.x = track.x + left.w;
-    right.w = track.w - left.w;
+    isk_ui_rect bar = {(int)x0, (int)lround(cy) - 2 * s, (int)(x1 - x0), 4 * s};
+    isk_ui_rect left = bar, right = bar;
+    left.w = (int)lround(kx) - bar.x;
+    right.x = bar.x + left.w;
+    right.w = bar.w - left.w;
     ui_round(ui, left, 2 * s, ui->disabled ? ui_dim(ui, ui->style.accent) : ui->style.accent);
     ui_round(ui, right, 2 * s, ui->disabled ? ui_dim(ui, ui->style.track) : ui->style.track);
     isk_color k = hover_shade(ui->style.knob, st);
     ui_disc(ui, kx, cy, knob, text_colour(ui, ui->style.track));
     ui_disc(ui, kx, cy, knob - 1.5 * s, ui->disabled ? ui_dim(ui, k) : k);
     return changed;
+}
+
+int isk_ui_slider(isk_ui *ui, const char *id, isk_ui_rect r, double *value, double min, double max, double step)
+{
+    if (!ui || !id || !value || !(max > min) || !isfinite(min) || !isfinite(max))
+        return 0;
+    track t = {min, max, 0};
+    return slider(ui, id, r, value, &t, step, 0);
+}
+
+int isk_ui_slider_log(isk_ui *ui, const char *id, isk_ui_rect r, double *value, double min, double max, double linear,
+                      int whole)
+{
+    if (!ui || !id || !value || !(max > min) || !isfinite(min) || !isfinite(max) || !(linear > 0) ||
+        !isfinite(linear))
+        return 0;
+    track t = {min, max, linear};
+    return slider(ui, id, r, value, &t, 0, whole);
 }
 
 int isk_ui_radio(isk_ui *ui, const char *id, isk_ui_rect r, const char *const *labels, int n, int per_row,
@@ -211,6 +284,24 @@ int isk_ui_radio(isk_ui *ui, const char *id, isk_ui_rect r, const char *const *l
     return changed;
 }
 
+/* A scroll bar in `bar` for n rows of which `visible` show from *scroll
+ * (clamped here); while `held` over the bar, *scroll follows the pointer. */
+static void scroll_bar(isk_ui *ui, isk_ui_rect bar, int *scroll, int n, int visible, int held)
+{
+    const int s = ui->scale, max_scroll = n - visible;
+    if (*scroll > max_scroll)
+        *scroll = max_scroll;
+    if (*scroll < 0)
+        *scroll = 0;
+    ui_fill(ui, bar, ui->style.box);
+    int th = bar.h * visible / n, ty = bar.y + (bar.h - th) * *scroll / max_scroll;
+    ui_round(ui, (isk_ui_rect){bar.x + s, ty, bar.w - 2 * s, th}, 2 * s, ui->style.bar_on);
+    if (held && isk_ui_contains(bar, ui->mouse_x, ui->mouse_y))
+        *scroll = (int)((long)(ui->mouse_y - bar.y) * (max_scroll + 1) / (bar.h > 0 ? bar.h : 1));
+    if (*scroll > max_scroll)
+        *scroll = max_scroll;
+}
+
 int isk_ui_list(isk_ui *ui, const char *id, isk_ui_rect r, const char *const *rows, int n, int *selected,
                 int *scroll)
 {
@@ -221,25 +312,16 @@ int isk_ui_list(isk_ui *ui, const char *id, isk_ui_rect r, const char *const *ro
     ui_round_outline(ui, r, 2 * s, s, ui->style.border, ui->style.field);
     isk_ui_rect in = isk_ui_inset(r, s);
     const int visible = in.h / rh > 0 ? in.h / rh : 1;
-    const int max_scroll = n > visible ? n - visible : 0;
     ui_state whole = ui_interact(ui, ui_id(id), r);
     if (whole.hover && ui->wheel)
         *scroll -= ui->wheel;
-    if (*scroll > max_scroll)
-        *scroll = max_scroll;
-    if (*scroll < 0)
-        *scroll = 0;
     isk_ui_rect body = in;
-    if (max_scroll > 0) {
+    if (n > visible) {
         /* The scroll bar: a click on it moves the view there. */
         isk_ui_rect bar = isk_ui_cut_right(&body, 8 * s);
-        ui_fill(ui, bar, ui->style.box);
-        int th = bar.h * visible / n, ty = bar.y + (bar.h - th) * *scroll / max_scroll;
-        ui_round(ui, (isk_ui_rect){bar.x + s, ty, bar.w - 2 * s, th}, 2 * s, ui->style.bar_on);
-        if (whole.active && (ui->mouse_down || whole.released) && isk_ui_contains(bar, ui->mouse_x, ui->mouse_y))
-            *scroll = (int)((long)(ui->mouse_y - bar.y) * (max_scroll + 1) / (bar.h > 0 ? bar.h : 1));
-        if (*scroll > max_scroll)
-            *scroll = max_scroll;
+        scroll_bar(ui, bar, scroll, n, visible, whole.active && (ui->mouse_down || whole.released));
+    } else {
+        *scroll = 0;
     }
     int changed = 0;
     for (int i = *scroll; i < n && i < *scroll + visible; i++) {
@@ -247,7 +329,7 @@ int isk_ui_list(isk_ui *ui, const char *id, isk_ui_rect r, const char *const *ro
         char name[ISK_UI_ID_MAX];
         ui_sub_name(name, sizeof name, id, NULL, i);
         ui_record(ui, name, row);
-        int over = !ui->disabled && isk_ui_contains(row, ui->mouse_x, ui->mouse_y);
+        int over = !ui->disabled && isk_ui_hovered(ui, row);
         if (whole.clicked && over && *selected != i) {
             *selected = i;
             changed = 1;
@@ -261,6 +343,39 @@ int isk_ui_list(isk_ui *ui, const char *id, isk_ui_rect r, const char *const *ro
         ui_text_line(ui, t, rows[i], text_colour(ui, ui->style.text), ISK_UI_LEFT);
     }
     return changed;
+}
+
+int isk_ui_scrollbar(isk_ui *ui, const char *id, isk_ui_rect r, int *first, int total, int visible)
+{
+    if (!ui || !id || !first)
+        return 0;
+    ui_record(ui, id, r);
+    ui_state st = ui_interact(ui, ui_id(id), r);
+    const int before = *first;
+    if (total <= visible || visible < 1) {
+        *first = 0;
+        return before != 0;
+    }
+    scroll_bar(ui, r, first, total, visible, st.active && (ui->mouse_down || st.released));
+    return *first != before;
+}
+
+int isk_ui_selectable(isk_ui *ui, const char *id, isk_ui_rect r, const char *label, int selected)
+{
+    if (!ui || !id)
+        return 0;
+    ui_record(ui, id, r);
+    ui_state st = ui_interact(ui, ui_id(id), r);
+    const int s = ui->scale;
+    if (selected)
+        ui_fill(ui, r, ui->disabled ? ui_dim(ui, ui->style.accent) : ui->style.accent);
+    else if (st.hover)
+        ui_fill(ui, r, ui_shade(ui->style.field, 16));
+    isk_ui_rect t = r;
+    isk_ui_cut_left(&t, 4 * s);
+    if (label)
+        ui_text_line(ui, t, label, text_colour(ui, ui->style.text), ISK_UI_LEFT);
+    return st.clicked;
 }
 
 isk_ui_area_state isk_ui_area(isk_ui *ui, const char *id, isk_ui_rect r)

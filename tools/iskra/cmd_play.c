@@ -1,14 +1,18 @@
 /* SPDX-License-Identifier: MIT */
 /* iskra play SCENE — the scene in an SDL2 window: the thesis's simulator.
  *
- * The canvas sits at the window's top-left with the thesis's console
- * beside and below it (play_panel.c: play, pause, stop, reset, reload,
- * step; the speed slider; precision, particles, explosion count, gravity,
- * drag; the walls; click modes; the potentials; the layer), live charts of
- * the energy and the particle count, and the integrators with what they
- * cost.  Every control edits the running effect through the key table
- * (isk_effect_set), so what it accepts and what it says are the scene
- * format's.  Tab hides the panel for a full-canvas demo.
+ * The canvas sits at the window's top-left.  The explosion thesis's scenes
+ * (a layer or potentials) get the thesis's console beside and below it
+ * (play_panel.c: play, pause, stop, reset, reload, step; the speed slider;
+ * precision, particles, explosion count, gravity, drag; the walls; click
+ * modes; the potentials; the layer), live charts of the energy and the
+ * particle count, and the integrators with what they cost; every other
+ * scene gets the inspector (play_inspector.c): each section's live keys,
+ * each as the widget its row calls for.  Every control edits the running
+ * effect through the key table (isk_effect_set), so what it accepts and
+ * what it says are the scene format's.  The layout fits the screen with
+ * text at least 10 px tall (play_layout.c).  Tab hides the panel for a
+ * full-canvas demo.
  *
  * Time: a fixed simulation step (the scene's dt, divided by the speed
  * slider's f) driven by the display's clock through an accumulator
@@ -32,13 +36,18 @@
 
 static void help(FILE *f)
 {
-    fprintf(f, "usage: iskra play SCENE [--frames N] [--fixed-clock] [--script EVENTS] [--ui-scale N]\n"
-               "                  [--no-panel] [--save PATH] [--follow EMITTER] [--seed N] [--size WxH] [--dt S]\n"
-               "                  [--substeps N]\n"
-               "  Runs the scene in a window with the thesis's simulator console beside it: every\n"
-               "  control changes the running scene (iskra keys lists what each accepts).\n"
+    fprintf(f, "usage: iskra play SCENE [--frames N] [--fixed-clock] [--script EVENTS] [--list-widgets]\n"
+               "                  [--ui-scale N] [--screen WxH] [--panel console|inspector] [--no-panel]\n"
+               "                  [--save PATH] [--shots DIR] [--follow EMITTER] [--seed N] [--size WxH]\n"
+               "                  [--dt S] [--substeps N] [--threads N] [--max-memory B]\n"
+               "  Runs the scene in a window with a panel beside it: the thesis's simulator console\n"
+               "  for the explosion thesis's scenes, the inspector (every section's live keys) for\n"
+               "  the others.  Every control changes the running scene (iskra keys lists what each\n"
+               "  key accepts).\n"
                "  mouse: a click on the canvas sets off the chosen explosion or adds a potential;\n"
                "        a potential's disc is picked and dragged\n"
+               "  fields: a click selects the value, so what is typed replaces it; Ctrl+A and a double\n"
+               "        click select all; Return, Tab or a click elsewhere apply, Esc goes back\n"
                "  keys (each button's is written on it; F2 saves to iskra-SCENE.ini or --save,\n"
                "  F12 / F11 write iskra-SCENE-FRAME.png / -window.png):\n");
     play_keys_help(f);
@@ -46,8 +55,13 @@ static void help(FILE *f)
                "  --frames N       quit after N shown frames (for scripts and tests)\n"
                "  --fixed-clock    every shown frame is one step of the scene's dt, as fast as the\n"
                "                   machine can: the same --script gives the same pixels (tests)\n"
-               "  --ui-scale N     size of the panel, 1..4 (default: the largest that fits the screen)\n"
+               "  --ui-scale N     size of the panel, 1..4 (default: the largest that fits the screen,\n"
+               "                   with text at least 10 px tall from 1280x720 up)\n"
+               "  --screen WxH     lay the window out for a screen of this size (default: the display's)\n"
+               "  --panel KIND     console or inspector (default: console for scenes with a layer or\n"
+               "                   potentials, inspector for the others)\n"
                "  --no-panel       start with the panel hidden (Tab shows it)\n"
+               "  --list-widgets   print the name of every widget (for press:NAME) and exit; no window\n"
                "  --follow EMITTER the stream emitter goes where the mouse is over the canvas; the\n"
                "                   births of each step spread along its way (no gaps)\n"
                "  --save PATH      where F2 writes the scene (default iskra-SCENE.ini)\n"
@@ -123,23 +137,42 @@ static int frame(void *user, isk_canvas *canvas, double dt_seconds, const isk_ev
     return play_script_run(p) != 0 || p->failed;
 }
 
-/* The widget scale: given, or the largest at which the window fits the screen. */
-static int choose_scale(player *p, int asked)
+/* "WxH" into *w, *h (each 320..16384); 0 and a message when it is not. */
+static int parse_screen(const char *v, int *w, int *h)
 {
-    if (asked)
-        return asked;
-    const isk_effect_def *d = isk_effect_definition(p->fx);
-    int sw, sh, w1, h1;
-    play_layout_size(d->width, d->height, 1, 1, &w1, &h1);
-    if (!p->win || isk_window_display_size(p->win, &sw, &sh) != ISK_OK)
+    int used = 0;
+    if (sscanf(v, "%dx%d%n", w, h, &used) == 2 && !v[used] && *w >= 320 && *h >= 200 && *w <= 16384 && *h <= 16384)
         return 1;
-    for (int s = 4; s > 1; s--) {
-        int w, h;
-        play_layout_size(d->width, d->height, s, 1, &w, &h);
-        if (w <= sw && h <= sh)
-            return s;
+    fprintf(stderr, "iskra play: --screen: expected WIDTHxHEIGHT, e.g. 1280x720 (320x200 and up), got \"%s\"\n", v);
+    return 0;
+}
+
+static void print_name(void *user, const char *name)
+{
+    (void)user;
+    printf("%s\n", name);
+}
+
+/* --list-widgets: one frame of the panel drawn off screen, then every name. */
+static int list_widgets(player *p)
+{
+    const isk_effect_def *d = isk_effect_definition(p->fx);
+    isk_canvas shown;
+    play_layout_compute(p);
+    if (isk_canvas_init(&shown, p->lay.window.w, p->lay.window.h) != ISK_OK) {
+        fprintf(stderr, "iskra play: out of memory\n");
+        return 1;
     }
-    return 1;
+    (void)d;
+    p->shown = &shown;
+    play_begin_scene(p);
+    isk_ui_begin(&p->ui, p->shown);
+    play_panel(p);
+    play_canvas(p);
+    isk_ui_end(&p->ui);
+    play_widget_names(p, print_name, NULL);
+    isk_canvas_free(&shown);
+    return 0;
 }
 
 int cmd_play(int argc, char **argv)
@@ -148,8 +181,9 @@ int cmd_play(int argc, char **argv)
     memset(&p, 0, sizeof p);
     p.args.cmd = "play";
     long max_frames = 0, ui_scale = 0;
-    const char *script = NULL;
-    int no_panel = 0, rc;
+    const char *script = NULL, *panel_kind = NULL;
+    int no_panel = 0, rc, list = 0, screen_given = 0;
+    p.insp.section = -1; /* none yet: the first emitter once the scene is loaded */
     for (int i = 1; i < argc; i++) {
         const char *v;
         int r;
@@ -161,6 +195,20 @@ int cmd_play(int argc, char **argv)
             p.fixed_clock = 1;
         } else if (!strcmp(argv[i], "--no-panel")) {
             no_panel = 1;
+        } else if (!strcmp(argv[i], "--list-widgets")) {
+            list = 1;
+        } else if ((r = arg_value("play", argc, argv, &i, "--screen", &v)) != 0) {
+            if (r < 0 || !parse_screen(v, &p.screen_w, &p.screen_h))
+                return 2;
+            screen_given = 1;
+        } else if ((r = arg_value("play", argc, argv, &i, "--panel", &v)) != 0) {
+            if (r < 0)
+                return 2;
+            if (strcmp(v, "console") && strcmp(v, "inspector")) {
+                fprintf(stderr, "iskra play: --panel: expected console or inspector, got \"%s\"\n", v);
+                return 2;
+            }
+            panel_kind = v;
         } else if ((r = arg_value("play", argc, argv, &i, "--frames", &v)) != 0) {
             if (r < 0 || !arg_long("play", "--frames", v, 1, 1000000000, &max_frames))
                 return 2;
@@ -232,6 +280,8 @@ int cmd_play(int argc, char **argv)
     p.panel = !no_panel;
     p.hud = 1;
     const isk_effect_def *d = isk_effect_definition(p.fx);
+    p.panel_kind = panel_kind ? (!strcmp(panel_kind, "console") ? PLAY_PANEL_CONSOLE : PLAY_PANEL_INSPECTOR)
+                              : play_panel_for(d);
     isk_canvas shown = {0};
     isk_error err;
     rc = 1;
@@ -239,11 +289,20 @@ int cmd_play(int argc, char **argv)
         fprintf(stderr, "iskra play: cannot draw the scene (out of memory?)\n");
         goto out;
     }
+    isk_ui_init(&p.ui, 1);
+    if (list) {
+        if (!screen_given) { /* the layout does not change the names; a classroom's screen */
+            p.screen_w = 1366;
+            p.screen_h = 768;
+        }
+        p.panel = 1;
+        play_choose_layout(&p, (int)ui_scale);
+        rc = list_widgets(&p);
+        goto out;
+    }
     char title[128];
     snprintf(title, sizeof title, "iskra: %s", p.name);
-    int w, h;
-    play_layout_size(d->width, d->height, ui_scale ? (int)ui_scale : 1, p.panel, &w, &h);
-    if (isk_window_open(&p.win, title, w, h, &err) != ISK_OK) {
+    if (isk_window_open(&p.win, title, d->width, d->height, &err) != ISK_OK) {
         fprintf(stderr, "iskra play: cannot open a window: %s\n", err.message);
         goto out;
     }
@@ -252,14 +311,27 @@ int cmd_play(int argc, char **argv)
             p.shots ? p.shots : getcwd(cwd, sizeof cwd) ? cwd : "the current directory");
     isk_window_set_escape_quits(p.win, 0); /* Escape cancels an edit; outside a field it quits */
     isk_window_set_pacing(p.win, !p.fixed_clock); /* a fixed clock runs as fast as it can */
-    isk_ui_init(&p.ui, choose_scale(&p, (int)ui_scale));
-    play_layout_size(d->width, d->height, p.ui.scale, p.panel, &w, &h);
+    if (!screen_given && isk_window_display_size(p.win, &p.screen_w, &p.screen_h) != ISK_OK) {
+        p.screen_w = 1280; /* SDL cannot tell: the smallest screen a classroom has */
+        p.screen_h = 720;
+    }
+    play_choose_layout(&p, (int)ui_scale);
+    play_layout_compute(&p);
+    const int w = p.lay.window.w, h = p.lay.window.h;
     if (isk_canvas_init(&shown, w, h) != ISK_OK || isk_window_resize_canvas(p.win, w, h, &err) != ISK_OK) {
         fprintf(stderr, "iskra play: cannot size the window: %s\n", err.message);
         goto out;
     }
     p.shown = &shown;
-    play_layout_compute(&p, w, h);
+    {
+        const isk_font_metrics *fm = isk_font_metrics_of(p.ui.font);
+        fprintf(stderr, "iskra play: a %dx%d window for a %dx%d screen: the %s, text %d px tall\n", w, h, p.screen_w,
+                p.screen_h,
+                p.panel_kind == PLAY_PANEL_INSPECTOR ? "inspector"
+                : p.arrangement == PLAY_COMPACT      ? "console in columns"
+                                                     : "console",
+                fm->cap_h * p.ui.scale);
+    }
     play_begin_scene(&p);
     if (isk_window_run(p.win, &shown, frame, &p, max_frames, &err) != ISK_OK)
         fprintf(stderr, "iskra play: window: %s\n", err.message);

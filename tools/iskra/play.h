@@ -4,12 +4,20 @@
  * play_*.c files each do one part of a frame.
  *
  *   cmd_play.c      options, the window, the frame callback gluing the parts
+ *   play_layout.c   where the parts sit, for the screen the window must fit
  *   play_actions.c  the buttons and their shortcuts (one table: play, pause,
  *                   stop, reset, reload, step, save, screenshots, panel)
  *   play_panel.c    the thesis's console, control for control: a view of the
- *                   key table, every edit through isk_effect_set
+ *                   key table, every edit through isk_effect_set (the
+ *                   explosion scenes' panel)
+ *   play_inspector.c the inspector (every other scene's panel): every
+ *                   section of the running scene with its live keys
+ *   play_key_widget.c one key as the widget its row calls for (slider,
+ *                   colour, choice, toggle, text field)
  *   play_fields.c   what a field shows and how a typed value is applied (the
  *                   table's messages, the thesis's replacement values)
+ *   play_names.c    the widgets' names: --list-widgets, suggestions for a
+ *                   name a script got wrong, bringing a widget into view
  *   play_charts.c   energy and particle count over time, the integrator
  *                   table with measured cost and energy drift
  *   play_energy.c   kinetic, gravitational and potential energy of the state
@@ -30,6 +38,7 @@
 #include <stdio.h>
 
 #include "iskra/effect.h"
+#include "iskra/keys.h"
 #include "iskra/sdl.h"
 #include "iskra/timestep.h"
 #include "iskra/ui.h"
@@ -42,12 +51,30 @@
 /* What a click on the canvas does besides the scene's explosions. */
 enum { PLAY_CLICK_ADD_POTENTIAL = ISK_EXPLOSION_COUNT, PLAY_CLICK_NONE, PLAY_CLICK_MODES };
 
+/* Which panel shows beside the canvas. */
+typedef enum play_panel_kind {
+    PLAY_PANEL_CONSOLE = 0,    /* the thesis's console: scenes with a layer or potentials */
+    PLAY_PANEL_INSPECTOR       /* every section's live keys: the other scenes */
+} play_panel_kind;
+
+/* How the console is arranged. */
+typedef enum play_arrangement {
+    PLAY_WIDE = 0,             /* the thesis page's: console and side beside the canvas, the rest below */
+    PLAY_COMPACT               /* three columns beside the canvas (screens of 1280x720 and 1366x768) */
+} play_arrangement;
+
 typedef struct play_layout {
     isk_ui_rect window;        /* the whole window (0, 0, w, h) */
-    isk_ui_rect canvas;        /* the scene's canvas, at the top-left */
+    isk_ui_rect canvas;        /* the scene's canvas, at the top-left, shown 1:1 */
+    /* the console, wide */
     isk_ui_rect console;       /* buttons, speed, fields, walls: beside the canvas */
     isk_ui_rect side;          /* charts, integrators, keys: beside the console */
     isk_ui_rect bottom;        /* click modes, potentials, layer: below */
+    /* the console, compact */
+    isk_ui_rect column[3];     /* console and click modes; potentials and layer; charts, integrators, files */
+    /* the inspector */
+    isk_ui_rect inspector;     /* beside the canvas */
+    isk_ui_rect under;         /* below the canvas: messages and the charts (may be empty) */
 } play_layout;
 
 typedef struct play_integrator_stats {
@@ -66,6 +93,7 @@ typedef struct play_script {
     char *tokens[PLAY_SCRIPT_MAX];
     int n, next;
     long wait_until;           /* frames_shown before which nothing more is played */
+    int revealing;             /* 1: the next token's widget was asked into view (play_inspector_reveal) */
     char *text;                /* the owned copy the tokens point into */
 } play_script;
 
@@ -77,6 +105,30 @@ typedef struct play_chart_points {
 
 /* Sizes of the window's parts (play_layout.c, play_panel.c), in units of the widget scale. */
 enum { CONSOLE_W = 190, SIDE_W = 230, BOTTOM_H = 150, CONSOLE_MIN_H = 300, MARGIN = 6, GAP = 4, LABEL_W = 86 };
+/* The compact console and the inspector (units at the 6x13 font): panel widths, the least height. */
+enum { COMPACT_MIN_W = 600, COMPACT_MAX_W = 720, COMPACT_H = 600, INSPECTOR_MIN_W = 360, INSPECTOR_MAX_W = 520,
+       INSPECTOR_MIN_H = 480, INSPECTOR_MAX_H = 720 };
+/* What a window must leave of a screen: a title bar's height, and a little at the sides. */
+enum { SCREEN_TITLE_H = 48, SCREEN_SIDE_W = 16 };
+
+/* One section of the running scene, as the inspector addresses it. */
+typedef struct play_item {
+    isk_section_kind section;
+    int index;                 /* the item of that section (0 for the unnamed ones) */
+    int kind;                  /* its kind (isk_key_item_kind), -1 for sections without */
+    char name[ISK_NAME_MAX + 16];  /* "emitter flame", "scene": isk_effect_set's section */
+    char token[ISK_NAME_MAX + 16]; /* "emitter-flame", "scene": its widgets' names start so */
+} play_item;
+
+/* The inspector's state (play_inspector.c). */
+typedef struct play_inspector {
+    int section;               /* the selected section: an isk_section_kind */
+    int item;                  /* and its item (index into the definition's forces, emitters, ...) */
+    int sections_scroll;       /* the first row shown of the list of sections */
+    int keys_scroll;           /* the first key shown of the selected section */
+    char filter[48];           /* only keys whose name holds this (empty: all) */
+    char reveal[ISK_UI_ID_MAX];/* a widget to bring into view in the next frame (scripts), or "" */
+} play_inspector_state;
 
 typedef struct player {
     /* the scene */
@@ -94,6 +146,9 @@ typedef struct player {
     isk_canvas *shown;         /* the window's canvas */
     isk_ui ui;
     play_layout lay;
+    play_panel_kind panel_kind;
+    play_arrangement arrangement;
+    int screen_w, screen_h;    /* the screen the window must fit (--screen, or the display's) */
     int panel, hud;            /* 1: shown */
     int panel_toggle;          /* hide/show the panel at the end of this frame */
     int shot_pending;          /* 1: canvas, 2: window screenshot at the end of this frame */
@@ -115,7 +170,9 @@ typedef struct player {
     int dragging;              /* 1 while a potential follows the pointer */
     int count_refused;         /* thesis: an explosion count that is not 1..limit makes clicks do nothing */
     char precision_text[64];   /* thesis: the precision as typed ("2.5"), "" when it is the substeps */
-    char status[240];          /* the last message of an action, under the console */
+    char status[600];          /* the last message of an action, under the console */
+    char reload_error[600];    /* "FILE:LINE: message" while the file does not load; "" when it does */
+    play_inspector_state insp;
     /* charts */
     play_history hist;
     isk_canvas chart_cache;    /* the charts, drawn again every few frames */
@@ -168,16 +225,65 @@ void play_say(player *p, const char *fmt, ...)
 #endif
     ;
 
+/* play_layout.c */
+/* The panel a scene gets: the console for scenes with a layer emitter or a
+ * potential (the explosion thesis's simulator scenes), the inspector for
+ * the others. */
+play_panel_kind play_panel_for(const isk_effect_def *d);
+/* Chooses the widget scale, the font and the console's arrangement for the
+ * screen (p->screen_w x p->screen_h) and the scene: `asked` > 0 is
+ * --ui-scale.  Text is at least 10 px tall unless the scale was asked for
+ * or the screen is smaller than 1280x720. */
+void play_choose_layout(player *p, int asked);
+/* Where everything sits for a canvas of cw x ch with the panel shown or
+ * not (from p's scale, panel kind, arrangement and screen). */
+void play_layout_plan(const player *p, int cw, int ch, int panel, play_layout *out);
+/* The same into p->lay, for the scene's canvas and p->panel. */
+void play_layout_compute(player *p);
+
 /* play_panel.c */
-/* The window's size for the scene and the panel (scale from p->ui.scale). */
-void play_layout_compute(player *p, int width, int height);
-void play_layout_size(int canvas_w, int canvas_h, int scale, int panel, int *w, int *h);
 void play_panel(player *p);
+/* The six buttons (play ... step) and the speed slider, cut off the top of *a. */
+void play_transport(player *p, isk_ui_rect *a);
+/* Save, screenshots, panel; the last message, whole; the keys without a
+ * button when they fit, in a. */
+void play_extras(player *p, isk_ui_rect a);
+/* Save, screenshots, panel as two rows of two buttons in r. */
+void play_file_buttons(player *p, isk_ui_rect r);
 /* Chooses a click mode (an isk_explosion, PLAY_CLICK_ADD_POTENTIAL or _NONE). */
 void play_set_click_mode(player *p, int mode);
 /* The canvas as a widget: clicks explode / add potentials, potentials are
  * picked and dragged. */
 void play_canvas(player *p);
+
+/* play_inspector.c */
+void play_inspector(player *p);
+/* The inspector's state for a freshly loaded scene (the first emitter selected). */
+void play_inspector_begin(player *p);
+/* Calls `name` for every widget name the inspector can show (every
+ * section and every live key, drawn or scrolled out of view). */
+void play_inspector_names(const player *p, void (*name)(void *user, const char *name), void *user);
+/* Brings widget `name` into view at the end of the next frame (selects its
+ * section, clears the filter, scrolls to it), so it shows from the frame
+ * after; 1 when the inspector has it. */
+int play_inspector_reveal(player *p, const char *name);
+
+/* play_key_widget.c */
+/* Key k of `it` as the widget its row calls for, in r (one row; a colour
+ * ramp also uses `second`, the row under it); named `id` (a slider's
+ * field: `id`, its track: `id`/slider).  Edits go through isk_effect_set;
+ * a refused value keeps the field open with the table's message. */
+void play_key_widget(player *p, const char *id, isk_ui_rect r, isk_ui_rect second, const play_item *it,
+                     const isk_key *k);
+/* The rows key k takes in the inspector (2 for a colour ramp, else 1). */
+int play_key_widget_rows(const isk_key *k);
+
+/* play_names.c */
+/* Every widget name of the window now: the last frame's, then the
+ * inspector's not drawn; each once, into `name`. */
+void play_widget_names(const player *p, void (*name)(void *user, const char *name), void *user);
+/* " (did you mean 'a', 'b'?)" for a name no widget has, or "". */
+void play_suggest_widget(const player *p, const char *wrong, char *out, size_t n);
 
 /* play_fields.c */
 /* The section of the first force of `kind` ("force gravity"), or NULL. */
@@ -208,12 +314,14 @@ play_energy play_energy_of(const isk_effect *fx);
 /* play_charts.c */
 void play_charts_sample(player *p, double step_seconds, long steps);
 void play_charts_reset(player *p);
-void play_charts_draw(player *p, isk_ui_rect r);
+/* The energy chart over the particle count's (side by side: beside it). */
+void play_charts_draw(player *p, isk_ui_rect r, int side_by_side);
 /* The integrator table (a radio group with cost and drift beside). */
 void play_integrators(player *p, isk_ui_rect r);
 
 /* play_hud.c */
 void play_hud_draw(player *p);
+
 /* Counts a frame's real time and what the accumulator dropped of it. */
 void play_pace(player *p, double real_seconds, double dropped_seconds);
 /* The effective speed 1/f and whether real time is kept, as text. */

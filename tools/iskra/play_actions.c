@@ -63,9 +63,10 @@ static void substeps_by(player *p, int delta)
 
 void play_toggle_panel(player *p)
 {
-    int w, h;
     const isk_effect_def *d = isk_effect_definition(p->fx);
-    play_layout_size(d->width, d->height, p->ui.scale, !p->panel, &w, &h);
+    play_layout l;
+    play_layout_plan(p, d->width, d->height, !p->panel, &l);
+    const int w = l.window.w, h = l.window.h;
     isk_canvas c;
     isk_error err;
     if (isk_canvas_init(&c, w, h) != ISK_OK) {
@@ -81,7 +82,7 @@ void play_toggle_panel(player *p)
     *p->shown = c;
     p->panel = !p->panel;
     p->chart_drawn_n = -1; /* not drawn while hidden */
-    play_layout_compute(p, w, h);
+    p->lay = l;
 }
 
 void play_do(player *p, play_action a)
@@ -155,8 +156,11 @@ void play_shortcuts(player *p)
     }
 }
 
-/* The click mode: one of the [click] key's explosions, or the console's
- * own "add potential" and "none". */
+/* The click mode: one of the [click] key's explosions (the scene's
+ * [click] then explodes them), "none" (its clicks are off: enabled =
+ * false), or the console's own "add potential", which is the console's
+ * state, not the scene's: the scene's [click] stays as it was, so a save
+ * in that mode reloads to the scene it was. */
 void play_set_click_mode(player *p, int mode)
 {
     if (mode < 0 || mode >= PLAY_CLICK_MODES)
@@ -164,7 +168,7 @@ void play_set_click_mode(player *p, int mode)
     if (mode < ISK_EXPLOSION_COUNT) {
         if (play_set(p, "click", "explosion", isk_explosion_names[mode]) || play_set(p, "click", "enabled", "true"))
             return;
-    } else if (play_set(p, "click", "enabled", "false")) {
+    } else if (mode == PLAY_CLICK_NONE && play_set(p, "click", "enabled", "false")) {
         return;
     }
     p->click_mode = mode;

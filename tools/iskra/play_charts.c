@@ -128,13 +128,14 @@ static void chart_into(player *p, isk_canvas *c, isk_ui_rect r, const isk_chart 
     isk_ui tmp;
     isk_ui_init(&tmp, p->ui.scale);
     tmp.style = p->ui.style;
+    tmp.font = p->ui.font;
     isk_ui_begin(&tmp, c);
     isk_ui_box(&tmp, r);
     isk_ui_label(&tmp, r, empty, ISK_UI_CENTER);
     isk_ui_end(&tmp);
 }
 
-static void render_charts(player *p, isk_canvas *c)
+static void render_charts(player *p, isk_canvas *c, int side_by_side)
 {
     play_chart_points *t = &p->chart_points;
     thin(&p->hist, t);
@@ -142,8 +143,11 @@ static void render_charts(player *p, isk_canvas *c)
     isk_ui_rect r = {0, 0, c->width, c->height};
     /* halves: with the eight integrators' table below, a 5/8 split left the
      * particle chart under the 120 px a chart needs */
-    isk_ui_rect top = isk_ui_cut_top(&r, r.h / 2);
-    isk_ui_cut_top(&r, isk_ui_px(&p->ui, 4));
+    isk_ui_rect top = side_by_side ? isk_ui_cut_left(&r, r.w / 2) : isk_ui_cut_top(&r, r.h / 2);
+    if (side_by_side)
+        isk_ui_cut_left(&r, isk_ui_px(&p->ui, 4));
+    else
+        isk_ui_cut_top(&r, isk_ui_px(&p->ui, 4));
     isk_chart ch;
     chart_look(&ch, p);
     static const isk_color colours[3] = {{0x56, 0xb4, 0xe9, 255}, {0xe6, 0x9f, 0x00, 255}, {0xf0, 0xf0, 0xf0, 255}};
@@ -168,7 +172,7 @@ static void render_charts(player *p, isk_canvas *c)
     chart_into(p, c, r, &ch, "particles: when it runs");
 }
 
-void play_charts_draw(player *p, isk_ui_rect r)
+void play_charts_draw(player *p, isk_ui_rect r, int side_by_side)
 {
     isk_canvas *cache = &p->chart_cache;
     if (r.w <= 0 || r.h <= 0 || !p->shown || r.x + r.w > p->shown->width || r.y + r.h > p->shown->height)
@@ -185,7 +189,7 @@ void play_charts_draw(player *p, isk_ui_rect r)
     const int n = p->hist.n;
     if (p->chart_drawn_n < 0 || n < p->chart_drawn_n ||
         (n != p->chart_drawn_n && (p->frames_shown % 30 == 0 || n < 30))) {
-        render_charts(p, cache);
+        render_charts(p, cache, side_by_side);
         p->chart_drawn_n = n;
     }
     for (int y = 0; y < r.h; y++)

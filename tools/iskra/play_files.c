@@ -1,8 +1,10 @@
 /* SPDX-License-Identifier: MIT */
 /* The simulator's files: reload (the button, F5, and by itself when the
- * scene file changes, so a scene can be edited in any editor and watched),
- * save (the parameters as they are now, as a scene file that reproduces
- * them: isk_scene_save), screenshots of the canvas or of the whole window. */
+ * scene file changes, so a scene can be edited in any editor and watched;
+ * a file that does not load leaves the last good scene running and its
+ * "FILE:LINE: message" in the window until it loads), save (the parameters
+ * as they are now, as a scene file that reproduces them: isk_scene_save),
+ * screenshots of the canvas or of the whole window. */
 #include <stdio.h>
 #include <string.h>
 #include <sys/stat.h>
@@ -41,8 +43,9 @@ static int resize_for(player *p, int width, int height)
     isk_canvas sim;
     if (isk_canvas_init(&sim, width, height) != ISK_OK)
         return -1;
-    int w, h;
-    play_layout_size(width, height, p->ui.scale, p->panel, &w, &h);
+    play_layout l;
+    play_layout_plan(p, width, height, p->panel, &l);
+    const int w = l.window.w, h = l.window.h;
     isk_canvas shown;
     if (isk_canvas_init(&shown, w, h) != ISK_OK) {
         isk_canvas_free(&sim);
@@ -68,10 +71,14 @@ int play_reload(player *p)
     isk_effect *fx;
     /* A file that does not load is not tried again until it changes. */
     play_remember_file(p);
-    if (scene_args_open(&p->args, &def, &fx) != 0) {
-        play_say(p, "reload: %s has an error (printed above); the last version keeps running", p->args.scene);
+    if (scene_args_load(&p->args, &def, &fx, p->reload_error, sizeof p->reload_error) != 0) {
+        /* The class watches the window, not the terminal: the whole message
+         * stays on the canvas until the file loads (play_hud.c). */
+        fprintf(stderr, "%s\n", p->reload_error);
+        play_say(p, "reload: the last version keeps running");
         return -1;
     }
+    p->reload_error[0] = 0;
     const isk_effect_def *old = isk_effect_definition(p->fx);
     if ((def.width != old->width || def.height != old->height) && resize_for(p, def.width, def.height) != 0) {
         isk_effect_destroy(fx);
@@ -81,7 +88,7 @@ int play_reload(player *p)
     isk_effect_destroy(p->fx);
     p->fx = fx;
     isk_effect_def_free(&def);
-    play_layout_compute(p, p->shown->width, p->shown->height);
+    play_layout_compute(p);
     if (isk_effect_run(p->fx, &p->sim, 0) != ISK_OK)
         p->failed = 1;
     play_begin_scene(p);
@@ -99,7 +106,7 @@ void play_save(player *p)
     if (isk_scene_save(isk_effect_definition(p->fx), path, &err) != ISK_OK)
         play_say(p, "save failed: %s", err.message);
     else
-        play_say(p, "saved %s (iskra play %s runs these parameters)", path, path);
+        play_say(p, "saved %s (iskra play runs it again)", path);
 }
 
 void play_screenshot(player *p, int whole_window, const char *path)

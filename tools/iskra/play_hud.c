@@ -2,9 +2,11 @@
 /* Over the canvas: the thesis's FPS text (white, at pixel (15, 30), the
  * frames shown divided by the seconds since the start, six decimals) and,
  * with H, the HUD: the effective speed and whether real time is kept, the
- * simulated time and frame, what the frame's stepping costs; and a ring
- * around the selected potential.  Also the status line every part of the
- * simulator reports through (play_say). */
+ * simulated time and frame, what the frame's stepping costs; a ring
+ * around the selected potential; and while the scene file does not load,
+ * its whole "FILE:LINE: message" across the canvas's foot, where the class
+ * looks.  Also the status line every part of the simulator reports
+ * through (play_say). */
 #include <math.h>
 #include <stdarg.h>
 #include <stdio.h>
@@ -55,6 +57,21 @@ static void ring(isk_canvas *c, double cx, double cy, double r, isk_color col)
     isk_stroke_polyline(c, xy, 32, 1, col, ISK_BLEND_OVER);
 }
 
+/* The reload error, wrapped, on a dark band across the canvas's foot. */
+static void reload_error(player *p, isk_canvas *v)
+{
+    char lines[sizeof p->reload_error + 64], text[sizeof p->reload_error + 40];
+    snprintf(text, sizeof text, "%s (the last version keeps running)", p->reload_error);
+    const int s = p->ui.scale, pad = 4 * s;
+    const int n = isk_ui_wrap(&p->ui, text, v->width - 2 * pad, lines, sizeof lines);
+    if (n <= 0)
+        return;
+    const int h = n * isk_ui_line_height(&p->ui) + 2 * pad;
+    isk_fill_rect(v, 0, v->height - h, v->width, h, isk_rgba(0, 0, 0, 215), ISK_BLEND_OVER);
+    isk_fill_rect(v, 0, v->height - h, v->width, s, p->ui.style.error, ISK_BLEND_OVER);
+    isk_font_draw_text(v, p->ui.font, pad, v->height - h + pad, lines, s, p->ui.style.error, ISK_BLEND_OVER);
+}
+
 void play_hud_draw(player *p)
 {
     isk_canvas v;
@@ -69,6 +86,8 @@ void play_hud_draw(player *p)
         ring(&v, sx, sy, 10, p->ui.style.focus);
         ring(&v, sx, sy, 11, p->ui.style.focus);
     }
+    if (p->reload_error[0])
+        reload_error(p, &v);
     char text[512];
     /* The thesis's 16px Arial at baseline y = 30: the font's capitals at scale 2 end there. */
     snprintf(text, sizeof text, "FPS: %.6f", p->elapsed > 0 ? (double)p->frames_shown / p->elapsed : 0.0);
@@ -83,10 +102,12 @@ void play_hud_draw(player *p)
              isk_effect_frame(p->fx), isk_effect_particle_count(p->fx), cost,
              p->paused ? "\nHOLDING: P or Space runs" : "",
              p->physics_off ? "\nPHYSICS OFF: the precision is not a number" : "");
-    const int s = p->ui.scale, y = 30 + 3 * s, w = isk_text_width(text, s), h = isk_text_height(text, s);
+    const isk_font f = p->ui.font;
+    const int s = p->ui.scale, y = 30 + 3 * s, w = isk_font_text_width(f, text, s), h = isk_font_text_height(f, text, s);
     isk_fill_rect(&v, 15 - 3 * s, y - 2 * s, w + 5 * s, h + 3 * s, isk_rgba(0, 0, 0, 170), ISK_BLEND_OVER);
-    isk_draw_text(&v, 15, y, text, s, ISK_WHITE, ISK_BLEND_OVER);
+    isk_font_draw_text(&v, f, 15, y, text, s, ISK_WHITE, ISK_BLEND_OVER);
 }
+
 
 /* The status line (under the panel's keys) and stderr say the same. */
 void play_say(player *p, const char *fmt, ...)

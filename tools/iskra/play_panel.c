@@ -5,12 +5,17 @@
  *   beside the canvas   play, pause, stop, reset, reload, step; the speed
  *                       slider (f = 1 + 29*(1000 - s)/999); precision,
  *                       particles, explosion count, gravity, drag; the walls
- *                       as a square of four bars; the last message
- *   beside that         energy and particle-count charts
+ *                       as a square of four bars
+ *   beside that         energy and particle-count charts, integrators with
+ *                       their measured cost and energy drift
  *   below               click modes; the potentials (list, On/Off, charge, k,
  *                       P, max, min, x influence, x, y); the layer (count and
- *                       rectangle, at reset); integrators with their measured
- *                       cost and energy drift; save, screenshots, panel; keys
+ *                       rectangle, at reset); save, screenshots, panel; keys;
+ *                       the last message, whole
+ *
+ * On small screens (play_layout.c) the same parts stand in three columns
+ * beside the canvas: the console and the click modes; the potentials and
+ * the layer; the charts, integrators, files and messages.
  *
  * Every value shown is isk_effect_get of a key and every edit goes through
  * isk_effect_set (play_fields.c): ranges, names and messages are the key
@@ -43,37 +48,6 @@ static isk_ui_rect labelled(player *p, isk_ui_rect *area, const char *label, int
     isk_ui_rect r = row(p, area);
     isk_ui_label(&p->ui, isk_ui_cut_left(&r, label_w), label, ISK_UI_LEFT);
     return r;
-}
-
-/* Text wrapped at word boundaries into r, in `color`. */
-static void wrapped(player *p, isk_ui_rect r, const char *text, isk_color color)
-{
-    const int per_line = r.w / (ISK_FONT_CELL_W * p->ui.scale);
-    char out[600];
-    size_t o = 0;
-    int col = 0;
-    for (const char *w = text; *w && o + 2 < sizeof out && per_line > 4;) {
-        size_t len = strcspn(w, " ");
-        if (col && col + 1 + (int)len > per_line) {
-            out[o++] = '\n';
-            col = 0;
-        } else if (col) {
-            out[o++] = ' ';
-            col++;
-        }
-        for (size_t i = 0; i < len && o + 1 < sizeof out; i++, col++) {
-            if (col == per_line) {
-                out[o++] = '\n';
-                col = 0;
-            }
-            out[o++] = w[i];
-        }
-        w += len;
-        while (*w == ' ')
-            w++;
-    }
-    out[o] = 0;
-    isk_ui_text(&p->ui, r, out, color, ISK_UI_LEFT);
 }
 
 /* ---- beside the canvas ------------------------------------------------------------------ */
@@ -151,23 +125,30 @@ static void explosion_count(player *p, isk_ui_rect r)
         p->count_refused = 1;
 }
 
-static void console(player *p)
+void play_transport(player *p, isk_ui_rect *a)
 {
     isk_ui *ui = &p->ui;
-    isk_ui_panel(ui, p->lay.console);
-    isk_ui_rect a = isk_ui_inset(p->lay.console, U(MARGIN));
-    /* the buttons, with their keys under the pictures */
-    isk_ui_rect line = isk_ui_cut_top(&a, U(30));
-    isk_ui_cut_top(&a, U(8));
+    /* the buttons, with their keys under the pictures (three lines of text
+     * tall at least); in two rows when one is too narrow for the keys */
+    const int line_h = isk_ui_line_height(ui);
+    const int button_h = U(30) > 3 * line_h + U(2) ? U(30) : 3 * line_h + U(2);
     const int nb = (int)(sizeof buttons / sizeof buttons[0]);
+    int widest = 0; /* the widest key at text scale 1 (a button writes its key smaller when it must) */
+    for (int i = 0; i < nb; i++) {
+        int w = isk_font_text_width(ui->font, play_action_at(buttons[i].action)->keys, 1) - 1;
+        widest = w > widest ? w : widest;
+    }
+    const int rows = (a->w - (nb - 1) * U(3)) / nb - U(2) < widest ? 2 : 1, per_row = (nb + rows - 1) / rows;
+    isk_ui_rect line = isk_ui_cut_top(a, rows * button_h + (rows - 1) * U(3));
+    isk_ui_cut_top(a, U(8));
     for (int i = 0; i < nb; i++) {
         const play_action_info *ai = play_action_at(buttons[i].action);
-        if (isk_ui_icon_button(ui, ai->id, isk_ui_cell(line, nb, 1, i, 0, U(3)), buttons[i].icon, buttons[i].color,
-                               ai->keys))
+        if (isk_ui_icon_button(ui, ai->id, isk_ui_cell(line, per_row, rows, i % per_row, i / per_row, U(3)),
+                               buttons[i].icon, buttons[i].color, ai->keys))
             play_do(p, buttons[i].action);
     }
     /* speed */
-    isk_ui_rect r = labelled(p, &a, "Speed", U(40));
+    isk_ui_rect r = labelled(p, a, "Speed", U(40));
     if (isk_ui_slider(ui, "speed", r, &p->slider, 1, 1000, 1)) {
         char v[40];
         snprintf(v, sizeof v, "%.17g", play_divisor_of_slider(p->slider));
@@ -176,23 +157,45 @@ static void console(player *p)
     char speed[96];
     const isk_effect_def *d = isk_effect_definition(p->fx);
     snprintf(speed, sizeof speed, "f = %.4g: each frame %.3g ms", d->speed_divisor, 1000 * d->dt / d->speed_divisor);
-    isk_ui_rect st = isk_ui_cut_top(&a, U(10));
+    isk_ui_rect st = isk_ui_cut_top(a, U(10) > line_h ? U(10) : line_h);
     isk_ui_text(ui, st, speed, ui->style.dim, ISK_UI_RIGHT);
-    isk_ui_cut_top(&a, U(GAP));
-    /* the fields */
+    isk_ui_cut_top(a, U(GAP));
+}
+
+/* A field's refused value's message, in the flow of the column (it pushes
+ * what follows down instead of covering it). */
+static void message_under(player *p, const char *id, isk_ui_rect *a)
+{
+    isk_ui_field_message(&p->ui, id, a);
+}
+
+/* Buttons, speed, the fields and the walls, in the panel `box`. */
+static void console(player *p, isk_ui_rect box, isk_ui_rect *rest)
+{
+    isk_ui *ui = &p->ui;
+    isk_ui_panel(ui, box);
+    isk_ui_rect a = isk_ui_inset(box, U(MARGIN));
+    play_transport(p, &a);
+    /* the fields, each refused value's message under its field */
     char sec[ISK_NAME_MAX + 16], count[32];
     play_precision_field(p, "precision", labelled(p, &a, "Precision", U(LABEL_W)));
+    message_under(p, "precision", &a);
     snprintf(count, sizeof count, "%zu", isk_effect_particle_count(p->fx));
     isk_ui_field(ui, "particles", labelled(p, &a, "Particles", U(LABEL_W)), count, ISK_UI_FIELD_READONLY, NULL, 0);
     explosion_count(p, labelled(p, &a, "Explosions", U(LABEL_W)));
+    message_under(p, "explosion-count", &a);
     play_key_field(p, "gravity", labelled(p, &a, "Gravity", U(LABEL_W)),
                    play_force_section(p->fx, ISK_FORCE_GRAVITY, sec, sizeof sec), "g");
+    message_under(p, "gravity", &a);
     play_key_field(p, "drag", labelled(p, &a, "Drag", U(LABEL_W)),
                    play_force_section(p->fx, ISK_FORCE_DRAG, sec, sizeof sec), "b");
+    message_under(p, "drag", &a);
     isk_ui_cut_top(&a, U(GAP));
     /* the walls */
-    int box = a.w < U(96) ? a.w : U(96);
-    walls(p, isk_ui_cut_top(&a, box));
+    int wall = a.w < U(96) ? a.w : U(96);
+    walls(p, isk_ui_cut_top(&a, wall));
+    if (rest)
+        *rest = a;
 }
 
 /* ---- below: click modes, potentials, layer ------------------------------------------------ */
@@ -206,7 +209,9 @@ static const char *mode_label(int mode)
     return isk_explosion_names[mode];
 }
 
-static void click_modes(player *p, isk_ui_rect r)
+/* The click modes: in one row after "Click" (per_row 0), or under it in
+ * rows of per_row. */
+static void click_modes(player *p, isk_ui_rect r, int per_row)
 {
     /* The explosions the [click] key accepts, then the console's own two. */
     const char *labels[PLAY_CLICK_MODES];
@@ -214,9 +219,12 @@ static void click_modes(player *p, isk_ui_rect r)
     int n = isk_key_choices(k, labels, ISK_EXPLOSION_COUNT);
     labels[n++] = mode_label(PLAY_CLICK_ADD_POTENTIAL);
     labels[n++] = mode_label(PLAY_CLICK_NONE);
-    isk_ui_label(&p->ui, isk_ui_cut_left(&r, U(34)), "Click", ISK_UI_LEFT);
+    if (per_row)
+        isk_ui_label(&p->ui, isk_ui_cut_top(&r, isk_ui_row_height(&p->ui)), "Click", ISK_UI_LEFT);
+    else
+        isk_ui_label(&p->ui, isk_ui_cut_left(&r, U(34)), "Click", ISK_UI_LEFT);
     int mode = p->click_mode;
-    if (isk_ui_radio(&p->ui, "click", r, labels, n, 0, &mode))
+    if (isk_ui_radio(&p->ui, "click", r, labels, n, per_row, &mode))
         play_set_click_mode(p, mode);
 }
 
@@ -229,7 +237,10 @@ static int potential_force(const isk_effect_def *d, int k)
     return -1;
 }
 
-static void potentials(player *p, isk_ui_rect box)
+/* The potentials' list and editor in `box`: the list left of the editor
+ * (wide), or above it (compact).  Refused values' messages of the editor
+ * and of the layer go under the editor. */
+static void potentials(player *p, isk_ui_rect box, int stacked)
 {
     isk_ui *ui = &p->ui;
     isk_ui_box(ui, box);
@@ -247,8 +258,14 @@ static void potentials(player *p, isk_ui_rect box)
     }
     if (p->selected >= (int)n)
         p->selected = (int)n - 1;
-    isk_ui_rect left = isk_ui_cut_left(&a, U(112));
-    isk_ui_cut_left(&a, U(8));
+    isk_ui_rect left;
+    if (stacked) {
+        left = isk_ui_cut_top(&a, 5 * isk_ui_row_height(ui) + U(GAP) + U(2));
+        isk_ui_cut_top(&a, U(8));
+    } else {
+        left = isk_ui_cut_left(&a, U(112));
+        isk_ui_cut_left(&a, U(8));
+    }
     isk_ui_rect under = isk_ui_cut_bottom(&left, isk_ui_row_height(ui));
     isk_ui_cut_bottom(&left, U(GAP));
     isk_ui_list(ui, "potentials", left, rows, (int)n, &p->selected, &p->pot_scroll);
@@ -285,17 +302,35 @@ static void potentials(player *p, isk_ui_rect box)
     if (section)
         snprintf(live, sizeof live, "%.6g, %.6g", pots[sel].r.x, pots[sel].r.y);
     const int rowh = isk_ui_row_height(ui), gap = U(GAP);
+    /* the labels' column: the thesis layout's, or as wide as "x infl." */
+    const int label_w = stacked ? isk_ui_text_width(ui, "x infl.") + U(4) : U(44);
+    const int cols = stacked ? 1 : 2, nrows = 8 / cols; /* compact: one column, so values have room */
     for (int i = 0; i < 8; i++) {
-        isk_ui_rect c = isk_ui_cell(a, 2, 4, i % 2, i / 2, U(8));
+        isk_ui_rect c = isk_ui_cell(a, cols, nrows, i % cols, i / cols, U(8));
         c.h = rowh;
-        c.y = a.y + (i / 2) * (rowh + gap);
+        c.y = a.y + (i / cols) * (rowh + gap);
         const char *label = i < 6 ? cells[i].label : i == 6 ? "x" : "y";
-        isk_ui_label(ui, isk_ui_cut_left(&c, U(44)), label, ISK_UI_LEFT);
+        isk_ui_label(ui, isk_ui_cut_left(&c, label_w), label, ISK_UI_LEFT);
         if (i < 6)
             play_key_field(p, cells[i].id, c, section, cells[i].key);
         else
             play_key_part_field(p, i == 6 ? "pot-x" : "pot-y", c, section, "position", i - 6, section ? live : NULL);
     }
+}
+
+/* Under the potentials' editor: a refused value's message of its fields or
+ * the layer's (drawn after both, so either can be refused). */
+static void editor_message(player *p, isk_ui_rect box, int stacked)
+{
+    isk_ui_rect a = isk_ui_inset(box, U(MARGIN));
+    const int rowh = isk_ui_row_height(&p->ui), gap = U(GAP);
+    if (stacked)
+        isk_ui_cut_top(&a, 5 * rowh + U(GAP) + U(2) + U(8) + 8 * (rowh + gap));
+    else
+        isk_ui_cut_left(&a, U(112) + U(8));
+    if (!stacked)
+        isk_ui_cut_top(&a, 4 * (rowh + gap));
+    isk_ui_field_message(&p->ui, NULL, &a);
 }
 
 static void layer(player *p, isk_ui_rect box)
@@ -320,20 +355,27 @@ static void layer(player *p, isk_ui_rect box)
 
 /* ---- beside the console and below it: what iskra adds ------------------------------------- */
 
-static void extras(player *p, isk_ui_rect a)
+void play_file_buttons(player *p, isk_ui_rect buttons)
 {
-    isk_ui *ui = &p->ui;
-    const int rh = isk_ui_row_height(ui);
-    isk_ui_rect buttons = isk_ui_cut_top(&a, 2 * rh + U(GAP));
-    isk_ui_cut_top(&a, U(GAP));
     static const play_action more[] = {PLAY_SAVE, PLAY_SHOT, PLAY_SHOT_WINDOW, PLAY_PANEL};
     for (int i = 0; i < 4; i++) {
         const play_action_info *ai = play_action_at(more[i]);
         char label[32];
         snprintf(label, sizeof label, "%s %s", ai->label, ai->keys);
-        if (isk_ui_button(ui, ai->id, isk_ui_cell(buttons, 2, 2, i % 2, i / 2, U(GAP)), label))
+        if (isk_ui_button(&p->ui, ai->id, isk_ui_cell(buttons, 2, 2, i % 2, i / 2, U(GAP)), label))
             play_do(p, more[i]);
     }
+}
+
+/* Save, screenshots, panel; the last message, whole; the keys without a
+ * button when there is room for all of them. */
+void play_extras(player *p, isk_ui_rect a)
+{
+    isk_ui *ui = &p->ui;
+    const int rh = isk_ui_row_height(ui);
+    isk_ui_rect buttons = isk_ui_cut_top(&a, 2 * rh + U(GAP));
+    isk_ui_cut_top(&a, U(GAP));
+    play_file_buttons(p, buttons);
     /* the keys that have no button, then the last message */
     static const play_action listed[] = {PLAY_TOGGLE_PAUSE, PLAY_SLOWER, PLAY_FASTER, PLAY_MORE_PRECISION,
                                          PLAY_LESS_PRECISION, PLAY_HUD, PLAY_QUIT};
@@ -347,34 +389,84 @@ static void extras(player *p, isk_ui_rect a)
         snprintf(text + used, sizeof text - used, ". ns: stepping cost per particle-step%s; drift: of the "
                                                   "total energy since the integrator took over",
                  p->fixed_clock ? " (not timed with --fixed-clock)" : "");
-    isk_ui_rect status = isk_ui_cut_bottom(&a, U(2 * ISK_FONT_CELL_H));
-    wrapped(p, a, text, ui->style.dim);
+    /* The message takes the lines it needs (two at least), from the bottom. */
+    char lines[sizeof p->status + 64];
+    const int n = isk_ui_wrap(ui, p->status, a.w, lines, sizeof lines);
+    isk_ui_rect status = isk_ui_cut_bottom(&a, (n > 2 ? n : 2) * isk_ui_line_height(ui));
+    char keys[sizeof text + 64];
+    if (isk_ui_wrap(ui, text, a.w, keys, sizeof keys) * isk_ui_line_height(ui) <= a.h)
+        isk_ui_text_wrapped(ui, a, text, ui->style.dim);
     if (p->status[0])
-        wrapped(p, status, p->status, ui->style.text);
+        isk_ui_text_wrapped(ui, status, p->status, ui->style.text);
+}
+
+/* The charts over the integrators' table, in `r`. */
+static void charts_and_integrators(player *p, isk_ui_rect r)
+{
+    isk_ui_rect table = isk_ui_cut_bottom(&r, (ISK_INTEGRATOR_COUNT + 2) * isk_ui_row_height(&p->ui));
+    isk_ui_cut_bottom(&r, U(GAP));
+    play_charts_draw(p, r, 0);
+    play_integrators(p, table);
+}
+
+/* The thesis page's layout: console and side beside the canvas, the rest below. */
+static void wide(player *p)
+{
+    console(p, p->lay.console, NULL);
+    isk_ui_panel(&p->ui, p->lay.side);
+    charts_and_integrators(p, isk_ui_inset(p->lay.side, U(MARGIN)));
+    isk_ui_panel(&p->ui, p->lay.bottom);
+    isk_ui_rect a = isk_ui_inset(p->lay.bottom, U(MARGIN));
+    /* under the canvas and the console: the thesis's bottom panel */
+    isk_ui_rect thesis = isk_ui_cut_left(&a, p->lay.side.x - a.x - U(MARGIN));
+    isk_ui_cut_left(&a, U(2 * MARGIN));
+    click_modes(p, row(p, &thesis), 0);
+    isk_ui_rect lay_box = isk_ui_cut_right(&thesis, U(112));
+    isk_ui_cut_right(&thesis, U(8));
+    potentials(p, thesis, 0);
+    layer(p, lay_box);
+    editor_message(p, thesis, 0);
+    play_extras(p, a);
+}
+
+/* Small screens: three columns beside the canvas. */
+static void compact(player *p)
+{
+    isk_ui *ui = &p->ui;
+    isk_ui_rect rest;
+    console(p, p->lay.column[0], &rest);
+    isk_ui_cut_top(&rest, U(GAP));
+    click_modes(p, isk_ui_cut_top(&rest, (1 + PLAY_CLICK_MODES) * isk_ui_row_height(ui)), 1);
+    /* the potentials over the layer */
+    isk_ui_panel(ui, p->lay.column[1]);
+    isk_ui_rect b = isk_ui_inset(p->lay.column[1], U(MARGIN));
+    const int rowh = isk_ui_row_height(ui), gap = U(GAP);
+    isk_ui_rect pots = isk_ui_cut_top(&b, 2 * U(MARGIN) + 5 * rowh + U(GAP) + U(2) + U(8) + 8 * (rowh + gap) +
+                                              4 * isk_ui_line_height(ui));
+    isk_ui_cut_top(&b, U(8));
+    potentials(p, pots, 1);
+    layer(p, isk_ui_cut_top(&b, 6 * (rowh + gap)));
+    editor_message(p, pots, 1);
+    /* charts and integrators over the files and the messages */
+    isk_ui_panel(ui, p->lay.column[2]);
+    isk_ui_rect c = isk_ui_inset(p->lay.column[2], U(MARGIN));
+    /* two charts of 120 px at least (what a chart needs), the integrators' table */
+    isk_ui_rect top = isk_ui_cut_top(&c, 2 * U(126) + U(4) + U(GAP) + (ISK_INTEGRATOR_COUNT + 2) * rowh);
+    isk_ui_cut_top(&c, U(GAP));
+    charts_and_integrators(p, top);
+    play_extras(p, c);
 }
 
 void play_panel(player *p)
 {
     if (!p->panel)
         return;
-    console(p);
-    isk_ui_panel(&p->ui, p->lay.side);
-    isk_ui_rect side = isk_ui_inset(p->lay.side, U(MARGIN));
-    isk_ui_rect table = isk_ui_cut_bottom(&side, (ISK_INTEGRATOR_COUNT + 2) * isk_ui_row_height(&p->ui));
-    isk_ui_cut_bottom(&side, U(GAP));
-    play_charts_draw(p, side);
-    play_integrators(p, table);
-    isk_ui_panel(&p->ui, p->lay.bottom);
-    isk_ui_rect a = isk_ui_inset(p->lay.bottom, U(MARGIN));
-    /* under the canvas and the console: the thesis's bottom panel */
-    isk_ui_rect thesis = isk_ui_cut_left(&a, p->lay.side.x - a.x - U(MARGIN));
-    isk_ui_cut_left(&a, U(2 * MARGIN));
-    click_modes(p, row(p, &thesis));
-    isk_ui_rect lay_box = isk_ui_cut_right(&thesis, U(112));
-    isk_ui_cut_right(&thesis, U(8));
-    potentials(p, thesis);
-    layer(p, lay_box);
-    extras(p, a);
+    if (p->panel_kind == PLAY_PANEL_INSPECTOR)
+        play_inspector(p);
+    else if (p->arrangement == PLAY_COMPACT)
+        compact(p);
+    else
+        wide(p);
 }
 
 /* ---- the canvas ---------------------------------------------------------------------------- */

@@ -30,6 +30,7 @@ void play_begin_scene(player *p)
     isk_effect_potentials(p->fx, &n);
     p->selected = n ? 0 : -1; /* the thesis's editor shows potential 1 */
     p->pot_scroll = 0;
+    play_inspector_begin(p);
     memset(p->stats, 0, sizeof p->stats);
     isk_timestep_init(&p->ts, p->base_dt, PLAY_MAX_STEPS_PER_FRAME);
     p->pace = 1;

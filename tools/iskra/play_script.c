@@ -7,13 +7,16 @@
  *
  *   wait:N            let N frames pass
  *   click:X,Y         left click at window pixel (X, Y) (the canvas starts at 0, 0)
+ *   double-click:X,Y  two clicks there, the second a double click's
  *   move:X,Y          the pointer moves there
  *   drag:X0,Y0,X1,Y1  press at one point, move to the other, release
- *   press:NAME        click the middle of the widget NAME (as laid out in the last frame)
+ *   press:NAME        click the middle of the widget NAME (as laid out in the last frame;
+ *                     an inspector key scrolled out of view is brought into view first)
  *   type:TEXT         text typed into the focused field
  *   key:NAME          a key: space return tab esc backspace delete left right up down home end f1..f12
  *   space esc tab return f1..f12 kp+ kp-   the same keys, without "key:"
  *   C                 any one printable character: its key (and the text it types)
+ *   ctrl+C            the key C held with Ctrl (ctrl+a: select all in a field)
  *   shot:PATH         the window as last shown, to a PNG
  *   canvas-shot:PATH  the canvas alone, to a PNG */
 #include <stdio.h>
@@ -27,7 +30,8 @@ void play_script_help(FILE *f)
     fprintf(f, "  --script EVENTS  play a session (for tests and demos), space-separated tokens in order:\n"
                "                   wait:N (frames)  click:X,Y  move:X,Y  drag:X0,Y0,X1,Y1 (window pixels)\n"
                "                   press:WIDGET  type:TEXT  key:NAME  shot:PATH  canvas-shot:PATH, and keys:\n"
-               "                   space esc tab return f1..f12 kp+ kp- or any one character\n");
+               "                   space esc tab return f1..f12 kp+ kp- or any one character; ctrl+a\n"
+               "                   (select all); double-click:X,Y.  --list-widgets lists the WIDGET names\n");
 }
 
 typedef struct named_key {
@@ -62,9 +66,12 @@ static int known(const char *t)
     int a, b, c, d, used = 0;
     if (sscanf(t, "wait:%d%n", &a, &used) == 1 && !t[used] && a >= 0)
         return 1;
-    if ((sscanf(t, "click:%d,%d%n", &a, &b, &used) == 2 || sscanf(t, "move:%d,%d%n", &a, &b, &used) == 2) &&
+    if ((sscanf(t, "click:%d,%d%n", &a, &b, &used) == 2 || sscanf(t, "move:%d,%d%n", &a, &b, &used) == 2 ||
+         sscanf(t, "double-click:%d,%d%n", &a, &b, &used) == 2) &&
         !t[used])
         return 1;
+    if (!strncmp(t, "ctrl+", 5))
+        return strlen(t + 5) == 1 && t[5] > 32 && t[5] < 127;
     if (sscanf(t, "drag:%d,%d,%d,%d%n", &a, &b, &c, &d, &used) == 4 && !t[used])
         return 1;
     if ((!strncmp(t, "press:", 6) || !strncmp(t, "type:", 5) || !strncmp(t, "shot:", 5) ||
@@ -114,7 +121,7 @@ static int push(player *p, isk_event ev)
     return -1;
 }
 
-static int mouse(player *p, isk_event_type type, int x, int y)
+static int mouse_clicks(player *p, isk_event_type type, int x, int y, int clicks)
 {
     isk_event ev;
     memset(&ev, 0, sizeof ev);
@@ -122,8 +129,11 @@ static int mouse(player *p, isk_event_type type, int x, int y)
     ev.button = 1;
     ev.x = x;
     ev.y = y;
+    ev.clicks = clicks;
     return push(p, ev);
 }
+
+static int mouse(player *p, isk_event_type type, int x, int y) { return mouse_clicks(p, type, x, y, 1); }
 
 static int click(player *p, int x, int y)
 {
@@ -131,11 +141,18 @@ static int click(player *p, int x, int y)
            mouse(p, ISK_EVENT_MOUSE_UP, x, y);
 }
 
-static int key(player *p, int code, char typed)
+static int double_click(player *p, int x, int y)
+{
+    return click(p, x, y) || mouse_clicks(p, ISK_EVENT_MOUSE_DOWN, x, y, 2) ||
+           mouse_clicks(p, ISK_EVENT_MOUSE_UP, x, y, 2);
+}
+
+static int key_mods(player *p, int code, char typed, int mods)
 {
     isk_event ev;
     memset(&ev, 0, sizeof ev);
     ev.type = ISK_EVENT_KEY_DOWN;
+    ev.mods = mods;
     ev.key = code >= 'A' && code <= 'Z' ? code - 'A' + 'a' : code;
     if (push(p, ev))
         return -1;
@@ -149,6 +166,8 @@ static int key(player *p, int code, char typed)
     ev.text[0] = typed;
     return push(p, ev);
 }
+
+static int key(player *p, int code, char typed) { return key_mods(p, code, typed, 0); }
 
 static int type_text(player *p, const char *text)
 {
@@ -176,16 +195,34 @@ static int run_one(player *p, const char *t)
         return click(p, a, b);
     if (sscanf(t, "move:%d,%d%n", &a, &b, &used) == 2 && !t[used])
         return mouse(p, ISK_EVENT_MOUSE_MOVE, a, b);
+    if (sscanf(t, "double-click:%d,%d%n", &a, &b, &used) == 2 && !t[used])
+        return double_click(p, a, b);
+    if (!strncmp(t, "ctrl+", 5))
+        return key_mods(p, t[5], 0, ISK_MOD_CTRL); /* Ctrl types nothing */
     if (sscanf(t, "drag:%d,%d,%d,%d%n", &a, &b, &c, &d, &used) == 4 && !t[used])
         return mouse(p, ISK_EVENT_MOUSE_MOVE, a, b) || mouse(p, ISK_EVENT_MOUSE_DOWN, a, b) ||
                mouse(p, ISK_EVENT_MOUSE_MOVE, c, d) || mouse(p, ISK_EVENT_MOUSE_UP, c, d);
     if (!strncmp(t, "press:", 6)) {
         isk_ui_rect r;
-        if (!isk_ui_find(&p->ui, t + 6, &r)) {
-            play_say(p, "--script: no widget '%s' in the window now", t + 6);
+        const char *name = t + 6;
+        if (!isk_ui_find(&p->ui, name, &r)) {
+            /* A key the inspector scrolled out of view: into view at the end
+             * of the next frame, and the press again after the one after,
+             * which shows it. */
+            if (!s->revealing && play_inspector_reveal(p, name)) {
+                s->revealing = 1;
+                s->next--;
+                s->wait_until = p->frames_shown + 2;
+                return 0;
+            }
+            char hint[300];
+            play_suggest_widget(p, name, hint, sizeof hint);
+            play_say(p, "--script: no widget '%s' in the window now%s (iskra play %s --list-widgets lists them)",
+                     name, hint, p->args.scene);
             p->failed = 1;
             return -1;
         }
+        s->revealing = 0;
         return click(p, r.x + r.w / 2, r.y + r.h / 2);
     }
     if (!strncmp(t, "type:", 5))

@@ -200,17 +200,17 @@ static void warn_if_nothing_drawn(const scene_args *a, const isk_effect_def *d)
                 a->cmd, a->scene);
 }
 
-int scene_args_open(const scene_args *a, isk_effect_def *def, isk_effect **fx)
+int scene_args_load(const scene_args *a, isk_effect_def *def, isk_effect **fx, char *why, size_t n)
 {
     isk_error err;
     if (!a->scene) {
-        fprintf(stderr, "iskra %s: which scene? (iskra %s --help)\n", a->cmd, a->cmd);
+        snprintf(why, n, "iskra %s: which scene? (iskra %s --help)", a->cmd, a->cmd);
         isk_effect_def_init(def);
         return 2;
     }
     isk_status s = isk_scene_load(def, a->scene, &err);
     if (s != ISK_OK) {
-        fprintf(stderr, "%s\n", err.message);
+        snprintf(why, n, "%s", err.message);
         return s == ISK_ERR_NOMEM ? 1 : 2;
     }
     if (a->have_seed)
@@ -231,13 +231,22 @@ int scene_args_open(const scene_args *a, isk_effect_def *def, isk_effect **fx)
         const char *lp = strstr(err.message, " (line ");
         int line = 0, used = 0;
         if (lp && sscanf(lp, " (line %d)%n", &line, &used) == 1 && used > 0 && line > 0)
-            fprintf(stderr, "%s:%d: %.*s%s\n", a->scene, line, (int)(lp - err.message), err.message, lp + used);
+            snprintf(why, n, "%s:%d: %.*s%s", a->scene, line, (int)(lp - err.message), err.message, lp + used);
         else
-            fprintf(stderr, "%s: %s\n", a->scene, err.message);
+            snprintf(why, n, "%s: %s", a->scene, err.message);
         isk_effect_def_free(def);
         isk_effect_def_init(def);
         return s == ISK_ERR_NOMEM ? 1 : 2;
     }
     warn_if_nothing_drawn(a, def);
     return 0;
+}
+
+int scene_args_open(const scene_args *a, isk_effect_def *def, isk_effect **fx)
+{
+    char why[1024];
+    int rc = scene_args_load(a, def, fx, why, sizeof why);
+    if (rc)
+        fprintf(stderr, "%s\n", why);
+    return rc;
 }

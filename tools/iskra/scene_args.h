@@ -44,5 +44,8 @@ void scene_args_help(FILE *f);
  * runtime failure) after printing why.  On success *def holds the
  * (overridden) definition: free it with isk_effect_def_free. */
 int scene_args_open(const scene_args *a, isk_effect_def *def, isk_effect **fx);
+/* The same, printing nothing: the message ("FILE:LINE: why" for a scene
+ * error) goes into why (n bytes), for a program that shows it itself. */
+int scene_args_load(const scene_args *a, isk_effect_def *def, isk_effect **fx, char *why, size_t n);
 
 #endif
