@@ -10,6 +10,7 @@
  * bytes between its rows (a wrapped buffer's stride) come out as on one
  * thread, and that those bytes are left alone. */
 #include <criterion/criterion.h>
+#include "fast_paths_skip.h"
 
 #include <math.h>
 #include <stdlib.h>
@@ -51,6 +52,7 @@ static long splits_of(const char *text, int steps)
 
 Test(band_split, additive_dots_are_split_where_their_bands_would_be_columns)
 {
+    SKIP_WITHOUT(ISK__FAST_BANDS, "draws split among the workers");
     cr_expect_eq(splits_of(LAYER("dot", "add"), 5), 0);
     cr_expect_eq(splits_of(LAYER("dot", "add"), 240), 1);
     cr_expect_eq(splits_of(LAYER("dot", "over"), 240), 0);
@@ -74,6 +76,7 @@ static uint8_t *padded_canvas(isk_canvas *c, size_t pad)
  * on one thread and split on two and three, into a padded canvas. */
 Test(band_split, saturated_pixels_and_a_padded_canvas_come_out_as_on_one_thread)
 {
+    SKIP_WITHOUT(ISK__FAST_BANDS, "draws split among the workers");
     const char *text = SCENE "count = 20000\nlimit = 20000\ndraw = sprite\nsize = 1.5\n"
                              "blend = add\ncolor = #ffc040ff\n"
                              "[emitter d]\nsource = explosion\nexplosion = uniform\ncount = 20000\nlimit = 20000\n"

@@ -18,6 +18,7 @@
  * the layer off, on 1, 2 and 3 threads, against the same effect with no
  * block at rest: the same stores and the same canvases. */
 #include <criterion/criterion.h>
+#include "fast_paths_skip.h"
 
 #include <math.h>
 #include <stdint.h>
@@ -97,6 +98,7 @@ static void steps(lists *l, isk_particles *p, isk_rest *rest, isk_scratch *s, is
 
 Test(rest, settled_blocks_rest_with_the_same_bits)
 {
+    SKIP_WITHOUT(ISK__FAST_REST, "blocks at rest");
     lists l;
     lists_init(&l);
     isk_particles a, b;
@@ -128,6 +130,7 @@ Test(rest, settled_blocks_rest_with_the_same_bits)
  * to a bit-exact rest is theirs; those that do are counted. */
 Test(rest, every_integrator_per_axis)
 {
+    SKIP_WITHOUT(ISK__FAST_REST, "blocks at rest");
     isk_scratch *s = scratch();
     int rested_somewhere = 0;
     for (int m = 0; m < ISK_INTEGRATOR_COUNT; m++) {
@@ -156,6 +159,7 @@ Test(rest, every_integrator_per_axis)
 
 Test(rest, written_particles_must_be_forgotten)
 {
+    SKIP_WITHOUT(ISK__FAST_REST, "blocks at rest");
     lists l;
     lists_init(&l);
     isk_particles a, b, c;
@@ -197,6 +201,7 @@ Test(rest, written_particles_must_be_forgotten)
 
 Test(rest, threads_give_the_same_bits)
 {
+    SKIP_WITHOUT(ISK__FAST_REST, "blocks at rest");
     lists l;
     lists_init(&l);
     isk_scratch *s = scratch();
@@ -293,6 +298,7 @@ static void render_both(isk_effect *a, isk_effect *b, isk_canvas *ca, isk_canvas
 
 Test(rest, effect_same_bytes_on_every_thread_count)
 {
+    SKIP_WITHOUT(ISK__FAST_REST, "blocks at rest");
     for (int threads = 1; threads <= 3; threads++) {
         isk_effect *a = scene_text_open(SCENE, threads), *b = scene_text_open(SCENE, threads);
         b->no_rest = 1;
@@ -340,6 +346,7 @@ Test(rest, effect_same_bytes_on_every_thread_count)
  * of the emitter, those at rest too. */
 Test(rest, a_click_kicks_the_particles_at_rest)
 {
+    SKIP_WITHOUT(ISK__FAST_REST, "blocks at rest");
     static const char *const text =
         "[scene]\nwidth = 100\nheight = 100\n[view]\nxmin = 0\nxmax = 10\nymin = 0\nymax = 10\n"
         "[force gravity]\ng = 9.81\n[bounds]\nmode = reflect\nsides = all\nrestitution = 0.3\n"

@@ -17,6 +17,7 @@
  * (a canvas whose rows lie further apart).  The records are replayed
  * only while every block rests, and only draws at rest record. */
 #include <criterion/criterion.h>
+#include "fast_paths_skip.h"
 
 #include <stdlib.h>
 #include <string.h>
@@ -49,6 +50,7 @@ static const isk_blend MODES[] = {ISK_BLEND_OVER, ISK_BLEND_ADD, ISK_BLEND_REPLA
 
 Test(retain, replays_give_the_bytes_of_full_draws)
 {
+    SKIP_WITHOUT(ISK__FAST_RETAIN, "replays of a group at rest");
     isk_rng r;
     isk_rng_seed(&r, 5);
     isk_view v;
@@ -137,6 +139,7 @@ static const char *const SCENES[] = {SCENE(""), SCENE("window = -4, 4, -2.43, 3\
 
 Test(retain, groups_at_rest_give_the_bytes_of_full_draws)
 {
+    SKIP_WITHOUT(ISK__FAST_RETAIN, "replays of a group at rest");
     static const int counts[] = {1, 2, 3, 7};
     for (int t = 0; t < 8; t++) {
         const int threads = counts[t % 4];
