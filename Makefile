@@ -88,25 +88,24 @@ endif
 # independent dependency chains, so a long chain per particle (a potential's
 # sqrt and division, then the integrator) no longer fills the processor's
 # queues before the next particle's work is in them.  Order of instructions
-# only, so the same bits (-ffp-contract=off still holds); bench_walls on
-# Zen 4: a Coulomb potential 2.97 -> 2.68 ns a particle-step.  -fsched-pressure
-# keeps it from spilling registers.  Not a clang flag.
+# only, so the same bits (-ffp-contract=off still holds); what it buys:
+# docs/performance.md, "Compiler flags".  -fsched-pressure keeps it from
+# spilling registers.  Not a clang flag.
 GCC_IS := $(shell $(CC) --version 2>/dev/null | grep -i 'free software foundation')
 GCC_SCHEDULE := $(if $(GCC_IS),-fschedule-insns -fsched-pressure)
 
 # Debug information, without gcc's tracking of where each variable lives at
 # each instruction (var-tracking-assignments): that pass took half the
-# compile time of the batched-drawing kernels (src/view/world_batch.c, 51 ->
-# 25 s alone) and a fifth of CI's builds.  -g never changes the code, so
+# compile time of the batched-drawing kernels and a fifth of CI's builds
+# (docs/performance.md, "Compiler flags").  -g never changes the code, so
 # the bits are the same; a debugger shows fewer locals in optimized frames.
 DEBUG_INFO := -g $(if $(GCC_IS),-fno-var-tracking-assignments)
 
 # gcc's loop distribution finds the copies of the start state that the
 # fused motion loops store as they read (src/sim/motion_fused.c) and hoists
 # them out as memcpy calls before the loop: a pass of its own that waits on
-# memory with no arithmetic to overlap.  Without it, "from a remembered
-# start" in bench_walls went from 3.07-3.18 to 1.76-1.80 ns a particle-step
-# at 10^6.  Only that file: elsewhere the memcpy idiom is welcome.
+# memory with no arithmetic to overlap (docs/performance.md, "Compiler
+# flags").  Only that file: elsewhere the memcpy idiom is welcome.
 GCC_NO_COPY_IDIOM := $(if $(GCC_IS),-fno-tree-loop-distribute-patterns)
 # (After the configurations above: SANITIZE=clang sets CC, and OPT, a
 # recursive variable, reads GCC_SCHEDULE when it is used.)

@@ -92,8 +92,7 @@ void isk_draw_pixel(isk_canvas *c, int x, int y, isk_color color, isk_blend mode
 /* isk_draw_pixel is also a macro over this inline copy of it (C11 7.1.4
  * lets a library function be one): a loop of calls then compiles to a loop
  * of blends, with no call and the colour's part of the rule computed once
- * (bench_raster: 2.8 ns a pixel over, 2.5-2.7 add, against 3.9 and 3.1
- * through the call).  The bytes are the same either way;
+ * (docs/performance.md, "Drawing primitives").  The bytes are the same either way;
  * (isk_draw_pixel)(...) or &isk_draw_pixel reach the function. */
 static ISK__INLINE void isk__draw_pixel_inline(isk_canvas *c, int x, int y, isk_color color, isk_blend mode)
 {

@@ -100,7 +100,8 @@ extern "C" {
  *     semi-implicit Euler): the flight is the exact one ending in the end
  *     state, so no start state is needed.  This is what a step under
  *     gravity, wind, buoyancy and drag alone is, and it saves the copy of
- *     the start state (1.4 ns a particle-step at 10^6, bench_walls).
+ *     the start state (docs/performance.md, "The update against the
+ *     memory bandwidth").
  * Deflectors always need the start positions (their hit test is along the
  * path from them). */
 typedef struct isk_step_motion {

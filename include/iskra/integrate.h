@@ -67,9 +67,10 @@
  * accumulators and RK4 stage copies stay in L1 cache: every stage is still a
  * tight loop, just over 128 particles at a time.  128, not more: a block's
  * five columns (5 KiB), the next block's, asked for ahead (5 KiB), and the
- * start state the walls keep when potentials act (4 KiB) fit the 32 KiB L1
- * with room to spare; at 256 they filled 28 KiB of it and the copy of the
- * start state cost 3 ns a particle at 10^6 instead of 0.4 (bench_walls).
+ * start state the walls keep when potentials act (4 KiB) fit a 32 KiB L1
+ * with room to spare; at 256 they fill 28 KiB of it and the copy of the
+ * start state slows by several times (docs/performance.md, "Where the
+ * constants come from").
  *
  * Example: one RK4 step of a thrown particle under gravity:
  *

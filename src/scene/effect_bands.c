@@ -1,47 +1,43 @@
 /* SPDX-License-Identifier: MIT */
-/* A group's draw on the effect's threads: the canvas cut into bands of
+/* A group's draw on the effect's workers: the canvas cut into bands of
  * rows (or, for the batched dots when their particles crowd into a few
- * rows, of columns), one per thread, each blending only its own pixels (the
- * draw functions of effect_render.c).  Each pixel then sees the same particles in the same
- * order as on one thread, so the bytes are the same for every thread count
- * and every choice of cuts; the cuts are only chosen to share the work
- * evenly.
+ * rows, of columns), one per worker, each blending only its own pixels
+ * (the routine of the group's draw kind, effect_draws.c).  Each pixel then
+ * sees the same particles in the same order as on one thread, so the bytes
+ * are the same for every worker count and every choice of cuts; the cuts
+ * are only chosen to share the work evenly.  What the scheduler may do
+ * with a draw is what its kind's row declares (FX_MAY_*), and nothing else.
  *
- * Dots and pixels reach at most a row beyond their own, so on four bands
- * or more (FX_BIN_MIN_BANDS) their particles are first sorted into the bands (world_batch.h's isk__batch_bin, on the
- * threads, each over its share of the store; stable, so each band keeps
- * index order), and a band's thread then reads only its own particles
- * instead of every particle of the store.  Sprites, and any group when the
- * sorting's memory cannot be had, give every band the whole store.
+ * Sorted bands (FX_MAY_SORT): a particle's draw touches no row further
+ * than its kind's reach from its own, so on FX_BIN_MIN_BANDS bands or more
+ * the particles are first sorted into the bands (world_batch.h's
+ * isk__batch_bin, on the workers, each over its share of the store;
+ * stable, so each band keeps index order), and a band then reads only its
+ * own particles instead of every particle of the store.
  *
- * Bands of columns share every row of the canvas, so the cache lines at
- * their edges (and, through the processor's prefetchers, those beside
- * them) would pass from core to core all through the draw: where the
- * particles crowd onto one row, thousands of blends a frame on each side
- * of the cut.  Every band of columns but the first therefore draws into a
- * copy of the canvas of its own (its columns copied in first and out
- * after; FX_COPIES_MAX_BYTES bounds the memory).  Its pixels see the same
- * blends from the same start, so the bytes are the same.  Measured on the
- * settled 10^6 dots (bench_frame's "settled" layer, one process, the two
- * halves interleaved, medians of 30-40): 7.1-8.8 ms drawn in place against
- * 4.5-5.8 ms each in a canvas of its own while the two cores were far
- * apart (on this shared VM, for part of a session), the same 4.9-5.0 ms
- * when they were close; the copies cost about 0.1 ms.
+ * Bands of columns (FX_MAY_COLUMNS) share every row of the canvas, so the
+ * cache lines at their edges would pass from core to core all through the
+ * draw.  Every band of columns but the first therefore draws into a copy
+ * of the canvas of its own (its columns copied in first and out after;
+ * FX_COPIES_MAX_BYTES bounds the memory).  Its pixels see the same blends
+ * from the same start, so the bytes are the same.
  *
- * A group that adds (ISK_BLEND_ADD) can instead have its particles split
- * among the threads (split_particles): each draws its share of the store on
- * the whole canvas, the first onto the canvas itself, the others onto
- * zeroed copies of their own, and the copies are then added into the
- * canvas, a strip of rows per thread.  What a particle adds to a pixel
- * does not depend on the pixel, and saturating adds of amounts >= 0 give
- * min(255, the sum) however they are grouped, so the bytes are again
- * those of one thread.  It is taken where the bands would be columns
- * (measured below, at FX_COPIES_MAX_BYTES).
+ * Split draws (FX_MAY_SPLIT): a group that adds (ISK_BLEND_ADD) can
+ * instead have its particles split among the workers (split_particles):
+ * each draws its share of the store on the whole canvas, the first onto
+ * the canvas itself, the others onto zeroed copies of their own, and the
+ * copies are then added into the canvas, a strip of rows per worker.  What
+ * a particle adds to a pixel does not depend on the pixel, and saturating
+ * adds of amounts >= 0 give min(255, the sum) however they are grouped, so
+ * the bytes are again those of one thread.  It is taken where the bands
+ * would be columns.
  *
- * A group at rest (FX_BANDS_RETAIN, effect_retain.c) records its blends
- * band by band at its first draw at rest, then replays them on the same
- * bands (replay_bands) until they would be stale: no cuts placed, no
- * split. */
+ * A group at rest (FX_MAY_RETAIN, effect_retain.c) records its blends band
+ * by band at its first draw at rest, then replays them on the same bands
+ * (replay_bands) until they would be stale: no cuts placed, no split.
+ *
+ * Every constant below is a measure of when the sharing pays: the
+ * measures are in docs/performance.md, "When a draw is shared out". */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -54,51 +50,22 @@
 #include "view/world_batch.h"
 
 /* Below FX_BAND_MIN_WORK (effect_internal.h) a group is drawn on the
- * caller alone: a second band costs a fixed part (waking a thread, placing
- * the cuts, and the canvas's lines, which a clear by the caller left in
- * its own caches and the other thread must fetch from there) and the scan
- * every band makes of the store, and below that much work they cost more
- * than the second core saves.  The render's own clear, when the bands do
- * it, is work they share (a pixel of it counted as FX_FILL_PIXELS_A_DOT-th
- * of a dot).  Measured on two threads against one, the draw after the
- * caller's clear and (in brackets) with the render's own clear in the
- * bands (bench_layer.h's layer at 800x600, one process, medians of 41;
- * 2026-12-04): coverage dots 0.54x (0.87x) at 10^4, 0.88x (1.20x) at
- * 2*10^4, 1.14x (1.33x) at 5*10^4, 1.25x (1.48x) at 10^5; single pixels
- * (a third of a dot's work) 0.94x (1.11x) at 10^5, 1.04x (1.13x) at
- * 2*10^5; 8 px sprites (counted as ten dots) 0.40x (0.84x) at 10^3, 0.85x
- * (1.16x) at 5*10^3, 1.09x (1.29x) at 10^4.  Counted in dots, each
- * crossing point lies near 5*10^4, the fill of 800x600 counting for 3*10^4.
- * (Before the render's clear went to the bands and isk_canvas_fill was
- * vectorized, the crossing lay near 2*10^5.) */
-/* A pixel of the render's clear is this many times less work than a dot. */
+ * caller alone: a second band costs a fixed part (waking a worker, placing
+ * the cuts, fetching the canvas's lines from the caller's caches) and the
+ * scan every band makes of the store.  The render's own clear, when the
+ * bands do it, is work they share: a pixel of it counts as
+ * 1/FX_FILL_PIXELS_A_DOT of a dot. */
 #define FX_FILL_PIXELS_A_DOT 16.0
-/* Particles sampled to place the cuts, in runs of neighbours. */
+/* Particles sampled to place the cuts, in runs of neighbours (a cache
+ * line of each column: lone samples would each miss). */
 #define FX_BAND_SAMPLES 1024
 #define FX_BAND_RUN 8
 /* isk__batch_bin's codes hold band numbers up to 254. */
 #define FX_BIN_MAX_BANDS 255
-/* Sorting costs about two scans of the store (binning, then the lists),
- * each band scanning it whole costs one per band: measured (the CPU time
- * of a 10^6-dot draw, all threads together: 14 ms on one thread; 20.2,
- * 19.4, 20.6, 24.2 ms sorted on 2, 3, 4, 8 threads against 16.4, 18.4,
- * 21.2, 32.5 ms scanned), sorting pays from four bands on. */
+/* Sorting costs about two scans of the store (binning, then the lists);
+ * each band scanning it whole costs one per band: sorting pays from this
+ * many bands on. */
 #define FX_BIN_MIN_BANDS 4
-/* When an additive group is split (split_particles) rather than cut into
- * bands.  A split band reads only its share of the store and draws each
- * of its particles whole, but it zeroes a canvas of its own, which is added
- * in after, and its blends spread over the whole canvas where a band's
- * rows stay in its core's cache.  Measured on two threads, split against
- * bands, the draw with the render's clear (bench_layer.h's layer made
- * additive, two effects in one process, frames interleaved, medians of 41,
- * at two moments of the host on 2026-12-05): coverage dots settled on
- * their floor (bands of columns, which draw in copies of the canvas too
- * and each scan the whole store) 0.85x the time then 0.96-0.97x, at rest
- * 0.87x then 0.96-0.98x; where the bands are rows, 8 px sprites 0.86x at
- * 10^5 then 1.01-1.31x, 1.15x at 2*10^4; dots 1.21x at 10^5, 1.20x at
- * 3*10^5, 1.00-1.01x at 10^6, 4*10^6 and 1.6*10^7 falling; 8 px discs
- * 1.02-1.19x at 3*10^3 and 10^4.  So a group is split only where its
- * bands would be columns. */
 /* The most memory the copies of the bands of columns may take (beyond it
  * the bands draw in place: the same bytes). */
 #define FX_COPIES_MAX_BYTES ((size_t)64 << 20)
@@ -247,7 +214,8 @@ static void fill_share(void *ctx, int worker, size_t t)
 
 /* Sorts v[0..m) (m <= FX_BAND_SAMPLES, each in [0, ISK_CANVAS_MAX_DIM]) by
  * two passes of 8-bit digits, least significant first: the draw waits for
- * the cuts, and qsort's calls of a comparison cost it 0.05 ms a sort. */
+ * the cuts, and a comparison function's calls would cost more than the
+ * sort. */
 static void sort_coordinates(int *v, int m)
 {
     int tmp[FX_BAND_SAMPLES];
@@ -304,10 +272,7 @@ int fx_place_cuts(const isk_effect *e, const fx_group *g, const isk_canvas *c, i
     int xs[FX_BAND_SAMPLES], ys[FX_BAND_SAMPLES]; /* whole columns and rows */
     const isk_particles *p = &g->store;
     /* runs of FX_BAND_RUN neighbours (a cache line of each column) spread
-     * evenly over the store: lone samples cost a miss, in cache and TLB, of
-     * each column each, and the cuts took 0.03 ms for 10^6 particles and
-     * 0.13 ms for 1.6*10^7 instead of 0.016 and 0.03 (the draw waits for
-     * them) */
+     * evenly over the store: the draw waits for the cuts */
     const size_t runs = FX_BAND_SAMPLES / FX_BAND_RUN;
     const size_t step = p->count / runs > FX_BAND_RUN ? p->count / runs : FX_BAND_RUN;
     int m = 0;
@@ -460,11 +425,7 @@ fx_band fx_band_whole(const isk_canvas *c, const fx_group *g)
  * (a group at rest on its floor: a row or two), so a band with a copy of
  * the canvas fills only those there and copies only those out; its other
  * rows are filled in place.  The same bytes as draw_band: the blends are
- * cut to the same pixels (every record's block lies in [y0, y1)).  Against
- * copying in and out the band's whole columns, as draw_band does, at rest
- * on two threads (bench_layer.h's 10^6 dots, one process, the two
- * interleaved, medians of 61; 2026-12-05): 1.33-1.34 ms against
- * 1.37-1.41. */
+ * cut to the same pixels (every record's block lies in [y0, y1)). */
 static void replay_band(void *ctx, int worker, size_t item)
 {
     (void)worker;

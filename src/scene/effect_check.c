@@ -132,7 +132,7 @@ static isk_status check_stream(ctx *c, const isk_emitter_def *e)
     return ISK_OK; /* rate 0 and no bursts is an idle stream: fine while running, a mistake in a file (the parser's) */
 }
 
-/* ---- sub-emitters and trails (issue 14) ----
+/* ---- sub-emitters and trails ----
  * on_death / on_hit must name a sub-emitter; a sub-emitter must be named by
  * some emitter's on_death or on_hit (an error, not a warning: it could never
  * emit, so it is a mistake, most likely a misspelt or forgotten reference).

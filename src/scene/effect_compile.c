@@ -58,7 +58,7 @@ static void gather_forces(isk_effect *e, fx_group *g)
     f->centre = d->centre;
 }
 
-/* The field stage's terms (issue 14, motion): the emitter-centred
+/* The field stage's terms : the emitter-centred
  * accelerations and every referenced turbulence of non-zero strength,
  * seeded from the scene's seed and the force's index.  Its clock (time,
  * emitter position) is the frame loop's to set. */

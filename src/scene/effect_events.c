@@ -1,7 +1,7 @@
 /* SPDX-License-Identifier: MIT */
 /* Sub-emitters: the deaths and bounces of one emitter's particles become
  * events of another (source = sub), whose children are born where they
- * happened (issue 14).
+ * happened.
  *
  * Where an event comes from, in the order that makes it deterministic on
  * any number of threads:

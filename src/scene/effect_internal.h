@@ -53,7 +53,7 @@ typedef struct fx_clock {
 } fx_clock;
 double fx_clock_at(const fx_clock *c, long frame);
 
-/* ---- sub-emitters and trails (issue 14) ----
+/* ---- sub-emitters and trails ----
  * An event waiting in a sub-emitter's group: where and how fast the parent
  * was at the end of the substep in which it died or bounced, and that time. */
 typedef struct fx_event {
@@ -172,7 +172,7 @@ struct fx_group {
     size_t dropped;                /* spawns lost to a full pool */
     size_t removed_nonfinite;      /* particles removed because their state went non-finite */
 
-    /* motion (issue 14: effect_stream.c, src/sim/stage_field.c) */
+    /* motion (effect_stream.c, src/sim/stage_field.c) */
     isk_field field;               /* the field stage's terms, and its clock (set every substep) */
     int has_field;                 /* the field stage is in the pipeline */
     long frame_offset;             /* prewarm: the frames this group ran before frame 0 */
@@ -195,7 +195,7 @@ struct fx_group {
     const isk_texture *texture;    /* drawn through effect_texture.c: the emitter's texture (the
                                       effect's cache) or &streak; NULL: the usual draws */
     isk_texture streak;            /* a sprite kind as a texture (align = velocity, size_range) */
-    /* ---- sub-emitters and trails (issue 14): effect_events.c, effect_trail.c ---- */
+    /* ---- sub-emitters and trails: effect_events.c, effect_trail.c ---- */
     fx_events pending;             /* a SUB group's events, born at the end of the frame */
     /* ---- end of sub-emitters and trails ---- */
 };
@@ -379,7 +379,7 @@ void fx_looks_describe(const fx_group *g, FILE *out);
 /* effect_texture.c: the draw of textured particles and streaks. */
 isk_status fx_draw_textures(isk_effect *e, isk_canvas *c, fx_group *g, const fx_band *b);
 
-/* ---- sub-emitters and trails (issue 14) ---------------------------------------
+/* ---- sub-emitters and trails ---------------------------------------
  * effect_stream.c: a stream's launcher and one birth, shared with the
  * sub-emitters' births (effect_events.c).  dv (NULL: none) is added to the
  * launch velocity before anything else reads it. */

@@ -17,14 +17,7 @@
  * and the blend mode are not recorded: they can change freely.  The
  * records hold 8 bytes a particle, only while the group rests.
  *
- * Measured on bench_layer.h's 10^6 dots at rest on their floor (two
- * copies of the effect in one process, one replaying and one drawing in
- * full, frames interleaved, medians of 31; 2026-12-05): the render (clear
- * and draw) 2.45 ms against 5.83 on one thread, 1.48-1.53 against
- * 3.61-3.65 on two; with the bands' faster clears and narrower copies
- * (effect_bands.c's replay_band), 1.33-1.34 ms on two threads against
- * 2.47-2.51 on one.  The replay alone takes 2.37 ms on one thread and
- * 1.21-1.24 a band on two (docs/architecture.md). */
+ * What it saves: docs/performance.md, "Replays at rest". */
 #include <stdlib.h>
 #include <string.h>
 

@@ -16,7 +16,7 @@
  * (omega then amplitude, then the phase with osc_random_phase; only with
  * oscillation), jitter (one, only in the thesis jitter mode).
  *
- * Moving emitters (issue 14): the emitter's path is position(t) = base +
+ * Moving emitters: the emitter's path is position(t) = base +
  * emitter_velocity*(t - t_base), computed directly at every birth time,
  * never accumulated, so a birth at time tb is placed around position(tb)
  * whatever the frame rate.  A live change of the position starts a segment

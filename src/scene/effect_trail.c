@@ -1,5 +1,5 @@
 /* SPDX-License-Identifier: MIT */
-/* Trails (issue 14): each particle of an emitter with trail = N keeps its
+/* Trails: each particle of an emitter with trail = N keeps its
  * last N positions in the store's trail column (a ring, newest at the
  * store's trail_head; it moves with its particle on cull and removal), and
  * is drawn, before the group's particles, as an anti-aliased ribbon through

@@ -33,9 +33,10 @@ void isk_fl_basis(double k, double t, double *e, double *d1, double *d2);
  * and phi2 = (z - 1 + e^-z)/z^2, eight terms each (the first left out is
  * below 3e-18 of the sum), in Estrin's form (pairs, then pairs of pairs: a
  * short dependency chain, since the root solve's steps wait for each
- * other), no expm1 and no division.  A bounce asked for this eight
- * times (five through isk_fl_cache): 11 ns a call, 18 when each waits for
- * the one before, against 20 and 36 with expm1 and its divisions.  Inline,
+ * other), no expm1 and no division: a bounce asks for this eight times
+ * (five through isk_fl_cache), and the series costs about half of expm1
+ * and its divisions (docs/performance.md, "Where the constants come
+ * from").  Inline,
  * and branch-free, so the walls' resting screen (rest_screen.h) runs it
  * on vector lanes with the same bits. */
 #define ISK_FL_SERIES_MAX 0.03125

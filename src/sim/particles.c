@@ -17,8 +17,9 @@ enum { ALIGN = 64 };
  * further 17 cache lines from the previous one.  Separate large allocations
  * come back 8 MiB (+4 KiB) apart, all at the same offset within their
  * 2 MiB regions; the stage loops then stream x[i], y[i], vx[i], vy[i] from
- * addresses that collide in DRAM banks and cache sets, which measured 1.8x
- * slower than the same loop over staggered arrays (bench_pipeline). */
+ * addresses that collide in DRAM banks and cache sets, and run much slower
+ * than over staggered arrays (docs/performance.md, "Where the constants
+ * come from"). */
 enum { STAGGER = 17 * ALIGN };
 
 static size_t round_up(size_t bytes)
@@ -44,9 +45,9 @@ static const column columns[] = {
     COL(color, isk_color, ISK_PARTICLES_COLOR),
     COL(osc_amp, double, ISK_PARTICLES_OSC),   COL(osc_phase, double, ISK_PARTICLES_OSC),
     COL(osc_omega, double, ISK_PARTICLES_OSC), COL(osc_offset, double, ISK_PARTICLES_OSC),
-    /* looks (issue 14) */
+    /* looks */
     COL(angle, double, ISK_PARTICLES_ANGLE),   COL(spin, double, ISK_PARTICLES_ANGLE),
-    /* ---- sub-emitters and trails (issue 14) ---- */
+    /* ---- sub-emitters and trails ---- */
     COL(hit, unsigned char, ISK_PARTICLES_HIT), {offsetof(isk_particles, trail), 0, ISK_PARTICLES_TRAIL},
     /* ---- end of sub-emitters and trails ---- */
 };
@@ -441,7 +442,7 @@ void isk_particles_clear(isk_particles *p)
         p->count = 0;
 }
 
-/* ---- sub-emitters and trails (issue 14) ---------------------------------------- */
+/* ---- sub-emitters and trails ---------------------------------------- */
 
 isk_status isk_particles_set_trail(isk_particles *p, int points)
 {

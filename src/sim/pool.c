@@ -12,23 +12,15 @@
 #include <unistd.h>
 
 /* The fewest items a thread takes at a time (fewer only at the end of a
- * job, or for a job of few items).  Large enough that each thread streams
- * through long runs of the store: with 4 blocks (1024 particles) the two
- * threads' runs interleaved finely, and 2 threads stepped 4*10^6 particles
- * only 1.3x faster than one; 64 blocks (16384 particles, tens of
- * microseconds of work) gave 1.7-1.8x in the same runs.  A claim takes
- * more while much is left (take_range), so the runs are longer still at
- * the start of a job and the shares even out at its end: against fixed
- * claims of 64 blocks, two threads stepped the falling 10^6 particles in
- * 1.63-1.74 ms instead of 1.81-1.92, 4*10^6 in 6.1-6.5 instead of 7.1-7.5
- * (2026-12-04).  Each thread starting on a range of its own (the same
- * blocks every frame, still in its caches) then gave 10^5 particles in
- * 0.215-0.267 ms instead of 0.230-0.285, 10^6 and 4*10^6 within 2 % (two
- * effects in one process, one stepped each way, medians of 41).  The
- * count rule in isk_pool_for still gives every thread at least four
- * chunks, and a job of few items (a draw's bands: one per thread) is
- * handed out one at a time, or the first thread to come would take them
- * all. */
+ * job, or for a job of few items): long enough that each thread streams
+ * through long runs of the store.  A claim takes more while much is left
+ * (take_range), so the runs are longer still at the start of a job and the
+ * shares even out at its end; each thread starts on a range of its own
+ * (the same blocks every frame, still in its caches).  The count rule in
+ * isk_pool_for still gives every thread at least four chunks, and a job of
+ * few items (a draw's bands: one per thread) is handed out one at a time,
+ * or the first thread to come would take them all.  The measures behind
+ * the numbers: docs/performance.md, "The pool's chunks". */
 enum { CHUNK = 64 };
 
 /* How long the caller waits awake for workers that are all running (then
@@ -255,10 +247,9 @@ void isk_pool_for(isk_pool *p, size_t n, isk_task_fn *fn, void *ctx)
     take_items(p, 0);
     /* When every worker has started the job, they end soon after the
      * caller (their last claims are a chunk each): waiting for them asleep
-     * would add the time this VM takes to run a woken thread again (60-90
-     * us).  A worker still asleep is waited for asleep: spinning then kept
-     * it from waking (it woke 210-320 us late instead of 13 us: the two
-     * virtual cores share a physical one at times). */
+     * would add the time the system takes to run a woken thread again.  A
+     * worker still asleep is waited for asleep: spinning then can keep it
+     * from waking where two virtual cores share a physical one. */
     if (atomic_load(&p->awake) == p->threads - 1)
         spin_until_zero(&p->running, CALLER_SPIN_ROUNDS);
     pthread_mutex_lock(&p->lock);

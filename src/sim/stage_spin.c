@@ -1,5 +1,5 @@
 /* SPDX-License-Identifier: MIT */
-/* The looks' spin stage (issue 14): each particle's angle turns by its own
+/* The looks' spin stage: each particle's angle turns by its own
  * angular speed, wrapped into [-pi, pi) so that a spin kept up for hours
  * keeps the precision of a small angle (see stage.h). */
 #include <math.h>
