@@ -1,12 +1,8 @@
 /* SPDX-License-Identifier: MIT */
-/* The effect runtime: lifecycle and the frame loop (see effect_internal.h
- * for what lives where).
- *
- * A frame, per group in definition order: the frame-start stages, then
- * substeps times the block runner over the store followed by the
- * substep-end stages.  The block runner is the one isk_system_step uses
- * (src/sim/stage.h), so a thesis scene and the C example that drives an
- * isk_system give identical bits by construction. */
+/* The effect runtime's lifecycle: create (check, copy, build every group,
+ * prewarm), reset, destroy, the workers, and the read-only views (see
+ * effect_internal.h for what lives where; the frame loop is
+ * effect_frame.c). */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -95,62 +91,6 @@ static isk_status populate(isk_effect *e, fx_group *g)
     return s;
 }
 
-static isk_status advance(isk_effect *e);
-
-/* Every clock at frame 0 of a frame length of `step`. */
-static void start_clocks(isk_effect *e, double step)
-{
-    e->clock = (fx_clock){0.0, 0, step};
-    for (int gi = 0; gi < e->ngroups; gi++)
-        e->groups[gi].clock = e->clock;
-    e->frame = 0;
-    e->time = 0.0;
-}
-
-/* The frame's simulated time changed (a live dt or speed_divisor): every
- * clock goes on from where it is now at the new rate. */
-static void rebase_clocks(isk_effect *e, double step)
-{
-    e->clock = (fx_clock){fx_clock_at(&e->clock, e->frame), e->frame, step};
-    for (int gi = 0; gi < e->ngroups; gi++) {
-        fx_group *g = &e->groups[gi];
-        const long f = e->frame + g->frame_offset;
-        g->clock = (fx_clock){fx_clock_at(&g->clock, f), f, step};
-    }
-}
-
-double fx_clock_at(const fx_clock *c, long frame) { return c->t0 + (double)(frame - c->f0) * c->step; }
-
-/* prewarm: the whole effect, every group built, runs the frames before
- * frame 0 that its prewarmed emitters ask for.  An emitter prewarmed by n
- * frames starts n frames before frame 0 (its clock at 0 then), a
- * sub-emitter with the emitters that feed it (fx_prewarm_offsets); every
- * other group, and the potentials, start at frame 0, so they stand still
- * meanwhile.  The children of events are released and the trails recorded
- * after each of these frames, as after any other, so frame 0 of an effect
- * prewarmed by T holds what frame T/dt holds without it. */
-static isk_status prewarm(isk_effect *e)
-{
-    const isk_effect_def *d = &e->def;
-    double *frames = calloc((size_t)(e->ngroups ? e->ngroups : 1), sizeof *frames);
-    if (!frames)
-        return ISK_ERR_NOMEM;
-    long most = 0;
-    fx_prewarm_offsets(d, frames); /* each bounded by the check (iskra/limits.h) */
-    for (int gi = 0; gi < e->ngroups; gi++) {
-        e->groups[gi].frame_offset = (long)frames[gi];
-        if ((long)frames[gi] > most)
-            most = (long)frames[gi];
-    }
-    free(frames);
-    isk_status s = ISK_OK;
-    e->frame = -most;
-    e->time = fx_clock_at(&e->clock, e->frame);
-    while (s == ISK_OK && e->frame < 0)
-        s = advance(e);
-    return s;
-}
-
 /* Builds all groups from the definition: the state right after create. */
 static isk_status build(isk_effect *e, isk_error *err)
 {
@@ -173,7 +113,7 @@ static isk_status build(isk_effect *e, isk_error *err)
         if ((s = fx_compile(e, g)) != ISK_OK)
             return isk_error_set(err, s, "emitter '%s': cannot compile: %s", em->name, isk_status_str(s));
     }
-    start_clocks(e, d->dt / d->speed_divisor);
+    fx_start_clocks(e, d->dt / d->speed_divisor);
     for (int gi = 0; gi < e->ngroups; gi++) {
         fx_group *g = &e->groups[gi];
         isk_status s = populate(e, g);
@@ -181,7 +121,7 @@ static isk_status build(isk_effect *e, isk_error *err)
             return isk_error_set(err, s, "emitter '%s': cannot create its particles: %s", g->def->name,
                                  isk_status_str(s));
     }
-    isk_status s = prewarm(e);
+    isk_status s = fx_prewarm(e);
     if (s != ISK_OK)
         return isk_error_set(err, s, "prewarm: %s", isk_status_str(s));
     if (d->click.at_start && d->click.after_frames == 0) {
@@ -318,153 +258,6 @@ isk_status isk_effect_reset(isk_effect *e)
     if (!e)
         return ISK_ERR_NULL;
     return build(e, NULL);
-}
-
-/* ---- the frame loop --------------------------------------------------------- */
-
-static isk_status run_steps(isk_effect *e, fx_group *g, const fx_step_kind *const *k, int n, double t0, double h)
-{
-    for (int i = 0; i < n; i++) {
-        isk_status s = k[i]->run(e, g, t0, h);
-        if (s != ISK_OK)
-            return s;
-    }
-    return ISK_OK;
-}
-
-/* Whether a group's update goes to the workers, from counts alone (no
- * clock: the same decision on every run): its particles times what its
- * stages declare they cost, a block at rest counting only the stages it
- * does not skip, against FX_UPDATE_MIN_WORK.  The bytes are the same
- * either way. */
-static double update_work(const fx_group *g)
-{
-    const size_t n = g->store.count;
-    const isk_pipeline *pl = &g->pipeline;
-    const int prefix = g->rests ? isk_pipeline_rest_prefix(pl) : 0;
-    size_t resting = prefix ? isk_rest_blocks(&g->rest, n, ISK_REST_X | ISK_REST_Y) * ISK_SIM_BLOCK : 0;
-    resting = resting < n ? resting : n;
-    return (double)(n - resting) * isk_pipeline_cost(pl, 0) + (double)resting * isk_pipeline_cost(pl, prefix);
-}
-
-static isk_status step_group(isk_effect *e, fx_group *g)
-{
-    const isk_effect_def *d = &e->def;
-    const int N = g->substeps;
-    const double h = d->dt / (double)N / d->speed_divisor;
-    const double time = fx_group_time(e, g); /* e->time unless a prewarm ran */
-    isk_status s = run_steps(e, g, g->frame_start, g->nframe_start, time, h * (double)N);
-    for (int j = 0; s == ISK_OK && j < N; j++) {
-        if (g->has_field)
-            fx_field_clock(g, time + h * j);
-        /* a multi-Coulomb explosion releases particles of the store as it goes */
-        isk_rest *rest = g->rests && !g->mc_active && !e->no_rest ? &g->rest : NULL;
-        if (!rest) /* every block steps: the states describe nothing after it */
-            isk_rest_forget(&g->rest, 0);
-        const int shared = g->parallel && isk_workers_count(&e->workers) > 1 && update_work(g) >= e->update_min_work;
-        const isk_run_context ctx = {shared ? &e->workers : NULL, rest};
-        g->shared_updates += shared;
-        isk_pipeline_run(&g->pipeline, &g->store, 0, g->store.count, h, &e->scratch, &ctx);
-        s = run_steps(e, g, g->substep_end, g->nsubstep_end, time + h * j, h);
-        if (e->scratch.nonfinite) { /* never kept or drawn: removed and counted (iskra/limits.h) */
-            size_t first;
-            g->removed_nonfinite += isk_store_remove_nonfinite(&g->store, &first);
-            isk_rest_forget(&g->rest, first);
-            e->scratch.nonfinite = 0;
-        }
-    }
-    if (g->mc_active)
-        isk_multi_coulomb_advance(&g->mc, h * (double)N);
-    return s;
-}
-
-/* A potential that switched itself off (its maximum distance) acts as zero
- * from that particle on; after the frame it leaves the lists. */
-static int lost_a_potential(const isk_effect *e, const fx_group *g)
-{
-    for (size_t k = 0; k < g->forces.npick; k++)
-        if (!e->pots[g->forces.pick[k]].enabled)
-            return 1;
-    return 0;
-}
-
-/* One frame of every group that has started (effect.c's prewarm runs the
- * frames before 0; isk_effect_step the others). */
-static isk_status advance(isk_effect *e)
-{
-    const isk_effect_def *d = &e->def;
-    const double frame_time = d->dt / d->speed_divisor;
-    if (frame_time != e->clock.step)
-        rebase_clocks(e, frame_time);
-    /* The potentials start at frame 0, as every group not prewarmed. */
-    const long stepped = e->frame;
-    const int started = stepped >= 0;
-    /* The thesis draws the potentials, then moves them: the move of the
-     * previous frame happens now, after that frame was rendered. */
-    if (started && e->last_frame_time != 0)
-        for (size_t k = 0; k < e->npots; k++)
-            isk_potential_move(&e->pots[k], e->last_frame_time);
-    size_t total = 0;
-    for (int gi = 0; gi < e->ngroups; gi++) {
-        fx_group *g = &e->groups[gi];
-        if (!fx_group_started(e, g))
-            continue;
-        isk_status s = step_group(e, g);
-        if (s != ISK_OK)
-            return s;
-        total += g->store.count;
-    }
-    for (int gi = 0; gi < e->ngroups; gi++)
-        if (lost_a_potential(e, &e->groups[gi])) {
-            isk_status s = fx_compile(e, &e->groups[gi]);
-            if (s != ISK_OK)
-                return s;
-        }
-    e->frame++;
-    e->time = fx_clock_at(&e->clock, e->frame);
-    /* The thesis's h stays unassigned when there are no particles: then its
-     * potentials do not move. */
-    if (started)
-        e->last_frame_time = total ? frame_time : 0.0;
-    /* sub-emitters' children, then the trails' newest points */
-    isk_status se = fx_events_release(e);
-    if (se != ISK_OK)
-        return se;
-    fx_trail_record(e, stepped);
-    if (d->click.at_start && d->click.after_frames > 0 && e->frame == d->click.after_frames)
-        return isk_effect_click(e, d->click.x, d->click.y);
-    return ISK_OK;
-}
-
-isk_status isk_effect_step(isk_effect *e)
-{
-    return e ? advance(e) : ISK_ERR_NULL;
-}
-
-isk_status isk_effect_step_render(isk_effect *e, isk_canvas *c)
-{
-    isk_status s = isk_effect_step(e);
-    return s != ISK_OK ? s : isk_effect_render(e, c);
-}
-
-isk_status isk_effect_run(isk_effect *e, isk_canvas *c, long frames)
-{
-    if (!e || !c)
-        return ISK_ERR_NULL;
-    if (frames < 0)
-        return ISK_ERR_RANGE;
-    if (c->width != e->def.width || c->height != e->def.height)
-        return ISK_ERR_SIZE;
-    isk_status s = ISK_OK;
-    if (e->def.clear) {
-        for (long i = 0; i < frames && s == ISK_OK; i++)
-            s = isk_effect_step(e);
-        return s != ISK_OK ? s : isk_effect_render(e, c);
-    }
-    isk_canvas_fill(c, e->def.background);
-    for (long i = 0; i < frames && s == ISK_OK; i++)
-        s = isk_effect_step_render(e, c);
-    return s;
 }
 
 isk_status isk_effect_render(isk_effect *e, isk_canvas *c)

@@ -10,17 +10,23 @@
  *   pipeline      the block runner's list (src/sim/stage.h), run over the
  *                 store every substep
  *   substep end   stages run after every substep (stream births, the cull)
- *   draw          the routine that draws the store, chosen once
+ *   draw          the draw kind that draws the store, chosen once
  *
- * The frame loop (effect.c) runs the lists; nothing in it asks which stages
- * exist.  Files, one job each:
- *   effect.c          lifecycle and the frame loop
+ * The frame loop (effect_frame.c) runs the lists; nothing in it asks which
+ * stages exist.  Files, one job each:
+ *   effect.c          lifecycle, workers, read-only views
+ *   effect_frame.c    the frame loop, the clocks, prewarm
  *   effect_check.c    validation of a definition
  *   effect_compile.c  definition -> lists, and describe
  *   effect_group.c    births: every source's particles enter through fx_adopt
  *   effect_live.c     changes while running: isk_effect_set / get, potentials
  *   effect_stream.c   when a stream's particles are born
- *   effect_render.c   drawing
+ *   effect_events.c   sub-emitters: deaths and bounces as events, their children
+ *   effect_render.c   a frame's drawing: drawings, deflectors, groups in order, potentials
+ *   effect_draws.c    how a group looks: ramps, styles, the draw kinds (a row each)
+ *   effect_bands.c    a draw shared out in bands (fast path: src/core/fast_paths.h)
+ *   effect_retain.c   a group at rest drawn from recorded blends (fast path)
+ *   effect_trail.c    trails: recorded after each frame, drawn first
  *   effect_def.c      building and copying definitions
  */
 #ifndef ISKRA_SCENE_EFFECT_INTERNAL_H
@@ -250,6 +256,12 @@ const unsigned char *fx_builtin_file(const char *path, size_t *size);
 
 /* effect.c */
 void fx_sort_draw_order(isk_effect *e);
+
+/* effect_frame.c: every clock at frame 0 of a frame of `step` seconds;
+ * the frames before frame 0 that the prewarmed emitters ask for, run on
+ * the built effect. */
+void fx_start_clocks(isk_effect *e, double step);
+isk_status fx_prewarm(isk_effect *e);
 
 /* effect_compile.c: (re)builds the group's lists from the definition and the
  * effect's live potentials; ISK_ERR_FULL if a list overflowed (a bug),
