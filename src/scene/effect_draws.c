@@ -8,6 +8,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "core/fast_paths.h"
 #include "effect_internal.h"
 #include "raster/circle_rows.h"
 #include "raster/clip.h"
@@ -127,12 +128,13 @@ static isk_status draw_styled_dots(isk_effect *e, isk_canvas *c, fx_group *g, co
     const isk_particles *p = &g->store;
     const isk_blend blend = g->def->blend;
     const int browser = g->def->draw == ISK_DRAW_DOT_BROWSER;
+    const int vary = fx_varies(g);
     const size_t n = b->list ? b->nlist : b->end;
     for (size_t k = b->list ? 0 : b->first; k < n; k++) {
         const size_t i = b->list ? b->list[k] : k;
         double X, Y, mult;
         screen_point(e, c, g, i, &X, &Y);
-        isk_color col = style(g, p, i, 1, &mult);
+        isk_color col = style(g, p, i, vary, &mult);
         if (browser)
             ISK__BLEND_DISPATCH(blend, isk__dot_browser_rows, c, b->r0, b->r1, X, Y, col, NULL);
         else
@@ -149,9 +151,15 @@ unsigned fx_dots_rule(const fx_group *g)
     return g->keep_on_canvas ? rule | ISK__BATCH_KEEP_ON_CANVAS : rule;
 }
 
-/* One colour for the whole group: the batched kernels (iskra/view.h). */
+static isk_status draw_styled_pixels(isk_effect *e, isk_canvas *c, fx_group *g, const fx_band *b);
+
+/* One colour for the whole group: the batched kernels (iskra/view.h).  The
+ * reference build draws it one dot or pixel at a time, as the styled draws
+ * do (the same bytes: tests/test_raster_fast.c). */
 static isk_status draw_dots(isk_effect *e, isk_canvas *c, fx_group *g, const fx_band *b)
 {
+    if (!ISK__FAST_BATCH)
+        return g->def->draw == ISK_DRAW_PIXEL ? draw_styled_pixels(e, c, g, b) : draw_styled_dots(e, c, g, b);
     const unsigned rule = fx_dots_rule(g);
     if (b->list)
         isk__draw_batch_list_rows(c, &e->view, b->list, b->nlist, g->store.x, g->store.y, g->def->color,
@@ -165,12 +173,13 @@ static isk_status draw_dots(isk_effect *e, isk_canvas *c, fx_group *g, const fx_
 static isk_status draw_styled_pixels(isk_effect *e, isk_canvas *c, fx_group *g, const fx_band *b)
 {
     const isk_particles *p = &g->store;
+    const int vary = fx_varies(g);
     const size_t n = b->list ? b->nlist : b->end;
     for (size_t k = b->list ? 0 : b->first; k < n; k++) {
         const size_t i = b->list ? b->list[k] : k;
         double X, Y, mult;
         screen_point(e, c, g, i, &X, &Y);
-        isk_color col = style(g, p, i, 1, &mult);
+        isk_color col = style(g, p, i, vary, &mult);
         if (X >= 0 && Y >= b->r0 && X < c->width && Y < b->r1)
             isk_draw_pixel(c, (int)X, (int)Y, col, g->def->blend);
     }
