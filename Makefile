@@ -110,7 +110,10 @@ endif
 # -ffp-contract=off: no fused multiply-add, so the same source gives the same
 # bits everywhere (the thesis trajectories are reproduced bit for bit).
 # Never fast-math (it reassociates and breaks bit-exactness).
-CSTD    := -std=c11 -D_POSIX_C_SOURCE=200809L
+# _FILE_OFFSET_BITS=64: 64-bit file offsets and inode numbers on 32-bit
+# systems too, where stat() otherwise fails (EOVERFLOW) for a file over
+# 2 GiB or on a file system with 64-bit inode numbers; no change on 64-bit.
+CSTD    := -std=c11 -D_POSIX_C_SOURCE=200809L -D_FILE_OFFSET_BITS=64
 CFLAGS_BASE := $(CSTD) $(OPT) -Wall -Wextra -Wpedantic -ffp-contract=off -fno-math-errno \
                -fPIC $(WFLAGS) $(SANFLAGS) -Iinclude -Isrc
 CFLAGS  ?=
