@@ -9,6 +9,8 @@
 #                  and integer-divide-by-zero too (build-clang/)
 #   make test NATIVE=1     built with -march=native (build-native/): same bits
 #   make test REFERENCE=1  every fast path compiled out (build-ref/): same bits
+#   make test M32=1        a 32-bit x86 build (build-m32/): same bits, and
+#                  every size and count checked where size_t has 32 bits
 #   make fuzz-smoke   every kept fuzz crasher and corpus file, then a short
 #                  fuzz run of each target (scene, png)
 #   make run        install missing packages, build the iskra tool, run the main demo
@@ -70,6 +72,33 @@ else ifeq ($(REFERENCE),1)
 BUILD   ?= build-ref
 SANFLAGS := -DISKRA_REFERENCE=1
 OPT     ?= -O2 $(DEBUG_INFO)
+else ifeq ($(M32),1)
+# A 32-bit x86 program (i386): where size_t, long and pointers have 32
+# bits, a limit, a shift or a product that assumed 64 shows up.  gcc's
+# multilib (-m32) with Debian's i386 libraries, which `make deps M32=1`
+# fetches into $(BUILD)/sysroot (tools/m32_sysroot.sh says why there and
+# not installed): found through pkg-config's sysroot, -isystem and -L, and
+# at run time through LD_LIBRARY_PATH, which make exports to the tests and
+# `make run` (an rpath would not do: libpulse, which SDL needs, carries a
+# RUNPATH of its own, and the loader then ignores the program's rpath for
+# libpulse's libraries).  By hand: LD_LIBRARY_PATH=$$(make -s m32-path M32=1).
+# Criterion's .pc names -dev packages the sysroot leaves out: its
+# fallback, -lcriterion.
+# SSE2 arithmetic (-mfpmath=sse), not the x87 unit's 80-bit registers, so
+# every double is rounded as on x86-64: the same reference images and
+# thesis trajectories, byte for byte.
+BUILD   ?= build-m32
+M32_ACTIVE := 1
+M32_SYSROOT = $(BUILD)/sysroot
+M32_ROOT = $(abspath $(M32_SYSROOT))/root
+M32_LIBDIRS = $(M32_ROOT)/usr/lib/i386-linux-gnu $(M32_ROOT)/lib/i386-linux-gnu \
+              $(M32_ROOT)/usr/lib/i386-linux-gnu/pulseaudio
+SANFLAGS = -m32 -msse2 -mfpmath=sse -isystem $(M32_ROOT)/usr/include -isystem $(M32_ROOT)/usr/include/i386-linux-gnu \
+           $(addprefix -L,$(M32_LIBDIRS)) $(foreach d,$(M32_LIBDIRS),-Wl,-rpath-link,$(d))
+export LD_LIBRARY_PATH = $(subst $(eval) ,:,$(strip $(M32_LIBDIRS)))
+OPT     ?= -O3 $(DEBUG_INFO) $(GCC_SCHEDULE)
+PKG_CONFIG = PKG_CONFIG_SYSROOT_DIR=$(M32_ROOT) \
+             PKG_CONFIG_LIBDIR=$(M32_ROOT)/usr/lib/i386-linux-gnu/pkgconfig:$(M32_ROOT)/usr/share/pkgconfig pkg-config
 else ifeq ($(NATIVE),1)
 # Opt-in: every loop compiled for this CPU's vector units.  The bits stay
 # those of the portable build (-ffp-contract=off: no FMA; no
@@ -121,7 +150,10 @@ endif
 # -ffp-contract=off: no fused multiply-add, so the same source gives the same
 # bits everywhere (the thesis trajectories are reproduced bit for bit).
 # Never fast-math (it reassociates and breaks bit-exactness).
-CSTD    := -std=c11 -D_POSIX_C_SOURCE=200809L
+# _FILE_OFFSET_BITS=64: 64-bit file offsets and inode numbers on 32-bit
+# systems too, where stat() otherwise fails (EOVERFLOW) for a file over
+# 2 GiB or on a file system with 64-bit inode numbers; no change on 64-bit.
+CSTD    := -std=c11 -D_POSIX_C_SOURCE=200809L -D_FILE_OFFSET_BITS=64
 CFLAGS_BASE := $(CSTD) $(OPT) -Wall -Wextra -Wpedantic -ffp-contract=off -fno-math-errno \
                -fPIC $(WFLAGS) $(SANFLAGS) -Iinclude -Isrc
 CFLAGS  ?=
@@ -135,12 +167,14 @@ ifneq ($(filter $(VALUE_CHANGING_FLAGS),$(ALL_CFLAGS) $(LDFLAGS)),)
 $(error $(filter $(VALUE_CHANGING_FLAGS),$(ALL_CFLAGS) $(LDFLAGS)) changes floating-point results: the reference images and the thesis trajectories are compared bit for bit)
 endif
 
-PKG_PNG  = $(shell pkg-config --cflags --libs libpng 2>/dev/null || echo -lpng)
-PKG_GIF  = $(shell pkg-config --cflags --libs libgif 2>/dev/null || echo -lgif)
-PKG_SDL_CFLAGS = $(shell pkg-config --cflags sdl2 2>/dev/null)
-PKG_SDL_LIBS   = $(shell pkg-config --libs sdl2 2>/dev/null || echo -lSDL2)
-PKG_INIH = $(shell pkg-config --cflags --libs inih 2>/dev/null || echo -linih)
-PKG_CRIT = $(shell pkg-config --cflags --libs criterion 2>/dev/null || echo -lcriterion)
+# pkg-config reads the .pc files of the build's target (M32=1: i386).
+PKG_CONFIG ?= pkg-config
+PKG_PNG  = $(shell $(PKG_CONFIG) --cflags --libs libpng 2>/dev/null || echo -lpng)
+PKG_GIF  = $(shell $(PKG_CONFIG) --cflags --libs libgif 2>/dev/null || echo -lgif)
+PKG_SDL_CFLAGS = $(shell $(PKG_CONFIG) --cflags sdl2 2>/dev/null)
+PKG_SDL_LIBS   = $(shell $(PKG_CONFIG) --libs sdl2 2>/dev/null || echo -lSDL2)
+PKG_INIH = $(shell $(PKG_CONFIG) --cflags --libs inih 2>/dev/null || echo -linih)
+PKG_CRIT = $(shell $(PKG_CONFIG) --cflags --libs criterion 2>/dev/null || echo -lcriterion)
 
 LIB_SRC  := $(filter-out src/io/sdl_%.c,$(wildcard src/*/*.c))
 SDL_SRC  := $(wildcard src/io/sdl_*.c)
@@ -362,7 +396,7 @@ man: $(TOOL)
 PEER_PKGS := g++ libcairo2-dev libpixman-1-dev libagg-dev libsdl2-gfx-dev
 PEER_CXX  ?= g++
 PEER_MODS := cairo pixman-1 libagg SDL2_gfx sdl2
-PEER_OK   := $(shell pkg-config --exists $(PEER_MODS) 2>/dev/null && command -v $(PEER_CXX) >/dev/null 2>&1 && echo 1)
+PEER_OK   := $(shell $(PKG_CONFIG) --exists $(PEER_MODS) 2>/dev/null && command -v $(PEER_CXX) >/dev/null 2>&1 && echo 1)
 PEER_BIN  := $(BUILD)/bench/bench_peers
 PEER_OBJ  := $(BUILD)/obj/bench/bench_peers/bench_peers.o $(BUILD)/obj/bench/bench_peers/peer_agg.o
 .PHONY: bench-peers peer-deps peer-run
@@ -373,7 +407,7 @@ bench-peers: peer-deps
 	@$(MAKE) --no-print-directory peer-run
 ifeq ($(PEER_OK),1)
 # the peers' headers are system headers: their warnings are not ours
-PEER_CFLAGS := $(patsubst -I%,-isystem %,$(shell pkg-config --cflags $(PEER_MODS)))
+PEER_CFLAGS := $(patsubst -I%,-isystem %,$(shell $(PKG_CONFIG) --cflags $(PEER_MODS)))
 $(BUILD)/obj/bench/bench_peers/bench_peers.o: bench/bench_peers/bench_peers.c
 	@mkdir -p $(dir $@)
 	$(call say,CC,$<)
@@ -386,7 +420,7 @@ $(PEER_BIN): $(PEER_OBJ) $(LIBA)
 	@mkdir -p $(dir $@)
 	$(call say,LD,$@)
 	$(Q)$(PEER_CXX) $(OPT) $(SANFLAGS) -o $@ $(PEER_OBJ) $(LIBA) $(LDFLAGS) \
-	    $(shell pkg-config --libs $(PEER_MODS)) $(LIBS_CORE)
+	    $(shell $(PKG_CONFIG) --libs $(PEER_MODS)) $(LIBS_CORE)
 peer-run: $(PEER_BIN)
 	@echo "== $(PEER_BIN)"; $(PEER_BIN)
 else
@@ -477,10 +511,22 @@ fuzz-smoke-run: $(FUZZ_BIN) $(FUZZ_PNG_BIN)
 	@$(call run_fuzzer,$(FUZZ_PNG_BIN),$(BUILD)/fuzz/smoke/png,$(BUILD)/fuzz/smoke,65536,$(FUZZ_SMOKE_TIME))
 
 # ---- dependencies (Debian) -------------------------------------------------
+# M32=1: the multilib compiler (installed) and Debian's i386 libraries
+# (fetched into the build's sysroot: tools/m32_sysroot.sh).
+M32_DEB_PKGS := gcc-multilib g++-multilib
+M32_RUNTIME  := libpng16-16 libgif7 libinih1 libcriterion3 libsdl2-2.0-0
+M32_DEV      := libpng-dev zlib1g-dev libgif-dev libinih-dev libcriterion-dev libsdl2-dev
 DEB_PKGS := build-essential pkg-config libpng-dev libgif-dev libsdl2-dev libcriterion-dev libinih-dev \
-            $(if $(filter clang,$(SANITIZE)),$(FUZZ_DEPS))
+            $(if $(filter clang,$(SANITIZE)),$(FUZZ_DEPS)) $(if $(M32_ACTIVE),$(M32_DEB_PKGS))
 deps:
 	@sh tools/deps.sh $(DEB_PKGS)
+ifeq ($(M32_ACTIVE),1)
+	@sh tools/m32_sysroot.sh $(M32_SYSROOT) $(M32_RUNTIME) -- $(M32_DEV)
+# The library path that runs build-m32's programs by hand (see M32=1 above).
+.PHONY: m32-path
+m32-path:
+	@echo $(LD_LIBRARY_PATH)
+endif
 
 # ---- install ---------------------------------------------------------------
 LIBDIR ?= $(PREFIX)/lib
@@ -530,10 +576,11 @@ uninstall:
 	rm -f $(DESTDIR)$(MANDIR)/man1/iskra.1 $(DESTDIR)$(MANDIR)/man5/iskra-scene.5
 
 clean:
-	rm -rf build build-san build-clang build-tsan build-native build-ref out
+	rm -rf build build-san build-clang build-tsan build-native build-ref build-m32 out
 
 # The comment atop this file, up to its first blank line.
 help:
 	@sed -n '2,/^$$/p' Makefile
+	@sed -n '4,/^#$$/p' Makefile
 
 -include $(shell find $(BUILD)/obj $(BUILD)/fuzz/obj -name '*.d' 2>/dev/null)

@@ -23,7 +23,45 @@
 
 #define PI 3.14159265358979323846
 
-__extension__ typedef __int128 i128;
+/* Signed 128-bit integers for the exact sums of products below, in two
+ * 64-bit words (two's complement): 32-bit targets have no __int128. */
+typedef struct i128 {
+    uint64_t hi, lo;
+} i128;
+
+static i128 i128_of(int64_t x)
+{
+    i128 r = {x < 0 ? UINT64_MAX : 0, (uint64_t)x};
+    return r;
+}
+
+static i128 i128_add(i128 a, i128 b)
+{
+    i128 r = {a.hi + b.hi, a.lo + b.lo};
+    r.hi += r.lo < a.lo; /* the carry */
+    return r;
+}
+
+/* a * b, exactly: the four 32-bit partial products of |a| |b|, then the sign. */
+static i128 i128_mul(int64_t a, int64_t b)
+{
+    uint64_t ua = a < 0 ? 0 - (uint64_t)a : (uint64_t)a, ub = b < 0 ? 0 - (uint64_t)b : (uint64_t)b;
+    uint64_t a0 = ua & 0xFFFFFFFFu, a1 = ua >> 32, b0 = ub & 0xFFFFFFFFu, b1 = ub >> 32;
+    uint64_t p00 = a0 * b0, p01 = a0 * b1, p10 = a1 * b0, p11 = a1 * b1;
+    uint64_t mid = (p00 >> 32) + (p01 & 0xFFFFFFFFu) + (p10 & 0xFFFFFFFFu);
+    i128 r = {p11 + (p01 >> 32) + (p10 >> 32) + (mid >> 32), mid << 32 | (p00 & 0xFFFFFFFFu)};
+    if ((a < 0) != (b < 0)) {
+        i128 neg = {~r.hi, ~r.lo};
+        r = i128_add(neg, i128_of(1));
+    }
+    return r;
+}
+
+static int i128_less(i128 a, i128 b)
+{
+    const uint64_t sign = (uint64_t)1 << 63;
+    return (a.hi ^ sign) < (b.hi ^ sign) || (a.hi == b.hi && a.lo < b.lo);
+}
 
 static const isk_blend MODES[3] = {ISK_BLEND_REPLACE, ISK_BLEND_OVER, ISK_BLEND_ADD};
 
@@ -96,16 +134,19 @@ static void ref_draw_texture(isk_canvas *c, const isk_texture *t, int frame, dou
     double ox = (i0 + 0.5) - cx, oy = (j0 + 0.5) - cy;
     int64_t U0 = ref_q(m00 * ox + m01 * oy + 0.5 * wl), V0 = ref_q(m10 * ox + m11 * oy + 0.5 * hl);
     int64_t DUX = ref_q(m00), DUY = ref_q(m01), DVX = ref_q(m10), DVY = ref_q(m11);
-    const i128 half = (i128)1 << 31, one = (i128)1 << 32;
+    const int64_t half = INT64_C(1) << 31, one = INT64_C(1) << 32;
+    const i128 u_end = i128_add(i128_mul(wl, one), i128_of(half)), v_end = i128_add(i128_mul(hl, one), i128_of(half));
     for (int j = 0; j < c->height; j++)
         for (int i = 0; i < c->width; i++) {
-            i128 U = (i128)U0 + (i128)(i - i0) * DUX + (i128)(j - j0) * DUY;
-            i128 V = (i128)V0 + (i128)(i - i0) * DVX + (i128)(j - j0) * DVY;
-            if (!(U >= -half && U < (i128)wl * one + half && V >= -half && V < (i128)hl * one + half))
+            i128 U = i128_add(i128_add(i128_of(U0), i128_mul(i - i0, DUX)), i128_mul(j - j0, DUY));
+            i128 V = i128_add(i128_add(i128_of(V0), i128_mul(i - i0, DVX)), i128_mul(j - j0, DVY));
+            if (i128_less(U, i128_of(-half)) || !i128_less(U, u_end) || i128_less(V, i128_of(-half)) ||
+                !i128_less(V, v_end))
                 continue;
-            i128 X = U + half, Y = V + half; /* the border is index 0 */
-            int tx = (int)(X / one) - 1, ty = (int)(Y / one) - 1;
-            uint32_t fx = (uint32_t)((X % one) >> 25), fy = (uint32_t)((Y % one) >> 25);
+            /* the border is index 0; X, Y >= 0 and below (size + 1) * 2^32 */
+            i128 X = i128_add(U, i128_of(half)), Y = i128_add(V, i128_of(half));
+            int tx = (int)(X.hi << 32 | X.lo >> 32) - 1, ty = (int)(Y.hi << 32 | Y.lo >> 32) - 1;
+            uint32_t fx = (uint32_t)((X.lo & 0xFFFFFFFFu) >> 25), fy = (uint32_t)((Y.lo & 0xFFFFFFFFu) >> 25);
             uint32_t S[4];
             for (int k = 0; k < 4; k++) {
                 uint32_t acc = ref_texel(t, frame, L, tx, ty)[k] * (128u - fx) * (128u - fy) +

@@ -140,7 +140,7 @@ static ISK__INLINE void isk__over_opaque_lanes(uint8_t *d, uint64_t p, uint32_t 
     uint32_t d32;
     memcpy(&d32, d, 4);
     __m128i D = _mm_unpacklo_epi8(_mm_cvtsi32_si128((int)d32), _mm_setzero_si128());
-    __m128i x = _mm_add_epi16(_mm_mullo_epi16(D, _mm_set1_epi16((short)inv)), _mm_cvtsi64_si128((long long)p));
+    __m128i x = _mm_add_epi16(_mm_mullo_epi16(D, _mm_set1_epi16((short)inv)), _mm_set_epi64x(0, (long long)p));
     x = _mm_mulhi_epu16(_mm_add_epi16(x, _mm_set1_epi16(128)), _mm_set1_epi16(257));
     d32 = (uint32_t)_mm_cvtsi128_si32(_mm_packus_epi16(x, x));
     memcpy(d, &d32, 4);

@@ -336,7 +336,7 @@ const isk_particles *isk_effect_particles(const isk_effect *e, int emitter)
     return e && emitter >= 0 && emitter < e->ngroups ? &e->groups[emitter].store : NULL;
 }
 
-size_t isk_effect_dropped(const isk_effect *e, int emitter)
+uint64_t isk_effect_dropped(const isk_effect *e, int emitter)
 {
     return e && emitter >= 0 && emitter < e->ngroups ? e->groups[emitter].dropped : 0;
 }

@@ -61,8 +61,8 @@ void fx_events_free(fx_group *g)
 static void drop_children(fx_group *c, size_t events)
 {
     size_t n = c->def->count;
-    size_t lost = events > 0 && n > SIZE_MAX / events ? SIZE_MAX : events * n;
-    c->dropped = lost > SIZE_MAX - c->dropped ? SIZE_MAX : c->dropped + lost;
+    uint64_t lost = events > 0 && n > UINT64_MAX / events ? UINT64_MAX : (uint64_t)events * n;
+    c->dropped = lost > UINT64_MAX - c->dropped ? UINT64_MAX : c->dropped + lost;
 }
 
 /* One event for the sub-emitter c. */
@@ -77,7 +77,7 @@ static isk_status push(fx_group *c, const isk_particles *p, size_t i, double t)
         size_t cap = q->cap ? 2 * q->cap : 64;
         if (cap > c->def->capacity)
             cap = c->def->capacity;
-        fx_event *a = realloc(q->ev, cap * sizeof *a);
+        fx_event *a = cap <= SIZE_MAX / sizeof *a ? realloc(q->ev, cap * sizeof *a) : NULL; /* 32-bit size_t */
         if (!a)
             return ISK_ERR_NOMEM;
         q->ev = a;
@@ -151,7 +151,7 @@ static isk_status release_group(isk_effect *e, fx_group *g)
         const double dv[2] = {em->inherit * ev->vx, em->inherit * ev->vy};
         const size_t born = em->count < room ? em->count : room;
         if (born < em->count) /* the rest find no room: counted in one addition */
-            g->dropped = em->count - born > SIZE_MAX - g->dropped ? SIZE_MAX : g->dropped + (em->count - born);
+            g->dropped = em->count - born > UINT64_MAX - g->dropped ? UINT64_MAX : g->dropped + (em->count - born);
         for (size_t j = 0; j < born; j++) {
             isk_status s = fx_birth(e, g, &l, age, ev->t, em->inherit > 0 ? dv : NULL);
             if (s != ISK_OK) {

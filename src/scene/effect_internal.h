@@ -175,7 +175,7 @@ struct fx_group {
     double origin;                 /* the k-th accumulator birth is due at origin + k/rate */
     uint64_t emitted;              /* accumulator births since origin */
     double next_burst;             /* time of the next burst */
-    size_t dropped;                /* spawns lost to a full pool */
+    uint64_t dropped;              /* spawns lost to a full pool (saturates) */
     size_t removed_nonfinite;      /* particles removed because their state went non-finite */
 
     /* motion (effect_stream.c, src/sim/stage_field.c) */

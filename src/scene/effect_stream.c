@@ -283,8 +283,8 @@ isk_status fx_birth(isk_effect *e, fx_group *g, const fx_launcher *l, double age
 /* Births lost to a full pool are counted, not looped over: n more of them. */
 static void drop(fx_group *g, double n)
 {
-    double room = (double)(SIZE_MAX - g->dropped);
-    g->dropped = n >= room ? SIZE_MAX : g->dropped + (size_t)n;
+    double room = (double)(UINT64_MAX - g->dropped);
+    g->dropped = n >= room ? UINT64_MAX : g->dropped + (uint64_t)n;
 }
 
 /* Places left in the pool. */

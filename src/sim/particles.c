@@ -81,20 +81,28 @@ static void free_arrays(isk_particles *p)
     p->block = NULL;
 }
 
-/* The bytes of one block of arrays for `cap` particles. */
+/* The bytes of one block of arrays for `cap` particles; 0 when they are
+ * more than half of what size_t counts (a 32-bit system: 2^28 particles
+ * with a trail of 64 points would need 2^38 bytes, which the product would
+ * wrap to a small number). */
 static size_t block_bytes(size_t cap, unsigned flags, int trail_len)
 {
     size_t total = ALIGN;
     for (int k = 0; k < NCOLUMNS; k++)
-        if (!columns[k].flag || (flags & columns[k].flag))
-            total += round_up(cap * elem_of(&columns[k], trail_len)) + STAGGER;
+        if (!columns[k].flag || (flags & columns[k].flag)) {
+            size_t elem = elem_of(&columns[k], trail_len);
+            if (elem && (total > SIZE_MAX / 2 || cap > (SIZE_MAX / 2 - total) / elem))
+                return 0;
+            total += round_up(cap * elem) + STAGGER;
+        }
     return round_up(total);
 }
 
 /* Lays the arrays of `cap` particles out in one block (NULL on failure). */
 static void *alloc_arrays(isk_particles *n, size_t cap, unsigned flags)
 {
-    unsigned char *block = aligned_alloc(ALIGN, block_bytes(cap, flags, n->trail_len));
+    size_t bytes = block_bytes(cap, flags, n->trail_len);
+    unsigned char *block = bytes ? aligned_alloc(ALIGN, bytes) : NULL;
     if (!block)
         return NULL;
     size_t off = 0;
@@ -156,7 +164,8 @@ size_t isk_particles_bytes_trail(size_t count, unsigned flags, int points)
     }
     if (cap > ISK_PARTICLES_MAX)
         cap = ISK_PARTICLES_MAX;
-    return block_bytes(cap, flags, points) + (prev ? block_bytes(prev, flags, points) : 0);
+    size_t now = block_bytes(cap, flags, points), before = prev ? block_bytes(prev, flags, points) : 0;
+    return !now || (prev && !before) || before > SIZE_MAX - now ? 0 : now + before;
 }
 
 isk_status isk_particles_reserve(isk_particles *p, size_t capacity)

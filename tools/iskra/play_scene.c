@@ -3,6 +3,7 @@
  * speed, click mode, the first potential selected, start paused), after a
  * reset, and its frames (stepping, drawing, the cost per particle-step for
  * the integrator table and the charts). */
+#include <limits.h>
 #include <string.h>
 
 #include "play.h"
@@ -66,6 +67,8 @@ void play_simulate(player *p, int steps)
     }
     /* Cost per particle and substep of the stepping alone (not drawing). */
     p->update_ms = p->update_ms > 0 ? 0.9 * p->update_ms + 0.1 * seconds * 1000.0 : seconds * 1000.0;
-    long particle_steps = (long)particles * d->substeps * steps;
-    play_charts_sample(p, particle_steps > 0 ? seconds / (double)particle_steps : 0.0, particle_steps);
+    /* in double: a million particles' substeps pass a 32-bit long's 2^31 */
+    const double particle_steps = (double)particles * d->substeps * steps;
+    play_charts_sample(p, particle_steps > 0 ? seconds / particle_steps : 0.0,
+                       particle_steps < (double)LONG_MAX ? (long)particle_steps : LONG_MAX);
 }

@@ -129,11 +129,15 @@ int scene_args_take(scene_args *a, int argc, char **argv, int *i)
         int shift = *end == 'K' || *end == 'k' ? 10 : *end == 'M' || *end == 'm' ? 20 : *end == 'G' || *end == 'g' ? 30 : 0;
         if (shift)
             end++;
-        if (r < 0 || end == v || *end || errno || v[0] == '-' || v[0] == '+' || b == 0 ||
-            b > (unsigned long long)(SIZE_MAX >> shift)) {
+        if (r < 0 || end == v || *end || errno || v[0] == '-' || v[0] == '+' || b == 0) {
             if (r > 0)
                 fprintf(stderr, "iskra %s: --max-memory: expected a size in bytes such as 512M or 8G, got \"%s\"\n",
                         a->cmd, v);
+            return -1;
+        }
+        if (b > (unsigned long long)(SIZE_MAX >> shift)) { /* 4G and more on a 32-bit system */
+            fprintf(stderr, "iskra %s: --max-memory: %s is more than this program can address (at most %zu bytes)\n",
+                    a->cmd, v, (size_t)SIZE_MAX);
             return -1;
         }
         a->max_memory = (size_t)b << shift;
@@ -162,7 +166,8 @@ void scene_args_help(FILE *f)
                "  --threads N      threads to step on, 1..256 (default: ISKRA_THREADS, else every core;\n"
                "                   the result is the same for every number)\n"
                "  --max-memory B   the most memory the scene may take with every pool full, in bytes\n"
-               "                   or with K, M, G (default 4G); a scene that could need more is refused\n");
+               "                   or with K, M, G (default %zuG); a scene that could need more is refused\n",
+            ISK_EFFECT_DEFAULT_MAX_MEMORY >> 30);
 }
 
 /* What the scene shows besides its background: a drawing, a deflector
