@@ -22,6 +22,7 @@
 #include "iskra/scene.h"
 #include "scene/effect_internal.h" /* band_min_work */
 #include "iskra/texture.h"
+#include "iskra/texture_png.h"
 #include "key_case.h"
 #include "scene_text.h"
 #include "tool_cli.h"

@@ -15,6 +15,7 @@
 #include <unistd.h>
 
 #include "effect_internal.h"
+#include "iskra/texture_png.h" /* for now: the loader takes it over */
 
 const char *const isk_align_names[ISK_ALIGN_COUNT] = {"none", "velocity"};
 
