@@ -41,6 +41,7 @@ void isk_effect_def_free(isk_effect_def *d)
         return;
     for (int i = 0; d->drawings && i < d->ndrawings; i++)
         free(d->drawings[i].points);
+    fx_def_textures_free(d);
     free(d->forces);
     free(d->deflectors);
     free(d->emitters);
@@ -242,6 +243,8 @@ isk_status fx_def_copy(isk_effect_def *dst, const isk_effect_def *src)
     for (int i = 0; ok && dst->drawings && i < dst->ndrawings; i++)
         dst->drawings[i].points = dup_array(src->drawings[i].points, (size_t)src->drawings[i].npoints * 2,
                                             sizeof(double), &ok);
+    if (fx_def_textures_copy(dst, src) != ISK_OK) /* none shared either way */
+        ok = 0;
     if (!ok) {
         if (!dst->drawings)
             dst->ndrawings = 0;

@@ -244,9 +244,12 @@ size_t fx_emitter_memory(const isk_emitter_def *e);
 /* The emitter's particles sway (they need the store's oscillation columns). */
 int fx_emitter_oscillates(const isk_emitter_def *em);
 
-/* scene_builtin.c: a file the built-in scenes use (scenes/textures/NAME.png,
- * embedded with them), by the path they name it with; NULL if none. */
-const unsigned char *fx_builtin_file(const char *path, size_t *size);
+/* effect_def_textures.c: the definition's textures (isk_effect_def.textures),
+ * checked, copied (dst's arrays are set: free with isk_effect_def_free
+ * even on ISK_ERR_NOMEM), freed. */
+isk_status fx_def_textures_check(const isk_effect_def *d, char *why, size_t n);
+isk_status fx_def_textures_copy(isk_effect_def *dst, const isk_effect_def *src);
+void fx_def_textures_free(isk_effect_def *d);
 
 /* effect.c */
 void fx_sort_draw_order(isk_effect *e);
@@ -360,21 +363,15 @@ int fx_looks_spins(const isk_emitter_def *em);
 /* New particles [from, count): angle, spin, size, colour (after every other
  * draw of their birth; a draw only where a range or color_pick asks). */
 void fx_looks_adopt(fx_group *g, size_t from);
-/* The emitter's texture loaded (through the effect's cache) or its streak
- * baked, so the draw can choose effect_texture.c; messages name the path. */
+/* The emitter's texture made from the definition's pixels (through the
+ * effect's cache) or its streak baked, so the draw can choose
+ * effect_texture.c; messages name the texture.  No file is read. */
 isk_status fx_looks_prepare(isk_effect *e, fx_group *g, isk_error *err);
 void fx_looks_free(fx_group *g);
 /* Adds the columns a live change needs; ISK_ERR_NOMEM. */
 isk_status fx_looks_live(fx_group *g);
 /* What spans the looks' keys: NULL, or the key at fault with why. */
 const char *fx_looks_check(const isk_emitter_def *em, char *why, size_t n);
-/* The parser's part: a relative texture path made relative to the scene
- * file's directory (scene_name: the file's path), then the file's header
- * read and the grid checked against its size.  Messages name the path;
- * *key is the key at fault (texture, or texture_grid when it does not
- * divide the image). */
-isk_status fx_looks_find_texture(isk_emitter_def *em, const char *scene_name, const char **key, char *why,
-                                 size_t n);
 void fx_looks_describe(const fx_group *g, FILE *out);
 /* effect_texture.c: the draw of textured particles and streaks. */
 isk_status fx_draw_textures(isk_effect *e, isk_canvas *c, fx_group *g, const fx_band *b);
