@@ -119,8 +119,6 @@ static void rebase_clocks(isk_effect *e, double step)
     }
 }
 
-double fx_clock_at(const fx_clock *c, long frame) { return c->t0 + (double)(frame - c->f0) * c->step; }
-
 /* prewarm: the whole effect, every group built, runs the frames before
  * frame 0 that its prewarmed emitters ask for.  An emitter prewarmed by n
  * frames starts n frames before frame 0 (its clock at 0 then), a

@@ -17,7 +17,9 @@
  *   effect.c          lifecycle and the frame loop
  *   effect_check.c    validation of a definition
  *   effect_compile.c  definition -> lists, and describe
- *   effect_group.c    births: every source's particles enter through fx_adopt
+ *   effect_group.c    explosions, their release, the cull
+ *   effect_adopt.c    births: every source's particles enter through fx_adopt
+ *   effect_clock.c    the time of a frame, a group's time
  *   effect_live.c     changes while running: isk_effect_set / get, potentials
  *   effect_stream.c   when a stream's particles are born
  *   effect_render.c   drawing
@@ -45,7 +47,8 @@ typedef struct fx_group fx_group;
  * 30 of 1/30 s.  The step is the frame's simulated time (dt /
  * speed_divisor); when a live change alters it, the clock is rebased (t0:
  * the time now, f0: this frame), so the time already elapsed is never
- * rescaled and the clock only moves forward (effect.c). */
+ * rescaled and the clock only moves forward (effect.c; the clocks are read
+ * in effect_clock.c). */
 typedef struct fx_clock {
     double t0;
     long f0;
@@ -263,8 +266,8 @@ void fx_describe_group(const isk_effect *e, const fx_group *g, FILE *out);
 
 /* effect_group.c */
 uint64_t fx_group_seed(uint64_t seed, int index);
-/* New particles [from, count) take the emitter's lifetime, then their
- * oscillation state: every source's particles go through here. */
+/* effect_adopt.c: new particles [from, count) take the emitter's lifetime,
+ * then their oscillation state: every source's particles go through here. */
 void fx_adopt(isk_effect *e, fx_group *g, size_t from);
 isk_status fx_fire_explosion(isk_effect *e, fx_group *g, isk_explosion kind, double cx, double cy, size_t count,
                              isk_kick_target kick);
@@ -276,8 +279,8 @@ extern const fx_step_kind fx_step_cull;       /* substep end: age >= life */
 void fx_stream_reset(fx_group *g, double time);
 extern const fx_step_kind fx_step_spawn;      /* substep end: births in (t0, t0 + h] */
 extern const fx_step_kind fx_step_carry;      /* substep end, before spawn: local space */
-/* The group's clock at the current frame: the effect's time, plus the
- * frames a prewarm ran before frame 0. */
+/* effect_clock.c: the group's clock at the current frame: the effect's
+ * time, plus the frames a prewarm ran before frame 0. */
 double fx_group_time(const isk_effect *e, const fx_group *g);
 /* The group's clock has started: its emitter is prewarmed at least as far
  * back as the effect's frame (always true from frame 0 on). */

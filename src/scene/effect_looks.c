@@ -17,8 +17,6 @@
 
 #include "effect_internal.h"
 
-const char *const isk_align_names[ISK_ALIGN_COUNT] = {"none", "velocity"};
-
 #define PI 3.14159265358979323846
 #define TWO_PI 6.28318530717958647692
 /* The side of the texture a sprite kind is baked into for streaks: drawn
