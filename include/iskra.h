@@ -16,6 +16,7 @@
  *   iskra/sinlut.h   sine lookup table     iskra/gradient.h  baked colour/scalar ramps
  *   iskra/sprite.h   baked round sprites   iskra/deflector.h  bouncing segments
  *   iskra/texture.h  image sprites: scaled, rotated, tinted, sprite-sheet frames
+ *   iskra/texture_png.h  textures from PNG files and bytes
  *   iskra/shape.h    spawn shapes, velocity generators
  *   iskra/timestep.h fixed-step accumulator  iskra/effect.h  whole effects (stage lists)
  *   iskra/tasks.h    an effect's work on your own job system
@@ -65,6 +66,7 @@
 #include "iskra/texture.h"
 #include "iskra/view.h"
 #include "iskra/png.h"
+#include "iskra/texture_png.h"
 #include "iskra/vec2.h"
 #include "iskra/particles.h"
 #include "iskra/forces.h"

@@ -1,5 +1,5 @@
 /* SPDX-License-Identifier: MIT */
-/* The looks of a particle (issue 14): rotation, spin, align, size_range,
+/* The looks of a particle: rotation, spin, align, size_range,
  * color_pick, texture, texture_grid, texture_fps.  Per key: bytes differ
  * with it, equal at its default, bad values refused with FILE:LINE and
  * exit 2 (tests/key_case.h); then what each key means, in numbers: a
@@ -22,6 +22,7 @@
 #include "iskra/scene.h"
 #include "scene/effect_internal.h" /* band_min_work */
 #include "iskra/texture.h"
+#include "iskra/texture_png.h"
 #include "key_case.h"
 #include "scene_text.h"
 #include "tool_cli.h"
@@ -456,7 +457,7 @@ Test(looks, the_same_bytes_on_any_number_of_threads, .timeout = 120)
         isk_canvas_free(&c[k]);
 }
 
-/* The path is the scene file's directory's; a C definition's is as given. */
+/* The path is the scene file's directory's. */
 Test(looks, texture_paths_are_relative_to_the_scene_file)
 {
     isk_effect_def d;
@@ -472,22 +473,7 @@ Test(looks, texture_paths_are_relative_to_the_scene_file)
     cr_assert(strstr(err.message, "x.ini:3: ") == err.message, "%s", err.message);
     cr_assert_not_null(strstr(err.message, "textures/arrows.png"), "%s", err.message);
 
-    /* C: as given; a missing file names it and the emitter at create */
-    isk_effect_def_init(&d);
-    isk_emitter_def *e = isk_effect_def_add_emitter(&d, "e");
-    cr_assert_not_null(e);
-    snprintf(e->texture, sizeof e->texture, "no/such.png");
-    isk_effect *fx;
-    cr_assert_neq(isk_effect_create(&fx, &d, &err), ISK_OK);
-    cr_assert_not_null(strstr(err.message, "emitter 'e'"), "%s", err.message);
-    cr_assert_not_null(strstr(err.message, "no/such.png"), "%s", err.message);
-    snprintf(e->texture, sizeof e->texture, TEX);
-    e->texture_grid = (isk_vec2){3, 1};
-    cr_assert_neq(isk_effect_create(&fx, &d, &err), ISK_OK);
-    e->texture_grid = (isk_vec2){4, 2};
-    cr_assert_eq(isk_effect_create(&fx, &d, &err), ISK_OK, "%s", err.message);
-    isk_effect_destroy(fx);
-    isk_effect_def_free(&d);
+    /* a C definition's paths: tests/test_texture_def.c */
 }
 
 /* The committed sheet is tools/looks_texture.h's drawing. */

@@ -70,10 +70,18 @@ static int same_definition(const isk_effect_def *a, const isk_effect_def *b)
     x.deflectors = y.deflectors = NULL;
     x.emitters = y.emitters = NULL;
     x.drawings = y.drawings = NULL;
+    x.textures = y.textures = NULL;
     if (memcmp(&x, &y, sizeof x) != 0) {
         cr_log_error("the [scene], [view], [bounds] or [click] fields differ");
         return 0;
     }
+    /* the textures the loader read: the same names and pixels */
+    for (int i = 0; i < a->ntextures; i++)
+        if (strcmp(a->textures[i].name, b->textures[i].name) ||
+            !isk_canvas_equal(&a->textures[i].pixels, &b->textures[i].pixels)) {
+            cr_log_error("texture %d differs", i);
+            return 0;
+        }
     for (int i = 0; i < a->nforces; i++)
         if (!same_item(&a->forces[i], &b->forces[i], sizeof *a->forces, offsetof(isk_force_def, line), "force", i))
             return 0;

@@ -19,6 +19,7 @@
 #include "iskra/rng.h"
 #include "canvas_pair.h"
 #include "iskra/texture.h"
+#include "iskra/texture_png.h"
 #include "raster/texture_rows.h"
 
 #define PI 3.14159265358979323846
@@ -803,4 +804,98 @@ Test(texture_file, cache_loads_each_file_once)
     cr_assert_eq(isk_texture_cache_create(NULL, 4), ISK_ERR_NULL);
     remove(a);
     remove(b);
+}
+
+/* The image rules and their messages live in the texture module; the PNG
+ * readers (src/io) check a file's header by them before decoding. */
+Test(texture_file, the_size_rules_name_the_texture)
+{
+    isk_error err;
+    cr_assert_eq(isk_texture_check_size("t.png", 64, 32, 4, 2, &err), ISK_OK);
+    cr_assert_eq(isk_texture_check_size("t.png", 64, 32, 3, 2, &err), ISK_ERR_RANGE);
+    cr_assert(strstr(err.message, "t.png") && strstr(err.message, "64 x 32") && strstr(err.message, "3 x 2"), "%s",
+              err.message);
+    cr_assert_eq(isk_texture_check_size("t.png", 64, 32, 0, 1, &err), ISK_ERR_RANGE);
+    cr_assert_eq(isk_texture_check_size("t.png", 64, 32, 1, ISK_TEXTURE_MAX_GRID + 1, &err), ISK_ERR_RANGE);
+    cr_assert_eq(isk_texture_check_size("t.png", ISK_TEXTURE_MAX_DIM + 1, 1, 1, 1, &err), ISK_ERR_SIZE);
+    cr_assert(strstr(err.message, "t.png") && strstr(err.message, "4096"), "%s", err.message);
+    cr_assert_eq(isk_texture_check_size("t.png", 0, 5, 1, 1, &err), ISK_ERR_SIZE);
+    cr_assert_eq(isk_texture_check_size(NULL, 8, 8, 1, 1, &err), ISK_ERR_NULL);
+    cr_assert_eq(isk_texture_check_size("t.png", 8, 8, 1, 1, NULL), ISK_OK);
+}
+
+/* A texture's pixels read from a PNG file or bytes: the header is checked
+ * before decoding, and both give the file's canvas. */
+Test(texture_file, image_read_gives_the_files_pixels)
+{
+    cr_assert(system("mkdir -p out") == 0);
+    char path[256], big[256];
+    tmp_path(path, sizeof path, "pixels.png");
+    tmp_path(big, sizeof big, "pixels_wide.png");
+    write_png(path, 24, 8);
+    write_png(big, ISK_TEXTURE_MAX_DIM + 2, 1);
+    isk_canvas want, img;
+    isk_error err;
+    cr_assert_eq(isk_png_read(&want, path, &err), ISK_OK, "%s", err.message);
+    cr_assert_eq(isk_texture_image_read(&img, path, &err), ISK_OK, "%s", err.message);
+    cr_assert(isk_canvas_equal(&img, &want));
+    isk_canvas_free(&img);
+
+    FILE *f = fopen(path, "rb");
+    cr_assert_not_null(f);
+    static unsigned char buf[1 << 16];
+    size_t n = fread(buf, 1, sizeof buf, f);
+    fclose(f);
+    cr_assert_eq(isk_texture_image_read_memory(&img, buf, n, "bytes", &err), ISK_OK, "%s", err.message);
+    cr_assert(isk_canvas_equal(&img, &want));
+    isk_canvas_free(&img);
+    cr_assert_neq(isk_texture_image_read_memory(&img, buf, n / 2, "half", &err), ISK_OK);
+    cr_assert(strstr(err.message, "half") && img.pixels == NULL, "%s", err.message);
+
+    cr_assert_eq(isk_texture_image_read(&img, big, &err), ISK_ERR_SIZE);
+    cr_assert(strstr(err.message, big) && strstr(err.message, "4096") && img.pixels == NULL, "%s", err.message);
+    cr_assert_eq(isk_texture_image_read(&img, "out/no_such_texture.png", &err), ISK_ERR_IO);
+    cr_assert(strstr(err.message, "out/no_such_texture.png"), "%s", err.message);
+    cr_assert_eq(isk_texture_image_read(&img, NULL, &err), ISK_ERR_NULL);
+    cr_assert_eq(isk_texture_image_read(NULL, path, NULL), ISK_ERR_NULL);
+    cr_assert_eq(isk_texture_image_read_memory(&img, NULL, 4, "x", &err), ISK_ERR_NULL);
+    cr_assert_eq(isk_texture_check_file(path, 5, 1, &err), ISK_ERR_RANGE);
+    cr_assert_eq(isk_texture_check_file(path, 3, 2, &err), ISK_OK, "%s", err.message);
+    isk_canvas_free(&want);
+    remove(path);
+    remove(big);
+}
+
+/* The cache made from pixels: a texture per (name, grid), made once, the
+ * same as isk_texture_from_canvas; refusals are not kept. */
+Test(texture_file, cache_from_a_canvas_makes_each_once)
+{
+    isk_canvas img;
+    cr_assert_eq(isk_canvas_init(&img, 16, 8), ISK_OK);
+    for (int y = 0; y < 8; y++)
+        for (int x = 0; x < 16; x++)
+            memcpy(isk_canvas_at(&img, x, y), (uint8_t[4]){(uint8_t)(x * 15), (uint8_t)(y * 30), 7, 200}, 4);
+    isk_texture_cache *cache;
+    cr_assert_eq(isk_texture_cache_create(&cache, 2), ISK_OK);
+    const isk_texture *t1, *t2, *t3;
+    isk_error err;
+    cr_assert_eq(isk_texture_cache_get_canvas(cache, "img", &img, 2, 1, &t1, &err), ISK_OK, "%s", err.message);
+    cr_assert_eq(isk_texture_cache_get_canvas(cache, "img", &img, 2, 1, &t2, &err), ISK_OK);
+    cr_assert_eq(t1, t2);
+    cr_assert_eq(isk_texture_cache_loads(cache), 1);
+    isk_texture want;
+    cr_assert_eq(isk_texture_from_canvas(&want, &img, 2, 1), ISK_OK);
+    cr_assert(want.bytes == t1->bytes && !memcmp(want.texels, t1->texels, want.bytes));
+    isk_texture_free(&want);
+    t3 = t1;
+    cr_assert_eq(isk_texture_cache_get_canvas(cache, "img", &img, 3, 1, &t3, &err), ISK_ERR_RANGE);
+    cr_assert(strstr(err.message, "img") && strstr(err.message, "16 x 8"), "%s", err.message);
+    cr_assert_eq(t3, t1, "*out untouched on error");
+    cr_assert_eq(isk_texture_cache_count(cache), 1, "a refused texture is not kept");
+    cr_assert_eq(isk_texture_cache_get_canvas(cache, "img", NULL, 1, 1, &t3, &err), ISK_ERR_NULL);
+    cr_assert_eq(isk_texture_cache_get_canvas(cache, NULL, &img, 1, 1, &t3, &err), ISK_ERR_NULL);
+    cr_assert_eq(isk_texture_cache_get_canvas(cache, "img", &img, 1, 1, &t3, &err), ISK_OK);
+    cr_assert_eq(isk_texture_cache_get_canvas(cache, "other", &img, 1, 1, &t3, &err), ISK_ERR_FULL);
+    isk_texture_cache_destroy(cache);
+    isk_canvas_free(&img);
 }

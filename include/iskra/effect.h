@@ -88,6 +88,7 @@ extern "C" {
 #define ISK_EFFECT_MAX_DEFLECTORS 256
 #define ISK_EFFECT_MAX_EMITTERS 64
 #define ISK_EFFECT_MAX_DRAWINGS 64
+#define ISK_EFFECT_MAX_TEXTURES 64
 /* Per emitter: the store's own bound (2^28); what memory allows is the
  * memory budget's to say (max_memory, isk_effect_def_memory). */
 #define ISK_EFFECT_MAX_PARTICLES 268435456u
@@ -321,8 +322,9 @@ typedef struct isk_emitter_def {
     double size_range;         /* size = size + U*size_range, world units (the size column) */
     isk_color_ramp color_pick; /* n > 0: base colour = these stops at a uniform t at birth, multiplied
                                   channel by channel by colour_over_life (div255(a*b)) */
-    char texture[ISK_TEXTURE_PATH_MAX]; /* "": none; else a PNG drawn as the sprite (the parser makes
-                                  a relative path relative to the scene file; C: as given) */
+    char texture[ISK_TEXTURE_PATH_MAX]; /* "": none; else the name of the definition's texture drawn
+                                  as the sprite (isk_effect_def.textures): a scene's PNG path, made
+                                  relative to the scene file and read by the loader */
     isk_vec2 texture_grid;     /* cols, rows of a sprite sheet (whole numbers 1..256; default 1, 1) */
     double texture_fps;        /* 0: the frames play once over the life, floor(t*frames); > 0: at this
                                   rate of age, wrapping */
@@ -353,6 +355,17 @@ typedef struct isk_emitter_def {
     double trail_fade;         /* 0..1: alpha at the oldest point is colour alpha * (1 - trail_fade) */
     /* ---- end of sub-emitters and trails ---- */
 } isk_emitter_def;
+
+/* An image the emitters draw as their particles' texture, held by the
+ * definition under the name their `texture` key gives.  Creating an effect
+ * makes each emitter's texture from these pixels, so it opens no file: the
+ * scene loader reads the PNGs a scene names (iskra/scene.h,
+ * isk_scene_load_textures for a definition filled in C), or a program
+ * gives pixels with isk_effect_def_add_texture. */
+typedef struct isk_texture_image {
+    char name[ISK_TEXTURE_PATH_MAX]; /* what an emitter's `texture` names (a scene's: the resolved path) */
+    isk_canvas pixels;               /* straight RGBA, owned by the definition (isk_effect_def_free) */
+} isk_texture_image;
 
 /* Static drawings (the triangles of figures 1-8, labels): drawn each frame
  * before the particles. */
@@ -438,6 +451,8 @@ typedef struct isk_effect_def {
     isk_bounds bounds;         /* sides == 0: no walls */
     isk_emitter_def *emitters;     int nemitters;
     isk_drawing_def *drawings;     int ndrawings;
+    isk_texture_image *textures;   int ntextures;  /* not scene keys: the images the emitters'
+                                                      `texture` names, read by the loader */
     isk_click_def click;
     isk_show_def show;
     /* Not a scene key (a file must not raise its own limit): the most memory
@@ -454,7 +469,8 @@ typedef struct isk_effect_def {
 
 /* Defaults as documented on each field; no forces, emitters or drawings. */
 void isk_effect_def_init(isk_effect_def *d);
-/* Frees the arrays (and drawing points); the struct can be init'ed again. */
+/* Frees the arrays (and drawing points, texture pixels); the struct can be
+ * init'ed again. */
 void isk_effect_def_free(isk_effect_def *d);
 /* Appends an item with defaults; return its index, or -1 / NULL (too many, no
  * memory).  The arrays grow by realloc: a pointer returned by one add is
@@ -472,6 +488,19 @@ size_t isk_effect_def_memory(const isk_effect_def *d);
 int isk_effect_def_find_force(const isk_effect_def *d, const char *name);
 int isk_effect_def_find_deflector(const isk_effect_def *d, const char *name);
 int isk_effect_def_find_emitter(const isk_effect_def *d, const char *name);
+/* Index of the texture of that name, or -1. */
+int isk_effect_def_find_texture(const isk_effect_def *d, const char *name);
+
+/* Gives the definition a copy of `image` (straight RGBA) as the texture
+ * `name`: every emitter whose `texture` is `name` draws it (cut into its
+ * texture_grid).  A texture of that name already there is replaced.  No
+ * file is read: isk_scene_load_textures (iskra/scene.h) reads PNGs.
+ * ISK_ERR_NULL; ISK_ERR_RANGE for a name empty or longer than
+ * ISK_TEXTURE_PATH_MAX - 1; ISK_ERR_SIZE for a malformed canvas or a side
+ * above ISK_TEXTURE_MAX_DIM (iskra/texture.h); ISK_ERR_FULL beyond
+ * ISK_EFFECT_MAX_TEXTURES; ISK_ERR_NOMEM.  On error nothing changes and
+ * err (may be NULL) names the texture. */
+isk_status isk_effect_def_add_texture(isk_effect_def *d, const char *name, const isk_canvas *image, isk_error *err);
 /* Adds a reference (no duplicates); ISK_ERR_RANGE for a bad index. */
 isk_status isk_emitter_use_force(isk_emitter_def *e, int force);
 isk_status isk_emitter_use_deflector(isk_emitter_def *e, int deflector);

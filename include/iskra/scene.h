@@ -39,6 +39,13 @@
  * Built-in scenes are the shipped scenes/ *.ini files, embedded into the
  * library at build time; they are looked up by name (file name without
  * ".ini", e.g. "fig12_gravity").
+ *
+ * Loading resolves every path: an emitter's `texture` is relative to the
+ * scene file, and its PNG is read into the definition
+ * (isk_effect_def.textures) while the scene loads, from the file or, for
+ * a built-in scene's textures, from the copy built in with it.  A missing
+ * or unreadable texture is a load error at its key's line.  Creating and
+ * running the effect then open no file.
  */
 #ifndef ISKRA_SCENE_H
 #define ISKRA_SCENE_H
@@ -61,6 +68,17 @@ isk_status isk_scene_load_string(isk_effect_def *out, const char *text, const ch
 /* A file path if such a file exists, otherwise a built-in scene's name.
  * Neither: ISK_ERR_IO with "NAME: no such file or built-in scene". */
 isk_status isk_scene_load(isk_effect_def *out, const char *name_or_path, isk_error *err);
+
+/* The loading step for a definition filled in C: reads the PNG of every
+ * emitter's `texture` that the definition does not hold yet (paths as
+ * given, relative to the working directory; a path that is no file but
+ * one of the built-in scenes' textures gives that) into
+ * isk_effect_def.textures, so isk_effect_create opens no file.  The scene
+ * loaders above do this themselves.  Errors name the emitter and the file:
+ * ISK_ERR_NULL, ISK_ERR_IO, ISK_ERR_FORMAT, ISK_ERR_SIZE (larger than
+ * ISK_TEXTURE_MAX_DIM a side), ISK_ERR_RANGE, ISK_ERR_FULL, ISK_ERR_NOMEM;
+ * the textures read before the error stay. */
+isk_status isk_scene_load_textures(isk_effect_def *d, isk_error *err);
 
 /* A definition as scene text that parses back to the same definition
  * (every key of every item, written by its row of the key table: what a

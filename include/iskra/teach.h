@@ -3,7 +3,9 @@
  *
  * For the single-particle examples (figures 9–14) and for teaching: reads
  * like the thesis's JavaScript, and runs on the same per-particle kernels as
- * the particle store (src/sim/kernels.h), so both give identical bits.
+ * the particle store (src/sim/kernels.h), so both give identical bits.  Its
+ * own module (src/teach), above the simulation and the view: a particle is
+ * moved by the simulation's kernels and drawn and bounced through a view.
  *
  *   Vektor2D            isk_vec2 (iskra/vec2.h)
  *   MaterijalnaTocka    isk_material_point   + isk_mp_move   (pomakni)

@@ -2,10 +2,12 @@
 /* iskra/texture.h — RGBA images drawn as particle sprites: scaled, rotated,
  * tinted, optionally one frame of a sprite sheet (a flipbook).
  *
- * A texture is made once from a canvas (isk_texture_from_canvas), a PNG file
- * (isk_texture_load, or a cache that loads each file once) or a round sprite
- * kind (isk_texture_from_sprite, for streaks), and drawn any number of times
- * (docs/textures.md: the API together, memory, costs).
+ * A texture is made once from a canvas (isk_texture_from_canvas) or a round
+ * sprite kind (isk_texture_from_sprite, for streaks), and drawn any number
+ * of times (docs/textures.md: the API together, memory, costs).  This
+ * module reads no file: textures from PNG files or PNG bytes are
+ * iskra/texture_png.h's (src/io), which decodes them and hands the pixels
+ * here.
  *
  * Example (a sheet of two frames, the second drawn stretched and turned):
  *
@@ -105,12 +107,12 @@
  * texture, and isk_texture_from_sprite's) have soft edges from the border
  * fade; an opaque square drawn rotated shows stepped edges.
  *
- * Loading (isk_texture_load, the cache) reads the PNG through isk_png_read
- * (iskra/png.h, bounded: at most ISK_TEXTURE_MAX_DIM a side is decoded,
- * checked from the header first).  The cache keys on the path string as
- * given and the grid, loads each once and never evicts; it is not
- * thread-safe, but the textures it returns are read-only and may be drawn
- * from many threads at once.
+ * The cache keeps textures by name (a path, or any label) and grid: each
+ * is made once, from the pixels given on its first request
+ * (isk_texture_cache_get_canvas, or from a PNG through iskra/texture_png.h's
+ * isk_texture_cache_get), and never evicted.  It is not thread-safe, but
+ * the textures it returns are read-only and may be drawn from many threads
+ * at once.
  */
 #ifndef ISKRA_TEXTURE_H
 #define ISKRA_TEXTURE_H
@@ -162,20 +164,13 @@ typedef struct isk_texture {
  * ISK_ERR_NOMEM.  On error *t is zeroed. */
 isk_status isk_texture_from_canvas(isk_texture *t, const isk_canvas *img, int cols, int rows);
 
-/* Reads `png_path` (iskra/png.h) into *t; errors as isk_texture_from_canvas
- * plus the reader's (ISK_ERR_IO, ISK_ERR_FORMAT), each with a message in
- * err (may be NULL) naming the file and the problem. */
-/* What isk_texture_load would refuse, from the file's header alone (no
- * decoding): the same statuses and messages; ISK_ERR_RANGE for a grid the
- * image does not divide (or a grid out of range). */
-isk_status isk_texture_check_file(const char *png_path, int cols, int rows, isk_error *err);
-
-isk_status isk_texture_load(isk_texture *t, const char *png_path, int cols, int rows, isk_error *err);
-
-/* The same from `size` bytes of PNG in memory (a texture built into a
- * program); `name` labels the messages. */
-isk_status isk_texture_load_memory(isk_texture *t, const void *png, size_t size, const char *name, int cols, int rows,
-                                   isk_error *err);
+/* What isk_texture_from_canvas would refuse in an image of width x height
+ * pixels cut into cols x rows frames, with a message in err (may be NULL)
+ * naming the texture `name`: ISK_ERR_RANGE for a grid outside
+ * 1..ISK_TEXTURE_MAX_GRID or one that does not divide the image exactly,
+ * ISK_ERR_SIZE for a side outside 1..ISK_TEXTURE_MAX_DIM; ISK_ERR_NULL.
+ * Readers check a file's header with it before decoding the pixels. */
+isk_status isk_texture_check_size(const char *name, int width, int height, int cols, int rows, isk_error *err);
 
 /* A white texture of one frame, size x size, whose alpha is the sprite
  * kind's mask (iskra/sprite.h, the phase centred on the image): tinted by a
@@ -204,22 +199,19 @@ typedef struct isk_texture_cache isk_texture_cache;
 isk_status isk_texture_cache_create(isk_texture_cache **out, int capacity);
 void isk_texture_cache_destroy(isk_texture_cache *cache);
 
-/* The texture of (png_path, cols, rows), loaded on the first request.  A
- * failed load is reported (err as isk_texture_load) and not kept, so a
- * later call tries again; ISK_ERR_FULL when a new texture would exceed the
- * capacity.  *out is set only on success and stays valid until _clear or
- * _destroy. */
-isk_status isk_texture_cache_get(isk_texture_cache *cache, const char *png_path, int cols, int rows,
-                                 const isk_texture **out, isk_error *err);
-/* The same for a PNG in memory, kept under `name` (a path or any name: a
- * later _get or _get_memory of that name and grid finds it). */
-isk_status isk_texture_cache_get_memory(isk_texture_cache *cache, const char *name, const void *png, size_t size,
-                                        int cols, int rows, const isk_texture **out, isk_error *err);
+/* The texture of (name, cols, rows): the one held, else made from `img`
+ * (a copy, as isk_texture_from_canvas) and kept.  A texture that cannot be
+ * made is reported (err names `name`, isk_texture_check_size's messages)
+ * and not kept; ISK_ERR_FULL when a new texture would exceed the capacity;
+ * ISK_ERR_NULL.  *out is set only on success and stays valid until _clear
+ * or _destroy. */
+isk_status isk_texture_cache_get_canvas(isk_texture_cache *cache, const char *name, const isk_canvas *img, int cols,
+                                        int rows, const isk_texture **out, isk_error *err);
 
 /* Frees every texture; earlier pointers become invalid. */
 void isk_texture_cache_clear(isk_texture_cache *cache);
 
-/* Textures held, and files loaded since creation (for tests and stats). */
+/* Textures held, and textures made since creation (for tests and stats). */
 int isk_texture_cache_count(const isk_texture_cache *cache);
 long isk_texture_cache_loads(const isk_texture_cache *cache);
 

@@ -1,12 +1,15 @@
 /* SPDX-License-Identifier: MIT */
 /* Textures made from a canvas or a sprite kind: premultiplied frames with a
- * transparent border and mip levels (the layout is in iskra/texture.h).
- * Drawing is texture_draw.c; PNG files and the cache are texture_load.c. */
+ * transparent border and mip levels (the layout is in iskra/texture.h), and
+ * the rules an image must meet, with their messages.  Drawing is
+ * texture_draw.c, the cache texture_cache.c; PNG files are src/io's
+ * (iskra/texture_png.h). */
 #include "iskra/texture.h"
 
 #include <stdlib.h>
 #include <string.h>
 
+#include "raster/texture_cache.h"
 #include "raster/texture_rows.h"
 
 /* Level sizes of a w x h frame, their offsets in a frame's block, and the
@@ -104,6 +107,39 @@ isk_status isk_texture_from_canvas(isk_texture *t, const isk_canvas *img, int co
     }
     *t = n;
     return ISK_OK;
+}
+
+isk_status isk_texture_check_size(const char *name, int width, int height, int cols, int rows, isk_error *err)
+{
+    if (!name)
+        return isk_error_set(err, ISK_ERR_NULL, "texture: NULL name");
+    if (cols < 1 || cols > ISK_TEXTURE_MAX_GRID || rows < 1 || rows > ISK_TEXTURE_MAX_GRID)
+        return isk_error_set(err, ISK_ERR_RANGE, "texture %s: a grid of %d x %d frames (cols and rows must be 1..%d)",
+                             name, cols, rows, ISK_TEXTURE_MAX_GRID);
+    if (width < 1 || height < 1)
+        return isk_error_set(err, ISK_ERR_SIZE, "texture %s: %d x %d pixels (an empty image)", name, width, height);
+    if (width > ISK_TEXTURE_MAX_DIM || height > ISK_TEXTURE_MAX_DIM)
+        return isk_error_set(err, ISK_ERR_SIZE, "texture %s: %d x %d pixels, larger than %d a side", name, width,
+                             height, ISK_TEXTURE_MAX_DIM);
+    if (width % cols != 0 || height % rows != 0)
+        return isk_error_set(err, ISK_ERR_RANGE,
+                             "texture %s: %d x %d pixels do not divide into %d x %d frames (cols must divide the "
+                             "width, rows the height)",
+                             name, width, height, cols, rows);
+    return ISK_OK;
+}
+
+isk_status isk__texture_from_image(isk_texture *t, const isk_canvas *img, const char *name, int cols, int rows,
+                                   isk_error *err)
+{
+    if (t)
+        memset(t, 0, sizeof *t);
+    if (!t || !img || !name)
+        return isk_error_set(err, ISK_ERR_NULL, "texture: NULL %s", !t ? "texture" : !img ? "image" : "name");
+    isk_status st = isk_texture_check_size(name, img->width, img->height, cols, rows, err);
+    if (st == ISK_OK && (st = isk_texture_from_canvas(t, img, cols, rows)) != ISK_OK)
+        isk_error_set(err, st, "texture %s: %s", name, isk_status_str(st));
+    return st;
 }
 
 void isk_texture_free(isk_texture *t)

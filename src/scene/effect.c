@@ -260,29 +260,6 @@ isk_status isk_effect_reset(isk_effect *e)
     return build(e, NULL);
 }
 
-isk_status isk_effect_render(isk_effect *e, isk_canvas *c)
-{
-    if (!e || !c)
-        return ISK_ERR_NULL;
-    if (c->width != e->def.width || c->height != e->def.height)
-        return ISK_ERR_SIZE;
-    return fx_render(e, c);
-}
-
-isk_status isk_effect_click(isk_effect *e, double x, double y)
-{
-    if (!e)
-        return ISK_ERR_NULL;
-    if (!isfinite(x) || !isfinite(y))
-        return ISK_ERR_NAN;
-    const isk_effect_def *d = &e->def;
-    if (!(d->click.enabled || d->click.at_start) || e->ngroups == 0)
-        return ISK_OK;
-    int gi = d->click.emitter >= 0 ? d->click.emitter : 0;
-    fx_group *g = &e->groups[gi];
-    return fx_fire_explosion(e, g, d->click.explosion, x, y, d->click.count, g->def->kick);
-}
-
 /* ---- inspection ------------------------------------------------------------ */
 
 /* The canvas and view, then each emitter's lists, then the drawings (so a

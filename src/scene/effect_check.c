@@ -367,6 +367,10 @@ isk_status fx_check_def(const isk_effect_def *d, fx_report *r)
     if ((d->nforces && !d->forces) || (d->ndeflectors && !d->deflectors) || (d->nemitters && !d->emitters) ||
         (d->ndrawings && !d->drawings))
         return structure_fails(d, r, ISK_ERR_NULL, "a count is set but its array is NULL");
+    char why[sizeof(((isk_error *)0)->message)];
+    isk_status ts = fx_def_textures_check(d, why, sizeof why);
+    if (ts != ISK_OK)
+        return structure_fails(d, r, ts, why);
     if (d->threads < 0 || d->threads > 256)
         return structure_fails(d, r, ISK_ERR_RANGE, "threads must be 0 (the default) .. 256");
     for (int s = 0; s < ISK_SECTION_COUNT; s++) {

@@ -1,5 +1,6 @@
 /* SPDX-License-Identifier: MIT */
-/* Building and copying effect definitions (plain data, see iskra/effect.h). */
+/* Building and copying effect definitions (plain data, see iskra/effect.h;
+ * the enums' names are names.c's). */
 #include <math.h>
 #include <stdint.h>
 #include <stdlib.h>
@@ -8,17 +9,6 @@
 #include "effect_internal.h"
 #include "iskra/limits.h"
 #include "key_value.h"
-
-const char *const isk_force_kind_names[ISK_FORCE_KIND_COUNT] = {"gravity", "drag", "wind", "potential",
-                                                                           "turbulence"};
-const char *const isk_space_names[ISK_SPACE_COUNT] = {"world", "local"};
-const char *const isk_source_names[ISK_SOURCE_KIND_COUNT] = {"particle", "explosion", "layer", "stream", "sub"};
-const char *const isk_rate_mode_names[ISK_RATE_MODE_COUNT] = {"accumulate", "thesis"};
-const char *const isk_birth_mode_names[ISK_BIRTH_MODE_COUNT] = {"backdate", "thesis-jitter", "frame"};
-const char *const isk_draw_mode_names[ISK_DRAW_COUNT] = {"dot", "pixel", "disc", "sprite", "none", "dot-browser"};
-const char *const isk_drawing_kind_names[ISK_DRAWING_KIND_COUNT] = {"polyline", "disc", "text", "polygon", "sprite"};
-const char *const isk_units_names[2] = {"world", "pixels"};
-const char *const isk_view_kind_names[ISK_VIEWDEF_COUNT] = {"window", "camera"};
 
 /* Every default comes from the key table (iskra/keys.h); what is set here
  * besides is what no key describes: names, kinds passed in, definition
@@ -41,6 +31,7 @@ void isk_effect_def_free(isk_effect_def *d)
         return;
     for (int i = 0; d->drawings && i < d->ndrawings; i++)
         free(d->drawings[i].points);
+    fx_def_textures_free(d);
     free(d->forces);
     free(d->deflectors);
     free(d->emitters);
@@ -242,6 +233,8 @@ isk_status fx_def_copy(isk_effect_def *dst, const isk_effect_def *src)
     for (int i = 0; ok && dst->drawings && i < dst->ndrawings; i++)
         dst->drawings[i].points = dup_array(src->drawings[i].points, (size_t)src->drawings[i].npoints * 2,
                                             sizeof(double), &ok);
+    if (fx_def_textures_copy(dst, src) != ISK_OK) /* none shared either way */
+        ok = 0;
     if (!ok) {
         if (!dst->drawings)
             dst->ndrawings = 0;

@@ -8,7 +8,8 @@
  * the trails' newest points.  The block runner is the one isk_system_step
  * uses, so a thesis scene and the C example that drives an isk_system give
  * identical bits by construction.  A prewarm runs the same frames before
- * frame 0. */
+ * frame 0.  The frame's entry points are here too: step, render, run and
+ * a click's explosion. */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -39,8 +40,6 @@ static void rebase_clocks(isk_effect *e, double step)
         g->clock = (fx_clock){fx_clock_at(&g->clock, f), f, step};
     }
 }
-
-double fx_clock_at(const fx_clock *c, long frame) { return c->t0 + (double)(frame - c->f0) * c->step; }
 
 /* prewarm: the whole effect, every group built, runs the frames before
  * frame 0 that its prewarmed emitters ask for.  An emitter prewarmed by n
@@ -219,3 +218,25 @@ isk_status isk_effect_run(isk_effect *e, isk_canvas *c, long frames)
     return s;
 }
 
+isk_status isk_effect_render(isk_effect *e, isk_canvas *c)
+{
+    if (!e || !c)
+        return ISK_ERR_NULL;
+    if (c->width != e->def.width || c->height != e->def.height)
+        return ISK_ERR_SIZE;
+    return fx_render(e, c);
+}
+
+isk_status isk_effect_click(isk_effect *e, double x, double y)
+{
+    if (!e)
+        return ISK_ERR_NULL;
+    if (!isfinite(x) || !isfinite(y))
+        return ISK_ERR_NAN;
+    const isk_effect_def *d = &e->def;
+    if (!(d->click.enabled || d->click.at_start) || e->ngroups == 0)
+        return ISK_OK;
+    int gi = d->click.emitter >= 0 ? d->click.emitter : 0;
+    fx_group *g = &e->groups[gi];
+    return fx_fire_explosion(e, g, d->click.explosion, x, y, d->click.count, g->def->kick);
+}

@@ -1,9 +1,10 @@
 /* SPDX-License-Identifier: MIT */
 /* Births and deaths of a group's particles: the thesis's explosions (at
  * create, timed, scheduled or clicked), and the frame-level stages that
- * release and cull them.  Every source's new particles go through fx_adopt,
- * so lifetimes and oscillation state follow one rule.  Stream births are
- * effect_stream.c's; what exists at time 0 is effect.c's (populate). */
+ * release and cull them.  Every source's new particles go through fx_adopt
+ * (effect_adopt.c), so lifetimes and oscillation state follow one rule.
+ * Stream births are effect_stream.c's; what exists at time 0 is effect.c's
+ * (populate). */
 #include <math.h>
 
 #include "effect_internal.h"
@@ -14,33 +15,6 @@ uint64_t fx_group_seed(uint64_t seed, int index)
     /* Emitter 0 uses the scene seed itself, so a one-emitter scene draws the
      * same numbers as a C program seeding one isk_system with that seed. */
     return seed + (uint64_t)index * 0x9E3779B97F4A7C15ull;
-}
-
-/* Lifetime life + U*range (one uniform, only with a finite life and a
- * range), then the oscillation state: omega, amplitude, and with
- * osc_random_phase the phase (the offset starts where the sine is, so the
- * first step moves the particle by the change only); last the looks
- * (angle, spin, size, colour: effect_looks.c). */
-void fx_adopt(isk_effect *e, fx_group *g, size_t from)
-{
-    const isk_emitter_def *em = g->def;
-    isk_particles *p = &g->store;
-    const int ranged = isfinite(em->life) && em->life_range > 0;
-    for (size_t i = from; i < p->count; i++)
-        p->life[i] = em->life + (ranged ? em->life_range * isk_rng_uniform(&g->rng) : 0.0);
-    for (size_t i = from; p->osc_amp && i < p->count; i++) {
-        p->osc_omega[i] = isk_rng_range(&g->rng, em->osc_omega_min, em->osc_omega_max);
-        p->osc_amp[i] = isk_rng_range(&g->rng, em->osc_amp_min, em->osc_amp_max);
-        p->osc_phase[i] = 0.0;
-        p->osc_offset[i] = 0.0;
-        if (em->osc_random_phase) {
-            double ph = isk_rng_range(&g->rng, 0.0, 6.283185307179586);
-            p->osc_phase[i] = ph;
-            p->osc_offset[i] = p->osc_amp[i] * isk_sinlut_eval(&e->sin_table, em->osc_table, ph);
-        }
-    }
-    /* last: the looks' draws come after every draw above (effect_looks.c) */
-    fx_looks_adopt(g, from);
 }
 
 isk_status fx_fire_explosion(isk_effect *e, fx_group *g, isk_explosion kind, double cx, double cy, size_t count,

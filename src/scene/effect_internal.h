@@ -18,7 +18,9 @@
  *   effect_frame.c    the frame loop, the clocks, prewarm
  *   effect_check.c    validation of a definition
  *   effect_compile.c  definition -> lists, and describe
- *   effect_group.c    births: every source's particles enter through fx_adopt
+ *   effect_group.c    explosions, their release, the cull
+ *   effect_adopt.c    births: every source's particles enter through fx_adopt
+ *   effect_clock.c    the time of a frame, a group's time
  *   effect_live.c     changes while running: isk_effect_set / get, potentials
  *   effect_stream.c   when a stream's particles are born
  *   effect_events.c   sub-emitters: deaths and bounces as events, their children
@@ -51,7 +53,8 @@ typedef struct fx_group fx_group;
  * 30 of 1/30 s.  The step is the frame's simulated time (dt /
  * speed_divisor); when a live change alters it, the clock is rebased (t0:
  * the time now, f0: this frame), so the time already elapsed is never
- * rescaled and the clock only moves forward (effect.c). */
+ * rescaled and the clock only moves forward (effect.c; the clocks are read
+ * in effect_clock.c). */
 typedef struct fx_clock {
     double t0;
     long f0;
@@ -250,9 +253,12 @@ size_t fx_emitter_memory(const isk_emitter_def *e);
 /* The emitter's particles sway (they need the store's oscillation columns). */
 int fx_emitter_oscillates(const isk_emitter_def *em);
 
-/* scene_builtin.c: a file the built-in scenes use (scenes/textures/NAME.png,
- * embedded with them), by the path they name it with; NULL if none. */
-const unsigned char *fx_builtin_file(const char *path, size_t *size);
+/* effect_def_textures.c: the definition's textures (isk_effect_def.textures),
+ * checked, copied (dst's arrays are set: free with isk_effect_def_free
+ * even on ISK_ERR_NOMEM), freed. */
+isk_status fx_def_textures_check(const isk_effect_def *d, char *why, size_t n);
+isk_status fx_def_textures_copy(isk_effect_def *dst, const isk_effect_def *src);
+void fx_def_textures_free(isk_effect_def *d);
 
 /* effect.c */
 void fx_sort_draw_order(isk_effect *e);
@@ -272,8 +278,8 @@ void fx_describe_group(const isk_effect *e, const fx_group *g, FILE *out);
 
 /* effect_group.c */
 uint64_t fx_group_seed(uint64_t seed, int index);
-/* New particles [from, count) take the emitter's lifetime, then their
- * oscillation state: every source's particles go through here. */
+/* effect_adopt.c: new particles [from, count) take the emitter's lifetime,
+ * then their oscillation state: every source's particles go through here. */
 void fx_adopt(isk_effect *e, fx_group *g, size_t from);
 isk_status fx_fire_explosion(isk_effect *e, fx_group *g, isk_explosion kind, double cx, double cy, size_t count,
                              isk_kick_target kick);
@@ -285,8 +291,8 @@ extern const fx_step_kind fx_step_cull;       /* substep end: age >= life */
 void fx_stream_reset(fx_group *g, double time);
 extern const fx_step_kind fx_step_spawn;      /* substep end: births in (t0, t0 + h] */
 extern const fx_step_kind fx_step_carry;      /* substep end, before spawn: local space */
-/* The group's clock at the current frame: the effect's time, plus the
- * frames a prewarm ran before frame 0. */
+/* effect_clock.c: the group's clock at the current frame: the effect's
+ * time, plus the frames a prewarm ran before frame 0. */
 double fx_group_time(const isk_effect *e, const fx_group *g);
 /* The group's clock has started: its emitter is prewarmed at least as far
  * back as the effect's frame (always true from frame 0 on). */
@@ -372,21 +378,15 @@ int fx_looks_spins(const isk_emitter_def *em);
 /* New particles [from, count): angle, spin, size, colour (after every other
  * draw of their birth; a draw only where a range or color_pick asks). */
 void fx_looks_adopt(fx_group *g, size_t from);
-/* The emitter's texture loaded (through the effect's cache) or its streak
- * baked, so the draw can choose effect_texture.c; messages name the path. */
+/* The emitter's texture made from the definition's pixels (through the
+ * effect's cache) or its streak baked, so the draw can choose
+ * effect_texture.c; messages name the texture.  No file is read. */
 isk_status fx_looks_prepare(isk_effect *e, fx_group *g, isk_error *err);
 void fx_looks_free(fx_group *g);
 /* Adds the columns a live change needs; ISK_ERR_NOMEM. */
 isk_status fx_looks_live(fx_group *g);
 /* What spans the looks' keys: NULL, or the key at fault with why. */
 const char *fx_looks_check(const isk_emitter_def *em, char *why, size_t n);
-/* The parser's part: a relative texture path made relative to the scene
- * file's directory (scene_name: the file's path), then the file's header
- * read and the grid checked against its size.  Messages name the path;
- * *key is the key at fault (texture, or texture_grid when it does not
- * divide the image). */
-isk_status fx_looks_find_texture(isk_emitter_def *em, const char *scene_name, const char **key, char *why,
-                                 size_t n);
 void fx_looks_describe(const fx_group *g, FILE *out);
 /* effect_texture.c: the draw of textured particles and streaks. */
 isk_status fx_draw_textures(isk_effect *e, isk_canvas *c, fx_group *g, const fx_band *b);

@@ -1,6 +1,6 @@
 /* SPDX-License-Identifier: MIT */
-/* The looks of a particle (issue 14): its angle and spin, its own size and
- * base colour drawn at birth, and the texture it is drawn as.
+/* The looks of a particle: its angle and spin, its own size and base
+ * colour drawn at birth, and the texture it is drawn as.
  *
  * What an emitter does not use costs nothing and changes nothing: the angle
  * column (and the spin stage, effect_compile.c) exist only with a rotation
@@ -8,15 +8,14 @@
  * with color_pick; every random draw here happens only when its range or
  * color_pick asks, after every other draw of the birth (fx_adopt calls this
  * last), so every existing scene keeps its bytes.  The drawing is
- * effect_texture.c's. */
+ * effect_texture.c's.  A texture is made from the pixels the definition
+ * holds (isk_effect_def.textures, read by the scene loader): nothing here
+ * opens a file. */
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
-#include <unistd.h>
 
 #include "effect_internal.h"
-
-const char *const isk_align_names[ISK_ALIGN_COUNT] = {"none", "velocity"};
 
 #define PI 3.14159265358979323846
 #define TWO_PI 6.28318530717958647692
@@ -116,24 +115,25 @@ isk_status fx_looks_prepare(isk_effect *e, fx_group *g, isk_error *err)
     if (em->draw == ISK_DRAW_NONE)
         return ISK_OK;
     if (em->texture[0]) {
+        char where[32] = "";
+        if (em->line > 0)
+            snprintf(where, sizeof where, " (line %d)", em->line);
+        const int k = isk_effect_def_find_texture(&e->def, em->texture);
+        if (k < 0)
+            return isk_error_set(err, ISK_ERR_RANGE,
+                                 "emitter '%s'%s: texture %s: not among the definition's textures (read the PNGs "
+                                 "it names with isk_scene_load_textures, or give pixels with "
+                                 "isk_effect_def_add_texture)",
+                                 em->name, where, em->texture);
         isk_status s = e->textures ? ISK_OK : isk_texture_cache_create(&e->textures, ISK_EFFECT_MAX_EMITTERS);
         if (s != ISK_OK)
             return isk_error_set(err, s, "emitter '%s': texture: %s", em->name, isk_status_str(s));
         isk_error le = {0};
-        /* A file wins; a built-in scene's texture that is not there (the
-         * scene run away from the repository) is the one built in. */
-        size_t size = 0;
-        const unsigned char *built_in = access(em->texture, F_OK) != 0 ? fx_builtin_file(em->texture, &size) : NULL;
-        const int cols = (int)em->texture_grid.x, rows = (int)em->texture_grid.y;
-        s = built_in ? isk_texture_cache_get_memory(e->textures, em->texture, built_in, size, cols, rows, &g->texture, &le)
-                     : isk_texture_cache_get(e->textures, em->texture, cols, rows, &g->texture, &le);
-        if (s != ISK_OK) {
-            char where[32] = "";
-            if (em->line > 0)
-                snprintf(where, sizeof where, " (line %d)", em->line);
+        s = isk_texture_cache_get_canvas(e->textures, em->texture, &e->def.textures[k].pixels,
+                                         (int)em->texture_grid.x, (int)em->texture_grid.y, &g->texture, &le);
+        if (s != ISK_OK)
             return isk_error_set(err, s, "emitter '%s'%s: texture: %s%s%s", em->name, where, le.message,
                                  s == ISK_ERR_NOMEM ? ": " : "", s == ISK_ERR_NOMEM ? isk_status_str(s) : "");
-        }
         return ISK_OK;
     }
     if (!streaks(em))
@@ -169,41 +169,6 @@ const char *fx_looks_check(const isk_emitter_def *em, char *why, size_t n)
         return "texture";
     }
     return NULL;
-}
-
-isk_status fx_looks_find_texture(isk_emitter_def *em, const char *scene_name, const char **key, char *why,
-                                 size_t n)
-{
-    *key = "texture";
-    if (!em->texture[0] || fx_looks_check(em, why, n))
-        return ISK_OK; /* a malformed grid is the shared check's to report */
-    const char *slash = scene_name ? strrchr(scene_name, '/') : NULL;
-    if (em->texture[0] != '/' && slash) {
-        char path[ISK_TEXTURE_PATH_MAX];
-        int dir = (int)(slash - scene_name);
-        int len = snprintf(path, sizeof path, "%.*s/%s", dir, scene_name, em->texture);
-        if (len < 0 || (size_t)len >= sizeof path) {
-            snprintf(why, n, "the path '%.*s/%s' is longer than %d characters", dir, scene_name, em->texture,
-                     ISK_TEXTURE_PATH_MAX - 1);
-            return ISK_ERR_RANGE;
-        }
-        memcpy(em->texture, path, (size_t)len + 1);
-    }
-    size_t built_in_size;
-    if (access(em->texture, F_OK) != 0 && fx_builtin_file(em->texture, &built_in_size))
-        return ISK_OK; /* a built-in scene's own texture, run away from the repository */
-    /* the texture module's own rules, from the header (the grid itself is
-     * well formed here: fx_looks_check said so), so a RANGE is the grid not
-     * dividing the image: that key's line */
-    isk_error err = {0};
-    isk_status s = isk_texture_check_file(em->texture, (int)em->texture_grid.x, (int)em->texture_grid.y, &err);
-    if (s != ISK_OK) {
-        if (s == ISK_ERR_RANGE)
-            *key = "texture_grid";
-        snprintf(why, n, "cannot use '%s' as a texture: %s", em->texture, err.message);
-        return s;
-    }
-    return ISK_OK;
 }
 
 void fx_looks_describe(const fx_group *g, FILE *out)

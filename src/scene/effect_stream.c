@@ -71,13 +71,6 @@ void fx_stream_reset(fx_group *g, double time)
 
 /* ---- the emitter's path -------------------------------------------------------- */
 
-double fx_group_time(const isk_effect *e, const fx_group *g)
-{
-    return fx_clock_at(&g->clock, e->frame + g->frame_offset);
-}
-
-int fx_group_started(const isk_effect *e, const fx_group *g) { return e->frame + g->frame_offset >= 0; }
-
 static isk_vec2 on_path(const fx_group *g, const isk_emitter_def *em, double t)
 {
     const isk_vec2 v = em->emitter_velocity;

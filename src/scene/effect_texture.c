@@ -1,7 +1,7 @@
 /* SPDX-License-Identifier: MIT */
-/* The draw of a group whose particles are textures (issue 14): the
- * emitter's PNG, one frame of its sprite sheet, or a sprite kind baked into
- * a texture and drawn as a streak (effect_looks.c prepares g->texture).
+/* The draw of a group whose particles are textures: the emitter's image,
+ * one frame of its sprite sheet, or a sprite kind baked into a texture and
+ * drawn as a streak (effect_looks.c prepares g->texture).
  *
  * Each particle is drawn by iskra/texture.h's rule at its screen point:
  *   size     the particle's size (its own with size_range, else the

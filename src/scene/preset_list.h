@@ -3,10 +3,10 @@
  *
  * FX_PRESETS(X) applies X to each preset's name, in the order
  * isk_preset_name counts them (iskra/presets.h).  presets.c makes its table
- * from it (each name with its function fill_NAME), and the key table the
- * `preset` key's names, so `iskra keys`, the docs and the parser's
- * messages list every preset.  A new preset is a new entry here and its
- * fill_ function. */
+ * from it (each name with its function fill_NAME), names.c the names, which
+ * the key table gives the `preset` key, so `iskra keys`, the docs and the
+ * parser's messages list every preset.  A new preset is a new entry here
+ * and its fill_ function. */
 #ifndef ISKRA_SCENE_PRESET_LIST_H
 #define ISKRA_SCENE_PRESET_LIST_H
 

@@ -447,9 +447,6 @@ static int fill_magic(isk_effect_def *d, int i, double u)
 
 /* ---- the table: one entry per preset (preset_list.h) --------------------- */
 
-#define PRESET_NAME(name) #name,
-const char *const fx_preset_names[FX_PRESET_COUNT] = {FX_PRESETS(PRESET_NAME)};
-
 /* Fills emitter i (already at the key table's defaults) with lengths in
  * units of u = scale/100; 0 when a force it needs found no room. */
 typedef int preset_fill(isk_effect_def *d, int i, double u);

@@ -1,15 +1,12 @@
 /* SPDX-License-Identifier: MIT */
-/* Built-in scenes (the shipped scenes/ *.ini, embedded at build time by
+/* Built-in scenes: the shipped scenes/ *.ini, embedded at build time by
  * tools/embed_scenes.sh into $(BUILD)/gen/scenes_gen.h, with the textures
- * they use) and isk_scene_load. */
-#include <errno.h>
-#include <stdio.h>
+ * they use.  Only the tables: isk_scene_load (scene_load.c) looks names
+ * up here, the texture loader (scene_textures.c) the files. */
 #include <string.h>
-#include <sys/stat.h>
 
-#include "effect_internal.h"
 #include "iskra/scene.h"
-#include "scene/ini_read.h"
+#include "scene/scene_load.h"
 #include "scenes_gen.h"
 
 #define NBUILTIN ((int)(sizeof builtin_scenes / sizeof builtin_scenes[0]) - 1)
@@ -40,58 +37,4 @@ const unsigned char *fx_builtin_file(const char *path, size_t *size)
             return builtin_files[i].data;
         }
     return NULL;
-}
-
-isk_status isk_scene_load(isk_effect_def *out, const char *name_or_path, isk_error *err)
-{
-    if (!out)
-        return isk_error_set(err, ISK_ERR_NULL, "scene: NULL definition");
-    if (!name_or_path) {
-        isk_effect_def_init(out);
-        return isk_error_set(err, ISK_ERR_NULL, "scene: NULL name");
-    }
-    struct stat st;
-    if (stat(name_or_path, &st) == 0)
-        return isk_scene_load_file(out, name_or_path, err);
-    const char *text = isk_scene_builtin_text(name_or_path);
-    if (text) {
-        char label[ISK_NAME_MAX + 16];
-        snprintf(label, sizeof label, "scenes/%s.ini", name_or_path);
-        return isk_scene_load_string(out, text, label, err);
-    }
-    isk_effect_def_init(out);
-    /* A path-looking name is a missing file; otherwise suggest a built-in. */
-    if (strchr(name_or_path, '/') || strstr(name_or_path, ".ini"))
-        return isk_error_set(err, ISK_ERR_IO, "%s: %s", name_or_path, strerror(ENOENT));
-    /* Part of a name ("fig19", "campfire") names the built-ins containing
-     * it, when they are few; otherwise the nearest name by spelling. */
-    enum { MAX_HITS = 4 };
-    const char *hits[MAX_HITS];
-    int nhits = 0;
-    for (int i = 0; strlen(name_or_path) >= 3 && i < NBUILTIN; i++)
-        if (strstr(builtin_scenes[i].name, name_or_path)) {
-            if (nhits < MAX_HITS)
-                hits[nhits] = builtin_scenes[i].name;
-            nhits++;
-        }
-    if (nhits >= 1 && nhits <= MAX_HITS) {
-        char list[4 * (ISK_NAME_MAX + 8)] = "";
-        for (int i = 0; i < nhits; i++) {
-            size_t used = strlen(list);
-            snprintf(list + used, sizeof list - used, "%s%s", i == 0 ? "" : i == nhits - 1 ? " or " : ", ",
-                     hits[i]);
-        }
-        return isk_error_set(err, ISK_ERR_IO, "%s: no such file or built-in scene; did you mean %s?",
-                             name_or_path, list);
-    }
-    const char *names[256];
-    int n = 0;
-    for (int i = 0; i < NBUILTIN && n < 256; i++)
-        names[n++] = builtin_scenes[i].name;
-    const char *s = isk_ini_suggest(name_or_path, names, (size_t)n);
-    if (s)
-        return isk_error_set(err, ISK_ERR_IO, "%s: no such file or built-in scene; did you mean %s?",
-                             name_or_path, s);
-    return isk_error_set(err, ISK_ERR_IO, "%s: no such file or built-in scene (`iskra list` shows them)",
-                         name_or_path);
 }

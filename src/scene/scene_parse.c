@@ -32,6 +32,7 @@
 #include "iskra/scene.h"
 #include "key_value.h"
 #include "scene/ini_read.h"
+#include "scene/scene_load.h"
 #include "scene_values.h"
 
 #define MAX_SECTIONS (ISK_EFFECT_MAX_FORCES + ISK_EFFECT_MAX_DEFLECTORS + ISK_EFFECT_MAX_EMITTERS + \
@@ -482,7 +483,10 @@ static isk_status derived_defaults(parser *P, section *s)
             return fail_at(P, s, line_of(s, "rate"), NULL, "a stream needs rate > 0 or a burst count > 0");
         char why[400];
         const char *key;
-        if (fx_looks_find_texture(e, P->name, &key, why, sizeof why) != ISK_OK) /* the texture beside the file */
+        isk_status st = fx_scene_texture(d, e, P->name, &key, why, sizeof why); /* the texture beside the file */
+        if (st == ISK_ERR_NOMEM)
+            return isk_error_set(P->err, st, "%s: out of memory", P->name);
+        if (st != ISK_OK)
             return fail_at(P, s, line_of(s, key), key, "%s", why);
         return ISK_OK;
     }

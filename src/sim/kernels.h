@@ -4,8 +4,9 @@
  * Every rule the thesis applies to one particle lives here once, as a static
  * inline function on plain doubles.  The store stages (forces.c, integrate.c,
  * bounds.c) call them inside their tight loops over the SoA arrays, and the
- * teaching API (teach.c) calls the very same functions on one particle; so a
- * single-particle example and a million-particle system give identical bits.
+ * teaching API (src/teach/teach.c) calls the very same functions on one
+ * particle; so a single-particle example and a million-particle system give
+ * identical bits.
  *
  * Nothing here branches on scene-level choices except through arguments that
  * are compile-time constants at the call sites (the callers specialise the

@@ -1,5 +1,10 @@
 /* SPDX-License-Identifier: MIT */
-/* Teaching API: the thesis's classes on top of the store's kernels. */
+/* The teaching API (iskra/teach.h): the thesis's classes, one particle at
+ * a time.  A module above the simulation and the view: a particle moves
+ * and bounces by the particle store's own kernels (src/sim/kernels.h), so
+ * one particle and a million give the same bits, and it is drawn through
+ * the view (iskra/view.h) as the thesis's browser draws a point.  The
+ * simulation itself knows nothing of views and pixels. */
 #include "iskra/teach.h"
 
 #include "sim/kernels.h"

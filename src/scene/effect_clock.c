@@ -1,0 +1,14 @@
+/* SPDX-License-Identifier: MIT */
+/* The effect's clocks (fx_clock, effect_internal.h): the time of a frame,
+ * and a group's time at the effect's frame.  Every file that needs a time
+ * reads it here, so none of them calls back into the frame loop. */
+#include "effect_internal.h"
+
+double fx_clock_at(const fx_clock *c, long frame) { return c->t0 + (double)(frame - c->f0) * c->step; }
+
+double fx_group_time(const isk_effect *e, const fx_group *g)
+{
+    return fx_clock_at(&g->clock, e->frame + g->frame_offset);
+}
+
+int fx_group_started(const isk_effect *e, const fx_group *g) { return e->frame + g->frame_offset >= 0; }

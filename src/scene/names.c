@@ -1,0 +1,23 @@
+/* SPDX-License-Identifier: MIT */
+/* Names as scene files spell them: one table per enum of iskra/effect.h,
+ * indexed by value, and the presets' names (preset_list.h).  The key
+ * table (keys.c), the parser, describe, the messages and `iskra keys` all
+ * read these.  Data only, so every file may use them and none of them
+ * reaches back. */
+#include "iskra/effect.h"
+#include "preset_list.h"
+
+const char *const isk_force_kind_names[ISK_FORCE_KIND_COUNT] = {"gravity", "drag", "wind", "potential",
+                                                                           "turbulence"};
+const char *const isk_space_names[ISK_SPACE_COUNT] = {"world", "local"};
+const char *const isk_source_names[ISK_SOURCE_KIND_COUNT] = {"particle", "explosion", "layer", "stream", "sub"};
+const char *const isk_rate_mode_names[ISK_RATE_MODE_COUNT] = {"accumulate", "thesis"};
+const char *const isk_birth_mode_names[ISK_BIRTH_MODE_COUNT] = {"backdate", "thesis-jitter", "frame"};
+const char *const isk_draw_mode_names[ISK_DRAW_COUNT] = {"dot", "pixel", "disc", "sprite", "none", "dot-browser"};
+const char *const isk_drawing_kind_names[ISK_DRAWING_KIND_COUNT] = {"polyline", "disc", "text", "polygon", "sprite"};
+const char *const isk_units_names[2] = {"world", "pixels"};
+const char *const isk_view_kind_names[ISK_VIEWDEF_COUNT] = {"window", "camera"};
+const char *const isk_align_names[ISK_ALIGN_COUNT] = {"none", "velocity"};
+
+#define PRESET_NAME(name) #name,
+const char *const fx_preset_names[FX_PRESET_COUNT] = {FX_PRESETS(PRESET_NAME)};

@@ -1,0 +1,96 @@
+/* SPDX-License-Identifier: MIT */
+/* The scene loader's textures: every emitter's `texture` path resolved and
+ * its PNG decoded into the definition (isk_effect_def.textures) while
+ * loading, so creating or running the effect opens no file.
+ *
+ * Where a texture comes from: the file at its path when there is one;
+ * otherwise, when a built-in scene names it (scenes/textures/NAME.png),
+ * the copy built into the library with the scenes, so a built-in scene
+ * draws anywhere.  A path in a scene file is relative to the scene file;
+ * isk_scene_load_textures takes a C definition's paths as given. */
+#include <stdio.h>
+#include <string.h>
+#include <unistd.h>
+
+#include "effect_internal.h"
+#include "iskra/scene.h"
+#include "iskra/texture_png.h"
+#include "scene/scene_load.h"
+
+/* The PNG at `path` (or its built-in copy) into d, unless d holds it. */
+static isk_status read_texture(isk_effect_def *d, const char *path, isk_canvas **pixels, isk_error *err)
+{
+    int k = isk_effect_def_find_texture(d, path);
+    if (k < 0) {
+        size_t size = 0;
+        const unsigned char *built_in = access(path, F_OK) != 0 ? fx_builtin_file(path, &size) : NULL;
+        isk_canvas img;
+        isk_status s = built_in ? isk_texture_image_read_memory(&img, built_in, size, path, err)
+                                : isk_texture_image_read(&img, path, err);
+        if (s != ISK_OK)
+            return s;
+        s = isk_effect_def_add_texture(d, path, &img, err);
+        isk_canvas_free(&img);
+        if (s != ISK_OK)
+            return s;
+        k = isk_effect_def_find_texture(d, path);
+    }
+    *pixels = &d->textures[k].pixels;
+    return ISK_OK;
+}
+
+isk_status fx_scene_texture(isk_effect_def *d, isk_emitter_def *em, const char *scene_name, const char **key,
+                            char *why, size_t n)
+{
+    *key = "texture";
+    if (!em->texture[0] || fx_looks_check(em, why, n))
+        return ISK_OK; /* a malformed grid is the shared check's to report */
+    const char *slash = scene_name ? strrchr(scene_name, '/') : NULL;
+    if (em->texture[0] != '/' && slash) {
+        char path[ISK_TEXTURE_PATH_MAX];
+        int dir = (int)(slash - scene_name);
+        int len = snprintf(path, sizeof path, "%.*s/%s", dir, scene_name, em->texture);
+        if (len < 0 || (size_t)len >= sizeof path) {
+            snprintf(why, n, "the path '%.*s/%s' is longer than %d characters", dir, scene_name, em->texture,
+                     ISK_TEXTURE_PATH_MAX - 1);
+            return ISK_ERR_RANGE;
+        }
+        memcpy(em->texture, path, (size_t)len + 1);
+    }
+    isk_error err = {0};
+    isk_canvas *img = NULL;
+    isk_status s = read_texture(d, em->texture, &img, &err);
+    /* the texture module's rules (the grid itself is well formed here:
+     * fx_looks_check said so), so a RANGE is the grid not dividing the
+     * image: that key's line */
+    if (s == ISK_OK && (s = isk_texture_check_size(em->texture, img->width, img->height, (int)em->texture_grid.x,
+                                                   (int)em->texture_grid.y, &err)) == ISK_ERR_RANGE)
+        *key = "texture_grid";
+    if (s != ISK_OK) {
+        snprintf(why, n, "cannot use '%s' as a texture: %s", em->texture, err.message);
+        return s;
+    }
+    return ISK_OK;
+}
+
+isk_status isk_scene_load_textures(isk_effect_def *d, isk_error *err)
+{
+    if (!d)
+        return isk_error_set(err, ISK_ERR_NULL, "textures: NULL definition");
+    if (d->nemitters < 0 || d->nemitters > ISK_EFFECT_MAX_EMITTERS || (d->nemitters && !d->emitters))
+        return isk_error_set(err, ISK_ERR_SIZE, "textures: a malformed definition (%d emitters)", d->nemitters);
+    for (int i = 0; i < d->nemitters; i++) {
+        const isk_emitter_def *em = &d->emitters[i];
+        if (!em->texture[0])
+            continue;
+        if (!memchr(em->texture, 0, sizeof em->texture))
+            return isk_error_set(err, ISK_ERR_RANGE, "emitter '%.*s': texture: a path of at most %d characters",
+                                 ISK_NAME_MAX - 1, em->name, ISK_TEXTURE_PATH_MAX - 1);
+        isk_error le = {0};
+        isk_canvas *img;
+        isk_status s = read_texture(d, em->texture, &img, &le);
+        if (s != ISK_OK)
+            return isk_error_set(err, s, "emitter '%.*s': texture: %s", ISK_NAME_MAX - 1, em->name, le.message);
+    }
+    return ISK_OK;
+}
