@@ -50,7 +50,7 @@ void play_charts_sample(player *p, double seconds_per_particle_step, long partic
 {
     const isk_effect_def *d = isk_effect_definition(p->fx);
     play_energy e = play_energy_of(p->fx);
-    const double pe = e.gravity + e.potential, total = e.kinetic + pe;
+    const double pe = e.potential, total = e.kinetic + pe;
     const size_t count = isk_effect_particle_count(p->fx);
     push(&p->hist, isk_effect_time(p->fx), e.kinetic, pe, (double)count);
     play_integrator_stats *st = &p->stats[d->integrator];
