@@ -517,7 +517,7 @@ static chart_axis log_axis(double lo, double hi, int len, int horizontal)
     a.log = 1;
     a.tlo = log10(lo);
     a.thi = log10(hi);
-    chart_axis_setup(&a, 0, 0, 0, len, horizontal, 1);
+    chart_axis_setup(&a, 0, 0, 0, len, horizontal, ISK_FONT_5X8, 1);
     return a;
 }
 
@@ -525,7 +525,7 @@ static chart_axis lin_fit(double lo, double hi, int len, int horizontal)
 {
     chart_axis a;
     memset(&a, 0, sizeof a);
-    chart_axis_setup(&a, 1, lo, hi, len, horizontal, 1);
+    chart_axis_setup(&a, 1, lo, hi, len, horizontal, ISK_FONT_5X8, 1);
     return a;
 }
 
@@ -535,7 +535,7 @@ static chart_axis lin_explicit(double lo, double hi, int len, int horizontal)
     memset(&a, 0, sizeof a);
     a.tlo = lo;
     a.thi = hi;
-    chart_axis_setup(&a, 0, 0, 0, len, horizontal, 1);
+    chart_axis_setup(&a, 0, 0, 0, len, horizontal, ISK_FONT_5X8, 1);
     return a;
 }
 
@@ -577,15 +577,15 @@ Test(chart, ticks_log_fitted)
     chart_axis a;
     memset(&a, 0, sizeof a);
     a.log = 1;
-    chart_axis_setup(&a, 1, log10(3e-9), log10(7e-6), 600, 1, 1);
+    chart_axis_setup(&a, 1, log10(3e-9), log10(7e-6), 600, 1, ISK_FONT_5X8, 1);
     cr_assert_float_eq(a.tlo, -9.0, 0);
     cr_assert_float_eq(a.thi, -5.0, 0);
     /* all on one decade: one more each side */
-    chart_axis_setup(&a, 1, -3.0, -3.0, 600, 1, 1);
+    chart_axis_setup(&a, 1, -3.0, -3.0, 600, 1, ISK_FONT_5X8, 1);
     cr_assert_float_eq(a.tlo, -4.0, 0);
     cr_assert_float_eq(a.thi, -2.0, 0);
     /* subnormal to DBL_MAX: still finite t */
-    chart_axis_setup(&a, 1, log10(5e-324), log10(DBL_MAX), 600, 0, 1);
+    chart_axis_setup(&a, 1, log10(5e-324), log10(DBL_MAX), 600, 0, ISK_FONT_5X8, 1);
     cr_assert_float_eq(a.tlo, -324.0, 0);
     cr_assert_float_eq(a.thi, 309.0, 0);
 }

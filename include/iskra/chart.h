@@ -33,9 +33,12 @@
  * data — every point that can be placed on both axes, wherever the other
  * axis's explicit range is; a log axis then widens to whole decades, a
  * linear one to whole "nice" steps (1, 2 or 5 times a power of ten) of
- * the step its ticks use.  Data all on one value still gets a range: a log
- * axis spans the value's decade plus one either side (all at 1e-3 gives
- * 1e-4..1e-2), a linear one the value +-10% (+-1 around 0 or a subnormal).
+ * the step its ticks use (when no step up to ten times the data's span
+ * lets the labels fit, it gets no labels and the data's own range rather
+ * than a range that squeezes the data into a sliver).  Data all on one
+ * value still gets a range: a log axis spans the value's decade plus one
+ * either side (all at 1e-3 gives 1e-4..1e-2), a linear one the value
+ * +-10% (+-1 around 0 or a subnormal).
  * Explicit ranges are used as given.  Lines are clipped to the frame;
  * markers are drawn for points inside the range (a marker on the range's
  * edge may overlap the frame).  Points that cannot be placed (NaN, +-Inf,
@@ -52,22 +55,32 @@
  * 2 and 5) times each power are labelled too: "1e-2 2e-2 5e-2 1e-1"; a
  * range too narrow even for that (2.1..2.9) gets 1-2-5 steps of its
  * values, labelled like a linear axis ("2.2", "2.4").  Linear ticks are at
- * least 64 px apart across and 40 px up (times the text scale), more where
- * labels would collide.  Linear labels drop trailing zeros, so each shows
+ * least 64 px apart across and 40 px up with the 5x8 font at scale 1, and
+ * as much more as the font's cells are wider and taller (74 and 62 px
+ * with the 6x13 font; twice those at scale 2), more where labels would
+ * collide.  Linear labels drop trailing zeros, so each shows
  * the digits its tick needs ("0", "0.5", "1", "1.5"; "-2", "0", "2");
  * while the largest tick is within [1e-3, 1e5) they are plain decimals
  * ("0.0005", "50000"), otherwise short scientific ("2e4", "1.5e-4").
  * Light grid lines sit under the data at the labelled ticks.
  *
- * Look: text uses the built-in bitmap font (iskra/text.h) at scale 1, or 2
- * when the canvas is at least 1200 x 400 pixels, which also makes lines
- * about 2.5 px wide instead of 1.5, markers 13 px instead of 7, the frame
- * and ticks 2 px, and the title bold.  The title is centred over the plot,
+ * Look: text uses a built-in bitmap font (iskra/text.h): `font`, the 5x8
+ * one by default (capitals 7 px tall), or ISK_FONT_6X13 (capitals 10 px
+ * tall, for a chart read from across a room, on a projector).  Its scale
+ * is 1, or 2 when the canvas is at least 1200 x 400 pixels, which also
+ * makes lines about 2.5 px wide instead of 1.5, markers 13 px instead of
+ * 7, the frame and ticks 2 px, and the title bold.  The room the layout
+ * gives text follows the font's cells: the margins for tick labels, title
+ * and axis labels, the tick spacing and the legend's box grow with it.  The title is centred over the plot,
  * the x label under it, the y label turned 90 degrees (read bottom to
  * top).  The legend sits inside the chosen corner of the plot on a
  * background-filled box with a thin frame, one row per named series (a
  * stretch of its line, its marker, its name); for work-precision diagrams
- * ISK_LEGEND_BOTTOM_LEFT is usually empty.  Output is deterministic: the
+ * ISK_LEGEND_BOTTOM_LEFT is usually empty.  ISK_LEGEND_ABOVE puts the
+ * entries side by side over the plot instead, under the title, each row
+ * centred on the plot and no wider than the canvas allows (more rows as
+ * needed, at most a third of the height): the plot is shorter, but no
+ * data hides behind the legend.  Output is deterministic: the
  * same chart gives the same bytes (tested against refimg/chart_*.png).
  *
  * Extras, off by default (isk_chart_defaults):
@@ -87,6 +100,7 @@
 
 #include "iskra/canvas.h"
 #include "iskra/status.h"
+#include "iskra/text.h"
 
 #ifdef __cplusplus
 extern "C" {
@@ -139,6 +153,7 @@ typedef enum isk_chart_legend {
     ISK_LEGEND_BOTTOM_LEFT,
     ISK_LEGEND_BOTTOM_RIGHT,
     ISK_LEGEND_NONE,
+    ISK_LEGEND_ABOVE, /* over the plot, under the title: entries side by side, in rows */
     ISK_LEGEND_COUNT
 } isk_chart_legend;
 
@@ -155,10 +170,11 @@ typedef struct isk_chart {
     const char *x2_label;                  /* NULL: no top axis (see Extras) */
     double x2_scale;
     int x2_inverse;
+    isk_font font;                         /* every text's font (see Look) */
 } isk_chart;
 
 /* No title or labels, linear axes fitted to the data, legend top right,
- * black on white, no notes, no top axis. */
+ * black on white, no notes, no top axis, the 5x8 font. */
 void isk_chart_defaults(isk_chart *ch);
 
 /* A style for series number i (0, 1, 2, ...; negative counts as 0):
@@ -181,8 +197,9 @@ isk_chart_style isk_chart_style_default(int index);
  *   ISK_ERR_NAN    an explicit range bound is +-Inf;
  *   ISK_ERR_RANGE  min >= max, or a log axis with min <= 0;
  *   and last:
- *   ISK_ERR_RANGE  an unknown legend, dash or marker value (of a series or
- *                  a note); a top axis with x2_scale not finite and > 0;
+ *   ISK_ERR_RANGE  an unknown legend, font, dash or marker value (of a
+ *                  series or a note); a top axis with x2_scale not finite
+ *                  and > 0;
  *                  a data-fitted axis with no placeable point (see Ranges
  *                  above). */
 isk_status isk_chart_draw(const isk_chart *ch, isk_canvas *c);

@@ -633,6 +633,12 @@ const isk_view *isk_effect_view(const isk_effect *e);
 const isk_effect_def *isk_effect_definition(const isk_effect *e);
 int isk_effect_emitter_count(const isk_effect *e);
 const isk_particles *isk_effect_particles(const isk_effect *e, int emitter);
+/* The forces an emitter's particles feel, as compiled for its steps (its
+ * gravity forces times gravity_multiplier, its winds plus its weight, its
+ * drag, the live potentials it picks): what the integrator evaluates, so
+ * isk_forces_potential_energy of it is their potential energy.  NULL for
+ * no such emitter.  Valid until the next change (isk_effect_set, reset). */
+const isk_forces *isk_effect_forces(const isk_effect *e, int emitter);
 /* Spawns lost to a full pool since create or reset: 64 bits on every system
  * (a rate of 10^7 at the longest step loses 10^10 in a frame), saturating. */
 uint64_t isk_effect_dropped(const isk_effect *e, int emitter);

@@ -204,6 +204,46 @@ void isk_forces_eval_step(isk_forces *f, size_t n, const double *x, const double
                           const double *m, double *fx, double *fy, double *px, double *py, int with_drag,
                           double h);
 
+/* ---- potential energy -------------------------------------------------------
+ * The potential energy of n particles (the sum, particle by particle in
+ * order) under the forces f applies: for each law that acts
+ * (isk_forces_laws), the U whose negative gradient is that law's force,
+ * F = -grad U, in the order the forces are summed:
+ *
+ *     gravity        U = m g y                       F = (0, -m g)
+ *     acceleration   U = -m (ax x + ay y)            F = m (ax, ay)   (wind, an emitter's weight)
+ *     drag           none: F = -b v depends on the velocity, so the energy
+ *                    it takes shows as a falling total
+ *     a potential    U = kQ d^(2-P) / (2-P), kQ ln d for P = 2
+ *                    (d its distance; F = kQ (r_pot - r) / d^P, |F| = k|Q| d^(1-P));
+ *                    inside min_dist, where F = kQ (r_pot - r) / min^P:
+ *                    U = kQ (d^2 - min^2) / (2 min^P) + U(min), a spring
+ *                    joined continuously at min
+ *
+ * Zeros: gravity's and the acceleration's at the origin; a potential's far
+ * away for P > 2 (a particle out of its reach adds nothing), at its centre
+ * for P < 2, at distance 1 for P = 2.  Only an energy's changes mean
+ * something; the zeros only fix the numbers.
+ * Potentials count as the force does: those f picks (all without a pick),
+ * enabled, of k*charge != 0; a potential that switched itself off (its
+ * max_dist) counts no more.  An x_mult other than 1 makes a potential's
+ * force non-conservative (no U has it as gradient): its U is that of
+ * x_mult 1.  Exactly on a potential without a min distance U is the law's
+ * limit: 0 for P < 2, infinite for P >= 2 (-Inf when it attracts); near
+ * it, as large as the law says (the force saturates at ISK_FORCE_LIMIT, U
+ * does not).
+ *
+ *     double u;
+ *     if (isk_forces_potential_energy(&f, store.count, store.x, store.y, store.m, &u) == ISK_OK)
+ *         printf("potential energy %g\n", u);
+ *
+ * Errors: ISK_ERR_NULL (f or energy NULL, x, y or m NULL with n > 0,
+ * potentials NULL with a count); ISK_ERR_UNSUPPORTED when a law acts that
+ * has no row here (none of the laws above): a number that left a force
+ * out would look right and be wrong. */
+isk_status isk_forces_potential_energy(const isk_forces *f, size_t n, const double *x, const double *y,
+                                       const double *m, double *energy);
+
 #ifdef __cplusplus
 }
 #endif

@@ -36,6 +36,7 @@ void isk_chart_defaults(isk_chart *ch)
     ch->x2_label = NULL;
     ch->x2_scale = 1.0;
     ch->x2_inverse = 0;
+    ch->font = ISK_FONT_5X8;
 }
 
 static isk_status check_range(double mn, double mx, int log)
@@ -66,7 +67,7 @@ static isk_status validate(const isk_chart *ch, const isk_canvas *c)
         st = check_range(ch->y_min, ch->y_max, ch->y_log != 0);
     if (st != ISK_OK)
         return st;
-    if ((unsigned)ch->legend >= (unsigned)ISK_LEGEND_COUNT)
+    if ((unsigned)ch->legend >= (unsigned)ISK_LEGEND_COUNT || !isk_font_metrics_of(ch->font))
         return ISK_ERR_RANGE;
     for (size_t k = 0; k < ch->nseries; k++) {
         const isk_chart_style *s = &ch->series[k].style;
@@ -115,10 +116,22 @@ static void explicit_range(chart_axis *a, double mn, double mx)
         a->thi = nextafter(a->tlo, INFINITY);
 }
 
-static int lines_of(const char *s)
+static int lines_of(isk_font font, const char *s)
 {
-    int h = isk_text_height(s, 1);
-    return h / ISK_FONT_CELL_H;
+    return isk_font_text_height(font, s, 1) / isk_font_metrics_of(font)->cell_h;
+}
+
+/* The text's part of the layout: the font's sizes at scale s. */
+static void text_layout(chart_layout *lay, isk_font font, int s)
+{
+    const isk_font_metrics *m = isk_font_metrics_of(font);
+    lay->s = s;
+    lay->font = font;
+    lay->cw = m->cell_w * s;
+    lay->chh = m->cell_h * s;
+    lay->space = (m->cell_w - m->glyph_w) * s;
+    lay->vspace = (m->cell_h - m->glyph_h) * s;
+    lay->cap_mid = (m->cap_h - 1) / 2 * s;
 }
 
 isk_status chart_prepare(const isk_chart *ch, const isk_canvas *c, chart_axis *xa, chart_axis *ya,
@@ -135,23 +148,30 @@ isk_status chart_prepare(const isk_chart *ch, const isk_canvas *c, chart_axis *x
     chart_layout lay;
     int W = c->width, H = c->height;
     int s = (W >= WIDE && H >= TALL) ? 2 : 1;
-    lay.s = s;
-    lay.cw = ISK_FONT_CELL_W * s;
-    lay.chh = ISK_FONT_CELL_H * s;
+    const isk_font font = ch->font;
+    text_layout(&lay, font, s);
     lay.spread = s == 1 ? 0.25 : 0.75;
     lay.mark_r = s == 1 ? 3 : 6;
     int pad = CHART_PAD * s;
     /* Many-line texts get at most a sixth of the height each (the rest
      * overlaps), so a plot always remains. */
-    int title_h = (ch->title && *ch->title) ? isk_text_height(ch->title, s) + pad : 0;
-    int xlab_h = (ch->x_label && *ch->x_label) ? isk_text_height(ch->x_label, s) + 2 * s : 0;
+    const int line_gap = chart_up(&lay, CHART_LINE_GAP);
+    int title_h = (ch->title && *ch->title) ? isk_font_text_height(font, ch->title, s) + pad : 0;
+    int xlab_h = (ch->x_label && *ch->x_label) ? isk_font_text_height(font, ch->x_label, s) + line_gap : 0;
     title_h = title_h > H / 6 ? H / 6 : title_h;
     xlab_h = xlab_h > H / 6 ? H / 6 : xlab_h;
     /* A top axis: its label line and its tick labels above the frame. */
     lay.top2 = ch->x2_label && *ch->x2_label && ch->x_log;
-    int top2_h = lay.top2 ? isk_text_height(ch->x2_label, s) + lay.chh + (CHART_GAP + CHART_TICK + 2) * s : 0;
+    int top2_h = 0;
+    if (lay.top2)
+        top2_h = isk_font_text_height(font, ch->x2_label, s) + line_gap + lay.chh + (CHART_GAP + CHART_TICK) * s;
     top2_h = top2_h > H / 6 ? H / 6 : top2_h;
-    lay.T = pad + title_h + top2_h + lay.chh / 2 + s;
+    /* A legend over the plot: its rows under the title (at most a third of
+     * the height). */
+    int legend_h = ch->legend == ISK_LEGEND_ABOVE ? chart_legend_above_height(ch, &lay, W - 2 * pad, W, H) : 0;
+    legend_h = legend_h > H / 3 ? H / 3 : legend_h;
+    lay.legend_y = pad + title_h;
+    lay.T = pad + title_h + legend_h + top2_h + lay.chh / 2 + s;
     lay.B = H - pad - xlab_h - lay.chh - (CHART_GAP + CHART_TICK + 1) * s;
 
     chart_axis ax, ay;
@@ -159,14 +179,15 @@ isk_status chart_prepare(const isk_chart *ch, const isk_canvas *c, chart_axis *x
     ay.log = ch->y_log != 0;
     if (!fit_y)
         explicit_range(&ay, ch->y_min, ch->y_max);
-    chart_axis_setup(&ay, fit_y, dy0, dy1, lay.B - lay.T, 0, s);
+    chart_axis_setup(&ay, fit_y, dy0, dy1, lay.B - lay.T, 0, font, s);
 
     int maxw = 0;
     for (int k = 0; k < ay.n; k++) {
-        int w = isk_text_width(ay.label[k], s) - s;
+        int w = isk_font_text_width(font, ay.label[k], s) - lay.space;
         maxw = w > maxw ? w : maxw;
     }
-    int ylab_w = (ch->y_label && *ch->y_label) ? lines_of(ch->y_label) * lay.chh + 4 * s : 0;
+    const int ylab_gap = chart_up(&lay, CHART_YLABEL_GAP);
+    int ylab_w = (ch->y_label && *ch->y_label) ? lines_of(font, ch->y_label) * lay.chh + ylab_gap : 0;
     ylab_w = ylab_w > W / 6 ? W / 6 : ylab_w;
     lay.L = pad + ylab_w + maxw + (CHART_GAP + CHART_TICK) * s + (s - 1);
     if (lay.L > W / 2) /* absurd labels: keep a plot, let them clip */
@@ -180,13 +201,13 @@ isk_status chart_prepare(const isk_chart *ch, const isk_canvas *c, chart_axis *x
     for (int pass = 0; pass < 2; pass++) {
         if (!fit_x)
             explicit_range(&ax, ch->x_min, ch->x_max);
-        chart_axis_setup(&ax, fit_x, dx0, dx1, lay.R - lay.L, 1, s);
+        chart_axis_setup(&ax, fit_x, dx0, dx1, lay.R - lay.L, 1, font, s);
         int over = 0;
         for (int k = 0; k < ax.n; k++) {
             double f = chart_axis_frac(&ax, ax.t[k]);
             if (!(f >= 0.0 && f <= 1.0 + 1e-6))
                 continue;
-            int iw = isk_text_width(ax.label[k], s) - s;
+            int iw = isk_font_text_width(font, ax.label[k], s) - lay.space;
             int end = (int)floor(chart_px(&lay, f > 1.0 ? 1.0 : f)) + iw - iw / 2 + pad;
             over = end - (W - 1) > over ? end - (W - 1) : over;
         }
@@ -202,7 +223,7 @@ isk_status chart_prepare(const isk_chart *ch, const isk_canvas *c, chart_axis *x
         a2->log = 1;
         a2->tlo = ch->x2_inverse ? ls - ax.thi : ls + ax.tlo;
         a2->thi = ch->x2_inverse ? ls - ax.tlo : ls + ax.thi;
-        chart_axis_setup(a2, 0, 0.0, 0.0, lay.R - lay.L, 1, s);
+        chart_axis_setup(a2, 0, 0.0, 0.0, lay.R - lay.L, 1, font, s);
     }
     *xa = ax;
     *ya = ay;

@@ -23,8 +23,8 @@
 
 #define TOL 1e-9           /* in units of a step or a decade */
 #define MAX_STEP_TRIES 48  /* each try at least doubles the step */
-#define PREF_X 64          /* preferred linear tick spacing, px at scale 1 */
-#define PREF_Y 40
+#define PREF_X 64          /* preferred linear tick spacing, px of the 5x8 font at scale 1 */
+#define PREF_Y 40          /* (follows the labels' font: x by its cell width, y by its line height) */
 
 int chart_axis_place(int log, double v, double *t)
 {
@@ -145,16 +145,22 @@ void chart_format_linear(char *buf, size_t n, double v, int e, double vmax)
     snprintf(buf, n, "%se%s%s", tmp, neg ? "-" : "", x);
 }
 
+/* The text an axis's labels are written in. */
+typedef struct label_text {
+    isk_font font;
+    int scale;
+    int cw, chh; /* the font's cell width and line height at that scale */
+} label_text;
+
 /* Do the labels of a, laid out along an axis len pixels long, keep at
  * least a cell (x) or a line (y) apart? */
-static int labels_fit(const chart_axis *a, int len, int horizontal, int scale)
+static int labels_fit(const chart_axis *a, int len, int horizontal, const label_text *lt)
 {
     double prev = 0.0;
     for (int k = 0; k < a->n; k++) {
         double p = chart_axis_frac(a, a->t[k]) * (double)len;
-        double half = horizontal ? 0.5 * isk_text_width(a->label[k], scale)
-                                 : 0.5 * ISK_FONT_CELL_H * scale;
-        double gap = horizontal ? ISK_FONT_CELL_W * scale : ISK_FONT_CELL_H * scale;
+        double half = horizontal ? 0.5 * isk_font_text_width(lt->font, a->label[k], lt->scale) : 0.5 * lt->chh;
+        double gap = horizontal ? lt->cw : lt->chh;
         if (k > 0 && (p - half) - prev < gap)
             return 0;
         prev = p + half;
@@ -205,9 +211,9 @@ static int linear_ticks(chart_axis *a, double lo, double hi, int m, int e, int l
  * when fitted.  For a log axis's fallback, logpos places ticks at log10(v)
  * and a->tlo/thi stay as they are. */
 static void choose_linear(chart_axis *a, int fitted, double lo, double hi, int len, int horizontal,
-                          int scale, int logpos)
+                          const label_text *lt, int logpos)
 {
-    int pref = (horizontal ? PREF_X : PREF_Y) * scale;
+    int pref = horizontal ? PREF_X * lt->cw / ISK_FONT_CELL_W : PREF_Y * lt->chh / ISK_FONT_CELL_H;
     double nmax = len / pref < 2 ? 2.0 : (double)(len / pref);
     double raw = (hi * 0.5 - lo * 0.5) / nmax * 2.0;
     a->n = 0;
@@ -229,8 +235,13 @@ static void choose_linear(chart_axis *a, int fitted, double lo, double hi, int l
         }
         if (!linear_ticks(a, fitted ? a->tlo : lo, fitted ? a->thi : hi, m, e, logpos))
             continue;
-        if (labels_fit(a, len, horizontal, scale))
+        if (labels_fit(a, len, horizontal, lt))
             return;
+        /* Past ten times the data's span, wider steps only squeeze the
+         * data into a sliver of the plot (and across zero they never get
+         * fewer than three ticks): better no labels than a useless range. */
+        if (fitted && step_mul(0.05, m, e) >= hi * 0.5 - lo * 0.5)
+            break;
     }
     a->n = 0;
     if (fitted) {
@@ -243,7 +254,7 @@ static const int decade_steps[] = {1,   2,   3,   4,   5,   6,   10,  12,  15,  
                                    40,  50,  60,  100, 150, 200, 250, 300, 400, 500, 600, 1000};
 
 /* Labels at every k-th decade; returns the count (0 also when none fit). */
-static int choose_decades(chart_axis *a, int len, int horizontal, int scale)
+static int choose_decades(chart_axis *a, int len, int horizontal, const label_text *lt)
 {
     /* |t| <= ~330 for any positive double, so these are small integers. */
     double d0 = ceil(a->tlo - TOL), d1 = floor(a->thi + TOL);
@@ -266,7 +277,7 @@ static int choose_decades(chart_axis *a, int len, int horizontal, int scale)
             snprintf(a->label[a->n], CHART_LABEL_MAX, "1e%d", d);
             a->n++;
         }
-        if (!too_many && labels_fit(a, len, horizontal, scale)) {
+        if (!too_many && labels_fit(a, len, horizontal, lt)) {
             a->decade_step = k;
             return a->n;
         }
@@ -277,7 +288,8 @@ static int choose_decades(chart_axis *a, int len, int horizontal, int scale)
 
 /* Labels at m * 10^d for every m in ms; returns the count, 0 when they do
  * not fit.  Only called for axes spanning a few decades. */
-static int choose_mantissas(chart_axis *a, const int *ms, int nm, int len, int horizontal, int scale)
+static int choose_mantissas(chart_axis *a, const int *ms, int nm, int len, int horizontal,
+                            const label_text *lt)
 {
     a->n = 0;
     for (double d = floor(a->tlo); d <= ceil(a->thi); d += 1.0)
@@ -291,13 +303,13 @@ static int choose_mantissas(chart_axis *a, const int *ms, int nm, int len, int h
             snprintf(a->label[a->n], CHART_LABEL_MAX, "%de%d", ms[i], (int)d);
             a->n++;
         }
-    if (!labels_fit(a, len, horizontal, scale))
+    if (!labels_fit(a, len, horizontal, lt))
         a->n = 0;
     return a->n;
 }
 
 static void setup_log(chart_axis *a, int fitted, double dmin, double dmax, int len, int horizontal,
-                      int scale)
+                      const label_text *lt)
 {
     if (fitted) {
         a->tlo = floor(dmin + TOL);
@@ -307,14 +319,14 @@ static void setup_log(chart_axis *a, int fitted, double dmin, double dmax, int l
             a->thi = a->tlo + 2.0;
         }
     }
-    int ndec = choose_decades(a, len, horizontal, scale);
+    int ndec = choose_decades(a, len, horizontal, lt);
     if (ndec > 3 || a->decade_step > 1)
         return;
     /* A few wide decades: label 2..9, or 2 and 5, times each power too. */
     static const int all[9] = {1, 2, 3, 4, 5, 6, 7, 8, 9}, few[3] = {1, 2, 5};
     chart_axis alt = *a;
-    if (a->thi - a->tlo < 40.0 && (choose_mantissas(&alt, all, 9, len, horizontal, scale) > ndec ||
-                                   choose_mantissas(&alt, few, 3, len, horizontal, scale) > ndec)) {
+    if (a->thi - a->tlo < 40.0 && (choose_mantissas(&alt, all, 9, len, horizontal, lt) > ndec ||
+                                   choose_mantissas(&alt, few, 3, len, horizontal, lt) > ndec)) {
         alt.decade_step = 1;
         *a = alt;
         ndec = a->n;
@@ -325,7 +337,7 @@ static void setup_log(chart_axis *a, int fitted, double dmin, double dmax, int l
     alt = *a;
     double lo = pow(10.0, a->tlo), hi = pow(10.0, a->thi);
     if (lo > 0.0 && isfinite(hi) && lo < hi) {
-        choose_linear(&alt, 0, lo, hi, len, horizontal, scale, 1);
+        choose_linear(&alt, 0, lo, hi, len, horizontal, lt, 1);
         if (alt.n > a->n) {
             alt.decade_step = 0;
             *a = alt;
@@ -334,14 +346,18 @@ static void setup_log(chart_axis *a, int fitted, double dmin, double dmax, int l
 }
 
 void chart_axis_setup(chart_axis *a, int fitted, double dmin, double dmax, int len, int horizontal,
-                      int scale)
+                      isk_font font, int scale)
 {
+    const isk_font_metrics *m = isk_font_metrics_of(font);
+    if (!m) /* the chart checked its font: only a caller of this file's own can get here */
+        m = isk_font_metrics_of(font = ISK_FONT_5X8);
+    const label_text lt = {font, scale, m->cell_w * scale, m->cell_h * scale};
     if (len < 1)
         len = 1;
     a->n = 0;
     a->decade_step = 0;
     if (a->log) {
-        setup_log(a, fitted, dmin, dmax, len, horizontal, scale);
+        setup_log(a, fitted, dmin, dmax, len, horizontal, &lt);
         return;
     }
     if (fitted && !(dmin < dmax)) {
@@ -360,5 +376,5 @@ void chart_axis_setup(chart_axis *a, int fitted, double dmin, double dmax, int l
         dmin = a->tlo;
         dmax = a->thi;
     }
-    choose_linear(a, fitted, dmin, dmax, len, horizontal, scale, 0);
+    choose_linear(a, fitted, dmin, dmax, len, horizontal, &lt, 0);
 }

@@ -1,6 +1,6 @@
 /* SPDX-License-Identifier: MIT */
 /* src/chart/chart_frame.c — everything around the data: grid, frame, ticks,
- * tick labels, title, axis labels (the y label rotated) and the legend.
+ * tick labels, title and axis labels (the y label rotated).
  *
  * All of it is aliased rectangles and bitmap text on whole pixels, so the
  * frame and ticks are crisp; tick positions round to the pixel column/row
@@ -117,11 +117,13 @@ void chart_draw_frame(const isk_chart *ch, const chart_axis *x, const chart_axis
 }
 
 /* Text drawn turned 90 degrees anticlockwise (read bottom to top), glyph by
- * glyph from the font bitmaps: no temporary canvas, nothing to allocate.
+ * glyph from the font's bitmaps: no temporary canvas, nothing to allocate.
  * (x, ybot) is the bottom-left of the turned first line; later lines go
  * right. */
-static void draw_text_up(isk_canvas *c, int x, int ybot, const char *s, int scale, isk_color col)
+static void draw_text_up(isk_canvas *c, isk_font font, int x, int ybot, const char *s, int scale, isk_color col)
 {
+    const isk_font_metrics *m = isk_font_metrics_of(font);
+    const unsigned left = 1u << (m->glyph_w - 1); /* a row's leftmost pixel */
     int line = 0, ci = 0;
     for (; *s; s++) {
         if (*s == '\n') {
@@ -129,13 +131,13 @@ static void draw_text_up(isk_canvas *c, int x, int ybot, const char *s, int scal
             ci = 0;
             continue;
         }
-        const uint8_t *g = isk_font_glyph((unsigned char)*s);
-        for (int row = 0; row < ISK_FONT_GLYPH_H; row++)
-            for (int colm = 0; colm < ISK_FONT_GLYPH_W; colm++) {
-                if (!(g[row] & (0x10u >> colm)))
+        const uint8_t *g = isk_font_rows(font, (unsigned char)*s);
+        for (int row = 0; row < m->glyph_h; row++)
+            for (int colm = 0; colm < m->glyph_w; colm++) {
+                if (!(g[row] & (left >> colm)))
                     continue;
-                long long u = (long long)ci * ISK_FONT_CELL_W + colm; /* along the text */
-                long long v = (long long)line * ISK_FONT_CELL_H + row;
+                long long u = (long long)ci * m->cell_w + colm; /* along the text */
+                long long v = (long long)line * m->cell_h + row;
                 long long px = x + v * scale, py = ybot - (u + 1) * scale + 1;
                 if (px < -scale || py < -scale || px > c->width || py > c->height)
                     continue;
@@ -150,32 +152,31 @@ static int clampi(int v, int lo, int hi)
     return v < lo ? lo : v > hi ? hi : v;
 }
 
-/* Width of the inked part of a one-line string (no trailing spacing). */
-static int ink_width(const char *s, int scale)
+static int text_width(const chart_layout *lay, const char *s)
 {
-    int w = isk_text_width(s, scale);
-    return w > scale ? w - scale : w;
+    return isk_font_text_width(lay->font, s, lay->s);
 }
+
 
 void chart_draw_text(const isk_chart *ch, const chart_axis *x, const chart_axis *y,
                      const chart_layout *lay, isk_canvas *c)
 {
-    int s = lay->s, pad = CHART_PAD * s;
+    int s = lay->s, pad = CHART_PAD * s, line_gap = chart_up(lay, CHART_LINE_GAP);
     double f;
     int ly = lay->B + s + CHART_TICK * s + CHART_GAP * s;
     for (int k = 0; k < x->n; k++) {
         if (!tick_frac(x, k, &f))
             continue;
-        int w = isk_text_width(x->label[k], s), iw = ink_width(x->label[k], s);
+        int w = text_width(lay, x->label[k]), iw = chart_ink_width(lay, x->label[k]);
         int lx = clampi(col_of(lay, f) - (iw - s) / 2, 0, c->width - w);
-        isk_draw_text(c, lx, ly, x->label[k], s, ch->ink, ISK_BLEND_OVER);
+        chart_text_at(c, lay, lx, ly, x->label[k], ch->ink);
     }
     int right = lay->L - (s - 1) - CHART_TICK * s - CHART_GAP * s; /* one past the ink */
     for (int k = 0; k < y->n; k++) {
         if (!tick_frac(y, k, &f))
             continue;
-        int iw = ink_width(y->label[k], s);
-        isk_draw_text(c, right - iw, row_of(lay, f) - 3 * s, y->label[k], s, ch->ink, ISK_BLEND_OVER);
+        int iw = chart_ink_width(lay, y->label[k]);
+        chart_text_at(c, lay, right - iw, row_of(lay, f) - lay->cap_mid, y->label[k], ch->ink);
     }
     int mid = (lay->L + lay->R + 1) / 2;
     if (lay->top2) {
@@ -184,88 +185,43 @@ void chart_draw_text(const isk_chart *ch, const chart_axis *x, const chart_axis 
             f = chart_x2_frac(ch, lay, lay->x2.t[k]);
             if (!(f >= -FEPS && f <= 1.0 + FEPS))
                 continue;
-            int w = isk_text_width(lay->x2.label[k], s), iw = ink_width(lay->x2.label[k], s);
+            int w = text_width(lay, lay->x2.label[k]), iw = chart_ink_width(lay, lay->x2.label[k]);
             int lx = clampi(col_of(lay, f) - (iw - s) / 2, 0, c->width - w);
-            isk_draw_text(c, lx, ly2, lay->x2.label[k], s, ch->ink, ISK_BLEND_OVER);
+            chart_text_at(c, lay, lx, ly2, lay->x2.label[k], ch->ink);
         }
-        int w = isk_text_width(ch->x2_label, s), iw = ink_width(ch->x2_label, s);
+        int w = text_width(lay, ch->x2_label), iw = chart_ink_width(lay, ch->x2_label);
         int tx = clampi(mid - iw / 2, pad, c->width - pad - w);
-        isk_draw_text(c, tx, ly2 - 2 * s - isk_text_height(ch->x2_label, s), ch->x2_label, s, ch->ink,
-                      ISK_BLEND_OVER);
+        int ty = ly2 - line_gap - isk_font_text_height(lay->font, ch->x2_label, s);
+        chart_text_at(c, lay, tx, ty, ch->x2_label, ch->ink);
     }
     if (ch->title && *ch->title) {
-        int w = isk_text_width(ch->title, s), iw = ink_width(ch->title, s);
+        int w = text_width(lay, ch->title), iw = chart_ink_width(lay, ch->title);
         int tx = clampi(mid - iw / 2, pad, c->width - pad - w);
-        isk_draw_text(c, tx, pad, ch->title, s, ch->ink, ISK_BLEND_OVER);
+        chart_text_at(c, lay, tx, pad, ch->title, ch->ink);
         if (s > 1 && ch->ink.a == 255) /* bold: again one pixel right (at scale 1 it smudges) */
-            isk_draw_text(c, tx + 1, pad, ch->title, s, ch->ink, ISK_BLEND_OVER);
+            chart_text_at(c, lay, tx + 1, pad, ch->title, ch->ink);
     }
     if (ch->x_label && *ch->x_label) {
-        int w = isk_text_width(ch->x_label, s), iw = ink_width(ch->x_label, s);
+        int w = text_width(lay, ch->x_label), iw = chart_ink_width(lay, ch->x_label);
         int tx = clampi(mid - iw / 2, pad, c->width - pad - w);
-        int ty = ly + lay->chh + 2 * s;
-        isk_draw_text(c, tx, ty, ch->x_label, s, ch->ink, ISK_BLEND_OVER);
+        int ty = ly + lay->chh + line_gap;
+        chart_text_at(c, lay, tx, ty, ch->x_label, ch->ink);
     }
     if (ch->y_label && *ch->y_label) {
-        int iw = ink_width(ch->y_label, s);
+        int iw = chart_ink_width(lay, ch->y_label);
         int midy = (lay->T + lay->B + 1) / 2;
         int ybot = clampi(midy + iw / 2, iw + pad, c->height - pad);
-        draw_text_up(c, pad, ybot, ch->y_label, s, ch->ink);
+        draw_text_up(c, lay->font, pad, ybot, ch->y_label, s, ch->ink);
     }
 }
 
-void chart_draw_legend(const isk_chart *ch, const chart_layout *lay, isk_canvas *c)
+int chart_ink_width(const chart_layout *lay, const char *s)
 {
-    if (ch->legend == ISK_LEGEND_NONE)
-        return;
-    int s = lay->s, bp = 5 * s, sample = 26 * s, gap = 6 * s, rowgap = 3 * s;
-    int mark = 2 * lay->mark_r + 3;
-    /* Sizes are capped at the canvas's so absurd names or counts cannot
-     * overflow the sums (the box is then simply clipped). */
-    int textw = 0, h = 0, rows = 0;
-    for (size_t k = 0; k < ch->nseries && h <= c->height; k++) {
-        const char *name = ch->series[k].name;
-        if (!name || !*name)
-            continue;
-        int w = ink_width(name, s), th = isk_text_height(name, s);
-        w = w > c->width ? c->width : w;
-        th = th > c->height ? c->height : th;
-        textw = w > textw ? w : textw;
-        h += (th > mark ? th : mark) + (rows ? rowgap : 0);
-        rows = 1;
-    }
-    if (rows == 0)
-        return;
-    int bw = bp + sample + gap + textw + bp, bh = bp + h + bp - s;
-    int inset = 8 * s, bx, by;
-    int left = lay->L + inset, right = lay->R - inset - bw;
-    int top = lay->T + inset, bottom = lay->B - inset - bh;
-    switch (ch->legend) {
-    case ISK_LEGEND_TOP_LEFT: bx = left; by = top; break;
-    case ISK_LEGEND_BOTTOM_LEFT: bx = left; by = bottom; break;
-    case ISK_LEGEND_BOTTOM_RIGHT: bx = right; by = bottom; break;
-    default: bx = right; by = top; break;
-    }
-    isk_color edge = ch->ink;
-    edge.a = (uint8_t)(edge.a * 3 / 5);
-    isk_fill_rect(c, bx, by, bw, bh, ch->background, ISK_BLEND_OVER);
-    isk_fill_rect(c, bx, by, bw, 1, edge, ISK_BLEND_OVER);
-    isk_fill_rect(c, bx, by + bh - 1, bw, 1, edge, ISK_BLEND_OVER);
-    isk_fill_rect(c, bx, by + 1, 1, bh - 2, edge, ISK_BLEND_OVER);
-    isk_fill_rect(c, bx + bw - 1, by + 1, 1, bh - 2, edge, ISK_BLEND_OVER);
-    int ry = by + bp;
-    for (size_t k = 0; k < ch->nseries && ry < c->height; k++) {
-        const isk_chart_series *se = &ch->series[k];
-        if (!se->name || !*se->name)
-            continue;
-        int th = isk_text_height(se->name, s);
-        th = th > c->height ? c->height : th;
-        int eh = th > mark ? th : mark;
-        int cy = ry + (eh - 1) / 2; /* pixel row of the entry's middle */
-        chart_draw_sample(&se->style, bx + bp, bx + bp + sample, cy + 0.5, lay, c);
-        /* one line: centred on the sample (capitals span rows 0..6) */
-        int ty = th > lay->chh ? ry : cy - 3 * s;
-        isk_draw_text(c, bx + bp + sample + gap, ty, se->name, s, ch->ink, ISK_BLEND_OVER);
-        ry += eh + rowgap;
-    }
+    int w = text_width(lay, s);
+    return w > lay->space ? w - lay->space : w;
+}
+
+void chart_text_at(isk_canvas *c, const chart_layout *lay, int x, int y, const char *s, isk_color col)
+{
+    isk_font_draw_text(c, lay->font, x, y, s, lay->s, col, ISK_BLEND_OVER);
 }

@@ -4,8 +4,8 @@
  * A chart is drawn in three steps: validate everything and compute the
  * layout (chart.c, using the axis code of chart_axis.h), then draw — grid,
  * series lines, frame and ticks, markers, text, legend (chart_series.c,
- * chart_frame.c) — with nothing left that can fail, so an error never
- * leaves a half-drawn canvas.
+ * chart_frame.c, chart_legend.c) — with nothing left that can fail, so an
+ * error never leaves a half-drawn canvas.
  */
 #ifndef ISKRA_CHART_INTERNAL_H
 #define ISKRA_CHART_INTERNAL_H
@@ -43,6 +43,17 @@ void chart_draw_frame(const isk_chart *ch, const chart_axis *x, const chart_axis
                       const chart_layout *lay, isk_canvas *c);
 void chart_draw_text(const isk_chart *ch, const chart_axis *x, const chart_axis *y,
                      const chart_layout *lay, isk_canvas *c);
+/* Width of the inked part of a one-line string in the chart's font (its
+ * width without the trailing spacing column). */
+int chart_ink_width(const chart_layout *lay, const char *s);
+/* A string in the chart's font and scale, its first cell's top-left at (x, y). */
+void chart_text_at(isk_canvas *c, const chart_layout *lay, int x, int y, const char *s, isk_color col);
+
+/* ---- chart_legend.c ------------------------------------------------------ */
+
+/* Height of the rows of an ISK_LEGEND_ABOVE legend whose rows may be
+ * `width` pixels wide, on a canvas W x H (0: no named series). */
+int chart_legend_above_height(const isk_chart *ch, const chart_layout *lay, int width, int W, int H);
 void chart_draw_legend(const isk_chart *ch, const chart_layout *lay, isk_canvas *c);
 
 #endif

@@ -366,8 +366,9 @@ void chart_draw_notes(const isk_chart *ch, const chart_axis *x, const chart_axis
         if (n->marker != ISK_MARKER_NONE)
             draw_marker(c, n->marker, px, py, &big, n->color);
         if (n->text && *n->text) /* up and to the right, at scale 1 (small beside the data) */
-            isk_draw_text(c, (int)floor(px) + big.mark_r + 1, (int)floor(py) - big.mark_r - ISK_FONT_CELL_H,
-                          n->text, 1, n->color, ISK_BLEND_OVER);
+            isk_font_draw_text(c, lay->font, (int)floor(px) + big.mark_r + 1,
+                               (int)floor(py) - big.mark_r - isk_font_metrics_of(lay->font)->cell_h, n->text, 1,
+                               n->color, ISK_BLEND_OVER);
     }
 }
 

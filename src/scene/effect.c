@@ -313,6 +313,11 @@ const isk_particles *isk_effect_particles(const isk_effect *e, int emitter)
     return e && emitter >= 0 && emitter < e->ngroups ? &e->groups[emitter].store : NULL;
 }
 
+const isk_forces *isk_effect_forces(const isk_effect *e, int emitter)
+{
+    return e && emitter >= 0 && emitter < e->ngroups ? &e->groups[emitter].forces : NULL;
+}
+
 uint64_t isk_effect_dropped(const isk_effect *e, int emitter)
 {
     return e && emitter >= 0 && emitter < e->ngroups ? e->groups[emitter].dropped : 0;

@@ -383,3 +383,94 @@ void isk_forces_eval(isk_forces *f, size_t n, const double *x, const double *y, 
 {
     isk_forces_eval_step(f, n, x, y, vx, vy, m, fx, fy, px, py, with_drag, 0.0);
 }
+
+/* ---- potential energy (isk_forces_potential_energy) ---------------------------
+ * Kept apart from the force stages above: it reads f, never the kernels'
+ * fast paths, and runs once per chart sample, not per step.  Each row
+ * gives the energy of the laws it stands for, in the order the forces are
+ * summed; a law with no row makes the function refuse (a new force law
+ * must bring its energy, or say it has none as drag does). */
+
+/* U of one potential's law at distance d from it, outside its min distance
+ * (the zero where the law has a natural one: far away for P > 2, at the
+ * centre for P < 2). */
+static double power_energy(double kq, double P, double d)
+{
+    if (P == 2.0)
+        return kq * log(d);
+    if (P == 1.0)
+        return kq * d;
+    return kq * (pow(d, 2.0 - P) / (2.0 - P));
+}
+
+static double one_potential_energy(const isk_potential *pot, double x, double y)
+{
+    const double kq = 1.0 * (pot->charge * pot->k), P = pot->P, mn = pot->min_dist;
+    const double d = isk_k_coulomb_dist(pot->r.x, pot->r.y, x, y);
+    if (mn > d) { /* the force's own test: inside, F = kQ n / min^P */
+        const double mnP = P == 2.0 ? mn * mn : P == 1.0 ? mn : pow(mn, P);
+        return kq * ((d * d - mn * mn) / (2.0 * mnP)) + power_energy(kq, P, mn);
+    }
+    return power_energy(kq, P, d);
+}
+
+static double gravity_energy(const isk_forces *f, double m, double x, double y)
+{
+    (void)x;
+    return (m * f->gravity) * y;
+}
+
+/* Written so that a weight w and a gravity g = -w give the same bits:
+ * (m*0)*x adds a zero, and -((m*ay)*y) is (m*g)*y exactly. */
+static double accel_energy(const isk_forces *f, double m, double x, double y)
+{
+    return -((m * f->ax) * x + (m * f->ay) * y);
+}
+
+static double potentials_energy(const isk_forces *f, double m, double x, double y)
+{
+    (void)m; /* the potentials' force does not scale with the mass */
+    const size_t np = f->pick ? f->npick : f->npot;
+    double u = 0.0;
+    for (size_t k = 0; k < np; k++) {
+        const isk_potential *pot = &f->pot[f->pick ? f->pick[k] : k];
+        if (potential_law(pot))
+            u = u + one_potential_energy(pot, x, y);
+    }
+    return u;
+}
+
+typedef struct energy_row {
+    unsigned laws;                                                    /* the ISK_LAW_* bits of the row */
+    double (*energy)(const isk_forces *f, double m, double x, double y); /* NULL: no potential energy */
+} energy_row;
+
+static const energy_row energy_rows[] = {
+    {ISK_LAW_GRAVITY, gravity_energy},
+    {ISK_LAW_ACCEL, accel_energy},
+    {ISK_LAW_DRAG, NULL}, /* F = -b v: no potential */
+    {ISK_LAW_POWER_2 | ISK_LAW_POWER_1 | ISK_LAW_POWER | ISK_LAW_CUTOFF, potentials_energy},
+};
+
+isk_status isk_forces_potential_energy(const isk_forces *f, size_t n, const double *x, const double *y,
+                                       const double *m, double *energy)
+{
+    if (!f || !energy || (n > 0 && (!x || !y || !m)) || ((f->pick ? f->npick : f->npot) > 0 && !f->pot))
+        return ISK_ERR_NULL;
+    const unsigned laws = isk_forces_laws(f);
+    unsigned known = 0;
+    for (size_t r = 0; r < sizeof energy_rows / sizeof energy_rows[0]; r++)
+        known |= energy_rows[r].laws;
+    if (laws & ~known)
+        return ISK_ERR_UNSUPPORTED;
+    double sum = 0.0;
+    for (size_t i = 0; i < n; i++) {
+        double u = 0.0;
+        for (size_t r = 0; r < sizeof energy_rows / sizeof energy_rows[0]; r++)
+            if (energy_rows[r].energy && (laws & energy_rows[r].laws))
+                u = u + energy_rows[r].energy(f, m[i], x[i], y[i]);
+        sum = sum + u;
+    }
+    *energy = sum;
+    return ISK_OK;
+}

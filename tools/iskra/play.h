@@ -20,7 +20,7 @@
  *                   name a script got wrong, bringing a widget into view
  *   play_charts.c   energy and particle count over time, the integrator
  *                   table with measured cost and energy drift
- *   play_energy.c   kinetic, gravitational and potential energy of the state
+ *   play_energy.c   kinetic and potential energy of the state
  *   play_hud.c      the thesis's FPS text and the HUD over the canvas
  *   play_files.c    reload (by hand and when the file changes), save,
  *                   screenshots
@@ -307,7 +307,7 @@ double play_divisor_of_slider(double s);
 
 /* play_energy.c */
 typedef struct play_energy {
-    double kinetic, gravity, potential; /* potential: of the potentials (x_multiplier 1 assumed) */
+    double kinetic, potential; /* potential: isk_forces_potential_energy of every emitter's forces */
 } play_energy;
 play_energy play_energy_of(const isk_effect *fx);
 

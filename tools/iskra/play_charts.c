@@ -50,7 +50,7 @@ void play_charts_sample(player *p, double seconds_per_particle_step, long partic
 {
     const isk_effect_def *d = isk_effect_definition(p->fx);
     play_energy e = play_energy_of(p->fx);
-    const double pe = e.gravity + e.potential, total = e.kinetic + pe;
+    const double pe = e.potential, total = e.kinetic + pe;
     const size_t count = isk_effect_particle_count(p->fx);
     push(&p->hist, isk_effect_time(p->fx), e.kinetic, pe, (double)count);
     play_integrator_stats *st = &p->stats[d->integrator];
@@ -79,6 +79,7 @@ void play_charts_sample(player *p, double seconds_per_particle_step, long partic
 static void chart_look(isk_chart *ch, const player *p)
 {
     isk_chart_defaults(ch);
+    ch->font = ISK_FONT_6X13; /* capitals 10 px tall, as the panel's: read from across a classroom */
     ch->background = p->ui.style.panel;
     ch->ink = p->ui.style.label;
     ch->grid = p->ui.style.box;
@@ -135,19 +136,31 @@ static void chart_into(player *p, isk_canvas *c, isk_ui_rect r, const isk_chart 
     isk_ui_end(&tmp);
 }
 
+/* The two charts' arrangement.  Side by side when each gets at least
+ * SIDE_MIN_W pixels across (or the caller asks for it): each then has its
+ * own x axis.  Stacked otherwise, the particle count's chart at the bottom
+ * with PARTICLES_MIN_H pixels or nearly half: both plot the same times, so
+ * the x label under the lower chart serves both, and the energy chart
+ * above uses the height the label would take.  Either way the quantity is
+ * the y label (turned, beside the plot, where height is scarcer than
+ * width) and the energy legend stands in rows over the plot, where it
+ * hides no data. */
+enum { SIDE_MIN_W = 200, PARTICLES_MIN_H = 120 };
+
 static void render_charts(player *p, isk_canvas *c, int side_by_side)
 {
     play_chart_points *t = &p->chart_points;
     thin(&p->hist, t);
     isk_canvas_fill(c, p->ui.style.panel);
     isk_ui_rect r = {0, 0, c->width, c->height};
-    /* halves: with the eight integrators' table below, a 5/8 split left the
-     * particle chart under the 120 px a chart needs */
-    isk_ui_rect top = side_by_side ? isk_ui_cut_left(&r, r.w / 2) : isk_ui_cut_top(&r, r.h / 2);
+    const int gap = isk_ui_px(&p->ui, 4);
+    side_by_side = side_by_side || (r.w - gap) / 2 >= SIDE_MIN_W;
+    int lower_h = r.h * 9 / 20 > PARTICLES_MIN_H ? r.h * 9 / 20 : PARTICLES_MIN_H;
+    isk_ui_rect top = side_by_side ? isk_ui_cut_left(&r, (r.w - gap) / 2) : isk_ui_cut_top(&r, r.h - gap - lower_h);
     if (side_by_side)
-        isk_ui_cut_left(&r, isk_ui_px(&p->ui, 4));
+        isk_ui_cut_left(&r, gap);
     else
-        isk_ui_cut_top(&r, isk_ui_px(&p->ui, 4));
+        isk_ui_cut_top(&r, gap);
     isk_chart ch;
     chart_look(&ch, p);
     static const isk_color colours[3] = {{0x56, 0xb4, 0xe9, 255}, {0xe6, 0x9f, 0x00, 255}, {0xf0, 0xf0, 0xf0, 255}};
@@ -156,16 +169,17 @@ static void render_charts(player *p, isk_canvas *c, int side_by_side)
         {"potential", t->t, t->v[1], t->n, {colours[1], ISK_DASH_DASHED, ISK_MARKER_NONE}},
         {"total", t->t, t->v[2], t->n, {colours[2], ISK_DASH_SOLID, ISK_MARKER_NONE}},
     };
-    ch.title = "energy";
-    ch.x_label = "simulated seconds";
+    static const char *const seconds = "simulated seconds";
+    ch.y_label = "energy";
+    ch.x_label = side_by_side ? seconds : NULL;
     ch.series = s;
     ch.nseries = 3;
-    ch.legend = ISK_LEGEND_TOP_LEFT;
+    ch.legend = ISK_LEGEND_ABOVE;
     chart_into(p, c, top, &ch, t->n ? "energy: no range yet" : "energy: when it runs");
     chart_look(&ch, p);
     isk_chart_series n = {NULL, t->t, t->v[3], t->n, {colours[0], ISK_DASH_SOLID, ISK_MARKER_NONE}};
-    ch.title = "particles";
-    ch.x_label = "simulated seconds";
+    ch.y_label = "particles";
+    ch.x_label = seconds;
     ch.series = &n;
     ch.nseries = 1;
     ch.legend = ISK_LEGEND_NONE;
