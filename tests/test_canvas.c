@@ -73,15 +73,22 @@ Test(canvas, equal)
     isk_canvas_free(&b);
 }
 
+/* Two 4x3 grey canvases; b differs from a in two pixels: +10 in G at
+ * (1, 2), -5 in A at (3, 0). */
+static void two_canvases(isk_canvas *a, isk_canvas *b)
+{
+    cr_assert_eq(isk_canvas_init(a, 4, 3), ISK_OK);
+    cr_assert_eq(isk_canvas_init(b, 4, 3), ISK_OK);
+    isk_canvas_fill(a, isk_rgba(90, 90, 90, 255));
+    isk_canvas_fill(b, isk_rgba(90, 90, 90, 255));
+    isk_canvas_at(b, 1, 2)[1] = 100;
+    isk_canvas_at(b, 3, 0)[3] = 250;
+}
+
 Test(canvas, compare_counts_and_marks_differences)
 {
     isk_canvas a, b, img;
-    cr_assert_eq(isk_canvas_init(&a, 4, 3), ISK_OK);
-    cr_assert_eq(isk_canvas_init(&b, 4, 3), ISK_OK);
-    isk_canvas_fill(&a, isk_rgba(90, 90, 90, 255));
-    isk_canvas_fill(&b, isk_rgba(90, 90, 90, 255));
-    isk_canvas_at(&b, 1, 2)[1] = 100; /* +10 in G */
-    isk_canvas_at(&b, 3, 0)[3] = 250; /* -5 in A */
+    two_canvases(&a, &b);
     isk_canvas_diff d;
     cr_assert_eq(isk_canvas_init(&img, 4, 3), ISK_OK);
     cr_assert(isk_canvas_compare(&a, &b, &d, &img));
@@ -102,6 +109,35 @@ Test(canvas, compare_counts_and_marks_differences)
     cr_assert_eq(isk_canvas_get(&img, 4, 2).r, 255);
     cr_assert(isk_canvas_compare(&a, &a, NULL, NULL));
     isk_canvas_free(&img);
+    isk_canvas_free(&a);
+    isk_canvas_free(&b);
+    isk_canvas_free(&c);
+}
+
+/* The tolerance rule: a pixel counts when its largest channel difference is
+ * beyond the limit (in either direction, any of the four channels). */
+Test(canvas, count_beyond_counts_pixels_past_the_largest_channel_difference)
+{
+    isk_canvas a, b, c;
+    two_canvases(&a, &b);             /* +10 in G, -5 in A */
+    isk_canvas_at(&b, 0, 1)[0] = 88;  /* -2 in R */
+    isk_canvas_at(&b, 0, 1)[2] = 94;  /* +4 in B: the pixel's largest is 4 */
+    cr_assert_eq(isk_canvas_count_beyond(&a, &b, 0), 3, "0: every differing pixel");
+    cr_assert_eq(isk_canvas_count_beyond(&a, &b, 3), 3);
+    cr_assert_eq(isk_canvas_count_beyond(&a, &b, 4), 2, "4 is not beyond 4");
+    cr_assert_eq(isk_canvas_count_beyond(&a, &b, 5), 1);
+    cr_assert_eq(isk_canvas_count_beyond(&b, &a, 9), 1, "the order does not matter");
+    cr_assert_eq(isk_canvas_count_beyond(&a, &b, 10), 0);
+    cr_assert_eq(isk_canvas_count_beyond(&a, &b, 255), 0);
+    /* Refusals: -1. */
+    cr_assert_eq(isk_canvas_count_beyond(&a, &b, -1), -1);
+    cr_assert_eq(isk_canvas_count_beyond(&a, &b, 256), -1);
+    cr_assert_eq(isk_canvas_count_beyond(NULL, &b, 0), -1);
+    cr_assert_eq(isk_canvas_count_beyond(&a, NULL, 0), -1);
+    cr_assert_eq(isk_canvas_init(&c, 3, 4), ISK_OK);
+    cr_assert_eq(isk_canvas_count_beyond(&a, &c, 0), -1, "sizes differ");
+    isk_canvas bad = {NULL, 4, 3, 16, 0};
+    cr_assert_eq(isk_canvas_count_beyond(&a, &bad, 0), -1, "no pixels");
     isk_canvas_free(&a);
     isk_canvas_free(&b);
     isk_canvas_free(&c);

@@ -14,21 +14,13 @@
 
 #define OUT "out/test_cli_nothing_drawn"
 
-static void write_file(const char *path, const char *text)
-{
-    FILE *f = fopen(path, "w");
-    cr_assert_not_null(f, "%s", path);
-    fputs(text, f);
-    fclose(f);
-}
-
 /* Renders dir/scene.ini (holding `text`) with `cmd`; returns stderr. */
 static char *run(const char *dir, const char *cmd, const char *text, int want)
 {
     char path[300], args[700];
     cli_fresh(dir);
     snprintf(path, sizeof path, "%s/scene.ini", dir);
-    write_file(path, text);
+    cli_write_file(path, text);
     snprintf(args, sizeof args, cmd, path, dir);
     cr_assert_eq(cli_run(dir, args), want, "iskra %s", args);
     snprintf(path, sizeof path, "%s/stderr.txt", dir);

@@ -18,6 +18,7 @@
 #include "iskra/effect.h"
 #include "iskra/scene.h"
 #include "refimg_scene.h"
+#include "scene_text.h"
 
 /* %s: the roof's extra keys. */
 static const char *const rain = "[scene]\nwidth = 96\nheight = 72\nbackground = #0b1020\nseed = 7\n"
@@ -33,19 +34,7 @@ static isk_effect *create(const char *roof_keys)
 {
     char text[2000];
     snprintf(text, sizeof text, rain, roof_keys);
-    isk_effect_def d;
-    isk_error err = {0};
-    cr_assert_eq(isk_scene_load_string(&d, text, "rain.ini", &err), ISK_OK, "%s", err.message);
-    isk_effect *fx = NULL;
-    cr_assert_eq(isk_effect_create(&fx, &d, &err), ISK_OK, "%s", err.message);
-    isk_effect_def_free(&d);
-    return fx;
-}
-
-static void steps(isk_effect *fx, int n)
-{
-    for (int i = 0; i < n; i++)
-        cr_assert_eq(isk_effect_step(fx), ISK_OK);
+    return scene_text_open(text, 0);
 }
 
 static isk_canvas render(isk_effect *fx)
@@ -78,7 +67,7 @@ static int line_at_42(const isk_canvas *c, int rgb_red)
 Test(deflector_show, a_shown_roof_follows_a_live_tilt)
 {
     isk_effect *fx = create("show = true\ncolor = #ff8020");
-    steps(fx, 40);
+    scene_steps(fx, 40);
     isk_canvas c = render(fx);
     /* the roof's middle, (-0.5, -0.25): pixel (42, 38) */
     cr_assert(line_at_42(&c, 0xff));
@@ -86,7 +75,7 @@ Test(deflector_show, a_shown_roof_follows_a_live_tilt)
     isk_error err = {0};
     cr_assert_eq(isk_effect_set(fx, "deflector roof", "segment", "-3, 0.5, 2, -1", &err), ISK_OK, "%s",
                  err.message);
-    steps(fx, 20);
+    scene_steps(fx, 20);
     c = render(fx);
     cr_assert(!line_at_42(&c, 0xff), "the line stayed where the roof was");
     refimg_expect("deflector_show_tilted", &c);
@@ -100,15 +89,10 @@ Test(deflector_show, a_shown_deflector_is_a_drawing_of_its_segment)
     char text[2000];
     snprintf(text, sizeof text, rain, "");
     strcat(text, "[drawing roof]\npoints = -3, -1, 2, 0.5\ncolor = #ff8020\n");
-    isk_effect_def d;
-    isk_error err = {0};
-    cr_assert_eq(isk_scene_load_string(&d, text, "drawn.ini", &err), ISK_OK, "%s", err.message);
-    isk_effect *drawn = NULL;
-    cr_assert_eq(isk_effect_create(&drawn, &d, &err), ISK_OK, "%s", err.message);
-    isk_effect_def_free(&d);
+    isk_effect *drawn = scene_text_open(text, 0);
     for (int f = 0; f < 3; f++) {
-        steps(shown, 15);
-        steps(drawn, 15);
+        scene_steps(shown, 15);
+        scene_steps(drawn, 15);
         isk_canvas a = render(shown), b = render(drawn);
         cr_assert(same(&a, &b), "frame %d", 15 * (f + 1));
         isk_canvas_free(&a);
@@ -121,9 +105,9 @@ Test(deflector_show, a_shown_deflector_is_a_drawing_of_its_segment)
 Test(deflector_show, hidden_by_default_and_when_turned_off)
 {
     isk_effect *plain = create(""), *off = create("show = false\ncolor = red"), *on = create("show = true");
-    steps(plain, 30);
-    steps(off, 30);
-    steps(on, 30);
+    scene_steps(plain, 30);
+    scene_steps(off, 30);
+    scene_steps(on, 30);
     isk_canvas a = render(plain), b = render(off), c = render(on);
     cr_assert(same(&a, &b));
     cr_assert(!same(&a, &c));

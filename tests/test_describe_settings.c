@@ -12,6 +12,7 @@
 #include "iskra/effect.h"
 #include "iskra/keys.h"
 #include "iskra/scene.h"
+#include "scene_text.h"
 #include "tool_cli.h"
 
 static const char *const scene =
@@ -23,28 +24,6 @@ static const char *const scene =
     "[emitter layer]\nsource = layer\ncount = 100\nrect = 1, 9, 1, 2\ndeflectors = roof, hidden\n"
     "[click]\nexplosion = gauss\ncount = 500\nat_start = 5, 1\nafter_frames = 1\n";
 
-static char *describe(isk_effect *fx)
-{
-    char *text = NULL;
-    size_t n = 0;
-    FILE *f = open_memstream(&text, &n);
-    cr_assert_not_null(f);
-    isk_effect_describe(fx, f);
-    fclose(f);
-    return text;
-}
-
-static isk_effect *create(const char *text)
-{
-    isk_effect_def d;
-    isk_error err = {0};
-    cr_assert_eq(isk_scene_load_string(&d, text, "t.ini", &err), ISK_OK, "%s", err.message);
-    isk_effect *fx = NULL;
-    cr_assert_eq(isk_effect_create(&fx, &d, &err), ISK_OK, "%s", err.message);
-    isk_effect_def_free(&d);
-    return fx;
-}
-
 static void contains(const char *text, const char *want)
 {
     cr_assert_not_null(strstr(text, want), "expected \"%s\" in:\n%s", want, text);
@@ -52,8 +31,8 @@ static void contains(const char *text, const char *want)
 
 Test(describe_settings, the_click_the_start_and_the_deflectors_are_described)
 {
-    isk_effect *fx = create(scene);
-    char *t = describe(fx);
+    isk_effect *fx = scene_text_open(scene, 0);
+    char *t = scene_text_lists(fx);
     contains(t, "\n[click] enabled = true; explosion = gauss; count = 500; emitter = the first emitter; at_start = 5, 1; "
                 "after_frames = 1\n");
     contains(t, "; seed = 42;");
@@ -68,7 +47,7 @@ Test(describe_settings, the_click_the_start_and_the_deflectors_are_described)
     isk_error err = {0};
     cr_assert_eq(isk_effect_set(fx, "deflector roof", "segment", "1, 3, 8, 2", &err), ISK_OK, "%s", err.message);
     cr_assert_eq(isk_effect_set(fx, "click", "count", "250", &err), ISK_OK, "%s", err.message);
-    t = describe(fx);
+    t = scene_text_lists(fx);
     contains(t, "[deflector roof] segment = 1, 3, 8, 2;");
     contains(t, "; count = 250;");
     free(t);
@@ -79,8 +58,8 @@ Test(describe_settings, the_click_the_start_and_the_deflectors_are_described)
  * left out. */
 Test(describe_settings, every_key_of_the_settings_sections_is_there)
 {
-    isk_effect *fx = create(scene);
-    char *t = describe(fx);
+    isk_effect *fx = scene_text_open(scene, 0);
+    char *t = scene_text_lists(fx);
     const isk_section_kind sections[] = {ISK_SECTION_SCENE, ISK_SECTION_DEFLECTOR, ISK_SECTION_CLICK};
     for (int s = 0; s < 3; s++)
         for (int i = 0; i < isk_key_count(); i++) {
@@ -101,8 +80,8 @@ Test(describe_settings, every_key_of_the_settings_sections_is_there)
  * prints the same lines. */
 Test(describe_settings, off_sections_stay_out_and_the_tool_says_the_same)
 {
-    isk_effect *fx = create("[scene]\nseed = 3\n[emitter e]\nsource = particle\n");
-    char *t = describe(fx);
+    isk_effect *fx = scene_text_open("[scene]\nseed = 3\n[emitter e]\nsource = particle\n", 0);
+    char *t = scene_text_lists(fx);
     cr_assert_null(strstr(t, "[click]"), "%s", t);
     cr_assert_null(strstr(t, "[bounds]"), "%s", t);
     contains(t, "[scene] width = 600; height = 600;");

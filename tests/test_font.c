@@ -7,7 +7,8 @@
 #include "iskra/text.h"
 #include "iskra/view.h"
 #include <math.h>
-#include "refimg.h"
+#include "font_checks.h"
+#include "refimg_scene.h"
 
 Test(font, metrics)
 {
@@ -31,51 +32,17 @@ Test(font, metrics)
     cr_assert_eq(isk_text_height("abc", INT_MAX / 2), INT_MAX);
 }
 
-static int glyph_pixels(const uint8_t *g)
-{
-    int n = 0;
-    for (int r = 0; r < ISK_FONT_GLYPH_H; r++)
-        for (int b = 0; b < 8; b++)
-            n += (g[r] >> b) & 1;
-    return n;
-}
-
 Test(font, glyphs_fit_their_box_and_differ)
 {
-    cr_assert_eq(glyph_pixels(isk_font_glyph(' ')), 0);
-    for (int ch = 33; ch <= 126; ch++) {
-        const uint8_t *g = isk_font_glyph((unsigned char)ch);
-        cr_assert_gt(glyph_pixels(g), 0, "glyph %d is empty", ch);
-        for (int r = 0; r < ISK_FONT_GLYPH_H; r++)
-            cr_assert_eq(g[r] & ~0x1Fu, 0, "glyph %d row %d outside the 5-pixel box", ch, r);
-        for (int other = 33; other < ch; other++)
-            cr_assert(memcmp(g, isk_font_glyph((unsigned char)other), ISK_FONT_GLYPH_H) != 0,
-                      "glyphs %d and %d are identical", ch, other);
-    }
-    /* Bytes outside 32..126 share the box glyph. */
-    const uint8_t *box = isk_font_glyph(127);
-    cr_assert_gt(glyph_pixels(box), 0);
-    cr_assert(memcmp(box, isk_font_glyph(200), ISK_FONT_GLYPH_H) == 0);
-    cr_assert(memcmp(box, isk_font_glyph(1), ISK_FONT_GLYPH_H) == 0);
+    font_check_glyphs(ISK_FONT_5X8);
+    /* isk_font_glyph is the 5x8 font's table */
+    for (int ch = 0; ch < 256; ch++)
+        cr_assert_eq(isk_font_glyph((unsigned char)ch), isk_font_rows(ISK_FONT_5X8, (unsigned char)ch));
 }
 
 Test(font, text_stays_inside_its_measured_box)
 {
-    isk_canvas c;
-    cr_assert_eq(isk_canvas_init(&c, 200, 80), ISK_OK);
-    isk_canvas_fill(&c, ISK_BLACK);
-    const char *s = "Hello, iskra!\nline 2 {}|~";
-    int x = 13, y = 7, scale = 2;
-    isk_draw_text(&c, x, y, s, scale, ISK_WHITE, ISK_BLEND_OVER);
-    int w = isk_text_width(s, scale), h = isk_text_height(s, scale), lit = 0;
-    for (int py = 0; py < c.height; py++)
-        for (int px = 0; px < c.width; px++)
-            if (isk_canvas_get(&c, px, py).r) {
-                lit++;
-                cr_assert(px >= x && px < x + w && py >= y && py < y + h, "pixel (%d,%d) outside", px, py);
-            }
-    cr_assert_gt(lit, 100);
-    isk_canvas_free(&c);
+    font_check_inside_box(ISK_FONT_5X8, 200, 80, "Hello, iskra!\nline 2 {}|~", 13, 7, 2, 100);
 }
 
 Test(font, clipping_with_extreme_coordinates)
@@ -104,34 +71,25 @@ Test(font, clipping_with_extreme_coordinates)
 
 Test(refimg, text_font_table)
 {
-    isk_canvas c;
-    cr_assert_eq(isk_canvas_init(&c, 400, 130), ISK_OK);
-    isk_canvas_fill(&c, ISK_BLACK);
+    isk_canvas c = refimg_canvas(400, 130, ISK_BLACK);
     char line[33];
     for (int row = 0; row < 3; row++) {
-        int n = 0;
-        for (int ch = 32 + 32 * row; ch < 32 + 32 * (row + 1) && ch < 127; ch++)
-            line[n++] = (char)ch;
-        line[n] = 0;
+        font_table_line(row, line);
         isk_draw_text(&c, 4, 4 + 11 * row, line, 1, ISK_WHITE, ISK_BLEND_OVER);
         isk_draw_text(&c, 4, 40 + 22 * row, line, 2, ISK_WHITE, ISK_BLEND_OVER);
     }
-    cr_assert(refimg_check("text_font_table", &c));
-    isk_canvas_free(&c);
+    refimg_expect("text_font_table", &c);
 }
 
 Test(refimg, text_scales)
 {
-    isk_canvas c;
-    cr_assert_eq(isk_canvas_init(&c, 520, 110), ISK_OK);
-    isk_canvas_fill(&c, isk_rgba(20, 40, 90, 255));
+    isk_canvas c = refimg_canvas(520, 110, isk_rgba(20, 40, 90, 255));
     int y = 4;
     for (int s = 1; s <= 4; s++) {
         isk_draw_text(&c, 4, y, "iskra 0.1 (O0 Il1 5S)", s, isk_rgba(255, 220, 0, 200), ISK_BLEND_OVER);
         y += isk_text_height("x", s) + 2;
     }
-    cr_assert(refimg_check("text_scales", &c));
-    isk_canvas_free(&c);
+    refimg_expect("text_scales", &c);
 }
 
 Test(font, world_text_with_absurd_positions_and_scales)

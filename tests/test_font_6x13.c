@@ -5,10 +5,10 @@
  * functions, and the whole table as a reference image. */
 #include <criterion/criterion.h>
 #include <limits.h>
-#include <string.h>
 
 #include "iskra/text.h"
-#include "refimg.h"
+#include "font_checks.h"
+#include "refimg_scene.h"
 
 Test(font_6x13, metrics)
 {
@@ -30,9 +30,7 @@ Test(font_6x13, metrics)
     cr_assert_null(isk_font_metrics_of(ISK_FONT_COUNT));
     cr_assert_null(isk_font_rows((isk_font)-1, 'A'));
     cr_assert_eq(isk_font_text_width(ISK_FONT_COUNT, "abc", 1), 0);
-    isk_canvas c;
-    cr_assert_eq(isk_canvas_init(&c, 20, 20), ISK_OK);
-    isk_canvas_fill(&c, ISK_BLACK);
+    isk_canvas c = refimg_canvas(20, 20, ISK_BLACK);
     isk_font_draw_text(&c, ISK_FONT_COUNT, 0, 0, "A", 1, ISK_WHITE, ISK_BLEND_OVER);
     for (int i = 0; i < 20 * 20 * 4; i += 4)
         cr_assert_eq(c.pixels[i], 0);
@@ -77,9 +75,7 @@ Test(font_6x13, capitals_and_digits_are_ten_pixels_tall)
         cr_expect_eq(bottom, 12, "'%c' ends at row %d", *p, bottom);
     }
     /* Drawn at scale 1, "H" lights exactly 10 rows. */
-    isk_canvas c;
-    cr_assert_eq(isk_canvas_init(&c, 10, 20), ISK_OK);
-    isk_canvas_fill(&c, ISK_BLACK);
+    isk_canvas c = refimg_canvas(10, 20, ISK_BLACK);
     isk_font_draw_text(&c, ISK_FONT_6X13, 0, 0, "H", 1, ISK_WHITE, ISK_BLEND_OVER);
     int rows = 0;
     for (int y = 0; y < 20; y++) {
@@ -94,60 +90,27 @@ Test(font_6x13, capitals_and_digits_are_ten_pixels_tall)
 
 Test(font_6x13, glyphs_fit_their_box_and_differ)
 {
-    const uint8_t *space = isk_font_rows(ISK_FONT_6X13, ' ');
-    for (int r = 0; r < 13; r++)
-        cr_assert_eq(space[r], 0);
+    font_check_glyphs(ISK_FONT_6X13);
+    /* the sixth column is spacing, except for the one glyph that needs it */
     for (int ch = 33; ch <= 126; ch++) {
         const uint8_t *g = isk_font_rows(ISK_FONT_6X13, (unsigned char)ch);
-        int ink = 0;
-        for (int r = 0; r < 13; r++) {
-            cr_assert_eq(g[r] & ~0x3Fu, 0, "glyph %d row %d outside the 6-pixel box", ch, r);
-            ink |= g[r];
-        }
-        cr_assert(ink, "glyph %d is empty", ch);
-        /* the sixth column is spacing, except for the one glyph that needs it */
         if (ch != '&')
             for (int r = 0; r < 13; r++)
                 cr_assert_eq(g[r] & 1u, 0, "glyph '%c' row %d uses the sixth column", ch, r);
-        for (int other = 33; other < ch; other++)
-            cr_assert(memcmp(g, isk_font_rows(ISK_FONT_6X13, (unsigned char)other), 13) != 0,
-                      "glyphs %d and %d are identical", ch, other);
     }
-    const uint8_t *box = isk_font_rows(ISK_FONT_6X13, 127);
-    cr_assert(memcmp(box, isk_font_rows(ISK_FONT_6X13, 0), 13) == 0);
-    cr_assert(memcmp(box, isk_font_rows(ISK_FONT_6X13, 'O'), 13) != 0);
 }
 
 Test(font_6x13, text_stays_inside_its_measured_box)
 {
-    isk_canvas c;
-    cr_assert_eq(isk_canvas_init(&c, 260, 90), ISK_OK);
-    isk_canvas_fill(&c, ISK_BLACK);
-    const char *s = "Hello, iskra!\ngjpqy_ {}|~";
-    int x = 9, y = 5, scale = 2;
-    isk_font_draw_text(&c, ISK_FONT_6X13, x, y, s, scale, ISK_WHITE, ISK_BLEND_OVER);
-    int w = isk_font_text_width(ISK_FONT_6X13, s, scale), h = isk_font_text_height(ISK_FONT_6X13, s, scale), lit = 0;
-    for (int py = 0; py < c.height; py++)
-        for (int px = 0; px < c.width; px++)
-            if (isk_canvas_get(&c, px, py).r) {
-                lit++;
-                cr_assert(px >= x && px < x + w && py >= y && py < y + h, "pixel (%d,%d) outside", px, py);
-            }
-    cr_assert_gt(lit, 200);
-    isk_canvas_free(&c);
+    font_check_inside_box(ISK_FONT_6X13, 260, 90, "Hello, iskra!\ngjpqy_ {}|~", 9, 5, 2, 200);
 }
 
 Test(refimg, text_font_table_6x13)
 {
-    isk_canvas c;
-    cr_assert_eq(isk_canvas_init(&c, 460, 150), ISK_OK);
-    isk_canvas_fill(&c, ISK_BLACK);
+    isk_canvas c = refimg_canvas(460, 150, ISK_BLACK);
     char line[33];
     for (int row = 0; row < 3; row++) {
-        int n = 0;
-        for (int ch = 32 + 32 * row; ch < 32 + 32 * (row + 1) && ch < 127; ch++)
-            line[n++] = (char)ch;
-        line[n] = 0;
+        font_table_line(row, line);
         isk_font_draw_text(&c, ISK_FONT_6X13, 4, 4 + 16 * row, line, 1, ISK_WHITE, ISK_BLEND_OVER);
     }
     isk_font_draw_text(&c, ISK_FONT_6X13, 4, 56, "The quick brown fox jumps over the lazy dog.\n"
@@ -156,6 +119,5 @@ Test(refimg, text_font_table_6x13)
                        1, isk_rgba(0xe6, 0xe0, 0xf0, 255), ISK_BLEND_OVER);
     isk_font_draw_text(&c, ISK_FONT_6X13, 4, 104, "Gravity 9.81", 2, isk_rgba(0xb3, 0x88, 0xeb, 255),
                        ISK_BLEND_OVER);
-    cr_assert(refimg_check("text_font_table_6x13", &c));
-    isk_canvas_free(&c);
+    refimg_expect("text_font_table_6x13", &c);
 }

@@ -19,23 +19,12 @@
 #define FROM_DIR "docs/from-love-godot"
 #define PI 3.14159265358979323846
 
+/* The page's file `name` (in FROM_DIR), opened. */
 static isk_effect *open_file(const char *name)
 {
     char path[256];
     snprintf(path, sizeof path, FROM_DIR "/%s", name);
-    isk_effect_def d;
-    isk_error err;
-    cr_assert_eq(isk_scene_load_file(&d, path, &err), ISK_OK, "%s", err.message);
-    isk_effect *fx;
-    cr_assert_eq(isk_effect_create(&fx, &d, &err), ISK_OK, "%s", err.message);
-    isk_effect_def_free(&d);
-    return fx;
-}
-
-static void steps(isk_effect *fx, int n)
-{
-    for (int i = 0; i < n; i++)
-        cr_assert_eq(isk_effect_step(fx), ISK_OK);
+    return scene_open_file(path);
 }
 
 Test(from_engines, every_file_loads_runs_and_draws)
@@ -67,7 +56,7 @@ Test(from_engines, every_file_loads_runs_and_draws)
 Test(from_engines, angles_go_counter_clockwise_and_spread_is_the_whole_opening)
 {
     isk_effect *fx = open_file("angles.ini");
-    steps(fx, 60);
+    scene_steps(fx, 60);
     const isk_particles *p = isk_effect_particles(fx, 0);
     cr_assert_gt(p->count, 40);
     cr_assert_not_null(p->angle, "rotation keeps no angle column");
@@ -87,7 +76,7 @@ Test(from_engines, angles_go_counter_clockwise_and_spread_is_the_whole_opening)
     fx = scene_text_open("[emitter a]\nsource = stream\nrate = 10\nrotation = 90\n"
                          "texture = docs/from-love-godot/../../scenes/textures/arrows.png\ntexture_grid = 4, 2\n",
                          0);
-    steps(fx, 30);
+    scene_steps(fx, 30);
     p = isk_effect_particles(fx, 0);
     cr_assert_gt(p->count, 0);
     for (size_t i = 0; i < p->count; i++)
@@ -102,7 +91,7 @@ Test(from_engines, positive_tangential_turns_counter_clockwise)
     isk_effect *fx = scene_text_open("[emitter e]\nsource = stream\nposition = 0, 0\nshape = circle\nshape_a = 1\n"
                                      "count = 1\nlife = 10\ntangential_accel = 6\n",
                                      0);
-    steps(fx, 60); /* one particle, born at the start on a circle of radius 1, 1 s old */
+    scene_steps(fx, 60); /* one particle, born at the start on a circle of radius 1, 1 s old */
     const isk_particles *p = isk_effect_particles(fx, 0);
     cr_assert_eq(p->count, 1);
     /* its velocity turned counter-clockwise from where it sits: cross(pos, v) > 0 */
@@ -119,7 +108,7 @@ Test(from_engines, radial_origin_is_the_emitter_now)
     isk_effect *fx = scene_text_open("[emitter e]\nsource = stream\nposition = 0, 0\nemitter_velocity = 4, 0\n"
                                      "count = 1\nlife = 10\nradial_accel = -8\n",
                                      0);
-    steps(fx, 61); /* the first particle, born at t = 0 at x = 0, is 1 s old */
+    scene_steps(fx, 61); /* the first particle, born at t = 0 at x = 0, is 1 s old */
     const isk_particles *p = isk_effect_particles(fx, 0);
     cr_assert_geq(p->count, 1);
     cr_expect_gt(p->x[0], 1.0, "the particle stayed at x = %g: pulled towards its birth point", p->x[0]);
@@ -136,7 +125,7 @@ Test(from_engines, damping_laws_figures)
     cr_expect_float_eq(exp(-2.0), 0.1353, 5e-5);
     cr_expect_float_eq(pow(1 / (1 + 2.0 / 60), 60), 0.1398, 5e-5);
     isk_effect *fx = open_file("damping.ini");
-    steps(fx, 60);
+    scene_steps(fx, 60);
     const isk_particles *slowed = isk_effect_particles(fx, 0), *dragged = isk_effect_particles(fx, 1);
     cr_assert_eq(slowed->count, 1);
     cr_assert_eq(dragged->count, 1);

@@ -409,6 +409,23 @@ Test(hostile, isk_canvas_compare)
     cr_assert_eq(isk_canvas_compare(&nopixels, &nopixels, &d, NULL), 0);
     fence_check(&f);
 }
+Test(hostile, isk_canvas_count_beyond)
+{
+    fenced f;
+    fence_init(&f);
+    EACH_HOSTILE_CANVAS(h)
+    {
+        cr_assert_eq(isk_canvas_count_beyond(h, &f.c, 0), -1);
+        cr_assert_eq(isk_canvas_count_beyond(&f.c, h, 255), -1);
+    }
+    cr_assert_eq(isk_canvas_count_beyond(&nopixels, &nopixels, 0), -1);
+    cr_assert_eq(isk_canvas_count_beyond(&zeroed, &zeroed, 0), 0, "two empty canvases: nothing beyond");
+    const int tolerances[] = {-1, 256, INT_MIN, INT_MAX};
+    for (size_t i = 0; i < sizeof tolerances / sizeof tolerances[0]; i++)
+        cr_assert_eq(isk_canvas_count_beyond(&f.c, &f.c, tolerances[i]), -1);
+    cr_assert_eq(isk_canvas_count_beyond(&f.c, &f.c, 0), 0);
+    fence_check(&f);
+}
 
 /* ---- raster: blending ------------------------------------------------------ */
 

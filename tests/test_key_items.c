@@ -10,17 +10,9 @@
 #include "iskra/effect.h"
 #include "iskra/keys.h"
 #include "iskra/scene.h"
+#include "scene_open.h"
 
-static isk_effect *campfire(void)
-{
-    isk_effect_def d;
-    isk_error err;
-    cr_assert_eq(isk_scene_load(&d, "fire_campfire", &err), ISK_OK, "%s", err.message);
-    isk_effect *fx;
-    cr_assert_eq(isk_effect_create(&fx, &d, &err), ISK_OK, "%s", err.message);
-    isk_effect_def_free(&d);
-    return fx;
-}
+static isk_effect *campfire(void) { return scene_open_builtin("fire_campfire"); }
 
 Test(key_items, the_items_of_a_definition)
 {

@@ -13,6 +13,7 @@
 #include "iskra/scene.h"
 #include "refimg.h"
 #include "scene/key_value.h"
+#include "scene_open.h"
 #include "tool_cli.h"
 
 #define OUT "out/test_keys"
@@ -271,8 +272,7 @@ Test(keys, documentation_example_scene_works)
     cr_assert_eq(isk_scene_load_string(&d, start, "example", &err), ISK_OK, "%s", err.message);
     isk_effect *fx = NULL;
     cr_assert_eq(isk_effect_create(&fx, &d, &err), ISK_OK, "%s", err.message);
-    for (int i = 0; i < 60; i++)
-        cr_assert_eq(isk_effect_step(fx), ISK_OK);
+    scene_steps(fx, 60);
     cr_assert_gt(isk_effect_particle_count(fx), 100);
     isk_effect_destroy(fx);
     isk_effect_def_free(&d);

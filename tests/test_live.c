@@ -13,6 +13,7 @@
 #include "iskra/effect.h"
 #include "iskra/keys.h"
 #include "iskra/scene.h"
+#include "scene_text.h"
 
 /* A fountain with gravity and (zero) drag over a floor, a potential that is
  * off, a deflector, a label: something for every section. */
@@ -31,16 +32,7 @@ static const char *const SCENE =
     "[drawing label]\nkind = text\nunits = pixels\nposition = 4, 4\ntext = hi\n"
     "[click]\nexplosion = ring\ncount = 50\nemitter = cloud\n";
 
-static isk_effect *load(void)
-{
-    isk_effect_def d;
-    isk_error err = {0};
-    cr_assert_eq(isk_scene_load_string(&d, SCENE, "live", &err), ISK_OK, "%s", err.message);
-    isk_effect *fx = NULL;
-    cr_assert_eq(isk_effect_create(&fx, &d, &err), ISK_OK, "%s", err.message);
-    isk_effect_def_free(&d);
-    return fx;
-}
+static isk_effect *load(void) { return scene_text_open(SCENE, 0); }
 
 static char *describe(const isk_effect *fx)
 {

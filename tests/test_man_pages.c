@@ -17,6 +17,7 @@
 #include "iskra/keys.h"
 #include "iskra/scene.h"
 #include "refimg.h"
+#include "scene_open.h"
 #include "tool_cli.h"
 
 #define OUT "out/test_man_pages"
@@ -123,8 +124,7 @@ Test(man_pages, the_scene_example_runs)
     cr_assert_eq(isk_effect_create(&fx, &d, &err), ISK_OK, "%s", err.message);
     cr_assert_eq(d.ndeflectors, 1);
     cr_assert(d.deflectors[0].show);
-    for (int i = 0; i < 60; i++)
-        cr_assert_eq(isk_effect_step(fx), ISK_OK);
+    scene_steps(fx, 60);
     cr_assert_gt(isk_effect_particle_count(fx), 10);
     isk_effect_destroy(fx);
     isk_effect_def_free(&d);

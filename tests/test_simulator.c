@@ -10,70 +10,24 @@
 #include <stdlib.h>
 #include <string.h>
 #include <sys/wait.h>
-#include <time.h>
 
 #include "iskra/effect.h"
-#include "iskra/png.h"
 #include "iskra/scene.h"
+#include "play_session.h"
 #include "refimg.h"
+#include "scene_open.h"
 #include "tool_cli.h"
 
 #define OUT "out/test_simulator/"
 
-/* `iskra play ARGS` in a fresh directory; the exit status. */
-static int play(const char *dir, const char *args)
-{
-    char d[256], a[3000];
-    snprintf(d, sizeof d, OUT "%s", dir);
-    cli_fresh(d);
-    snprintf(a, sizeof a, "play --fixed-clock %s", args);
-    return cli_run(d, a);
-}
-
-static char *err_of(const char *dir)
-{
-    char p[256];
-    snprintf(p, sizeof p, OUT "%s/stderr.txt", dir);
-    return cli_slurp(p);
-}
-
-static void read_png(const char *path, isk_canvas *c)
-{
-    isk_error err;
-    cr_assert_eq(isk_png_read(c, path, &err), ISK_OK, "%s", err.message);
-}
-
-static isk_effect *load_saved(const char *path)
-{
-    isk_effect_def d;
-    isk_error err;
-    cr_assert_eq(isk_scene_load_file(&d, path, &err), ISK_OK, "%s", err.message);
-    isk_effect *fx;
-    cr_assert_eq(isk_effect_create(&fx, &d, &err), ISK_OK, "%s", err.message);
-    isk_effect_def_free(&d);
-    return fx;
-}
-
-static void expect_key(isk_effect *fx, const char *section, const char *key, const char *want)
-{
-    char v[200];
-    isk_error err;
-    cr_assert_eq(isk_effect_get(fx, section, key, v, sizeof v, &err), ISK_OK, "%s", err.message);
-    cr_expect_str_eq(v, want, "[%s] %s", section, key);
-}
-
 /* The canvas a library run gives: the scene, `frames` steps, one render. */
 static void library_canvas(const char *scene, long frames, isk_canvas *c)
 {
-    isk_effect_def d;
-    isk_error err;
-    cr_assert_eq(isk_scene_load(&d, scene, &err), ISK_OK, "%s", err.message);
-    isk_effect *fx;
-    cr_assert_eq(isk_effect_create(&fx, &d, &err), ISK_OK, "%s", err.message);
-    cr_assert_eq(isk_canvas_init(c, d.width, d.height), ISK_OK);
+    isk_effect *fx = scene_open_builtin(scene);
+    const isk_effect_def *d = isk_effect_definition(fx);
+    cr_assert_eq(isk_canvas_init(c, d->width, d->height), ISK_OK);
     cr_assert_eq(isk_effect_run(fx, c, frames), ISK_OK);
     isk_effect_destroy(fx);
-    isk_effect_def_free(&d);
 }
 
 /* ---- the thesis's behaviour ------------------------------------------------------ */
@@ -81,14 +35,14 @@ static void library_canvas(const char *scene, long frames, isk_canvas *c)
 /* prviFrame: the mushroom scene runs one frame and holds; Step runs one more. */
 Test(simulator, starts_paused_after_one_frame_and_steps)
 {
-    cr_assert_eq(play("paused", "fig26_mushroom_one_potential --ui-scale 1 --frames 12 --script "
-                                "'wait:4 canvas-shot:" OUT "paused/a.png press:step wait:3 canvas-shot:" OUT
-                                "paused/b.png n wait:3 canvas-shot:" OUT "paused/c.png'"),
-                 0, "%s", err_of("paused"));
+    cr_assert_eq(play_session(OUT "paused", "fig26_mushroom_one_potential --ui-scale 1 --frames 12 --script "
+                                            "'wait:4 canvas-shot:" OUT "paused/a.png press:step wait:3 canvas-shot:" OUT
+                                            "paused/b.png n wait:3 canvas-shot:" OUT "paused/c.png'"),
+                 0, "%s", play_stderr(OUT "paused"));
     const char *shots[3] = {OUT "paused/a.png", OUT "paused/b.png", OUT "paused/c.png"};
     for (int k = 0; k < 3; k++) {
         isk_canvas got, want;
-        read_png(shots[k], &got);
+        play_read_png(shots[k], &got);
         library_canvas("fig26_mushroom_one_potential", 1 + k, &want);
         cr_expect(isk_canvas_equal(&got, &want), "%s is not frame %d", shots[k], 1 + k);
         isk_canvas_free(&got);
@@ -101,26 +55,27 @@ Test(simulator, starts_paused_after_one_frame_and_steps)
  * dt/p; every field goes through the key table. */
 Test(simulator, thesis_fields_and_their_replacements)
 {
-    cr_assert_eq(play("thesis", "fig22_simulator_regular --ui-scale 1 --frames 40 --save " OUT "thesis/s.ini "
-                                "--script 'press:gravity wait:2 key:backspace type:-5 key:return "
-                                "press:drag wait:2 key:backspace type:200000 key:return "
-                                "press:precision wait:2 key:backspace type:2.5 key:return "
-                                "press:explosion-count wait:2 key:backspace key:backspace key:backspace "
-                                "key:backspace type:250 key:return wait:3 f2'"),
-                 0, "%s", err_of("thesis"));
-    isk_effect *fx = load_saved(OUT "thesis/s.ini");
-    expect_key(fx, "force gravity", "g", "9.81");
-    expect_key(fx, "force drag", "b", "0.47");
-    expect_key(fx, "scene", "substeps", "3");
+    cr_assert_eq(play_session(OUT "thesis",
+                              "fig22_simulator_regular --ui-scale 1 --frames 40 --save " OUT "thesis/s.ini "
+                              "--script 'press:gravity wait:2 key:backspace type:-5 key:return "
+                              "press:drag wait:2 key:backspace type:200000 key:return "
+                              "press:precision wait:2 key:backspace type:2.5 key:return "
+                              "press:explosion-count wait:2 key:backspace key:backspace key:backspace "
+                              "key:backspace type:250 key:return wait:3 f2'"),
+                 0, "%s", play_stderr(OUT "thesis"));
+    isk_effect *fx = scene_open_file(OUT "thesis/s.ini");
+    scene_expect_key(fx, "force gravity", "g", "9.81");
+    scene_expect_key(fx, "force drag", "b", "0.47");
+    scene_expect_key(fx, "scene", "substeps", "3");
     char want[64];
     snprintf(want, sizeof want, "%.17g", 1.0 / 60 * 3 / 2.5);
     char v[64];
     isk_error err;
     cr_assert_eq(isk_effect_get(fx, "scene", "dt", v, sizeof v, &err), ISK_OK);
     cr_expect_eq(strtod(v, NULL), strtod(want, NULL), "dt %s", v);
-    expect_key(fx, "click", "count", "250");
+    scene_expect_key(fx, "click", "count", "250");
     isk_effect_destroy(fx);
-    char *e = err_of("thesis");
+    char *e = play_stderr(OUT "thesis");
     cr_expect(strstr(e, "the thesis puts 9.81"), "%s", e);
     cr_expect(strstr(e, "runs 3 steps of dt/2.5"), "%s", e);
     free(e);
@@ -130,24 +85,18 @@ Test(simulator, thesis_fields_and_their_replacements)
  * table's own message under it, and changes nothing. */
 Test(simulator, a_refused_value_shows_the_tables_message)
 {
-    const char *scene = OUT "sound.ini";
     (void)system("mkdir -p " OUT);
-    FILE *f = fopen(scene, "w");
-    cr_assert_not_null(f);
-    fputs("[scene]\nseed = 3\n[view]\nxmin = 0\nxmax = 10\nymin = 0\nymax = 10\n[force gravity]\ng = 9.81\n"
-          "[force drag]\nb = 0.1\n[bounds]\nsides = bottom\n[emitter p]\nsource = layer\ncount = 200\n"
-          "rect = 0, 10, 0, 2\nforces = gravity, drag\n[click]\nexplosion = gauss\ncount = 300\nemitter = p\n",
-          f);
-    fclose(f);
-    cr_assert_eq(play("refused", OUT "sound.ini --ui-scale 2 --frames 30 --save " OUT "refused/s.ini --script "
-                                 "'press:gravity wait:2 key:backspace key:backspace key:backspace key:backspace "
-                                 "type:-5 key:return wait:3 f2 wait:2 shot:" OUT "refused/window.png'"),
-                 0, "%s", err_of("refused"));
-    isk_effect *fx = load_saved(OUT "refused/s.ini");
-    expect_key(fx, "force gravity", "g", "9.81");
+    cli_write_file(OUT "sound.ini", PLAY_SOUND_SCENE);
+    cr_assert_eq(play_session(OUT "refused",
+                              OUT "sound.ini --ui-scale 2 --frames 30 --save " OUT "refused/s.ini --script "
+                                  "'press:gravity wait:2 key:backspace key:backspace key:backspace key:backspace "
+                                  "type:-5 key:return wait:3 f2 wait:2 shot:" OUT "refused/window.png'"),
+                 0, "%s", play_stderr(OUT "refused"));
+    isk_effect *fx = scene_open_file(OUT "refused/s.ini");
+    scene_expect_key(fx, "force gravity", "g", "9.81");
     isk_effect_destroy(fx);
     isk_canvas c;
-    read_png(OUT "refused/window.png", &c);
+    play_read_png(OUT "refused/window.png", &c);
     cr_expect(refimg_check("simulator_field_error", &c));
     isk_canvas_free(&c);
 }
@@ -156,18 +105,19 @@ Test(simulator, a_refused_value_shows_the_tables_message)
 
 Test(simulator, the_potential_editor_with_a_potential_selected)
 {
-    cr_assert_eq(play("editor", "fig28_mushroom_three_potentials --ui-scale 2 --frames 30 --save " OUT
-                                "editor/s.ini --script 'press:potentials/1 wait:2 press:pot-k wait:2 key:end "
-                                "key:backspace type:5 key:return press:pot-off wait:3 f2 wait:2 shot:" OUT
-                                "editor/window.png'"),
-                 0, "%s", err_of("editor"));
-    isk_effect *fx = load_saved(OUT "editor/s.ini");
-    expect_key(fx, "force C2", "k", "400005");
-    expect_key(fx, "force C2", "enabled", "false");
-    expect_key(fx, "force C1", "enabled", "true");
+    cr_assert_eq(play_session(OUT "editor",
+                              "fig28_mushroom_three_potentials --ui-scale 2 --frames 30 --save " OUT
+                              "editor/s.ini --script 'press:potentials/1 wait:2 press:pot-k wait:2 key:end "
+                              "key:backspace type:5 key:return press:pot-off wait:3 f2 wait:2 shot:" OUT
+                              "editor/window.png'"),
+                 0, "%s", play_stderr(OUT "editor"));
+    isk_effect *fx = scene_open_file(OUT "editor/s.ini");
+    scene_expect_key(fx, "force C2", "k", "400005");
+    scene_expect_key(fx, "force C2", "enabled", "false");
+    scene_expect_key(fx, "force C1", "enabled", "true");
     isk_effect_destroy(fx);
     isk_canvas c;
-    read_png(OUT "editor/window.png", &c);
+    play_read_png(OUT "editor/window.png", &c);
     cr_expect(refimg_check("simulator_potential_editor", &c));
     isk_canvas_free(&c);
 }
@@ -180,20 +130,20 @@ Test(simulator, add_a_potential_type_its_k_and_drag_it)
                        "'press:click/add-potential wait:2 click:300,300 wait:2 press:pot-k wait:2 key:backspace "
                        "type:40 key:return press:click/coulomb wait:2 drag:300,300,420,180 wait:3 click:150,450 "
                        "wait:20 f2 wait:2 shot:" OUT "added/window.png'";
-    cr_assert_eq(play("added", args), 0, "%s", err_of("added"));
-    isk_effect *fx = load_saved(OUT "added/s.ini");
-    expect_key(fx, "force P1", "kind", "potential");
-    expect_key(fx, "force P1", "k", "40");
-    expect_key(fx, "force P1", "position", "7, 7");
-    expect_key(fx, "click", "explosion", "coulomb");
-    expect_key(fx, "click", "enabled", "true");
+    cr_assert_eq(play_session(OUT "added", args), 0, "%s", play_stderr(OUT "added"));
+    isk_effect *fx = scene_open_file(OUT "added/s.ini");
+    scene_expect_key(fx, "force P1", "kind", "potential");
+    scene_expect_key(fx, "force P1", "k", "40");
+    scene_expect_key(fx, "force P1", "position", "7, 7");
+    scene_expect_key(fx, "click", "explosion", "coulomb");
+    scene_expect_key(fx, "click", "enabled", "true");
     isk_effect_destroy(fx);
     isk_canvas c, d;
-    read_png(OUT "added/window.png", &c);
+    play_read_png(OUT "added/window.png", &c);
     cr_expect(refimg_check("simulator_add_potential", &c));
     /* the same session again: the same bytes */
-    cr_assert_eq(play("added", args), 0, "%s", err_of("added"));
-    read_png(OUT "added/window.png", &d);
+    cr_assert_eq(play_session(OUT "added", args), 0, "%s", play_stderr(OUT "added"));
+    play_read_png(OUT "added/window.png", &d);
     cr_expect(isk_canvas_equal(&c, &d), "the same script gave different pixels");
     isk_canvas_free(&c);
     isk_canvas_free(&d);
@@ -205,60 +155,54 @@ Test(simulator, add_a_potential_type_its_k_and_drag_it)
  * it are cheap); the energy and count charts, then rk4 chosen. */
 Test(simulator, the_energy_chart_after_300_frames)
 {
-    cr_assert_eq(play("energy", "fig26_mushroom_one_potential --ui-scale 2 --frames 320 --save " OUT "energy/s.ini "
-                                "--script 'press:play tab wait:296 tab wait:3 shot:" OUT "energy/window.png "
-                                "press:integrator/rk4 wait:2 f2'"),
-                 0, "%s", err_of("energy"));
+    cr_assert_eq(play_session(OUT "energy",
+                              "fig26_mushroom_one_potential --ui-scale 2 --frames 320 --save " OUT "energy/s.ini "
+                              "--script 'press:play tab wait:296 tab wait:3 shot:" OUT "energy/window.png "
+                              "press:integrator/rk4 wait:2 f2'"),
+                 0, "%s", play_stderr(OUT "energy"));
     isk_canvas c;
-    read_png(OUT "energy/window.png", &c);
+    play_read_png(OUT "energy/window.png", &c);
     cr_expect(refimg_check("simulator_energy_chart", &c));
     isk_canvas_free(&c);
-    isk_effect *fx = load_saved(OUT "energy/s.ini");
-    expect_key(fx, "scene", "integrator", "rk4");
+    isk_effect *fx = scene_open_file(OUT "energy/s.ini");
+    scene_expect_key(fx, "scene", "integrator", "rk4");
     isk_effect_destroy(fx);
 }
 
 Test(simulator, the_panel_hides_and_comes_back)
 {
-    cr_assert_eq(play("panel", "fig22_simulator_regular --ui-scale 1 --frames 20 --script 'tab wait:3 shot:" OUT
-                               "panel/hidden.png tab wait:3 shot:" OUT "panel/shown.png'"),
-                 0, "%s", err_of("panel"));
+    cr_assert_eq(play_session(OUT "panel",
+                              "fig22_simulator_regular --ui-scale 1 --frames 20 --script 'tab wait:3 shot:" OUT
+                              "panel/hidden.png tab wait:3 shot:" OUT "panel/shown.png'"),
+                 0, "%s", play_stderr(OUT "panel"));
     isk_canvas a, b;
-    read_png(OUT "panel/hidden.png", &a);
-    read_png(OUT "panel/shown.png", &b);
+    play_read_png(OUT "panel/hidden.png", &a);
+    play_read_png(OUT "panel/shown.png", &b);
     cr_expect(a.width == 600 && a.height == 600, "hidden: %dx%d", a.width, a.height);
     cr_expect(b.width > 600 && b.height > 600, "shown: %dx%d", b.width, b.height);
     isk_canvas_free(&a);
     isk_canvas_free(&b);
-    cr_assert_eq(play("nopanel", "fig22_simulator_regular --no-panel --frames 3 --script 'wait:1 shot:" OUT
-                                 "nopanel/w.png'"),
+    cr_assert_eq(play_session(OUT "nopanel", "fig22_simulator_regular --no-panel --frames 3 --script 'wait:1 shot:" OUT
+                                             "nopanel/w.png'"),
                  0);
-    read_png(OUT "nopanel/w.png", &a);
+    play_read_png(OUT "nopanel/w.png", &a);
     cr_expect(a.width == 600 && a.height == 600);
     isk_canvas_free(&a);
 }
 
 Test(simulator, click_modes_and_speed_from_the_keys)
 {
-    cr_assert_eq(play("keys", "fig22_simulator_regular --ui-scale 1 --frames 20 --save " OUT "keys/s.ini "
-                              "--script '3 , , wait:2 click:300,300 wait:2 + + wait:2 f2'"),
-                 0, "%s", err_of("keys"));
-    isk_effect *fx = load_saved(OUT "keys/s.ini");
-    expect_key(fx, "click", "explosion", "gauss");
-    expect_key(fx, "scene", "substeps", "3");
+    cr_assert_eq(play_session(OUT "keys", "fig22_simulator_regular --ui-scale 1 --frames 20 --save " OUT "keys/s.ini "
+                                          "--script '3 , , wait:2 click:300,300 wait:2 + + wait:2 f2'"),
+                 0, "%s", play_stderr(OUT "keys"));
+    isk_effect *fx = scene_open_file(OUT "keys/s.ini");
+    scene_expect_key(fx, "click", "explosion", "gauss");
+    scene_expect_key(fx, "scene", "substeps", "3");
     char v[64];
     isk_error err;
     cr_assert_eq(isk_effect_get(fx, "scene", "speed_divisor", v, sizeof v, &err), ISK_OK);
     cr_expect_float_eq(strtod(v, NULL), 1 + 29.0 * 200 / 999, 1e-12, "the slider at 800: f = %s", v);
     isk_effect_destroy(fx);
-}
-
-/* ---- files ------------------------------------------------------------------------------ */
-
-static void sleep_ms(long ms)
-{
-    struct timespec t = {ms / 1000, (ms % 1000) * 1000000L};
-    nanosleep(&t, NULL);
 }
 
 /* The scene file changes while it plays: the simulator reloads it. */
@@ -280,7 +224,7 @@ Test(simulator, reloads_when_the_file_changes)
              "--script 'wait:230 f2' >%s/stdout.txt 2>%s/stderr.txt &",
              refimg_build_dir(), scene, dir, dir, dir);
     cr_assert_eq(system(cmd), 0);
-    sleep_ms(1500);
+    play_sleep_ms(1500);
     f = fopen(scene, "w");
     cr_assert_not_null(f);
     fprintf(f, v1, "7.5");
@@ -288,15 +232,15 @@ Test(simulator, reloads_when_the_file_changes)
     char saved[256];
     snprintf(saved, sizeof saved, "%s/s.ini", dir);
     for (int i = 0; i < 300 && !cli_exists(saved); i++)
-        sleep_ms(100);
-    sleep_ms(300);
+        play_sleep_ms(100);
+    play_sleep_ms(300);
     char p[256];
     snprintf(p, sizeof p, "%s/stderr.txt", dir);
     char *e = cli_slurp(p);
     cr_expect(strstr(e, "changed: reloaded"), "%s", e);
     free(e);
-    isk_effect *fx = load_saved(saved);
-    expect_key(fx, "force gravity", "g", "7.5");
+    isk_effect *fx = scene_open_file(saved);
+    scene_expect_key(fx, "force gravity", "g", "7.5");
     isk_effect_destroy(fx);
 }
 
@@ -331,12 +275,12 @@ Test(simulator, the_documented_keys_are_the_tools)
 
 Test(simulator, bad_options_and_scripts)
 {
-    cr_assert_eq(play("bad", "simulator --ui-scale 9 --frames 1"), 2);
-    cr_assert_eq(play("bad", "simulator --save '' --frames 1"), 2);
-    cr_assert_eq(play("bad", "simulator --frames 1 --script 'press:'"), 2);
-    cr_assert_eq(play("bad", "simulator --frames 1 --script 'wait:-1'"), 2);
-    cr_assert_eq(play("bad", "simulator --frames 5 --script 'press:no-such-widget'"), 1);
-    char *e = err_of("bad");
+    cr_assert_eq(play_session(OUT "bad", "simulator --ui-scale 9 --frames 1"), 2);
+    cr_assert_eq(play_session(OUT "bad", "simulator --save '' --frames 1"), 2);
+    cr_assert_eq(play_session(OUT "bad", "simulator --frames 1 --script 'press:'"), 2);
+    cr_assert_eq(play_session(OUT "bad", "simulator --frames 1 --script 'wait:-1'"), 2);
+    cr_assert_eq(play_session(OUT "bad", "simulator --frames 5 --script 'press:no-such-widget'"), 1);
+    char *e = play_stderr(OUT "bad");
     cr_expect(strstr(e, "no widget 'no-such-widget'"), "%s", e);
     free(e);
 }

@@ -20,83 +20,43 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <time.h>
 
 #include "iskra/effect.h"
 #include "iskra/keys.h"
-#include "iskra/png.h"
 #include "iskra/scene.h"
 #include "iskra/ui.h"
+#include "play_session.h"
 #include "refimg.h"
+#include "scene_open.h"
 #include "tool_cli.h"
 
 #define OUT "out/test_simulator_classroom/"
-
-/* `iskra play --fixed-clock ARGS` in a fresh directory; the exit status. */
-static int play(const char *dir, const char *args)
-{
-    char d[256], a[4000];
-    snprintf(d, sizeof d, OUT "%s", dir);
-    cli_fresh(d);
-    snprintf(a, sizeof a, "play --fixed-clock %s", args);
-    return cli_run(d, a);
-}
-
-static char *err_of(const char *dir)
-{
-    char p[256];
-    snprintf(p, sizeof p, OUT "%s/stderr.txt", dir);
-    return cli_slurp(p);
-}
-
-static isk_effect *load_saved(const char *path)
-{
-    isk_effect_def d;
-    isk_error err;
-    cr_assert_eq(isk_scene_load_file(&d, path, &err), ISK_OK, "%s", err.message);
-    isk_effect *fx;
-    cr_assert_eq(isk_effect_create(&fx, &d, &err), ISK_OK, "%s", err.message);
-    isk_effect_def_free(&d);
-    return fx;
-}
-
-static void expect_key(isk_effect *fx, const char *section, const char *key, const char *want)
-{
-    char v[200];
-    isk_error err;
-    cr_assert_eq(isk_effect_get(fx, section, key, v, sizeof v, &err), ISK_OK, "%s", err.message);
-    cr_expect_str_eq(v, want, "[%s] %s", section, key);
-}
-
-static void read_png(const char *path, isk_canvas *c)
-{
-    isk_error err;
-    cr_assert_eq(isk_png_read(c, path, &err), ISK_OK, "%s", err.message);
-}
 
 /* ---- 1. typing replaces -------------------------------------------------------------- */
 
 /* "type 10 into Gravity" gave 9.811: the focus now selects the value. */
 Test(classroom, typing_into_a_field_replaces_its_value)
 {
-    cr_assert_eq(play("typing", "fig22_simulator_regular --screen 1280x720 --frames 40 --save " OUT "typing/s.ini "
-                                "--script 'press:gravity wait:2 type:10 key:return press:drag wait:2 type:0.3 "
-                                "key:return press:explosion-count wait:2 key:end type:5 ctrl+a type:250 key:return "
-                                "wait:2 f2'"),
-                 0, "%s", err_of("typing"));
-    isk_effect *fx = load_saved(OUT "typing/s.ini");
-    expect_key(fx, "force gravity", "g", "10");
-    expect_key(fx, "force drag", "b", "0.3");
-    expect_key(fx, "click", "count", "250");
+    cr_assert_eq(play_session(OUT "typing",
+                              "fig22_simulator_regular --screen 1280x720 --frames 40 --save " OUT "typing/s.ini "
+                              "--script 'press:gravity wait:2 type:10 key:return press:drag wait:2 type:0.3 "
+                              "key:return press:explosion-count wait:2 key:end type:5 ctrl+a type:250 key:return "
+                              "wait:2 f2'"),
+                 0, "%s", play_stderr(OUT "typing"));
+    isk_effect *fx = scene_open_file(OUT "typing/s.ini");
+    scene_expect_key(fx, "force gravity", "g", "10");
+    scene_expect_key(fx, "force drag", "b", "0.3");
+    scene_expect_key(fx, "click", "count", "250");
     isk_effect_destroy(fx);
     /* the inspector's fields, the same */
-    cr_assert_eq(play("typing2", "fire_campfire --screen 1280x720 --frames 30 --save " OUT "typing2/s.ini --script "
-                                 "'press:emitter-flame/rate wait:2 type:60 key:return press:emitter-sparks/size wait:2 "
-                                 "type:0.2 key:return wait:2 f2'"),
-                 0, "%s", err_of("typing2"));
-    fx = load_saved(OUT "typing2/s.ini");
-    expect_key(fx, "emitter flame", "rate", "60");
-    expect_key(fx, "emitter sparks", "size", "0.2");
+    cr_assert_eq(play_session(OUT "typing2",
+                              "fire_campfire --screen 1280x720 --frames 30 --save " OUT "typing2/s.ini --script "
+                              "'press:emitter-flame/rate wait:2 type:60 key:return press:emitter-sparks/size wait:2 "
+                              "type:0.2 key:return wait:2 f2'"),
+                 0, "%s", play_stderr(OUT "typing2"));
+    fx = scene_open_file(OUT "typing2/s.ini");
+    scene_expect_key(fx, "emitter flame", "rate", "60");
+    scene_expect_key(fx, "emitter sparks", "size", "0.2");
     isk_effect_destroy(fx);
 }
 
@@ -129,20 +89,14 @@ static int error_box(const isk_canvas *c, int *x0, int *x1, int *y0, int *y1)
  * centred on the field, wider than the column, cut at both edges). */
 Test(classroom, a_refused_value_s_message_stays_in_its_column)
 {
-    const char *scene = OUT "sound.ini";
     (void)system("mkdir -p " OUT);
-    FILE *f = fopen(scene, "w");
-    cr_assert_not_null(f);
-    fputs("[scene]\nseed = 3\n[view]\nxmin = 0\nxmax = 10\nymin = 0\nymax = 10\n[force gravity]\ng = 9.81\n"
-          "[force drag]\nb = 0.1\n[bounds]\nsides = bottom\n[emitter p]\nsource = layer\ncount = 200\n"
-          "rect = 0, 10, 0, 2\nforces = gravity, drag\n[click]\nexplosion = gauss\ncount = 300\nemitter = p\n",
-          f);
-    fclose(f);
-    cr_assert_eq(play("refused", OUT "sound.ini --screen 1280x720 --frames 30 --script 'press:gravity wait:2 "
-                                 "type:-5 key:return wait:3 shot:" OUT "refused/window.png'"),
-                 0, "%s", err_of("refused"));
+    cli_write_file(OUT "sound.ini", PLAY_SOUND_SCENE);
+    cr_assert_eq(play_session(OUT "refused",
+                              OUT "sound.ini --screen 1280x720 --frames 30 --script 'press:gravity wait:2 "
+                                  "type:-5 key:return wait:3 shot:" OUT "refused/window.png'"),
+                 0, "%s", play_stderr(OUT "refused"));
     isk_canvas c;
-    read_png(OUT "refused/window.png", &c);
+    play_read_png(OUT "refused/window.png", &c);
     int x0, x1, y0, y1;
     cr_assert_gt(error_box(&c, &x0, &x1, &y0, &y1), 0);
     /* the console's column: the first third of the panel right of the 600 px canvas */
@@ -152,26 +106,12 @@ Test(classroom, a_refused_value_s_message_stays_in_its_column)
     isk_canvas_free(&c);
 }
 
-static void sleep_ms(long ms)
-{
-    struct timespec t = {ms / 1000, (ms % 1000) * 1000000L};
-    nanosleep(&t, NULL);
-}
-
-static void write_file(const char *path, const char *text)
-{
-    FILE *f = fopen(path, "w");
-    cr_assert_not_null(f);
-    fputs(text, f);
-    fclose(f);
-}
-
 static void wait_for(const char *path)
 {
     for (int i = 0; i < 200 && !cli_exists(path); i++)
-        sleep_ms(50);
+        play_sleep_ms(50);
     cr_assert(cli_exists(path), "%s never came", path);
-    sleep_ms(100); /* written whole */
+    play_sleep_ms(100); /* written whole */
 }
 
 /* The class watches the projector, not the terminal: a scene file that
@@ -186,7 +126,7 @@ Test(classroom, a_reload_error_shows_in_the_window_until_the_file_is_fixed, .tim
                        "[emitter dots]\nsource = layer\ncount = 50\nrect = 0, 10, 0, 5\n";
     const char *bad = "[scene]\nwidth = 400\nheight = 300\n[view]\nxmin = 0\nxmax = 10\nymin = 0\nymax = 10\n"
                       "[emitter dots]\nsource = layer\ncount = 50\nrect = 0, 10, 0, 5\nsize = -3\n";
-    write_file(scene, good);
+    cli_write_file(scene, good);
     char cmd[1200];
     snprintf(cmd, sizeof cmd,
              "SDL_VIDEODRIVER=dummy %s/bin/iskra play %s --screen 1280x720 --frames 400 --script 'wait:2 shot:%s/a.png "
@@ -198,9 +138,9 @@ Test(classroom, a_reload_error_shows_in_the_window_until_the_file_is_fixed, .tim
     snprintf(b, sizeof b, "%s/b.png", dir);
     snprintf(c, sizeof c, "%s/c.png", dir);
     wait_for(a);
-    write_file(scene, bad);
+    cli_write_file(scene, bad);
     wait_for(b);
-    write_file(scene, good);
+    cli_write_file(scene, good);
     wait_for(c);
     char p[256];
     snprintf(p, sizeof p, "%s/stderr.txt", dir);
@@ -210,7 +150,7 @@ Test(classroom, a_reload_error_shows_in_the_window_until_the_file_is_fixed, .tim
     free(e);
     isk_canvas shot;
     int x0, x1, y0, y1;
-    read_png(b, &shot);
+    play_read_png(b, &shot);
     cr_expect_gt(error_box(&shot, &x0, &x1, &y0, &y1), 0, "the message is on the canvas");
     cr_expect(x1 < 400 && y1 < 300 && y0 > 150, "at the canvas's foot: x %d..%d, y %d..%d", x0, x1, y0, y1);
     /* whole: the band is as tall as the message's lines wrapped to the canvas */
@@ -223,7 +163,7 @@ Test(classroom, a_reload_error_shows_in_the_window_until_the_file_is_fixed, .tim
     cr_expect_eq(300 - y0, n * isk_ui_line_height(&ui) + 8, "%d lines: a band of %d px, not %d", n,
                  n * isk_ui_line_height(&ui) + 8, 300 - y0);
     isk_canvas_free(&shot);
-    read_png(c, &shot);
+    play_read_png(c, &shot);
     cr_expect_eq(error_box(&shot, &x0, &x1, &y0, &y1), 0, "fixed: the message is gone");
     isk_canvas_free(&shot);
 }
@@ -257,8 +197,8 @@ Test(classroom, the_window_fits_classroom_screens_with_text_10_px_tall)
             char args[400];
             snprintf(args, sizeof args, "%s --screen %dx%d --frames 3 --script 'wait:1 shot:" OUT "fits/w.png'",
                      scenes[k], screens[s].w, screens[s].h);
-            cr_assert_eq(play("fits", args), 0, "%s", err_of("fits"));
-            char *e = err_of("fits");
+            cr_assert_eq(play_session(OUT "fits", args), 0, "%s", play_stderr(OUT "fits"));
+            char *e = play_stderr(OUT "fits");
             int w, h, text;
             window_line(e, &w, &h, &text);
             free(e);
@@ -267,7 +207,7 @@ Test(classroom, the_window_fits_classroom_screens_with_text_10_px_tall)
                           screens[s].w, screens[s].h, h);
             cr_expect_geq(text, 10, "%s at %dx%d: text %d px", scenes[k], screens[s].w, screens[s].h, text);
             isk_canvas c;
-            read_png(OUT "fits/w.png", &c);
+            play_read_png(OUT "fits/w.png", &c);
             cr_expect(c.width == w && c.height == h, "the window is %dx%d", c.width, c.height);
             isk_canvas_free(&c);
         }
@@ -277,12 +217,13 @@ Test(classroom, the_window_fits_classroom_screens_with_text_10_px_tall)
  * potential selected and its k typed; the reference image shows it. */
 Test(classroom, the_console_at_1366x768)
 {
-    cr_assert_eq(play("console768", "fig29_mushroom_four_potentials --screen 1366x768 --frames 40 --script "
-                                    "'press:potentials/1 wait:2 press:pot-k wait:2 type:640000 key:return press:play "
-                                    "wait:20 shot:" OUT "console768/window.png'"),
-                 0, "%s", err_of("console768"));
+    cr_assert_eq(play_session(OUT "console768",
+                              "fig29_mushroom_four_potentials --screen 1366x768 --frames 40 --script "
+                              "'press:potentials/1 wait:2 press:pot-k wait:2 type:640000 key:return press:play "
+                              "wait:20 shot:" OUT "console768/window.png'"),
+                 0, "%s", play_stderr(OUT "console768"));
     isk_canvas c;
-    read_png(OUT "console768/window.png", &c);
+    play_read_png(OUT "console768/window.png", &c);
     cr_assert(refimg_check("simulator_1366x768", &c));
     isk_canvas_free(&c);
 }
@@ -300,15 +241,15 @@ Test(classroom, the_inspector_edits_the_campfire_while_it_runs)
     char args[1200];
     snprintf(args, sizeof args, "fire_campfire --screen 1280x720 --frames 80 --save " OUT "insp/s.ini --script %s",
              script);
-    cr_assert_eq(play("insp", args), 0, "%s", err_of("insp"));
-    isk_effect *fx = load_saved(OUT "insp/s.ini");
-    expect_key(fx, "emitter flame", "rate", "90");
-    expect_key(fx, "emitter flame", "color_over_life", "0:#80c0ff50, 0.5:#4060ff30, 1:#20004000");
-    expect_key(fx, "emitter sparks", "spin", "720");
-    expect_key(fx, "emitter flame", "blend", "add");
+    cr_assert_eq(play_session(OUT "insp", args), 0, "%s", play_stderr(OUT "insp"));
+    isk_effect *fx = scene_open_file(OUT "insp/s.ini");
+    scene_expect_key(fx, "emitter flame", "rate", "90");
+    scene_expect_key(fx, "emitter flame", "color_over_life", "0:#80c0ff50, 0.5:#4060ff30, 1:#20004000");
+    scene_expect_key(fx, "emitter sparks", "spin", "720");
+    scene_expect_key(fx, "emitter flame", "blend", "add");
     isk_effect_destroy(fx);
     isk_canvas c;
-    read_png(OUT "insp/window.png", &c);
+    play_read_png(OUT "insp/window.png", &c);
     cr_assert(refimg_check("inspector_1280x720", &c));
     isk_canvas_free(&c);
 }
@@ -317,11 +258,12 @@ Test(classroom, the_inspector_edits_the_campfire_while_it_runs)
  * message), and a choice's list open over the keys. */
 Test(classroom, the_inspector_at_1366x768_says_why_it_refuses)
 {
-    cr_assert_eq(play("insp768", "fire_campfire --screen 1366x768 --frames 30 --script 'press:emitter-sparks/spin "
-                                 "wait:2 type:9000000 key:return wait:3 shot:" OUT "insp768/window.png'"),
-                 0, "%s", err_of("insp768"));
+    cr_assert_eq(play_session(OUT "insp768",
+                              "fire_campfire --screen 1366x768 --frames 30 --script 'press:emitter-sparks/spin "
+                              "wait:2 type:9000000 key:return wait:3 shot:" OUT "insp768/window.png'"),
+                 0, "%s", play_stderr(OUT "insp768"));
     isk_canvas c;
-    read_png(OUT "insp768/window.png", &c);
+    play_read_png(OUT "insp768/window.png", &c);
     int x0, x1, y0, y1;
     cr_assert_gt(error_box(&c, &x0, &x1, &y0, &y1), 0);
     cr_expect(x0 >= 480, "the message is in the inspector, right of the 480 px canvas: x %d", x0);
@@ -392,19 +334,19 @@ Test(classroom, the_inspector_lists_every_section_and_its_live_keys)
 
 Test(classroom, a_wrong_widget_name_gets_suggestions)
 {
-    cr_assert_eq(play("names", "fig22_simulator_regular --frames 5 --script 'press:explosions'"), 1);
-    char *e = err_of("names");
+    cr_assert_eq(play_session(OUT "names", "fig22_simulator_regular --frames 5 --script 'press:explosions'"), 1);
+    char *e = play_stderr(OUT "names");
     cr_expect(strstr(e, "no widget 'explosions'"), "%s", e);
     cr_expect(strstr(e, "did you mean 'explosion-count'?"), "%s", e);
     cr_expect(strstr(e, "--list-widgets"), "%s", e);
     free(e);
-    cr_assert_eq(play("names", "fire_campfire --frames 5 --script 'press:colour_over_life'"), 1);
-    e = err_of("names");
+    cr_assert_eq(play_session(OUT "names", "fire_campfire --frames 5 --script 'press:colour_over_life'"), 1);
+    e = play_stderr(OUT "names");
     cr_expect(strstr(e, "'emitter-flame/color_over_life'"), "%s", e);
     free(e);
     /* a key scrolled out of view is brought into view, then pressed */
-    cr_assert_eq(play("names", "fire_campfire --frames 8 --script 'press:drawing-log2_core_b/radius'"), 0, "%s",
-                 err_of("names"));
+    cr_assert_eq(play_session(OUT "names", "fire_campfire --frames 8 --script 'press:drawing-log2_core_b/radius'"), 0,
+                 "%s", play_stderr(OUT "names"));
 }
 
 /* A save reloads to the same state: "add potential" is the console's
@@ -413,9 +355,10 @@ Test(classroom, a_wrong_widget_name_gets_suggestions)
  * not given is not written (texture =). */
 Test(classroom, a_save_reloads_to_the_same_state)
 {
-    cr_assert_eq(play("save", "fig22_simulator_regular --ui-scale 1 --frames 20 --save " OUT "save/s.ini --script "
+    cr_assert_eq(play_session(OUT "save",
+                              "fig22_simulator_regular --ui-scale 1 --frames 20 --save " OUT "save/s.ini --script "
                               "'press:click/add-potential wait:2 click:300,300 wait:2 f2'"),
-                 0, "%s", err_of("save"));
+                 0, "%s", play_stderr(OUT "save"));
     char *text = cli_slurp(OUT "save/s.ini");
     cr_expect_null(strstr(text, "osc_table = true"));
     cr_expect_null(strstr(text, "texture =\n"));

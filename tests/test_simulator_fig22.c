@@ -27,6 +27,7 @@
 #include "iskra/png.h"
 #include "iskra/scene.h"
 #include "refimg.h"
+#include "scene_open.h"
 #include "tool_cli.h"
 
 #define FIG "../shared/reference/thesis-figures/fig22-PESimulator.png"
@@ -41,12 +42,8 @@
 
 static void fig22_canvas(isk_canvas *c)
 {
-    isk_effect_def d;
+    isk_effect *fx = scene_open_builtin("fig22_simulator_regular");
     isk_error err;
-    cr_assert_eq(isk_scene_load(&d, "fig22_simulator_regular", &err), ISK_OK, "%s", err.message);
-    isk_effect *fx;
-    cr_assert_eq(isk_effect_create(&fx, &d, &err), ISK_OK, "%s", err.message);
-    isk_effect_def_free(&d);
     static const char *const sets[][3] = {{"force gravity", "g", "10"},
                                           {"force drag", "b", "0.3"},
                                           {"scene", "speed_divisor", "30"},

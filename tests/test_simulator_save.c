@@ -11,6 +11,7 @@
 
 #include "iskra/effect.h"
 #include "iskra/scene.h"
+#include "scene_open.h"
 
 /* Byte for byte, except where a definition came from (the `line` fields)
  * and where arrays live (pointers): those are compared by content. */
@@ -166,12 +167,8 @@ static void same_frames(isk_effect *fx, const isk_effect_def *saved, long frames
 
 Test(save, live_changes_are_saved)
 {
-    isk_effect_def d;
+    isk_effect *fx = scene_open_builtin("fig26_mushroom_one_potential");
     isk_error err;
-    cr_assert_eq(isk_scene_load(&d, "fig26_mushroom_one_potential", &err), ISK_OK, "%s", err.message);
-    isk_effect *fx;
-    cr_assert_eq(isk_effect_create(&fx, &d, &err), ISK_OK, "%s", err.message);
-    isk_effect_def_free(&d);
     static const char *const sets[][3] = {
         {"force gravity", "g", "10"},     {"force drag", "b", "0.3"},          {"bounds", "sides", "all"},
         {"force A", "k", "650.5"},        {"force A", "position", "4.25, 6"}, {"force A", "enabled", "false"},

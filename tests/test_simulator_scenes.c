@@ -9,6 +9,7 @@
 
 #include "iskra/effect.h"
 #include "iskra/scene.h"
+#include "scene_open.h"
 
 typedef struct sim_scene {
     const char *name;
@@ -25,17 +26,6 @@ static const sim_scene scenes[] = {
     {"fig25_simulator_multi_coulomb", "multi-coulomb", 1, "none"},
 };
 
-static isk_effect *open_scene(const char *name)
-{
-    isk_effect_def d;
-    isk_error err;
-    cr_assert_eq(isk_scene_load(&d, name, &err), ISK_OK, "%s", err.message);
-    isk_effect *fx;
-    cr_assert_eq(isk_effect_create(&fx, &d, &err), ISK_OK, "%s: %s", name, err.message);
-    isk_effect_def_free(&d);
-    return fx;
-}
-
 static void expect_value(isk_effect *fx, const char *section, const char *key, const char *want, const char *name)
 {
     char v[128];
@@ -48,7 +38,7 @@ Test(simulator_scenes, hold_the_thesis_pages_parameters)
 {
     for (size_t i = 0; i < sizeof scenes / sizeof scenes[0]; i++) {
         const sim_scene *s = &scenes[i];
-        isk_effect *fx = open_scene(s->name);
+        isk_effect *fx = scene_open_builtin(s->name);
         const isk_effect_def *d = isk_effect_definition(fx);
         cr_expect_eq(d->width, 600);
         cr_expect_eq(d->height, 600);
@@ -77,7 +67,7 @@ Test(simulator_scenes, the_mushroom_scenes_start_paused)
     const char *names[] = {"fig26_mushroom_one_potential", "fig27_mushroom_moving_potential",
                            "fig28_mushroom_three_potentials", "fig29_mushroom_four_potentials"};
     for (int i = 0; i < 4; i++) {
-        isk_effect *fx = open_scene(names[i]);
+        isk_effect *fx = scene_open_builtin(names[i]);
         cr_expect_eq(isk_effect_definition(fx)->show.start_paused, 1, "%s", names[i]);
         isk_effect_destroy(fx);
     }
@@ -87,7 +77,7 @@ Test(simulator_scenes, the_mushroom_scenes_start_paused)
  * stays what it was (empty) after a reset, unless its count was changed. */
 Test(simulator_scenes, clicks_fill_the_empty_layer_and_reset_empties_it)
 {
-    isk_effect *fx = open_scene("fig22_simulator_regular");
+    isk_effect *fx = scene_open_builtin("fig22_simulator_regular");
     cr_assert_eq(isk_effect_click(fx, 5, 5), ISK_OK);
     cr_assert_eq(isk_effect_particle_count(fx), 1000u);
     const isk_particles *p = isk_effect_particles(fx, 0);
@@ -114,7 +104,7 @@ Test(simulator_scenes, clicks_fill_the_empty_layer_and_reset_empties_it)
 
 Test(simulator_scenes, the_empty_simulator_ignores_clicks_until_a_mode_is_chosen)
 {
-    isk_effect *fx = open_scene("simulator");
+    isk_effect *fx = scene_open_builtin("simulator");
     cr_assert_eq(isk_effect_click(fx, 5, 5), ISK_OK);
     cr_assert_eq(isk_effect_particle_count(fx), 0u);
     isk_error err;

@@ -80,6 +80,14 @@ int cli_count_files(const char *dir, const char *pattern)
     return n;
 }
 
+void cli_write_file(const char *path, const char *text)
+{
+    FILE *f = fopen(path, "w");
+    cr_assert_not_null(f, "%s", path);
+    fputs(text, f);
+    fclose(f);
+}
+
 int cli_exists(const char *path)
 {
     struct stat st;

@@ -30,6 +30,9 @@ char *cli_slurp(const char *path);
 /* How many names in dir (dot files too) match the grep pattern. */
 int cli_count_files(const char *dir, const char *pattern);
 
+/* Writes text as the whole file at path (asserts it can). */
+void cli_write_file(const char *path, const char *text);
+
 /* 1 when the path exists. */
 int cli_exists(const char *path);
 

@@ -93,6 +93,13 @@ typedef struct isk_canvas_diff {
  * picture tests write next to a failing comparison. */
 int isk_canvas_compare(const isk_canvas *a, const isk_canvas *b, isk_canvas_diff *d, isk_canvas *diff_image);
 
+/* How many pixels of a and b (one size) have a channel that differs by more
+ * than max_channel_diff (0..255; 0 counts every differing pixel): the rule
+ * of a reference check's tolerance (iskra/refimg.h) and of `iskra compare
+ * --max-channel-diff`.  -1 when either canvas is NULL or malformed, the
+ * sizes differ, or max_channel_diff is outside 0..255. */
+long isk_canvas_count_beyond(const isk_canvas *a, const isk_canvas *b, int max_channel_diff);
+
 #ifdef __cplusplus
 }
 #endif

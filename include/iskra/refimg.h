@@ -51,7 +51,8 @@
  *
  * Tolerances are off by default.  A pixel counts as within tolerance when
  * none of its channels differs by more than max_channel_diff; the check
- * passes when at most max_differing pixels are outside it.  Setting either
+ * passes when at most max_differing pixels are outside it (the count is
+ * isk_canvas_count_beyond's, iskra/canvas.h).  Setting either
  * requires `reason` (why exactness cannot hold here: "libm's exp differs
  * across platforms"), which failure messages repeat.
  */

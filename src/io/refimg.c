@@ -84,24 +84,6 @@ static void write_diff(const isk_canvas *c, const isk_canvas *ref, const refimg_
     isk_canvas_free(&d);
 }
 
-/* Pixels whose largest channel difference exceeds tol (same sizes). */
-static long count_beyond(const isk_canvas *a, const isk_canvas *b, int tol)
-{
-    long n = 0;
-    for (int y = 0; y < a->height; y++) {
-        const uint8_t *p = a->pixels + (size_t)y * a->stride, *q = b->pixels + (size_t)y * b->stride;
-        for (int x = 0; x < 4 * a->width; x += 4) {
-            int m = 0;
-            for (int k = 0; k < 4; k++) {
-                int dd = p[x + k] > q[x + k] ? p[x + k] - q[x + k] : q[x + k] - p[x + k];
-                m = dd > m ? dd : m;
-            }
-            n += m > tol;
-        }
-    }
-    return n;
-}
-
 static isk_status check_args(const isk_canvas *c, const char *ref_path, const isk_refimg_opts *o, isk_error *err)
 {
     if (!c || !ref_path)
@@ -164,7 +146,7 @@ isk_status isk_refimg_check(const isk_canvas *c, const char *ref_path, const isk
     res.ref_height = ref.height;
     res.same_size = isk_canvas_compare(c, &ref, &res.diff, NULL);
     if (res.same_size)
-        res.beyond_tolerance = o->max_channel_diff ? count_beyond(c, &ref, o->max_channel_diff) : res.diff.differing;
+        res.beyond_tolerance = isk_canvas_count_beyond(c, &ref, o->max_channel_diff);
     if (o->result)
         *o->result = res;
     if (res.same_size && res.beyond_tolerance <= o->max_differing) {

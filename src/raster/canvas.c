@@ -126,6 +126,21 @@ int isk_canvas_equal(const isk_canvas *a, const isk_canvas *b)
     return 1;
 }
 
+/* How far pixel q is from pixel p: the largest difference of one channel
+ * (returned; what decides whether two pixels differ, and by how much) and
+ * the sum of the four channels' differences (*sum unless NULL, for the mean). */
+static int pixel_diff(const uint8_t *p, const uint8_t *q, int *sum)
+{
+    int m = 0, s = 0;
+    for (int k = 0; k < 4; k++) {
+        int dd = p[k] > q[k] ? p[k] - q[k] : q[k] - p[k];
+        s += dd;
+        if (dd > m) m = dd;
+    }
+    if (sum) *sum = s;
+    return m;
+}
+
 int isk_canvas_compare(const isk_canvas *a, const isk_canvas *b, isk_canvas_diff *d, isk_canvas *diff_image)
 {
     isk_canvas_diff r = {0, 0, 0, 0.0};
@@ -143,12 +158,9 @@ int isk_canvas_compare(const isk_canvas *a, const isk_canvas *b, isk_canvas_diff
             int inside = x < a->width && y < a->height && x < b->width && y < b->height;
             int m = 0;
             if (inside) {
-                const uint8_t *p = isk_canvas_at(a, x, y), *q = isk_canvas_at(b, x, y);
-                for (int k = 0; k < 4; k++) {
-                    int dd = p[k] > q[k] ? p[k] - q[k] : q[k] - p[k];
-                    sum += dd;
-                    if (dd > m) m = dd;
-                }
+                int pixel_sum;
+                m = pixel_diff(isk_canvas_at(a, x, y), isk_canvas_at(b, x, y), &pixel_sum);
+                sum += pixel_sum;
                 r.differing += m != 0;
                 if (m > r.max_channel) r.max_channel = m;
             }
@@ -171,4 +183,16 @@ int isk_canvas_compare(const isk_canvas *a, const isk_canvas *b, isk_canvas_diff
     r.mean_abs = r.pixels ? sum / (4.0 * (double)r.pixels) : 0.0;
     if (d) *d = r;
     return 1;
+}
+
+long isk_canvas_count_beyond(const isk_canvas *a, const isk_canvas *b, int max_channel_diff)
+{
+    if (!readable(a) || !readable(b) || a->width != b->width || a->height != b->height || max_channel_diff < 0 ||
+        max_channel_diff > 255)
+        return -1;
+    long n = 0;
+    for (int y = 0; y < a->height; y++)
+        for (int x = 0; x < a->width; x++)
+            n += pixel_diff(isk_canvas_at(a, x, y), isk_canvas_at(b, x, y), NULL) > max_channel_diff;
+    return n;
 }

@@ -1,9 +1,10 @@
 /* SPDX-License-Identifier: MIT */
 /* src/raster/font.c — iskra's built-in bitmap font (our own design).
  *
- * Covers printable ASCII 32..126; isk_font_glyph() returns the 8 row bytes of
- * a glyph (bit 4 = leftmost of the 5 columns) and a hollow box for any other
- * byte.  src/raster/text.c draws and measures strings with it.
+ * Covers printable ASCII 32..126 (bit 4 of a row = leftmost of the 5
+ * columns), with a hollow box for any other byte: isk__font_5x8 at the end
+ * gives the table, the box and the metrics to src/raster/text.c, which
+ * looks glyphs up (isk_font_glyph), draws and measures strings with them.
  *
  * Design: each glyph sits in a 5x8 box.  Capitals, digits and ascenders use
  * rows 0..6 (baseline = row 6), the x-height of lower case is rows 2..6 and
@@ -18,9 +19,7 @@
  * blank space glyph and that no two glyphs are equal; the refimg
  * text_font_table shows the whole table.
  */
-#include "iskra/text.h"
-
-#include <stdint.h>
+#include "font_bitmaps.h"
 
 /* One enum constant per 5-pixel row pattern, named by its picture, so that
  * R(_XXX_) is the byte 0x0E.  Only used to build the table. */
@@ -36,7 +35,7 @@ enum {
 };
 #define R(pattern) ((uint8_t)ROW_##pattern)
 
-static const uint8_t font_table[127 - 32][ISK_FONT_GLYPH_H] = {
+static const uint8_t font_table[ISK__FONT_GLYPHS][ISK_FONT_GLYPH_H] = {
     /* 32 ' ' */
     {R(_____),
      R(_____),
@@ -907,9 +906,9 @@ static const uint8_t box_glyph[ISK_FONT_GLYPH_H] = {
 
 #undef R
 
-const uint8_t *isk_font_glyph(unsigned char ch)
-{
-    if (ch < 32u || ch > 126u)
-        return box_glyph;
-    return font_table[ch - 32u];
-}
+/* Capitals and digits use rows 0..6. */
+const isk__font_bitmaps isk__font_5x8 = {
+    {ISK_FONT_CELL_W, ISK_FONT_CELL_H, ISK_FONT_GLYPH_W, ISK_FONT_GLYPH_H, 7},
+    (const uint8_t *)font_table,
+    box_glyph,
+};

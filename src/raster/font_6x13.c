@@ -17,9 +17,9 @@
  * the table reads as a picture.  tests/test_font.c checks the box, that no
  * two glyphs are equal and the capitals' height; the refimg
  * text_font_table_6x13 shows the whole table. */
-#include "iskra/text.h"
+#include "font_bitmaps.h"
 
-#include <stdint.h>
+enum { GLYPH_H = 13 }; /* rows of a glyph */
 
 /* One enum constant per 6-pixel row pattern, named by its picture, so that
  * R(_XXX__) is the byte 0x1C (bit 5 = the leftmost pixel).  Only used to
@@ -44,7 +44,7 @@ enum {
 };
 #define R(pattern) ((uint8_t)ROW6_##pattern)
 
-static const uint8_t font_table[127 - 32][13] = {
+static const uint8_t font_table[ISK__FONT_GLYPHS][GLYPH_H] = {
     /* 32 ' ' */
     {R(______),
      R(______),
@@ -1378,7 +1378,7 @@ static const uint8_t font_table[127 - 32][13] = {
 };
 
 /* Drawn for every byte outside 32..126: a hollow box, unlike any letter. */
-static const uint8_t box_glyph[13] = {
+static const uint8_t box_glyph[GLYPH_H] = {
     R(XXXXX_),
     R(X___X_),
     R(X___X_),
@@ -1395,9 +1395,9 @@ static const uint8_t box_glyph[13] = {
 
 #undef R
 
-const uint8_t *isk__font_6x13_glyph(unsigned char ch)
-{
-    if (ch < 32u || ch > 126u)
-        return box_glyph;
-    return font_table[ch - 32u];
-}
+/* 6x13 glyphs in 7x14 cells; capitals and digits use rows 0..9. */
+const isk__font_bitmaps isk__font_6x13 = {
+    {7, 14, 6, GLYPH_H, 10},
+    (const uint8_t *)font_table,
+    box_glyph,
+};

@@ -21,27 +21,30 @@
 #include <stddef.h>
 #include <stdint.h>
 
-/* The 6x13 font's table (src/raster/font_6x13.c). */
-const uint8_t *isk__font_6x13_glyph(unsigned char ch);
+#include "font_bitmaps.h"
 
-static const isk_font_metrics metrics[ISK_FONT_COUNT] = {
-    [ISK_FONT_5X8] = {ISK_FONT_CELL_W, ISK_FONT_CELL_H, ISK_FONT_GLYPH_W, ISK_FONT_GLYPH_H, 7},
-    [ISK_FONT_6X13] = {7, 14, 6, 13, 10},
+/* Each font's bitmaps and metrics, from its own file. */
+static const isk__font_bitmaps *const fonts[ISK_FONT_COUNT] = {
+    [ISK_FONT_5X8] = &isk__font_5x8,
+    [ISK_FONT_6X13] = &isk__font_6x13,
 };
 
 const isk_font_metrics *isk_font_metrics_of(isk_font font)
 {
-    return (unsigned)font < ISK_FONT_COUNT ? &metrics[font] : NULL;
+    return (unsigned)font < ISK_FONT_COUNT ? &fonts[font]->metrics : NULL;
 }
 
 const uint8_t *isk_font_rows(isk_font font, unsigned char ch)
 {
-    switch (font) {
-    case ISK_FONT_5X8: return isk_font_glyph(ch);
-    case ISK_FONT_6X13: return isk__font_6x13_glyph(ch);
-    default: return NULL;
-    }
+    if ((unsigned)font >= ISK_FONT_COUNT)
+        return NULL;
+    const isk__font_bitmaps *f = fonts[font];
+    if (ch < ISK__FONT_FIRST || ch > ISK__FONT_LAST)
+        return f->box;
+    return f->glyphs + (size_t)(ch - ISK__FONT_FIRST) * (size_t)f->metrics.glyph_h;
 }
+
+const uint8_t *isk_font_glyph(unsigned char ch) { return isk_font_rows(ISK_FONT_5X8, ch); }
 
 /* n * unit, saturated at INT_MAX (unit > 0). */
 static int saturated_product(unsigned long long n, long long unit)

@@ -7,7 +7,6 @@
  * isk_refimg_opts has (a tolerance needs a written reason).
  * Exit 0 the same (or within the tolerance), 1 different, 2 an image
  * unreadable, the diff image not written, or a usage error: as cmp(1). */
-#include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -72,25 +71,6 @@ static int tolerance_set(const tolerance *t) { return t->max_channel_diff || t->
 /* Same size, and at most max_differing pixels beyond the channel tolerance
  * (with no tolerance: identical). */
 static int within(const report *r) { return r->same_size && r->beyond <= r->tol.max_differing; }
-
-/* Pixels whose largest channel difference exceeds tol (same sizes): the
- * rule isk_refimg_check applies (iskra/refimg.h). */
-static long count_beyond(const isk_canvas *a, const isk_canvas *b, int tol)
-{
-    long n = 0;
-    for (int y = 0; y < a->height; y++) {
-        const uint8_t *p = a->pixels + (size_t)y * a->stride, *q = b->pixels + (size_t)y * b->stride;
-        for (int x = 0; x < 4 * a->width; x += 4) {
-            int m = 0;
-            for (int k = 0; k < 4; k++) {
-                int dd = p[x + k] > q[x + k] ? p[x + k] - q[x + k] : q[x + k] - p[x + k];
-                m = dd > m ? dd : m;
-            }
-            n += m > tol;
-        }
-    }
-    return n;
-}
 
 static void json_string(const char *s)
 {
@@ -193,7 +173,7 @@ static void run(report *r, long long max_pixels)
     } else {
         r->same_size = isk_canvas_compare(&a, &b, &r->d, r->diff_path ? &img : NULL);
         if (r->same_size)
-            r->beyond = r->tol.max_channel_diff ? count_beyond(&a, &b, r->tol.max_channel_diff) : r->d.differing;
+            r->beyond = isk_canvas_count_beyond(&a, &b, r->tol.max_channel_diff); /* refimg's rule */
         if (r->diff_path) {
             if (outpath_make_parents("compare", r->diff_path))
                 snprintf(r->error, sizeof r->error, "cannot write %s", r->diff_path);

@@ -108,6 +108,21 @@ static void row_words(const isk_key *k, row_text *t)
     isk_key_meaning_text(k, t->meaning, sizeof t->meaning);
 }
 
+/* The next key of section s at or after table row *i (which it moves past
+ * it), with its columns in words in *t; NULL after the section's last. */
+static const isk_key *next_key_row(int s, int *i, row_text *t)
+{
+    for (; *i < isk_key_count(); (*i)++) {
+        const isk_key *k = isk_key_at(*i);
+        if ((int)k->section == s) {
+            (*i)++;
+            row_words(k, t);
+            return k;
+        }
+    }
+    return NULL;
+}
+
 /* One markdown cell (a '|' inside is escaped). */
 static void md_cell(const char *s)
 {
@@ -129,12 +144,9 @@ static void print_markdown(int section)
     if (kind_col)
         printf(" %s |", kind_col);
     printf(" type | default | range | live | meaning |\n|---|%s---|---|---|---|---|\n", kind_col ? "---|" : "");
-    for (int i = 0; i < isk_key_count(); i++) {
-        const isk_key *k = isk_key_at(i);
-        if ((int)k->section != section)
-            continue;
-        row_text t;
-        row_words(k, &t);
+    row_text t;
+    int i = 0;
+    for (const isk_key *k; (k = next_key_row(section, &i, &t)) != NULL;) {
         printf("| `%s` |", k->name);
         if (kind_col)
             md_cell(t.kinds);
@@ -206,12 +218,9 @@ static void print_man(int section)
                 used += (size_t)snprintf(line + used, sizeof line - used, "%s %s", i ? "," : "", kinds[i]);
             roff_text(line);
         }
-        for (int i = 0; i < isk_key_count(); i++) {
-            const isk_key *k = isk_key_at(i);
-            if ((int)k->section != s)
-                continue;
-            row_text t;
-            row_words(k, &t);
+        row_text t;
+        int i = 0;
+        for (const isk_key *k; (k = next_key_row(s, &i, &t)) != NULL;) {
             char line[1200];
             const int required = !strcmp(t.dflt, "required");
             size_t used = (size_t)snprintf(line, sizeof line, "%s; %s%s", isk_key_type_name(k->type),
@@ -246,12 +255,9 @@ static void print_readable(int section)
                 printf(" %s", kinds[i]);
         }
         printf("\n");
-        for (int i = 0; i < isk_key_count(); i++) {
-            const isk_key *k = isk_key_at(i);
-            if ((int)k->section != s)
-                continue;
-            row_text t;
-            row_words(k, &t);
+        row_text t;
+        int i = 0;
+        for (const isk_key *k; (k = next_key_row(s, &i, &t)) != NULL;) {
             printf("  %-19s %-12s default %s", k->name, isk_key_type_name(k->type), *t.dflt ? t.dflt : "none");
             if (*t.range)
                 printf("; range %s", t.range);

@@ -60,6 +60,26 @@ static int nth_item(const isk_effect_def *d, int n, play_item *it)
     return 0;
 }
 
+/* The widget names of a section and of one of its keys (see the top). */
+static void section_widget_id(const play_item *it, char id[ISK_UI_ID_MAX])
+{
+    snprintf(id, ISK_UI_ID_MAX, "section/%s", it->token);
+}
+
+static void key_widget_id(const play_item *it, const isk_key *k, char id[ISK_UI_ID_MAX])
+{
+    snprintf(id, ISK_UI_ID_MAX, "%s/%s", it->token, k->name);
+}
+
+/* The name of the item's kind ("gravity", "stream"), or NULL for a
+ * section without kinds. */
+static const char *kind_name(const play_item *it)
+{
+    int nk;
+    const char *const *kinds = isk_section_kind_names(it->section, &nk);
+    return kinds && it->kind >= 0 && it->kind < nk ? kinds[it->kind] : NULL;
+}
+
 static int item_count(const isk_effect_def *d)
 {
     int n = 0;
@@ -122,20 +142,17 @@ static void sections(player *p, isk_ui_rect r)
         if (!nth_item(d, p->insp.sections_scroll + row, &it))
             break;
         isk_ui_rect line = {r.x, r.y + row * rh, r.w, rh};
-        char id[ISK_UI_ID_MAX], kind[40] = "";
-        snprintf(id, sizeof id, "section/%s", it.token);
+        char id[ISK_UI_ID_MAX];
+        section_widget_id(&it, id);
         const int selected = (int)it.section == p->insp.section && it.index == p->insp.item;
         if (isk_ui_selectable(ui, id, line, it.name, selected) && !selected) {
             p->insp.section = it.section;
             p->insp.item = it.index;
             p->insp.keys_scroll = 0;
         }
-        int nk;
-        const char *const *kinds = isk_section_kind_names(it.section, &nk);
-        if (kinds && it.kind >= 0 && it.kind < nk)
-            snprintf(kind, sizeof kind, "%s", kinds[it.kind]);
-        isk_ui_text(ui, isk_ui_text_line(ui, isk_ui_inset(line, U(4))), kind, selected ? ui->style.text : ui->style.dim,
-                    ISK_UI_RIGHT);
+        const char *kind = kind_name(&it);
+        isk_ui_text(ui, isk_ui_text_line(ui, isk_ui_inset(line, U(4))), kind ? kind : "",
+                    selected ? ui->style.text : ui->style.dim, ISK_UI_RIGHT);
     }
 }
 
@@ -188,7 +205,7 @@ static void keys(player *p, const play_item *it, isk_ui_rect r, help *h)
             isk_ui_cut_top(&a, gap);
         }
         char id[ISK_UI_ID_MAX], label[64];
-        snprintf(id, sizeof id, "%s/%s", it->token, k->name);
+        key_widget_id(it, k, id);
         const int later = isk_key_when_set(k, it->kind) == ISK_KEY_WHEN_RESET;
         snprintf(label, sizeof label, "%s%s", k->name, later ? "*" : "");
         isk_ui_rect widget = line;
@@ -279,13 +296,12 @@ void play_inspector(player *p)
     isk_ui_box(ui, head);
     isk_ui_rect ht = isk_ui_text_line(ui, isk_ui_inset(head, U(4)));
     isk_ui_text(ui, ht, title, ui->style.text, ISK_UI_LEFT);
-    int nk;
-    const char *const *kinds = isk_section_kind_names(it.section, &nk);
-    if (kinds && it.kind >= 0 && it.kind < nk) {
+    const char *kind_of_item = kind_name(&it);
+    if (kind_of_item) {
         char kind[60];
         snprintf(kind, sizeof kind, "%s = %s", isk_section_kind_key(it.section)[0] ? isk_section_kind_key(it.section)
                                                                                    : "kind",
-                 kinds[it.kind]);
+                 kind_of_item);
         isk_ui_text(ui, ht, kind, ui->style.dim, ISK_UI_RIGHT);
     }
     isk_ui_cut_top(&a, U(GAP));
@@ -317,26 +333,20 @@ void play_inspector(player *p)
 void play_inspector_names(const player *p, void (*name)(void *user, const char *name), void *user)
 {
     const isk_effect_def *d = isk_effect_definition(p->fx);
-    const int n = item_count(d);
-    for (int i = 0; i < n; i++) {
-        play_item it;
-        nth_item(d, i, &it);
-        char id[ISK_UI_ID_MAX];
-        snprintf(id, sizeof id, "section/%s", it.token);
+    play_item it;
+    char id[ISK_UI_ID_MAX];
+    for (int i = 0; nth_item(d, i, &it); i++) {
+        section_widget_id(&it, id);
         name(user, id);
     }
-    for (int i = 0; i < n; i++) {
-        play_item it;
-        nth_item(d, i, &it);
+    for (int i = 0; nth_item(d, i, &it); i++)
         for (int r = 0; r < isk_key_count(); r++) {
             const isk_key *k = isk_key_at(r);
-            if (!shown_key(k, it.section, it.kind))
-                continue;
-            char id[ISK_UI_ID_MAX];
-            snprintf(id, sizeof id, "%s/%s", it.token, k->name);
-            name(user, id);
+            if (shown_key(k, it.section, it.kind)) {
+                key_widget_id(&it, k, id);
+                name(user, id);
+            }
         }
-    }
 }
 
 /* Selects the section of widget `wanted` and scrolls to it; 1 when the
@@ -344,12 +354,10 @@ void play_inspector_names(const player *p, void (*name)(void *user, const char *
 static int reveal(player *p, const char *wanted, int apply)
 {
     const isk_effect_def *d = isk_effect_definition(p->fx);
-    const int n = item_count(d);
-    for (int i = 0; i < n; i++) {
-        play_item it;
-        nth_item(d, i, &it);
+    play_item it;
+    for (int i = 0; nth_item(d, i, &it); i++) {
         char id[ISK_UI_ID_MAX];
-        snprintf(id, sizeof id, "section/%s", it.token);
+        section_widget_id(&it, id);
         const size_t tl = strlen(it.token);
         const int is_section = !strcmp(wanted, id);
         const int in_section = !strncmp(wanted, it.token, tl) && wanted[tl] == '/';
