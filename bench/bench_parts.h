@@ -4,7 +4,7 @@
  * each, every one on one thread of its own, their frames all at once.
  * They share nothing (no store, no canvas, no pool), so their speedup over
  * the whole on one thread is what the machine gives that many cores for
- * this work: the measure speed issue 12 started from ("two processes of
+ * this work: the measure the speed goals started from ("two processes of
  * half the size take about half the time").  A threaded effect can be
  * read against it: whatever it loses beyond it is the cost of sharing one
  * store and one canvas between the cores.

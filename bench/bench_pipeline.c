@@ -20,7 +20,7 @@
  * order and times STEPS steps; each figure is the median over ROUNDS, so
  * the allocator's page placement averages out.  Rendering is not timed.
  * Also checks that the effect and the hand loop end with identical bits.
- * Targets (issue 5): A/hand <= 1.05; B/A and C/A within 2 %. */
+ * Targets: A/hand <= 1.05; B/A and C/A within 2 %. */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>

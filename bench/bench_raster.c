@@ -1,5 +1,5 @@
 /* SPDX-License-Identifier: MIT */
-/* The rasterizer's primitives against the "touch floor" (issue 12, goal 1).
+/* The rasterizer's primitives against the "touch floor".
  *
  * Touch floor: a loop that does the same world->screen transform as the
  * coverage dot and touches (reads and writes one byte of) the same 2x2

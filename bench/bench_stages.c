@@ -48,7 +48,6 @@ static const row rows[] = {
     {"deflector", "deflectors = floor", "[deflector floor]\nsegment = -10, -3, 10, -3\nrestitution = 0.5\n"},
     {"colour over life", "color_over_life = 0:white, 0.5:orange, 1:#40000000", ""},
     {"alpha + size over life", "alpha_over_life = 0:1, 1:0\nsize_over_life = 0:1, 1:0.3", ""},
-    /* issue 14 */
     {"radial + tangential accel", "radial_accel = -1\ntangential_accel = 2", ""},
     {"turbulence force", "forces = gravity, swirl", "[force swirl]\nkind = turbulence\nstrength = 2\nscale = 1.5\nspeed = 0.3\n"},
     {"emitter_velocity", "emitter_velocity = 3, 0", ""},

@@ -21,7 +21,7 @@
  *     osc_offset and writes osc_amp, osc_phase, osc_offset (it changes x
  *     and vx too, which the drift has read and writes anyway): 56 B; 120 B
  *     in all, as two stages or in one pass.  Footprint 64 B a particle.
- * Issue 12's goal for every stage set: within 1.5x of its limit.
+ * The goal for every stage set: within 1.5x of its limit.
  *
  * Variants, each a pipeline of the library's block runner over the same
  * store (semi-implicit Euler, gravity 9.81 + linear drag 0.47, dt = 1/600,

@@ -1,5 +1,5 @@
 /* SPDX-License-Identifier: MIT */
-/* Issue 13.5: a particle exactly on the canvas's edge is drawn.  Reflect
+/* A particle exactly on the canvas's edge is drawn.  Reflect
  * walls (margin 0) on the view's own rectangle hold a particle on each of the
  * four edges; every dot rule, with one colour (the batched kernels) and with
  * a colour ramp (the per-particle path), lights the edge's own row or column.

@@ -250,7 +250,7 @@ ParameterizedTest(int *share, finite_sweep, every_numeric_key_at_its_extremes_wi
     cr_assert_eq(failures, 0, "%ld accepted settings produced a non-finite state (see the log)", failures);
 }
 
-/* Issue 13.7: a view of +-1.7e308 is refused for its width, which
+/* A view of +-1.7e308 is refused for its width, which
  * overflows, with the line of the key (it used to say "value out of range"
  * with no line). */
 Test(finite_sweep, a_window_whose_width_overflows_names_its_line)

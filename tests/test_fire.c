@@ -1,5 +1,5 @@
 /* SPDX-License-Identifier: MIT */
-/* The fire runtime (issue 4): stream emission, births, lifetime, pool,
+/* The fire runtime: stream emission, births, lifetime, pool,
  * forces (wind, buoyancy, slowing, gravity multiplier), flame oscillation
  * and the slowing order, with the numbers of the fire thesis's checks
  * (reference/fire-thesis.md section 5) and the particle-engine thesis's

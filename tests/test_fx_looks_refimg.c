@@ -1,5 +1,5 @@
 /* SPDX-License-Identifier: MIT */
-/* Reference images of the looks (issue 14), byte for byte: a still scene
+/* Reference images of the looks, byte for byte: a still scene
  * of textured particles at known angles and flipbook frames (the example
  * scene scenes/looks_pinwheel.ini is compared with its image by
  * tests/test_scene_render.c, with every scene that has one). */

@@ -1,5 +1,5 @@
 /* SPDX-License-Identifier: MIT */
-/* Issue 14, how emitters and particles move: what every key owes
+/* How emitters and particles move: what every key owes
  * (tests/key_case.h): with it the bytes differ, at its default they are
  * today's, a bad value is refused with FILE:LINE and the CLI exits 2; and
  * each stage is in an emitter's lists only when that emitter uses it. */

@@ -1,5 +1,5 @@
 /* SPDX-License-Identifier: MIT */
-/* Issue 14: the accelerations that depend on where a particle is
+/* The accelerations that depend on where a particle is
  * (src/sim/field.h): radial and tangential around the emitter's current
  * position, and turbulence, the curl of a seeded gradient noise -- its
  * divergence (finite differences, to round-off), its determinism and its

@@ -1,5 +1,5 @@
 /* SPDX-License-Identifier: MIT */
-/* Issue 14: moving emitters.  Births are placed on the emitter's path at
+/* Moving emitters.  Births are placed on the emitter's path at
  * their exact birth times, position(tb) = position + v*tb computed
  * directly, so 30 and 144 steps per second give the same birth positions
  * (bit for bit); a position set live spreads the next frame's births along

@@ -1,5 +1,5 @@
 /* SPDX-License-Identifier: MIT */
-/* Issue 14: a stream's time.  `duration` emits floor(rate*duration)
+/* A stream's time.  `duration` emits floor(rate*duration)
  * particles per cycle and `loop` restarts the cycle, bursts included (the
  * counts are exact, at any step); `prewarm` runs whole frames before frame
  * 0, so a prewarmed fire's frame 0 is the un-prewarmed fire's frame N,

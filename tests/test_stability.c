@@ -635,7 +635,7 @@ Test(stability, bumpers_in_a_closed_box_cap_the_speed, .timeout = 60)
     }
 }
 
-/* Issue 13.6: the exponent's range is where the law means something, P in
+/* The exponent's range is where the law means something, P in
  * 0..17 (iskra/limits.h).  P = -15 (|F| ~ d^16), which flung every particle
  * to 1e146 within three frames, is refused with its line; at the range's
  * ends the motion is bounded: a spring (P = 0) keeps a particle oscillating

@@ -1,7 +1,7 @@
 /* SPDX-License-Identifier: MIT */
 /* bench_peers: iskra's raster primitives against the Debian packages of
  * cairo, pixman, AGG, SDL2 (surface blits) and SDL2_gfx, per primitive, in
- * one run (issue 12, goal 5).
+ * one run.
  *
  * Every library draws the same items (same random positions, same colour
  * (255,180,60,200), same blend: over or add) onto its own 800x600 opaque
@@ -524,7 +524,7 @@ int main(int argc, char **argv)
         }
         printf("\n");
     }
-    printf("targets (issue 12): coverage dot >= 10x faster than AGG (ratio <= 0.10); AA disc <= 0.5x AGG;\n"
+    printf("targets: coverage dot >= 10x faster than AGG (ratio <= 0.10); AA disc <= 0.5x AGG;\n"
            "                    sprites <= 0.7x pixman; dot vs the touch floor and single pixel: bench_raster\n");
     printf("same work: %s (drawn area per item against iskra's: within 2%%, discs 2%% + 12%%/r)\n",
            bad ? "DIFFERS" : "ok");
