@@ -3,6 +3,7 @@
  * the version is one fact (header, library, tool), and every public header
  * stands alone in C (and in C++: tests/cxx_link.cpp, run by run_all.sh). */
 #include <criterion/criterion.h>
+#include <criterion/logging.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -11,34 +12,88 @@
 #include "refimg.h"
 #include "tool_cli.h"
 
-/* Every defined dynamic symbol of the library: isk_* or a linker/runtime
- * name (leading underscore: _edata, __bss_start, the sanitizers'). */
-static void only_public_symbols(const char *lib)
+/* Reads `cmd`'s output, a name a line (after skipping `skip` words), into
+ * a sorted list; returns how many. */
+static int read_names(const char *cmd, int skip, char names[][96], int most)
 {
-    char cmd[512];
-    snprintf(cmd, sizeof cmd, "nm -D --defined-only %s/lib/%s", refimg_build_dir(), lib);
     FILE *p = popen(cmd, "r");
     cr_assert_not_null(p, "%s", cmd);
-    char line[512];
-    int public_ones = 0;
+    char line[1024];
+    int n = 0;
     while (fgets(line, sizeof line, p)) {
-        char addr[64], type[8], name[400];
-        if (sscanf(line, "%63s %7s %399s", addr, type, name) != 3)
+        char w[4][96] = {{0}};
+        int got = sscanf(line, "%95s %95s %95s %95s", w[0], w[1], w[2], w[3]);
+        if (got <= skip)
             continue;
-        if (!strncmp(name, "isk_", 4) && name[4] != '_') {
-            public_ones++;
-            continue;
-        }
-        cr_assert(name[0] == '_', "%s exports '%s' (only isk_* may be exported, never the internal isk__*; see src/exports.map)", lib, name);
+        cr_assert_lt(n, most, "%s: more than %d names", cmd, most);
+        snprintf(names[n++], 96, "%s", w[skip]);
     }
     cr_assert_eq(pclose(p), 0, "%s failed", cmd);
-    cr_assert_gt(public_ones, 5, "%s", lib);
+    qsort(names, (size_t)n, sizeof names[0], (int (*)(const void *, const void *))strcmp);
+    return n;
 }
 
-Test(hygiene, shared_libraries_export_only_isk_symbols)
+static int listed(char names[][96], int n, const char *name)
 {
-    only_public_symbols("libiskra.so");
-    only_public_symbols("libiskra-sdl.so");
+    return bsearch(name, names, (size_t)n, sizeof names[0], (int (*)(const void *, const void *))strcmp) != NULL;
+}
+
+enum { MOST_NAMES = 4096 };
+static char exported[MOST_NAMES][96], declared[MOST_NAMES][96];
+
+/* The ABI is what include/ declares: every isk_* name the two shared
+ * libraries export is a function or an object declared by a public header
+ * (internals are isk__ or static, and src/exports.map exports isk_ followed
+ * by a letter or digit only), and every function a public header declares
+ * (not static inline) is exported by one of them.  The declarations come
+ * from the compiler itself (gcc's -aux-info lists every prototype it read,
+ * with the header and line it came from); the objects from their extern
+ * declarations. */
+Test(hygiene, the_exported_names_are_the_declared_ones, .timeout = 120)
+{
+    char cmd[1024];
+    snprintf(cmd, sizeof cmd,
+             "nm -D --defined-only %s/lib/libiskra.so %s/lib/libiskra-sdl.so | awk 'NF == 3 && $3 ~ /^isk_/ "
+             "{print $3}' | sort -u",
+             refimg_build_dir(), refimg_build_dir());
+    const int ne = read_names(cmd, 0, exported, MOST_NAMES);
+    cr_assert_gt(ne, 300, "%s: %d names", cmd, ne);
+    /* functions: every prototype the public headers give, as gcc saw them */
+    snprintf(cmd, sizeof cmd,
+             "printf '#include <iskra.h>\n#include <iskra/sdl.h>\n#include <iskra/ui_sdl.h>\n' > "
+             "out/test_hygiene/abi.c && gcc -std=c11 -Iinclude $(pkg-config --cflags sdl2 2>/dev/null) "
+             "-fsyntax-only -aux-info out/test_hygiene/abi.aux out/test_hygiene/abi.c && "
+             "grep -E '^/\\* include/iskra' out/test_hygiene/abi.aux | grep -v ':N[CF] \\*/ static ' | "
+             "grep -oE '\\bisk_[a-z0-9_]+ \\(' | sed 's/ (//'; "
+             "cat include/iskra.h include/iskra/*.h | grep -oE 'extern [^;(]*\\bisk_[a-z0-9_]+ *(\\[[^]]*\\])? *;' | "
+             "grep -oE 'isk_[a-z0-9_]+ *(\\[[^]]*\\])? *;$' | grep -oE '^isk_[a-z0-9_]+'");
+    cli_fresh("out/test_hygiene");
+    char full[1200];
+    snprintf(full, sizeof full, "( %s ) | sort -u", cmd);
+    const int nd = read_names(full, 0, declared, MOST_NAMES);
+    cr_assert_gt(nd, 300, "%d declarations read", nd);
+    /* and nothing but isk_* and the linker's or runtime's own (_edata,
+     * __bss_start, the sanitizers') */
+    snprintf(cmd, sizeof cmd,
+             "nm -D --defined-only %s/lib/libiskra.so %s/lib/libiskra-sdl.so | awk 'NF == 3 && $3 !~ /^(isk_|_)/ "
+             "{print $3}'",
+             refimg_build_dir(), refimg_build_dir());
+    static char others[MOST_NAMES][96];
+    const int no = read_names(cmd, 0, others, MOST_NAMES);
+    for (int i = 0; i < no; i++)
+        cr_log_error("exported and not the API: %s (see src/exports.map)", others[i]);
+    int bad = no;
+    for (int i = 0; i < ne; i++)
+        if (!listed(declared, nd, exported[i])) {
+            cr_log_error("exported but declared by no public header: %s (internal: isk__ or static)", exported[i]);
+            bad++;
+        }
+    for (int i = 0; i < nd; i++)
+        if (!listed(exported, ne, declared[i])) {
+            cr_log_error("declared by a public header but not exported: %s", declared[i]);
+            bad++;
+        }
+    cr_assert_eq(bad, 0, "%d names differ between the headers and the libraries (above)", bad);
 }
 
 Test(hygiene, one_version_everywhere)
