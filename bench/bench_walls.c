@@ -238,9 +238,9 @@ static int build(world *w, size_t n)
     isk_bounds_reflect(&w->floor, 0, 10, 0, 10, ISK_SIDE_ALL, 0, 0.5);
     for (int v = 0; v < NV; v++) {
         isk_pipeline *pl = &w->pl[v];
-        isk_pipeline_init(pl);
+        isk__pipeline_init(pl);
         if (v == V_FIRE) { /* what a fire scene compiles to (scene/effect_compile.c) */
-            isk_stage *d = isk_pipeline_add(pl, &isk_stage_drift_sway);
+            isk_stage *d = isk__pipeline_add(pl, &isk__stage_drift_sway);
             d->u.drift_sway.ay = 0.5; /* buoyancy */
             d->u.drift_sway.slowing = 0.5;
             d->u.drift_sway.order = ISK_DRIFT_THESIS;
@@ -251,7 +251,7 @@ static int build(world *w, size_t n)
             continue;
         }
         const int kept_start = v == V_START || v == V_COULOMB_WALLS; /* as effect_compile.c asks */
-        isk_stage *m = isk_pipeline_add(pl, &isk_stage_motion);
+        isk_stage *m = isk__pipeline_add(pl, &isk__stage_motion);
         m->u.motion.method = ISK_INTEGRATE_SEMI_EULER;
         m->u.motion.remember = kept_start;
         m->u.motion.forces = v == V_DRAG        ? &w->drag
@@ -260,7 +260,7 @@ static int build(world *w, size_t n)
                                                 : &w->f;
         if (v == V_MOTION || v == V_DRAG || v == V_COULOMB || v == V_COULOMB_T)
             continue;
-        isk_stage *st = isk_pipeline_add(pl, v == V_END ? &end_walls : &isk_stage_walls);
+        isk_stage *st = isk__pipeline_add(pl, v == V_END ? &end_walls : &isk__stage_walls);
         st->u.walls.b = v == V_REST || v == V_SLIDE || v == V_STILL ? &w->floor : &w->box;
         st->u.walls.drag = DRAG;
         st->u.walls.start = kept_start;
@@ -328,7 +328,7 @@ static int measure(size_t n, int steps, int rounds)
         fprintf(stderr, "bench_walls: out of memory for the STREAM arrays at %zu particles\n", n);
         streams_free(st);
         free(w.s);
-        isk_rest_free(&w.rest);
+        isk__rest_free(&w.rest);
         isk_particles_free(&w.p);
         return 1;
     }
@@ -346,18 +346,18 @@ static int measure(size_t n, int steps, int rounds)
             const int v = (k - (k > slot) + r) % NV; /* the rows in a different order every round */
             fill(&w, n, v == V_REST || v == V_SLIDE ? SLIDING : v == V_STILL ? STANDING : MOVING);
             isk_rest *rest = v == V_STILL || v == V_SLIDE ? &w.rest : NULL;
-            isk_rest_forget(&w.rest, 0);
+            isk__rest_forget(&w.rest, 0);
             const isk_run_context ctx = {NULL, rest};
             for (int s = 0; s < (rest ? 12 : 1); s++) /* warm; standing: every block comes to rest */
-                isk_pipeline_run(&w.pl[v], &w.p, 0, w.p.count, DT, w.s, &ctx);
+                isk__pipeline_run(&w.pl[v], &w.p, 0, w.p.count, DT, w.s, &ctx);
             double t0 = bench_now();
             for (int s = 0; s < steps; s++)
-                isk_pipeline_run(&w.pl[v], &w.p, 0, w.p.count, DT, w.s, &ctx);
+                isk__pipeline_run(&w.pl[v], &w.p, 0, w.p.count, DT, w.s, &ctx);
             t[v][r] = (bench_now() - t0) / ((double)steps * (double)n) * 1e9;
             if (v == V_STILL)
-                still = isk_rest_blocks(rest, w.p.count, ISK_REST_X | ISK_REST_Y);
+                still = isk__rest_blocks(rest, w.p.count, ISK_REST_X | ISK_REST_Y);
             if (v == V_SLIDE)
-                sliding = isk_rest_blocks(rest, w.p.count, ISK_REST_Y);
+                sliding = isk__rest_blocks(rest, w.p.count, ISK_REST_Y);
         }
     }
     printf("%zu particles, %d steps per timing, fastest (median) of %d rounds\n", n, steps, rounds);
@@ -381,7 +381,7 @@ static int measure(size_t n, int steps, int rounds)
            (w.p.count + ISK_SIM_BLOCK - 1) / ISK_SIM_BLOCK);
     streams_free(st);
     free(w.s);
-    isk_rest_free(&w.rest);
+    isk__rest_free(&w.rest);
     isk_particles_free(&w.p);
     return 0;
 }

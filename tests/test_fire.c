@@ -125,7 +125,7 @@ Test(fire, backdated_birth_worked_example)
     const double h[2] = {0.3, 0.45};
     const double want_age[2] = {0.1, 0.15};
     for (int k = 0; k < 2; k++) {
-        isk_pipeline_run(&g->pipeline, &g->store, 0, g->store.count, h[k], &fx->scratch, NULL);
+        isk__pipeline_run(&g->pipeline, &g->store, 0, g->store.count, h[k], &fx->scratch, NULL);
         size_t before = g->store.count;
         cr_assert_eq(fx_step_spawn.run(fx, g, t, h[k]), ISK_OK);
         allocations += g->store.count - before;

@@ -1,6 +1,6 @@
 /* SPDX-License-Identifier: MIT */
 /* The hit-time solver of the bounces at the time of impact (src/sim/flight.h's
- * isk_fl_root) against a long-double bisection of the same flight: on
+ * isk__fl_root) against a long-double bisection of the same flight: on
  * random drag flights of the sizes a step has, and on the flights where
  * Newton found the root exactly and the old loop then bisected away from
  * it for ~25 steps, the root it returns is within a few ulps of the
@@ -41,13 +41,13 @@ static double root_ref(double c0, double U, double a, double k, double t0, doubl
 
 static void check(double c0, double U, double a, double k, double t0, double t1, const char *what)
 {
-    const double t = isk_fl_root(c0, U, a, k, t0, t1, NULL), want = root_ref(c0, U, a, k, t0, t1);
+    const double t = isk__fl_root(c0, U, a, k, t0, t1, NULL), want = root_ref(c0, U, a, k, t0, t1);
     cr_assert(t >= t0 && t <= t1, "%s: %a outside [%a, %a]", what, t, t0, t1);
     isk_fl_cache cache;
     isk_fl_cache_clear(&cache); /* through the cache, seeded with an end's basis as bounds.c does: the same bits */
     double e, d1, d2;
     isk_fl_basis_cached(&cache, k, t1, &e, &d1, &d2);
-    const double tc = isk_fl_root(c0, U, a, k, t0, t1, &cache);
+    const double tc = isk__fl_root(c0, U, a, k, t0, t1, &cache);
     cr_assert(memcmp(&tc, &t, sizeof t) == 0, "%s: %a through the cache, %a without", what, tc, t);
     /* f's three terms round to ~1e-19 of a millisecond's flight: the root
      * is known to a few ulps of t, no better */
@@ -101,7 +101,7 @@ Test(flight_root, basis_against_long_double)
         const double u = (double)(s >> 11) / 9007199254740992.0;
         const double k = i % 2 ? 0.3 : 0.01 + 10 * u, t = i % 2 ? u * 0.25 : (1.0 / 60) * (0.01 + u);
         double e, d1, d2;
-        isk_fl_basis(k, t, &e, &d1, &d2);
+        isk__fl_basis(k, t, &e, &d1, &d2);
         const long double K = k, T = t, em = expm1l(-K * T), E = 1 + em, D1 = -em / K;
         long double phi2 = 0, term = 0.5L; /* (z - 1 + e^-z) / z^2 by its series: no cancellation */
         for (int j = 0; j < 40; j++) {

@@ -135,11 +135,11 @@ Test(force_laws, a_law_the_fused_pass_does_not_know_gives_the_reference_bytes)
                 isk_particles p = {0};
                 p.x = x, p.y = y, p.vx = vx, p.vy = vy, p.m = m, p.count = N;
                 isk_pipeline pl;
-                isk_pipeline_init(&pl);
-                isk_stage *st = isk_pipeline_add(&pl, &isk_stage_motion);
+                isk__pipeline_init(&pl);
+                isk_stage *st = isk__pipeline_add(&pl, &isk__stage_motion);
                 st->u.motion.method = methods[k];
                 st->u.motion.forces = &f;
-                isk_pipeline_run(&pl, &p, 0, N, h, &s, NULL);
+                isk__pipeline_run(&pl, &p, 0, N, h, &s, NULL);
                 const size_t b = N * sizeof(double);
                 cr_expect(!memcmp(x, rx, b) && !memcmp(y, ry, b) && !memcmp(vx, rvx, b) && !memcmp(vy, rvy, b),
                           "law '%s'%s, %s: not the general path's bytes", isk_force_law_name(cases[c].law),
@@ -154,7 +154,7 @@ Test(force_laws, a_law_the_fused_pass_does_not_know_gives_the_reference_bytes)
                     drag(&again, &again_pot);
                 }
                 int nonfinite = 0;
-                const int fused = isk_motion_fused(methods[k], &again, ISK_SIM_BLOCK, x, y, vx, vy, m, h, NULL,
+                const int fused = isk__motion_fused(methods[k], &again, ISK_SIM_BLOCK, x, y, vx, vy, m, h, NULL,
                                                    &nonfinite);
                 cr_expect_eq(fused, (laws & ~ISK__FUSED_LAWS) == 0, "law '%s': the fused pass %s it",
                              isk_force_law_name(cases[c].law), fused ? "ran" : "declined");

@@ -23,29 +23,29 @@ Test(fx_motion_field, radial_and_tangential_directions)
     f.cx = 1;
     f.cy = 1;
     double ax, ay;
-    isk_field_accel(&f, 3, 4, &ax, &ay); /* (2, 3) from the centre */
+    isk__field_accel(&f, 3, 4, &ax, &ay); /* (2, 3) from the centre */
     const double r = sqrt(13.0), ux = 2 / r, uy = 3 / r;
     cr_assert_float_eq(ax, 2 * ux - 1 * uy, 1e-15);
     cr_assert_float_eq(ay, 2 * uy + 1 * ux, 1e-15);
     /* counter-clockwise: on the +x side the tangential pull is +y */
     f.radial = 0;
-    isk_field_accel(&f, 5, 1, &ax, &ay);
+    isk__field_accel(&f, 5, 1, &ax, &ay);
     cr_assert(ax == 0 && ay == 1, "(%g, %g)", ax, ay);
     /* exactly on the emitter: no direction, zero, never NaN */
     f.radial = -7;
-    isk_field_accel(&f, 1, 1, &ax, &ay);
+    isk__field_accel(&f, 1, 1, &ax, &ay);
     cr_assert(ax == 0 && ay == 0, "(%g, %g)", ax, ay);
     /* far away: still a unit direction, no overflow */
     f.cx = f.cy = 0;
     f.tangential = 0;
-    isk_field_accel(&f, 1e200, 1e200, &ax, &ay);
+    isk__field_accel(&f, 1e200, 1e200, &ax, &ay);
     cr_assert_float_eq(ax, -7 / sqrt(2.0), 1e-12, "%g", ax);
     cr_assert(isfinite(ay));
 }
 
 static void turb_accel(const isk_field *f, double x, double y, double *ax, double *ay)
 {
-    isk_field_accel(f, x, y, ax, ay);
+    isk__field_accel(f, x, y, ax, ay);
 }
 
 /* div a = dax/dx + day/dy by central differences: zero up to the
@@ -54,7 +54,7 @@ static void turb_accel(const isk_field *f, double x, double y, double *ax, doubl
 Test(fx_motion_field, turbulence_is_divergence_free)
 {
     isk_field f = {0};
-    f.turb[f.nturb++] = isk_field_turbulence(3.0, 1.7, 0.4, isk_noise_key(42, 0));
+    f.turb[f.nturb++] = isk__field_turbulence(3.0, 1.7, 0.4, isk__noise_key(42, 0));
     f.t = 2.25;
     isk_rng rng;
     isk_rng_seed(&rng, 9);
@@ -79,18 +79,18 @@ Test(fx_motion_field, turbulence_is_divergence_free)
 Test(fx_motion_field, turbulence_is_seeded_and_deterministic)
 {
     isk_field a = {0}, b = {0}, c = {0};
-    a.turb[a.nturb++] = isk_field_turbulence(1, 1, 1, isk_noise_key(7, 0));
-    b.turb[b.nturb++] = isk_field_turbulence(1, 1, 1, isk_noise_key(7, 0));
-    c.turb[c.nturb++] = isk_field_turbulence(1, 1, 1, isk_noise_key(7, 1)); /* another force */
+    a.turb[a.nturb++] = isk__field_turbulence(1, 1, 1, isk__noise_key(7, 0));
+    b.turb[b.nturb++] = isk__field_turbulence(1, 1, 1, isk__noise_key(7, 0));
+    c.turb[c.nturb++] = isk__field_turbulence(1, 1, 1, isk__noise_key(7, 1)); /* another force */
     int differ = 0;
     double sum = 0;
     for (int i = 0; i < 400; i++) {
         double x = 0.37 * i - 50, y = 0.11 * i;
         a.t = b.t = c.t = 0.01 * i;
         double ax, ay, bx, by, cx, cy;
-        isk_field_accel(&a, x, y, &ax, &ay);
-        isk_field_accel(&b, x, y, &bx, &by);
-        isk_field_accel(&c, x, y, &cx, &cy);
+        isk__field_accel(&a, x, y, &ax, &ay);
+        isk__field_accel(&b, x, y, &bx, &by);
+        isk__field_accel(&c, x, y, &cx, &cy);
         cr_assert(ax == bx && ay == by);
         differ += ax != cx || ay != cy;
         sum += hypot(ax, ay);
@@ -98,10 +98,10 @@ Test(fx_motion_field, turbulence_is_seeded_and_deterministic)
     }
     cr_assert_gt(differ, 390, "another index gives another field");
     cr_assert(sum / 400 > 0.2 && sum / 400 < 3, "mean |a| %g is of the order of strength", sum / 400);
-    cr_assert_neq(isk_noise_key(7, 0), isk_noise_key(8, 0));
+    cr_assert_neq(isk__noise_key(7, 0), isk__noise_key(8, 0));
     /* huge and non-finite noise coordinates are clamped, never converted */
     double du, dv;
-    double n = isk_noise3(1, 1e300, -1e300, NAN, &du, &dv);
+    double n = isk__noise3(1, 1e300, -1e300, NAN, &du, &dv);
     cr_assert(isfinite(n) && isfinite(du) && isfinite(dv));
 }
 
@@ -109,15 +109,15 @@ Test(fx_motion_field, turbulence_is_seeded_and_deterministic)
 Test(fx_motion_field, turbulence_evolves_with_speed)
 {
     isk_field f = {0};
-    f.turb[f.nturb++] = isk_field_turbulence(1, 2, 0, isk_noise_key(1, 0));
+    f.turb[f.nturb++] = isk__field_turbulence(1, 2, 0, isk__noise_key(1, 0));
     double a0, b0, a1, b1;
     f.t = 0;
-    isk_field_accel(&f, 0.3, 0.7, &a0, &b0);
+    isk__field_accel(&f, 0.3, 0.7, &a0, &b0);
     f.t = 5;
-    isk_field_accel(&f, 0.3, 0.7, &a1, &b1);
+    isk__field_accel(&f, 0.3, 0.7, &a1, &b1);
     cr_assert(a0 == a1 && b0 == b1);
     f.turb[0].speed = 0.5;
-    isk_field_accel(&f, 0.3, 0.7, &a1, &b1);
+    isk__field_accel(&f, 0.3, 0.7, &a1, &b1);
     cr_assert(a0 != a1 || b0 != b1);
 }
 

@@ -11,7 +11,7 @@
  * What the owner must say: a particle written and forgotten gives the same
  * bytes, written and not forgotten it stays where it rested (so the stages
  * really were skipped, and forgetting is what keeps the bytes); a new step
- * forgets by itself.  Which lists may rest (isk_pipeline_rest_prefix).
+ * forgets by itself.  Which lists may rest (isk__pipeline_rest_prefix).
  *
  * The effect: a settling layer beside a stream of mortal particles that
  * die on the floor (ordered culls) and a live wind that lifts
@@ -49,16 +49,16 @@ static void lists_init(lists *l)
     l->f.gravity = 9.81;
     l->f.drag = 0.3;
     cr_assert_eq(isk_bounds_reflect(&l->box, -5, 5, 0, 10, ISK_SIDE_ALL, 0.0, 0.5), ISK_OK);
-    isk_pipeline_init(&l->pl);
-    isk_stage *s = isk_pipeline_add(&l->pl, &isk_stage_motion);
+    isk__pipeline_init(&l->pl);
+    isk_stage *s = isk__pipeline_add(&l->pl, &isk__stage_motion);
     s->u.motion.method = ISK_INTEGRATE_SEMI_EULER;
     s->u.motion.forces = &l->f;
-    s = isk_pipeline_add(&l->pl, &isk_stage_walls);
+    s = isk__pipeline_add(&l->pl, &isk__stage_walls);
     s->u.walls.b = &l->box;
     s->u.walls.drag = l->f.drag;
     s->u.walls.ay = -l->f.gravity;
     s->u.walls.offset = isk_integrator_velocity_offset(ISK_INTEGRATE_SEMI_EULER);
-    isk_pipeline_add(&l->pl, &isk_stage_age);
+    isk__pipeline_add(&l->pl, &isk__stage_age);
 }
 
 static void store_fill(isk_particles *p)
@@ -93,7 +93,7 @@ static void steps(lists *l, isk_particles *p, isk_rest *rest, isk_scratch *s, is
 {
     const isk_run_context ctx = {w, rest};
     for (int k = 0; k < n; k++)
-        isk_pipeline_run(&l->pl, p, 0, p->count, h, s, &ctx);
+        isk__pipeline_run(&l->pl, p, 0, p->count, h, s, &ctx);
 }
 
 Test(rest, settled_blocks_rest_with_the_same_bits)
@@ -105,21 +105,21 @@ Test(rest, settled_blocks_rest_with_the_same_bits)
     store_fill(&a);
     store_fill(&b);
     isk_rest r;
-    isk_rest_init(&r);
+    isk__rest_init(&r);
     isk_scratch *s = scratch();
-    cr_assert_eq(isk_pipeline_rest_prefix(&l.pl), 2);
+    cr_assert_eq(isk__pipeline_rest_prefix(&l.pl), 2);
     for (int round = 0; round < 40; round++) { /* 4 s of 1/600 */
         steps(&l, &a, &r, s, NULL, 60, H);
         steps(&l, &b, NULL, s, NULL, 60, H);
         cr_assert(same_store(&a, &b), "round %d", round);
     }
-    size_t rested = isk_rest_blocks(&r, a.count, BOTH);
+    size_t rested = isk__rest_blocks(&r, a.count, BOTH);
     cr_assert_eq(rested, SETTLING / ISK_SIM_BLOCK, "%zu blocks at rest: the settled ones, not the sliding ones",
                  rested);
-    size_t y_rests = isk_rest_blocks(&r, a.count, ISK_REST_Y);
+    size_t y_rests = isk__rest_blocks(&r, a.count, ISK_REST_Y);
     cr_assert_eq(y_rests, N / ISK_SIM_BLOCK, "%zu blocks' y at rest: the sliding ones' too", y_rests);
-    cr_assert_eq(isk_rest_blocks(&r, a.count, ISK_REST_X), SETTLING / ISK_SIM_BLOCK, "x rests where it stands");
-    isk_rest_free(&r);
+    cr_assert_eq(isk__rest_blocks(&r, a.count, ISK_REST_X), SETTLING / ISK_SIM_BLOCK, "x rests where it stands");
+    isk__rest_free(&r);
     isk_particles_free(&a);
     isk_particles_free(&b);
     free(s);
@@ -142,14 +142,14 @@ Test(rest, every_integrator_per_axis)
         store_fill(&a);
         store_fill(&b);
         isk_rest r;
-        isk_rest_init(&r);
+        isk__rest_init(&r);
         for (int round = 0; round < 20; round++) {
             steps(&l, &a, &r, s, NULL, 120, H);
             steps(&l, &b, NULL, s, NULL, 120, H);
             cr_assert(same_store(&a, &b), "%s, round %d", isk_integrator_name((isk_integrator)m), round);
         }
-        rested_somewhere += isk_rest_blocks(&r, a.count, ISK_REST_Y) > 0;
-        isk_rest_free(&r);
+        rested_somewhere += isk__rest_blocks(&r, a.count, ISK_REST_Y) > 0;
+        isk__rest_free(&r);
         isk_particles_free(&a);
         isk_particles_free(&b);
     }
@@ -167,19 +167,19 @@ Test(rest, written_particles_must_be_forgotten)
     store_fill(&b);
     store_fill(&c);
     isk_rest ra, rc;
-    isk_rest_init(&ra);
-    isk_rest_init(&rc);
+    isk__rest_init(&ra);
+    isk__rest_init(&rc);
     isk_scratch *s = scratch();
     steps(&l, &a, &ra, s, NULL, 2400, H);
     steps(&l, &b, NULL, s, NULL, 2400, H);
     steps(&l, &c, &rc, s, NULL, 2400, H);
-    cr_assert_gt(isk_rest_blocks(&ra, a.count, BOTH), 0);
+    cr_assert_gt(isk__rest_blocks(&ra, a.count, BOTH), 0);
     const size_t k = 3 * ISK_SIM_BLOCK + 5; /* in a block at rest: lifted 2 up */
     a.y[k] += 2;
     b.y[k] += 2;
     c.y[k] += 2;
     const double lifted = c.y[k];
-    isk_rest_forget(&ra, k);
+    isk__rest_forget(&ra, k);
     steps(&l, &a, &ra, s, NULL, 30, H);
     steps(&l, &b, NULL, s, NULL, 30, H);
     steps(&l, &c, &rc, s, NULL, 30, H);
@@ -191,8 +191,8 @@ Test(rest, written_particles_must_be_forgotten)
     steps(&l, &a, &ra, s, NULL, 900, H / 2);
     steps(&l, &b, NULL, s, NULL, 900, H / 2);
     cr_assert(same_store(&a, &b), "half the step: the same bytes");
-    isk_rest_free(&ra);
-    isk_rest_free(&rc);
+    isk__rest_free(&ra);
+    isk__rest_free(&rc);
     isk_particles_free(&a);
     isk_particles_free(&b);
     isk_particles_free(&c);
@@ -210,18 +210,18 @@ Test(rest, threads_give_the_same_bits)
         store_fill(&a);
         store_fill(&ref);
         isk_workers pool;
-        isk_workers_init(&pool);
-        cr_assert_eq(isk_workers_start(&pool, threads), ISK_OK);
+        isk__workers_init(&pool);
+        cr_assert_eq(isk__workers_start(&pool, threads), ISK_OK);
         isk_rest r;
-        isk_rest_init(&r);
+        isk__rest_init(&r);
         for (int round = 0; round < 30; round++) {
             steps(&l, &a, &r, s, &pool, 80, H);
             steps(&l, &ref, NULL, s, NULL, 80, H);
             cr_assert(same_store(&a, &ref), "%d threads, round %d", threads, round);
         }
-        cr_assert_eq(isk_rest_blocks(&r, a.count, BOTH), SETTLING / ISK_SIM_BLOCK);
-        isk_rest_free(&r);
-        isk_workers_free(&pool);
+        cr_assert_eq(isk__rest_blocks(&r, a.count, BOTH), SETTLING / ISK_SIM_BLOCK);
+        isk__rest_free(&r);
+        isk__workers_free(&pool);
         isk_particles_free(&a);
         isk_particles_free(&ref);
     }
@@ -232,37 +232,37 @@ Test(rest, which_lists_may_rest)
 {
     lists l;
     lists_init(&l);
-    cr_assert_eq(isk_pipeline_rest_prefix(&l.pl), 2, "integrate, walls skipped; age beside");
+    cr_assert_eq(isk__pipeline_rest_prefix(&l.pl), 2, "integrate, walls skipped; age beside");
     l.pl.stage[1].u.walls.hit = 1;
-    cr_assert_eq(isk_pipeline_rest_prefix(&l.pl), 0, "counting bounces");
+    cr_assert_eq(isk__pipeline_rest_prefix(&l.pl), 0, "counting bounces");
     l.pl.stage[1].u.walls.hit = 0;
     isk_potential pot;
     isk_potential_init(&pot, 1.0, isk_vec2_make(0, 5), -2.0);
     l.f.pot = &pot;
     l.f.npot = 1;
-    cr_assert_eq(isk_pipeline_rest_prefix(&l.pl), 0, "a potential");
+    cr_assert_eq(isk__pipeline_rest_prefix(&l.pl), 0, "a potential");
     l.f.npot = 0;
-    isk_pipeline_add(&l.pl, &isk_stage_deflect);
-    cr_assert_eq(isk_pipeline_rest_prefix(&l.pl), 0, "a deflector after the age");
+    isk__pipeline_add(&l.pl, &isk__stage_deflect);
+    cr_assert_eq(isk__pipeline_rest_prefix(&l.pl), 0, "a deflector after the age");
 
     isk_pipeline pl;
-    isk_pipeline_init(&pl);
-    isk_pipeline_add(&pl, &isk_stage_remember);
-    isk_pipeline_add(&pl, &isk_stage_drift);
-    isk_pipeline_add(&pl, &isk_stage_slow);
-    isk_pipeline_add(&pl, &isk_stage_spin);
-    isk_pipeline_add(&pl, &isk_stage_age);
-    cr_assert_eq(isk_pipeline_rest_prefix(&pl), 3);
-    isk_pipeline_init(&pl);
-    isk_pipeline_add(&pl, &isk_stage_field);
-    isk_pipeline_add(&pl, &isk_stage_drift);
-    cr_assert_eq(isk_pipeline_rest_prefix(&pl), 0, "a field has a clock");
-    isk_pipeline_init(&pl);
-    isk_pipeline_add(&pl, &isk_stage_drift_sway);
-    cr_assert_eq(isk_pipeline_rest_prefix(&pl), 0, "the sway's phase moves on");
-    isk_pipeline_init(&pl);
-    isk_pipeline_add(&pl, &isk_stage_age);
-    cr_assert_eq(isk_pipeline_rest_prefix(&pl), 0, "nothing to skip");
+    isk__pipeline_init(&pl);
+    isk__pipeline_add(&pl, &isk__stage_remember);
+    isk__pipeline_add(&pl, &isk__stage_drift);
+    isk__pipeline_add(&pl, &isk__stage_slow);
+    isk__pipeline_add(&pl, &isk__stage_spin);
+    isk__pipeline_add(&pl, &isk__stage_age);
+    cr_assert_eq(isk__pipeline_rest_prefix(&pl), 3);
+    isk__pipeline_init(&pl);
+    isk__pipeline_add(&pl, &isk__stage_field);
+    isk__pipeline_add(&pl, &isk__stage_drift);
+    cr_assert_eq(isk__pipeline_rest_prefix(&pl), 0, "a field has a clock");
+    isk__pipeline_init(&pl);
+    isk__pipeline_add(&pl, &isk__stage_drift_sway);
+    cr_assert_eq(isk__pipeline_rest_prefix(&pl), 0, "the sway's phase moves on");
+    isk__pipeline_init(&pl);
+    isk__pipeline_add(&pl, &isk__stage_age);
+    cr_assert_eq(isk__pipeline_rest_prefix(&pl), 0, "nothing to skip");
 }
 
 /* ---- the effect --------------------------------------------------------------- */
@@ -313,7 +313,7 @@ Test(rest, effect_same_bytes_on_every_thread_count)
             cr_assert_eq(isk_effect_step(a), ISK_OK);
             cr_assert_eq(isk_effect_step(b), ISK_OK);
             for (int gi = 1; gi < 3; gi++) {
-                size_t r = isk_rest_blocks(&a->groups[gi].rest, a->groups[gi].store.count, BOTH);
+                size_t r = isk__rest_blocks(&a->groups[gi].rest, a->groups[gi].store.count, BOTH);
                 most[gi] = r > most[gi] ? r : most[gi];
             }
             if (frame % 50 == 0) {
@@ -321,9 +321,9 @@ Test(rest, effect_same_bytes_on_every_thread_count)
                 render_both(a, b, &ca, &cb, frame, threads);
             }
             if (frame == 510)
-                cr_assert_eq(isk_rest_blocks(&a->groups[0].rest, a->groups[0].store.count, BOTH), 0, "lifted: none rests");
+                cr_assert_eq(isk__rest_blocks(&a->groups[0].rest, a->groups[0].store.count, BOTH), 0, "lifted: none rests");
             if (frame == 500) { /* settled: a wind lifts the layer off the floor (to rest on the ceiling) */
-                rested = isk_rest_blocks(&a->groups[0].rest, a->groups[0].store.count, BOTH);
+                rested = isk__rest_blocks(&a->groups[0].rest, a->groups[0].store.count, BOTH);
                 isk_error err;
                 cr_assert_eq(isk_effect_set(a, "force lift", "acceleration", "0, 20", &err), ISK_OK, "%s",
                              err.message);
@@ -358,7 +358,7 @@ Test(rest, a_click_kicks_the_particles_at_rest)
         cr_assert_eq(isk_effect_step(a), ISK_OK);
         cr_assert_eq(isk_effect_step(b), ISK_OK);
         if (frame == 300) {
-            cr_assert_gt(isk_rest_blocks(&a->groups[0].rest, a->groups[0].store.count, BOTH), 10);
+            cr_assert_gt(isk__rest_blocks(&a->groups[0].rest, a->groups[0].store.count, BOTH), 10);
             cr_assert_eq(isk_effect_click(a, 5, 1), ISK_OK);
             cr_assert_eq(isk_effect_click(b, 5, 1), ISK_OK);
         }

@@ -71,7 +71,7 @@ static int end_state(uint64_t *s, double wall, double a, double delta, double k,
 Test(rest_screen, builds_agree_and_their_rests_are_the_walls_own)
 {
     static const char *const name[3] = {"portable", "avx2", "avx512"};
-    isk_rest_screen_fn all[3] = {isk_rest_screen_portable, isk_rest_screen_avx2(), isk_rest_screen_avx512()}, build[3];
+    isk_rest_screen_fn all[3] = {isk__rest_screen_portable, isk__rest_screen_avx2(), isk__rest_screen_avx512()}, build[3];
     int nb = 0;
     const char *bname[3];
     for (int b = 0; b < 3; b++)

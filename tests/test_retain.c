@@ -177,14 +177,14 @@ Test(retain, groups_at_rest_give_the_bytes_of_full_draws)
                 for (isk_effect *e = a; e; e = e == a ? b : NULL) { /* to the floor's bare left end */
                     const size_t last = e->groups[0].store.count - 1;
                     e->groups[0].store.x[last] = -3.98;
-                    isk_rest_forget(&e->groups[0].rest, last);
+                    isk__rest_forget(&e->groups[0].rest, last);
                 }
             }
             if (frame == 440)
-                cr_assert(isk_rest_all(&a->groups[0].rest, a->groups[0].store.count), "at rest again");
+                cr_assert(isk__rest_all(&a->groups[0].rest, a->groups[0].store.count), "at rest again");
             if (frame == 400) {
-                cr_assert(isk_rest_all(&a->groups[0].rest, a->groups[0].store.count), "the layer rests");
-                cr_assert(isk_rest_all(&a->groups[1].rest, a->groups[1].store.count), "the glow rests");
+                cr_assert(isk__rest_all(&a->groups[0].rest, a->groups[0].store.count), "the layer rests");
+                cr_assert(isk__rest_all(&a->groups[1].rest, a->groups[1].store.count), "the glow rests");
                 cr_assert_gt(replays(a), 40, "%d threads: %ld replays", threads, replays(a));
                 cr_assert_eq(records(a), 2, "one record each since they rest: %ld", records(a));
                 set_both(a, b, "view", "xmin", "-4.1"); /* the view moves: recorded again */
@@ -209,7 +209,7 @@ Test(retain, groups_at_rest_give_the_bytes_of_full_draws)
                 set_both(a, b, "force lift", "acceleration", "0, 25"); /* off the floor */
             }
             if (frame == 500)
-                cr_assert(!isk_rest_all(&a->groups[0].rest, a->groups[0].store.count), "lifted, it moves");
+                cr_assert(!isk__rest_all(&a->groups[0].rest, a->groups[0].store.count), "lifted, it moves");
         }
         cr_assert_eq(replays_moving, 0, "nothing rests while it falls");
         cr_assert_gt(records(a), records_before_colour + 2, "at rest on the ceiling: recorded again");

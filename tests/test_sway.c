@@ -179,7 +179,7 @@ static void compare(const isk_sway *w, const state *in, size_t at, size_t n, con
     ref_sway(w, n, a.x + at, a.vx + at, a.amp + at, a.ph + at, a.om + at, a.off + at);
     for (int avx2 = 0; avx2 <= isk__have_avx2(); avx2++) {
         b = *in;
-        isk_sway_build(avx2, w, n, b.x + at, b.vx + at, b.amp + at, b.ph + at, b.om + at, b.off + at);
+        isk__sway_build(avx2, w, n, b.x + at, b.vx + at, b.amp + at, b.ph + at, b.om + at, b.off + at);
         compared_avx2 += avx2;
         const double *const ra[5] = {a.x, a.vx, a.amp, a.ph, a.off}, *const ga[5] = {b.x, b.vx, b.amp, b.ph, b.off};
         static const char *const col[5] = {"x", "vx", "amp", "phase", "offset"};
@@ -337,7 +337,7 @@ static void run_stages(const isk_pipeline *pl, const state *in, size_t n, double
     memcpy(p.osc_phase, in->ph, n * sizeof *p.osc_phase);
     memcpy(p.osc_omega, in->om, n * sizeof *p.osc_omega);
     memcpy(p.osc_offset, in->off, n * sizeof *p.osc_offset);
-    isk_pipeline_run(pl, &p, 0, n, h, &scratch, NULL);
+    isk__pipeline_run(pl, &p, 0, n, h, &scratch, NULL);
     *out = *in;
     memcpy(out->x, p.x, n * sizeof *p.x);
     memcpy(out->y, p.y, n * sizeof *p.y);
@@ -361,7 +361,7 @@ static void same_state(const state *got, const state *want, size_t n, const stat
                                n, col[c], i, ga[c][i], wa[c][i], in->vx[i], in->ph[i], in->amp[i]);
 }
 
-/* One case: the reference, then isk_sway_drift_build (AVX2), the fused
+/* One case: the reference, then isk__sway_drift_build (AVX2), the fused
  * stage and the unfused stages, on the first n particles. */
 static void compare_drift(const drift_case *dc, const isk_sinlut *l, int mode, int faithful, double decay_rate,
                           double h, const state *in, size_t n, const char *what)
@@ -374,7 +374,7 @@ static void compare_drift(const drift_case *dc, const isk_sinlut *l, int mode, i
 
     const isk_sway_drift d = {dc->ax, dc->ay, factor(dc->slowing, h), (isk_drift_order)dc->order};
     got = *in;
-    const int ran = isk_sway_drift_build(1, &d, &w, n, got.x, got.y, got.vx, got.vy, got.amp, got.ph, got.om, got.off);
+    const int ran = isk__sway_drift_build(1, &d, &w, n, got.x, got.y, got.vx, got.vy, got.amp, got.ph, got.om, got.off);
     cr_assert_eq(ran, isk__have_avx2() && mode != ISK_SINLUT_LIBM, "%s: ran %d", what, ran);
     if (ran) {
         same_state(&got, &want, N + PAD, in, what); /* nothing beside the n either */
@@ -383,13 +383,13 @@ static void compare_drift(const drift_case *dc, const isk_sinlut *l, int mode, i
         cr_assert(!memcmp(&got, in, sizeof got), "%s: declined but changed the columns", what);
     }
     got = *in;
-    cr_assert_eq(isk_sway_drift_build(0, &d, &w, n, got.x, got.y, got.vx, got.vy, got.amp, got.ph, got.om, got.off),
+    cr_assert_eq(isk__sway_drift_build(0, &d, &w, n, got.x, got.y, got.vx, got.vy, got.amp, got.ph, got.om, got.off),
                  0);
     cr_assert(!memcmp(&got, in, sizeof got), "%s: the portable build changed the columns", what);
 
     isk_pipeline fused, apart;
-    isk_pipeline_init(&fused);
-    isk_stage *st = isk_pipeline_add(&fused, &isk_stage_drift_sway);
+    isk__pipeline_init(&fused);
+    isk_stage *st = isk__pipeline_add(&fused, &isk__stage_drift_sway);
     st->u.drift_sway.ax = dc->ax;
     st->u.drift_sway.ay = dc->ay;
     st->u.drift_sway.slowing = dc->slowing;
@@ -399,17 +399,17 @@ static void compare_drift(const drift_case *dc, const isk_sinlut *l, int mode, i
     run_stages(&fused, in, n, h, &got);
     same_state(&got, &want, n, in, what);
 
-    isk_pipeline_init(&apart); /* the stages it stands for */
+    isk__pipeline_init(&apart); /* the stages it stands for */
     if (dc->order == ISK_DRIFT_THESIS) {
-        st = isk_pipeline_add(&apart, &isk_stage_drift_slow);
+        st = isk__pipeline_add(&apart, &isk__stage_drift_slow);
         st->u.drift_slow.ax = dc->ax, st->u.drift_slow.ay = dc->ay, st->u.drift_slow.slowing = dc->slowing;
     } else {
-        st = isk_pipeline_add(&apart, &isk_stage_drift);
+        st = isk__pipeline_add(&apart, &isk__stage_drift);
         st->u.drift.ax = dc->ax, st->u.drift.ay = dc->ay;
         if (dc->order == ISK_DRIFT_SOUND)
-            isk_pipeline_add(&apart, &isk_stage_slow)->u.slow.slowing = dc->slowing;
+            isk__pipeline_add(&apart, &isk__stage_slow)->u.slow.slowing = dc->slowing;
     }
-    isk_pipeline_add(&apart, &isk_stage_oscillate)->u.osc = osc;
+    isk__pipeline_add(&apart, &isk__stage_oscillate)->u.osc = osc;
     run_stages(&apart, in, n, h, &got);
     same_state(&got, &want, n, in, what);
 }

@@ -50,7 +50,7 @@ Test(update_share, a_group_at_rest_is_cheap)
     for (int f = 0; f < 1200; f++)
         cr_assert_eq(isk_effect_step(fx), ISK_OK);
     const fx_group *g = &fx->groups[0];
-    cr_assert(isk_rest_all(&g->rest, g->store.count), "the layer has not come to rest");
+    cr_assert(isk__rest_all(&g->rest, g->store.count), "the layer has not come to rest");
     const long before = g->shared_updates;
     for (int f = 0; f < 10; f++)
         cr_assert_eq(isk_effect_step(fx), ISK_OK);

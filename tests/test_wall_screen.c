@@ -107,7 +107,7 @@ Test(wall_screen, portable_gives_the_walls_own_masks_for_finite_values)
             for (size_t n = 0; n <= N; n += n < 40 ? 1 : 37) {
                 isk_wall_outside got, want;
                 memset(&got, 0xa5, sizeof got);
-                const uint64_t fg = isk_wall_screen_portable(n, x, y, &BOXES[b], &got);
+                const uint64_t fg = isk__wall_screen_portable(n, x, y, &BOXES[b], &got);
                 const uint64_t fw = reference(n, x, y, &BOXES[b], &want);
                 cr_assert_eq(fg, fw, "box %zu seed %llu n %zu: flags %llx, want %llx", b, (unsigned long long)seed, n,
                              (unsigned long long)fg, (unsigned long long)fw);
@@ -127,12 +127,12 @@ Test(wall_screen, one_outlier_flags_its_own_group_and_bit_only)
     for (size_t i = 0; i < N; i++)
         x[i] = y[i] = 5.0;
     x[0] = 0.0, y[N - 1] = 10.0, x[1] = -0.0; /* on the walls: inside (-0 too) */
-    cr_assert_eq(isk_wall_screen_portable(N, x, y, w, &out), 0);
+    cr_assert_eq(isk__wall_screen_portable(N, x, y, w, &out), 0);
     for (size_t i = 2; i < N; i += 13) {
         double *axis = i % 2 ? y : x, keep = axis[i];
         axis[i] = i % 4 < 2 ? nextafter(0.0, -1.0) : nextafter(10.0, 11.0);
         const size_t g = i / ISK_WALL_SCREEN;
-        cr_assert_eq(isk_wall_screen_portable(N, x, y, w, &out), (uint64_t)1 << g, "particle %zu", i);
+        cr_assert_eq(isk__wall_screen_portable(N, x, y, w, &out), (uint64_t)1 << g, "particle %zu", i);
         const uint16_t bit = (uint16_t)(1u << (i % ISK_WALL_SCREEN));
         cr_assert(out.x[g] == (i % 2 ? 0 : bit) && out.y[g] == (i % 2 ? bit : 0), "particle %zu: masks %x %x", i,
                   out.x[g], out.y[g]);
@@ -142,12 +142,12 @@ Test(wall_screen, one_outlier_flags_its_own_group_and_bit_only)
 
 Test(wall_screen, avx2_and_avx512_give_the_portable_flags_and_masks_for_every_input)
 {
-    const isk_wall_screen_fn avx2 = isk_wall_screen_avx2(), avx512 = isk_wall_screen_avx512();
+    const isk_wall_screen_fn avx2 = isk__wall_screen_avx2(), avx512 = isk__wall_screen_avx512();
     if (!avx2) {
         cr_log_warn("no AVX2 on this CPU or in this build: only the portable screen is checked");
         return;
     }
-    cr_assert_eq(isk_wall_screen_pick(), avx512 ? avx512 : avx2, "the pick is the widest build");
+    cr_assert_eq(isk__wall_screen_pick(), avx512 ? avx512 : avx2, "the pick is the widest build");
     const isk_wall_screen_fn builds[2] = {avx2, avx512};
     static double x[N], y[N];
     for (int k = 0; k < 2 && builds[k]; k++)
@@ -158,7 +158,7 @@ Test(wall_screen, avx2_and_avx512_give_the_portable_flags_and_masks_for_every_in
                     isk_wall_outside got, want;
                     memset(&got, 0xa5, sizeof got);
                     memset(&want, 0x5a, sizeof want);
-                    cr_assert_eq(builds[k](n, x, y, &BOXES[b], &got), isk_wall_screen_portable(n, x, y, &BOXES[b], &want),
+                    cr_assert_eq(builds[k](n, x, y, &BOXES[b], &got), isk__wall_screen_portable(n, x, y, &BOXES[b], &want),
                                  "%s: box %zu seed %llu n %zu", k ? "avx512" : "avx2", b, (unsigned long long)seed,
                                  n);
                     for (size_t g = 0; g < groups_of(n); g++)

@@ -6,7 +6,7 @@
  * sooner; the tests compare the two.  Each has one switch here, and the
  * code tests it where the fast path leaves the plain one (a seam):
  *
- *     if (ISK__FAST_FUSED && isk_motion_fused(...)) return;   // the fast path
+ *     if (ISK__FAST_FUSED && isk__motion_fused(...)) return;   // the fast path
  *     ...                                                      // the reference
  *
  * `make test REFERENCE=1` builds with ISKRA_REFERENCE defined: every switch

@@ -16,7 +16,7 @@
 static void free_group(fx_group *g)
 {
     isk_particles_free(&g->store);
-    isk_rest_free(&g->rest);
+    isk__rest_free(&g->rest);
     fx_retain_clear(&g->retained);
     free(g->pick);
     free(g->defl);
@@ -157,7 +157,7 @@ isk_status isk_effect_create(isk_effect **out, const isk_effect_def *def, isk_er
     isk_effect *e = calloc(1, sizeof *e);
     if (!e)
         return isk_error_set(err, ISK_ERR_NOMEM, "effect: out of memory");
-    isk_workers_init(&e->workers);
+    isk__workers_init(&e->workers);
     e->band_min_work = FX_BAND_MIN_WORK;
     e->update_min_work = FX_UPDATE_MIN_WORK;
     s = fx_def_copy(&e->def, def);
@@ -211,7 +211,7 @@ void isk_effect_destroy(isk_effect *e)
     isk_sprite_cache_destroy(e->sprites);
     isk_texture_cache_destroy(e->textures);
     fx_bins_free(&e->bins);
-    isk_workers_free(&e->workers);
+    isk__workers_free(&e->workers);
     isk_effect_def_free(&e->def);
     free(e);
 }
@@ -224,12 +224,12 @@ static int default_threads(void)
     long n = v ? strtol(v, &end, 10) : 0;
     if (v && *v && end && !*end && n >= 1 && n <= ISK_TASKS_MAX_WORKERS)
         return (int)n;
-    return isk_pool_online_cores();
+    return isk__pool_online_cores();
 }
 
 int isk_effect_threads(const isk_effect *e)
 {
-    return e ? isk_workers_count(&e->workers) : 1;
+    return e ? isk__workers_count(&e->workers) : 1;
 }
 
 isk_status isk_effect_set_threads(isk_effect *e, int threads)
@@ -239,9 +239,9 @@ isk_status isk_effect_set_threads(isk_effect *e, int threads)
     if (threads < 0 || threads > ISK_TASKS_MAX_WORKERS)
         return ISK_ERR_RANGE;
     int n = threads ? threads : default_threads();
-    if (e->workers.pool && isk_workers_count(&e->workers) == n)
+    if (e->workers.pool && isk__workers_count(&e->workers) == n)
         return ISK_OK;
-    return isk_workers_start(&e->workers, n);
+    return isk__workers_start(&e->workers, n);
 }
 
 isk_status isk_effect_set_tasks(isk_effect *e, const isk_tasks *tasks)
@@ -249,8 +249,8 @@ isk_status isk_effect_set_tasks(isk_effect *e, const isk_tasks *tasks)
     if (!e)
         return ISK_ERR_NULL;
     if (!tasks)
-        return isk_workers_start(&e->workers, default_threads());
-    return isk_workers_use(&e->workers, tasks);
+        return isk__workers_start(&e->workers, default_threads());
+    return isk__workers_use(&e->workers, tasks);
 }
 
 isk_status isk_effect_reset(isk_effect *e)

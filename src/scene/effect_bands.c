@@ -340,7 +340,7 @@ static int sort_into_bands(band_job *j)
     if (ok) {
         for (int b = 0; b < j->nb; b++)
             memset(j->band_of_row + j->band[b].r0, b, (size_t)(j->band[b].r1 - j->band[b].r0));
-        isk_workers_for(&j->e->workers, nb, 1, bin_share, j);
+        isk__workers_for(&j->e->workers, nb, 1, bin_share, j);
         /* band b's list: share 0's particles, then share 1's, ...: index order */
         size_t total = 0;
         for (size_t b = 0; b < nb; b++) {
@@ -358,7 +358,7 @@ static int sort_into_bands(band_job *j)
                 j->band[b].list = bins->idx + start;
                 start += j->band[b].nlist;
             }
-            isk_workers_for(&j->e->workers, nb, 1, fill_share, j);
+            isk__workers_for(&j->e->workers, nb, 1, fill_share, j);
         }
     }
     free(j->band_of_row);
@@ -492,7 +492,7 @@ static isk_status replay_bands(isk_effect *e, isk_canvas *c, fx_group *g, const 
         j->band[k] = retained_band(whole, rt, k);
     if (rt->columns)
         give_copies(j);
-    isk_workers_for(&e->workers, (size_t)j->nb, 2, replay_band, j);
+    isk__workers_for(&e->workers, (size_t)j->nb, 2, replay_band, j);
     return finish(j);
 }
 
@@ -504,7 +504,7 @@ isk_status fx_draw_bands(isk_effect *e, isk_canvas *c, fx_group *g, const fx_dra
             isk_canvas_fill(c, *fill);
         return k->draw(e, c, g, whole);
     }
-    const int threads = isk_workers_count(&e->workers);
+    const int threads = isk__workers_count(&e->workers);
     fx_retained *rt = ISK__FAST_RETAIN && (k->may & FX_MAY_RETAIN) ? fx_retain_begin(e, c, g, threads) : NULL;
     if (rt && rt->nb > 0) {
         rt->replays++;
@@ -541,8 +541,8 @@ isk_status fx_draw_bands(isk_effect *e, isk_canvas *c, fx_group *g, const fx_dra
      * recorded (their replays take bands) */
     if (!rt && (k->may & FX_MAY_SPLIT) && g->def->blend == ISK_BLEND_ADD && (columns || e->split_always) &&
         split_particles(j, whole, threads)) {
-        isk_workers_for(&e->workers, (size_t)j->nb, 2, run_band, j);
-        isk_workers_for(&e->workers, (size_t)j->nb, 1, add_copies, j);
+        isk__workers_for(&e->workers, (size_t)j->nb, 2, run_band, j);
+        isk__workers_for(&e->workers, (size_t)j->nb, 1, add_copies, j);
         return finish(j);
     }
     /* empty bands (cuts that coincide where the particles crowd into a
@@ -566,7 +566,7 @@ isk_status fx_draw_bands(isk_effect *e, isk_canvas *c, fx_group *g, const fx_dra
             j->band[b].list = NULL;
     if (columns)
         give_copies(j);
-    isk_workers_for(&e->workers, (size_t)j->nb, 2, run_band, j);
+    isk__workers_for(&e->workers, (size_t)j->nb, 2, run_band, j);
     if (rt)
         fx_retain_end(rt, j->band, j->nb, columns);
     return finish(j);

@@ -74,7 +74,7 @@ static int gather_field(isk_effect *e, fx_group *g)
         const isk_force_def *fd = &d->forces[em->forces[i]];
         if (fd->kind == ISK_FORCE_TURBULENCE && fd->strength != 0)
             f->turb[f->nturb++] =
-                isk_field_turbulence(fd->strength, fd->scale, fd->speed, isk_noise_key(d->seed, em->forces[i]));
+                isk__field_turbulence(fd->strength, fd->scale, fd->speed, isk__noise_key(d->seed, em->forces[i]));
     }
     return f->radial != 0 || f->tangential != 0 || f->nturb > 0;
 }
@@ -92,7 +92,7 @@ static void osc_params(isk_stage_osc *o, isk_effect *e, const isk_emitter_def *e
     o->amp_max = em->osc_amp_max;
 }
 
-#define ADD(kind) ((st = isk_pipeline_add(&g->pipeline, &(kind))) != NULL)
+#define ADD(kind) ((st = isk__pipeline_add(&g->pipeline, &(kind))) != NULL)
 
 isk_status fx_compile(isk_effect *e, fx_group *g)
 {
@@ -100,11 +100,11 @@ isk_status fx_compile(isk_effect *e, fx_group *g)
     const isk_emitter_def *em = g->def;
     isk_forces *f = &g->forces;
     isk_stage *st = NULL;
-    isk_pipeline_init(&g->pipeline);
+    isk__pipeline_init(&g->pipeline);
     g->nframe_start = g->nsubstep_end = 0;
     /* A recompiled list may differ in anything: what rested is forgotten. */
     g->rests = 0;
-    isk_rest_forget(&g->rest, 0);
+    isk__rest_forget(&g->rest, 0);
     fx_retain_clear(&g->retained);
     gather_forces(e, g);
     g->integrator = em->integrator == ISK_INTEGRATE_INHERIT ? d->integrator : em->integrator;
@@ -138,7 +138,7 @@ isk_status fx_compile(isk_effect *e, fx_group *g)
         g->frame_start[g->nframe_start++] = &fx_step_release;
 
     if ((g->has_field = gather_field(e, g)) != 0) {
-        if (!ADD(isk_stage_field))
+        if (!ADD(isk__stage_field))
             return ISK_ERR_FULL;
         st->u.field.f = &g->field;
     }
@@ -155,7 +155,7 @@ isk_status fx_compile(isk_effect *e, fx_group *g)
      * order's slow): both in one pass, one stage that stands for them all. */
     const int sway = g->store.osc_amp != NULL, drift_sway = ISK__FAST_FUSED && fast && sway;
     if (drift_sway) {
-        if (!ADD(isk_stage_drift_sway))
+        if (!ADD(isk__stage_drift_sway))
             return ISK_ERR_FULL;
         st->u.drift_sway.ax = g->const_ax;
         st->u.drift_sway.ay = g->const_ay;
@@ -164,35 +164,35 @@ isk_status fx_compile(isk_effect *e, fx_group *g)
         osc_params(&st->u.drift_sway.osc, e, em);
     } else if (fast) {
         if (fused_slow) {
-            if (!ADD(isk_stage_drift_slow))
+            if (!ADD(isk__stage_drift_slow))
                 return ISK_ERR_FULL;
             st->u.drift_slow.ax = g->const_ax;
             st->u.drift_slow.ay = g->const_ay;
             st->u.drift_slow.slowing = em->slowing;
         } else {
-            if (!ADD(isk_stage_drift))
+            if (!ADD(isk__stage_drift))
                 return ISK_ERR_FULL;
             st->u.drift.ax = g->const_ax;
             st->u.drift.ay = g->const_ay;
         }
     } else {
-        if (!ADD(isk_stage_motion))
+        if (!ADD(isk__stage_motion))
             return ISK_ERR_FULL;
         st->u.motion.method = g->integrator;
         st->u.motion.forces = f;
     }
     if (em->slowing > 0 && !fused_slow && !drift_sway) {
-        if (!ADD(isk_stage_slow))
+        if (!ADD(isk__stage_slow))
             return ISK_ERR_FULL;
         st->u.slow.slowing = em->slowing;
     }
     if (sway && !drift_sway) {
-        if (!ADD(isk_stage_oscillate))
+        if (!ADD(isk__stage_oscillate))
             return ISK_ERR_FULL;
         osc_params(&st->u.osc, e, em);
     }
     if (walls && !em->draw_before_bounce) {
-        if (!ADD(isk_stage_walls))
+        if (!ADD(isk__stage_walls))
             return ISK_ERR_FULL;
         st->u.walls.b = &d->bounds;
         st->u.walls.drag = f->drag;
@@ -204,7 +204,7 @@ isk_status fx_compile(isk_effect *e, fx_group *g)
         st->u.walls.hit = em->on_hit >= 0;
     }
     if (g->ndefl) {
-        if (!ADD(isk_stage_deflect))
+        if (!ADD(isk__stage_deflect))
             return ISK_ERR_FULL;
         st->u.deflect.segs = g->defl;
         st->u.deflect.n = g->ndefl;
@@ -214,7 +214,7 @@ isk_status fx_compile(isk_effect *e, fx_group *g)
         st->u.deflect.hit = em->on_hit >= 0;
     }
     if (g->store.angle && fx_looks_spins(em)) {
-        if (!ADD(isk_stage_spin))
+        if (!ADD(isk__stage_spin))
             return ISK_ERR_FULL;
         st->u.spin.spin = em->spin;
         st->u.spin.spin_range = em->spin_range;
@@ -223,16 +223,16 @@ isk_status fx_compile(isk_effect *e, fx_group *g)
      * of impact) kept by the motion stage's own pass, or by a stage of its
      * own before a drift; particle order (a potential that switches itself
      * off, a deflector that draws at random) keeps the list on one thread. */
-    const unsigned needs = isk_pipeline_needs(&g->pipeline);
+    const unsigned needs = isk__pipeline_needs(&g->pipeline);
     if (needs & ISK_NEEDS_START) {
         for (int k = 0; k < g->pipeline.n; k++) {
             isk_stage *s = &g->pipeline.stage[k];
-            if (s->kind == &isk_stage_motion)
+            if (s->kind == &isk__stage_motion)
                 s->u.motion.remember = 1;
-            if (s->kind == &isk_stage_walls)
+            if (s->kind == &isk__stage_walls)
                 s->u.walls.start = 1;
         }
-        if (fast && !isk_pipeline_insert(&g->pipeline, motion_at, &isk_stage_remember))
+        if (fast && !isk__pipeline_insert(&g->pipeline, motion_at, &isk__stage_remember))
             return ISK_ERR_FULL;
     }
     g->parallel = !(needs & ISK_NEEDS_ORDER);
@@ -243,7 +243,7 @@ isk_status fx_compile(isk_effect *e, fx_group *g)
     const int mortal = isfinite(em->life) || can_kill;
     /* a flipbook played at a rate reads the age of immortal particles too */
     const int flips = g->texture && g->texture->frames > 1 && em->texture_fps > 0;
-    if ((mortal || flips) && !ADD(isk_stage_age))
+    if ((mortal || flips) && !ADD(isk__stage_age))
         return ISK_ERR_FULL;
 
     if (em->source == ISK_SOURCE_STREAM && em->space == ISK_SPACE_LOCAL)
@@ -257,7 +257,7 @@ isk_status fx_compile(isk_effect *e, fx_group *g)
     /* Blocks rest when the pipeline's stages allow it and nothing else moves
      * the group's particles: no step at the frame's start (the late walls,
      * the releases) and no carry with the emitter. */
-    g->rests = isk_pipeline_rest_prefix(&g->pipeline) > 0 && g->nframe_start == 0 &&
+    g->rests = isk__pipeline_rest_prefix(&g->pipeline) > 0 && g->nframe_start == 0 &&
                !(em->source == ISK_SOURCE_STREAM && em->space == ISK_SPACE_LOCAL);
     g->draw = fx_choose_draw(g);
     return ISK_OK;
@@ -288,10 +288,10 @@ void fx_describe_group(const isk_effect *e, const fx_group *g, FILE *out)
     fprintf(out, "emitter %s (%s, %zu particles, %d substep%s of %s):\n", em->name, isk_source_names[em->source],
             g->store.count, g->substeps, g->substeps == 1 ? "" : "s", isk_integrator_name(g->integrator));
     describe_steps(e, g, g->frame_start, g->nframe_start, out);
-    isk_pipeline_describe(&g->pipeline, out);
+    isk__pipeline_describe(&g->pipeline, out);
     describe_steps(e, g, g->substep_end, g->nsubstep_end, out);
     if (g->rests) {
-        const int n = isk_pipeline_rest_prefix(&g->pipeline);
+        const int n = isk__pipeline_rest_prefix(&g->pipeline);
         fprintf(out, "  %-9s skips ", "rest");
         for (int k = 0; k < n; k++)
             fprintf(out, "%s%s", k ? (k == n - 1 ? " and " : ", ") : "", g->pipeline.stage[k].kind->name);

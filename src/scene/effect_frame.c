@@ -92,10 +92,10 @@ static double update_work(const fx_group *g)
 {
     const size_t n = g->store.count;
     const isk_pipeline *pl = &g->pipeline;
-    const int prefix = g->rests ? isk_pipeline_rest_prefix(pl) : 0;
-    size_t resting = prefix ? isk_rest_blocks(&g->rest, n, ISK_REST_X | ISK_REST_Y) * ISK_SIM_BLOCK : 0;
+    const int prefix = g->rests ? isk__pipeline_rest_prefix(pl) : 0;
+    size_t resting = prefix ? isk__rest_blocks(&g->rest, n, ISK_REST_X | ISK_REST_Y) * ISK_SIM_BLOCK : 0;
     resting = resting < n ? resting : n;
-    return (double)(n - resting) * isk_pipeline_cost(pl, 0) + (double)resting * isk_pipeline_cost(pl, prefix);
+    return (double)(n - resting) * isk__pipeline_cost(pl, 0) + (double)resting * isk__pipeline_cost(pl, prefix);
 }
 
 static isk_status step_group(isk_effect *e, fx_group *g)
@@ -111,16 +111,16 @@ static isk_status step_group(isk_effect *e, fx_group *g)
         /* a multi-Coulomb explosion releases particles of the store as it goes */
         isk_rest *rest = g->rests && !g->mc_active && !e->no_rest ? &g->rest : NULL;
         if (!rest) /* every block steps: the states describe nothing after it */
-            isk_rest_forget(&g->rest, 0);
-        const int shared = g->parallel && isk_workers_count(&e->workers) > 1 && update_work(g) >= e->update_min_work;
+            isk__rest_forget(&g->rest, 0);
+        const int shared = g->parallel && isk__workers_count(&e->workers) > 1 && update_work(g) >= e->update_min_work;
         const isk_run_context ctx = {shared ? &e->workers : NULL, rest};
         g->shared_updates += shared;
-        isk_pipeline_run(&g->pipeline, &g->store, 0, g->store.count, h, &e->scratch, &ctx);
+        isk__pipeline_run(&g->pipeline, &g->store, 0, g->store.count, h, &e->scratch, &ctx);
         s = run_steps(e, g, g->substep_end, g->nsubstep_end, time + h * j, h);
         if (e->scratch.nonfinite) { /* never kept or drawn: removed and counted (iskra/limits.h) */
             size_t first;
-            g->removed_nonfinite += isk_store_remove_nonfinite(&g->store, &first);
-            isk_rest_forget(&g->rest, first);
+            g->removed_nonfinite += isk__store_remove_nonfinite(&g->store, &first);
+            isk__rest_forget(&g->rest, first);
             e->scratch.nonfinite = 0;
         }
     }

@@ -52,7 +52,7 @@ isk_status fx_fire_explosion(isk_effect *e, fx_group *g, isk_explosion kind, dou
     default: return ISK_ERR_RANGE;
     }
     /* A Coulomb explosion that kicks every particle moves those at rest */
-    isk_rest_forget(&g->rest, kind == ISK_EXPLOSION_COULOMB && kick == ISK_KICK_ALL ? 0 : before);
+    isk__rest_forget(&g->rest, kind == ISK_EXPLOSION_COULOMB && kick == ISK_KICK_ALL ? 0 : before);
     if (s == ISK_OK)
         fx_adopt(e, g, before);
     return s;
@@ -129,9 +129,9 @@ static isk_status run_cull(isk_effect *e, fx_group *g, double t0, double h)
      * from the first dead on. */
     size_t first;
     if (g->cull_unordered)
-        isk_rest_wake_dying(&g->rest, &g->store);
-    isk_store_cull(&g->store, g->cull_unordered, &first);
-    isk_rest_forget(&g->rest, g->cull_unordered ? g->store.count : first);
+        isk__rest_wake_dying(&g->rest, &g->store);
+    isk__store_cull(&g->store, g->cull_unordered, &first);
+    isk__rest_forget(&g->rest, g->cull_unordered ? g->store.count : first);
     return ISK_OK;
 }
 

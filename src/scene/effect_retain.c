@@ -83,7 +83,7 @@ fx_retained *fx_retain_begin(isk_effect *e, const isk_canvas *c, fx_group *g, in
 {
     fx_retained *rt = &g->retained;
     const int resting = g->rests && !g->mc_active && !e->no_rest && !e->no_retain &&
-                        isk_rest_all(&g->rest, g->store.count);
+                        isk__rest_all(&g->rest, g->store.count);
     if (!resting) {
         if (rt->cap || rt->refused)
             fx_retain_clear(rt);

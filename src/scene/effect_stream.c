@@ -248,7 +248,7 @@ isk_status fx_birth(isk_effect *e, fx_group *g, const fx_launcher *l, double age
             const double kt = g->field.t, kx = g->field.cx, ky = g->field.cy;
             if (g->has_field)
                 fx_field_clock(g, tb);
-            isk_pipeline_run(&g->pipeline, p, i, i + 1, age, &e->scratch, NULL);
+            isk__pipeline_run(&g->pipeline, p, i, i + 1, age, &e->scratch, NULL);
             g->field.t = kt;
             g->field.cx = kx;
             g->field.cy = ky;

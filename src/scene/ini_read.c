@@ -22,7 +22,7 @@ typedef struct reader {
     int failed;         /* a callback reported an error */
 } reader;
 
-isk_status isk_ini_error(isk_error *err, const char *name, int line, const char *fmt, ...)
+isk_status isk__ini_error(isk_error *err, const char *name, int line, const char *fmt, ...)
 {
     if (err) {
         char msg[400];
@@ -143,7 +143,7 @@ static int on_pair(void *user, const char *section, const char *key, const char 
     return 1;
 }
 
-isk_status isk_ini_parse(const char *text, const char *name, isk_ini_section_fn section, isk_ini_key_fn fn,
+isk_status isk__ini_parse(const char *text, const char *name, isk_ini_section_fn section, isk_ini_key_fn fn,
                          void *user, isk_error *err)
 {
     if (!text || !fn)
@@ -156,13 +156,13 @@ isk_status isk_ini_parse(const char *text, const char *name, isk_ini_section_fn 
         return err ? err->status : ISK_ERR_FORMAT;
     if (r.stop_line) {
         if (!strcmp(r.stop_msg, "line too long"))
-            isk_ini_error(err, name, r.stop_line, "line too long (at most %d characters)", ISK_INI_MAX_LINE);
+            isk__ini_error(err, name, r.stop_line, "line too long (at most %d characters)", ISK_INI_MAX_LINE);
         else
-            isk_ini_error(err, name, r.stop_line, "%s", r.stop_msg);
+            isk__ini_error(err, name, r.stop_line, "%s", r.stop_msg);
         return ISK_ERR_FORMAT;
     }
     if (rc > 0) { /* cannot happen with the checks above, but libinih may know more */
-        isk_ini_error(err, name, rc, "cannot parse this line: expected [section], key = value, or a ; comment");
+        isk__ini_error(err, name, rc, "cannot parse this line: expected [section], key = value, or a ; comment");
         return ISK_ERR_FORMAT;
     }
     if (rc < 0) {
@@ -172,13 +172,13 @@ isk_status isk_ini_parse(const char *text, const char *name, isk_ini_section_fn 
     return ISK_OK;
 }
 
-isk_status isk_ini_parse_string(const char *text, const char *name, isk_ini_key_fn fn, void *user,
+isk_status isk__ini_parse_string(const char *text, const char *name, isk_ini_key_fn fn, void *user,
                                 isk_error *err)
 {
-    return isk_ini_parse(text, name, NULL, fn, user, err);
+    return isk__ini_parse(text, name, NULL, fn, user, err);
 }
 
-isk_status isk_ini_read_file(const char *path, char **text, isk_error *err)
+isk_status isk__ini_read_file(const char *path, char **text, isk_error *err)
 {
     *text = NULL;
     if (!path)
@@ -209,7 +209,7 @@ isk_status isk_ini_read_file(const char *path, char **text, isk_error *err)
         for (const char *q = buf; q < nul; q++)
             line += *q == '\n';
         free(buf);
-        isk_ini_error(err, path, line, "contains a NUL byte (not a text file?)");
+        isk__ini_error(err, path, line, "contains a NUL byte (not a text file?)");
         return ISK_ERR_FORMAT;
     }
     buf[n] = 0;
@@ -217,13 +217,13 @@ isk_status isk_ini_read_file(const char *path, char **text, isk_error *err)
     return ISK_OK;
 }
 
-isk_status isk_ini_parse_file(const char *path, isk_ini_key_fn fn, void *user, isk_error *err)
+isk_status isk__ini_parse_file(const char *path, isk_ini_key_fn fn, void *user, isk_error *err)
 {
     char *text;
-    isk_status s = isk_ini_read_file(path, &text, err);
+    isk_status s = isk__ini_read_file(path, &text, err);
     if (s != ISK_OK)
         return s;
-    s = isk_ini_parse_string(text, path, fn, user, err);
+    s = isk__ini_parse_string(text, path, fn, user, err);
     free(text);
     return s;
 }
@@ -252,7 +252,7 @@ static size_t edit_distance(const char *a, const char *b)
     return row[lb];
 }
 
-const char *isk_ini_suggest(const char *word, const char *const *candidates, size_t n)
+const char *isk__ini_suggest(const char *word, const char *const *candidates, size_t n)
 {
     if (!word)
         return NULL;

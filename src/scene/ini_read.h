@@ -22,10 +22,10 @@
  *
  *     static int on_key(void *u, const char *sec, const char *key,
  *                       const char *val, int line, isk_error *err) { ... }
- *     isk_ini_parse_file("scene.ini", on_key, &state, &err);
+ *     isk__ini_parse_file("scene.ini", on_key, &state, &err);
  *
  * A callback returns ISK_OK to go on; any other isk_status stops parsing (it
- * has filled *err, normally through isk_ini_error()).
+ * has filled *err, normally through isk__ini_error()).
  */
 #ifndef ISKRA_SCENE_INI_READ_H
 #define ISKRA_SCENE_INI_READ_H
@@ -47,20 +47,20 @@ typedef isk_status (*isk_ini_key_fn)(void *user, const char *section, const char
 typedef isk_status (*isk_ini_section_fn)(void *user, const char *header, int line, isk_error *err);
 
 /* `text` is NUL-terminated; `name` is used in messages (a path or "<string>"). */
-isk_status isk_ini_parse_string(const char *text, const char *name, isk_ini_key_fn fn, void *user,
+isk_status isk__ini_parse_string(const char *text, const char *name, isk_ini_key_fn fn, void *user,
                                 isk_error *err);
 /* The same with a callback for section headers too (`section` may be NULL). */
-isk_status isk_ini_parse(const char *text, const char *name, isk_ini_section_fn section, isk_ini_key_fn fn,
+isk_status isk__ini_parse(const char *text, const char *name, isk_ini_section_fn section, isk_ini_key_fn fn,
                          void *user, isk_error *err);
 /* Reads a whole text file (at most ISK_INI_MAX_BYTES, no NUL bytes) into a
  * malloc'd NUL-terminated string for the caller to free. */
-isk_status isk_ini_read_file(const char *path, char **text, isk_error *err);
-/* Reads the whole file (as isk_ini_read_file) and parses it. */
-isk_status isk_ini_parse_file(const char *path, isk_ini_key_fn fn, void *user, isk_error *err);
+isk_status isk__ini_read_file(const char *path, char **text, isk_error *err);
+/* Reads the whole file (as isk__ini_read_file) and parses it. */
+isk_status isk__ini_parse_file(const char *path, isk_ini_key_fn fn, void *user, isk_error *err);
 
 /* Formats "NAME:LINE: message" into err with ISK_ERR_FORMAT and returns
- * ISK_ERR_FORMAT, so a callback can `return isk_ini_error(...)`. */
-isk_status isk_ini_error(isk_error *err, const char *name, int line, const char *fmt, ...)
+ * ISK_ERR_FORMAT, so a callback can `return isk__ini_error(...)`. */
+isk_status isk__ini_error(isk_error *err, const char *name, int line, const char *fmt, ...)
 #if defined(__GNUC__)
     __attribute__((format(printf, 4, 5)))
 #endif
@@ -68,6 +68,6 @@ isk_status isk_ini_error(isk_error *err, const char *name, int line, const char 
 
 /* The candidate closest to `word` by edit distance if it is close enough to
  * be a likely misspelling (distance <= max(1, ceil(len/3))), else NULL. */
-const char *isk_ini_suggest(const char *word, const char *const *candidates, size_t n);
+const char *isk__ini_suggest(const char *word, const char *const *candidates, size_t n);
 
 #endif

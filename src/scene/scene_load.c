@@ -56,7 +56,7 @@ isk_status isk_scene_load(isk_effect_def *out, const char *name_or_path, isk_err
     int n = 0;
     for (int i = 0; i < nbuiltin && n < 256; i++)
         names[n++] = isk_scene_builtin_name(i);
-    const char *s = isk_ini_suggest(name_or_path, names, (size_t)n);
+    const char *s = isk__ini_suggest(name_or_path, names, (size_t)n);
     if (s)
         return isk_error_set(err, ISK_ERR_IO, "%s: no such file or built-in scene; did you mean %s?",
                              name_or_path, s);

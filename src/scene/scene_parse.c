@@ -82,8 +82,8 @@ static isk_status fail_at(parser *P, const section *s, int line, const char *key
     va_end(ap);
     sec_label(s, label, sizeof label);
     if (key)
-        return isk_ini_error(P->err, P->name, line, "%s %s: %s", label, key, msg);
-    return isk_ini_error(P->err, P->name, line, "%s %s", label, msg);
+        return isk__ini_error(P->err, P->name, line, "%s %s: %s", label, key, msg);
+    return isk__ini_error(P->err, P->name, line, "%s %s", label, msg);
 }
 
 /* The rows are one array (iskra/keys.h): a row's index is its offset. */
@@ -170,7 +170,7 @@ static isk_status add_item(parser *P, section *s, const char *name, int line)
         break;
     }
     if (s->index < 0 && fx_section_items(d, s->type) >= max)
-        return isk_ini_error(P->err, P->name, line, "too many %s (at most %d)", what, max);
+        return isk__ini_error(P->err, P->name, line, "too many %s (at most %d)", what, max);
     if (s->index < 0) /* room, so the add could not allocate */
         return isk_error_set(P->err, ISK_ERR_NOMEM, "%s: out of memory", P->name);
     return ISK_OK;
@@ -210,38 +210,38 @@ static isk_status on_section(void *user, const char *header, int line, isk_error
         for (int i = 0; i < ISK_SECTION_COUNT; i++)
             types[i] = isk_section_name((isk_section_kind)i);
         if (!*type)
-            return isk_ini_error(P->err, P->name, line, "empty section header []");
+            return isk__ini_error(P->err, P->name, line, "empty section header []");
         const char *s = scv_suggest(type, types, ISK_SECTION_COUNT);
         if (s)
-            return isk_ini_error(P->err, P->name, line, "unknown section [%s%s%s]; did you mean [%s%s%s]?", type,
+            return isk__ini_error(P->err, P->name, line, "unknown section [%s%s%s]; did you mean [%s%s%s]?", type,
                                  *name ? " " : "", name, s, *name ? " " : "", name);
-        return isk_ini_error(P->err, P->name, line,
+        return isk__ini_error(P->err, P->name, line,
                              "unknown section [%s]; sections are [scene], [view], [force NAME], "
                              "[deflector NAME], [bounds], [emitter NAME], [drawing NAME] and [click]",
                              type);
     }
     const int named = isk_section_named((isk_section_kind)t);
     if (named && !*name)
-        return isk_ini_error(P->err, P->name, line, "section [%s] needs a name: [%s NAME]", type, type);
+        return isk__ini_error(P->err, P->name, line, "section [%s] needs a name: [%s NAME]", type, type);
     if (!named && *name)
-        return isk_ini_error(P->err, P->name, line, "section [%s] takes no name (got [%s %s])", type, type, name);
+        return isk__ini_error(P->err, P->name, line, "section [%s] takes no name (got [%s %s])", type, type, name);
     if (named && (!valid_name(name) || strlen(name) >= ISK_NAME_MAX))
-        return isk_ini_error(P->err, P->name, line,
+        return isk__ini_error(P->err, P->name, line,
                              "bad name '%s' in [%s %s]: use letters, digits, '_', '-' or '.' "
                              "(at most %d characters)",
                              name, type, name, ISK_NAME_MAX - 1);
     if (named && (!strcmp(name, "all") || !strcmp(name, "none")))
-        return isk_ini_error(P->err, P->name, line, "'%s' is reserved and cannot name a [%s]", name, type);
+        return isk__ini_error(P->err, P->name, line, "'%s' is reserved and cannot name a [%s]", name, type);
     for (int i = 0; i < P->nsec; i++)
         if (P->sec[i].type == (isk_section_kind)t && !strcmp(P->sec[i].name, name)) {
             if (*name)
-                return isk_ini_error(P->err, P->name, line, "duplicate section [%s %s] (first defined at line %d)",
+                return isk__ini_error(P->err, P->name, line, "duplicate section [%s %s] (first defined at line %d)",
                                      type, name, P->sec[i].line);
-            return isk_ini_error(P->err, P->name, line, "duplicate section [%s] (first defined at line %d)", type,
+            return isk__ini_error(P->err, P->name, line, "duplicate section [%s] (first defined at line %d)", type,
                                  P->sec[i].line);
         }
     if (P->nsec >= MAX_SECTIONS)
-        return isk_ini_error(P->err, P->name, line, "too many sections (at most %d)", MAX_SECTIONS);
+        return isk__ini_error(P->err, P->name, line, "too many sections (at most %d)", MAX_SECTIONS);
     if (P->nsec % 16 == 0) {
         section *a = realloc(P->sec, sizeof *a * (size_t)(P->nsec + 16));
         if (!a) {
@@ -340,7 +340,7 @@ static isk_status on_key(void *user, const char *section_name, const char *key, 
     (void)err;
     parser *P = user;
     if (P->cur < 0)
-        return isk_ini_error(P->err, P->name, line,
+        return isk__ini_error(P->err, P->name, line,
                              "'%s = %s' is outside any section (start the file with a section such as [scene])",
                              key, value);
     section *s = &P->sec[P->cur];
@@ -540,7 +540,7 @@ static void parse_emit(fx_report *r, isk_status st, isk_section_kind type, int i
             return;
         }
     }
-    isk_ini_error(P->err, P->name, 1, "[%s] %s%s%s", isk_section_name(type), key && show_key ? key : "",
+    isk__ini_error(P->err, P->name, 1, "[%s] %s%s%s", isk_section_name(type), key && show_key ? key : "",
                   key && show_key ? ": " : "", msg);
 }
 
@@ -582,7 +582,7 @@ isk_status isk_scene_load_string(isk_effect_def *out, const char *text, const ch
     if (!err)
         err = &local;
     parser P = {out, name, err, NULL, 0, -1, isk_key_count()};
-    isk_status st = isk_ini_parse(text, name, on_section, on_key, &P, err);
+    isk_status st = isk__ini_parse(text, name, on_section, on_key, &P, err);
     if (st == ISK_OK)
         st = finish(&P);
     for (int i = 0; i < P.nsec; i++) {
@@ -605,7 +605,7 @@ isk_status isk_scene_load_file(isk_effect_def *out, const char *path, isk_error 
         return isk_error_set(err, ISK_ERR_NULL, "scene: NULL definition");
     isk_effect_def_init(out);
     char *buf;
-    isk_status rs = isk_ini_read_file(path, &buf, err);
+    isk_status rs = isk__ini_read_file(path, &buf, err);
     if (rs != ISK_OK)
         return rs;
     isk_status s = isk_scene_load_string(out, buf, path, err);

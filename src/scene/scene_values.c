@@ -227,7 +227,7 @@ int scv_split(const char *s, char *buf, size_t bufsize, char sep, char **items, 
 
 const char *scv_suggest(const char *word, const char *const *names, int count)
 {
-    const char *s = isk_ini_suggest(word, names, (size_t)count);
+    const char *s = isk__ini_suggest(word, names, (size_t)count);
     if (s)
         return s;
     size_t n = strlen(word);

@@ -248,18 +248,18 @@ static double hit_time(double c0, double U, double a, double k, double s, double
         if (U < 0.0 || (U == 0.0 && a <= 0.0))
             return 0.0; /* on the wall and leaving (or pressed into it) at once */
         /* on the wall moving in: it meets it again after turning back */
-        return turn_in && f_end < 0.0 ? isk_fl_root(c0, U, a, k, t_turn, s, cache) : s;
+        return turn_in && f_end < 0.0 ? isk__fl_root(c0, U, a, k, t_turn, s, cache) : s;
     }
     if (turn_in && f_turn < 0.0)
-        return isk_fl_root(c0, U, a, k, 0.0, t_turn, cache);
-    return isk_fl_root(c0, U, a, k, 0.0, s, cache);
+        return isk__fl_root(c0, U, a, k, 0.0, t_turn, cache);
+    return isk__fl_root(c0, U, a, k, 0.0, s, cache);
 }
 
 /* Whether the turning point of the flight (P, U, a) may lie outside
  * [lo, hi]: 0 only when it surely lies inside, so that a step whose end
  * is inside needs neither the turning time (a log1p) nor the point (a
  * basis) to know that it hit nothing.  A turning point exists only when U
- * and a have opposite signs (isk_fl_turn), and lies on a's side of P at
+ * and a have opposite signs (isk__fl_turn), and lies on a's side of P at
  * a distance between U^2 / (2 (|a| + k|U|)) (the deceleration is at most
  * that) and U^2 / (2|a|) (drag only shortens the flight): the first, when
  * it is well above the rounding of P + U D1 + a D2, keeps the computed
@@ -269,7 +269,7 @@ static double hit_time(double c0, double U, double a, double k, double s, double
 static int turn_may_leave(double P, double U, double a, double k, double lo, double hi)
 {
     if (!(U * a < 0.0))
-        return 0; /* no turning point: isk_fl_turn's -1 */
+        return 0; /* no turning point: isk__fl_turn's -1 */
     const double reach = U * U / (2.0 * fabs(a)), least = U * U / (2.0 * (fabs(a) + k * fabs(U)));
     const double margin = 0x1p-30 * (fabs(P) + reach);
     if (!(least > margin))
@@ -303,11 +303,11 @@ static int impact_axis(double *pos, double *vel, const axis_motion *am, size_t i
         P = am->p0[i];
         if (!(isfinite(P) && isfinite(am->v0[i])))
             return BOUNCED;
-        isk_fl_fit(P, am->v0[i], p1, v1, k, h, &U, &a, &delta);
+        isk__fl_fit(P, am->v0[i], p1, v1, k, h, &U, &a, &delta);
     } else {
         a = am->a;
         delta = am->delta;
-        isk_fl_from_end(p1, v1, a, k, h, delta, cache, &P, &U);
+        isk__fl_from_end(p1, v1, a, k, h, delta, cache, &P, &U);
         /* A start reconstructed within rounding of a wall is on it (a
          * particle resting on the floor comes back 1e-19 below it). */
         const double tol = 64 * 2.220446049250313e-16 * (fabs(p1) + fabs(U) * h + fabs(a) * h * h);
@@ -349,7 +349,7 @@ static int impact_axis(double *pos, double *vel, const axis_motion *am, size_t i
     for (int n = 0;; n++) {
         if (end >= lo && end <= hi && !turn_may_leave(P, U, a, k, lo, hi))
             break; /* what the tests below would find, without the turning point */
-        double t_turn = isk_fl_turn(U, a, k), p_turn = P;
+        double t_turn = isk__fl_turn(U, a, k), p_turn = P;
         const int turn_in = t_turn > 0.0 && t_turn < s;
         if (turn_in) {
             double e, d1, d2;
@@ -694,8 +694,8 @@ void isk_bounds_apply_step(const isk_bounds *b, const isk_step_motion *mo, size_
         mo->drag > 0.0 ? mo->drag : 0.0,
         mo->h,
         b->restitution,
-        isk_wall_screen_pick(),
-        isk_rest_screen_pick(),
+        isk__wall_screen_pick(),
+        isk__rest_screen_pick(),
     };
     impact_block(n, x, y, vx, vy, &iw);
 }

@@ -316,7 +316,7 @@ typedef struct flight {
 static void flight_at(const flight *f, double t, double *x, double *y, double *vx, double *vy)
 {
     double e, d1, d2;
-    isk_fl_basis(f->k, t, &e, &d1, &d2);
+    isk__fl_basis(f->k, t, &e, &d1, &d2);
     *x = f->sx + f->ux * d1 + f->ax * d2;
     *y = f->sy + f->uy * d1 + f->ay * d2;
     *vx = f->ux * e + f->ax * d1;
@@ -337,14 +337,14 @@ static double flight_hit(const flight *f, const seg *s, double t_chord)
     isk_fl_cache_clear(&cache);
     isk_fl_basis_cached(&cache, f->k, f->s, &e, &d1, &d2);
     double f_end = c0 + un * d1 + an * d2;
-    double t_turn = isk_fl_turn(un, an, f->k);
+    double t_turn = isk__fl_turn(un, an, f->k);
     if (t_turn > 0.0 && t_turn < f->s) {
         isk_fl_basis_cached(&cache, f->k, t_turn, &e, &d1, &d2);
         if (c0 + un * d1 + an * d2 < 0.0)
-            return isk_fl_root(c0, un, an, f->k, 0.0, t_turn, &cache);
+            return isk__fl_root(c0, un, an, f->k, 0.0, t_turn, &cache);
     }
     if (f_end < 0.0)
-        return isk_fl_root(c0, un, an, f->k, 0.0, f->s, &cache);
+        return isk__fl_root(c0, un, an, f->k, 0.0, f->s, &cache);
     return t_chord * f->s;
 }
 
@@ -523,8 +523,8 @@ static isk_status deflect(const isk_deflector *defs, int ndef, double *x, double
                 f.sy = sy;
                 f.k = kk;
                 f.s = mo->h;
-                isk_fl_fit(sx, mo->vx0[i], ex, ux, kk, mo->h, &f.ux, &f.ax, &f.delx);
-                isk_fl_fit(sy, mo->vy0[i], ey, uy, kk, mo->h, &f.uy, &f.ay, &f.dely);
+                isk__fl_fit(sx, mo->vx0[i], ex, ux, kk, mo->h, &f.ux, &f.ax, &f.delx);
+                isk__fl_fit(sy, mo->vy0[i], ey, uy, kk, mo->h, &f.uy, &f.ay, &f.dely);
                 fitted = 1;
                 if (!(isfinite(f.ux) && isfinite(f.uy) && isfinite(f.ax) && isfinite(f.ay))) {
                     /* no usable motion (a start velocity not finite): the path rule */

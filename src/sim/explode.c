@@ -29,7 +29,7 @@ static isk_status prepare(isk_particles *p, const void *rng_or_1, double cx, dou
     isk_status s = check_count(count, limit);
     if (s != ISK_OK)
         return s;
-    return isk_store_grow_for(p, count);
+    return isk__store_grow_for(p, count);
 }
 
 isk_vec2 isk_ring_velocity(size_t i, size_t count)
@@ -46,7 +46,7 @@ isk_status isk_explode_ring(isk_particles *p, double cx, double cy, size_t count
         return s;
     for (size_t i = 0; i < count; i++) {
         isk_vec2 v = isk_ring_velocity(i, count);
-        isk_store_push(p, cx, cy, v.x, v.y, 2.0);
+        isk__store_push(p, cx, cy, v.x, v.y, 2.0);
     }
     return ISK_OK;
 }
@@ -60,7 +60,7 @@ isk_status isk_explode_uniform(isk_particles *p, isk_rng *r, double cx, double c
     for (size_t i = 0; i < count; i++) {
         double vx = isk_rng_uniform(r) * 20.0 - 10.0;
         double vy = isk_rng_uniform(r) * 20.0 - 10.0;
-        isk_store_push(p, cx, cy, vx, vy, 2.0);
+        isk__store_push(p, cx, cy, vx, vy, 2.0);
     }
     return ISK_OK;
 }
@@ -75,7 +75,7 @@ isk_status isk_explode_gauss(isk_particles *p, isk_rng *r, double cx, double cy,
         double z1, z2;
         isk_rng_normal2(r, &z1, &z2);
         double m = 2.0 + isk_rng_uniform(r);
-        isk_store_push(p, cx, cy, z1 * 3.0, z2 * 3.0, m);
+        isk__store_push(p, cx, cy, z1 * 3.0, z2 * 3.0, m);
     }
     return ISK_OK;
 }
@@ -87,7 +87,7 @@ static void coulomb_cloud(isk_particles *p, isk_rng *r, double cx, double cy, si
         double z1, z2;
         isk_rng_normal2(r, &z1, &z2);
         double m = 2.0 + isk_rng_uniform(r);
-        isk_store_push(p, z1 / 50.0 + cx, z2 / 50.0 + cy, 0.0, 0.0, m);
+        isk__store_push(p, z1 / 50.0 + cx, z2 / 50.0 + cy, 0.0, 0.0, m);
     }
 }
 
@@ -136,7 +136,7 @@ isk_status isk_explode_layer(isk_particles *p, isk_rng *r, double xmin, double x
     for (size_t i = 0; i < count; i++) {
         double x = isk_rng_uniform(r) * (xmax - xmin) + xmin;
         double y = isk_rng_uniform(r) * (ymax - ymin) + ymin;
-        isk_store_push(p, x, y, 0.0, 0.0, 1.0);
+        isk__store_push(p, x, y, 0.0, 0.0, 1.0);
     }
     return ISK_OK;
 }
@@ -199,7 +199,7 @@ isk_status isk_multi_coulomb_release(isk_multi_coulomb *mc, isk_particles *p, is
         return ISK_ERR_NULL;
     while (mc->next <= mc->batches && mc->age >= mc->next_release) {
         size_t n = mc->next == mc->batches ? mc->last_size : mc->batch_size;
-        isk_status s = isk_store_grow_for(p, n);
+        isk_status s = isk__store_grow_for(p, n);
         if (s != ISK_OK)
             return s;
         size_t first = p->count;

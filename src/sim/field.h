@@ -5,14 +5,14 @@
  *
  * The owner (an effect's group) fills an isk_field once per compile, keeps
  * its clock (the simulated time and the emitter's position at the start of
- * the step) up to date before every run, and puts isk_stage_field in the
+ * the step) up to date before every run, and puts isk__stage_field in the
  * pipeline when any term is non-zero:
  *
  *     isk_field f = {0};
  *     f.radial = -4;                              // towards the centre
- *     f.turb[f.nturb++] = isk_field_turbulence(2, 1.5, 0.3, isk_noise_key(seed, 0));
+ *     f.turb[f.nturb++] = isk__field_turbulence(2, 1.5, 0.3, isk__noise_key(seed, 0));
  *     f.t = t0; f.cx = 0; f.cy = 0;               // every step
- *     isk_stage *st = isk_pipeline_add(&pl, &isk_stage_field);
+ *     isk_stage *st = isk__pipeline_add(&pl, &isk__stage_field);
  *     st->u.field.f = &f;
  *
  * The noise is pure arithmetic on its arguments (no tables, no state), so
@@ -41,16 +41,16 @@ typedef struct isk_field {
 } isk_field;
 
 /* A noise seed from a scene seed and an item's index (a force's). */
-uint64_t isk_noise_key(uint64_t seed, int index);
+uint64_t isk__noise_key(uint64_t seed, int index);
 
 /* Gradient noise psi(u, v, w) (improved Perlin noise with hashed lattice
  * gradients, C2 in every coordinate) and its partial derivatives along u
  * and v; coordinates beyond +-2^52 are clamped there.  Returns psi. */
-double isk_noise3(uint64_t key, double u, double v, double w, double *du, double *dv);
+double isk__noise3(uint64_t key, double u, double v, double w, double *du, double *dv);
 
-isk_field_turb isk_field_turbulence(double strength, double scale, double speed, uint64_t key);
+isk_field_turb isk__field_turbulence(double strength, double scale, double speed, uint64_t key);
 
 /* The field's acceleration at (x, y) (the stage's kernel, for one point). */
-void isk_field_accel(const isk_field *f, double x, double y, double *ax, double *ay);
+void isk__field_accel(const isk_field *f, double x, double y, double *ax, double *ay);
 
 #endif

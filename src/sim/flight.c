@@ -5,7 +5,7 @@
 #include <math.h>
 #include <stddef.h>
 
-double isk_fl_phi2_series(double h)
+double isk__fl_phi2_series(double h)
 {
     /* sum_{j>=0} (-h)^j / (j+2)!; 10 terms leave < 1e-18 relative error. */
     static const double inv_fact[10] = {
@@ -18,21 +18,21 @@ double isk_fl_phi2_series(double h)
     return acc;
 }
 
-void isk_fl_basis(double k, double t, double *e, double *d1, double *d2)
+void isk__fl_basis(double k, double t, double *e, double *d1, double *d2)
 {
     isk_fl_basis_inline(k, t, e, d1, d2);
 }
 
-void isk_fl_basis_slow(double k, double t, double *e, double *d1, double *d2)
+void isk__fl_basis_slow(double k, double t, double *e, double *d1, double *d2)
 {
     const double z = k * t;
     double em = expm1(-z); /* e^-z - 1, accurate for small z */
     *e = 1.0 + em;
     *d1 = -em / k;
-    *d2 = (z < 0.1 ? isk_fl_phi2_series(z) : (z + em) / (z * z)) * (t * t);
+    *d2 = (z < 0.1 ? isk__fl_phi2_series(z) : (z + em) / (z * z)) * (t * t);
 }
 
-void isk_fl_fit(double p0, double v0, double p1, double v1, double k, double h, double *U, double *a,
+void isk__fl_fit(double p0, double v0, double p1, double v1, double k, double h, double *U, double *a,
                 double *delta)
 {
     if (v1 == v0 && !(k > 0.0)) {
@@ -44,7 +44,7 @@ void isk_fl_fit(double p0, double v0, double p1, double v1, double k, double h, 
         return;
     }
     double e, d1, d2;
-    isk_fl_basis(k, h, &e, &d1, &d2);
+    isk__fl_basis(k, h, &e, &d1, &d2);
     /* v1 = v0 e + a D1 gives a; p1 = p0 + U D1 + a D2 gives U. */
     double acc = (v1 - v0 * e) / d1;
     double u0 = (p1 - p0 - acc * d2) / d1;
@@ -53,7 +53,7 @@ void isk_fl_fit(double p0, double v0, double p1, double v1, double k, double h, 
     *delta = v1 - (u0 * e + acc * d1);
 }
 
-void isk_fl_from_end(double p1, double v1, double a, double k, double h, double delta, isk_fl_cache *cache,
+void isk__fl_from_end(double p1, double v1, double a, double k, double h, double delta, isk_fl_cache *cache,
                      double *P, double *U)
 {
     double e, d1, d2;
@@ -64,7 +64,7 @@ void isk_fl_from_end(double p1, double v1, double a, double k, double h, double 
     *P = p1 - u0 * d1 - a * d2;
 }
 
-double isk_fl_turn(double U, double a, double k)
+double isk__fl_turn(double U, double a, double k)
 {
     if (!(U * a < 0.0))
         return -1.0;
@@ -112,7 +112,7 @@ static int quadratic_root(double c0, double U, double a, double t0, double t1, d
     return 1;
 }
 
-double isk_fl_root(double c0, double U, double a, double k, double t0, double t1, isk_fl_cache *cache)
+double isk__fl_root(double c0, double U, double a, double k, double t0, double t1, isk_fl_cache *cache)
 {
     if (!(t1 > t0))
         return t0;

@@ -11,7 +11,7 @@
  *
  * (k = 0: D1 = t, D2 = t^2/2, the parabola).  This is the exact motion
  * under a constant acceleration a and the drag, started at P with velocity
- * U.  isk_fl_fit chooses a from the step's velocity change and U from its
+ * U.  isk__fl_fit chooses a from the step's velocity change and U from its
  * displacement, so the flight passes through both positions; for gravity,
  * wind and drag that is the exact motion with every integrator whose
  * positions lie on it (Verlet, RK4, exact drag: then U = v0), and for the
@@ -26,9 +26,9 @@
 #define ISKRA_SIM_FLIGHT_H
 
 /* e(t), D1(t), D2(t) for drag k >= 0 and time t >= 0. */
-void isk_fl_basis(double k, double t, double *e, double *d1, double *d2);
+void isk__fl_basis(double k, double t, double *e, double *d1, double *d2);
 
-/* isk_fl_basis for 0 < z = k t < ISK_FL_SERIES_MAX: every ordinary step
+/* isk__fl_basis for 0 < z = k t < ISK_FL_SERIES_MAX: every ordinary step
  * (k t = 0.005 for b/m = 0.3 over 1/60 s).  The series phi1 = (1 - e^-z)/z
  * and phi2 = (z - 1 + e^-z)/z^2, eight terms each (the first left out is
  * below 3e-18 of the sum), in Estrin's form (pairs, then pairs of pairs: a
@@ -55,21 +55,21 @@ static inline void isk_fl_basis_series(double z, double t, double *e, double *d1
 
 /* (h - 1 + e^-h)/h^2 for 0 <= h < 0.1 by its Taylor series (the exact-drag
  * update uses it too: one series, one place). */
-double isk_fl_phi2_series(double h);
+double isk__fl_phi2_series(double h);
 
 /* The flight of one axis through (p0, v0) -> (p1, v1) over h with drag k:
  * its start velocity U, acceleration a, and the integrator's velocity
  * offset delta = v1 - u(h).  Without acceleration or drag (v1 == v0, k = 0)
  * the flight is the straight line at v1 itself (U = v1, delta = 0). */
-void isk_fl_fit(double p0, double v0, double p1, double v1, double k, double h, double *U, double *a,
+void isk__fl_fit(double p0, double v0, double p1, double v1, double k, double h, double *U, double *a,
                 double *delta);
 
-/* isk_fl_basis, inline but for the expm1 branch (k t >= ISK_FL_SERIES_MAX):
+/* isk__fl_basis, inline but for the expm1 branch (k t >= ISK_FL_SERIES_MAX):
  * the same branches and operations, so the same bits.  The walls' bounce
  * solve asks for a basis ten times a hopping particle: as calls, every
  * double it keeps live was spilled around each (the SysV ABI saves no xmm
  * register). */
-void isk_fl_basis_slow(double k, double t, double *e, double *d1, double *d2);
+void isk__fl_basis_slow(double k, double t, double *e, double *d1, double *d2);
 static inline void isk_fl_basis_inline(double k, double t, double *e, double *d1, double *d2)
 {
     if (!(k > 0.0) || t == 0.0) {
@@ -82,15 +82,15 @@ static inline void isk_fl_basis_inline(double k, double t, double *e, double *d1
     if (z < ISK_FL_SERIES_MAX)
         isk_fl_basis_series(z, t, e, d1, d2);
     else
-        isk_fl_basis_slow(k, t, e, d1, d2);
+        isk__fl_basis_slow(k, t, e, d1, d2);
 }
 
-/* The last few isk_fl_basis(k, t) asked for, for the walls of one group of
+/* The last few isk__fl_basis(k, t) asked for, for the walls of one group of
  * particles: a bounce asks for the same time more than once (the turning
  * point, then the root solve's bracket end there; the rest of the step
  * after a hit, for the end state and then as the next root solve's
  * bracket end).  Beside them, pinned, the basis over the whole step
- * (isk_fl_from_end's): the particles of a group mostly share one mass, so
+ * (isk__fl_from_end's): the particles of a group mostly share one mass, so
  * their flights over the step need one basis, not one each, and the four
  * times each bounce brings would otherwise evict it before the next
  * particle.  t = 0 and the root solve's own iterates are never looked up
@@ -117,7 +117,7 @@ static inline int isk_fl_cache_step_is(const isk_fl_cache *c, double k, double t
     return c->step_set && c->step_t == t && c->step_k == k;
 }
 
-/* isk_fl_basis through the cache (NULL: none), kept in the ring.
+/* isk__fl_basis through the cache (NULL: none), kept in the ring.
  * Inline: a bounce asks seven or eight times, and as calls the lookups
  * cost a tenth of a settled floor's update. */
 static inline void isk_fl_basis_cached(isk_fl_cache *c, double k, double t, double *e, double *d1, double *d2)
@@ -151,7 +151,7 @@ static inline void isk_fl_basis_cached(isk_fl_cache *c, double k, double t, doub
         c->n++;
 }
 
-/* isk_fl_basis through the cache's pinned entry (the step's), which it
+/* isk__fl_basis through the cache's pinned entry (the step's), which it
  * replaces when (k, t) is another. */
 static inline void isk_fl_basis_step(isk_fl_cache *c, double k, double t, double *e, double *d1, double *d2)
 {
@@ -173,12 +173,12 @@ static inline void isk_fl_basis_step(isk_fl_cache *c, double k, double t, double
 /* The flight of one axis that ends at (p1, v1) after h with acceleration
  * a, drag k and the integrator's velocity offset delta (v1 = u(h) +
  * delta): its start P and start velocity U.  `cache` may be NULL. */
-void isk_fl_from_end(double p1, double v1, double a, double k, double h, double delta, isk_fl_cache *cache,
+void isk__fl_from_end(double p1, double v1, double a, double k, double h, double delta, isk_fl_cache *cache,
                      double *P, double *U);
 
 /* The time in (0, +inf) at which u(t) = 0 (the flight's turning point), or
  * -1 when it has none (U and a not of opposite signs). */
-double isk_fl_turn(double U, double a, double k);
+double isk__fl_turn(double U, double a, double k);
 
 /* A root of f(t) = c0 + U D1(t) + a D2(t) in [t0, t1], given f(t0) >= 0 and
  * f(t1) < 0 (the flight leaves the side where f > 0 in that interval, and f
@@ -186,6 +186,6 @@ double isk_fl_turn(double U, double a, double k);
  * safeguarded Halley iteration for k > 0 (within a few ulps of the root:
  * tests/test_flight_root.c); when rounding has put no sign change in the
  * interval it returns the end where |f| is smaller.  cache may be NULL. */
-double isk_fl_root(double c0, double U, double a, double k, double t0, double t1, isk_fl_cache *cache);
+double isk__fl_root(double c0, double U, double a, double k, double t0, double t1, isk_fl_cache *cache);
 
 #endif

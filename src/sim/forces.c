@@ -7,7 +7,7 @@
 
 #include "raster/span_simd.h" /* ISK__SPAN_AVX2, ISK__AVX2_FN, isk__have_avx2 */
 #include "sim/kernels.h"
-#include "sim/motion_fused.h" /* isk_forces_potentials_on */
+#include "sim/motion_fused.h" /* isk__forces_potentials_on */
 
 const char *const isk_fidelity_names[ISK_FIDELITY_COUNT] = {"sound", "thesis"};
 const char *const isk_coulomb_law_names[ISK_COULOMB_LAW_COUNT] = {"code", "text"};
@@ -254,7 +254,7 @@ static void drag_stage(size_t n, double *restrict vx, double *restrict vy, const
     }
 }
 
-int isk_forces_potentials_on(const isk_forces *f)
+int isk__forces_potentials_on(const isk_forces *f)
 {
     const size_t np = f->pick ? f->npick : f->npot;
     int any = 0;
@@ -336,7 +336,7 @@ static const law_row law_rows[] = {
     {ISK_LAW_POWER_2 | ISK_LAW_POWER_1 | ISK_LAW_POWER | ISK_LAW_CUTOFF,
      {"power 2", "power 1", "power P", "cutoff"},
      potentials_acts,
-     isk_forces_potentials_on,
+     isk__forces_potentials_on,
      0,
      potentials_add},
 };

@@ -37,7 +37,7 @@ void isk_integrate_exact_drag(size_t n, double *restrict x, double *restrict y, 
         double em = expm1(-h);          /* e^-h - 1, accurate for small h */
         double e = 1.0 + em;            /* e^-h */
         double g1 = h > 0.0 ? -em / h : 1.0;
-        double g2 = h < 0.1 ? isk_fl_phi2_series(h) : (h + em) / (h * h);
+        double g2 = h < 0.1 ? isk__fl_phi2_series(h) : (h + em) / (h * h);
         double ax = fx[i] / m[i], ay = fy[i] / m[i];
         double ovx = vx[i], ovy = vy[i];
         x[i] = x[i] + ovx * (dt * g1) + ax * (dt2 * g2);

@@ -345,7 +345,7 @@ static uint64_t pot_run(int simd, int np, int A, int D, int E, size_t n, double 
     return acc;
 }
 
-int isk_motion_fused_build(int simd, isk_integrator method, const isk_forces *f, size_t n, double *x, double *y,
+int isk__motion_fused_build(int simd, isk_integrator method, const isk_forces *f, size_t n, double *x, double *y,
                            double *vx, double *vy, const double *m, double dt, const isk_motion_start *start,
                            int *nonfinite)
 {
@@ -385,8 +385,8 @@ int isk_motion_fused_build(int simd, isk_integrator method, const isk_forces *f,
     return 1;
 }
 
-int isk_motion_fused(isk_integrator method, const isk_forces *f, size_t n, double *x, double *y, double *vx,
+int isk__motion_fused(isk_integrator method, const isk_forces *f, size_t n, double *x, double *y, double *vx,
                      double *vy, const double *m, double dt, const isk_motion_start *start, int *nonfinite)
 {
-    return isk_motion_fused_build(2, method, f, n, x, y, vx, vy, m, dt, start, nonfinite);
+    return isk__motion_fused_build(2, method, f, n, x, y, vx, vy, m, dt, start, nonfinite);
 }

@@ -14,7 +14,7 @@
  * x, y, vx, vy once: 72 B a particle-step, the bandwidth limit's own count.
  *
  *     int nonfinite;
- *     if (!isk_motion_fused(method, forces, n, x, y, vx, vy, m, dt, &nonfinite))
+ *     if (!isk__motion_fused(method, forces, n, x, y, vx, vy, m, dt, &nonfinite))
  *         ... the general path (isk_integrate_block + the checks) ...
  *
  * The bits are the general path's, for every input (tests/test_motion_fused.c):
@@ -87,18 +87,18 @@ static inline void isk_motion_start_copy(const isk_motion_start *s, size_t n, co
  * method and these forces (then *nonfinite is 1 when some new x, y, vx or
  * vy is not finite, else 0, and the old state is in *start unless start is
  * NULL); returns 0, touching nothing, otherwise. */
-int isk_motion_fused(isk_integrator method, const isk_forces *f, size_t n, double *x, double *y, double *vx,
+int isk__motion_fused(isk_integrator method, const isk_forces *f, size_t n, double *x, double *y, double *vx,
                      double *vy, const double *m, double dt, const isk_motion_start *start, int *nonfinite);
 
 /* The same with the widest build it may take: simd = 0 the portable
  * loops, 1 AVX2, 2 AVX-512, each only when the CPU has it
- * (raster/span_simd.h's isk__simd_level).  isk_motion_fused takes the
+ * (raster/span_simd.h's isk__simd_level).  isk__motion_fused takes the
  * widest; the tests compare them all. */
-int isk_motion_fused_build(int simd, isk_integrator method, const isk_forces *f, size_t n, double *x, double *y,
+int isk__motion_fused_build(int simd, isk_integrator method, const isk_forces *f, size_t n, double *x, double *y,
                            double *vx, double *vy, const double *m, double dt, const isk_motion_start *start,
                            int *nonfinite);
 /* 1 when some potential of f (its pick, or all of them) is enabled: the
  * test isk_forces_eval_step makes before it evaluates potentials (forces.c). */
-int isk_forces_potentials_on(const isk_forces *f);
+int isk__forces_potentials_on(const isk_forces *f);
 
 #endif

@@ -18,7 +18,7 @@ static uint64_t mix(uint64_t z)
     return z ^ (z >> 31);
 }
 
-uint64_t isk_noise_key(uint64_t seed, int index)
+uint64_t isk__noise_key(uint64_t seed, int index)
 {
     return mix(mix(seed ^ 0x7475726275u) + (uint64_t)(unsigned)index * 0x9E3779B97F4A7C15u);
 }
@@ -52,7 +52,7 @@ static double cell(double u, int64_t *i)
 static double fade(double t) { return t * t * t * (t * (t * 6.0 - 15.0) + 10.0); }
 static double dfade(double t) { return 30.0 * t * t * (t * (t - 2.0) + 1.0); }
 
-double isk_noise3(uint64_t key, double u, double v, double w, double *du, double *dv)
+double isk__noise3(uint64_t key, double u, double v, double w, double *du, double *dv)
 {
     int64_t i, j, k;
     const double fu = cell(u, &i), fv = cell(v, &j), fw = cell(w, &k);

@@ -239,14 +239,14 @@ isk_status isk_particles_add_columns(isk_particles *p, unsigned flags)
     return ISK_OK;
 }
 
-isk_status isk_store_grow_for(isk_particles *p, size_t extra)
+isk_status isk__store_grow_for(isk_particles *p, size_t extra)
 {
     if (extra > ISK_PARTICLES_MAX - p->count)
         return ISK_ERR_SIZE;
     return isk_particles_reserve(p, p->count + extra);
 }
 
-size_t isk_store_push(isk_particles *p, double x, double y, double vx, double vy, double m)
+size_t isk__store_push(isk_particles *p, double x, double y, double vx, double vy, double m)
 {
     size_t i = p->count++;
     p->x[i] = x;
@@ -291,10 +291,10 @@ isk_status isk_particles_add(isk_particles *p, double x, double y, double vx, do
         return ISK_ERR_NAN;
     if (!(m > 0.0))
         return ISK_ERR_RANGE;
-    isk_status s = isk_store_grow_for(p, 1);
+    isk_status s = isk__store_grow_for(p, 1);
     if (s != ISK_OK)
         return s;
-    size_t i = isk_store_push(p, x, y, vx, vy, m);
+    size_t i = isk__store_push(p, x, y, vx, vy, m);
     if (index)
         *index = i;
     return ISK_OK;
@@ -383,7 +383,7 @@ size_t isk_particles_remove_nonfinite(isk_particles *p)
     return p ? compact(p, DROP_NONFINITE, &first) : 0;
 }
 
-size_t isk_store_remove_nonfinite(isk_particles *p, size_t *first_moved)
+size_t isk__store_remove_nonfinite(isk_particles *p, size_t *first_moved)
 {
     return compact(p, DROP_NONFINITE, first_moved);
 }
@@ -429,7 +429,7 @@ size_t isk_particles_cull_unordered(isk_particles *p)
     return p ? cull_unordered(p, &first) : 0;
 }
 
-size_t isk_store_cull(isk_particles *p, int unordered, size_t *first_moved)
+size_t isk__store_cull(isk_particles *p, int unordered, size_t *first_moved)
 {
     return unordered ? cull_unordered(p, first_moved) : compact(p, DROP_DEAD, first_moved);
 }

@@ -17,7 +17,7 @@
  * (take_range), so the runs are longer still at the start of a job and the
  * shares even out at its end; each thread starts on a range of its own
  * (the same blocks every frame, still in its caches).  The count rule in
- * isk_pool_for still gives every thread at least four chunks, and a job of
+ * isk__pool_for still gives every thread at least four chunks, and a job of
  * few items (a draw's bands: one per thread) is handed out one at a time,
  * or the first thread to come would take them all.  The measures behind
  * the numbers: docs/performance.md, "The pool's chunks". */
@@ -133,13 +133,13 @@ static void *worker_main(void *arg)
     return NULL;
 }
 
-int isk_pool_online_cores(void)
+int isk__pool_online_cores(void)
 {
     long n = sysconf(_SC_NPROCESSORS_ONLN);
     return n < 1 ? 1 : n > ISK_TASKS_MAX_WORKERS ? ISK_TASKS_MAX_WORKERS : (int)n;
 }
 
-isk_status isk_pool_create(isk_pool **out, int threads)
+isk_status isk__pool_create(isk_pool **out, int threads)
 {
     if (!out)
         return ISK_ERR_NULL;
@@ -191,14 +191,14 @@ isk_status isk_pool_create(isk_pool **out, int threads)
     }
     pthread_sigmask(SIG_SETMASK, &caller, NULL);
     if (s != ISK_OK) {
-        isk_pool_destroy(p);
+        isk__pool_destroy(p);
         return s;
     }
     *out = p;
     return ISK_OK;
 }
 
-void isk_pool_destroy(isk_pool *p)
+void isk__pool_destroy(isk_pool *p)
 {
     if (!p)
         return;
@@ -216,9 +216,9 @@ void isk_pool_destroy(isk_pool *p)
     free(p);
 }
 
-int isk_pool_threads(const isk_pool *p) { return p ? p->threads : 1; }
+int isk__pool_threads(const isk_pool *p) { return p ? p->threads : 1; }
 
-void isk_pool_for(isk_pool *p, size_t n, isk_task_fn *fn, void *ctx)
+void isk__pool_for(isk_pool *p, size_t n, isk_task_fn *fn, void *ctx)
 {
     if (n == 0)
         return;

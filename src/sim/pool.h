@@ -4,11 +4,11 @@
  * the renderer reach it through src/sim/workers.h).
  *
  *     isk_pool *pool;
- *     if (isk_pool_create(&pool, 4) != ISK_OK) ...     // the caller + 3 threads
- *     isk_pool_for(pool, nblocks, run_block, &ctx);     // run_block(&ctx, worker, i) for every i
- *     isk_pool_destroy(pool);
+ *     if (isk__pool_create(&pool, 4) != ISK_OK) ...     // the caller + 3 threads
+ *     isk__pool_for(pool, nblocks, run_block, &ctx);     // run_block(&ctx, worker, i) for every i
+ *     isk__pool_destroy(pool);
  *
- * isk_pool_for hands out the items [0, n) in chunks to whichever thread
+ * isk__pool_for hands out the items [0, n) in chunks to whichever thread
  * asks next (the caller works too) and returns when every item is done.
  * Which thread ran which item is never observable in the results: callers
  * only give it items that are independent of one another (blocks of
@@ -33,13 +33,13 @@ typedef struct isk_pool isk_pool;
 /* threads in 1 .. ISK_TASKS_MAX_WORKERS (1: no extra thread).
  * ISK_ERR_RANGE, ISK_ERR_NOMEM, or ISK_ERR_UNSUPPORTED when a thread
  * cannot be started. */
-isk_status isk_pool_create(isk_pool **out, int threads);
-void isk_pool_destroy(isk_pool *pool);
-int isk_pool_threads(const isk_pool *pool);
+isk_status isk__pool_create(isk_pool **out, int threads);
+void isk__pool_destroy(isk_pool *pool);
+int isk__pool_threads(const isk_pool *pool);
 /* fn(ctx, worker, i) for every i in [0, n), on every thread; returns when
  * all are done. */
-void isk_pool_for(isk_pool *pool, size_t n, isk_task_fn *fn, void *ctx);
+void isk__pool_for(isk_pool *pool, size_t n, isk_task_fn *fn, void *ctx);
 /* The machine's online cores (at least 1). */
-int isk_pool_online_cores(void);
+int isk__pool_online_cores(void);
 
 #endif

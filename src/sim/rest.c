@@ -25,21 +25,21 @@ enum { AWAKE = 0, AT_REST = ISK_REST_X | ISK_REST_Y, LOOKED_AT = 4 };
  * to the wall), so no sign as cheap tells rest. */
 #define REST_LOOK_EVERY 4
 
-void isk_rest_init(isk_rest *r)
+void isk__rest_init(isk_rest *r)
 {
     memset(r, 0, sizeof *r);
 }
 
-void isk_rest_free(isk_rest *r)
+void isk__rest_free(isk_rest *r)
 {
     const uint64_t changes = r->changes + 1; /* what was at rest is no more */
     free(r->block);
     free(r->stand_in);
-    isk_rest_init(r);
+    isk__rest_init(r);
     r->changes = changes;
 }
 
-void isk_rest_forget(isk_rest *r, size_t from)
+void isk__rest_forget(isk_rest *r, size_t from)
 {
     if (from < r->valid) {
         r->valid = from;
@@ -47,7 +47,7 @@ void isk_rest_forget(isk_rest *r, size_t from)
     }
 }
 
-void isk_rest_wake_dying(isk_rest *r, const isk_particles *p)
+void isk__rest_wake_dying(isk_rest *r, const isk_particles *p)
 {
     const size_t n = p->count < r->valid ? p->count : r->valid;
     for (size_t k = 0; k * ISK_SIM_BLOCK < n; k++) {
@@ -75,7 +75,7 @@ static size_t described_blocks(const isk_rest *r, size_t count)
                              : (count < r->valid ? count : r->valid) / ISK_SIM_BLOCK;
 }
 
-int isk_rest_all(const isk_rest *r, size_t count)
+int isk__rest_all(const isk_rest *r, size_t count)
 {
     const size_t blocks = (count + ISK_SIM_BLOCK - 1) / ISK_SIM_BLOCK;
     if (count == 0 || count != r->valid || blocks > r->cap)
@@ -86,7 +86,7 @@ int isk_rest_all(const isk_rest *r, size_t count)
     return 1;
 }
 
-size_t isk_rest_blocks(const isk_rest *r, size_t count, unsigned axes)
+size_t isk__rest_blocks(const isk_rest *r, size_t count, unsigned axes)
 {
     size_t n = 0, blocks = described_blocks(r, count);
     for (size_t k = 0; k < blocks && k < r->cap; k++)
@@ -94,19 +94,19 @@ size_t isk_rest_blocks(const isk_rest *r, size_t count, unsigned axes)
     return n;
 }
 
-isk_rest_role isk_rest_skipped(const isk_stage *st)
+isk_rest_role isk__rest_skipped(const isk_stage *st)
 {
     (void)st;
     return ISK_REST_SKIPPED;
 }
 
-isk_rest_role isk_rest_beside(const isk_stage *st)
+isk_rest_role isk__rest_beside(const isk_stage *st)
 {
     (void)st;
     return ISK_REST_BESIDE;
 }
 
-int isk_pipeline_rest_prefix(const isk_pipeline *pl)
+int isk__pipeline_rest_prefix(const isk_pipeline *pl)
 {
     int k = 0;
     while (k < pl->n && pl->stage[k].kind->rest && pl->stage[k].kind->rest(&pl->stage[k]) == ISK_REST_SKIPPED)
@@ -127,17 +127,17 @@ static int rest_ready(isk_rest *r, const isk_pipeline *pl, size_t end, double h,
 {
     size_t blocks = (end + ISK_SIM_BLOCK - 1) / ISK_SIM_BLOCK;
     if (!(r->h == h)) /* == on purpose: a bit-identical step, NaN never */
-        isk_rest_forget(r, 0);
+        isk__rest_forget(r, 0);
     r->h = h;
-    const int prefix = isk_pipeline_rest_prefix(pl);
+    const int prefix = isk__pipeline_rest_prefix(pl);
     if (prefix == 0 || blocks == 0) {
-        isk_rest_forget(r, 0);
+        isk__rest_forget(r, 0);
         return 0;
     }
     if (workers > r->workers) {
         double *a = calloc((size_t)workers * 2 * ISK_SIM_BLOCK, sizeof *a);
         if (!a) {
-            isk_rest_forget(r, 0);
+            isk__rest_forget(r, 0);
             return 0;
         }
         free(r->stand_in);
@@ -148,7 +148,7 @@ static int rest_ready(isk_rest *r, const isk_pipeline *pl, size_t end, double h,
         size_t cap = blocks + blocks / 2;
         isk_rest_block *a = realloc(r->block, cap * sizeof *a);
         if (!a) {
-            isk_rest_forget(r, 0);
+            isk__rest_forget(r, 0);
             return 0;
         }
         r->block = a;
@@ -236,7 +236,7 @@ static void run_skipped(const isk_pipeline *pl, int prefix, isk_block *b, double
     }
 }
 
-int isk_rest_begin(isk_rest *r, const isk_pipeline *pl, size_t end, double h, int workers, size_t *phase)
+int isk__rest_begin(isk_rest *r, const isk_pipeline *pl, size_t end, double h, int workers, size_t *phase)
 {
     const int prefix = rest_ready(r, pl, end, h, workers);
     if (prefix)
@@ -244,7 +244,7 @@ int isk_rest_begin(isk_rest *r, const isk_pipeline *pl, size_t end, double h, in
     return prefix;
 }
 
-void isk_rest_step(isk_rest *r, const isk_pipeline *pl, int prefix, const isk_block *b, size_t phase, int worker)
+void isk__rest_step(isk_rest *r, const isk_pipeline *pl, int prefix, const isk_block *b, size_t phase, int worker)
 {
     isk_rest_block *rb = &r->block[b->first / ISK_SIM_BLOCK];
     if (rb->state == AT_REST)

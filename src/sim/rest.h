@@ -23,21 +23,21 @@
  * stood still it keeps the block's start state in the next run and
  * compares it after the skipped stages; equal, that axis rests.  The
  * owner says what changed between runs:
- *   isk_rest_forget(&r, i)   the particles from i on were moved, removed,
+ *   isk__rest_forget(&r, i)   the particles from i on were moved, removed,
  *                            or written (a cull that keeps the order: from
  *                            the first one it moved; one that fills holes:
- *                            isk_rest_wake_dying before it, its new count
+ *                            isk__rest_wake_dying before it, its new count
  *                            after); particles appended need nothing
- *   isk_rest_forget(&r, 0)   the list or its parameters changed (recompile)
+ *   isk__rest_forget(&r, 0)   the list or its parameters changed (recompile)
  * A different step h forgets by itself.  The runs with states cover
  * [0, end), so blocks count from particle 0.
  *
  *     isk_rest r;
- *     isk_rest_init(&r);
+ *     isk__rest_init(&r);
  *     isk_run_context ctx = {NULL, &r};
- *     isk_pipeline_run(&pl, &store, 0, store.count, h, &scratch, &ctx);
+ *     isk__pipeline_run(&pl, &store, 0, store.count, h, &scratch, &ctx);
  *     ...
- *     isk_rest_free(&r);
+ *     isk__rest_free(&r);
  */
 #ifndef ISKRA_SIM_REST_H
 #define ISKRA_SIM_REST_H
@@ -68,29 +68,29 @@ typedef struct isk_rest {
                              same and every block rests, no particle's x, y has changed */
 } isk_rest;
 
-void isk_rest_init(isk_rest *r);
-void isk_rest_free(isk_rest *r);
-void isk_rest_forget(isk_rest *r, size_t from);
+void isk__rest_init(isk_rest *r);
+void isk__rest_free(isk_rest *r);
+void isk__rest_forget(isk_rest *r, size_t from);
 /* Before a cull that fills the holes with the last particles (nothing
  * else moves): wakes the blocks at rest that hold a particle about to die
  * (age >= life).  The cull's new count is then forgotten from. */
-void isk_rest_wake_dying(isk_rest *r, const isk_particles *p);
+void isk__rest_wake_dying(isk_rest *r, const isk_particles *p);
 /* Blocks of [0, count) at rest on `axes` (ISK_REST_X | ISK_REST_Y: at rest;
  * for the tests and the benchmarks). */
-size_t isk_rest_blocks(const isk_rest *r, size_t count, unsigned axes);
+size_t isk__rest_blocks(const isk_rest *r, size_t count, unsigned axes);
 /* 1 when count > 0 and every block of [0, count) rests on both axes (the
  * states describe exactly those particles). */
-int isk_rest_all(const isk_rest *r, size_t count);
+int isk__rest_all(const isk_rest *r, size_t count);
 
-/* For the runner (stage.c).  isk_rest_begin readies the states for a run
+/* For the runner (stage.c).  isk__rest_begin readies the states for a run
  * over [0, end) with step h and `workers` workers: blocks that reach past
  * the particles they describe (and every block after a change of step)
  * wake, and after the run the states describe [0, end).  It returns how
  * many leading stages a block at rest skips (0: nothing to gain, or no
  * memory for the states: the run then steps every block in full) and the
- * run's phase.  isk_rest_step then runs those stages on block b (the
+ * run's phase.  isk__rest_step then runs those stages on block b (the
  * worker's stand-ins for a resting axis) as its state says. */
-int isk_rest_begin(isk_rest *r, const isk_pipeline *pl, size_t end, double h, int workers, size_t *phase);
-void isk_rest_step(isk_rest *r, const isk_pipeline *pl, int prefix, const isk_block *b, size_t phase, int worker);
+int isk__rest_begin(isk_rest *r, const isk_pipeline *pl, size_t end, double h, int workers, size_t *phase);
+void isk__rest_step(isk_rest *r, const isk_pipeline *pl, int prefix, const isk_block *b, size_t phase, int worker);
 
 #endif

@@ -26,15 +26,15 @@ static inline void screen(size_t n, const double *restrict pos, const double *re
     const double lo_side = a < 0.0 ? 1.0 : 0.0, hi_side = a > 0.0 ? 1.0 : 0.0;
     for (size_t i = 0; i < n; i++) {
         const double p1 = pos[i], v1 = vel[i];
-        /* the basis over the step: isk_fl_basis (k = 0: no drag) */
+        /* the basis over the step: isk__fl_basis (k = 0: no drag) */
         double e = 1.0, d1 = h, d2 = 0.5 * h * h;
         int covered = 1;
         if (with_drag) {
             const double k = drag / m[i], z = k * h;
             isk_fl_basis_series(z, h, &e, &d1, &d2);
-            covered = isgreater(k, 0.0) & isless(z, ISK_FL_SERIES_MAX); /* else isk_fl_basis takes another branch */
+            covered = isgreater(k, 0.0) & isless(z, ISK_FL_SERIES_MAX); /* else isk__fl_basis takes another branch */
         }
-        /* isk_fl_from_end */
+        /* isk__fl_from_end */
         const double U = ((v1 - delta) - a * d1) / e;
         double P = p1 - U * d1 - a * d2;
         /* a start within rounding of a wall is on it: P < lo as lo - P > 0,
@@ -58,7 +58,7 @@ static inline void screen(size_t n, const double *restrict pos, const double *re
     }
 }
 
-void isk_rest_screen_portable(size_t n, const double *pos, const double *vel, const double *m, double drag,
+void isk__rest_screen_portable(size_t n, const double *pos, const double *vel, const double *m, double drag,
                               const isk_rest_axis *ax, double *rest)
 {
     if (m && drag > 0.0)
@@ -89,7 +89,7 @@ static ISK__AVX512_FN void screen_avx512(size_t n, const double *pos, const doub
 }
 #endif
 
-isk_rest_screen_fn isk_rest_screen_avx512(void)
+isk_rest_screen_fn isk__rest_screen_avx512(void)
 {
 #if ISK__SPAN_AVX512
     if (isk__have_avx512())
@@ -98,7 +98,7 @@ isk_rest_screen_fn isk_rest_screen_avx512(void)
     return NULL;
 }
 
-isk_rest_screen_fn isk_rest_screen_avx2(void)
+isk_rest_screen_fn isk__rest_screen_avx2(void)
 {
 #if ISK__SPAN_AVX2
     if (isk__have_avx2())
@@ -107,10 +107,10 @@ isk_rest_screen_fn isk_rest_screen_avx2(void)
     return NULL;
 }
 
-isk_rest_screen_fn isk_rest_screen_pick(void)
+isk_rest_screen_fn isk__rest_screen_pick(void)
 {
-    isk_rest_screen_fn f = isk_rest_screen_avx512();
+    isk_rest_screen_fn f = isk__rest_screen_avx512();
     if (!f)
-        f = isk_rest_screen_avx2();
-    return f ? f : isk_rest_screen_portable;
+        f = isk__rest_screen_avx2();
+    return f ? f : isk__rest_screen_portable;
 }

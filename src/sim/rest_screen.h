@@ -13,7 +13,7 @@
  * for a whole group on vector lanes:
  *
  *     isk_rest_axis ax = {a, delta, h, lo, hi};   // one axis, from the end state
- *     isk_rest_screen_pick()(n, y, vy, m, drag, &ax, rest);   // n <= ISK_WALL_SCREEN
+ *     isk__rest_screen_pick()(n, y, vy, m, drag, &ax, rest);   // n <= ISK_WALL_SCREEN
  *     // rest[j] == 1: impact_axis rests particle j on lo; 2: on hi;
  *     // 0: it does something else, or the screen cannot tell (the series
  *     // does not cover its drag rate, no drag and a mass 0, ...): ask it
@@ -43,13 +43,13 @@ typedef struct isk_rest_axis {
 typedef void (*isk_rest_screen_fn)(size_t n, const double *pos, const double *vel, const double *m, double drag,
                                    const isk_rest_axis *ax, double *rest);
 
-void isk_rest_screen_portable(size_t n, const double *pos, const double *vel, const double *m, double drag,
+void isk__rest_screen_portable(size_t n, const double *pos, const double *vel, const double *m, double drag,
                               const isk_rest_axis *ax, double *rest);
 /* The AVX2 and AVX-512 builds, each NULL when this build or this CPU has
  * none. */
-isk_rest_screen_fn isk_rest_screen_avx2(void);
-isk_rest_screen_fn isk_rest_screen_avx512(void);
+isk_rest_screen_fn isk__rest_screen_avx2(void);
+isk_rest_screen_fn isk__rest_screen_avx512(void);
 /* The fastest build this CPU runs. */
-isk_rest_screen_fn isk_rest_screen_pick(void);
+isk_rest_screen_fn isk__rest_screen_pick(void);
 
 #endif

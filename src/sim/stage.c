@@ -9,12 +9,12 @@
 #include <stdlib.h>
 #include <string.h>
 
-void isk_pipeline_init(isk_pipeline *pl)
+void isk__pipeline_init(isk_pipeline *pl)
 {
     memset(pl, 0, sizeof *pl);
 }
 
-isk_stage *isk_pipeline_add(isk_pipeline *pl, const isk_stage_kind *kind)
+isk_stage *isk__pipeline_add(isk_pipeline *pl, const isk_stage_kind *kind)
 {
     if (pl->n >= ISK_PIPELINE_MAX)
         return NULL;
@@ -24,7 +24,7 @@ isk_stage *isk_pipeline_add(isk_pipeline *pl, const isk_stage_kind *kind)
     return s;
 }
 
-isk_stage *isk_pipeline_insert(isk_pipeline *pl, int at, const isk_stage_kind *kind)
+isk_stage *isk__pipeline_insert(isk_pipeline *pl, int at, const isk_stage_kind *kind)
 {
     if (pl->n >= ISK_PIPELINE_MAX || at < 0 || at > pl->n)
         return NULL;
@@ -36,7 +36,7 @@ isk_stage *isk_pipeline_insert(isk_pipeline *pl, int at, const isk_stage_kind *k
     return s;
 }
 
-unsigned isk_pipeline_needs(const isk_pipeline *pl)
+unsigned isk__pipeline_needs(const isk_pipeline *pl)
 {
     unsigned needs = 0;
     for (int k = 0; k < pl->n; k++)
@@ -44,7 +44,7 @@ unsigned isk_pipeline_needs(const isk_pipeline *pl)
     return needs;
 }
 
-double isk_pipeline_cost(const isk_pipeline *pl, int from)
+double isk__pipeline_cost(const isk_pipeline *pl, int from)
 {
     double c = 0.0;
     for (int k = from; k < pl->n; k++)
@@ -76,7 +76,7 @@ static void run_block(const run_job *r, size_t item, int worker, isk_scratch *s)
     isk_block b = {p, o, n, p->x + o, p->y + o, p->vx + o, p->vy + o, p->m + o, s, 0};
     int k = 0;
     if (r->rest) {
-        isk_rest_step(r->rest, r->pl, r->prefix, &b, r->phase, worker);
+        isk__rest_step(r->rest, r->pl, r->prefix, &b, r->phase, worker);
         k = r->prefix;
     }
     for (; k < r->pl->n; k++)
@@ -86,18 +86,18 @@ static void run_block(const run_job *r, size_t item, int worker, isk_scratch *s)
 static void run_item(void *task, int worker, size_t item)
 {
     const run_job *r = task;
-    run_block(r, item, worker, isk_workers_scratch(r->workers, worker));
+    run_block(r, item, worker, isk__workers_scratch(r->workers, worker));
 }
 
-int isk_pipeline_run(const isk_pipeline *pl, isk_particles *p, size_t begin, size_t end, double h, isk_scratch *s,
+int isk__pipeline_run(const isk_pipeline *pl, isk_particles *p, size_t begin, size_t end, double h, isk_scratch *s,
                      const isk_run_context *ctx)
 {
     run_job r = {pl, p, begin, end, h, ctx ? ctx->workers : NULL, NULL, 0, 0};
     if (end <= begin)
         return s->nonfinite;
-    const int workers = r.workers ? isk_workers_count(r.workers) : 1;
+    const int workers = r.workers ? isk__workers_count(r.workers) : 1;
     if (ISK__FAST_REST && ctx && ctx->rest && begin == 0 &&
-        (r.prefix = isk_rest_begin(ctx->rest, pl, end, h, workers, &r.phase)))
+        (r.prefix = isk__rest_begin(ctx->rest, pl, end, h, workers, &r.phase)))
         r.rest = ctx->rest;
     const size_t blocks = (end - begin + ISK_SIM_BLOCK - 1) / ISK_SIM_BLOCK;
     if (!r.workers) {
@@ -105,26 +105,26 @@ int isk_pipeline_run(const isk_pipeline *pl, isk_particles *p, size_t begin, siz
             run_block(&r, i, 0, s);
         return s->nonfinite;
     }
-    isk_workers_for(r.workers, blocks, ISK_PIPELINE_MIN_PARALLEL_BLOCKS, run_item, &r);
+    isk__workers_for(r.workers, blocks, ISK_PIPELINE_MIN_PARALLEL_BLOCKS, run_item, &r);
     /* what the workers' motion stages found, combined after the join */
     for (int w = 0; w < workers; w++) {
-        isk_scratch *ws = isk_workers_scratch(r.workers, w);
+        isk_scratch *ws = isk__workers_scratch(r.workers, w);
         s->nonfinite |= ws->nonfinite;
         ws->nonfinite = 0;
     }
     return s->nonfinite;
 }
 
-void isk_stage_describe_line(const isk_stage *st, FILE *out)
+void isk__stage_describe_line(const isk_stage *st, FILE *out)
 {
     fprintf(out, "  %-9s ", st->kind->name);
     st->kind->describe(st, out);
 }
 
-void isk_pipeline_describe(const isk_pipeline *pl, FILE *out)
+void isk__pipeline_describe(const isk_pipeline *pl, FILE *out)
 {
     for (int k = 0; k < pl->n; k++) {
-        isk_stage_describe_line(&pl->stage[k], out);
+        isk__stage_describe_line(&pl->stage[k], out);
         fputc('\n', out);
     }
 }

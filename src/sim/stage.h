@@ -10,25 +10,25 @@
  *             stage->kind->run(stage, &block, h);
  *
  * isk_system_step (src/sim/system.c) and the effect runtime (src/scene)
- * both step through isk_pipeline_run, so "the same bits as the thesis's
+ * both step through isk__pipeline_run, so "the same bits as the thesis's
  * loop" holds by construction, not by keeping two loops aligned.  Blocks
  * keep the per-block scratch (force accumulators, RK4 copies, the positions
  * before the move) in L1, and they are the unit that threads will share
  * out: the bytes never depend on who ran which block.
  *
  *     isk_pipeline pl;
- *     isk_pipeline_init(&pl);
- *     isk_stage *s = isk_pipeline_add(&pl, &isk_stage_motion);   // NULL when full
+ *     isk__pipeline_init(&pl);
+ *     isk_stage *s = isk__pipeline_add(&pl, &isk__stage_motion);   // NULL when full
  *     s->u.motion.method = ISK_INTEGRATE_SEMI_EULER;
  *     s->u.motion.forces = &forces;
- *     isk_pipeline_run(&pl, &store, 0, store.count, h, &scratch, NULL);
+ *     isk__pipeline_run(&pl, &store, 0, store.count, h, &scratch, NULL);
  *
  * A stage kind is a row of plain data: its name (for `iskra describe`), its
  * kernel, and a function that writes its parameters in words.  Adding a
  * stage is one kind plus its kernel; no switch anywhere dispatches on it.
  * A stage the scene does not use is simply not in the list.  Stages that
  * run one after the other on the same columns may also be one kind doing
- * them in one pass (isk_stage_drift_sway: the drift, the slowing, the
+ * them in one pass (isk__stage_drift_sway: the drift, the slowing, the
  * sway), chosen by the list's compiler; it describes itself as the stages
  * it stands for, and gives their bits.
  */
@@ -63,8 +63,8 @@ typedef struct isk_block {
 
 typedef struct isk_stage isk_stage;
 
-/* The sway's parameters (isk_stage_oscillate, and the sway of
- * isk_stage_drift_sway). */
+/* The sway's parameters (isk__stage_oscillate, and the sway of
+ * isk__stage_drift_sway). */
 typedef struct isk_stage_osc {
     double decay;                                    /* amplitude *= max(0, 1 - decay*h) */
     const isk_sinlut *table;
@@ -86,7 +86,7 @@ typedef enum isk_rest_role {
 } isk_rest_role;
 
 /* What a stage needs of the runner and of the list (isk_stage_kind.needs);
- * the list's compiler folds them (isk_pipeline_needs) instead of asking
+ * the list's compiler folds them (isk__pipeline_needs) instead of asking
  * about the scene:
  *   ISK_NEEDS_ORDER  its blocks must run one after the other, in particle
  *                    order (it changes what the next particle sees: a
@@ -109,7 +109,7 @@ typedef struct isk_stage_kind {
     unsigned (*needs)(const isk_stage *st);                  /* ISK_NEEDS_*; NULL: none */
 } isk_stage_kind;
 
-/* The axes of a block at rest (isk_block.frozen, isk_rest_blocks). */
+/* The axes of a block at rest (isk_block.frozen, isk__rest_blocks). */
 enum { ISK_REST_X = 1, ISK_REST_Y = 2 };
 
 /* Per-kind parameters.  Pointers refer to data the owner keeps alive and
@@ -117,8 +117,8 @@ enum { ISK_REST_X = 1, ISK_REST_Y = 2 };
 struct isk_stage {
     const isk_stage_kind *kind;
     union {
-        struct { double ax, ay; } drift;                     /* isk_stage_drift */
-        struct { double ax, ay, slowing; } drift_slow;       /* isk_stage_drift_slow */
+        struct { double ax, ay; } drift;                     /* isk__stage_drift */
+        struct { double ax, ay, slowing; } drift_slow;       /* isk__stage_drift_slow */
         struct {
             isk_integrator method;
             isk_forces *forces;
@@ -126,13 +126,13 @@ struct isk_stage {
                                                                 x_old.. (the remember stage, in the same pass) */
         } motion;
         struct { double slowing; } slow;
-        isk_stage_osc osc;                                   /* isk_stage_oscillate */
+        isk_stage_osc osc;                                   /* isk__stage_oscillate */
         struct {
             double ax, ay;                                   /* the drift's constant acceleration */
             double slowing;                                  /* order THESIS or SOUND: the slowing */
             isk_drift_order order;                           /* which drift, with or without the slow stage */
             isk_stage_osc osc;
-        } drift_sway;                                        /* isk_stage_drift_sway */
+        } drift_sway;                                        /* isk__stage_drift_sway */
         struct {
             const isk_bounds *b;
             double drag;                                     /* the motion's linear drag b (impact.h) */
@@ -152,13 +152,13 @@ struct isk_stage {
             double drag;                                     /* the motion's linear drag b */
             int hit;                                         /* count bounces into p->hit (on_hit) */
         } deflect;
-        struct { const struct isk_field *f; } field;         /* isk_stage_field (src/sim/field.h) */
-        struct { double spin, spin_range; } spin;           /* isk_stage_spin: for describe only (rad/s) */
+        struct { const struct isk_field *f; } field;         /* isk__stage_field (src/sim/field.h) */
+        struct { double spin, spin_range; } spin;           /* isk__stage_spin: for describe only (rad/s) */
     } u;
 };
 
 /* Each kind appears at most once in a list, so this is a bound, not a cap
- * that could silently drop anything (isk_pipeline_add reports a full list). */
+ * that could silently drop anything (isk__pipeline_add reports a full list). */
 #define ISK_PIPELINE_MAX 16
 
 typedef struct isk_pipeline {
@@ -167,23 +167,23 @@ typedef struct isk_pipeline {
 } isk_pipeline;
 
 /* What the stages of the list need, or-ed (ISK_NEEDS_*). */
-unsigned isk_pipeline_needs(const isk_pipeline *pl);
+unsigned isk__pipeline_needs(const isk_pipeline *pl);
 /* Inserts a stage of `kind` with zeroed parameters before stage `at` (0 ..
  * pl->n); NULL when the list is full. */
-isk_stage *isk_pipeline_insert(isk_pipeline *pl, int at, const isk_stage_kind *kind);
+isk_stage *isk__pipeline_insert(isk_pipeline *pl, int at, const isk_stage_kind *kind);
 /* What stages [from, n) of the list declare a particle's step costs, in
  * drifts (isk_stage_kind.cost). */
-double isk_pipeline_cost(const isk_pipeline *pl, int from);
+double isk__pipeline_cost(const isk_pipeline *pl, int from);
 /* How many leading stages of the list a block at rest skips (0: no block
  * of this list can rest; rest.c). */
-int isk_pipeline_rest_prefix(const isk_pipeline *pl);
+int isk__pipeline_rest_prefix(const isk_pipeline *pl);
 /* The constant roles, for kinds whose role does not depend on parameters. */
-isk_rest_role isk_rest_skipped(const isk_stage *st);
-isk_rest_role isk_rest_beside(const isk_stage *st);
+isk_rest_role isk__rest_skipped(const isk_stage *st);
+isk_rest_role isk__rest_beside(const isk_stage *st);
 
-void isk_pipeline_init(isk_pipeline *pl);
+void isk__pipeline_init(isk_pipeline *pl);
 /* Appends a stage of `kind` with zeroed parameters; NULL when the list is full. */
-isk_stage *isk_pipeline_add(isk_pipeline *pl, const isk_stage_kind *kind);
+isk_stage *isk__pipeline_add(isk_pipeline *pl, const isk_stage_kind *kind);
 /* What a run may use beyond the calling thread: both optional. */
 struct isk_workers;
 struct isk_rest;
@@ -207,27 +207,27 @@ typedef struct isk_run_context {
  * the run may use.  Returns s->nonfinite, 1 when a motion stage found a
  * non-finite state (the workers' flags are combined into it and cleared:
  * iskra/integrate.h's isk_scratch.nonfinite). */
-int isk_pipeline_run(const isk_pipeline *pl, isk_particles *p, size_t begin, size_t end, double h, isk_scratch *s,
+int isk__pipeline_run(const isk_pipeline *pl, isk_particles *p, size_t begin, size_t end, double h, isk_scratch *s,
                      const isk_run_context *ctx);
 /* One line per stage: "  NAME      parameters". */
-void isk_pipeline_describe(const isk_pipeline *pl, FILE *out);
+void isk__pipeline_describe(const isk_pipeline *pl, FILE *out);
 /* One stage's line without its newline (for a stage that describes itself
  * as the stages it fuses). */
-void isk_stage_describe_line(const isk_stage *st, FILE *out);
+void isk__stage_describe_line(const isk_stage *st, FILE *out);
 
 /* The stage kinds, in the only order they ever appear in a list. */
-extern const isk_stage_kind isk_stage_field;      /* position-dependent accelerations (src/sim/field.h) */
-extern const isk_stage_kind isk_stage_remember;   /* the state before the move (bounces at impact),
+extern const isk_stage_kind isk__stage_field;      /* position-dependent accelerations (src/sim/field.h) */
+extern const isk_stage_kind isk__stage_remember;   /* the state before the move (bounces at impact),
                                                      before a drift; a motion stage keeps it itself */
-extern const isk_stage_kind isk_stage_drift;      /* constant acceleration + semi-implicit Euler, no mass */
-extern const isk_stage_kind isk_stage_drift_slow; /* the same with the fire thesis's slowing in between */
-extern const isk_stage_kind isk_stage_drift_sway; /* drift or drift_slow (+ slow), then oscillate, in one pass */
-extern const isk_stage_kind isk_stage_motion;     /* forces + an integrator (isk_integrate_block) */
-extern const isk_stage_kind isk_stage_slow;       /* v *= max(0, 1 - slowing*h) */
-extern const isk_stage_kind isk_stage_oscillate;  /* the fire thesis's horizontal sway (ISK_PARTICLES_OSC) */
-extern const isk_stage_kind isk_stage_walls;      /* isk_bounds_apply_step (after remember) */
-extern const isk_stage_kind isk_stage_deflect;    /* deflector segments */
-extern const isk_stage_kind isk_stage_spin;       /* angle += spin*h, wrapped (ISK_PARTICLES_ANGLE) */
-extern const isk_stage_kind isk_stage_age;        /* age += h */
+extern const isk_stage_kind isk__stage_drift;      /* constant acceleration + semi-implicit Euler, no mass */
+extern const isk_stage_kind isk__stage_drift_slow; /* the same with the fire thesis's slowing in between */
+extern const isk_stage_kind isk__stage_drift_sway; /* drift or drift_slow (+ slow), then oscillate, in one pass */
+extern const isk_stage_kind isk__stage_motion;     /* forces + an integrator (isk_integrate_block) */
+extern const isk_stage_kind isk__stage_slow;       /* v *= max(0, 1 - slowing*h) */
+extern const isk_stage_kind isk__stage_oscillate;  /* the fire thesis's horizontal sway (ISK_PARTICLES_OSC) */
+extern const isk_stage_kind isk__stage_walls;      /* isk_bounds_apply_step (after remember) */
+extern const isk_stage_kind isk__stage_deflect;    /* deflector segments */
+extern const isk_stage_kind isk__stage_spin;       /* angle += spin*h, wrapped (ISK_PARTICLES_ANGLE) */
+extern const isk_stage_kind isk__stage_age;        /* age += h */
 
 #endif

@@ -32,8 +32,8 @@ static isk_step_motion motion_of(const isk_block *b, double drag, double h)
     return mo;
 }
 
-const isk_stage_kind isk_stage_remember = {
-    .name = "remember", .run = run_remember, .describe = describe_remember, .rest = isk_rest_skipped};
+const isk_stage_kind isk__stage_remember = {
+    .name = "remember", .run = run_remember, .describe = describe_remember, .rest = isk__rest_skipped};
 
 /* A particle's hit byte (iskra/particles.h) after a contact stage that
  * touched it `k` times in this substep: the bounces are counted unless it
@@ -122,7 +122,7 @@ static isk_rest_role rest_walls(const isk_stage *st)
  * is read from its start state (iskra/impact.h). */
 static unsigned needs_walls(const isk_stage *st) { return st->u.walls.curved ? ISK_NEEDS_START : 0u; }
 
-const isk_stage_kind isk_stage_walls = {.name = "walls",
+const isk_stage_kind isk__stage_walls = {.name = "walls",
                                         .run = run_walls,
                                         .describe = describe_walls,
                                         .rest = rest_walls,
@@ -186,7 +186,7 @@ static unsigned needs_deflect(const isk_stage *st)
     return needs;
 }
 
-const isk_stage_kind isk_stage_deflect = {.name = "deflect",
+const isk_stage_kind isk__stage_deflect = {.name = "deflect",
                                           .run = run_deflect,
                                           .describe = describe_deflect,
                                           .rest = NULL /* draws from the owner's stream */,

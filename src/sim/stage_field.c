@@ -13,7 +13,7 @@
 #include "sim/field.h"
 #include "sim/stage.h"
 
-isk_field_turb isk_field_turbulence(double strength, double scale, double speed, uint64_t key)
+isk_field_turb isk__field_turbulence(double strength, double scale, double speed, uint64_t key)
 {
     isk_field_turb t = {strength, 1.0 / scale, speed, key};
     return t;
@@ -46,7 +46,7 @@ static void accel(const isk_field *f, double x, double y, double *ax, double *ay
     for (int k = 0; k < f->nturb; k++) {
         const isk_field_turb *t = &f->turb[k];
         double pu, pv;
-        isk_noise3(t->key, x * t->inv_scale, y * t->inv_scale, t->speed * f->t, &pu, &pv);
+        isk__noise3(t->key, x * t->inv_scale, y * t->inv_scale, t->speed * f->t, &pu, &pv);
         /* the curl of a stream function: (dpsi/dy, -dpsi/dx), divergence-free */
         a += t->strength * pv;
         b -= t->strength * pu;
@@ -55,7 +55,7 @@ static void accel(const isk_field *f, double x, double y, double *ax, double *ay
     *ay = b;
 }
 
-void isk_field_accel(const isk_field *f, double x, double y, double *ax, double *ay)
+void isk__field_accel(const isk_field *f, double x, double y, double *ax, double *ay)
 {
     accel(f, x, y, ax, ay);
 }
@@ -89,5 +89,5 @@ static void describe_field(const isk_stage *st, FILE *out)
 /* The emitter-centred terms, and a gradient noise's curl per turbulence. */
 static double cost_field(const isk_stage *st) { return 2.0 + 6.0 * (double)st->u.field.f->nturb; }
 
-const isk_stage_kind isk_stage_field = {
+const isk_stage_kind isk__stage_field = {
     .name = "field", .run = run_field, .describe = describe_field, .rest = NULL /* a clock */, .cost = cost_field};

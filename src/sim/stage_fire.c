@@ -31,8 +31,8 @@ static void describe_slow(const isk_stage *st, FILE *out)
     fprintf(out, "v *= max(0, 1 - %g*dt)", st->u.slow.slowing);
 }
 
-const isk_stage_kind isk_stage_slow = {
-    .name = "slow", .run = run_slow, .describe = describe_slow, .rest = isk_rest_skipped};
+const isk_stage_kind isk__stage_slow = {
+    .name = "slow", .run = run_slow, .describe = describe_slow, .rest = isk__rest_skipped};
 
 /* The fire thesis's Emitter::Advance: v -= F*dt; v *= slow; p += v*dt (F in
  * its sign is -a), slow clamped at 0. */
@@ -56,8 +56,8 @@ static void describe_drift_slow(const isk_stage *st, FILE *out)
             st->u.drift_slow.ay, st->u.drift_slow.slowing);
 }
 
-const isk_stage_kind isk_stage_drift_slow = {
-    .name = "drift", .run = run_drift_slow, .describe = describe_drift_slow, .rest = isk_rest_skipped};
+const isk_stage_kind isk__stage_drift_slow = {
+    .name = "drift", .run = run_drift_slow, .describe = describe_drift_slow, .rest = isk__rest_skipped};
 
 /* The sway of step h as sim/sway.h takes it. */
 static isk_sway sway_of(const isk_stage_osc *o, double h)
@@ -75,7 +75,7 @@ static void run_oscillate(const isk_stage *st, isk_block *b, double h)
     isk_particles *p = b->p;
     const size_t o = b->first;
     const isk_sway w = sway_of(&st->u.osc, h);
-    isk_sway_run(&w, b->n, b->x, b->vx, p->osc_amp + o, p->osc_phase + o, p->osc_omega + o, p->osc_offset + o);
+    isk__sway_run(&w, b->n, b->x, b->vx, p->osc_amp + o, p->osc_phase + o, p->osc_omega + o, p->osc_offset + o);
 }
 
 static void describe_oscillate(const isk_stage *st, FILE *out)
@@ -87,7 +87,7 @@ static void describe_oscillate(const isk_stage *st, FILE *out)
             mode == ISK_SINLUT_LIBM ? "" : " (4096-entry table)");
 }
 
-const isk_stage_kind isk_stage_oscillate = {
+const isk_stage_kind isk__stage_oscillate = {
     .name = "oscillate", .run = run_oscillate, .describe = describe_oscillate,
     .rest = NULL /* a phase that moves on */};
 
@@ -99,20 +99,20 @@ static int drift_sway_parts(const isk_stage *st, isk_stage part[3])
     memset(part, 0, 3 * sizeof *part);
     int n = 0;
     if (st->u.drift_sway.order == ISK_DRIFT_THESIS) {
-        part[n].kind = &isk_stage_drift_slow;
+        part[n].kind = &isk__stage_drift_slow;
         part[n].u.drift_slow.ax = st->u.drift_sway.ax;
         part[n].u.drift_slow.ay = st->u.drift_sway.ay;
         part[n++].u.drift_slow.slowing = st->u.drift_sway.slowing;
     } else {
-        part[n].kind = &isk_stage_drift;
+        part[n].kind = &isk__stage_drift;
         part[n].u.drift.ax = st->u.drift_sway.ax;
         part[n++].u.drift.ay = st->u.drift_sway.ay;
         if (st->u.drift_sway.order == ISK_DRIFT_SOUND) {
-            part[n].kind = &isk_stage_slow;
+            part[n].kind = &isk__stage_slow;
             part[n++].u.slow.slowing = st->u.drift_sway.slowing;
         }
     }
-    part[n].kind = &isk_stage_oscillate;
+    part[n].kind = &isk__stage_oscillate;
     part[n++].u.osc = st->u.drift_sway.osc;
     return n;
 }
@@ -126,7 +126,7 @@ static void run_drift_sway(const isk_stage *st, isk_block *b, double h)
     const isk_sway w = sway_of(&st->u.drift_sway.osc, h);
     const isk_sway_drift d = {st->u.drift_sway.ax, st->u.drift_sway.ay, slow_factor(st->u.drift_sway.slowing, h),
                               st->u.drift_sway.order};
-    if (isk_sway_drift_build(1, &d, &w, b->n, b->x, b->y, b->vx, b->vy, p->osc_amp + o, p->osc_phase + o,
+    if (isk__sway_drift_build(1, &d, &w, b->n, b->x, b->y, b->vx, b->vy, p->osc_amp + o, p->osc_phase + o,
                              p->osc_omega + o, p->osc_offset + o))
         return;
     isk_stage part[3];
@@ -144,10 +144,10 @@ static void describe_drift_sway(const isk_stage *st, FILE *out)
     part[0].kind->describe(&part[0], out);
     for (int k = 1; k < n; k++) {
         fputc('\n', out);
-        isk_stage_describe_line(&part[k], out);
+        isk__stage_describe_line(&part[k], out);
     }
 }
 
-const isk_stage_kind isk_stage_drift_sway = {
+const isk_stage_kind isk__stage_drift_sway = {
     .name = "drift", .run = run_drift_sway, .describe = describe_drift_sway, .rest = NULL /* the sway's phase */};
 

@@ -50,8 +50,8 @@ static void describe_drift(const isk_stage *st, FILE *out)
         fprintf(out, "semi-euler, no forces");
 }
 
-const isk_stage_kind isk_stage_drift = {
-    .name = "drift", .run = run_drift, .describe = describe_drift, .rest = isk_rest_skipped};
+const isk_stage_kind isk__stage_drift = {
+    .name = "drift", .run = run_drift, .describe = describe_drift, .rest = isk__rest_skipped};
 
 /* Forces are where a finite state can turn non-finite (the thesis's centre
  * rule gives NaN on a potential, iskra/limits.h): the block is checked
@@ -62,7 +62,7 @@ static void run_motion(const isk_stage *st, isk_block *b, double h)
 {
     const isk_motion_start start = isk_motion_start_of(b->s);
     int nonfinite;
-    if (ISK__FAST_FUSED && isk_motion_fused(st->u.motion.method, st->u.motion.forces, b->n, b->x, b->y, b->vx, b->vy, b->m, h,
+    if (ISK__FAST_FUSED && isk__motion_fused(st->u.motion.method, st->u.motion.forces, b->n, b->x, b->y, b->vx, b->vy, b->m, h,
                          st->u.motion.remember ? &start : NULL, &nonfinite)) {
         b->s->nonfinite |= nonfinite; /* the common case in one pass: the same bits (motion_fused.h) */
         return;
@@ -116,7 +116,7 @@ static unsigned needs_motion(const isk_stage *st)
     return isk_forces_laws(st->u.motion.forces) & ISK_LAW_CUTOFF ? ISK_NEEDS_ORDER : 0u;
 }
 
-const isk_stage_kind isk_stage_motion = {.name = "integrate",
+const isk_stage_kind isk__stage_motion = {.name = "integrate",
                                          .run = run_motion,
                                          .describe = describe_motion,
                                          .rest = rest_motion,
@@ -135,5 +135,5 @@ static void describe_age(const isk_stage *st, FILE *out)
     fprintf(out, "age += dt");
 }
 
-const isk_stage_kind isk_stage_age = {
-    .name = "age", .run = run_age, .describe = describe_age, .rest = isk_rest_beside};
+const isk_stage_kind isk__stage_age = {
+    .name = "age", .run = run_age, .describe = describe_age, .rest = isk__rest_beside};

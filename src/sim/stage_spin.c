@@ -38,5 +38,5 @@ static void describe_spin(const isk_stage *st, FILE *out)
             st->u.spin.spin_range * (180.0 / PI));
 }
 
-const isk_stage_kind isk_stage_spin = {
-    .name = "spin", .run = run_spin, .describe = describe_spin, .rest = isk_rest_beside};
+const isk_stage_kind isk__stage_spin = {
+    .name = "spin", .run = run_spin, .describe = describe_spin, .rest = isk__rest_beside};

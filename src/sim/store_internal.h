@@ -6,14 +6,14 @@
 #include "iskra/particles.h"
 
 /* Ensures room for `extra` more particles (all-or-nothing). */
-isk_status isk_store_grow_for(isk_particles *p, size_t extra);
+isk_status isk__store_grow_for(isk_particles *p, size_t extra);
 /* Appends without checks; the caller reserved room.  Returns the slot. */
-size_t isk_store_push(isk_particles *p, double x, double y, double vx, double vy, double m);
+size_t isk__store_push(isk_particles *p, double x, double y, double vx, double vy, double m);
 /* isk_particles_cull (unordered: _cull_unordered) and
  * isk_particles_remove_nonfinite, also telling the first slot whose
  * particle moved or left (count when none did): what a runner's blocks at
  * rest must forget (sim/stage.h). */
-size_t isk_store_cull(isk_particles *p, int unordered, size_t *first_moved);
-size_t isk_store_remove_nonfinite(isk_particles *p, size_t *first_moved);
+size_t isk__store_cull(isk_particles *p, int unordered, size_t *first_moved);
+size_t isk__store_remove_nonfinite(isk_particles *p, size_t *first_moved);
 
 #endif

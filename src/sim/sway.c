@@ -324,7 +324,7 @@ static int gatherable(const isk_sinlut *t)
     return t && t->mask < (uint64_t)INT32_MAX && t->stride <= (uint64_t)INT32_MAX / (t->mask + 1u);
 }
 
-void isk_sway_build(int avx2, const isk_sway *w, size_t n, double *x, double *vx, double *amp, double *phase,
+void isk__sway_build(int avx2, const isk_sway *w, size_t n, double *x, double *vx, double *amp, double *phase,
                     const double *omega, double *offset)
 {
     const unsigned mode = (unsigned)w->mode < ISK_SINLUT_MODE_COUNT ? (unsigned)w->mode : ISK_SINLUT_LIBM;
@@ -332,13 +332,13 @@ void isk_sway_build(int avx2, const isk_sway *w, size_t n, double *x, double *vx
     sway_loops[fast][mode][w->faithful != 0](n, x, vx, amp, phase, omega, offset, w);
 }
 
-void isk_sway_run(const isk_sway *w, size_t n, double *x, double *vx, double *amp, double *phase,
+void isk__sway_run(const isk_sway *w, size_t n, double *x, double *vx, double *amp, double *phase,
                   const double *omega, double *offset)
 {
-    isk_sway_build(1, w, n, x, vx, amp, phase, omega, offset);
+    isk__sway_build(1, w, n, x, vx, amp, phase, omega, offset);
 }
 
-int isk_sway_drift_build(int avx2, const isk_sway_drift *d, const isk_sway *w, size_t n, double *x, double *y,
+int isk__sway_drift_build(int avx2, const isk_sway_drift *d, const isk_sway *w, size_t n, double *x, double *y,
                          double *vx, double *vy, double *amp, double *phase, const double *omega, double *offset)
 {
 #if ISK__SPAN_AVX2

@@ -11,7 +11,7 @@
  * libm's sin, and flush is kernels.h's isk_k_flush.
  *
  *     isk_sway w = {&table, ISK_SINLUT_LERP, 1, decay_factor, h};
- *     isk_sway_run(&w, n, x, vx, amp, phase, omega, offset);
+ *     isk__sway_run(&w, n, x, vx, amp, phase, omega, offset);
  *
  * Two builds of every (sine, faithful) loop, the same bits for every input
  * (tests/test_sway.c checks them against a frozen copy of the scalar code):
@@ -32,7 +32,7 @@
  * -ffp-contract=off, and the avx2 target has none).
  *
  * In a fire's list the sway follows the drift (the constant acceleration
- * with semi-implicit Euler, maybe slowed), and isk_sway_drift_build runs
+ * with semi-implicit Euler, maybe slowed), and isk__sway_drift_build runs
  * both in one pass: the block's x and vx stay in registers from the one
  * to the other, and the eight columns stream together.  AVX2 only; where
  * it declines, the caller runs the stages one after the other, which
@@ -54,14 +54,14 @@ typedef struct isk_sway {
 } isk_sway;
 
 /* Sways the n particles (columns offset to the first). */
-void isk_sway_run(const isk_sway *w, size_t n, double *x, double *vx, double *amp, double *phase,
+void isk__sway_run(const isk_sway *w, size_t n, double *x, double *vx, double *amp, double *phase,
                   const double *omega, double *offset);
 
-/* The drift before the sway (what isk_stage_drift_sway fuses). */
+/* The drift before the sway (what isk__stage_drift_sway fuses). */
 typedef enum isk_drift_order {
-    ISK_DRIFT_PLAIN = 0,  /* isk_stage_drift: v += a*h; p += h*v (vx kept as it is when ax == 0) */
-    ISK_DRIFT_THESIS = 1, /* isk_stage_drift_slow: v = flush((v + a*h)*f); p += h*v */
-    ISK_DRIFT_SOUND = 2   /* isk_stage_drift, then isk_stage_slow: v += a*h; p += h*v; v = flush(v*f) */
+    ISK_DRIFT_PLAIN = 0,  /* isk__stage_drift: v += a*h; p += h*v (vx kept as it is when ax == 0) */
+    ISK_DRIFT_THESIS = 1, /* isk__stage_drift_slow: v = flush((v + a*h)*f); p += h*v */
+    ISK_DRIFT_SOUND = 2   /* isk__stage_drift, then isk__stage_slow: v += a*h; p += h*v; v = flush(v*f) */
 } isk_drift_order;
 
 typedef struct isk_sway_drift {
@@ -73,13 +73,13 @@ typedef struct isk_sway_drift {
 /* The drift d with step w->h, then the sway w, of the n particles in one
  * pass: 1 when the AVX2 build ran (avx2 != 0, the CPU has it, a table sine
  * and a table whose offsets fit 32 bits); else 0, touching nothing. */
-int isk_sway_drift_build(int avx2, const isk_sway_drift *d, const isk_sway *w, size_t n, double *x, double *y,
+int isk__sway_drift_build(int avx2, const isk_sway_drift *d, const isk_sway *w, size_t n, double *x, double *y,
                          double *vx, double *vy, double *amp, double *phase, const double *omega, double *offset);
 
 /* The same with the build chosen: avx2 = 0 the portable loops, 1 the AVX2
  * ones when isk__have_avx2() (raster/span_simd.h), else the portable ones
- * too.  isk_sway_run takes the fastest; the tests compare both. */
-void isk_sway_build(int avx2, const isk_sway *w, size_t n, double *x, double *vx, double *amp, double *phase,
+ * too.  isk__sway_run takes the fastest; the tests compare both. */
+void isk__sway_build(int avx2, const isk_sway *w, size_t n, double *x, double *vx, double *amp, double *phase,
                     const double *omega, double *offset);
 
 #endif

@@ -259,17 +259,17 @@ isk_status isk_system_step(isk_system *s, double dt)
      * Sound walls bounce at the time of impact, from the state before the
      * move (iskra/impact.h). */
     isk_pipeline pl;
-    isk_pipeline_init(&pl);
+    isk__pipeline_init(&pl);
     int potentials = 0;
     for (size_t k = 0; k < s->forces.npot; k++)
         potentials |= s->forces.pot[k].enabled;
     const int start = bounce && s->bounds.mode == ISK_BOUNCE_REFLECT && potentials;
-    isk_stage *motion = isk_pipeline_add(&pl, &isk_stage_motion);
+    isk_stage *motion = isk__pipeline_add(&pl, &isk__stage_motion);
     motion->u.motion.method = s->integrator;
     motion->u.motion.forces = &s->forces;
     motion->u.motion.remember = start;
     if (bounce) {
-        isk_stage *w = isk_pipeline_add(&pl, &isk_stage_walls);
+        isk_stage *w = isk__pipeline_add(&pl, &isk__stage_walls);
         w->u.walls.b = &s->bounds;
         w->u.walls.drag = s->forces.drag;
         w->u.walls.start = start;
@@ -278,7 +278,7 @@ isk_status isk_system_step(isk_system *s, double dt)
         w->u.walls.offset = isk_integrator_velocity_offset(s->integrator);
     }
     if (s->ageing)
-        isk_pipeline_add(&pl, &isk_stage_age);
+        isk__pipeline_add(&pl, &isk__stage_age);
 
     isk_particles *p = &s->particles;
     const int N = s->substeps;
@@ -287,7 +287,7 @@ isk_status isk_system_step(isk_system *s, double dt)
      * off by particle i in substep j is off for every particle in substep
      * j+1.  A state gone non-finite is removed and counted (limits.h). */
     for (int j = 0; j < N; j++) {
-        isk_pipeline_run(&pl, p, 0, p->count, h, &s->scratch, NULL);
+        isk__pipeline_run(&pl, p, 0, p->count, h, &s->scratch, NULL);
         if (s->scratch.nonfinite) {
             s->removed_nonfinite += isk_particles_remove_nonfinite(p);
             s->scratch.nonfinite = 0;

@@ -103,7 +103,7 @@ static inline unsigned mask16(const double *p, double lo, double hi)
     return outside_mask(ISK_WALL_SCREEN, p, lo, hi);
 }
 
-uint64_t isk_wall_screen_portable(size_t n, const double *x, const double *y, const isk_wall_box *w,
+uint64_t isk__wall_screen_portable(size_t n, const double *x, const double *y, const isk_wall_box *w,
                                   isk_wall_outside *out)
 {
     SCREEN_GROUPS(fires16, mask16, ISK_WALL_SCREEN, w->left, w->right, w->bottom, w->top);
@@ -175,7 +175,7 @@ static ISK__AVX512_FN uint64_t screen_avx512(size_t n, const double *x, const do
 #endif
 #undef SCREEN_GROUPS
 
-isk_wall_screen_fn isk_wall_screen_avx512(void)
+isk_wall_screen_fn isk__wall_screen_avx512(void)
 {
 #if ISK__SPAN_AVX512
     if (isk__have_avx512())
@@ -184,7 +184,7 @@ isk_wall_screen_fn isk_wall_screen_avx512(void)
     return NULL;
 }
 
-isk_wall_screen_fn isk_wall_screen_avx2(void)
+isk_wall_screen_fn isk__wall_screen_avx2(void)
 {
 #if ISK__SPAN_AVX2
     if (isk__have_avx2())
@@ -193,10 +193,10 @@ isk_wall_screen_fn isk_wall_screen_avx2(void)
     return NULL;
 }
 
-isk_wall_screen_fn isk_wall_screen_pick(void)
+isk_wall_screen_fn isk__wall_screen_pick(void)
 {
-    isk_wall_screen_fn f = isk_wall_screen_avx512();
+    isk_wall_screen_fn f = isk__wall_screen_avx512();
     if (!f)
-        f = isk_wall_screen_avx2();
-    return f ? f : isk_wall_screen_portable;
+        f = isk__wall_screen_avx2();
+    return f ? f : isk__wall_screen_portable;
 }

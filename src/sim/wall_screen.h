@@ -9,7 +9,7 @@
  *
  *     isk_wall_box box = {left, right, bottom, top};    // a missing wall: -inf / +inf
  *     isk_wall_outside out;
- *     uint64_t flags = isk_wall_screen_pick()(n, x, y, &box, &out);   // n <= ISK_WALL_SCREEN_SPAN
+ *     uint64_t flags = isk__wall_screen_pick()(n, x, y, &box, &out);   // n <= ISK_WALL_SCREEN_SPAN
  *     // bit g of flags: some particle of group g, [g * ISK_WALL_SCREEN, (g + 1) * ISK_WALL_SCREEN),
  *     // is outside; bit j of out.x[g] (out.y[g]): particle g * ISK_WALL_SCREEN + j is outside on x (y)
  *
@@ -53,13 +53,13 @@ typedef struct isk_wall_outside {
 typedef uint64_t (*isk_wall_screen_fn)(size_t n, const double *x, const double *y, const isk_wall_box *w,
                                        isk_wall_outside *out);
 
-uint64_t isk_wall_screen_portable(size_t n, const double *x, const double *y, const isk_wall_box *w,
+uint64_t isk__wall_screen_portable(size_t n, const double *x, const double *y, const isk_wall_box *w,
                                   isk_wall_outside *out);
 /* The AVX2 and AVX-512 builds, each NULL when this build or this CPU has
  * none. */
-isk_wall_screen_fn isk_wall_screen_avx2(void);
-isk_wall_screen_fn isk_wall_screen_avx512(void);
+isk_wall_screen_fn isk__wall_screen_avx2(void);
+isk_wall_screen_fn isk__wall_screen_avx512(void);
 /* The fastest build this CPU runs. */
-isk_wall_screen_fn isk_wall_screen_pick(void);
+isk_wall_screen_fn isk__wall_screen_pick(void);
 
 #endif

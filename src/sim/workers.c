@@ -22,20 +22,20 @@ static void run_on_caller(void *user, isk_task_fn *fn, void *task, size_t n)
         fn(task, 0, i);
 }
 
-static void run_on_pool(void *user, isk_task_fn *fn, void *task, size_t n) { isk_pool_for(user, n, fn, task); }
+static void run_on_pool(void *user, isk_task_fn *fn, void *task, size_t n) { isk__pool_for(user, n, fn, task); }
 
-void isk_workers_init(isk_workers *w)
+void isk__workers_init(isk_workers *w)
 {
     memset(w, 0, sizeof *w);
     w->tasks = (isk_tasks){1, run_on_caller, NULL};
     w->n = 1;
 }
 
-void isk_workers_free(isk_workers *w)
+void isk__workers_free(isk_workers *w)
 {
-    isk_pool_destroy(w->pool);
+    isk__pool_destroy(w->pool);
     free(w->slot);
-    isk_workers_init(w);
+    isk__workers_init(w);
 }
 
 /* n zeroed scratch slots, or NULL. */
@@ -47,7 +47,7 @@ static union isk_workers_slot *slots(int n)
     return s;
 }
 
-isk_status isk_workers_start(isk_workers *w, int threads)
+isk_status isk__workers_start(isk_workers *w, int threads)
 {
     if (threads < 1 || threads > ISK_TASKS_MAX_WORKERS)
         return ISK_ERR_RANGE;
@@ -55,12 +55,12 @@ isk_status isk_workers_start(isk_workers *w, int threads)
     if (!slot)
         return ISK_ERR_NOMEM;
     isk_pool *pool = NULL;
-    isk_status s = ISK__FAST_WORKERS && threads > 1 ? isk_pool_create(&pool, threads) : ISK_OK;
+    isk_status s = ISK__FAST_WORKERS && threads > 1 ? isk__pool_create(&pool, threads) : ISK_OK;
     if (s != ISK_OK) {
         free(slot);
         return s;
     }
-    isk_workers_free(w);
+    isk__workers_free(w);
     w->pool = pool;
     w->slot = slot;
     w->n = threads;
@@ -68,7 +68,7 @@ isk_status isk_workers_start(isk_workers *w, int threads)
     return ISK_OK;
 }
 
-isk_status isk_workers_use(isk_workers *w, const isk_tasks *tasks)
+isk_status isk__workers_use(isk_workers *w, const isk_tasks *tasks)
 {
     if (!tasks || !tasks->run)
         return ISK_ERR_NULL;
@@ -77,18 +77,18 @@ isk_status isk_workers_use(isk_workers *w, const isk_tasks *tasks)
     union isk_workers_slot *slot = slots(tasks->workers);
     if (!slot)
         return ISK_ERR_NOMEM;
-    isk_workers_free(w);
+    isk__workers_free(w);
     w->slot = slot;
     w->n = tasks->workers;
     w->tasks = *tasks;
     return ISK_OK;
 }
 
-int isk_workers_count(const isk_workers *w) { return w->n; }
+int isk__workers_count(const isk_workers *w) { return w->n; }
 
-isk_scratch *isk_workers_scratch(isk_workers *w, int worker) { return &w->slot[worker].s; }
+isk_scratch *isk__workers_scratch(isk_workers *w, int worker) { return &w->slot[worker].s; }
 
-void isk_workers_for(isk_workers *w, size_t n, size_t min_items, isk_task_fn *fn, void *task)
+void isk__workers_for(isk_workers *w, size_t n, size_t min_items, isk_task_fn *fn, void *task)
 {
     if (n == 0)
         return;

@@ -7,11 +7,11 @@
  * only this:
  *
  *     isk_workers w;
- *     isk_workers_init(&w);
- *     if (isk_workers_start(&w, 4) != ISK_OK) ...          // its own threads: the caller + 3
- *     isk_workers_for(&w, nblocks, 8, run_block, &ctx);   // run_block(&ctx, worker, i) for every i
- *     isk_scratch *s = isk_workers_scratch(&w, worker);   // inside run_block
- *     isk_workers_free(&w);
+ *     isk__workers_init(&w);
+ *     if (isk__workers_start(&w, 4) != ISK_OK) ...          // its own threads: the caller + 3
+ *     isk__workers_for(&w, nblocks, 8, run_block, &ctx);   // run_block(&ctx, worker, i) for every i
+ *     isk_scratch *s = isk__workers_scratch(&w, worker);   // inside run_block
+ *     isk__workers_free(&w);
  *
  * Below `min_items` items, or with one worker, everything runs on the
  * calling thread in item order, as worker 0. */
@@ -34,17 +34,17 @@ typedef struct isk_workers {
     int n;                        /* tasks.workers: 1 when nothing is started */
 } isk_workers;
 
-void isk_workers_init(isk_workers *w);
-void isk_workers_free(isk_workers *w);
+void isk__workers_init(isk_workers *w);
+void isk__workers_free(isk_workers *w);
 /* Its own threads: `threads` in 1 .. ISK_TASKS_MAX_WORKERS (the caller is
  * one of them).  ISK_ERR_RANGE, ISK_ERR_NOMEM, ISK_ERR_UNSUPPORTED (a
  * thread could not start); on error w is as it was. */
-isk_status isk_workers_start(isk_workers *w, int threads);
+isk_status isk__workers_start(isk_workers *w, int threads);
 /* A caller's job system instead (validated: ISK_ERR_NULL without run,
  * ISK_ERR_RANGE for a worker count out of range); on error w is as it was. */
-isk_status isk_workers_use(isk_workers *w, const isk_tasks *tasks);
-int isk_workers_count(const isk_workers *w);
-isk_scratch *isk_workers_scratch(isk_workers *w, int worker);
-void isk_workers_for(isk_workers *w, size_t n, size_t min_items, isk_task_fn *fn, void *task);
+isk_status isk__workers_use(isk_workers *w, const isk_tasks *tasks);
+int isk__workers_count(const isk_workers *w);
+isk_scratch *isk__workers_scratch(isk_workers *w, int worker);
+void isk__workers_for(isk_workers *w, size_t n, size_t min_items, isk_task_fn *fn, void *task);
 
 #endif

@@ -225,13 +225,13 @@ static void wait_for_all(void *ctx, int worker, size_t item)
 static void items_run_together(void)
 {
     isk_pool *pool = NULL;
-    CHECK(isk_pool_create(&pool, 3) == ISK_OK, "pool of 3");
+    CHECK(isk__pool_create(&pool, 3) == ISK_OK, "pool of 3");
     if (!pool)
         return;
     together t = {.started = 0};
-    isk_pool_for(pool, 3, wait_for_all, &t);
+    isk__pool_for(pool, 3, wait_for_all, &t);
     CHECK(t.ok[0] && t.ok[1] && t.ok[2], "3 items on 3 threads did not run at the same time");
-    isk_pool_destroy(pool);
+    isk__pool_destroy(pool);
 }
 
 /* Every item of a job is handed out once, to one of the pool's threads,
@@ -257,7 +257,7 @@ static void every_item_once(void)
     static const int POOLS[] = {2, 3, 7};
     for (int k = 0; k < 3; k++) {
         isk_pool *pool = NULL;
-        CHECK(isk_pool_create(&pool, POOLS[k]) == ISK_OK, "pool of %d", POOLS[k]);
+        CHECK(isk__pool_create(&pool, POOLS[k]) == ISK_OK, "pool of %d", POOLS[k]);
         if (!pool)
             continue;
         for (size_t s = 0; s < sizeof SIZES / sizeof SIZES[0]; s++) {
@@ -267,7 +267,7 @@ static void every_item_once(void)
                 break;
             for (size_t i = 0; i < n; i++)
                 atomic_init(&t.count[i], 0);
-            isk_pool_for(pool, n, count_item, &t);
+            isk__pool_for(pool, n, count_item, &t);
             size_t wrong = 0;
             for (size_t i = 0; i < n; i++)
                 wrong += atomic_load(&t.count[i]) != 1;
@@ -276,7 +276,7 @@ static void every_item_once(void)
                   POOLS[k]);
             free(t.count);
         }
-        isk_pool_destroy(pool);
+        isk__pool_destroy(pool);
     }
 }
 
