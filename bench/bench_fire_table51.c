@@ -38,24 +38,24 @@ static isk_effect *fire(size_t n, int table)
     int w = isk_effect_def_add_force(&d, "wind", ISK_FORCE_WIND);
     d.forces[w].accel = isk_vec2_make(0.3, 0);
     isk_emitter_def *e = isk_effect_def_add_emitter(&d, "fire");
-    e->source = ISK_SOURCE_STREAM;
-    e->count = n; /* one burst of n at t = 0, then a steady population */
-    e->capacity = n;
-    e->shape = ISK_SHAPE_DISC;
-    e->shape_a = 1;
-    e->launch = ISK_VELGEN_DISC;
-    e->speed_max = 1;
-    e->life = 1e6; /* finite: the per-particle lifetime check runs, as in the thesis */
-    e->weight = 11;
-    e->slowing = 0.5;
-    e->osc_omega_min = 4;
-    e->osc_omega_max = 12;
-    e->osc_amp_min = 0.05;
-    e->osc_amp_max = 0.2;
-    e->osc_decay = 0.1;
-    e->osc_faithful = 1;
-    e->osc_table = table ? ISK_SINLUT_FLOOR : ISK_SINLUT_LIBM;
-    e->draw = ISK_DRAW_NONE;
+    e->born.source = ISK_SOURCE_STREAM;
+    e->born.count = n; /* one burst of n at t = 0, then a steady population */
+    e->born.capacity = n;
+    e->born.shape = ISK_SHAPE_DISC;
+    e->born.shape_a = 1;
+    e->launch.kind = ISK_VELGEN_DISC;
+    e->launch.speed_max = 1;
+    e->life.seconds = 1e6; /* finite: the per-particle lifetime check runs, as in the thesis */
+    e->motion.weight = 11;
+    e->motion.slowing = 0.5;
+    e->motion.osc_omega_min = 4;
+    e->motion.osc_omega_max = 12;
+    e->motion.osc_amplitude_min = 0.05;
+    e->motion.osc_amplitude_max = 0.2;
+    e->motion.osc_decay = 0.1;
+    e->motion.osc_faithful = 1;
+    e->motion.osc_table = table ? ISK_SINLUT_FLOOR : ISK_SINLUT_LIBM;
+    e->look.draw = ISK_DRAW_NONE;
     isk_emitter_use_force(e, g);
     isk_emitter_use_force(e, w);
     isk_effect *fx = NULL;

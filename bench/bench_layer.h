@@ -37,19 +37,19 @@ static inline isk_status bench_layer_effect(isk_effect **fx, size_t n, isk_draw_
     if (g >= 0 && b >= 0 && e) {
         d.forces[g].g = 9.81;
         d.forces[b].b = 0.3;
-        e->forces[0] = g;
-        e->forces[1] = b;
-        e->nforces = 2;
-        e->source = ISK_SOURCE_LAYER;
-        e->rect[0] = -3.9;
-        e->rect[1] = 3.9;
-        e->rect[2] = -2.9;
-        e->rect[3] = 2.9;
-        e->count = e->limit = e->capacity = n;
-        e->draw = draw;
-        e->color = isk_rgba(255, 200, 120, 160);
-        e->blend = draw == ISK_DRAW_SPRITE ? ISK_BLEND_ADD : ISK_BLEND_OVER;
-        e->size = 8.0 * (8.0 / BENCH_LAYER_W); /* 8 px sprites and discs */
+        e->motion.forces[0] = g;
+        e->motion.forces[1] = b;
+        e->motion.nforces = 2;
+        e->born.source = ISK_SOURCE_LAYER;
+        e->born.rect[0] = -3.9;
+        e->born.rect[1] = 3.9;
+        e->born.rect[2] = -2.9;
+        e->born.rect[3] = 2.9;
+        e->born.count = e->born.limit = e->born.capacity = n;
+        e->look.draw = draw;
+        e->look.color = isk_rgba(255, 200, 120, 160);
+        e->look.blend = draw == ISK_DRAW_SPRITE ? ISK_BLEND_ADD : ISK_BLEND_OVER;
+        e->look.size = 8.0 * (8.0 / BENCH_LAYER_W); /* 8 px sprites and discs */
         s = isk_effect_create(fx, &d, err);
     }
     isk_effect_def_free(&d);

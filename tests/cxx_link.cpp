@@ -23,7 +23,7 @@ int main()
     d.width = 16;
     d.height = 16;
     isk_emitter_def *e = isk_effect_def_add_emitter(&d, "p");
-    e->source = ISK_SOURCE_PARTICLE;
+    e->born.source = ISK_SOURCE_PARTICLE;
     isk_effect *fx = nullptr;
     isk_error err;
     if (isk_effect_create(&fx, &d, &err) != ISK_OK) {

@@ -91,8 +91,8 @@ Test(word_size, store_bytes_never_wrap)
         snprintf(name, sizeof name, "e%d", i);
         isk_emitter_def *e = isk_effect_def_add_emitter(&d, name);
         cr_assert_not_null(e);
-        e->capacity = ISK_PARTICLES_MAX;
-        e->trail = ISK_TRAIL_MAX;
+        e->born.capacity = ISK_PARTICLES_MAX;
+        e->look.trail = ISK_TRAIL_MAX;
     }
     double total = 64.0 * (double)ISK_PARTICLES_MAX * per_particle;
     size_t need = isk_effect_def_memory(&d);

@@ -131,7 +131,7 @@ Test(births, the_fuzzers_burst_every_scene_ends_its_frames, .timeout = 30)
         isk_error err;
         isk_effect *fx = NULL;
         cr_assert_eq(isk_scene_load_string(&d, text, "regression", &err), ISK_OK, "%s", err.message);
-        const size_t capacity = d.emitters[0].capacity;
+        const size_t capacity = d.emitters[0].born.capacity;
         cr_assert_eq(isk_effect_create(&fx, &d, &err), ISK_OK, "%s", err.message);
         isk_canvas c;
         cr_assert_eq(isk_canvas_init(&c, d.width, d.height), ISK_OK);

@@ -156,19 +156,19 @@ Test(contracts, effect_definitions)
     d.nforces = -1;
     cr_assert_eq(isk_effect_create(&fx, &d, &err), ISK_ERR_SIZE);
     d.nforces = 0;
-    e->forces[0] = 9;
-    e->nforces = 1; /* a reference to nothing */
+    e->motion.forces[0] = 9;
+    e->motion.nforces = 1; /* a reference to nothing */
     cr_assert_eq(isk_effect_create(&fx, &d, &err), ISK_ERR_RANGE);
     cr_assert_not_null(strstr(err.message, "force reference 9 does not exist"), "%s", err.message);
-    e->nforces = -4;
+    e->motion.nforces = -4;
     cr_assert_eq(isk_effect_create(&fx, &d, &err), ISK_ERR_RANGE);
-    e->nforces = 0;
-    e->source = (isk_source_kind)42;
+    e->motion.nforces = 0;
+    e->born.source = (isk_source_kind)42;
     cr_assert_eq(isk_effect_create(&fx, &d, &err), ISK_ERR_RANGE);
-    e->source = ISK_SOURCE_PARTICLE;
-    e->color_over_life.n = 99;
+    e->born.source = ISK_SOURCE_PARTICLE;
+    e->look.color_over_life.n = 99;
     cr_assert_eq(isk_effect_create(&fx, &d, &err), ISK_ERR_RANGE);
-    e->color_over_life.n = 0;
+    e->look.color_over_life.n = 0;
     d.width = 0;
     cr_assert_eq(isk_effect_create(&fx, &d, &err), ISK_ERR_RANGE);
     d.width = INT32_MAX;
@@ -206,7 +206,7 @@ Test(contracts, running_effects)
     isk_effect_def_init(&d);
     d.width = d.height = 16;
     isk_emitter_def *e = isk_effect_def_add_emitter(&d, "p");
-    e->source = ISK_SOURCE_PARTICLE;
+    e->born.source = ISK_SOURCE_PARTICLE;
     isk_effect *fx = NULL;
     isk_error err = {0};
     cr_assert_eq(isk_effect_create(&fx, &d, &err), ISK_OK, "%s", err.message);

@@ -31,12 +31,12 @@ static void fig13_def(isk_effect_def *d)
     d->forces[g].g = 0.25;
     d->forces[b].b = 0.1;
     isk_emitter_def *e = isk_effect_def_add_emitter(d, "particle");
-    e->source = ISK_SOURCE_PARTICLE;
-    e->pos = isk_vec2_make(-4, -4);
-    e->vel = isk_vec2_make(1, -2);
-    e->bounded = 1;
-    e->draw_before_bounce = 1;
-    e->draw = ISK_DRAW_DOT_BROWSER; /* as the teaching API's particle */
+    e->born.source = ISK_SOURCE_PARTICLE;
+    e->born.position = isk_vec2_make(-4, -4);
+    e->launch.velocity = isk_vec2_make(1, -2);
+    e->motion.bounded = 1;
+    e->motion.draw_before_bounce = 1;
+    e->look.draw = ISK_DRAW_DOT_BROWSER; /* as the teaching API's particle */
     isk_emitter_use_force(e, g);
     isk_emitter_use_force(e, b);
 }
@@ -92,10 +92,10 @@ static void gauss_def(isk_effect_def *d, int extra_force, double gravity)
         d->forces[w].accel = isk_vec2_make(3, 0);
     }
     isk_emitter_def *e = isk_effect_def_add_emitter(d, "boom");
-    e->source = ISK_SOURCE_EXPLOSION;
-    e->explosion = ISK_EXPLOSION_GAUSS;
-    e->pos = isk_vec2_make(0, -3);
-    e->count = 3000;
+    e->born.source = ISK_SOURCE_EXPLOSION;
+    e->born.explosion = ISK_EXPLOSION_GAUSS;
+    e->born.position = isk_vec2_make(0, -3);
+    e->born.count = 3000;
     isk_emitter_use_force(e, g);
 }
 
@@ -136,7 +136,7 @@ Test(effect, zero_strength_stage_changes_no_pixel)
     gauss_def(&a, 0, 0.0);
     gauss_def(&b, 0, 0.0);
     /* b: no reference to the (zero) gravity at all. */
-    b.emitters[0].nforces = 0;
+    b.emitters[0].motion.nforces = 0;
     isk_canvas ca, cb;
     char da[2048] = {0}, db[2048] = {0};
     render_frames(&a, 200, &ca, da, sizeof da);
@@ -183,17 +183,17 @@ static void stream_def(isk_effect_def *d, double dt)
     int g = isk_effect_def_add_force(d, "gravity", ISK_FORCE_GRAVITY);
     d->forces[g].g = 9.81;
     isk_emitter_def *e = isk_effect_def_add_emitter(d, "fountain");
-    e->source = ISK_SOURCE_STREAM;
-    e->rate = 200;
+    e->born.source = ISK_SOURCE_STREAM;
+    e->born.rate = 200;
     /* Not 0.6: births fall on multiples of 1/200 s, and a particle born at
      * 0.4 s with life 0.6 s dies exactly at t = 1 s, a tie that rounding
      * (of accumulated ages) decides differently for different step sizes. */
-    e->life = 0.6025;
-    e->launch = ISK_VELGEN_CONE;
-    e->angle = 1.5707963267948966; /* up */
-    e->spread = 0.5;
-    e->speed_min = 4;
-    e->speed_max = 6;
+    e->life.seconds = 0.6025;
+    e->launch.kind = ISK_VELGEN_CONE;
+    e->launch.angle = 1.5707963267948966; /* up */
+    e->launch.spread = 0.5;
+    e->launch.speed_min = 4;
+    e->launch.speed_max = 6;
     isk_emitter_use_force(e, g);
 }
 
@@ -230,15 +230,15 @@ Test(effect, thesis_rounding_emits_nothing_at_20_per_s_and_60_fps)
 {
     isk_effect_def d;
     stream_def(&d, 1.0 / 60);
-    d.emitters[0].rate = 20;
-    d.emitters[0].rate_mode = ISK_RATE_THESIS;
+    d.emitters[0].born.rate = 20;
+    d.emitters[0].born.rate_mode = ISK_RATE_THESIS;
     isk_effect *fx = make(&d);
     for (int i = 0; i < 600; i++)
         isk_effect_step(fx);
     cr_assert_eq(isk_effect_particle_count(fx), 0u);
     isk_effect_destroy(fx);
-    d.emitters[0].rate_mode = ISK_RATE_ACCUMULATE;
-    d.emitters[0].life = INFINITY;
+    d.emitters[0].born.rate_mode = ISK_RATE_ACCUMULATE;
+    d.emitters[0].life.seconds = INFINITY;
     fx = make(&d);
     for (int i = 0; i < 600; i++)
         isk_effect_step(fx);
@@ -251,8 +251,8 @@ Test(effect, full_pool_drops_and_counts)
 {
     isk_effect_def d;
     stream_def(&d, 1.0 / 60);
-    d.emitters[0].capacity = 50;
-    d.emitters[0].life = INFINITY;
+    d.emitters[0].born.capacity = 50;
+    d.emitters[0].life.seconds = INFINITY;
     isk_effect *fx = make(&d);
     for (int i = 0; i < 60; i++)
         isk_effect_step(fx);
@@ -303,19 +303,19 @@ Test(effect, validation_messages_name_the_item)
     stream_def(&d, 1.0 / 60);
     isk_effect *fx = NULL;
     isk_error err = {0};
-    d.emitters[0].life = -1;
+    d.emitters[0].life.seconds = -1;
     d.emitters[0].line = 12;
     cr_assert_eq(isk_effect_create(&fx, &d, &err), ISK_ERR_RANGE);
     cr_assert_null(fx);
     cr_assert(strstr(err.message, "emitter 'fountain' (line 12): life") != NULL, "%s", err.message);
-    d.emitters[0].life = 1;
+    d.emitters[0].life.seconds = 1;
     d.dt = NAN;
     cr_assert_eq(isk_effect_create(&fx, &d, &err), ISK_ERR_RANGE);
     cr_assert(strstr(err.message, "dt") != NULL, "%s", err.message);
     d.dt = 0.01;
-    d.emitters[0].forces[0] = 7; /* no such force */
+    d.emitters[0].motion.forces[0] = 7; /* no such force */
     cr_assert_eq(isk_effect_create(&fx, &d, &err), ISK_ERR_RANGE);
-    d.emitters[0].forces[0] = 0;
+    d.emitters[0].motion.forces[0] = 0;
     d.xmin = 5;
     d.xmax = 5;
     cr_assert_neq(isk_effect_create(&fx, &d, &err), ISK_OK);
@@ -330,16 +330,16 @@ Test(effect, oscillation_random_phase_starts_without_a_jump)
     isk_effect_def_init(&d);
     d.dt = 0.001;
     isk_emitter_def *e = isk_effect_def_add_emitter(&d, "flame");
-    e->source = ISK_SOURCE_LAYER;
-    e->rect[0] = 0; e->rect[1] = 0; e->rect[2] = 0; e->rect[3] = 0; /* all at the origin, at rest */
-    e->count = 2000;
-    e->osc_omega_min = 6;
-    e->osc_omega_max = 6;
-    e->osc_amp_min = 0.5;
-    e->osc_amp_max = 0.5;
-    e->osc_table = ISK_SINLUT_LIBM;
+    e->born.source = ISK_SOURCE_LAYER;
+    e->born.rect[0] = 0; e->born.rect[1] = 0; e->born.rect[2] = 0; e->born.rect[3] = 0; /* all at the origin, at rest */
+    e->born.count = 2000;
+    e->motion.osc_omega_min = 6;
+    e->motion.osc_omega_max = 6;
+    e->motion.osc_amplitude_min = 0.5;
+    e->motion.osc_amplitude_max = 0.5;
+    e->motion.osc_table = ISK_SINLUT_LIBM;
     for (int random = 0; random < 2; random++) {
-        e->osc_random_phase = random;
+        e->motion.osc_random_phase = random;
         isk_effect *fx = make(&d);
         isk_effect_step(fx);
         const isk_particles *p = isk_effect_particles(fx, 0);
@@ -370,12 +370,12 @@ Test(effect, every_dot_rule_draws_with_a_colour_ramp)
         for (int ramp = 0; ramp < 2; ramp++) {
             isk_effect_def d;
             gauss_def(&d, 0, 1.0);
-            d.emitters[0].draw = modes[k];
-            d.emitters[0].life = 100;
+            d.emitters[0].look.draw = modes[k];
+            d.emitters[0].life.seconds = 100;
             if (ramp) {
-                d.emitters[0].color_over_life.n = 2;
-                d.emitters[0].color_over_life.stops[0] = (isk_color_stop){0.0, ISK_YELLOW};
-                d.emitters[0].color_over_life.stops[1] = (isk_color_stop){1.0, ISK_YELLOW};
+                d.emitters[0].look.color_over_life.n = 2;
+                d.emitters[0].look.color_over_life.stops[0] = (isk_color_stop){0.0, ISK_YELLOW};
+                d.emitters[0].look.color_over_life.stops[1] = (isk_color_stop){1.0, ISK_YELLOW};
             }
             render_frames(&d, 50, ramp ? &b : &a, NULL, 0);
             isk_effect_def_free(&d);
@@ -393,13 +393,13 @@ Test(effect, every_source_honours_the_life_range)
         isk_effect_def d;
         isk_effect_def_init(&d);
         isk_emitter_def *e = isk_effect_def_add_emitter(&d, "src");
-        e->source = sources[k];
-        e->explosion = ISK_EXPLOSION_MULTI_COULOMB; /* batches: the scheduled path */
-        e->rect[1] = 1;
-        e->rect[3] = 1;
-        e->count = 500;
-        e->life = 2.0;
-        e->life_range = 1.0;
+        e->born.source = sources[k];
+        e->born.explosion = ISK_EXPLOSION_MULTI_COULOMB; /* batches: the scheduled path */
+        e->born.rect[1] = 1;
+        e->born.rect[3] = 1;
+        e->born.count = 500;
+        e->life.seconds = 2.0;
+        e->life.range = 1.0;
         isk_effect *fx = make(&d);
         for (int i = 0; i < 10; i++)
             isk_effect_step(fx);

@@ -36,9 +36,9 @@ static isk_emitter_def *stream(isk_effect_def *d, double dt, double rate)
     d->dt = dt;
     d->seed = 11;
     isk_emitter_def *e = isk_effect_def_add_emitter(d, "s");
-    e->source = ISK_SOURCE_STREAM;
-    e->rate = rate;
-    e->vel = isk_vec2_make(0, 1);
+    e->born.source = ISK_SOURCE_STREAM;
+    e->born.rate = rate;
+    e->launch.velocity = isk_vec2_make(0, 1);
     return e;
 }
 
@@ -48,7 +48,7 @@ static isk_emitter_def *single(isk_effect_def *d, double dt)
     isk_effect_def_init(d);
     d->dt = dt;
     isk_emitter_def *e = isk_effect_def_add_emitter(d, "p");
-    e->source = ISK_SOURCE_PARTICLE;
+    e->born.source = ISK_SOURCE_PARTICLE;
     return e;
 }
 
@@ -57,14 +57,14 @@ static isk_emitter_def *single(isk_effect_def *d, double dt)
 static void cone_stream(isk_effect_def *d, double dt, int with_wind)
 {
     isk_emitter_def *e = stream(d, dt, 200);
-    e->life = 0.6025; /* no death exactly at t = 1 s (births are on a 1/200 s grid) */
-    e->launch = ISK_VELGEN_CONE;
-    e->angle = PI / 2;
-    e->spread = 0.5;
-    e->speed_min = 4;
-    e->speed_max = 6;
-    e->shape = ISK_SHAPE_DISC;
-    e->shape_a = 0.5;
+    e->life.seconds = 0.6025; /* no death exactly at t = 1 s (births are on a 1/200 s grid) */
+    e->launch.kind = ISK_VELGEN_CONE;
+    e->launch.angle = PI / 2;
+    e->launch.spread = 0.5;
+    e->launch.speed_min = 4;
+    e->launch.speed_max = 6;
+    e->born.shape = ISK_SHAPE_DISC;
+    e->born.shape_a = 0.5;
     if (with_wind) {
         int w = isk_effect_def_add_force(d, "wind", ISK_FORCE_WIND);
         d->forces[w].accel = isk_vec2_make(0, -9.81);
@@ -117,7 +117,7 @@ Test(fire, backdated_birth_worked_example)
 {
     isk_effect_def d;
     isk_emitter_def *em = stream(&d, 0.01, 5);
-    em->life = 0.3;
+    em->life.seconds = 0.3;
     isk_effect *fx = make(&d);
     fx_group *g = &fx->groups[0];
     allocations = 0;
@@ -152,12 +152,12 @@ Test(fire, thesis_rounding_and_accumulator)
     for (int k = 0; k < 3; k++) {
         isk_effect_def d;
         isk_emitter_def *e = stream(&d, 1.0 / 60, rates[k]);
-        e->rate_mode = ISK_RATE_THESIS;
+        e->born.rate_mode = ISK_RATE_THESIS;
         isk_effect *fx = make(&d);
         steps(fx, 600);
         cr_assert_eq(isk_effect_particle_count(fx), 600 * per_frame[k], "rate %g", rates[k]);
         isk_effect_destroy(fx);
-        d.emitters[0].rate_mode = ISK_RATE_ACCUMULATE;
+        d.emitters[0].born.rate_mode = ISK_RATE_ACCUMULATE;
         fx = make(&d);
         steps(fx, 600);
         cr_assert_eq(isk_effect_particle_count(fx), (size_t)(rates[k] * 10), "rate %g", rates[k]);
@@ -175,9 +175,9 @@ Test(fire, thesis_jitter_whole_ms_force_and_position_only)
 {
     isk_effect_def d;
     isk_emitter_def *e = stream(&d, 0.1, 100000); /* 10,000 per frame */
-    e->rate_mode = ISK_RATE_THESIS;
-    e->birth = ISK_BIRTH_THESIS_JITTER;
-    e->capacity = 10000;
+    e->born.rate_mode = ISK_RATE_THESIS;
+    e->born.birth = ISK_BIRTH_THESIS_JITTER;
+    e->born.capacity = 10000;
     isk_effect *fx = make(&d);
     steps(fx, 1);
     const isk_particles *p = isk_effect_particles(fx, 0);
@@ -194,10 +194,10 @@ Test(fire, thesis_jitter_whole_ms_force_and_position_only)
     isk_effect_destroy(fx);
 
     /* With weight 2 (upward acceleration), slowing 5/s and oscillation. */
-    d.emitters[0].weight = 2;
-    d.emitters[0].slowing = 5;
-    d.emitters[0].osc_omega_min = d.emitters[0].osc_omega_max = 10;
-    d.emitters[0].osc_amp_min = d.emitters[0].osc_amp_max = 1;
+    d.emitters[0].motion.weight = 2;
+    d.emitters[0].motion.slowing = 5;
+    d.emitters[0].motion.osc_omega_min = d.emitters[0].motion.osc_omega_max = 10;
+    d.emitters[0].motion.osc_amplitude_min = d.emitters[0].motion.osc_amplitude_max = 1;
     fx = make(&d);
     steps(fx, 1);
     p = isk_effect_particles(fx, 0);
@@ -218,8 +218,8 @@ Test(fire, steady_state_population)
 {
     isk_effect_def d;
     isk_emitter_def *e = stream(&d, 1.0 / 60, 100);
-    e->life = 1.0;
-    e->life_range = 0.5;
+    e->life.seconds = 1.0;
+    e->life.range = 0.5;
     isk_effect *fx = make(&d);
     steps(fx, 270); /* 3 (L + D) */
     double sum = 0;
@@ -241,7 +241,7 @@ Test(fire, dies_when_age_reaches_life)
 {
     isk_effect_def d;
     isk_emitter_def *e = single(&d, 0.125);
-    e->life = 1.0;
+    e->life.seconds = 1.0;
     isk_effect *fx = make(&d);
     steps(fx, 7);
     cr_assert_eq(isk_effect_particle_count(fx), 1u);
@@ -257,8 +257,8 @@ Test(fire, lifetime_min_plus_range)
 {
     isk_effect_def d;
     isk_emitter_def *e = stream(&d, 1.0 / 60, 6000);
-    e->life = 1.0;
-    e->life_range = 0.5;
+    e->life.seconds = 1.0;
+    e->life.range = 0.5;
     isk_effect *fx = make(&d);
     steps(fx, 30);
     const isk_particles *p = isk_effect_particles(fx, 0);
@@ -283,9 +283,9 @@ Test(fire, pool_overflow_counted)
 {
     isk_effect_def d;
     isk_emitter_def *e = stream(&d, 0.125, 0);
-    e->count = 60;
-    e->burst_every = 0.5;
-    e->capacity = 100;
+    e->born.count = 60;
+    e->born.burst_every = 0.5;
+    e->born.capacity = 100;
     isk_effect *fx = make(&d);
     steps(fx, 8); /* to t = 1.0 */
     cr_assert_eq(isk_effect_particle_count(fx), 100u);
@@ -325,8 +325,8 @@ Test(fire, buoyancy_and_gravity_multiplier)
 {
     isk_effect_def d;
     isk_emitter_def *e = stream(&d, 1.0 / 64, 100);
-    e->vel = isk_vec2_make(0, 0);
-    e->weight = 12;
+    e->launch.velocity = isk_vec2_make(0, 0);
+    e->motion.weight = 12;
     int g = isk_effect_def_add_force(&d, "gravity", ISK_FORCE_GRAVITY);
     d.forces[g].g = 9.81;
     isk_emitter_use_force(&d.emitters[0], g);
@@ -357,7 +357,7 @@ Test(fire, buoyancy_and_gravity_multiplier)
     d.forces[g].g = 9.81;
     for (int k = 0; k < 2; k++) {
         isk_emitter_def *pe = isk_effect_def_add_emitter(&d, k ? "double" : "single");
-        pe->gravity_mult = k ? 2.0 : 1.0;
+        pe->motion.gravity_multiplier = k ? 2.0 : 1.0;
         isk_emitter_use_force(pe, g);
     }
     fx = make(&d);
@@ -382,8 +382,8 @@ Test(fire, slowing_clamped_and_both_orders)
     for (int faithful = 0; faithful <= 1; faithful++) {
         isk_effect_def d;
         isk_emitter_def *e = single(&d, 0.1);
-        e->weight = 10;
-        e->slow_faithful = faithful;
+        e->motion.weight = 10;
+        e->motion.slow_faithful = faithful;
         isk_effect *fx = make(&d);
         const isk_particles *p = isk_effect_particles(fx, 0);
         steps(fx, 1);
@@ -392,8 +392,8 @@ Test(fire, slowing_clamped_and_both_orders)
         cr_assert_float_eq(p->y[0], 0.3, 1e-12);
         isk_effect_destroy(fx);
 
-        d.emitters[0].slowing = 20;
-        d.emitters[0].vel = isk_vec2_make(3, 0);
+        d.emitters[0].motion.slowing = 20;
+        d.emitters[0].launch.velocity = isk_vec2_make(3, 0);
         fx = make(&d);
         p = isk_effect_particles(fx, 0);
         for (int k = 0; k < 5; k++) {
@@ -419,9 +419,9 @@ Test(fire, slowing_order_terminal_drift)
         for (int faithful = 0; faithful <= 1; faithful++) {
             isk_effect_def d;
             isk_emitter_def *e = single(&d, dts[k]);
-            e->weight = 10;
-            e->slowing = 2;
-            e->slow_faithful = faithful;
+            e->motion.weight = 10;
+            e->motion.slowing = 2;
+            e->motion.slow_faithful = faithful;
             isk_effect *fx = make(&d);
             const isk_particles *p = isk_effect_particles(fx, 0);
             steps(fx, (int)(20 / dts[k])); /* 20 s: 40 time constants */
@@ -441,8 +441,8 @@ Test(fire, thesis_slowing_order_needs_constant_forces)
 {
     isk_effect_def d;
     isk_emitter_def *e = single(&d, 0.01);
-    e->slowing = 1;
-    e->slow_faithful = 1;
+    e->motion.slowing = 1;
+    e->motion.slow_faithful = 1;
     int b = isk_effect_def_add_force(&d, "drag", ISK_FORCE_DRAG);
     d.forces[b].b = 0.5;
     isk_emitter_use_force(e, b);
@@ -463,10 +463,10 @@ static void osc_run(int faithful, int table, double out[4])
 {
     isk_effect_def d;
     isk_emitter_def *e = single(&d, 0.25);
-    e->osc_omega_min = e->osc_omega_max = 2 * PI;
-    e->osc_amp_min = e->osc_amp_max = 1;
-    e->osc_faithful = faithful;
-    e->osc_table = table ? ISK_SINLUT_FLOOR : ISK_SINLUT_LIBM;
+    e->motion.osc_omega_min = e->motion.osc_omega_max = 2 * PI;
+    e->motion.osc_amplitude_min = e->motion.osc_amplitude_max = 1;
+    e->motion.osc_faithful = faithful;
+    e->motion.osc_table = table ? ISK_SINLUT_FLOOR : ISK_SINLUT_LIBM;
     isk_effect *fx = make(&d);
     for (int k = 0; k < 4; k++) {
         steps(fx, 1);
@@ -503,10 +503,10 @@ Test(fire, oscillation_amplitude_decay)
 {
     isk_effect_def d;
     isk_emitter_def *e = single(&d, 0.1);
-    e->osc_omega_min = e->osc_omega_max = (PI / 2) / 1.1;
-    e->osc_amp_min = e->osc_amp_max = 1;
-    e->osc_decay = 0.5;
-    e->osc_table = ISK_SINLUT_LIBM;
+    e->motion.osc_omega_min = e->motion.osc_omega_max = (PI / 2) / 1.1;
+    e->motion.osc_amplitude_min = e->motion.osc_amplitude_max = 1;
+    e->motion.osc_decay = 0.5;
+    e->motion.osc_table = ISK_SINLUT_LIBM;
     isk_effect *fx = make(&d);
     steps(fx, 10);
     cr_assert_float_eq(fx->groups[0].store.osc_amp[0], pow(0.95, 10), 1e-12);
@@ -525,10 +525,10 @@ Test(fire, oscillation_faithful_drift_term)
     for (int faithful = 0; faithful <= 1; faithful++) {
         isk_effect_def d;
         isk_emitter_def *e = single(&d, 1.0 / 600);
-        e->osc_omega_min = e->osc_omega_max = 2 * PI;
-        e->osc_amp_min = e->osc_amp_max = 1;
-        e->osc_faithful = faithful;
-        e->osc_table = ISK_SINLUT_LIBM;
+        e->motion.osc_omega_min = e->motion.osc_omega_max = 2 * PI;
+        e->motion.osc_amplitude_min = e->motion.osc_amplitude_max = 1;
+        e->motion.osc_faithful = faithful;
+        e->motion.osc_table = ISK_SINLUT_LIBM;
         isk_effect *fx = make(&d);
         steps(fx, 150);
         double want = sin(PI / 2) + (faithful ? (1 - cos(PI / 2)) / (2 * PI) : 0);
@@ -546,13 +546,13 @@ Test(fire, sparks_bounce_off_the_ground)
 {
     isk_effect_def d;
     isk_emitter_def *e = stream(&d, 1.0 / 60, 100);
-    e->pos = isk_vec2_make(0, 0.5);
-    e->launch = ISK_VELGEN_CONE;
-    e->angle = PI / 2;
-    e->spread = 1.5;
-    e->speed_min = 1;
-    e->speed_max = 4;
-    e->life = 3;
+    e->born.position = isk_vec2_make(0, 0.5);
+    e->launch.kind = ISK_VELGEN_CONE;
+    e->launch.angle = PI / 2;
+    e->launch.spread = 1.5;
+    e->launch.speed_min = 1;
+    e->launch.speed_max = 4;
+    e->life.seconds = 3;
     int g = isk_effect_def_add_force(&d, "gravity", ISK_FORCE_GRAVITY);
     d.forces[g].g = 9.81;
     isk_deflector floor = isk_deflector_segment(5, 0, -5, 0);
@@ -581,14 +581,14 @@ Test(fire, describe_lists_fire_stages)
 {
     isk_effect_def d;
     isk_emitter_def *e = stream(&d, 1.0 / 60, 20);
-    e->weight = 1;
-    e->slowing = 0.5;
-    e->slow_faithful = 1;
-    e->osc_omega_min = e->osc_omega_max = 3;
-    e->osc_amp_min = e->osc_amp_max = 0.1;
-    e->life = 2;
-    e->rate_mode = ISK_RATE_THESIS;
-    e->birth = ISK_BIRTH_THESIS_JITTER;
+    e->motion.weight = 1;
+    e->motion.slowing = 0.5;
+    e->motion.slow_faithful = 1;
+    e->motion.osc_omega_min = e->motion.osc_omega_max = 3;
+    e->motion.osc_amplitude_min = e->motion.osc_amplitude_max = 0.1;
+    e->life.seconds = 2;
+    e->born.rate_mode = ISK_RATE_THESIS;
+    e->born.birth = ISK_BIRTH_THESIS_JITTER;
     isk_effect *fx = make(&d);
     char buf[2048] = {0};
     FILE *f = fmemopen(buf, sizeof buf, "w");

@@ -101,15 +101,15 @@ Test(fire_presets, cocos_numbers_in_world_units)
     const isk_emitter_def *e = &d.emitters[f];
     cr_assert_str_eq(e->name, "fire");
     /* scale 2: 2 world units per 100 points, so posVar (40, 20) -> (0.8, 0.4). */
-    cr_assert_float_eq(e->shape_a, 0.8, 1e-12);
-    cr_assert_float_eq(e->shape_b, 0.4, 1e-12);
-    cr_assert_float_eq(e->speed_min, 0.8, 1e-12);
-    cr_assert_float_eq(e->speed_max, 1.6, 1e-12);
-    cr_assert_float_eq(e->size, 1.08, 1e-12);
-    cr_assert_float_eq(e->rate, 250.0 / 3.0, 1e-12);
-    cr_assert_eq(e->capacity, 250u);
-    cr_assert_eq(e->blend, ISK_BLEND_ADD);
-    cr_assert(e->pos.x == 1 && e->pos.y == 2);
+    cr_assert_float_eq(e->born.shape_a, 0.8, 1e-12);
+    cr_assert_float_eq(e->born.shape_b, 0.4, 1e-12);
+    cr_assert_float_eq(e->launch.speed_min, 0.8, 1e-12);
+    cr_assert_float_eq(e->launch.speed_max, 1.6, 1e-12);
+    cr_assert_float_eq(e->look.size, 1.08, 1e-12);
+    cr_assert_float_eq(e->born.rate, 250.0 / 3.0, 1e-12);
+    cr_assert_eq(e->born.capacity, 250u);
+    cr_assert_eq(e->look.blend, ISK_BLEND_ADD);
+    cr_assert(e->born.position.x == 1 && e->born.position.y == 2);
     cr_assert_eq(d.nforces, 0); /* fire needs no force */
 
     int s = isk_preset_sparks(&d, "embers", isk_vec2_make(0, 0), 1.0);
@@ -117,17 +117,17 @@ Test(fire_presets, cocos_numbers_in_world_units)
     cr_assert_eq(d.nforces, 1);
     cr_assert_str_eq(d.forces[0].name, "embers_gravity");
     cr_assert_float_eq(d.forces[0].g, 3.0, 1e-12);
-    cr_assert_eq(d.emitters[s].nforces, 1);
+    cr_assert_eq(d.emitters[s].motion.nforces, 1);
     /* Calling again with the same name reuses (and updates) the force. */
     cr_assert_eq(isk_preset_sparks(&d, "embers", isk_vec2_make(0, 0), 2.0), 2);
     cr_assert_eq(d.nforces, 1);
     cr_assert_float_eq(d.forces[0].g, 6.0, 1e-12);
 
     int w = isk_preset_fountain(&d, NULL, isk_vec2_make(0, 0), 1.0);
-    cr_assert_float_eq(d.forces[d.emitters[w].forces[0]].g, 0.9, 1e-12); /* cocos gravity -90 */
+    cr_assert_float_eq(d.forces[d.emitters[w].motion.forces[0]].g, 0.9, 1e-12); /* cocos gravity -90 */
     int x = isk_preset_explosion(&d, NULL, isk_vec2_make(0, 0), 1.0);
-    cr_assert_eq(d.emitters[x].count, 700u);
-    cr_assert_float_eq(d.emitters[x].spread, 2 * 3.14159265358979323846, 1e-12);
+    cr_assert_eq(d.emitters[x].born.count, 700u);
+    cr_assert_float_eq(d.emitters[x].launch.spread, 2 * 3.14159265358979323846, 1e-12);
     isk_effect_def_free(&d);
 }
 

@@ -115,41 +115,41 @@ static void flame_def(isk_effect_def *d, int ramps, isk_blend blend)
     d->height = 200;
     d->seed = 5;
     isk_emitter_def *e = isk_effect_def_add_emitter(d, "flame");
-    e->source = ISK_SOURCE_STREAM;
-    e->pos = isk_vec2_make(0, -6);
-    e->shape = ISK_SHAPE_ELLIPSE;
-    e->shape_a = 3;
-    e->shape_b = 1;
-    e->launch = ISK_VELGEN_CONE;
-    e->angle = PI / 2;
-    e->spread = 0.6;
-    e->speed_min = 4;
-    e->speed_max = 8;
-    e->weight = 3;
-    e->rate = 300;
-    e->life = 0.8;
-    e->life_range = 1.0;
-    e->osc_omega_min = -9;
-    e->osc_omega_max = 9;
-    e->osc_amp_min = 0.3;
-    e->osc_amp_max = 1;
-    e->draw = ISK_DRAW_SPRITE;
-    e->sprite = ISK_SPRITE_LINEAR;
-    e->size = 4;
-    e->color = isk_rgba(255, 140, 30, 90);
-    e->blend = blend;
+    e->born.source = ISK_SOURCE_STREAM;
+    e->born.position = isk_vec2_make(0, -6);
+    e->born.shape = ISK_SHAPE_ELLIPSE;
+    e->born.shape_a = 3;
+    e->born.shape_b = 1;
+    e->launch.kind = ISK_VELGEN_CONE;
+    e->launch.angle = PI / 2;
+    e->launch.spread = 0.6;
+    e->launch.speed_min = 4;
+    e->launch.speed_max = 8;
+    e->motion.weight = 3;
+    e->born.rate = 300;
+    e->life.seconds = 0.8;
+    e->life.range = 1.0;
+    e->motion.osc_omega_min = -9;
+    e->motion.osc_omega_max = 9;
+    e->motion.osc_amplitude_min = 0.3;
+    e->motion.osc_amplitude_max = 1;
+    e->look.draw = ISK_DRAW_SPRITE;
+    e->look.sprite = ISK_SPRITE_LINEAR;
+    e->look.size = 4;
+    e->look.color = isk_rgba(255, 140, 30, 90);
+    e->look.blend = blend;
     if (ramps) {
-        e->color_over_life.n = 4;
-        e->color_over_life.stops[0] = (isk_color_stop){0.0, isk_rgba(255, 230, 120, 90)};
-        e->color_over_life.stops[1] = (isk_color_stop){0.3, isk_rgba(255, 140, 30, 90)};
-        e->color_over_life.stops[2] = (isk_color_stop){0.7, isk_rgba(200, 40, 10, 60)};
-        e->color_over_life.stops[3] = (isk_color_stop){1.0, isk_rgba(60, 0, 0, 0)};
-        e->alpha_over_life.n = 2;
-        e->alpha_over_life.stops[0] = (isk_scalar_stop){0.0, 1.0};
-        e->alpha_over_life.stops[1] = (isk_scalar_stop){1.0, 0.5};
-        e->size_over_life.n = 2;
-        e->size_over_life.stops[0] = (isk_scalar_stop){0.0, 1.0};
-        e->size_over_life.stops[1] = (isk_scalar_stop){1.0, 0.3};
+        e->look.color_over_life.n = 4;
+        e->look.color_over_life.stops[0] = (isk_color_stop){0.0, isk_rgba(255, 230, 120, 90)};
+        e->look.color_over_life.stops[1] = (isk_color_stop){0.3, isk_rgba(255, 140, 30, 90)};
+        e->look.color_over_life.stops[2] = (isk_color_stop){0.7, isk_rgba(200, 40, 10, 60)};
+        e->look.color_over_life.stops[3] = (isk_color_stop){1.0, isk_rgba(60, 0, 0, 0)};
+        e->look.alpha_over_life.n = 2;
+        e->look.alpha_over_life.stops[0] = (isk_scalar_stop){0.0, 1.0};
+        e->look.alpha_over_life.stops[1] = (isk_scalar_stop){1.0, 0.5};
+        e->look.size_over_life.n = 2;
+        e->look.size_over_life.stops[0] = (isk_scalar_stop){0.0, 1.0};
+        e->look.size_over_life.stops[1] = (isk_scalar_stop){1.0, 0.3};
     }
 }
 
@@ -234,12 +234,12 @@ Test(fire_render, emitter_draw_order)
             const isk_color cols[2] = {{255, 0, 0, 255}, {0, 0, 255, 255}};
             for (int k = 0; k < 2; k++) {
                 isk_emitter_def *e = isk_effect_def_add_emitter(&d, k ? "blue" : "red");
-                e->draw = ISK_DRAW_SPRITE;
-                e->sprite = ISK_SPRITE_DISC;
-                e->size = 4;
-                e->color = cols[k];
-                e->blend = (isk_blend)blend;
-                e->order = swap ? 1 - k : k;
+                e->look.draw = ISK_DRAW_SPRITE;
+                e->look.sprite = ISK_SPRITE_DISC;
+                e->look.size = 4;
+                e->look.color = cols[k];
+                e->look.blend = (isk_blend)blend;
+                e->look.order = swap ? 1 - k : k;
             }
             isk_effect *fx = make(&d);
             cr_assert_eq(isk_canvas_init(&c[swap], 100, 100), ISK_OK);
@@ -277,14 +277,14 @@ Test(fire_render, ramps_equal_exact_interpolation)
         d.width = d.height = 20;
         d.dt = 0.125;
         isk_emitter_def *e = isk_effect_def_add_emitter(&d, "p");
-        e->life = 1.0;
-        e->draw = ISK_DRAW_PIXEL;
-        e->blend = ISK_BLEND_REPLACE;
-        e->color_over_life.n = 5;
-        memcpy(e->color_over_life.stops, stops, sizeof stops);
+        e->life.seconds = 1.0;
+        e->look.draw = ISK_DRAW_PIXEL;
+        e->look.blend = ISK_BLEND_REPLACE;
+        e->look.color_over_life.n = 5;
+        memcpy(e->look.color_over_life.stops, stops, sizeof stops);
         if (with_alpha) {
-            e->alpha_over_life.n = 3;
-            memcpy(e->alpha_over_life.stops, astops, sizeof astops);
+            e->look.alpha_over_life.n = 3;
+            memcpy(e->look.alpha_over_life.stops, astops, sizeof astops);
         }
         isk_effect *fx = make(&d);
         isk_canvas c;
@@ -324,17 +324,17 @@ Test(fire_render, per_emitter_parameters_and_size_ramp)
         d.width = d.height = 200; /* -10..10: 10 px per unit */
         d.dt = 0.25;
         isk_emitter_def *e = isk_effect_def_add_emitter(&d, "p");
-        e->pos = isk_vec2_make(0.05, -0.05);
-        e->life = 1.0;
-        e->draw = ISK_DRAW_SPRITE;
-        e->sprite = ISK_SPRITE_SMOOTH;
-        e->size = 1.7; /* 17 px */
-        e->color = col;
-        e->blend = ISK_BLEND_OVER;
+        e->born.position = isk_vec2_make(0.05, -0.05);
+        e->life.seconds = 1.0;
+        e->look.draw = ISK_DRAW_SPRITE;
+        e->look.sprite = ISK_SPRITE_SMOOTH;
+        e->look.size = 1.7; /* 17 px */
+        e->look.color = col;
+        e->look.blend = ISK_BLEND_OVER;
         if (ramp) {
-            e->size_over_life.n = 2;
-            e->size_over_life.stops[0] = (isk_scalar_stop){0.0, 1.0};
-            e->size_over_life.stops[1] = (isk_scalar_stop){1.0, 3.0};
+            e->look.size_over_life.n = 2;
+            e->look.size_over_life.stops[0] = (isk_scalar_stop){0.0, 1.0};
+            e->look.size_over_life.stops[1] = (isk_scalar_stop){1.0, 3.0};
         }
         isk_effect *fx = make(&d);
         isk_canvas a, b;

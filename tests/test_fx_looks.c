@@ -465,7 +465,7 @@ Test(looks, texture_paths_are_relative_to_the_scene_file)
     cr_assert_eq(isk_scene_load_string(&d, "[emitter e]\nsource = particle\ntexture = textures/arrows.png\n",
                                        "scenes/x.ini", &err),
                  ISK_OK, "%s", err.message);
-    cr_assert_str_eq(d.emitters[0].texture, TEX);
+    cr_assert_str_eq(d.emitters[0].look.texture, TEX);
     isk_effect_def_free(&d);
     cr_assert_neq(isk_scene_load_string(&d, "[emitter e]\nsource = particle\ntexture = textures/arrows.png\n",
                                         "x.ini", &err),

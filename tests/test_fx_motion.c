@@ -147,16 +147,16 @@ Test(fx_motion_keys, from_c)
     d.forces[t].strength = 3;
     isk_emitter_def *e = isk_effect_def_add_emitter(&d, "e");
     cr_assert_not_null(e);
-    cr_assert(e->radial_accel == 0 && e->tangential_accel == 0 && e->space == ISK_SPACE_WORLD && e->duration == 0 &&
-              !e->loop && e->prewarm == 0 && e->emitter_velocity.x == 0);
-    e->source = ISK_SOURCE_STREAM;
-    e->rate = 100;
-    e->radial_accel = -2;
-    e->emitter_velocity = isk_vec2_make(1, 0);
-    e->space = ISK_SPACE_LOCAL;
-    e->duration = 1;
-    e->loop = 1;
-    e->prewarm = 0.5;
+    cr_assert(e->motion.radial_accel == 0 && e->motion.tangential_accel == 0 && e->born.space == ISK_SPACE_WORLD &&
+              e->born.duration == 0 && !e->born.loop && e->born.prewarm == 0 && e->born.emitter_velocity.x == 0);
+    e->born.source = ISK_SOURCE_STREAM;
+    e->born.rate = 100;
+    e->motion.radial_accel = -2;
+    e->born.emitter_velocity = isk_vec2_make(1, 0);
+    e->born.space = ISK_SPACE_LOCAL;
+    e->born.duration = 1;
+    e->born.loop = 1;
+    e->born.prewarm = 0.5;
     cr_assert_eq(isk_emitter_use_force(e, t), ISK_OK);
     isk_effect *fx;
     isk_error err;
@@ -168,10 +168,10 @@ Test(fx_motion_keys, from_c)
         const char *what;
         double *field;
         double bad;
-    } cases[] = {{"radial_accel", &d.emitters[0].radial_accel, NAN},
-                 {"tangential_accel", &d.emitters[0].tangential_accel, 1e300},
-                 {"duration", &d.emitters[0].duration, -1},
-                 {"prewarm", &d.emitters[0].prewarm, 1e5},
+    } cases[] = {{"radial_accel", &d.emitters[0].motion.radial_accel, NAN},
+                 {"tangential_accel", &d.emitters[0].motion.tangential_accel, 1e300},
+                 {"duration", &d.emitters[0].born.duration, -1},
+                 {"prewarm", &d.emitters[0].born.prewarm, 1e5},
                  {"scale", &d.forces[t].scale, 0}};
     for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
         double keep = *cases[i].field;
@@ -181,7 +181,7 @@ Test(fx_motion_keys, from_c)
         *cases[i].field = keep;
     }
     d.dt = 1e-4; /* 0.5 s: 5000 steps, fine; 20 s: 200,000, too many */
-    d.emitters[0].prewarm = 20;
+    d.emitters[0].born.prewarm = 20;
     cr_assert_neq(isk_effect_create(&fx, &d, &err), ISK_OK);
     cr_assert_not_null(strstr(err.message, "prewarm"), "%s", err.message);
     isk_effect_def_free(&d);

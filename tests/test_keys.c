@@ -121,18 +121,21 @@ Test(keys, numbers_and_angles_round_trip_exactly)
     const double lives[] = {1.0 / 3, 0.6025, 1e-7, 123456789.125, INFINITY};
     char buf[80], why[300];
     for (int i = 0; i < 5; i++) {
-        e->angle = angles[i];
+        e->launch.angle = angles[i];
         cr_assert_eq(fx_key_format(angle, e, &d, buf, sizeof buf), 0);
-        e->angle = 0;
+        e->launch.angle = 0;
         cr_assert_eq(fx_key_parse(angle, e, buf, &d, why, sizeof why), 0, "%s: %s", buf, why);
-        cr_assert(e->angle == angles[i], "angle %.17g read back as %.17g from '%s'", angles[i], e->angle, buf);
-        e->life = lives[i];
+        cr_assert(e->launch.angle == angles[i], "angle %.17g read back as %.17g from '%s'", angles[i], e->launch.angle,
+                  buf);
+        e->life.seconds = lives[i];
         cr_assert_eq(fx_key_format(life, e, &d, buf, sizeof buf), 0);
-        e->life = 1;
+        e->life.seconds = 1;
         cr_assert_eq(fx_key_parse(life, e, buf, &d, why, sizeof why), 0, "%s: %s", buf, why);
-        cr_assert(e->life == lives[i], "life %.17g read back as %.17g from '%s'", lives[i], e->life, buf);
+        cr_assert(e->life.seconds == lives[i], "life %.17g read back as %.17g from '%s'", lives[i], e->life.seconds,
+                  buf);
     }
-    cr_assert_eq(fx_key_format(angle, &(isk_emitter_def){.angle = 3.14159265358979323846 / 2}, &d, buf, sizeof buf), 0);
+    cr_assert_eq(
+        fx_key_format(angle, &(isk_emitter_def){.launch.angle = 3.14159265358979323846 / 2}, &d, buf, sizeof buf), 0);
     cr_assert_str_eq(buf, "90"); /* degrees when they are exact */
     isk_effect_def_free(&d);
 }

@@ -69,13 +69,13 @@ static isk_effect *stream(int fps, double rate, isk_rate_mode rm, isk_birth_mode
     }
     isk_emitter_def *e = isk_effect_def_add_emitter(&d, "stream");
     cr_assert_not_null(e);
-    e->source = ISK_SOURCE_STREAM;
-    e->rate = rate;
-    e->rate_mode = rm;
-    e->birth = bm;
-    e->vel = isk_vec2_make(vx, vy);
-    e->capacity = 8192;
-    e->draw = ISK_DRAW_NONE;
+    e->born.source = ISK_SOURCE_STREAM;
+    e->born.rate = rate;
+    e->born.rate_mode = rm;
+    e->born.birth = bm;
+    e->launch.velocity = isk_vec2_make(vx, vy);
+    e->born.capacity = 8192;
+    e->look.draw = ISK_DRAW_NONE;
     if (gi >= 0)
         isk_emitter_use_force(e, gi);
     isk_effect *fx = NULL;

@@ -20,9 +20,9 @@ static void many_streams(isk_effect_def *d, int n, size_t capacity)
         char name[16];
         snprintf(name, sizeof name, "e%d", i);
         isk_emitter_def *e = isk_effect_def_add_emitter(d, name);
-        e->source = ISK_SOURCE_STREAM;
-        e->rate = 10;
-        e->capacity = capacity;
+        e->born.source = ISK_SOURCE_STREAM;
+        e->born.rate = 10;
+        e->born.capacity = capacity;
     }
 }
 

@@ -268,9 +268,9 @@ Test(live, stream_rate_changes_without_a_burst)
     isk_effect_def d;
     isk_effect_def_init(&d);
     isk_emitter_def *e = isk_effect_def_add_emitter(&d, "s");
-    e->source = ISK_SOURCE_STREAM;
-    e->rate = 60;
-    e->capacity = 100000;
+    e->born.source = ISK_SOURCE_STREAM;
+    e->born.rate = 60;
+    e->born.capacity = 100000;
     isk_effect *fx = NULL;
     isk_error err = {0};
     cr_assert_eq(isk_effect_create(&fx, &d, &err), ISK_OK, "%s", err.message);

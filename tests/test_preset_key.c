@@ -58,13 +58,13 @@ Test(preset_key, keys_after_it_override_it)
     isk_error err = {0};
     const char *text = "[emitter e]\npreset = sparks, 2\nrate = 7\nposition = 1, 2\n";
     cr_assert_eq(isk_scene_load_string(&d, text, "p.ini", &err), ISK_OK, "%s", err.message);
-    cr_assert_eq(d.emitters[0].rate, 7);
-    cr_assert(d.emitters[0].pos.x == 1 && d.emitters[0].pos.y == 2);
-    cr_assert_float_eq(d.emitters[0].speed_max, 6.0, 1e-12); /* the preset's 300 points at scale 2 */
-    cr_assert_eq(d.nforces, 1);                              /* its own gravity, e_gravity */
+    cr_assert_eq(d.emitters[0].born.rate, 7);
+    cr_assert(d.emitters[0].born.position.x == 1 && d.emitters[0].born.position.y == 2);
+    cr_assert_float_eq(d.emitters[0].launch.speed_max, 6.0, 1e-12); /* the preset's 300 points at scale 2 */
+    cr_assert_eq(d.nforces, 1);                                     /* its own gravity, e_gravity */
     cr_assert_str_eq(d.forces[0].name, "e_gravity");
     cr_assert_float_eq(d.forces[0].g, 6.0, 1e-12);
-    cr_assert_eq(d.emitters[0].nforces, 1);
+    cr_assert_eq(d.emitters[0].motion.nforces, 1);
     isk_effect_def_free(&d);
     key_case_differs(base, "preset = fire, 2\nsize = 3", 30);
     key_case_differs(base, "preset = fire, 2", 30);
@@ -132,13 +132,13 @@ Test(preset_key, the_c_side_checks_its_arguments)
     cr_assert_eq(isk_preset_apply(NULL, 0, "fire", 1), ISK_ERR_NULL);
     int i = isk_preset_add(&d, "fire", "flame", isk_vec2_make(1, 2), 1);
     cr_assert_eq(i, 0);
-    d.emitters[0].order = 5;
+    d.emitters[0].look.order = 5;
     cr_assert_eq(isk_preset_apply(&d, 0, "snow", 2), ISK_OK);
     cr_assert_str_eq(d.emitters[0].name, "flame");
     cr_assert_str_eq(d.emitters[0].preset, "snow");
-    cr_assert_eq(d.emitters[0].order, 5);
-    cr_assert(d.emitters[0].pos.x == 1 && d.emitters[0].pos.y == 2);
-    cr_assert_eq(d.emitters[0].rate, 10); /* snow's, not fire's */
+    cr_assert_eq(d.emitters[0].look.order, 5);
+    cr_assert(d.emitters[0].born.position.x == 1 && d.emitters[0].born.position.y == 2);
+    cr_assert_eq(d.emitters[0].born.rate, 10); /* snow's, not fire's */
     cr_assert_eq(isk_preset_apply(&d, 0, "snow", NAN), ISK_ERR_RANGE);
     isk_effect_def_free(&d);
 }

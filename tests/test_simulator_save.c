@@ -40,7 +40,7 @@ static int same_item(const void *a, const void *b, size_t size, size_t line_offs
  * values (copied into zeroed ramps). */
 static void canonical_ramps(isk_emitter_def *e)
 {
-    isk_color_ramp *cr[2] = {&e->color_over_life, &e->color_pick};
+    isk_color_ramp *cr[2] = {&e->look.color_over_life, &e->look.color_pick};
     for (int k = 0; k < 2; k++) {
         isk_color_ramp c;
         memset(&c, 0, sizeof c);
@@ -51,7 +51,7 @@ static void canonical_ramps(isk_emitter_def *e)
         }
         *cr[k] = c;
     }
-    isk_scalar_ramp *r[2] = {&e->alpha_over_life, &e->size_over_life};
+    isk_scalar_ramp *r[2] = {&e->look.alpha_over_life, &e->look.size_over_life};
     for (int k = 0; k < 2; k++) {
         isk_scalar_ramp s;
         memset(&s, 0, sizeof s);

@@ -495,8 +495,8 @@ Test(stability, bad_inputs_get_a_status_not_a_crash)
      * is simply culled at the end of its first step). */
     isk_effect_def_init(&d);
     isk_emitter_def *em = isk_effect_def_add_emitter(&d, "a");
-    em->source = ISK_SOURCE_PARTICLE;
-    em->life = 0;
+    em->born.source = ISK_SOURCE_PARTICLE;
+    em->life.seconds = 0;
     isk_effect *e = NULL;
     cr_assert_eq(isk_effect_create(&e, &d, &err), ISK_ERR_RANGE);
     cr_assert(!strcmp(err.message, "emitter 'a': life: expected a number of seconds > 0 or forever, got \"0\""), "%s",

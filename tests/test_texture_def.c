@@ -77,7 +77,7 @@ Test(texture_def, a_c_definition_loads_its_textures_before_create)
     isk_effect_def_init(&d);
     isk_emitter_def *e = isk_effect_def_add_emitter(&d, "e");
     cr_assert_not_null(e);
-    snprintf(e->texture, sizeof e->texture, "no/such.png");
+    snprintf(e->look.texture, sizeof e->look.texture, "no/such.png");
     isk_effect *fx;
     isk_error err;
     cr_assert_eq(isk_effect_create(&fx, &d, &err), ISK_ERR_RANGE);
@@ -88,20 +88,20 @@ Test(texture_def, a_c_definition_loads_its_textures_before_create)
     cr_assert(strstr(err.message, "emitter 'e'") && strstr(err.message, "no/such.png"), "%s", err.message);
     cr_assert_eq(d.ntextures, 0, "a failed read keeps nothing");
 
-    snprintf(e->texture, sizeof e->texture, TEX);
+    snprintf(e->look.texture, sizeof e->look.texture, TEX);
     cr_assert_eq(isk_scene_load_textures(&d, &err), ISK_OK, "%s", err.message);
     cr_assert_eq(isk_scene_load_textures(&d, &err), ISK_OK, "%s", err.message);
     cr_assert_eq(d.ntextures, 1, "each path read once");
-    e->texture_grid = (isk_vec2){3, 1};
+    e->look.texture_grid = (isk_vec2){3, 1};
     cr_assert_eq(isk_effect_create(&fx, &d, &err), ISK_ERR_RANGE);
     cr_assert(strstr(err.message, "emitter 'e'") && strstr(err.message, "arrows.png") && strstr(err.message, "3 x 1"),
               "%s", err.message);
-    e->texture_grid = (isk_vec2){4, 2};
+    e->look.texture_grid = (isk_vec2){4, 2};
     cr_assert_eq(isk_effect_create(&fx, &d, &err), ISK_OK, "%s", err.message);
     isk_effect_destroy(fx);
 
     cr_assert_eq(isk_scene_load_textures(NULL, &err), ISK_ERR_NULL);
-    memset(e->texture, 'x', sizeof e->texture);
+    memset(e->look.texture, 'x', sizeof e->look.texture);
     cr_assert_eq(isk_scene_load_textures(&d, &err), ISK_ERR_RANGE);
     cr_assert(strstr(err.message, "emitter 'e'") && strstr(err.message, "255"), "%s", err.message);
     isk_effect_def_free(&d);
@@ -115,7 +115,7 @@ Test(texture_def, pixels_given_in_c_draw_as_the_file_does)
     cr_assert_eq(isk_scene_load_string(&b, scene_with("mine"), "t.ini", NULL), ISK_ERR_FORMAT, "no file 'mine'");
     isk_effect_def_init(&b);
     load(&b, scene_with(TEX), "t.ini");
-    snprintf(b.emitters[0].texture, sizeof b.emitters[0].texture, "mine");
+    snprintf(b.emitters[0].look.texture, sizeof b.emitters[0].look.texture, "mine");
     isk_canvas img;
     isk_error err;
     cr_assert_eq(isk_png_read(&img, TEX, &err), ISK_OK, "%s", err.message);
@@ -286,7 +286,7 @@ Test(texture_def, a_built_in_texture_is_found_anywhere)
     isk_effect_def_init(&d);
     isk_emitter_def *e = isk_effect_def_add_emitter(&d, "e");
     cr_assert_not_null(e);
-    snprintf(e->texture, sizeof e->texture, TEX);
+    snprintf(e->look.texture, sizeof e->look.texture, TEX);
     isk_error err;
     cr_assert_eq(isk_scene_load_textures(&d, &err), ISK_OK, "%s", err.message);
     cr_assert(isk_canvas_equal(&d.textures[0].pixels, &want));

@@ -48,24 +48,24 @@ int main(void)
         return 1;
     }
     d.forces[gravity].g = 9.81;
-    e->source = ISK_SOURCE_STREAM;
-    e->pos = (isk_vec2){0, 1};
-    e->rate = 200;
-    e->launch = ISK_VELGEN_CONE;
-    e->angle = 90 * DEG;
-    e->spread = 40 * DEG;
-    e->speed_min = 6;
-    e->speed_max = 9;
-    e->life = 2.5;
+    e->born.source = ISK_SOURCE_STREAM;
+    e->born.position = (isk_vec2){0, 1};
+    e->born.rate = 200;
+    e->launch.kind = ISK_VELGEN_CONE;
+    e->launch.angle = 90 * DEG;
+    e->launch.spread = 40 * DEG;
+    e->launch.speed_min = 6;
+    e->launch.speed_max = 9;
+    e->life.seconds = 2.5;
     isk_emitter_use_force(e, gravity);
-    e->draw = ISK_DRAW_SPRITE;
-    e->sprite = ISK_SPRITE_SMOOTH;
-    e->size = 0.3;
-    e->blend = ISK_BLEND_ADD;
-    e->color_over_life.n = 3;
-    e->color_over_life.stops[0] = (isk_color_stop){0.0, isk_rgba(0xff, 0xf6, 0xc0, 0xff)};
-    e->color_over_life.stops[1] = (isk_color_stop){0.4, isk_rgba(0xff, 0xa5, 0x00, 0xff)}; /* orange */
-    e->color_over_life.stops[2] = (isk_color_stop){1.0, isk_rgba(0x80, 0x10, 0x00, 0x00)};
+    e->look.draw = ISK_DRAW_SPRITE;
+    e->look.sprite = ISK_SPRITE_SMOOTH;
+    e->look.size = 0.3;
+    e->look.blend = ISK_BLEND_ADD;
+    e->look.color_over_life.n = 3;
+    e->look.color_over_life.stops[0] = (isk_color_stop){0.0, isk_rgba(0xff, 0xf6, 0xc0, 0xff)};
+    e->look.color_over_life.stops[1] = (isk_color_stop){0.4, isk_rgba(0xff, 0xa5, 0x00, 0xff)}; /* orange */
+    e->look.color_over_life.stops[2] = (isk_color_stop){1.0, isk_rgba(0x80, 0x10, 0x00, 0x00)};
 
     /* Check and compile the definition: a bad value is refused here, with
      * the message a scene file would get. */

@@ -18,7 +18,9 @@
  *     isk_emitter_def *e = isk_effect_def_add_emitter(&d, "sparks");
  *     if (g < 0 || !e) { isk_effect_def_free(&d); return 1; }   // out of memory
  *     d.forces[g].g = 9.81;
- *     e->source = ISK_SOURCE_EXPLOSION; e->explosion = ISK_EXPLOSION_GAUSS; e->count = 1000;
+ *     e->born.source = ISK_SOURCE_EXPLOSION;    // the parts: born, launch, life, motion, look, events
+ *     e->born.explosion = ISK_EXPLOSION_GAUSS;
+ *     e->born.count = 1000;
  *     isk_emitter_use_force(e, g);
  *     isk_effect *fx;  isk_error err;
  *     isk_status s = isk_effect_create(&fx, &d, &err);
@@ -44,8 +46,8 @@
  *     deaths first as on_death events); after every emitter stepped: the
  *     sub-emitters' births, then the trails' newest points
  * and its draw routine: trails (only with trail) -> colour/alpha/size over
- * life (only with gradients) -> draw (a texture or a streak: the looks
- * block of isk_emitter_def).  A force no emitter references, a
+ * life (only with gradients) -> draw (a texture or a streak: the look
+ * part of isk_emitter_def).  A force no emitter references, a
  * zero-strength force, a disabled
  * potential, or a potential switched off by its maximum distance is not in
  * any list (the last leaves at the end of the frame in which it switched
@@ -104,7 +106,7 @@ extern "C" {
 /* ---- forces ------------------------------------------------------------ */
 
 typedef enum isk_force_kind {
-    ISK_FORCE_GRAVITY = 0, /* F = (0, m*(-g*gravity_mult))   (thesis SilaTeza) */
+    ISK_FORCE_GRAVITY = 0, /* F = (0, m*(-g*gravity_multiplier))   (thesis SilaTeza) */
     ISK_FORCE_DRAG,        /* F = -b*v                          (thesis Otpor) */
     ISK_FORCE_WIND,        /* a constant acceleration: F = m*accel (fire thesis's wind) */
     ISK_FORCE_POTENTIAL,   /* the thesis's Coulomb potential (iskra/forces.h) */
@@ -149,8 +151,8 @@ typedef struct isk_deflector_def {
 /* ---- emitters ---------------------------------------------------------- */
 
 typedef enum isk_source_kind {
-    ISK_SOURCE_PARTICLE = 0, /* one particle: pos, vel, mass (figures 9-14) */
-    ISK_SOURCE_EXPLOSION,    /* an isk_explosion of `count` at `pos` at time `start` */
+    ISK_SOURCE_PARTICLE = 0, /* one particle: position, velocity, mass (figures 9-14) */
+    ISK_SOURCE_EXPLOSION,    /* an isk_explosion of `count` at `position` at time `start` */
     ISK_SOURCE_LAYER,        /* the stationary layer: `count` at rest in `rect` */
     ISK_SOURCE_STREAM,       /* continuous emission: shape, velocity, rate, bursts */
     ISK_SOURCE_SUB,          /* a sub-emitter: `count` particles where another emitter's particle
@@ -159,11 +161,12 @@ typedef enum isk_source_kind {
 } isk_source_kind;
 
 /* Where a stream emitter places new particles is an isk_shape_kind around
- * `pos` (iskra/shape.h: point; disc of radius a; circle of radius a; ring
- * a <= r <= b; segment from pos to pos + (a, b); rect of half-extents a, b;
- * ellipse of semi-axes a, b), and how it launches them an isk_velgen_kind
- * (constant `vel`; disc of radius speed_max around `vel`; direction `angle`
- * with a speed in [speed_min, speed_max]; cone angle +- spread/2). */
+ * `position` (iskra/shape.h: point; disc of radius a; circle of radius a;
+ * ring a <= r <= b; segment from position to position + (a, b); rect of
+ * half-extents a, b; ellipse of semi-axes a, b), and how it launches them
+ * an isk_velgen_kind (constant `velocity`; disc of radius speed_max around
+ * `velocity`; direction `angle` with a speed in [speed_min, speed_max];
+ * cone angle +- spread/2). */
 
 typedef enum isk_rate_mode {
     ISK_RATE_ACCUMULATE = 0, /* fractional carry: exactly rate*t particles over time t */
@@ -188,7 +191,7 @@ typedef enum isk_draw_mode {
     ISK_DRAW_COUNT
 } isk_draw_mode;
 
-/* How a particle's sprite is turned (the looks block of isk_emitter_def). */
+/* How a particle's sprite is turned (isk_emitter_def.look.align). */
 typedef enum isk_align_mode {
     ISK_ALIGN_NONE = 0,      /* by its angle only (rotation, spin) */
     ISK_ALIGN_VELOCITY,      /* along its velocity on screen, atan2(vy, vx), plus its angle */
@@ -212,53 +215,97 @@ typedef struct isk_scalar_ramp {
     isk_scalar_stop stops[ISK_GRADIENT_MAX_STOPS];
 } isk_scalar_ramp;
 
-/* Where a stream's particles live (isk_emitter_def.space). */
+/* Where a stream's particles live (isk_emitter_def.born.space). */
 typedef enum isk_space {
     ISK_SPACE_WORLD = 0, /* born on the emitter's path, then on their own */
     ISK_SPACE_LOCAL,     /* carried along by the emitter's motion every substep */
     ISK_SPACE_COUNT
 } isk_space;
 
-typedef struct isk_emitter_def {
-    char name[ISK_NAME_MAX];
-    int line;
+/* ---- the parts of an emitter ---------------------------------------------
+ *
+ * An emitter is six parts, one struct each, named for what they answer:
+ * born (where, when and how many), launch (with what velocity and mass),
+ * life (for how long), motion (what moves them), look (how they are drawn)
+ * and events (what their deaths and bounces set off).  A field is the
+ * [emitter NAME] key of the same name, less the part's name where the key
+ * starts with it (`life_range` is life.range); each part's comment names
+ * the fields that differ.  The key table (iskra/keys.h, `iskra keys`) gives
+ * every key's type, range, default and meaning. */
 
-    /* source */
+/* Where and when its particles are born: the source, the place (a point,
+ * a layer's rect, a stream's shape around position), how many and how
+ * often, the emitter's own path and the pool they live in.  Every field is
+ * the key of its name. */
+typedef struct isk_emitter_born {
     isk_source_kind source;
-    isk_vec2 pos;              /* PARTICLE position; EXPLOSION centre; STREAM origin */
-    isk_vec2 vel;              /* PARTICLE velocity; STREAM constant/disc-centre velocity */
-    double mass;               /* PARTICLE, LAYER and STREAM mass (min); default 1 */
-    double mass_range;         /* STREAM: mass = mass + U*mass_range */
+    isk_vec2 position;         /* PARTICLE position; EXPLOSION centre; STREAM origin */
+    isk_shape_kind shape;      /* STREAM, SUB */
+    double shape_a, shape_b;   /* STREAM, SUB shape parameters (see isk_spawn_shape) */
+    double shape_angle;        /* STREAM, SUB shape rotation, radians */
+    int shape_faithful;        /* ELLIPSE: the particle-engine thesis's non-uniform sampler */
     isk_explosion explosion;   /* EXPLOSION kind */
-    size_t count;              /* EXPLOSION, LAYER count (required); STREAM burst size (0: none) */
+    size_t count;              /* EXPLOSION, LAYER count (required); STREAM burst size (0: none);
+                                  SUB particles per event */
     size_t limit;              /* largest accepted explosion (also clicks into this emitter;
                                   0: the thesis's 10,000) */
     isk_kick_target kick;      /* COULOMB kicks: all particles of this emitter, or only new */
     double start;              /* EXPLOSION / burst time, seconds */
     double rect[4];            /* LAYER xmin, xmax, ymin, ymax */
-    isk_shape_kind shape;      /* STREAM */
-    double shape_a, shape_b;   /* STREAM shape parameters (see isk_spawn_shape) */
-    double shape_angle;        /* STREAM shape rotation, radians */
-    int shape_faithful;        /* ELLIPSE: the particle-engine thesis's non-uniform sampler */
-    isk_velgen_kind launch;    /* STREAM */
-    double angle, spread;      /* DIRECTION/CONE, radians */
-    double speed_min, speed_max;
     double rate;               /* STREAM particles per second (0: bursts only) */
     isk_rate_mode rate_mode;
     isk_birth_mode birth;
     double burst_every;        /* STREAM: a burst of `count` every this many s (0: once at start) */
-    double life, life_range;   /* lifetime = life + U*life_range; INFINITY = immortal */
+    double duration;           /* STREAM: emits for this many seconds from start, then stops (0: forever) */
+    int loop;                  /* STREAM with a duration: starts again every duration, bursts included */
+    double prewarm;            /* STREAM: seconds simulated before frame 0 (whole frames of dt;
+                                  frame 0 shows the emitter, and the sub-emitters it feeds, as
+                                  they are after them) */
+    isk_vec2 emitter_velocity; /* STREAM: the emitter moves, position(t) = position + v*t, and births
+                                  are placed on that path at their exact birth times */
+    isk_space space;           /* STREAM: WORLD (default), or LOCAL: the particles move with the emitter */
     size_t capacity;           /* pool size, for every source: births, explosions and clicks
                                   beyond it are dropped and counted */
+} isk_emitter_born;
 
-    /* motion */
+/* How a particle is launched: the velocity and mass it is born with.  kind
+ * is the key `launch` (an isk_velgen_kind: constant velocity; a disc of
+ * radius speed_max around velocity; direction angle with a speed in
+ * [speed_min, speed_max]; cone angle +- spread/2); every other field is
+ * the key of its name. */
+typedef struct isk_emitter_launch {
+    isk_velgen_kind kind;      /* STREAM, SUB */
+    isk_vec2 velocity;         /* PARTICLE velocity; STREAM, SUB constant/disc-centre velocity */
+    double angle, spread;      /* DIRECTION/CONE, radians */
+    double speed_min, speed_max;
+    double mass;               /* PARTICLE, LAYER, STREAM and SUB mass (min); default 1 */
+    double mass_range;         /* STREAM, SUB: mass = mass + U*mass_range */
+    double inherit;            /* SUB: the fraction 0..1 of the parent's velocity its children keep,
+                                  added to the velocity drawn above */
+} isk_emitter_launch;
+
+/* How long a particle lives: lifetime = seconds + U*range.  seconds is the
+ * key `life`, range the key `life_range`. */
+typedef struct isk_emitter_life {
+    double seconds;            /* INFINITY (default) = immortal */
+    double range;
+} isk_emitter_life;
+
+/* What moves its particles once born: the forces and deflectors they feel,
+ * the walls, accelerations about the emitter, buoyancy, slowing, the
+ * oscillation and the integrator.  Each is a stage only for the emitters
+ * that use it (isk_effect_describe shows it).  Fields are the keys of their
+ * names, except: forces/nforces and deflectors/ndeflectors are the lists
+ * the keys `forces` and `deflectors` name, and the two-number keys
+ * osc_omega and osc_amplitude are each a _min and a _max field. */
+typedef struct isk_emitter_motion {
     int forces[ISK_EFFECT_MAX_FORCES]; /* indices into isk_effect_def.forces */
     int nforces;
-    int deflectors[ISK_EFFECT_MAX_DEFLECTORS];
+    int deflectors[ISK_EFFECT_MAX_DEFLECTORS]; /* indices into isk_effect_def.deflectors */
     int ndeflectors;
     int bounded;               /* 1: the effect's walls apply */
     int draw_before_bounce;    /* 1: the thesis examples' order (draw, then walls) */
-    double gravity_mult;       /* scales GRAVITY forces (default 1) */
+    double gravity_multiplier; /* scales GRAVITY forces (default 1) */
     double weight;             /* buoyancy: an upward acceleration (fire thesis's weight) */
     double slowing;            /* damping per second: v *= max(0, 1 - slowing*dt) (never flips) */
     int slow_faithful;         /* 1: the fire thesis's order v += a*dt; v *= slow; p += v*dt (the
@@ -266,8 +313,11 @@ typedef struct isk_emitter_def {
                                   0 (default): p moves with the unslowed velocity, slowing after,
                                   which drifts at exactly a/k at any dt.  Needs the semi-implicit
                                   Euler fast path (no drag or potential forces) */
-    double osc_omega_min, osc_omega_max; /* oscillation angular speed range, rad/s (0,0 = off) */
-    double osc_amp_min, osc_amp_max;     /* initial amplitude range, world units */
+    double radial_accel;       /* units/s^2 away from the emitter's current position (negative:
+                                  towards it); none exactly at the position */
+    double tangential_accel;   /* units/s^2 perpendicular to that, counter-clockwise for positive */
+    double osc_omega_min, osc_omega_max;         /* oscillation angular speed range, rad/s (0,0 = off) */
+    double osc_amplitude_min, osc_amplitude_max; /* initial amplitude range, world units */
     double osc_decay;          /* amplitude *= max(0, 1 - decay*dt) */
     int osc_faithful;          /* 1: also add the offset change to vx (the thesis code) */
     isk_sinlut_mode osc_table; /* the sine: table floor (the fire thesis), round, lerp, or libm */
@@ -275,85 +325,102 @@ typedef struct isk_emitter_def {
                                   A*sin(phase), so no jump); 0: phase 0 (the thesis, presumably) */
     isk_integrator integrator; /* ISK_INTEGRATE_INHERIT (default): the scene's */
     int substeps;              /* 0 (default): the scene's */
+} isk_emitter_motion;
 
-    /* drawing */
+/* How its particles are drawn: the draw mode, size and colour with their
+ * variation at birth and their ramps over life, rotation and spin,
+ * textures and flipbooks, the order among emitters, and trails
+ * (docs/scene-format.md, "The looks of a particle").  Every field is the
+ * key of its name.  At their defaults the variations cost and change
+ * nothing: the angle column and the spin stage exist only with a rotation
+ * or spin, each random draw only with its range (and after every other
+ * draw of the birth), the size and colour columns only with size_range and
+ * color_pick.  trail = N (0..ISK_TRAIL_MAX): each particle keeps its last
+ * N positions (recorded once per frame, after the frame's steps) and is
+ * drawn, before its own dot or sprite, as a ribbon through them
+ * (isk_stroke_trail) trail_width pixels wide in the particle's colour,
+ * fading by trail_fade towards its oldest point. */
+typedef struct isk_emitter_look {
     isk_draw_mode draw;
     isk_sprite_kind sprite;
     double size;               /* DISC/SPRITE diameter in world units */
+    double size_range;         /* size = size + U*size_range, world units (the size column) */
     isk_color color;           /* default yellow */
+    isk_color_ramp color_pick; /* n > 0: base colour = these stops at a uniform t at birth, multiplied
+                                  channel by channel by color_over_life (div255(a*b)) */
     isk_blend blend;           /* default over */
     isk_color_ramp color_over_life;
     isk_scalar_ramp alpha_over_life;  /* multiplies colour alpha */
     isk_scalar_ramp size_over_life;   /* multiplies size */
     int order;                 /* draw order key (ties: definition order) */
-
-    /* what it started from */
-    char preset[ISK_NAME_MAX]; /* the preset (iskra/presets.h) that filled it, "" for none; set by
-                                  isk_preset_apply (scene files: `preset = NAME`); only a record:
-                                  the fields hold what the preset set */
-
-    /* motion: how emitters and particles move.  Each is a stage
-     * only for the emitters that use it (isk_effect_describe shows it). */
-    double radial_accel;       /* units/s^2 away from the emitter's current position (negative:
-                                  towards it); none exactly at the position */
-    double tangential_accel;   /* units/s^2 perpendicular to that, counter-clockwise for positive */
-    isk_vec2 emitter_velocity; /* STREAM: the emitter moves, position(t) = position + v*t, and births
-                                  are placed on that path at their exact birth times */
-    isk_space space;           /* STREAM: WORLD (default), or LOCAL: the particles move with the emitter */
-    double duration;           /* STREAM: emits for this many seconds from start, then stops (0: forever) */
-    int loop;                  /* STREAM with a duration: starts again every duration, bursts included */
-    double prewarm;            /* STREAM: seconds simulated before frame 0 (whole frames of dt;
-                                  frame 0 shows the emitter, and the sub-emitters it feeds, as
-                                  they are after them) */
-
-    /* looks: rotation, spin, size and colour variation, textures
-     * and flipbooks (docs/scene-format.md, "The looks of a particle").  At
-     * their defaults none of them costs or changes anything: the angle
-     * column and the spin stage exist only with a rotation or spin, each
-     * random draw only with its range (and after every other draw of the
-     * birth), the size and colour columns only with size_range and
-     * color_pick. */
     double rotation, rotation_range; /* initial angle + U*range, radians (keys in degrees),
                                         counter-clockwise in the world */
     double spin, spin_range;   /* angular speed + U*range, rad/s (keys in deg/s); angles wrap into
                                   [-pi, pi) */
     isk_align_mode align;      /* VELOCITY: turned along the velocity (textures, and sprites as
                                   streaks ISK_STREAK_STRETCH times longer than wide) */
-    double size_range;         /* size = size + U*size_range, world units (the size column) */
-    isk_color_ramp color_pick; /* n > 0: base colour = these stops at a uniform t at birth, multiplied
-                                  channel by channel by colour_over_life (div255(a*b)) */
     char texture[ISK_TEXTURE_PATH_MAX]; /* "": none; else the name of the definition's texture drawn
                                   as the sprite (isk_effect_def.textures): a scene's PNG path, made
                                   relative to the scene file and read by the loader */
     isk_vec2 texture_grid;     /* cols, rows of a sprite sheet (whole numbers 1..256; default 1, 1) */
     double texture_fps;        /* 0: the frames play once over the life, floor(t*frames); > 0: at this
                                   rate of age, wrapping */
-
-    /* ---- sub-emitters and trails ----
-     * on_death / on_hit name (by index, -1: none) an emitter of source SUB
-     * that fires `count` particles where one of these particles dies (its
-     * age reaches its life, or a killing deflector takes it) / bounces on a
-     * wall or a deflector.  The event is the particle's position and
-     * velocity at the end of the substep in which it died / bounced, at that
-     * substep's end time.  A SUB emitter's children start at the event's
-     * position plus its shape's offset (shape, shape_a, shape_b,
-     * shape_angle around (0, 0)), with a velocity from its launch keys plus
-     * inherit times the parent's velocity, and its mass, life and drawing
-     * keys; they are born at the end of the frame in which the event
-     * happened, advanced by their age through their own stages (as a
-     * stream's back-dated births), so the result does not depend on which
-     * of the two emitters steps first.  trail = N (0..ISK_TRAIL_MAX): each
-     * particle keeps its last N positions (recorded once per frame, after
-     * the frame's steps) and is drawn, before its own dot or sprite, as a
-     * ribbon through them (isk_stroke_trail) trail_width pixels wide in the
-     * particle's colour, fading by trail_fade towards its oldest point. */
-    int on_death;              /* emitter index of a SUB emitter, -1: none */
-    int on_hit;                /* emitter index of a SUB emitter, -1: none */
-    double inherit;            /* SUB: the fraction 0..1 of the parent's velocity its children keep */
     int trail;                 /* points of history, 0: no trail */
     double trail_width;        /* pixels, > 0 (default 1) */
     double trail_fade;         /* 0..1: alpha at the oldest point is colour alpha * (1 - trail_fade) */
-    /* ---- end of sub-emitters and trails ---- */
+} isk_emitter_look;
+
+/* What its particles' deaths and bounces set off: on_death / on_hit name
+ * (by index, -1: none) an emitter of source SUB that fires `count`
+ * particles where one of these particles dies (its age reaches its life,
+ * or a killing deflector takes it) / bounces on a wall or a deflector.
+ * The event is the particle's position and velocity at the end of the
+ * substep in which it died / bounced, at that substep's end time.  A SUB
+ * emitter's children start at the event's position plus its shape's
+ * offset (born.shape, shape_a, shape_b, shape_angle around (0, 0)), with a
+ * velocity from its launch part plus launch.inherit times the parent's
+ * velocity, and its life and look; they are born at the end of the frame
+ * in which the event happened, advanced by their age through their own
+ * stages (as a stream's back-dated births), so the result does not depend
+ * on which of the two emitters steps first.  Both fields are the keys of
+ * their names. */
+typedef struct isk_emitter_events {
+    int on_death;              /* emitter index of a SUB emitter, -1: none */
+    int on_hit;                /* emitter index of a SUB emitter, -1: none */
+} isk_emitter_events;
+
+/* One [emitter NAME]: its name, where it was defined, the preset it
+ * started from, and its six parts.  isk_effect_def_add_emitter sets every
+ * field to its key's default; set the ones you need through the parts:
+ *
+ *     isk_emitter_def *e = isk_effect_def_add_emitter(&d, "fountain");
+ *     if (!e) { isk_effect_def_free(&d); return 1; }  // out of memory
+ *     e->born.source = ISK_SOURCE_STREAM;
+ *     e->born.rate = 200;                          // key `rate`
+ *     e->launch.kind = ISK_VELGEN_CONE;            // key `launch`
+ *     e->launch.angle = 1.5708;                    // radians: straight up
+ *     e->launch.spread = 0.5;
+ *     e->launch.speed_min = 4;
+ *     e->launch.speed_max = 6;
+ *     e->life.seconds = 2;                         // key `life`
+ *     e->life.range = 0.5;                         // key `life_range`
+ *     e->look.color = isk_rgba(80, 160, 255, 255);
+ *     isk_emitter_use_force(e, g);                 // g: a force's index (motion.forces)
+ *
+ * docs/versioning.md lists each old flat field (before 0.3.0) with its
+ * place now. */
+typedef struct isk_emitter_def {
+    char name[ISK_NAME_MAX];
+    int line;                  /* where it was defined (scene files), 0 if unknown */
+    char preset[ISK_NAME_MAX]; /* the preset (iskra/presets.h) that filled it, "" for none; set by
+                                  isk_preset_apply (scene files: `preset = NAME`); only a record:
+                                  the parts hold what the preset set */
+    isk_emitter_born born;
+    isk_emitter_launch launch;
+    isk_emitter_life life;
+    isk_emitter_motion motion;
+    isk_emitter_look look;
+    isk_emitter_events events;
 } isk_emitter_def;
 
 /* An image the emitters draw as their particles' texture, held by the

@@ -21,7 +21,9 @@
  *
  * A row's `offset` is the field's offsetof in the section's item struct:
  * isk_effect_def for [scene] and [view], isk_force_def, isk_deflector_def,
- * isk_bounds, isk_emitter_def, isk_drawing_def and isk_click_def.
+ * isk_bounds, isk_emitter_def (a field of one of its parts:
+ * offsetof(isk_emitter_def, born.rate) for `rate`), isk_drawing_def and
+ * isk_click_def.
  *
  * Kinds: some sections have a kind that decides which keys apply (a
  * force's `kind`, an emitter's `source`, a drawing's `kind`, the walls'

@@ -17,7 +17,7 @@
  *     int f = isk_preset_fire(&d, NULL, isk_vec2_make(0, -6), 3.0);
  *     int s = isk_preset_smoke(&d, NULL, isk_vec2_make(0, -4), 3.0);
  *     if (f < 0 || s < 0) { isk_effect_def_free(&d); return 1; }
- *     d.emitters[s].order = -1;           // smoke behind the flame
+ *     d.emitters[s].look.order = -1;      // smoke behind the flame
  *     isk_effect *fx; isk_error err;
  *     isk_status st = isk_effect_create(&fx, &d, &err);
  *     isk_effect_def_free(&d);

@@ -59,26 +59,29 @@ static isk_status populate(isk_effect *e, fx_group *g)
     const isk_emitter_def *em = g->def;
     isk_particles *p = &g->store;
     isk_status s = ISK_OK;
-    switch (em->source) {
+    switch (em->born.source) {
     case ISK_SOURCE_PARTICLE:
-        s = isk_particles_add(p, em->pos.x, em->pos.y, em->vel.x, em->vel.y, em->mass, NULL);
+        s = isk_particles_add(p, em->born.position.x, em->born.position.y, em->launch.velocity.x, em->launch.velocity.y,
+                              em->launch.mass, NULL);
         if (s == ISK_OK)
             fx_adopt(e, g, 0);
         break;
     case ISK_SOURCE_LAYER: {
-        if (em->count == 0)
+        if (em->born.count == 0)
             break; /* an empty layer (the thesis simulator's start): clicks fill it */
-        size_t limit = em->limit ? em->limit : ISK_EXPLODE_THESIS_LIMIT;
-        s = isk_explode_layer(p, &g->rng, em->rect[0], em->rect[1], em->rect[2], em->rect[3], em->count, limit);
+        size_t limit = em->born.limit ? em->born.limit : ISK_EXPLODE_THESIS_LIMIT;
+        s = isk_explode_layer(p, &g->rng, em->born.rect[0], em->born.rect[1], em->born.rect[2], em->born.rect[3],
+                              em->born.count, limit);
         for (size_t i = 0; s == ISK_OK && i < p->count; i++)
-            p->m[i] = em->mass;
+            p->m[i] = em->launch.mass;
         if (s == ISK_OK)
             fx_adopt(e, g, 0);
         break;
     }
     case ISK_SOURCE_EXPLOSION:
-        if (em->start <= 0) {
-            s = fx_fire_explosion(e, g, em->explosion, em->pos.x, em->pos.y, em->count, em->kick);
+        if (em->born.start <= 0) {
+            s = fx_fire_explosion(e, g, em->born.explosion, em->born.position.x, em->born.position.y, em->born.count,
+                                  em->born.kick);
             g->fired = 1;
         }
         break;
@@ -138,7 +141,7 @@ void fx_sort_draw_order(isk_effect *e)
     const isk_effect_def *d = &e->def;
     for (int i = 0; i < e->ngroups; i++) {
         int j = i;
-        while (j > 0 && d->emitters[e->draw_order[j - 1]].order > d->emitters[i].order) {
+        while (j > 0 && d->emitters[e->draw_order[j - 1]].look.order > d->emitters[i].look.order) {
             e->draw_order[j] = e->draw_order[j - 1];
             j--;
         }

@@ -16,18 +16,18 @@ void fx_adopt(isk_effect *e, fx_group *g, size_t from)
 {
     const isk_emitter_def *em = g->def;
     isk_particles *p = &g->store;
-    const int ranged = isfinite(em->life) && em->life_range > 0;
+    const int ranged = isfinite(em->life.seconds) && em->life.range > 0;
     for (size_t i = from; i < p->count; i++)
-        p->life[i] = em->life + (ranged ? em->life_range * isk_rng_uniform(&g->rng) : 0.0);
+        p->life[i] = em->life.seconds + (ranged ? em->life.range * isk_rng_uniform(&g->rng) : 0.0);
     for (size_t i = from; p->osc_amp && i < p->count; i++) {
-        p->osc_omega[i] = isk_rng_range(&g->rng, em->osc_omega_min, em->osc_omega_max);
-        p->osc_amp[i] = isk_rng_range(&g->rng, em->osc_amp_min, em->osc_amp_max);
+        p->osc_omega[i] = isk_rng_range(&g->rng, em->motion.osc_omega_min, em->motion.osc_omega_max);
+        p->osc_amp[i] = isk_rng_range(&g->rng, em->motion.osc_amplitude_min, em->motion.osc_amplitude_max);
         p->osc_phase[i] = 0.0;
         p->osc_offset[i] = 0.0;
-        if (em->osc_random_phase) {
+        if (em->motion.osc_random_phase) {
             double ph = isk_rng_range(&g->rng, 0.0, 6.283185307179586);
             p->osc_phase[i] = ph;
-            p->osc_offset[i] = p->osc_amp[i] * isk_sinlut_eval(&e->sin_table, em->osc_table, ph);
+            p->osc_offset[i] = p->osc_amp[i] * isk_sinlut_eval(&e->sin_table, em->motion.osc_table, ph);
         }
     }
     /* last: the looks' draws come after every draw above (effect_looks.c) */

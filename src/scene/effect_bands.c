@@ -539,7 +539,7 @@ isk_status fx_draw_bands(isk_effect *e, isk_canvas *c, fx_group *g, const fx_dra
      * draw in copies of the canvas anyway, and each scan the whole store;
      * docs/performance.md has the measures); not while its blends are
      * recorded (their replays take bands) */
-    if (!rt && (k->may & FX_MAY_SPLIT) && g->def->blend == ISK_BLEND_ADD && (columns || e->split_always) &&
+    if (!rt && (k->may & FX_MAY_SPLIT) && g->def->look.blend == ISK_BLEND_ADD && (columns || e->split_always) &&
         split_particles(j, whole, threads)) {
         isk__workers_for(&e->workers, (size_t)j->nb, 2, run_band, j);
         isk__workers_for(&e->workers, (size_t)j->nb, 1, add_copies, j);

@@ -111,24 +111,24 @@ static isk_status check_bounds(ctx *c)
 
 static size_t limit_of(const isk_emitter_def *e)
 {
-    return e->limit ? e->limit : ISK_EXPLODE_THESIS_LIMIT;
+    return e->born.limit ? e->born.limit : ISK_EXPLODE_THESIS_LIMIT;
 }
 
 static isk_status check_stream(ctx *c, const isk_emitter_def *e)
 {
     isk_shape s = {0};
-    s.kind = e->shape;
-    s.a = e->shape_a;
-    s.b = e->shape_b;
-    s.angle = e->shape_angle;
-    s.ellipse_mode = e->shape_faithful ? ISK_ELLIPSE_THESIS : ISK_ELLIPSE_UNIFORM;
+    s.kind = e->born.shape;
+    s.a = e->born.shape_a;
+    s.b = e->born.shape_b;
+    s.angle = e->born.shape_angle;
+    s.ellipse_mode = e->born.shape_faithful ? ISK_ELLIPSE_THESIS : ISK_ELLIPSE_UNIFORM;
     if (isk_shape_check(&s) != ISK_OK)
-        return bad_key(c, "shape", "%s needs shape_a, shape_b >= 0%s", isk_shape_names[e->shape],
-                       e->shape == ISK_SHAPE_RING ? " and shape_a <= shape_b" : "");
-    if (e->speed_min > e->speed_max)
-        return bad_key(c, "speed_max", "must be >= speed_min (%.15g)", e->speed_min);
-    if (e->count > e->capacity)
-        return bad_key(c, "count", "a burst of %zu exceeds the capacity %zu", e->count, e->capacity);
+        return bad_key(c, "shape", "%s needs shape_a, shape_b >= 0%s", isk_shape_names[e->born.shape],
+                       e->born.shape == ISK_SHAPE_RING ? " and shape_a <= shape_b" : "");
+    if (e->launch.speed_min > e->launch.speed_max)
+        return bad_key(c, "speed_max", "must be >= speed_min (%.15g)", e->launch.speed_min);
+    if (e->born.count > e->born.capacity)
+        return bad_key(c, "count", "a burst of %zu exceeds the capacity %zu", e->born.count, e->born.capacity);
     return ISK_OK; /* rate 0 and no bursts is an idle stream: fine while running, a mistake in a file (the parser's) */
 }
 
@@ -142,20 +142,20 @@ static isk_status check_sub_emitters(ctx *c, const isk_emitter_def *e)
 {
     const isk_effect_def *d = c->d;
     static const char *const keys[2] = {"on_death", "on_hit"};
-    const int refs[2] = {e->on_death, e->on_hit};
+    const int refs[2] = {e->events.on_death, e->events.on_hit};
     for (int k = 0; k < 2; k++) {
         if (refs[k] < 0)
             continue;
         const isk_emitter_def *t = &d->emitters[refs[k]];
-        if (t->source != ISK_SOURCE_SUB)
+        if (t->born.source != ISK_SOURCE_SUB)
             return bad_key(c, keys[k], "'%s' is not a sub-emitter (it needs source = sub)", t->name);
     }
-    if (e->source != ISK_SOURCE_SUB)
+    if (e->born.source != ISK_SOURCE_SUB)
         return ISK_OK;
-    if (e->count < 1 || e->count > e->capacity)
-        return bad_key(c, "count", "a sub-emitter fires 1..capacity (%zu) particles per event", e->capacity);
+    if (e->born.count < 1 || e->born.count > e->born.capacity)
+        return bad_key(c, "count", "a sub-emitter fires 1..capacity (%zu) particles per event", e->born.capacity);
     for (int i = 0; i < d->nemitters; i++)
-        if (d->emitters[i].on_death == c->index || d->emitters[i].on_hit == c->index)
+        if (d->emitters[i].events.on_death == c->index || d->emitters[i].events.on_hit == c->index)
             return ISK_OK;
     return bad_item(c, "source", "a sub-emitter that no emitter's on_death or on_hit names never fires");
 }
@@ -165,17 +165,19 @@ static isk_status check_emitter(ctx *c)
 {
     const isk_effect_def *d = c->d;
     const isk_emitter_def *e = &d->emitters[c->index];
-    switch (e->source) {
+    switch (e->born.source) {
     case ISK_SOURCE_EXPLOSION:
     case ISK_SOURCE_LAYER: {
         /* An empty layer is the thesis simulator's own start ("Sloj" 0): the
          * particles come from clicks. */
-        const size_t least = e->source == ISK_SOURCE_LAYER ? 0 : 1;
-        if (e->count < least || e->count > limit_of(e))
+        const size_t least = e->born.source == ISK_SOURCE_LAYER ? 0 : 1;
+        if (e->born.count < least || e->born.count > limit_of(e))
             return bad_key(c, "count", "must be %zu..%zu (raise limit for more)", least, limit_of(e));
-        if (e->count > e->capacity)
-            return bad_key(c, "count", "%zu exceeds the capacity %zu (raise capacity for more)", e->count, e->capacity);
-        if (e->source == ISK_SOURCE_LAYER && (e->rect[0] > e->rect[1] || e->rect[2] > e->rect[3]))
+        if (e->born.count > e->born.capacity)
+            return bad_key(c, "count", "%zu exceeds the capacity %zu (raise capacity for more)", e->born.count,
+                           e->born.capacity);
+        if (e->born.source == ISK_SOURCE_LAYER &&
+            (e->born.rect[0] > e->born.rect[1] || e->born.rect[2] > e->born.rect[3]))
             return bad_key(c, "rect", "needs xmin <= xmax and ymin <= ymax");
         break;
     }
@@ -194,15 +196,15 @@ static isk_status check_emitter(ctx *c)
      * longest prewarm of the emitters that feed it. */
     double frames[ISK_EFFECT_MAX_EMITTERS];
     fx_prewarm_offsets(d, frames);
-    const double steps = frames[c->index] * (double)(e->substeps ? e->substeps : d->substeps);
+    const double steps = frames[c->index] * (double)(e->motion.substeps ? e->motion.substeps : d->substeps);
     if (frames[c->index] > 0 && !(steps <= ISK_PREWARM_MAX_STEPS)) {
-        if (e->source == ISK_SOURCE_SUB)
+        if (e->born.source == ISK_SOURCE_SUB)
             return bad_item(c, "substeps", "the emitters feeding this sub-emitter prewarm %.15g frames, %.15g of its "
                                            "substeps; at most %d (iskra/limits.h): lower their prewarm or its substeps",
                             frames[c->index], steps, ISK_PREWARM_MAX_STEPS);
         return bad_key(c, "prewarm", "%.15g s is %.15g substeps of this emitter at dt %.15g; at most %d "
                                      "(iskra/limits.h)",
-                       e->prewarm, steps, d->dt, ISK_PREWARM_MAX_STEPS);
+                       e->born.prewarm, steps, d->dt, ISK_PREWARM_MAX_STEPS);
     }
     char why[200];
     const char *looks = fx_looks_check(e, why, sizeof why);
@@ -211,12 +213,12 @@ static isk_status check_emitter(ctx *c)
     isk_status se = check_sub_emitters(c, e);
     if (se != ISK_OK)
         return se;
-    if (e->slow_faithful && e->slowing > 0) {
+    if (e->motion.slow_faithful && e->motion.slowing > 0) {
         /* The thesis order is a fused constant-acceleration kernel. */
-        isk_integrator m = e->integrator == ISK_INTEGRATE_INHERIT ? d->integrator : e->integrator;
+        isk_integrator m = e->motion.integrator == ISK_INTEGRATE_INHERIT ? d->integrator : e->motion.integrator;
         int ok = m == ISK_INTEGRATE_SEMI_EULER && d->fidelity == ISK_FIDELITY_SOUND;
-        for (int i = 0; ok && i < e->nforces; i++) {
-            const isk_force_def *f = &d->forces[e->forces[i]];
+        for (int i = 0; ok && i < e->motion.nforces; i++) {
+            const isk_force_def *f = &d->forces[e->motion.forces[i]];
             ok = !(f->kind == ISK_FORCE_DRAG && f->b != 0) && f->kind != ISK_FORCE_POTENTIAL;
         }
         if (!ok)

@@ -33,16 +33,16 @@ static void gather_forces(isk_effect *e, fx_group *g)
     isk_forces *f = &g->forces;
     memset(f, 0, sizeof *f);
     size_t np = 0;
-    for (int i = 0; i < em->nforces; i++) {
-        const isk_force_def *fd = &d->forces[em->forces[i]];
+    for (int i = 0; i < em->motion.nforces; i++) {
+        const isk_force_def *fd = &d->forces[em->motion.forces[i]];
         switch (fd->kind) {
-        case ISK_FORCE_GRAVITY: f->gravity += fd->g * em->gravity_mult; break;
+        case ISK_FORCE_GRAVITY: f->gravity += fd->g * em->motion.gravity_multiplier; break;
         case ISK_FORCE_DRAG: f->drag += fd->b; break;
         case ISK_FORCE_WIND: f->ax += fd->accel.x; f->ay += fd->accel.y; break;
         case ISK_FORCE_POTENTIAL:
             for (size_t k = 0; k < e->npots; k++) {
                 const isk_potential *p = &e->pots[k];
-                if (e->pot_force[k] == em->forces[i] && p->enabled && p->k * p->charge != 0.0)
+                if (e->pot_force[k] == em->motion.forces[i] && p->enabled && p->k * p->charge != 0.0)
                     g->pick[np++] = k;
             }
             break;
@@ -50,7 +50,7 @@ static void gather_forces(isk_effect *e, fx_group *g)
         default: break;
         }
     }
-    f->ay += em->weight;
+    f->ay += em->motion.weight;
     f->pot = e->pots;
     f->npot = e->npots;
     f->pick = g->pick;
@@ -67,14 +67,14 @@ static int gather_field(isk_effect *e, fx_group *g)
     const isk_effect_def *d = &e->def;
     const isk_emitter_def *em = g->def;
     isk_field *f = &g->field;
-    f->radial = em->radial_accel;
-    f->tangential = em->tangential_accel;
+    f->radial = em->motion.radial_accel;
+    f->tangential = em->motion.tangential_accel;
     f->nturb = 0;
-    for (int i = 0; i < em->nforces && f->nturb < ISK_FIELD_MAX_TURB; i++) {
-        const isk_force_def *fd = &d->forces[em->forces[i]];
+    for (int i = 0; i < em->motion.nforces && f->nturb < ISK_FIELD_MAX_TURB; i++) {
+        const isk_force_def *fd = &d->forces[em->motion.forces[i]];
         if (fd->kind == ISK_FORCE_TURBULENCE && fd->strength != 0)
             f->turb[f->nturb++] =
-                isk__field_turbulence(fd->strength, fd->scale, fd->speed, isk__noise_key(d->seed, em->forces[i]));
+                isk__field_turbulence(fd->strength, fd->scale, fd->speed, isk__noise_key(d->seed, em->motion.forces[i]));
     }
     return f->radial != 0 || f->tangential != 0 || f->nturb > 0;
 }
@@ -82,14 +82,14 @@ static int gather_field(isk_effect *e, fx_group *g)
 /* The sway's parameters, for the oscillate stage or the drift+sway one. */
 static void osc_params(isk_stage_osc *o, isk_effect *e, const isk_emitter_def *em)
 {
-    o->decay = em->osc_decay;
+    o->decay = em->motion.osc_decay;
     o->table = &e->sin_table;
-    o->mode = em->osc_table;
-    o->faithful = em->osc_faithful;
-    o->omega_min = em->osc_omega_min;
-    o->omega_max = em->osc_omega_max;
-    o->amp_min = em->osc_amp_min;
-    o->amp_max = em->osc_amp_max;
+    o->mode = em->motion.osc_table;
+    o->faithful = em->motion.osc_faithful;
+    o->omega_min = em->motion.osc_omega_min;
+    o->omega_max = em->motion.osc_omega_max;
+    o->amp_min = em->motion.osc_amplitude_min;
+    o->amp_max = em->motion.osc_amplitude_max;
 }
 
 #define ADD(kind) ((st = isk__pipeline_add(&g->pipeline, &(kind))) != NULL)
@@ -107,23 +107,23 @@ isk_status fx_compile(isk_effect *e, fx_group *g)
     isk__rest_forget(&g->rest, 0);
     fx_retain_clear(&g->retained);
     gather_forces(e, g);
-    g->integrator = em->integrator == ISK_INTEGRATE_INHERIT ? d->integrator : em->integrator;
-    g->substeps = em->substeps ? em->substeps : d->substeps;
+    g->integrator = em->motion.integrator == ISK_INTEGRATE_INHERIT ? d->integrator : em->motion.integrator;
+    g->substeps = em->motion.substeps ? em->motion.substeps : d->substeps;
 
-    if (em->ndeflectors > g->defl_cap) {
-        isk_deflector *a = realloc(g->defl, sizeof *a * (size_t)em->ndeflectors);
+    if (em->motion.ndeflectors > g->defl_cap) {
+        isk_deflector *a = realloc(g->defl, sizeof *a * (size_t)em->motion.ndeflectors);
         if (!a)
             return ISK_ERR_NOMEM;
         g->defl = a;
-        g->defl_cap = em->ndeflectors;
+        g->defl_cap = em->motion.ndeflectors;
     }
-    g->ndefl = em->ndeflectors;
+    g->ndefl = em->motion.ndeflectors;
     int can_kill = 0;
     for (int k = 0; k < g->ndefl; k++) {
-        g->defl[k] = d->deflectors[em->deflectors[k]].seg;
+        g->defl[k] = d->deflectors[em->motion.deflectors[k]].seg;
         can_kill |= g->defl[k].reaction == ISK_DEFLECT_KILL;
     }
-    const int walls = em->bounded && d->bounds.sides != 0;
+    const int walls = em->motion.bounded && d->bounds.sides != 0;
     /* Reflect walls (margin 0) leave a resting particle exactly on the floor
      * line, which the view maps to y = height: one pixel outside the canvas.
      * There the drawing moves a screen coordinate in (n - 1, n] to n - 1, so
@@ -132,9 +132,10 @@ isk_status fx_compile(isk_effect *e, fx_group *g)
      * without walls the view is a plain window. */
     g->keep_on_canvas = walls && d->bounds.mode == ISK_BOUNCE_REFLECT;
 
-    if (walls && em->draw_before_bounce)
+    if (walls && em->motion.draw_before_bounce)
         g->frame_start[g->nframe_start++] = &fx_step_late_walls;
-    if (em->source == ISK_SOURCE_EXPLOSION && (em->start > 0 || em->explosion == ISK_EXPLOSION_MULTI_COULOMB))
+    if (em->born.source == ISK_SOURCE_EXPLOSION &&
+        (em->born.start > 0 || em->born.explosion == ISK_EXPLOSION_MULTI_COULOMB))
         g->frame_start[g->nframe_start++] = &fx_step_release;
 
     if ((g->has_field = gather_field(e, g)) != 0) {
@@ -147,7 +148,7 @@ isk_status fx_compile(isk_effect *e, fx_group *g)
     const int fast = g->integrator == ISK_INTEGRATE_SEMI_EULER && f->drag == 0 && f->npick == 0 &&
                      d->fidelity == ISK_FIDELITY_SOUND;
     const int motion_at = g->pipeline.n; /* where the remember stage goes, if the list needs it */
-    const int fused_slow = fast && em->slow_faithful && em->slowing > 0;
+    const int fused_slow = fast && em->motion.slow_faithful && em->motion.slowing > 0;
     /* The thesis's jitter applies the constant part of the acceleration. */
     g->const_ax = f->ax;
     g->const_ay = f->ay - f->gravity;
@@ -159,8 +160,10 @@ isk_status fx_compile(isk_effect *e, fx_group *g)
             return ISK_ERR_FULL;
         st->u.drift_sway.ax = g->const_ax;
         st->u.drift_sway.ay = g->const_ay;
-        st->u.drift_sway.slowing = em->slowing > 0 ? em->slowing : 0.0;
-        st->u.drift_sway.order = fused_slow ? ISK_DRIFT_THESIS : em->slowing > 0 ? ISK_DRIFT_SOUND : ISK_DRIFT_PLAIN;
+        st->u.drift_sway.slowing = em->motion.slowing > 0 ? em->motion.slowing : 0.0;
+        st->u.drift_sway.order = fused_slow ? ISK_DRIFT_THESIS
+            : em->motion.slowing > 0        ? ISK_DRIFT_SOUND
+                                            : ISK_DRIFT_PLAIN;
         osc_params(&st->u.drift_sway.osc, e, em);
     } else if (fast) {
         if (fused_slow) {
@@ -168,7 +171,7 @@ isk_status fx_compile(isk_effect *e, fx_group *g)
                 return ISK_ERR_FULL;
             st->u.drift_slow.ax = g->const_ax;
             st->u.drift_slow.ay = g->const_ay;
-            st->u.drift_slow.slowing = em->slowing;
+            st->u.drift_slow.slowing = em->motion.slowing;
         } else {
             if (!ADD(isk__stage_drift))
                 return ISK_ERR_FULL;
@@ -181,17 +184,17 @@ isk_status fx_compile(isk_effect *e, fx_group *g)
         st->u.motion.method = g->integrator;
         st->u.motion.forces = f;
     }
-    if (em->slowing > 0 && !fused_slow && !drift_sway) {
+    if (em->motion.slowing > 0 && !fused_slow && !drift_sway) {
         if (!ADD(isk__stage_slow))
             return ISK_ERR_FULL;
-        st->u.slow.slowing = em->slowing;
+        st->u.slow.slowing = em->motion.slowing;
     }
     if (sway && !drift_sway) {
         if (!ADD(isk__stage_oscillate))
             return ISK_ERR_FULL;
         osc_params(&st->u.osc, e, em);
     }
-    if (walls && !em->draw_before_bounce) {
+    if (walls && !em->motion.draw_before_bounce) {
         if (!ADD(isk__stage_walls))
             return ISK_ERR_FULL;
         st->u.walls.b = &d->bounds;
@@ -201,7 +204,7 @@ isk_status fx_compile(isk_effect *e, fx_group *g)
         st->u.walls.ax = g->const_ax;
         st->u.walls.ay = g->const_ay;
         st->u.walls.offset = isk_integrator_velocity_offset(g->integrator);
-        st->u.walls.hit = em->on_hit >= 0;
+        st->u.walls.hit = em->events.on_hit >= 0;
     }
     if (g->ndefl) {
         if (!ADD(isk__stage_deflect))
@@ -211,13 +214,13 @@ isk_status fx_compile(isk_effect *e, fx_group *g)
         st->u.deflect.rng = &g->rng;
         st->u.deflect.can_kill = can_kill;
         st->u.deflect.drag = f->drag;
-        st->u.deflect.hit = em->on_hit >= 0;
+        st->u.deflect.hit = em->events.on_hit >= 0;
     }
     if (g->store.angle && fx_looks_spins(em)) {
         if (!ADD(isk__stage_spin))
             return ISK_ERR_FULL;
-        st->u.spin.spin = em->spin;
-        st->u.spin.spin_range = em->spin_range;
+        st->u.spin.spin = em->look.spin;
+        st->u.spin.spin_range = em->look.spin_range;
     }
     /* What the stages need, folded: the start state (bounces at the time
      * of impact) kept by the motion stage's own pass, or by a stage of its
@@ -239,18 +242,18 @@ isk_status fx_compile(isk_effect *e, fx_group *g)
     /* The dead may be replaced by the last live particles (moving only as
      * many as died) when nothing sees the order: the stages (as for
      * threads) and the drawing (saturating adds commute; no draw). */
-    g->cull_unordered = g->parallel && (em->draw == ISK_DRAW_NONE || em->blend == ISK_BLEND_ADD);
-    const int mortal = isfinite(em->life) || can_kill;
+    g->cull_unordered = g->parallel && (em->look.draw == ISK_DRAW_NONE || em->look.blend == ISK_BLEND_ADD);
+    const int mortal = isfinite(em->life.seconds) || can_kill;
     /* a flipbook played at a rate reads the age of immortal particles too */
-    const int flips = g->texture && g->texture->frames > 1 && em->texture_fps > 0;
+    const int flips = g->texture && g->texture->frames > 1 && em->look.texture_fps > 0;
     if ((mortal || flips) && !ADD(isk__stage_age))
         return ISK_ERR_FULL;
 
-    if (em->source == ISK_SOURCE_STREAM && em->space == ISK_SPACE_LOCAL)
+    if (em->born.source == ISK_SOURCE_STREAM && em->born.space == ISK_SPACE_LOCAL)
         g->substep_end[g->nsubstep_end++] = &fx_step_carry;
-    if (em->source == ISK_SOURCE_STREAM)
+    if (em->born.source == ISK_SOURCE_STREAM)
         g->substep_end[g->nsubstep_end++] = &fx_step_spawn;
-    if (em->on_hit >= 0 && (walls || g->ndefl)) /* sub-emitters (effect_events.c) */
+    if (em->events.on_hit >= 0 && (walls || g->ndefl)) /* sub-emitters (effect_events.c) */
         g->substep_end[g->nsubstep_end++] = &fx_step_hits;
     if (mortal)
         g->substep_end[g->nsubstep_end++] = &fx_step_cull;
@@ -258,7 +261,7 @@ isk_status fx_compile(isk_effect *e, fx_group *g)
      * the group's particles: no step at the frame's start (the late walls,
      * the releases) and no carry with the emitter. */
     g->rests = isk__pipeline_rest_prefix(&g->pipeline) > 0 && g->nframe_start == 0 &&
-               !(em->source == ISK_SOURCE_STREAM && em->space == ISK_SPACE_LOCAL);
+               !(em->born.source == ISK_SOURCE_STREAM && em->born.space == ISK_SPACE_LOCAL);
     g->draw = fx_choose_draw(g);
     return ISK_OK;
 }
@@ -285,7 +288,7 @@ static void describe_steps(const isk_effect *e, const fx_group *g, const fx_step
 void fx_describe_group(const isk_effect *e, const fx_group *g, FILE *out)
 {
     const isk_emitter_def *em = g->def;
-    fprintf(out, "emitter %s (%s, %zu particles, %d substep%s of %s):\n", em->name, isk_source_names[em->source],
+    fprintf(out, "emitter %s (%s, %zu particles, %d substep%s of %s):\n", em->name, isk_source_names[em->born.source],
             g->store.count, g->substeps, g->substeps == 1 ? "" : "s", isk_integrator_name(g->integrator));
     describe_steps(e, g, g->frame_start, g->nframe_start, out);
     isk__pipeline_describe(&g->pipeline, out);
@@ -300,12 +303,12 @@ void fx_describe_group(const isk_effect *e, const fx_group *g, FILE *out)
     if (!g->parallel)
         fprintf(out, "  %-9s one thread, in particle order (%s)\n", "order",
                 g->forces.npick ? "a potential may switch itself off" : "a deflector draws at random");
-    if (em->draw != ISK_DRAW_NONE)
-        fprintf(out, "  draw      %s, %s%s%s%s\n", isk_draw_mode_names[em->draw], isk_blend_name(em->blend),
+    if (em->look.draw != ISK_DRAW_NONE)
+        fprintf(out, "  draw      %s, %s%s%s%s\n", isk_draw_mode_names[em->look.draw], isk_blend_name(em->look.blend),
                 g->has_color_ramp ? ", colour over life" : "", g->has_alpha_ramp ? ", alpha over life" : "",
                 g->has_size_ramp ? ", size over life" : "");
     fx_looks_describe(g, out);
-    if (em->trail > 0)
-        fprintf(out, "  trail     the last %d positions, %g px wide, fade %g (drawn first)\n", em->trail,
-                em->trail_width, em->trail_fade);
+    if (em->look.trail > 0)
+        fprintf(out, "  trail     the last %d positions, %g px wide, fade %g (drawn first)\n", em->look.trail,
+                em->look.trail_width, em->look.trail_fade);
 }

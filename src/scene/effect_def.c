@@ -95,7 +95,7 @@ isk_emitter_def *isk_effect_def_add_emitter(isk_effect_def *d, const char *name)
         return NULL;
     fx_section_defaults(ISK_SECTION_EMITTER, e);
     set_name(e->name, name);
-    e->order = d->nemitters - 1;
+    e->look.order = d->nemitters - 1;
     return e;
 }
 
@@ -114,7 +114,7 @@ isk_drawing_def *isk_effect_def_add_drawing(isk_effect_def *d, const char *name,
 
 int fx_emitter_oscillates(const isk_emitter_def *em)
 {
-    return em->osc_amp_max > 0 && em->osc_omega_max != 0;
+    return em->motion.osc_amplitude_max > 0 && em->motion.osc_omega_max != 0;
 }
 
 /* What one emitter's pool takes at its fullest. */
@@ -122,10 +122,11 @@ size_t fx_emitter_memory(const isk_emitter_def *e)
 {
     unsigned flags = (fx_emitter_oscillates(e) ? ISK_PARTICLES_OSC : 0) | fx_looks_columns(e);
     /* sub-emitters and trails: the hit and trail columns, a sub-emitter's waiting events */
-    flags |= (e->on_hit >= 0 ? ISK_PARTICLES_HIT : 0) | (e->trail > 0 ? ISK_PARTICLES_TRAIL : 0);
-    size_t b = isk_particles_bytes_trail(e->capacity, flags, e->trail > 0 && e->trail <= ISK_TRAIL_MAX ? e->trail : 0);
-    if (b && e->source == ISK_SOURCE_SUB) {
-        size_t q = e->capacity <= SIZE_MAX / sizeof(fx_event) ? e->capacity * sizeof(fx_event) : SIZE_MAX;
+    flags |= (e->events.on_hit >= 0 ? ISK_PARTICLES_HIT : 0) | (e->look.trail > 0 ? ISK_PARTICLES_TRAIL : 0);
+    size_t b = isk_particles_bytes_trail(e->born.capacity, flags,
+                                         e->look.trail > 0 && e->look.trail <= ISK_TRAIL_MAX ? e->look.trail : 0);
+    if (b && e->born.source == ISK_SOURCE_SUB) {
+        size_t q = e->born.capacity <= SIZE_MAX / sizeof(fx_event) ? e->born.capacity * sizeof(fx_event) : SIZE_MAX;
         b = q > SIZE_MAX - b ? 0 : b + q;
     }
     return b ? b : SIZE_MAX;
@@ -181,12 +182,12 @@ isk_status isk_emitter_use_force(isk_emitter_def *e, int force)
         return ISK_ERR_NULL;
     if (force < 0 || force >= ISK_EFFECT_MAX_FORCES)
         return ISK_ERR_RANGE;
-    for (int i = 0; i < e->nforces; i++)
-        if (e->forces[i] == force)
+    for (int i = 0; i < e->motion.nforces; i++)
+        if (e->motion.forces[i] == force)
             return ISK_OK;
-    if (e->nforces >= ISK_EFFECT_MAX_FORCES)
+    if (e->motion.nforces >= ISK_EFFECT_MAX_FORCES)
         return ISK_ERR_SIZE;
-    e->forces[e->nforces++] = force;
+    e->motion.forces[e->motion.nforces++] = force;
     return ISK_OK;
 }
 
@@ -196,12 +197,12 @@ isk_status isk_emitter_use_deflector(isk_emitter_def *e, int deflector)
         return ISK_ERR_NULL;
     if (deflector < 0 || deflector >= ISK_EFFECT_MAX_DEFLECTORS)
         return ISK_ERR_RANGE;
-    for (int i = 0; i < e->ndeflectors; i++)
-        if (e->deflectors[i] == deflector)
+    for (int i = 0; i < e->motion.ndeflectors; i++)
+        if (e->motion.deflectors[i] == deflector)
             return ISK_OK;
-    if (e->ndeflectors >= ISK_EFFECT_MAX_DEFLECTORS)
+    if (e->motion.ndeflectors >= ISK_EFFECT_MAX_DEFLECTORS)
         return ISK_ERR_SIZE;
-    e->deflectors[e->ndeflectors++] = deflector;
+    e->motion.deflectors[e->motion.ndeflectors++] = deflector;
     return ISK_OK;
 }
 

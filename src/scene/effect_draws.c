@@ -20,18 +20,18 @@ isk_status fx_bake_ramps(fx_group *g, isk_error *err)
 {
     const isk_emitter_def *em = g->def;
     isk_status s = ISK_OK;
-    if (em->color_over_life.n) {
-        s = isk_color_gradient_bake(&g->color_ramp, em->color_over_life.stops, em->color_over_life.n,
+    if (em->look.color_over_life.n) {
+        s = isk_color_gradient_bake(&g->color_ramp, em->look.color_over_life.stops, em->look.color_over_life.n,
                                     ISK_GRADIENT_DEFAULT_RES);
         g->has_color_ramp = s == ISK_OK;
     }
-    if (s == ISK_OK && em->alpha_over_life.n) {
-        s = isk_scalar_gradient_bake(&g->alpha_ramp, em->alpha_over_life.stops, em->alpha_over_life.n,
+    if (s == ISK_OK && em->look.alpha_over_life.n) {
+        s = isk_scalar_gradient_bake(&g->alpha_ramp, em->look.alpha_over_life.stops, em->look.alpha_over_life.n,
                                      ISK_GRADIENT_DEFAULT_RES);
         g->has_alpha_ramp = s == ISK_OK;
     }
-    if (s == ISK_OK && em->size_over_life.n) {
-        s = isk_scalar_gradient_bake(&g->size_ramp, em->size_over_life.stops, em->size_over_life.n,
+    if (s == ISK_OK && em->look.size_over_life.n) {
+        s = isk_scalar_gradient_bake(&g->size_ramp, em->look.size_over_life.stops, em->look.size_over_life.n,
                                      ISK_GRADIENT_DEFAULT_RES);
         g->has_size_ramp = s == ISK_OK;
     }
@@ -56,12 +56,12 @@ void fx_free_ramps(fx_group *g)
 static inline isk_color particle_color(const fx_group *g, const isk_particles *p, size_t i, double t,
                                        double *size_mult)
 {
-    isk_color col = p->color ? p->color[i] : g->def->color;
+    isk_color col = p->color ? p->color[i] : g->def->look.color;
     if (g->has_color_ramp) {
         isk_color ramp = isk_color_gradient_at(&g->color_ramp, t);
         /* a picked base colour (color_pick) is multiplied, channel by
          * channel, div255(base * ramp); otherwise the ramp is the colour */
-        if (g->def->color_pick.n && p->color)
+        if (g->def->look.color_pick.n && p->color)
             ramp = isk_rgba((uint8_t)((col.r * ramp.r + 127) / 255), (uint8_t)((col.g * ramp.g + 127) / 255),
                             (uint8_t)((col.b * ramp.b + 127) / 255), (uint8_t)((col.a * ramp.a + 127) / 255));
         col = ramp;
@@ -85,7 +85,7 @@ static inline isk_color style(const fx_group *g, const isk_particles *p, size_t 
 {
     *mult = 1.0;
     if (!vary)
-        return g->def->color;
+        return g->def->look.color;
     double t = isfinite(p->life[i]) && p->life[i] > 0 ? p->age[i] / p->life[i] : 0.0;
     return particle_color(g, p, i, t, mult);
 }
@@ -126,8 +126,8 @@ static void screen_point(const isk_effect *e, const isk_canvas *c, const fx_grou
 static isk_status draw_styled_dots(isk_effect *e, isk_canvas *c, fx_group *g, const fx_band *b)
 {
     const isk_particles *p = &g->store;
-    const isk_blend blend = g->def->blend;
-    const int browser = g->def->draw == ISK_DRAW_DOT_BROWSER;
+    const isk_blend blend = g->def->look.blend;
+    const int browser = g->def->look.draw == ISK_DRAW_DOT_BROWSER;
     const int vary = fx_varies(g);
     const size_t n = b->list ? b->nlist : b->end;
     for (size_t k = b->list ? 0 : b->first; k < n; k++) {
@@ -145,8 +145,8 @@ static isk_status draw_styled_dots(isk_effect *e, isk_canvas *c, fx_group *g, co
 
 unsigned fx_dots_rule(const fx_group *g)
 {
-    const unsigned rule = g->def->draw == ISK_DRAW_DOT_BROWSER ? ISK__BATCH_DOT_BROWSER
-                          : g->def->draw == ISK_DRAW_PIXEL     ? ISK__BATCH_PIXEL
+    const unsigned rule = g->def->look.draw == ISK_DRAW_DOT_BROWSER ? ISK__BATCH_DOT_BROWSER
+                          : g->def->look.draw == ISK_DRAW_PIXEL     ? ISK__BATCH_PIXEL
                                                                : ISK__BATCH_DOT;
     return g->keep_on_canvas ? rule | ISK__BATCH_KEEP_ON_CANVAS : rule;
 }
@@ -159,14 +159,14 @@ static isk_status draw_styled_pixels(isk_effect *e, isk_canvas *c, fx_group *g, 
 static isk_status draw_dots(isk_effect *e, isk_canvas *c, fx_group *g, const fx_band *b)
 {
     if (!ISK__FAST_BATCH)
-        return g->def->draw == ISK_DRAW_PIXEL ? draw_styled_pixels(e, c, g, b) : draw_styled_dots(e, c, g, b);
+        return g->def->look.draw == ISK_DRAW_PIXEL ? draw_styled_pixels(e, c, g, b) : draw_styled_dots(e, c, g, b);
     const unsigned rule = fx_dots_rule(g);
     if (b->list)
-        isk__draw_batch_list_rows(c, &e->view, b->list, b->nlist, g->store.x, g->store.y, g->def->color,
-                                  g->def->blend, rule, b->r0, b->r1);
+        isk__draw_batch_list_rows(c, &e->view, b->list, b->nlist, g->store.x, g->store.y, g->def->look.color,
+                                  g->def->look.blend, rule, b->r0, b->r1);
     else
         isk__draw_batch_tile(c, &e->view, b->end - b->first, g->store.x + b->first, g->store.y + b->first,
-                             g->def->color, g->def->blend, rule, b->r0, b->r1, b->c0, b->c1);
+                             g->def->look.color, g->def->look.blend, rule, b->r0, b->r1, b->c0, b->c1);
     return ISK_OK;
 }
 
@@ -181,7 +181,7 @@ static isk_status draw_styled_pixels(isk_effect *e, isk_canvas *c, fx_group *g, 
         screen_point(e, c, g, i, &X, &Y);
         isk_color col = style(g, p, i, vary, &mult);
         if (X >= 0 && Y >= b->r0 && X < c->width && Y < b->r1)
-            isk_draw_pixel(c, (int)X, (int)Y, col, g->def->blend);
+            isk_draw_pixel(c, (int)X, (int)Y, col, g->def->look.blend);
     }
     return ISK_OK;
 }
@@ -195,8 +195,8 @@ static isk_status draw_discs(isk_effect *e, isk_canvas *c, fx_group *g, const fx
         double X, Y, mult;
         isk_view_to_screen(&e->view, p->x[i], p->y[i], &X, &Y);
         isk_color col = style(g, p, i, vary, &mult);
-        const double size = p->size ? p->size[i] : g->def->size; /* size_range: its own */
-        isk__fill_circle_aa_rows(c, X, Y, 0.5 * size * mult * scale, col, g->def->blend, b->r0, b->r1);
+        const double size = p->size ? p->size[i] : g->def->look.size; /* size_range: its own */
+        isk__fill_circle_aa_rows(c, X, Y, 0.5 * size * mult * scale, col, g->def->look.blend, b->r0, b->r1);
     }
     return ISK_OK;
 }
@@ -204,7 +204,7 @@ static isk_status draw_discs(isk_effect *e, isk_canvas *c, fx_group *g, const fx
 /* A sprite's whole-pixel size for a size multiplier. */
 static int sprite_px(const fx_group *g, double scale, double mult)
 {
-    double d = g->def->size * mult * scale;
+    double d = g->def->look.size * mult * scale;
     if (!(d > 0))
         return 0;
     return d >= ISK_SPRITE_MAX_SIZE ? ISK_SPRITE_MAX_SIZE : (d >= 1.0 ? (int)(d + 0.5) : 1);
@@ -218,7 +218,7 @@ static int sprite_px(const fx_group *g, double scale, double mult)
 static isk_status prepare_sprites(isk_effect *e, fx_group *g, fx_band *b)
 {
     const int tinted = g->has_color_ramp || g->has_alpha_ramp || g->store.color;
-    const isk_color bake_col = tinted ? ISK_WHITE : g->def->color;
+    const isk_color bake_col = tinted ? ISK_WHITE : g->def->look.color;
     const double scale = fabs(e->view.sx);
     const int n = g->has_size_ramp ? g->size_ramp.res + 1 : 1;
     for (int attempt = 0; attempt < 2; attempt++) {
@@ -228,7 +228,7 @@ static isk_status prepare_sprites(isk_effect *e, fx_group *g, fx_band *b)
         for (int k = 0; k < n && s == ISK_OK; k++) {
             int px = sprite_px(g, scale, g->has_size_ramp ? g->size_ramp.table[k] : 1.0);
             if (px && !b->sprite[px])
-                s = isk_sprite_cache_get(e->sprites, g->def->sprite, px, bake_col, &b->sprite[px]);
+                s = isk_sprite_cache_get(e->sprites, g->def->look.sprite, px, bake_col, &b->sprite[px]);
             /* a mask of S rows sits at its centre, snapped to half pixels,
              * minus S/2: it reaches S/2 + 1 rows either way at most */
             if (s == ISK_OK && px && b->sprite[px]->size / 2.0 + 2.0 > b->sprite_reach)
@@ -276,7 +276,7 @@ static isk_status draw_sprites(isk_effect *e, isk_canvas *c, fx_group *g, const 
             isk_color col = style(g, p, i, vary, &mult);
             const isk_sprite *spr = b->sprite[sprite_px(g, scale, mult)];
             if (spr)
-                isk__draw_sprite_rows(c, spr, X, Y, tinted ? &col : NULL, g->def->blend, b->r0, b->r1);
+                isk__draw_sprite_rows(c, spr, X, Y, tinted ? &col : NULL, g->def->look.blend, b->r0, b->r1);
         }
     }
     return ISK_OK;
@@ -333,9 +333,9 @@ const fx_draw_kind fx_kind_nothing = {"nothing", draw_nothing, NULL, 0.0, 0, 0};
 const fx_draw_kind *fx_choose_draw(const fx_group *g)
 {
     const int vary = fx_varies(g);
-    if (g->texture && g->def->draw != ISK_DRAW_NONE)
+    if (g->texture && g->def->look.draw != ISK_DRAW_NONE)
         return &fx_kind_textures; /* a texture or a streak (effect_texture.c) */
-    switch (g->def->draw) {
+    switch (g->def->look.draw) {
     case ISK_DRAW_DOT: return vary ? &fx_kind_styled_dots : &fx_kind_dots;
     case ISK_DRAW_DOT_BROWSER: return vary ? &fx_kind_styled_dots : &fx_kind_browser_dots;
     case ISK_DRAW_PIXEL: return vary ? &fx_kind_styled_pixels : &fx_kind_pixels;

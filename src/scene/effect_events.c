@@ -44,10 +44,10 @@ isk_status fx_events_columns(fx_group *g)
     const isk_emitter_def *em = g->def;
     isk_particles *p = &g->store;
     isk_status s = ISK_OK;
-    if (em->on_hit >= 0 && !p->hit)
+    if (em->events.on_hit >= 0 && !p->hit)
         s = isk_particles_add_columns(p, ISK_PARTICLES_HIT);
-    if (s == ISK_OK && em->trail != p->trail_len)
-        s = isk_particles_set_trail(p, em->trail);
+    if (s == ISK_OK && em->look.trail != p->trail_len)
+        s = isk_particles_set_trail(p, em->look.trail);
     return s;
 }
 
@@ -60,7 +60,7 @@ void fx_events_free(fx_group *g)
 
 static void drop_children(fx_group *c, size_t events)
 {
-    size_t n = c->def->count;
+    size_t n = c->def->born.count;
     uint64_t lost = events > 0 && n > UINT64_MAX / events ? UINT64_MAX : (uint64_t)events * n;
     c->dropped = lost > UINT64_MAX - c->dropped ? UINT64_MAX : c->dropped + lost;
 }
@@ -69,14 +69,14 @@ static void drop_children(fx_group *c, size_t events)
 static isk_status push(fx_group *c, const isk_particles *p, size_t i, double t)
 {
     fx_events *q = &c->pending;
-    if (q->n >= c->def->capacity) {
+    if (q->n >= c->def->born.capacity) {
         drop_children(c, 1);
         return ISK_OK;
     }
     if (q->n == q->cap) {
         size_t cap = q->cap ? 2 * q->cap : 64;
-        if (cap > c->def->capacity)
-            cap = c->def->capacity;
+        if (cap > c->def->born.capacity)
+            cap = c->def->born.capacity;
         fx_event *a = cap <= SIZE_MAX / sizeof *a ? realloc(q->ev, cap * sizeof *a) : NULL; /* 32-bit size_t */
         if (!a)
             return ISK_ERR_NOMEM;
@@ -89,7 +89,7 @@ static isk_status push(fx_group *c, const isk_particles *p, size_t i, double t)
 
 isk_status fx_events_deaths(isk_effect *e, fx_group *g, double t)
 {
-    const int to = g->def->on_death;
+    const int to = g->def->events.on_death;
     if (to < 0 || to >= e->ngroups)
         return ISK_OK;
     fx_group *c = &e->groups[to];
@@ -105,7 +105,7 @@ isk_status fx_events_deaths(isk_effect *e, fx_group *g, double t)
 
 static isk_status run_hits(isk_effect *e, fx_group *g, double t0, double h)
 {
-    const int to = g->def->on_hit;
+    const int to = g->def->events.on_hit;
     isk_particles *p = &g->store;
     if (to < 0 || to >= e->ngroups || !p->hit)
         return ISK_OK;
@@ -124,7 +124,7 @@ static isk_status run_hits(isk_effect *e, fx_group *g, double t0, double h)
 
 static void describe_hits(const isk_effect *e, const fx_group *g, FILE *out)
 {
-    fprintf(out, "bounces -> events of %s", e->def.emitters[g->def->on_hit].name);
+    fprintf(out, "bounces -> events of %s", e->def.emitters[g->def->events.on_hit].name);
 }
 
 const fx_step_kind fx_step_hits = {"hits", run_hits, describe_hits};
@@ -138,7 +138,7 @@ static isk_status release_group(isk_effect *e, fx_group *g)
     fx_launcher l = fx_launcher_of(em);
     for (size_t k = 0; k < q->n; k++) {
         const fx_event *ev = &q->ev[k];
-        const size_t room = g->store.count < em->capacity ? em->capacity - g->store.count : 0;
+        const size_t room = g->store.count < em->born.capacity ? em->born.capacity - g->store.count : 0;
         if (room == 0) {
             drop_children(g, q->n - k);
             break;
@@ -148,12 +148,13 @@ static isk_status release_group(isk_effect *e, fx_group *g)
         double age = fx_group_time(e, g) - ev->t;
         if (!(age > 0))
             age = 0;
-        const double dv[2] = {em->inherit * ev->vx, em->inherit * ev->vy};
-        const size_t born = em->count < room ? em->count : room;
-        if (born < em->count) /* the rest find no room: counted in one addition */
-            g->dropped = em->count - born > UINT64_MAX - g->dropped ? UINT64_MAX : g->dropped + (em->count - born);
+        const double dv[2] = {em->launch.inherit * ev->vx, em->launch.inherit * ev->vy};
+        const size_t born = em->born.count < room ? em->born.count : room;
+        if (born < em->born.count) /* the rest find no room: counted in one addition */
+            g->dropped =
+                em->born.count - born > UINT64_MAX - g->dropped ? UINT64_MAX : g->dropped + (em->born.count - born);
         for (size_t j = 0; j < born; j++) {
-            isk_status s = fx_birth(e, g, &l, age, ev->t, em->inherit > 0 ? dv : NULL);
+            isk_status s = fx_birth(e, g, &l, age, ev->t, em->launch.inherit > 0 ? dv : NULL);
             if (s != ISK_OK) {
                 q->n = 0;
                 return s;
@@ -168,7 +169,7 @@ isk_status fx_events_release(isk_effect *e)
 {
     for (int i = 0; i < e->ngroups; i++) {
         fx_group *g = &e->groups[i];
-        if (g->def->source != ISK_SOURCE_SUB || g->pending.n == 0)
+        if (g->def->born.source != ISK_SOURCE_SUB || g->pending.n == 0)
             continue;
         isk_status s = release_group(e, g);
         if (s != ISK_OK)

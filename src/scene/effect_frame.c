@@ -238,5 +238,5 @@ isk_status isk_effect_click(isk_effect *e, double x, double y)
         return ISK_OK;
     int gi = d->click.emitter >= 0 ? d->click.emitter : 0;
     fx_group *g = &e->groups[gi];
-    return fx_fire_explosion(e, g, d->click.explosion, x, y, d->click.count, g->def->kick);
+    return fx_fire_explosion(e, g, d->click.explosion, x, y, d->click.count, g->def->born.kick);
 }

@@ -21,13 +21,13 @@ isk_status fx_fire_explosion(isk_effect *e, fx_group *g, isk_explosion kind, dou
                              isk_kick_target kick)
 {
     const isk_emitter_def *em = g->def;
-    size_t limit = em->limit ? em->limit : ISK_EXPLODE_THESIS_LIMIT;
+    size_t limit = em->born.limit ? em->born.limit : ISK_EXPLODE_THESIS_LIMIT;
     isk_particles *p = &g->store;
     size_t before = p->count;
     if (count > limit)
         return ISK_ERR_RANGE; /* the explosion's own limit: refused, as the thesis does */
     /* The pool bounds every source: what does not fit is dropped and counted. */
-    size_t room = p->count < em->capacity ? em->capacity - p->count : 0;
+    size_t room = p->count < em->born.capacity ? em->born.capacity - p->count : 0;
     if (count > room) {
         g->dropped += count - room;
         count = room;
@@ -65,9 +65,10 @@ static isk_status run_release(isk_effect *e, fx_group *g, double t0, double h)
     (void)t0;
     (void)h;
     const isk_emitter_def *em = g->def;
-    if (em->source == ISK_SOURCE_EXPLOSION && !g->fired && fx_group_time(e, g) >= em->start) {
+    if (em->born.source == ISK_SOURCE_EXPLOSION && !g->fired && fx_group_time(e, g) >= em->born.start) {
         g->fired = 1;
-        isk_status s = fx_fire_explosion(e, g, em->explosion, em->pos.x, em->pos.y, em->count, em->kick);
+        isk_status s = fx_fire_explosion(e, g, em->born.explosion, em->born.position.x, em->born.position.y,
+                                         em->born.count, em->born.kick);
         if (s != ISK_OK)
             return s;
     }
@@ -76,7 +77,7 @@ static isk_status run_release(isk_effect *e, fx_group *g, double t0, double h)
         isk_multi_coulomb *mc = &g->mc;
         /* Batches that no longer fit the pool (streams share it) are dropped
          * with the rest of the explosion. */
-        if (before + isk_multi_coulomb_due(mc) > em->capacity) {
+        if (before + isk_multi_coulomb_due(mc) > em->born.capacity) {
             g->dropped += mc->last_size + (mc->batches - mc->next) * mc->batch_size;
             mc->next = mc->batches + 1;
             return ISK_OK;
@@ -93,7 +94,8 @@ static void describe_release(const isk_effect *e, const fx_group *g, FILE *out)
 {
     (void)e;
     const isk_emitter_def *em = g->def;
-    fprintf(out, "%s explosion of %zu at t=%g s", isk_explosion_names[em->explosion], em->count, em->start);
+    fprintf(out, "%s explosion of %zu at t=%g s", isk_explosion_names[em->born.explosion], em->born.count,
+            em->born.start);
 }
 
 const fx_step_kind fx_step_release = {"release", run_release, describe_release};
@@ -119,7 +121,7 @@ const fx_step_kind fx_step_late_walls = {"walls", run_late_walls, describe_late_
 
 static isk_status run_cull(isk_effect *e, fx_group *g, double t0, double h)
 {
-    if (g->def->on_death >= 0) { /* sub-emitters: the deaths as events first (effect_events.c) */
+    if (g->def->events.on_death >= 0) { /* sub-emitters: the deaths as events first (effect_events.c) */
         isk_status s = fx_events_deaths(e, g, t0 + h);
         if (s != ISK_OK)
             return s;
@@ -138,8 +140,8 @@ static isk_status run_cull(isk_effect *e, fx_group *g, double t0, double h)
 static void describe_cull(const isk_effect *e, const fx_group *g, FILE *out)
 {
     fprintf(out, "age >= life%s", g->cull_unordered ? " (the last live particles fill the holes: nothing sees the order)" : "");
-    if (g->def->on_death >= 0)
-        fprintf(out, "; deaths -> events of %s", e->def.emitters[g->def->on_death].name);
+    if (g->def->events.on_death >= 0)
+        fprintf(out, "; deaths -> events of %s", e->def.emitters[g->def->events.on_death].name);
 }
 
 const fx_step_kind fx_step_cull = {"cull", run_cull, describe_cull};

@@ -143,9 +143,9 @@ static void update_potentials(isk_effect *e, int f, const char *key)
  * of the new one), so no burst of catch-up births and no gap. */
 static void rebase_stream(isk_effect *e, fx_group *g, double old_rate)
 {
-    const double t = fx_group_time(e, g), rate = g->def->rate;
+    const double t = fx_group_time(e, g), rate = g->def->born.rate;
     double f = 0.0;
-    if (old_rate > 0 && g->def->rate_mode == ISK_RATE_ACCUMULATE) {
+    if (old_rate > 0 && g->def->born.rate_mode == ISK_RATE_ACCUMULATE) {
         double last = g->origin + (double)g->emitted / old_rate;
         f = (t - last) * old_rate;
         if (!(f >= 0.0))
@@ -186,11 +186,12 @@ static isk_status apply(isk_effect *e, const where *w, const isk_key *k, const v
             s = fx_looks_live(g);
         if (s == ISK_OK)
             s = fx_events_columns(g); /* on_hit, trail */
-        if (!strcmp(k->name, "rate") && em->source == ISK_SOURCE_STREAM) {
-            rebase_stream(e, g, old->rate);
+        if (!strcmp(k->name, "rate") && em->born.source == ISK_SOURCE_STREAM) {
+            rebase_stream(e, g, old->born.rate);
             fx_stream_rate_changed(e, g);
         }
-        if ((!strcmp(k->name, "position") || !strcmp(k->name, "emitter_velocity")) && em->source == ISK_SOURCE_STREAM)
+        if ((!strcmp(k->name, "position") || !strcmp(k->name, "emitter_velocity")) &&
+            em->born.source == ISK_SOURCE_STREAM)
             fx_path_changed(e, g, old, k->name); /* births spread along the way: no gap */
         break;
     }
@@ -368,10 +369,10 @@ isk_status isk_effect_remove_force(isk_effect *e, const char *name, isk_error *e
     for (int i = 0; i < d->nemitters; i++) {
         isk_emitter_def *em = &d->emitters[i];
         int w = 0;
-        for (int r = 0; r < em->nforces; r++)
-            if (em->forces[r] != f)
-                em->forces[w++] = em->forces[r] > f ? em->forces[r] - 1 : em->forces[r];
-        em->nforces = w;
+        for (int r = 0; r < em->motion.nforces; r++)
+            if (em->motion.forces[r] != f)
+                em->motion.forces[w++] = em->motion.forces[r] > f ? em->motion.forces[r] - 1 : em->motion.forces[r];
+        em->motion.nforces = w;
     }
     memmove(&d->forces[f], &d->forces[f + 1], sizeof d->forces[0] * (size_t)(d->nforces - f - 1));
     d->nforces--;

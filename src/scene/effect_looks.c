@@ -29,23 +29,23 @@
  * random (their bytes are exactly those without the keys). */
 static int angle_seen(const isk_emitter_def *em)
 {
-    return em->texture[0] || em->align == ISK_ALIGN_VELOCITY;
+    return em->look.texture[0] || em->look.align == ISK_ALIGN_VELOCITY;
 }
 
 static int rotates(const isk_emitter_def *em)
 {
-    return angle_seen(em) && (em->rotation != 0 || em->rotation_range > 0 || fx_looks_spins(em));
+    return angle_seen(em) && (em->look.rotation != 0 || em->look.rotation_range > 0 || fx_looks_spins(em));
 }
 
 int fx_looks_spins(const isk_emitter_def *em)
 {
-    return angle_seen(em) && (em->spin != 0 || em->spin_range > 0);
+    return angle_seen(em) && (em->look.spin != 0 || em->look.spin_range > 0);
 }
 
 unsigned fx_looks_columns(const isk_emitter_def *em)
 {
-    return (rotates(em) ? ISK_PARTICLES_ANGLE : 0u) | (em->size_range > 0 ? ISK_PARTICLES_SIZE : 0u) |
-           (em->color_pick.n > 0 ? ISK_PARTICLES_COLOR : 0u);
+    return (rotates(em) ? ISK_PARTICLES_ANGLE : 0u) | (em->look.size_range > 0 ? ISK_PARTICLES_SIZE : 0u) |
+           (em->look.color_pick.n > 0 ? ISK_PARTICLES_COLOR : 0u);
 }
 
 static double wrap(double a)
@@ -62,27 +62,31 @@ void fx_looks_adopt(fx_group *g, size_t from)
     isk_particles *p = &g->store;
     if (p->angle) {
         for (size_t i = from; i < p->count; i++) {
-            double a = em->rotation + (em->rotation_range > 0 ? em->rotation_range * isk_rng_uniform(&g->rng) : 0.0);
+            double a = em->look.rotation +
+                (em->look.rotation_range > 0 ? em->look.rotation_range * isk_rng_uniform(&g->rng) : 0.0);
             p->angle[i] = wrap(a);
         }
         for (size_t i = from; i < p->count; i++)
-            p->spin[i] = em->spin + (em->spin_range > 0 ? em->spin_range * isk_rng_uniform(&g->rng) : 0.0);
+            p->spin[i] =
+                em->look.spin + (em->look.spin_range > 0 ? em->look.spin_range * isk_rng_uniform(&g->rng) : 0.0);
     }
     if (p->size)
         for (size_t i = from; i < p->count; i++)
-            p->size[i] = em->size + (em->size_range > 0 ? em->size_range * isk_rng_uniform(&g->rng) : 0.0);
+            p->size[i] =
+                em->look.size + (em->look.size_range > 0 ? em->look.size_range * isk_rng_uniform(&g->rng) : 0.0);
     if (p->color)
         for (size_t i = from; i < p->count; i++)
-            p->color[i] = em->color_pick.n ? isk_color_gradient_eval(em->color_pick.stops, em->color_pick.n,
-                                                                     isk_rng_uniform(&g->rng))
-                                           : em->color;
+            p->color[i] = em->look.color_pick.n
+                ? isk_color_gradient_eval(em->look.color_pick.stops, em->look.color_pick.n, isk_rng_uniform(&g->rng))
+                : em->look.color;
 }
 
 /* A sprite kind drawn through a texture: turned along the velocity (a
  * streak), or at a size of its own per particle. */
 static int streaks(const isk_emitter_def *em)
 {
-    return !em->texture[0] && em->draw == ISK_DRAW_SPRITE && (em->align == ISK_ALIGN_VELOCITY || em->size_range > 0);
+    return !em->look.texture[0] && em->look.draw == ISK_DRAW_SPRITE &&
+        (em->look.align == ISK_ALIGN_VELOCITY || em->look.size_range > 0);
 }
 
 isk_status fx_looks_live(fx_group *g)
@@ -90,10 +94,10 @@ isk_status fx_looks_live(fx_group *g)
     const isk_emitter_def *em = g->def;
     /* align, size_range, draw or sprite may have made a streak of a sprite
      * kind, or unmade it (the texture itself is fixed at create) */
-    if (!em->texture[0]) {
+    if (!em->look.texture[0]) {
         fx_looks_free(g);
         if (streaks(em)) {
-            isk_status s = isk_texture_from_sprite(&g->streak, em->sprite, FX_STREAK_TEXELS);
+            isk_status s = isk_texture_from_sprite(&g->streak, em->look.sprite, FX_STREAK_TEXELS);
             if (s != ISK_OK)
                 return s;
             g->texture = &g->streak;
@@ -103,8 +107,8 @@ isk_status fx_looks_live(fx_group *g)
     if (!(want & ~g->store.flags))
         return ISK_OK;
     /* the particles already there get the emitter's own size and colour */
-    g->store.default_size = em->size;
-    g->store.default_color = em->color;
+    g->store.default_size = em->look.size;
+    g->store.default_color = em->look.color;
     return isk_particles_add_columns(&g->store, want);
 }
 
@@ -112,25 +116,25 @@ isk_status fx_looks_prepare(isk_effect *e, fx_group *g, isk_error *err)
 {
     const isk_emitter_def *em = g->def;
     g->texture = NULL;
-    if (em->draw == ISK_DRAW_NONE)
+    if (em->look.draw == ISK_DRAW_NONE)
         return ISK_OK;
-    if (em->texture[0]) {
+    if (em->look.texture[0]) {
         char where[32] = "";
         if (em->line > 0)
             snprintf(where, sizeof where, " (line %d)", em->line);
-        const int k = isk_effect_def_find_texture(&e->def, em->texture);
+        const int k = isk_effect_def_find_texture(&e->def, em->look.texture);
         if (k < 0)
             return isk_error_set(err, ISK_ERR_RANGE,
                                  "emitter '%s'%s: texture %s: not among the definition's textures (read the PNGs "
                                  "it names with isk_scene_load_textures, or give pixels with "
                                  "isk_effect_def_add_texture)",
-                                 em->name, where, em->texture);
+                                 em->name, where, em->look.texture);
         isk_status s = e->textures ? ISK_OK : isk_texture_cache_create(&e->textures, ISK_EFFECT_MAX_EMITTERS);
         if (s != ISK_OK)
             return isk_error_set(err, s, "emitter '%s': texture: %s", em->name, isk_status_str(s));
         isk_error le = {0};
-        s = isk_texture_cache_get_canvas(e->textures, em->texture, &e->def.textures[k].pixels,
-                                         (int)em->texture_grid.x, (int)em->texture_grid.y, &g->texture, &le);
+        s = isk_texture_cache_get_canvas(e->textures, em->look.texture, &e->def.textures[k].pixels,
+                                         (int)em->look.texture_grid.x, (int)em->look.texture_grid.y, &g->texture, &le);
         if (s != ISK_OK)
             return isk_error_set(err, s, "emitter '%s'%s: texture: %s%s%s", em->name, where, le.message,
                                  s == ISK_ERR_NOMEM ? ": " : "", s == ISK_ERR_NOMEM ? isk_status_str(s) : "");
@@ -138,7 +142,7 @@ isk_status fx_looks_prepare(isk_effect *e, fx_group *g, isk_error *err)
     }
     if (!streaks(em))
         return ISK_OK;
-    isk_status s = isk_texture_from_sprite(&g->streak, em->sprite, FX_STREAK_TEXELS);
+    isk_status s = isk_texture_from_sprite(&g->streak, em->look.sprite, FX_STREAK_TEXELS);
     if (s != ISK_OK)
         return isk_error_set(err, s, "emitter '%s': cannot bake its streak: %s", em->name, isk_status_str(s));
     g->texture = &g->streak;
@@ -158,13 +162,13 @@ static int whole_in(double v, double lo, double hi)
 
 const char *fx_looks_check(const isk_emitter_def *em, char *why, size_t n)
 {
-    if (!whole_in(em->texture_grid.x, 1, ISK_TEXTURE_MAX_GRID) ||
-        !whole_in(em->texture_grid.y, 1, ISK_TEXTURE_MAX_GRID)) {
+    if (!whole_in(em->look.texture_grid.x, 1, ISK_TEXTURE_MAX_GRID) ||
+        !whole_in(em->look.texture_grid.y, 1, ISK_TEXTURE_MAX_GRID)) {
         snprintf(why, n, "expected whole numbers of columns and rows, 1..%d, got %.15g, %.15g", ISK_TEXTURE_MAX_GRID,
-                 em->texture_grid.x, em->texture_grid.y);
+                 em->look.texture_grid.x, em->look.texture_grid.y);
         return "texture_grid";
     }
-    if (!memchr(em->texture, 0, sizeof em->texture)) {
+    if (!memchr(em->look.texture, 0, sizeof em->look.texture)) {
         snprintf(why, n, "a path of at most %d characters", ISK_TEXTURE_PATH_MAX - 1);
         return "texture";
     }
@@ -174,32 +178,34 @@ const char *fx_looks_check(const isk_emitter_def *em, char *why, size_t n)
 void fx_looks_describe(const fx_group *g, FILE *out)
 {
     const isk_emitter_def *em = g->def;
-    if (!g->texture && !rotates(em) && !em->size_range && !em->color_pick.n)
+    if (!g->texture && !rotates(em) && !em->look.size_range && !em->look.color_pick.n)
         return;
     fprintf(out, "  %-9s ", "looks");
     const char *sep = "";
     if (g->texture == &g->streak) {
-        fprintf(out, "streak (%s sprite, %g x size long)", isk_sprite_kind_names[em->sprite],
+        fprintf(out, "streak (%s sprite, %g x size long)", isk_sprite_kind_names[em->look.sprite],
                 ISK_STREAK_STRETCH);
         sep = ",";
     } else if (g->texture) {
-        fprintf(out, "texture %s (%d frame%s%s)", em->texture, g->texture->frames, g->texture->frames == 1 ? "" : "s",
-                g->texture->frames > 1 ? (em->texture_fps > 0 ? ", at a rate" : ", over the life") : "");
+        fprintf(out, "texture %s (%d frame%s%s)", em->look.texture, g->texture->frames,
+                g->texture->frames == 1 ? "" : "s",
+                g->texture->frames > 1 ? (em->look.texture_fps > 0 ? ", at a rate" : ", over the life") : "");
         sep = ",";
     }
-    if (em->align == ISK_ALIGN_VELOCITY && g->texture) {
+    if (em->look.align == ISK_ALIGN_VELOCITY && g->texture) {
         fprintf(out, "%s along the velocity", sep);
         sep = ",";
     }
     if (rotates(em)) {
-        fprintf(out, "%s angle %g + U*%g deg", sep, em->rotation * (180 / PI), em->rotation_range * (180 / PI));
+        fprintf(out, "%s angle %g + U*%g deg", sep, em->look.rotation * (180 / PI),
+                em->look.rotation_range * (180 / PI));
         sep = ",";
     }
-    if (em->size_range > 0) {
-        fprintf(out, "%s size %g + U*%g", sep, em->size, em->size_range);
+    if (em->look.size_range > 0) {
+        fprintf(out, "%s size %g + U*%g", sep, em->look.size, em->look.size_range);
         sep = ",";
     }
-    if (em->color_pick.n)
-        fprintf(out, "%s colour picked from %d stops", sep, em->color_pick.n);
+    if (em->look.color_pick.n)
+        fprintf(out, "%s colour picked from %d stops", sep, em->look.color_pick.n);
     fputc('\n', out);
 }

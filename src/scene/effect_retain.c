@@ -121,8 +121,8 @@ isk_status fx_retain_record(isk_effect *e, isk_canvas *c, fx_group *g, const fx_
         x += b->first;
         y += b->first;
     }
-    isk__draw_batch_record(c, &e->view, m, b->list, x, y, g->def->color, g->def->blend, rt->rule, b->r0, b->r1,
-                           b->c0, b->c1, &rec);
+    isk__draw_batch_record(c, &e->view, m, b->list, x, y, g->def->look.color, g->def->look.blend, rt->rule, b->r0,
+                           b->r1, b->c0, b->c1, &rec);
     /* what the band did not record is given back (the room was for every point it read) */
     isk__dot_rec *fit = rec.n ? realloc(rec.rec, rec.n * sizeof *rec.rec) : NULL;
     if (rec.n && fit)
@@ -151,8 +151,8 @@ isk_status fx_retain_replay(isk_effect *e, isk_canvas *c, fx_group *g, const fx_
 {
     (void)e;
     const fx_retained *rt = &g->retained;
-    isk__draw_batch_replay(c, rt->rec[b->index], rt->n[b->index], g->def->color, g->def->blend, b->r0, b->r1, b->c0,
-                           b->c1);
+    isk__draw_batch_replay(c, rt->rec[b->index], rt->n[b->index], g->def->look.color, g->def->look.blend, b->r0, b->r1,
+                           b->c0, b->c1);
     return ISK_OK;
 }
 

@@ -35,37 +35,39 @@
 static isk_shape shape_of(const isk_emitter_def *em)
 {
     isk_shape s = {0};
-    s.kind = em->shape;
-    s.cx = em->pos.x;
-    s.cy = em->pos.y;
-    s.a = em->shape_a;
-    s.b = em->shape_b;
-    s.angle = em->shape_angle;
-    s.ellipse_mode = em->shape_faithful ? ISK_ELLIPSE_THESIS : ISK_ELLIPSE_UNIFORM;
+    s.kind = em->born.shape;
+    s.cx = em->born.position.x;
+    s.cy = em->born.position.y;
+    s.a = em->born.shape_a;
+    s.b = em->born.shape_b;
+    s.angle = em->born.shape_angle;
+    s.ellipse_mode = em->born.shape_faithful ? ISK_ELLIPSE_THESIS : ISK_ELLIPSE_UNIFORM;
     return s;
 }
 
 static isk_velgen velgen_of(const isk_emitter_def *em)
 {
-    switch (em->launch) {
-    case ISK_VELGEN_DISC: return isk_velgen_disc(em->speed_max);
-    case ISK_VELGEN_DIRECTION: return isk_velgen_direction(em->angle, em->speed_min, em->speed_max);
-    case ISK_VELGEN_CONE: return isk_velgen_cone(em->angle, em->spread, em->speed_min, em->speed_max);
-    default: return isk_velgen_constant(em->vel.x, em->vel.y);
+    switch (em->launch.kind) {
+    case ISK_VELGEN_DISC: return isk_velgen_disc(em->launch.speed_max);
+    case ISK_VELGEN_DIRECTION:
+        return isk_velgen_direction(em->launch.angle, em->launch.speed_min, em->launch.speed_max);
+    case ISK_VELGEN_CONE:
+        return isk_velgen_cone(em->launch.angle, em->launch.spread, em->launch.speed_min, em->launch.speed_max);
+    default: return isk_velgen_constant(em->launch.velocity.x, em->launch.velocity.y);
     }
 }
 
 void fx_stream_reset(fx_group *g, double time)
 {
     g->dropped = 0;
-    g->next_burst = g->def->count > 0 ? g->def->start + time : INFINITY;
-    g->origin = g->def->start + time;
+    g->next_burst = g->def->born.count > 0 ? g->def->born.start + time : INFINITY;
+    g->origin = g->def->born.start + time;
     g->emitted = 0;
-    g->path_base = g->def->pos;
+    g->path_base = g->def->born.position;
     g->path_t = time;
     g->path_t0 = g->path_t1 = -INFINITY;
-    g->carried = g->def->pos;
-    g->cycle_start = g->def->start + time;
+    g->carried = g->def->born.position;
+    g->cycle_start = g->def->born.start + time;
     g->cycle_births = g->cycle_bursts = 0;
 }
 
@@ -73,7 +75,7 @@ void fx_stream_reset(fx_group *g, double time)
 
 static isk_vec2 on_path(const fx_group *g, const isk_emitter_def *em, double t)
 {
-    const isk_vec2 v = em->emitter_velocity;
+    const isk_vec2 v = em->born.emitter_velocity;
     if (v.x == 0 && v.y == 0)
         return g->path_base;
     isk_vec2 p = {g->path_base.x + v.x * (t - g->path_t), g->path_base.y + v.y * (t - g->path_t)};
@@ -82,8 +84,8 @@ static isk_vec2 on_path(const fx_group *g, const isk_emitter_def *em, double t)
 
 isk_vec2 fx_emitter_pos(const fx_group *g, const isk_emitter_def *em, double t)
 {
-    if (em->source != ISK_SOURCE_STREAM)
-        return em->pos;
+    if (em->born.source != ISK_SOURCE_STREAM)
+        return em->born.position;
     if (t < g->path_t1) {
         const isk_vec2 a = g->path_from, b = on_path(g, em, g->path_t1);
         double f = (t - g->path_t0) / (g->path_t1 - g->path_t0);
@@ -113,7 +115,7 @@ void fx_path_changed(isk_effect *e, fx_group *g, const isk_emitter_def *old, con
         g->path_from = here;
         g->path_t0 = now;
         g->path_t1 = t1;
-        g->path_base = g->def->pos;
+        g->path_base = g->def->born.position;
         g->path_t = t1;
     } else if (!strcmp(key, "emitter_velocity")) {
         /* the path goes on from here with the new velocity (a live move
@@ -132,7 +134,7 @@ void fx_path_changed(isk_effect *e, fx_group *g, const isk_emitter_def *old, con
  * its definition's position alone). */
 static int moving(const fx_group *g, const isk_emitter_def *em)
 {
-    return em->emitter_velocity.x != 0 || em->emitter_velocity.y != 0 || g->path_t1 > -INFINITY;
+    return em->born.emitter_velocity.x != 0 || em->born.emitter_velocity.y != 0 || g->path_t1 > -INFINITY;
 }
 
 /* Local space: every particle moves by what the emitter moved since they
@@ -165,9 +167,9 @@ const fx_step_kind fx_step_carry = {"carry", run_carry, describe_carry};
 
 double fx_prewarm_frames(const isk_effect_def *d, const isk_emitter_def *em)
 {
-    if (!(em->prewarm > 0) || em->source != ISK_SOURCE_STREAM)
+    if (!(em->born.prewarm > 0) || em->born.source != ISK_SOURCE_STREAM)
         return 0;
-    double n = floor(em->prewarm / (d->dt / d->speed_divisor) + 0.5);
+    double n = floor(em->born.prewarm / (d->dt / d->speed_divisor) + 0.5);
     return n < 1 ? 1 : n;
 }
 
@@ -182,9 +184,9 @@ void fx_prewarm_offsets(const isk_effect_def *d, double *frames)
         int changed = 0;
         for (int i = 0; i < d->nemitters; i++) {
             const isk_emitter_def *em = &d->emitters[i];
-            const int to[2] = {em->on_death, em->on_hit};
+            const int to[2] = {em->events.on_death, em->events.on_hit};
             for (int k = 0; k < 2; k++)
-                if (to[k] >= 0 && to[k] < d->nemitters && d->emitters[to[k]].source == ISK_SOURCE_SUB &&
+                if (to[k] >= 0 && to[k] < d->nemitters && d->emitters[to[k]].born.source == ISK_SOURCE_SUB &&
                     frames[to[k]] < frames[i]) {
                     frames[to[k]] = frames[i];
                     changed = 1;
@@ -210,7 +212,7 @@ isk_status fx_birth(isk_effect *e, fx_group *g, const fx_launcher *l, double age
 {
     const isk_emitter_def *em = g->def;
     isk_particles *p = &g->store;
-    if (p->count >= em->capacity) {
+    if (p->count >= em->born.capacity) {
         g->dropped++;
         return ISK_OK;
     }
@@ -218,7 +220,7 @@ isk_status fx_birth(isk_effect *e, fx_group *g, const fx_launcher *l, double age
     if (l->moving) {
         isk_shape s = l->shape;
         /* birth = frame: born, and so placed, at the end of the step */
-        const double at = !isnan(l->place) ? l->place : em->birth == ISK_BIRTH_FRAME ? l->t1 : tb;
+        const double at = !isnan(l->place) ? l->place : em->born.birth == ISK_BIRTH_FRAME ? l->t1 : tb;
         const isk_vec2 c = fx_emitter_pos(g, em, at);
         s.cx = c.x;
         s.cy = c.y;
@@ -227,21 +229,21 @@ isk_status fx_birth(isk_effect *e, fx_group *g, const fx_launcher *l, double age
         isk_shape_sample(&l->shape, &g->rng, &x, &y);
     }
     isk_velgen_sample(&l->launch, &g->rng, &vx, &vy);
-    if (em->launch == ISK_VELGEN_DISC) {
-        vx += em->vel.x;
-        vy += em->vel.y;
+    if (em->launch.kind == ISK_VELGEN_DISC) {
+        vx += em->launch.velocity.x;
+        vy += em->launch.velocity.y;
     }
     if (dv) { /* a sub-emitter's inherited velocity (only there: a stream's bits are untouched) */
         vx += dv[0];
         vy += dv[1];
     }
-    double m = em->mass + (em->mass_range > 0 ? em->mass_range * isk_rng_uniform(&g->rng) : 0.0);
+    double m = em->launch.mass + (em->launch.mass_range > 0 ? em->launch.mass_range * isk_rng_uniform(&g->rng) : 0.0);
     size_t i;
     isk_status st = isk_particles_add(p, x, y, vx, vy, m, &i);
     if (st != ISK_OK)
         return st;
     fx_adopt(e, g, i);
-    switch (em->birth) {
+    switch (em->born.birth) {
     case ISK_BIRTH_BACKDATE:
         if (age > 0) {
             /* the field acts from the birth: its time, the emitter there */
@@ -283,7 +285,7 @@ static void drop(fx_group *g, double n)
 /* Places left in the pool. */
 static size_t room_left(const fx_group *g)
 {
-    return g->store.count < g->def->capacity ? g->def->capacity - g->store.count : 0;
+    return g->store.count < g->def->born.capacity ? g->def->born.capacity - g->store.count : 0;
 }
 
 /* Bursts due up to t1_tol: how many are due is computed, not counted one
@@ -295,7 +297,7 @@ static size_t room_left(const fx_group *g)
 static isk_status run_bursts(isk_effect *e, fx_group *g, const fx_launcher *l, double t1, double t1_tol, double h)
 {
     const isk_emitter_def *em = g->def;
-    const double every = em->burst_every, nb = g->next_burst;
+    const double every = em->born.burst_every, nb = g->next_burst;
     double due = every > 0 ? floor((t1_tol - nb) / every) + 1.0 : 1.0;
     if (!(due >= 1.0))
         due = 1.0; /* rounding at the edge: the one that made the test true */
@@ -303,29 +305,29 @@ static isk_status run_bursts(isk_effect *e, fx_group *g, const fx_launcher *l, d
     if (!(next > t1_tol))
         next = nextafter(t1_tol, INFINITY); /* the schedule is finer than the clock: never back in time */
     g->next_burst = next;
-    if (em->count == 0)
+    if (em->born.count == 0)
         return ISK_OK;
-    const double life_max = em->life + em->life_range;
+    const double life_max = em->life.seconds + em->life.range;
     double first = 0.0; /* the first burst young enough to live */
     if (isfinite(life_max) && every > 0 && t1 - life_max > nb)
         first = floor((t1 - life_max - nb) / every);
     int doa = 0;
     for (double j = first; j < due; j++) { /* ends: each turn fills the pool or is one of <= 3 dead ones */
         if (room_left(g) == 0) {
-            drop(g, (due - j) * (double)em->count);
+            drop(g, (due - j) * (double)em->born.count);
             break;
         }
         const double tb = nb + j * every;
         double age = t1 - tb;
         if (age < 0)
             age = 0;
-        if (isfinite(em->life) && age >= life_max) {
+        if (isfinite(em->life.seconds) && age >= life_max) {
             if (++doa > 2)
                 break; /* j no longer moves (beyond 2^53): nothing younger is representable */
             continue; /* dead on arrival: the whole burst */
         }
-        for (size_t k = 0; k < em->count; k++) {
-            isk_status s = fx_birth(e, g, l, em->birth == ISK_BIRTH_THESIS_JITTER ? h : age, tb, NULL);
+        for (size_t k = 0; k < em->born.count; k++) {
+            isk_status s = fx_birth(e, g, l, em->born.birth == ISK_BIRTH_THESIS_JITTER ? h : age, tb, NULL);
             if (s != ISK_OK)
                 return s;
         }
@@ -347,16 +349,16 @@ static double whole(double x) { return floor(x + 1e-9 * (x > 1.0 ? x : 1.0)); }
 
 static double births_per_cycle(const isk_emitter_def *em)
 {
-    return em->rate > 0 ? whole(em->rate * em->duration) : 0.0;
+    return em->born.rate > 0 ? whole(em->born.rate * em->born.duration) : 0.0;
 }
 
 static double bursts_per_cycle(const isk_emitter_def *em)
 {
-    if (em->count == 0)
+    if (em->born.count == 0)
         return 0;
-    if (!(em->burst_every > 0))
+    if (!(em->born.burst_every > 0))
         return 1;
-    const double x = em->duration / em->burst_every;
+    const double x = em->born.duration / em->born.burst_every;
     const double m = ceil(x - 1e-9 * (x > 1.0 ? x : 1.0));
     return m < 1 ? 1 : m;
 }
@@ -366,7 +368,7 @@ static double bursts_per_cycle(const isk_emitter_def *em)
 static double event_time(const fx_group *g, double i, double n, double k_scale, double k_first)
 {
     const double c = floor(i / n), k = i - c * n;
-    return g->cycle_start + c * g->def->duration + (k + k_first) * k_scale;
+    return g->cycle_start + c * g->def->born.duration + (k + k_first) * k_scale;
 }
 
 /* How many of the events with n per cycle are due by time t: within a
@@ -376,8 +378,8 @@ static double events_due(const fx_group *g, double t, double n, double k_scale, 
     const isk_emitter_def *em = g->def;
     if (!(t >= g->cycle_start) || n <= 0)
         return 0;
-    const double D = em->duration, c = floor((t - g->cycle_start) / D);
-    if (!em->loop && c >= 1)
+    const double D = em->born.duration, c = floor((t - g->cycle_start) / D);
+    if (!em->born.loop && c >= 1)
         return n;
     double in = floor((t - g->cycle_start - c * D) / k_scale) + 1.0 - k_first;
     in = in < 0 ? 0 : in > n ? n : in;
@@ -392,7 +394,7 @@ static isk_status run_events(isk_effect *e, fx_group *g, const fx_launcher *l, d
 {
     const isk_emitter_def *em = g->def;
     const double t1_tol = t1 + 1e-9 * (t1 > 1.0 ? t1 : 1.0);
-    const double life_max = em->life + em->life_range;
+    const double life_max = em->life.seconds + em->life.range;
     if (n <= 0 || each == 0)
         return ISK_OK;
     if (isfinite(life_max)) {
@@ -403,7 +405,7 @@ static isk_status run_events(isk_effect *e, fx_group *g, const fx_launcher *l, d
     }
     int doa = 0;
     for (;;) {
-        if (!em->loop && *done >= n)
+        if (!em->born.loop && *done >= n)
             break; /* the one cycle is over */
         const double tb = event_time(g, *done, n, k_scale, k_first);
         if (tb > t1_tol)
@@ -420,12 +422,12 @@ static isk_status run_events(isk_effect *e, fx_group *g, const fx_launcher *l, d
         double age = t1 - tb;
         if (age < 0)
             age = 0;
-        if (isfinite(em->life) && age >= life_max) {
+        if (isfinite(em->life.seconds) && age >= life_max) {
             if (++doa > 2)
                 break;
             continue;
         }
-        double a = em->birth == ISK_BIRTH_BACKDATE ? age : (em->birth == ISK_BIRTH_THESIS_JITTER ? h : 0.0);
+        double a = em->born.birth == ISK_BIRTH_BACKDATE ? age : (em->born.birth == ISK_BIRTH_THESIS_JITTER ? h : 0.0);
         for (size_t k = 0; k < each; k++) {
             isk_status s = fx_birth(e, g, l, a, tb, NULL);
             if (s != ISK_OK)
@@ -438,31 +440,31 @@ static isk_status run_events(isk_effect *e, fx_group *g, const fx_launcher *l, d
 void fx_stream_rate_changed(isk_effect *e, fx_group *g)
 {
     const isk_emitter_def *em = g->def;
-    if (em->duration > 0 && em->rate > 0)
-        g->cycle_births = events_due(g, fx_group_time(e, g), births_per_cycle(em), 1.0 / em->rate, 1.0);
+    if (em->born.duration > 0 && em->born.rate > 0)
+        g->cycle_births = events_due(g, fx_group_time(e, g), births_per_cycle(em), 1.0 / em->born.rate, 1.0);
 }
 
 static isk_status run_cycles(isk_effect *e, fx_group *g, const fx_launcher *l, double t0, double h)
 {
     const isk_emitter_def *em = g->def;
     const double t1 = t0 + h;
-    const double every = em->burst_every > 0 ? em->burst_every : em->duration;
-    isk_status s = run_events(e, g, l, t1, h, &g->cycle_bursts, bursts_per_cycle(em), every, 0.0, em->count);
-    if (s != ISK_OK || !(em->rate > 0))
+    const double every = em->born.burst_every > 0 ? em->born.burst_every : em->born.duration;
+    isk_status s = run_events(e, g, l, t1, h, &g->cycle_bursts, bursts_per_cycle(em), every, 0.0, em->born.count);
+    if (s != ISK_OK || !(em->born.rate > 0))
         return s;
-    if (em->rate_mode == ISK_RATE_THESIS) {
+    if (em->born.rate_mode == ISK_RATE_THESIS) {
         /* the thesis's rounding per frame, in the steps that start within a cycle */
-        if (!(t0 >= g->cycle_start) || (!em->loop && t0 >= g->cycle_start + em->duration))
+        if (!(t0 >= g->cycle_start) || (!em->born.loop && t0 >= g->cycle_start + em->born.duration))
             return ISK_OK;
-        double want = floor(h * em->rate + 0.5);
+        double want = floor(h * em->born.rate + 0.5);
         double take = fmin(want, (double)room_left(g));
         for (size_t j = 0; j < (size_t)take; j++)
-            if ((s = fx_birth(e, g, l, em->birth == ISK_BIRTH_THESIS_JITTER ? h : 0.0, t1, NULL)) != ISK_OK)
+            if ((s = fx_birth(e, g, l, em->born.birth == ISK_BIRTH_THESIS_JITTER ? h : 0.0, t1, NULL)) != ISK_OK)
                 return s;
         drop(g, want - take);
         return ISK_OK;
     }
-    return run_events(e, g, l, t1, h, &g->cycle_births, births_per_cycle(em), 1.0 / em->rate, 1.0, 1);
+    return run_events(e, g, l, t1, h, &g->cycle_births, births_per_cycle(em), 1.0 / em->born.rate, 1.0, 1);
 }
 
 /* The births due in (t0, t0 + h], each created at t0 + h and advanced by
@@ -479,7 +481,7 @@ static isk_status run_spawn(isk_effect *e, fx_group *g, double t0, double h)
     fx_launcher l = fx_launcher_of(em);
     l.moving = moving(g, em);
     l.t1 = t1;
-    if (em->space == ISK_SPACE_LOCAL)
+    if (em->born.space == ISK_SPACE_LOCAL)
         l.place = t1;
     if (l.moving) {
         const isk_vec2 c = fx_emitter_pos(g, em, t1);
@@ -487,42 +489,42 @@ static isk_status run_spawn(isk_effect *e, fx_group *g, double t0, double h)
         l.shape.cy = c.y;
     }
     isk_status s;
-    if (em->duration > 0)
+    if (em->born.duration > 0)
         return run_cycles(e, g, &l, t0, h);
 
     /* Bursts first: they are scheduled events. */
     if (g->next_burst <= t1_tol && (s = run_bursts(e, g, &l, t1, t1_tol, h)) != ISK_OK)
         return s;
-    if (!(em->rate > 0))
+    if (!(em->born.rate > 0))
         return ISK_OK;
-    if (em->rate_mode == ISK_RATE_THESIS) {
+    if (em->born.rate_mode == ISK_RATE_THESIS) {
         /* The fire thesis: (unsigned)(dt*rate + 0.5) per frame, no carry;
          * at 60 frames/s a rate of 20/s gives 0.833 -> nothing, ever. */
-        double want = floor(h * em->rate + 0.5); /* <= 10^10: clamped before any integer cast */
+        double want = floor(h * em->born.rate + 0.5); /* <= 10^10: clamped before any integer cast */
         double take = fmin(want, (double)room_left(g));
         for (size_t j = 0; j < (size_t)take; j++)
-            if ((s = fx_birth(e, g, &l, em->birth == ISK_BIRTH_THESIS_JITTER ? h : 0.0, t1, NULL)) != ISK_OK)
+            if ((s = fx_birth(e, g, &l, em->born.birth == ISK_BIRTH_THESIS_JITTER ? h : 0.0, t1, NULL)) != ISK_OK)
                 return s;
         drop(g, want - take);
         return ISK_OK;
     }
     /* Accumulator: the k-th particle is due at start + k/rate. */
-    const double life_max = em->life + em->life_range;
+    const double life_max = em->life.seconds + em->life.range;
     if (isfinite(life_max)) {
         /* Skip those that would be dead already (never created): all but
          * the last life_max*rate + 1 of a long step. */
-        double oldest = floor((t1 - life_max - g->origin) * em->rate);
+        double oldest = floor((t1 - life_max - g->origin) * em->born.rate);
         if (oldest > (double)g->emitted + 1.0)
             g->emitted = oldest - 1.0 >= 18446744073709549568.0 ? UINT64_MAX : (uint64_t)(oldest - 1.0);
     }
     int doa = 0;
     for (;;) { /* ends: each turn is a birth, the pool's end, or one of <= 3 dead ones */
-        double tb = g->origin + (double)(g->emitted + 1) / em->rate;
+        double tb = g->origin + (double)(g->emitted + 1) / em->born.rate;
         if (tb > t1_tol)
             break;
         if (room_left(g) == 0) {
             /* The rest of this step's births find no room: counted, skipped. */
-            double n = floor((t1_tol - g->origin) * em->rate) - (double)g->emitted;
+            double n = floor((t1_tol - g->origin) * em->born.rate) - (double)g->emitted;
             if (n < 1)
                 n = 1; /* at least the one found due (a rounded-off last one comes next step) */
             g->emitted += n >= 18446744073709549568.0 ? 0 : (uint64_t)n;
@@ -533,12 +535,12 @@ static isk_status run_spawn(isk_effect *e, fx_group *g, double t0, double h)
         double age = t1 - tb;
         if (age < 0)
             age = 0;
-        if (isfinite(em->life) && age >= life_max) {
+        if (isfinite(em->life.seconds) && age >= life_max) {
             if (++doa > 2)
                 break; /* the clock no longer resolves single births here */
             continue; /* would be dead already: never created */
         }
-        double a = em->birth == ISK_BIRTH_BACKDATE ? age : (em->birth == ISK_BIRTH_THESIS_JITTER ? h : 0.0);
+        double a = em->born.birth == ISK_BIRTH_BACKDATE ? age : (em->born.birth == ISK_BIRTH_THESIS_JITTER ? h : 0.0);
         if ((s = fx_birth(e, g, &l, a, tb, NULL)) != ISK_OK)
             return s;
     }
@@ -550,12 +552,13 @@ static void describe_spawn(const isk_effect *e, const fx_group *g, FILE *out)
     (void)e;
     const isk_emitter_def *em = g->def;
     /* In the scene file's words: key = value. */
-    fprintf(out, "%g/s, rate_mode %s, birth %s", em->rate, isk_rate_mode_names[em->rate_mode],
-            isk_birth_mode_names[em->birth]);
-    if (em->duration > 0)
-        fprintf(out, ", for %g s%s", em->duration, em->loop ? " in a loop" : "");
-    if (em->emitter_velocity.x != 0 || em->emitter_velocity.y != 0)
-        fprintf(out, ", along the emitter's path at (%g, %g)/s", em->emitter_velocity.x, em->emitter_velocity.y);
+    fprintf(out, "%g/s, rate_mode %s, birth %s", em->born.rate, isk_rate_mode_names[em->born.rate_mode],
+            isk_birth_mode_names[em->born.birth]);
+    if (em->born.duration > 0)
+        fprintf(out, ", for %g s%s", em->born.duration, em->born.loop ? " in a loop" : "");
+    if (em->born.emitter_velocity.x != 0 || em->born.emitter_velocity.y != 0)
+        fprintf(out, ", along the emitter's path at (%g, %g)/s", em->born.emitter_velocity.x,
+                em->born.emitter_velocity.y);
     if (g->frame_offset)
         fprintf(out, ", prewarmed %ld frames", g->frame_offset);
 }

@@ -31,8 +31,8 @@ static int frame_of(const isk_emitter_def *em, const isk_particles *p, size_t i,
     if (frames <= 1)
         return 0;
     double k;
-    if (em->texture_fps > 0) {
-        k = fmod(floor(p->age[i] * em->texture_fps), (double)frames);
+    if (em->look.texture_fps > 0) {
+        k = fmod(floor(p->age[i] * em->look.texture_fps), (double)frames);
         if (!(k >= 0)) /* a NaN age, or a negative one: the first frame */
             k = 0;
     } else {
@@ -51,7 +51,7 @@ isk_status fx_draw_textures(isk_effect *e, isk_canvas *c, fx_group *g, const fx_
     const isk_view *v = &e->view;
     const int vary = fx_varies(g);
     const int streak = t == &g->streak;
-    const int align = em->align == ISK_ALIGN_VELOCITY;
+    const int align = em->look.align == ISK_ALIGN_VELOCITY;
     const int turn = p->angle && (!streak || align);
     /* the world's counter-clockwise is the screen's clockwise when one axis flips */
     const double turn_sign = (v->sx < 0) != (v->sy < 0) ? -1.0 : 1.0;
@@ -62,12 +62,12 @@ isk_status fx_draw_textures(isk_effect *e, isk_canvas *c, fx_group *g, const fx_
         double X, Y, mult;
         isk_view_to_screen(v, p->x[i], p->y[i], &X, &Y);
         isk_color col = fx_style(g, p, i, vary, &mult);
-        const double w = (p->size ? p->size[i] : em->size) * mult * scale;
+        const double w = (p->size ? p->size[i] : em->look.size) * mult * scale;
         double angle = turn ? turn_sign * p->angle[i] : 0.0;
         if (align)
             angle += atan2(p->vy[i] * v->sy, p->vx[i] * v->sx);
         isk__draw_texture_rows(c, t, frame_of(em, p, i, t->frames), X, Y, w * stretch, w * aspect, angle, col,
-                               em->blend, b->r0, b->r1, 0);
+                               em->look.blend, b->r0, b->r1, 0);
     }
     return ISK_OK;
 }

@@ -42,8 +42,8 @@ static isk_status draw_trails(isk_effect *e, isk_canvas *c, fx_group *g, const f
             int slot = (p->trail_head + 1 + k) % n;
             isk_view_to_screen(&e->view, t[2 * slot], t[2 * slot + 1], &xy[2 * k], &xy[2 * k + 1]);
         }
-        isk__stroke_trail_rows(c, xy, n, em->trail_width, fx_particle_color(g, i), em->trail_fade, em->blend, b->r0,
-                               b->r1);
+        isk__stroke_trail_rows(c, xy, n, em->look.trail_width, fx_particle_color(g, i), em->look.trail_fade,
+                               em->look.blend, b->r0, b->r1);
     }
     return ISK_OK;
 }

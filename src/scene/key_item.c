@@ -84,7 +84,7 @@ int fx_item_kind(const isk_effect_def *d, isk_section_kind s, int i)
     case ISK_SECTION_VIEW: return (int)d->view_kind;
     case ISK_SECTION_FORCE: return (int)d->forces[i].kind;
     case ISK_SECTION_BOUNDS: return (int)d->bounds.mode;
-    case ISK_SECTION_EMITTER: return (int)d->emitters[i].source;
+    case ISK_SECTION_EMITTER: return (int)d->emitters[i].born.source;
     case ISK_SECTION_DRAWING: return (int)d->drawings[i].kind;
     default: return -1;
     }

@@ -16,10 +16,10 @@
 /* The common part of every preset: a stream emitter with sprites. */
 static void base(isk_emitter_def *e)
 {
-    e->source = ISK_SOURCE_STREAM;
-    e->draw = ISK_DRAW_SPRITE;
-    e->sprite = ISK_SPRITE_LINEAR;
-    e->launch = ISK_VELGEN_CONE;
+    e->born.source = ISK_SOURCE_STREAM;
+    e->look.draw = ISK_DRAW_SPRITE;
+    e->look.sprite = ISK_SPRITE_LINEAR;
+    e->launch.kind = ISK_VELGEN_CONE;
 }
 
 /* The emitter's own force "<name>_<what>" of `kind`, added (or found, to be
@@ -64,9 +64,9 @@ static int own_sub_emitter(isk_effect_def *d, int index, const char *what)
         fx_section_defaults(ISK_SECTION_EMITTER, &d->emitters[k]);
         memcpy(d->emitters[k].name, keep.name, sizeof keep.name);
         d->emitters[k].line = keep.line;
-        d->emitters[k].order = keep.order;
+        d->emitters[k].look.order = keep.look.order;
     }
-    d->emitters[k].source = ISK_SOURCE_SUB;
+    d->emitters[k].born.source = ISK_SOURCE_SUB;
     return k;
 }
 
@@ -106,21 +106,21 @@ static int fill_fire(isk_effect_def *d, int i, double u)
 {
     isk_emitter_def *e = &d->emitters[i];
     base(e);
-    e->shape = ISK_SHAPE_RECT;      /* posVar (40, 20) */
-    e->shape_a = 40 * u;
-    e->shape_b = 20 * u;
-    e->angle = 90 * DEG;            /* 90 +- 10 degrees */
-    e->spread = 20 * DEG;
-    e->speed_min = 40 * u;          /* 60 +- 20 */
-    e->speed_max = 80 * u;
-    e->life = 2.75;                 /* 3 +- 0.25 s */
-    e->life_range = 0.5;
-    e->capacity = 250;              /* totalParticles */
-    e->rate = 250.0 / 3.0;          /* total / life */
-    e->size = 54 * u;               /* 54 (+-10) */
-    e->color = isk_rgba(194, 64, 31, 255);  /* (0.76, 0.25, 0.12, 1) */
-    ramp2(&e->color_over_life, e->color, isk_rgba(0, 0, 0, 255));
-    e->blend = ISK_BLEND_ADD;
+    e->born.shape = ISK_SHAPE_RECT; /* posVar (40, 20) */
+    e->born.shape_a = 40 * u;
+    e->born.shape_b = 20 * u;
+    e->launch.angle = 90 * DEG;     /* 90 +- 10 degrees */
+    e->launch.spread = 20 * DEG;
+    e->launch.speed_min = 40 * u;   /* 60 +- 20 */
+    e->launch.speed_max = 80 * u;
+    e->life.seconds = 2.75;         /* 3 +- 0.25 s */
+    e->life.range = 0.5;
+    e->born.capacity = 250;         /* totalParticles */
+    e->born.rate = 250.0 / 3.0;     /* total / life */
+    e->look.size = 54 * u;          /* 54 (+-10) */
+    e->look.color = isk_rgba(194, 64, 31, 255);  /* (0.76, 0.25, 0.12, 1) */
+    ramp2(&e->look.color_over_life, e->look.color, isk_rgba(0, 0, 0, 255));
+    e->look.blend = ISK_BLEND_ADD;
     return 1;
 }
 
@@ -128,25 +128,25 @@ static int fill_smoke(isk_effect_def *d, int i, double u)
 {
     isk_emitter_def *e = &d->emitters[i];
     base(e);
-    e->shape = ISK_SHAPE_RECT;      /* posVar (20, 0) */
-    e->shape_a = 20 * u;
-    e->shape_b = 0;
-    e->angle = 90 * DEG;            /* 90 +- 5 */
-    e->spread = 10 * DEG;
-    e->speed_min = 15 * u;          /* 25 +- 10 */
-    e->speed_max = 35 * u;
-    e->life = 3.0;                  /* 4 +- 1 */
-    e->life_range = 2.0;
-    e->capacity = 200;
-    e->rate = 200.0 / 4.0;
-    e->size = 60 * u;
-    e->sprite = ISK_SPRITE_SMOOTH;
-    e->color = isk_rgba(204, 204, 204, 255); /* 0.8 grey -> black */
-    ramp2(&e->color_over_life, e->color, isk_rgba(0, 0, 0, 255));
-    e->alpha_over_life.n = 2;       /* ours: cocos2d's texture is translucent */
-    e->alpha_over_life.stops[0] = (isk_scalar_stop){0.0, 0.5};
-    e->alpha_over_life.stops[1] = (isk_scalar_stop){1.0, 0.0};
-    e->blend = ISK_BLEND_OVER;
+    e->born.shape = ISK_SHAPE_RECT; /* posVar (20, 0) */
+    e->born.shape_a = 20 * u;
+    e->born.shape_b = 0;
+    e->launch.angle = 90 * DEG;     /* 90 +- 5 */
+    e->launch.spread = 10 * DEG;
+    e->launch.speed_min = 15 * u;   /* 25 +- 10 */
+    e->launch.speed_max = 35 * u;
+    e->life.seconds = 3.0;          /* 4 +- 1 */
+    e->life.range = 2.0;
+    e->born.capacity = 200;
+    e->born.rate = 200.0 / 4.0;
+    e->look.size = 60 * u;
+    e->look.sprite = ISK_SPRITE_SMOOTH;
+    e->look.color = isk_rgba(204, 204, 204, 255); /* 0.8 grey -> black */
+    ramp2(&e->look.color_over_life, e->look.color, isk_rgba(0, 0, 0, 255));
+    e->look.alpha_over_life.n = 2;  /* ours: cocos2d's texture is translucent */
+    e->look.alpha_over_life.stops[0] = (isk_scalar_stop){0.0, 0.5};
+    e->look.alpha_over_life.stops[1] = (isk_scalar_stop){1.0, 0.0};
+    e->look.blend = ISK_BLEND_OVER;
     /* Ours: cocos2d's smoke rises straight; a turbulence about the plume's
      * width stirs it (the field has no divergence: it swirls, never
      * gathers the smoke into clumps). */
@@ -163,23 +163,23 @@ static int fill_sparks(isk_effect_def *d, int i, double u)
 {
     isk_emitter_def *e = &d->emitters[i];
     base(e);
-    e->shape = ISK_SHAPE_DISC;
-    e->shape_a = 15 * u;
-    e->angle = 90 * DEG;
-    e->spread = 70 * DEG;
-    e->speed_min = 150 * u;
-    e->speed_max = 300 * u;
-    e->life = 0.6;
-    e->life_range = 0.8;
-    e->capacity = 200;
-    e->rate = 60;
-    e->size = 10 * u;
-    e->color = isk_rgba(255, 240, 190, 255);
-    e->color_over_life.n = 3;
-    e->color_over_life.stops[0] = (isk_color_stop){0.0, isk_rgba(255, 240, 190, 255)};
-    e->color_over_life.stops[1] = (isk_color_stop){0.4, isk_rgba(255, 150, 40, 255)};
-    e->color_over_life.stops[2] = (isk_color_stop){1.0, isk_rgba(180, 30, 0, 0)};
-    e->blend = ISK_BLEND_ADD;
+    e->born.shape = ISK_SHAPE_DISC;
+    e->born.shape_a = 15 * u;
+    e->launch.angle = 90 * DEG;
+    e->launch.spread = 70 * DEG;
+    e->launch.speed_min = 150 * u;
+    e->launch.speed_max = 300 * u;
+    e->life.seconds = 0.6;
+    e->life.range = 0.8;
+    e->born.capacity = 200;
+    e->born.rate = 60;
+    e->look.size = 10 * u;
+    e->look.color = isk_rgba(255, 240, 190, 255);
+    e->look.color_over_life.n = 3;
+    e->look.color_over_life.stops[0] = (isk_color_stop){0.0, isk_rgba(255, 240, 190, 255)};
+    e->look.color_over_life.stops[1] = (isk_color_stop){0.4, isk_rgba(255, 150, 40, 255)};
+    e->look.color_over_life.stops[2] = (isk_color_stop){1.0, isk_rgba(180, 30, 0, 0)};
+    e->look.blend = ISK_BLEND_ADD;
     return own_gravity(d, i, 300 * u);
 }
 
@@ -187,19 +187,19 @@ static int fill_fountain(isk_effect_def *d, int i, double u)
 {
     isk_emitter_def *e = &d->emitters[i];
     base(e);
-    e->shape = ISK_SHAPE_POINT;
-    e->angle = 90 * DEG;            /* 90 +- 20 */
-    e->spread = 40 * DEG;
-    e->speed_min = 130 * u;         /* 180 +- 50 */
-    e->speed_max = 230 * u;
-    e->life = 2.5;                  /* 3.5 +- 1 */
-    e->life_range = 2.0;
-    e->capacity = 1500;
-    e->rate = 1500.0 / 3.5;
-    e->size = 8 * u;                /* 8 +- 2 */
-    e->color = isk_rgba(140, 200, 255, 255);
-    ramp2(&e->color_over_life, e->color, isk_rgba(40, 90, 200, 51)); /* end alpha 0.2 */
-    e->blend = ISK_BLEND_OVER;
+    e->born.shape = ISK_SHAPE_POINT;
+    e->launch.angle = 90 * DEG;     /* 90 +- 20 */
+    e->launch.spread = 40 * DEG;
+    e->launch.speed_min = 130 * u;  /* 180 +- 50 */
+    e->launch.speed_max = 230 * u;
+    e->life.seconds = 2.5;          /* 3.5 +- 1 */
+    e->life.range = 2.0;
+    e->born.capacity = 1500;
+    e->born.rate = 1500.0 / 3.5;
+    e->look.size = 8 * u;           /* 8 +- 2 */
+    e->look.color = isk_rgba(140, 200, 255, 255);
+    ramp2(&e->look.color_over_life, e->look.color, isk_rgba(40, 90, 200, 51)); /* end alpha 0.2 */
+    e->look.blend = ISK_BLEND_OVER;
     return own_gravity(d, i, 90 * u);
 }
 
@@ -207,26 +207,26 @@ static int fill_snow(isk_effect_def *d, int i, double u)
 {
     isk_emitter_def *e = &d->emitters[i];
     base(e);
-    e->shape = ISK_SHAPE_RECT;      /* posVar (w/2, 0) of a 480-point screen */
-    e->shape_a = 240 * u;
-    e->shape_b = 0;
-    e->angle = -90 * DEG;           /* -90 +- 5 */
-    e->spread = 10 * DEG;
-    e->speed_min = 4 * u;           /* 5 +- 1 */
-    e->speed_max = 6 * u;
-    e->life = 30;                   /* 45 +- 15 */
-    e->life_range = 30;
-    e->capacity = 700;
-    e->rate = 10;
-    e->size = 10 * u;               /* 10 +- 5 */
-    e->sprite = ISK_SPRITE_SMOOTH;
-    e->color = ISK_WHITE;
-    ramp2(&e->color_over_life, ISK_WHITE, isk_rgba(255, 255, 255, 0));
-    e->osc_omega_min = 0.5;         /* ours: a sway instead of the radial/tangential jitter */
-    e->osc_omega_max = 1.5;
-    e->osc_amp_min = 5 * u;
-    e->osc_amp_max = 15 * u;
-    e->blend = ISK_BLEND_OVER;
+    e->born.shape = ISK_SHAPE_RECT; /* posVar (w/2, 0) of a 480-point screen */
+    e->born.shape_a = 240 * u;
+    e->born.shape_b = 0;
+    e->launch.angle = -90 * DEG;    /* -90 +- 5 */
+    e->launch.spread = 10 * DEG;
+    e->launch.speed_min = 4 * u;    /* 5 +- 1 */
+    e->launch.speed_max = 6 * u;
+    e->life.seconds = 30;           /* 45 +- 15 */
+    e->life.range = 30;
+    e->born.capacity = 700;
+    e->born.rate = 10;
+    e->look.size = 10 * u;          /* 10 +- 5 */
+    e->look.sprite = ISK_SPRITE_SMOOTH;
+    e->look.color = ISK_WHITE;
+    ramp2(&e->look.color_over_life, ISK_WHITE, isk_rgba(255, 255, 255, 0));
+    e->motion.osc_omega_min = 0.5;  /* ours: a sway instead of the radial/tangential jitter */
+    e->motion.osc_omega_max = 1.5;
+    e->motion.osc_amplitude_min = 5 * u;
+    e->motion.osc_amplitude_max = 15 * u;
+    e->look.blend = ISK_BLEND_OVER;
     return own_gravity(d, i, 1 * u);
 }
 
@@ -234,21 +234,21 @@ static int fill_explosion(isk_effect_def *d, int i, double u)
 {
     isk_emitter_def *e = &d->emitters[i];
     base(e);
-    e->shape = ISK_SHAPE_POINT;
-    e->angle = 90 * DEG;            /* 90 +- 360: every direction */
-    e->spread = 360 * DEG;
-    e->speed_min = 30 * u;          /* 70 +- 40 */
-    e->speed_max = 110 * u;
-    e->life = 3;                    /* 5 +- 2 */
-    e->life_range = 4;
-    e->capacity = 700;
-    e->count = 700;                 /* duration 0.1 s at total/duration: one burst */
-    e->start = 0;
-    e->rate = 0;
-    e->size = 15 * u;               /* 15 +- 10 */
-    e->color = isk_rgba(178, 25, 51, 255);
-    ramp2(&e->color_over_life, e->color, isk_rgba(128, 128, 128, 0));
-    e->blend = ISK_BLEND_OVER;
+    e->born.shape = ISK_SHAPE_POINT;
+    e->launch.angle = 90 * DEG;     /* 90 +- 360: every direction */
+    e->launch.spread = 360 * DEG;
+    e->launch.speed_min = 30 * u;   /* 70 +- 40 */
+    e->launch.speed_max = 110 * u;
+    e->life.seconds = 3;            /* 5 +- 2 */
+    e->life.range = 4;
+    e->born.capacity = 700;
+    e->born.count = 700;            /* duration 0.1 s at total/duration: one burst */
+    e->born.start = 0;
+    e->born.rate = 0;
+    e->look.size = 15 * u;          /* 15 +- 10 */
+    e->look.color = isk_rgba(178, 25, 51, 255);
+    ramp2(&e->look.color_over_life, e->look.color, isk_rgba(128, 128, 128, 0));
+    e->look.blend = ISK_BLEND_OVER;
     return 1;
 }
 
@@ -264,25 +264,25 @@ static int fill_galaxy(isk_effect_def *d, int i, double u)
 {
     isk_emitter_def *e = &d->emitters[i];
     base(e);
-    e->shape = ISK_SHAPE_RECT;
-    e->shape_a = 180 * u;
-    e->shape_b = 3 * u;
-    e->launch = ISK_VELGEN_DISC;
-    e->speed_max = 3 * u;
-    e->radial_accel = -40 * u;
-    e->tangential_accel = 25 * u;
-    e->slowing = 0.6;
-    e->life = 5;                    /* 6 +- 1 */
-    e->life_range = 2;
-    e->capacity = 3000;
-    e->rate = 500;
-    e->size = 6 * u;
-    e->color = isk_rgba(31, 64, 194, 255);
-    e->color_over_life.n = 3;
-    e->color_over_life.stops[0] = (isk_color_stop){0.0, isk_rgba(31, 64, 194, 0)};
-    e->color_over_life.stops[1] = (isk_color_stop){0.5, isk_rgba(150, 110, 255, 200)};
-    e->color_over_life.stops[2] = (isk_color_stop){1.0, isk_rgba(255, 236, 200, 0)};
-    e->blend = ISK_BLEND_ADD;
+    e->born.shape = ISK_SHAPE_RECT;
+    e->born.shape_a = 180 * u;
+    e->born.shape_b = 3 * u;
+    e->launch.kind = ISK_VELGEN_DISC;
+    e->launch.speed_max = 3 * u;
+    e->motion.radial_accel = -40 * u;
+    e->motion.tangential_accel = 25 * u;
+    e->motion.slowing = 0.6;
+    e->life.seconds = 5;                    /* 6 +- 1 */
+    e->life.range = 2;
+    e->born.capacity = 3000;
+    e->born.rate = 500;
+    e->look.size = 6 * u;
+    e->look.color = isk_rgba(31, 64, 194, 255);
+    e->look.color_over_life.n = 3;
+    e->look.color_over_life.stops[0] = (isk_color_stop){0.0, isk_rgba(31, 64, 194, 0)};
+    e->look.color_over_life.stops[1] = (isk_color_stop){0.5, isk_rgba(150, 110, 255, 200)};
+    e->look.color_over_life.stops[2] = (isk_color_stop){1.0, isk_rgba(255, 236, 200, 0)};
+    e->look.blend = ISK_BLEND_ADD;
     return 1;
 }
 
@@ -301,49 +301,50 @@ static int fill_fireworks(isk_effect_def *d, int i, double u)
         return 0;
     isk_emitter_def *r = &d->emitters[i], *s = &d->emitters[b];
     base(r);
-    r->shape = ISK_SHAPE_POINT;
-    r->angle = 90 * DEG;
-    r->spread = 30 * DEG;
-    r->speed_min = 280 * u;
-    r->speed_max = 330 * u;
-    r->rate = 1.5;
-    r->life = 1.1;
-    r->life_range = 0.4;
-    r->capacity = 8;
-    r->sprite = ISK_SPRITE_SMOOTH;
-    r->size = 8 * u;
-    r->color = isk_rgba(255, 224, 160, 255);
-    r->blend = ISK_BLEND_ADD;
-    r->trail = 10;
-    r->trail_width = 2;
-    r->trail_fade = 1;
-    r->on_death = b;
-    s->count = 120;
-    s->launch = ISK_VELGEN_DISC;
-    s->speed_max = 160 * u;
-    s->inherit = 0.25;
-    s->life = 1.2;
-    s->life_range = 0.6;
-    s->slowing = 0.8;
-    s->capacity = 8 * 120;
-    s->draw = ISK_DRAW_SPRITE;
-    s->sprite = ISK_SPRITE_SMOOTH;
-    s->size = 5 * u;
-    s->blend = ISK_BLEND_ADD;
-    s->color_pick.n = 5;
-    s->color_pick.stops[0] = (isk_color_stop){0.0, isk_rgba(255, 70, 60, 255)};
-    s->color_pick.stops[1] = (isk_color_stop){0.25, isk_rgba(255, 200, 60, 255)};
-    s->color_pick.stops[2] = (isk_color_stop){0.5, isk_rgba(90, 255, 110, 255)};
-    s->color_pick.stops[3] = (isk_color_stop){0.75, isk_rgba(80, 200, 255, 255)};
-    s->color_pick.stops[4] = (isk_color_stop){1.0, isk_rgba(200, 110, 255, 255)};
-    stops3(&s->color_over_life, isk_rgba(255, 255, 255, 255), 0.6, isk_rgba(255, 255, 255, 220),
+    r->born.shape = ISK_SHAPE_POINT;
+    r->launch.angle = 90 * DEG;
+    r->launch.spread = 30 * DEG;
+    r->launch.speed_min = 280 * u;
+    r->launch.speed_max = 330 * u;
+    r->born.rate = 1.5;
+    r->life.seconds = 1.1;
+    r->life.range = 0.4;
+    r->born.capacity = 8;
+    r->look.sprite = ISK_SPRITE_SMOOTH;
+    r->look.size = 8 * u;
+    r->look.color = isk_rgba(255, 224, 160, 255);
+    r->look.blend = ISK_BLEND_ADD;
+    r->look.trail = 10;
+    r->look.trail_width = 2;
+    r->look.trail_fade = 1;
+    r->events.on_death = b;
+    s->born.count = 120;
+    s->launch.kind = ISK_VELGEN_DISC;
+    s->launch.speed_max = 160 * u;
+    s->launch.inherit = 0.25;
+    s->life.seconds = 1.2;
+    s->life.range = 0.6;
+    s->motion.slowing = 0.8;
+    s->born.capacity = 8 * 120;
+    s->look.draw = ISK_DRAW_SPRITE;
+    s->look.sprite = ISK_SPRITE_SMOOTH;
+    s->look.size = 5 * u;
+    s->look.blend = ISK_BLEND_ADD;
+    s->look.color_pick.n = 5;
+    s->look.color_pick.stops[0] = (isk_color_stop){0.0, isk_rgba(255, 70, 60, 255)};
+    s->look.color_pick.stops[1] = (isk_color_stop){0.25, isk_rgba(255, 200, 60, 255)};
+    s->look.color_pick.stops[2] = (isk_color_stop){0.5, isk_rgba(90, 255, 110, 255)};
+    s->look.color_pick.stops[3] = (isk_color_stop){0.75, isk_rgba(80, 200, 255, 255)};
+    s->look.color_pick.stops[4] = (isk_color_stop){1.0, isk_rgba(200, 110, 255, 255)};
+    stops3(&s->look.color_over_life, isk_rgba(255, 255, 255, 255), 0.6, isk_rgba(255, 255, 255, 220),
            isk_rgba(120, 80, 80, 0));
-    s->trail = 6;
-    s->trail_width = 1.5;
-    s->trail_fade = 1;
+    s->look.trail = 6;
+    s->look.trail_width = 1.5;
+    s->look.trail_fade = 1;
     if (!own_gravity(d, i, 150 * u))
         return 0;
-    return isk_emitter_use_force(&d->emitters[b], d->emitters[i].forces[d->emitters[i].nforces - 1]) == ISK_OK;
+    return isk_emitter_use_force(&d->emitters[b], d->emitters[i].motion.forces[d->emitters[i].motion.nforces - 1]) ==
+        ISK_OK;
 }
 
 /* cocos2d ParticleRain, ours where noted: drops from a line 4.8 wide centred
@@ -361,40 +362,40 @@ static int fill_rain(isk_effect_def *d, int i, double u)
         return 0;
     isk_emitter_def *r = &d->emitters[i], *s = &d->emitters[sp];
     base(r);
-    r->shape = ISK_SHAPE_RECT;
-    r->shape_a = 240 * u;
-    r->shape_b = 0;
-    r->angle = -90 * DEG;
-    r->spread = 10 * DEG;
-    r->speed_min = 380 * u;
-    r->speed_max = 460 * u;
-    r->rate = 60;
-    r->life = 0.85;
-    r->life_range = 0.15;
-    r->capacity = 80;
-    r->sprite = ISK_SPRITE_SMOOTH;
-    r->size = 5 * u;
-    r->align = ISK_ALIGN_VELOCITY;
-    r->color = isk_rgba(179, 204, 255, 255);
-    ramp2(&r->color_over_life, r->color, isk_rgba(179, 204, 255, 128));
-    r->blend = ISK_BLEND_OVER;
-    r->on_hit = sp;
-    s->count = 6;
-    s->launch = ISK_VELGEN_CONE;
-    s->angle = 90 * DEG;
-    s->spread = 120 * DEG;
-    s->speed_min = 60 * u;
-    s->speed_max = 130 * u;
-    s->life = 0.3;
-    s->life_range = 0.2;
-    s->capacity = 400;
-    s->draw = ISK_DRAW_DOT;
-    s->color = isk_rgba(210, 230, 255, 255);
-    s->alpha_over_life.n = 2;
-    s->alpha_over_life.stops[0] = (isk_scalar_stop){0.0, 1.0};
-    s->alpha_over_life.stops[1] = (isk_scalar_stop){1.0, 0.0};
-    s->blend = ISK_BLEND_ADD;
-    const isk_vec2 p = r->pos;
+    r->born.shape = ISK_SHAPE_RECT;
+    r->born.shape_a = 240 * u;
+    r->born.shape_b = 0;
+    r->launch.angle = -90 * DEG;
+    r->launch.spread = 10 * DEG;
+    r->launch.speed_min = 380 * u;
+    r->launch.speed_max = 460 * u;
+    r->born.rate = 60;
+    r->life.seconds = 0.85;
+    r->life.range = 0.15;
+    r->born.capacity = 80;
+    r->look.sprite = ISK_SPRITE_SMOOTH;
+    r->look.size = 5 * u;
+    r->look.align = ISK_ALIGN_VELOCITY;
+    r->look.color = isk_rgba(179, 204, 255, 255);
+    ramp2(&r->look.color_over_life, r->look.color, isk_rgba(179, 204, 255, 128));
+    r->look.blend = ISK_BLEND_OVER;
+    r->events.on_hit = sp;
+    s->born.count = 6;
+    s->launch.kind = ISK_VELGEN_CONE;
+    s->launch.angle = 90 * DEG;
+    s->launch.spread = 120 * DEG;
+    s->launch.speed_min = 60 * u;
+    s->launch.speed_max = 130 * u;
+    s->life.seconds = 0.3;
+    s->life.range = 0.2;
+    s->born.capacity = 400;
+    s->look.draw = ISK_DRAW_DOT;
+    s->look.color = isk_rgba(210, 230, 255, 255);
+    s->look.alpha_over_life.n = 2;
+    s->look.alpha_over_life.stops[0] = (isk_scalar_stop){0.0, 1.0};
+    s->look.alpha_over_life.stops[1] = (isk_scalar_stop){1.0, 0.0};
+    s->look.blend = ISK_BLEND_ADD;
+    const isk_vec2 p = r->born.position;
     isk_deflector floor = isk_deflector_segment(p.x - 260 * u, p.y - 320 * u, p.x + 260 * u, p.y - 320 * u);
     floor.restitution = 0.1;
     isk_force_def *w = own_force(d, i, "wind", ISK_FORCE_WIND);
@@ -415,33 +416,33 @@ static int fill_magic(isk_effect_def *d, int i, double u)
 {
     isk_emitter_def *e = &d->emitters[i];
     base(e);
-    e->shape = ISK_SHAPE_DISC;
-    e->shape_a = 10 * u;
-    e->launch = ISK_VELGEN_DISC;
-    e->speed_max = 60 * u;
-    e->emitter_velocity = isk_vec2_make(120 * u, 0);
-    e->tangential_accel = 300 * u;
-    e->radial_accel = -150 * u;
-    e->slowing = 1.0;
-    e->rate = 160;
-    e->life = 0.8;
-    e->life_range = 0.6;
-    e->capacity = 200;
-    e->rotation_range = 360 * DEG;
-    e->spin = -180 * DEG;
-    e->spin_range = 360 * DEG;
-    e->sprite = ISK_SPRITE_SMOOTH;
-    e->size = 14 * u;
-    e->blend = ISK_BLEND_ADD;
-    e->color_pick.n = 3;
-    e->color_pick.stops[0] = (isk_color_stop){0.0, isk_rgba(170, 90, 255, 255)};
-    e->color_pick.stops[1] = (isk_color_stop){0.5, isk_rgba(80, 220, 255, 255)};
-    e->color_pick.stops[2] = (isk_color_stop){1.0, isk_rgba(255, 110, 200, 255)};
-    stops3(&e->color_over_life, isk_rgba(255, 255, 255, 255), 0.3, isk_rgba(255, 255, 255, 230),
+    e->born.shape = ISK_SHAPE_DISC;
+    e->born.shape_a = 10 * u;
+    e->launch.kind = ISK_VELGEN_DISC;
+    e->launch.speed_max = 60 * u;
+    e->born.emitter_velocity = isk_vec2_make(120 * u, 0);
+    e->motion.tangential_accel = 300 * u;
+    e->motion.radial_accel = -150 * u;
+    e->motion.slowing = 1.0;
+    e->born.rate = 160;
+    e->life.seconds = 0.8;
+    e->life.range = 0.6;
+    e->born.capacity = 200;
+    e->look.rotation_range = 360 * DEG;
+    e->look.spin = -180 * DEG;
+    e->look.spin_range = 360 * DEG;
+    e->look.sprite = ISK_SPRITE_SMOOTH;
+    e->look.size = 14 * u;
+    e->look.blend = ISK_BLEND_ADD;
+    e->look.color_pick.n = 3;
+    e->look.color_pick.stops[0] = (isk_color_stop){0.0, isk_rgba(170, 90, 255, 255)};
+    e->look.color_pick.stops[1] = (isk_color_stop){0.5, isk_rgba(80, 220, 255, 255)};
+    e->look.color_pick.stops[2] = (isk_color_stop){1.0, isk_rgba(255, 110, 200, 255)};
+    stops3(&e->look.color_over_life, isk_rgba(255, 255, 255, 255), 0.3, isk_rgba(255, 255, 255, 230),
            isk_rgba(255, 255, 255, 0));
-    e->trail = 10;
-    e->trail_width = 1.5;
-    e->trail_fade = 1;
+    e->look.trail = 10;
+    e->look.trail_width = 1.5;
+    e->look.trail_fade = 1;
     return 1;
 }
 
@@ -479,8 +480,8 @@ isk_status isk_preset_apply(isk_effect_def *d, int emitter, const char *preset, 
     fx_section_defaults(ISK_SECTION_EMITTER, e);
     memcpy(e->name, keep.name, sizeof e->name);
     e->line = keep.line;
-    e->order = keep.order;
-    e->pos = keep.pos;
+    e->look.order = keep.look.order;
+    e->born.position = keep.born.position;
     snprintf(e->preset, sizeof e->preset, "%s", fx_preset_names[p]);
     const int nforces = d->nforces, ndeflectors = d->ndeflectors, nemitters = d->nemitters;
     if (!fills[p](d, emitter, scale / 100.0)) {
@@ -505,7 +506,7 @@ int isk_preset_add(isk_effect_def *d, const char *preset, const char *name, isk_
     isk_emitter_def *e = isk_effect_def_add_emitter(d, name ? name : preset);
     if (!e)
         return -1;
-    e->pos = pos;
+    e->born.position = pos;
     const int i = d->nemitters - 1; /* a preset may add emitters of its own after it */
     if (isk_preset_apply(d, i, preset, scale) != ISK_OK) {
         d->nemitters = i; /* an item it needed found no room */

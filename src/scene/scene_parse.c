@@ -479,7 +479,7 @@ static isk_status derived_defaults(parser *P, section *s)
     }
     if (s->type == ISK_SECTION_EMITTER) {
         isk_emitter_def *e = &d->emitters[s->index];
-        if (e->source == ISK_SOURCE_STREAM && e->rate == 0 && e->count == 0)
+        if (e->born.source == ISK_SOURCE_STREAM && e->born.rate == 0 && e->born.count == 0)
             return fail_at(P, s, line_of(s, "rate"), NULL, "a stream needs rate > 0 or a burst count > 0");
         char why[400];
         const char *key;

@@ -43,31 +43,32 @@ isk_status fx_scene_texture(isk_effect_def *d, isk_emitter_def *em, const char *
                             char *why, size_t n)
 {
     *key = "texture";
-    if (!em->texture[0] || fx_looks_check(em, why, n))
+    if (!em->look.texture[0] || fx_looks_check(em, why, n))
         return ISK_OK; /* a malformed grid is the shared check's to report */
     const char *slash = scene_name ? strrchr(scene_name, '/') : NULL;
-    if (em->texture[0] != '/' && slash) {
+    if (em->look.texture[0] != '/' && slash) {
         char path[ISK_TEXTURE_PATH_MAX];
         int dir = (int)(slash - scene_name);
-        int len = snprintf(path, sizeof path, "%.*s/%s", dir, scene_name, em->texture);
+        int len = snprintf(path, sizeof path, "%.*s/%s", dir, scene_name, em->look.texture);
         if (len < 0 || (size_t)len >= sizeof path) {
-            snprintf(why, n, "the path '%.*s/%s' is longer than %d characters", dir, scene_name, em->texture,
+            snprintf(why, n, "the path '%.*s/%s' is longer than %d characters", dir, scene_name, em->look.texture,
                      ISK_TEXTURE_PATH_MAX - 1);
             return ISK_ERR_RANGE;
         }
-        memcpy(em->texture, path, (size_t)len + 1);
+        memcpy(em->look.texture, path, (size_t)len + 1);
     }
     isk_error err = {0};
     isk_canvas *img = NULL;
-    isk_status s = read_texture(d, em->texture, &img, &err);
+    isk_status s = read_texture(d, em->look.texture, &img, &err);
     /* the texture module's rules (the grid itself is well formed here:
      * fx_looks_check said so), so a RANGE is the grid not dividing the
      * image: that key's line */
-    if (s == ISK_OK && (s = isk_texture_check_size(em->texture, img->width, img->height, (int)em->texture_grid.x,
-                                                   (int)em->texture_grid.y, &err)) == ISK_ERR_RANGE)
+    if (s == ISK_OK &&
+        (s = isk_texture_check_size(em->look.texture, img->width, img->height, (int)em->look.texture_grid.x,
+                                    (int)em->look.texture_grid.y, &err)) == ISK_ERR_RANGE)
         *key = "texture_grid";
     if (s != ISK_OK) {
-        snprintf(why, n, "cannot use '%s' as a texture: %s", em->texture, err.message);
+        snprintf(why, n, "cannot use '%s' as a texture: %s", em->look.texture, err.message);
         return s;
     }
     return ISK_OK;
@@ -81,14 +82,14 @@ isk_status isk_scene_load_textures(isk_effect_def *d, isk_error *err)
         return isk_error_set(err, ISK_ERR_SIZE, "textures: a malformed definition (%d emitters)", d->nemitters);
     for (int i = 0; i < d->nemitters; i++) {
         const isk_emitter_def *em = &d->emitters[i];
-        if (!em->texture[0])
+        if (!em->look.texture[0])
             continue;
-        if (!memchr(em->texture, 0, sizeof em->texture))
+        if (!memchr(em->look.texture, 0, sizeof em->look.texture))
             return isk_error_set(err, ISK_ERR_RANGE, "emitter '%.*s': texture: a path of at most %d characters",
                                  ISK_NAME_MAX - 1, em->name, ISK_TEXTURE_PATH_MAX - 1);
         isk_error le = {0};
         isk_canvas *img;
-        isk_status s = read_texture(d, em->texture, &img, &le);
+        isk_status s = read_texture(d, em->look.texture, &img, &le);
         if (s != ISK_OK)
             return isk_error_set(err, s, "emitter '%.*s': texture: %s", ISK_NAME_MAX - 1, em->name, le.message);
     }

@@ -54,17 +54,17 @@ static int make_small(isk_effect_def *d)
     d->substeps = at_most_i(d->substeps, MAX_SUBSTEPS);
     for (int i = 0; i < d->nemitters; i++) {
         isk_emitter_def *e = &d->emitters[i];
-        e->substeps = at_most_i(e->substeps, MAX_SUBSTEPS);
-        const int sized = e->draw == ISK_DRAW_DISC || e->draw == ISK_DRAW_SPRITE;
-        const size_t most = e->trail > 0 ? MAX_TRAILED : sized ? MAX_SIZED : MAX_PARTICLES / 4;
-        e->capacity = at_most(e->capacity, most);
-        e->limit = at_most(e->limit, most);
-        e->count = at_most(e->count, most);
+        e->motion.substeps = at_most_i(e->motion.substeps, MAX_SUBSTEPS);
+        const int sized = e->look.draw == ISK_DRAW_DISC || e->look.draw == ISK_DRAW_SPRITE;
+        const size_t most = e->look.trail > 0 ? MAX_TRAILED : sized ? MAX_SIZED : MAX_PARTICLES / 4;
+        e->born.capacity = at_most(e->born.capacity, most);
+        e->born.limit = at_most(e->born.limit, most);
+        e->born.count = at_most(e->born.count, most);
         d->click.count = at_most(d->click.count, most); /* it may land in this emitter */
-        if (e->trail_width > MAX_TRAIL_WIDTH)
-            e->trail_width = MAX_TRAIL_WIDTH;
+        if (e->look.trail_width > MAX_TRAIL_WIDTH)
+            e->look.trail_width = MAX_TRAIL_WIDTH;
         /* sprites and discs are drawn at size * pixels-per-unit */
-        if (e->size * (double)d->width > 1e5)
+        if (e->look.size * (double)d->width > 1e5)
             return 0;
     }
     return 1;

@@ -265,7 +265,7 @@ int cmd_play(int argc, char **argv)
     if (p.follow) {
         const isk_effect_def *fd = isk_effect_definition(p.fx);
         int k = isk_effect_def_find_emitter(fd, p.follow);
-        if (k < 0 || fd->emitters[k].source != ISK_SOURCE_STREAM) {
+        if (k < 0 || fd->emitters[k].born.source != ISK_SOURCE_STREAM) {
             fprintf(stderr, "iskra play: --follow %s: %s\n", p.follow,
                     k < 0 ? "no emitter of that name" : "not a stream emitter (only a stream's position is live)");
             isk_effect_destroy(p.fx);

@@ -22,7 +22,7 @@ static const char *first_of(const isk_effect *fx, isk_section_kind s, int kind, 
     const int items = !d ? 0 : s == ISK_SECTION_FORCE ? d->nforces : d->nemitters;
     for (int i = 0; i < items; i++) {
         const int force = s == ISK_SECTION_FORCE;
-        if ((force ? (int)d->forces[i].kind : (int)d->emitters[i].source) == kind) {
+        if ((force ? (int)d->forces[i].kind : (int)d->emitters[i].born.source) == kind) {
             snprintf(buf, n, "%s %s", isk_section_name(s), force ? d->forces[i].name : d->emitters[i].name);
             return buf;
         }

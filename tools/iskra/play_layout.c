@@ -25,7 +25,7 @@
 play_panel_kind play_panel_for(const isk_effect_def *d)
 {
     for (int i = 0; i < d->nemitters; i++)
-        if (d->emitters[i].source == ISK_SOURCE_LAYER)
+        if (d->emitters[i].born.source == ISK_SOURCE_LAYER)
             return PLAY_PANEL_CONSOLE;
     for (int i = 0; i < d->nforces; i++)
         if (d->forces[i].kind == ISK_FORCE_POTENTIAL)

@@ -509,7 +509,7 @@ static void follow_mouse(player *p, double wx, double wy)
 {
     const isk_effect_def *d = isk_effect_definition(p->fx);
     int k = isk_effect_def_find_emitter(d, p->follow);
-    if (k < 0 || (d->emitters[k].pos.x == wx && d->emitters[k].pos.y == wy))
+    if (k < 0 || (d->emitters[k].born.position.x == wx && d->emitters[k].born.position.y == wy))
         return;
     char sec[ISK_NAME_MAX + 16], v[80];
     snprintf(sec, sizeof sec, "emitter %s", p->follow);

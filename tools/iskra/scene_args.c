@@ -181,7 +181,7 @@ static const char *first_drawn(const isk_effect_def *d)
         if (d->deflectors[i].show)
             return "deflector";
     for (int i = 0; i < d->nemitters; i++)
-        if (d->emitters[i].draw != ISK_DRAW_NONE)
+        if (d->emitters[i].look.draw != ISK_DRAW_NONE)
             return "emitter";
     for (int i = 0; i < d->nforces; i++)
         if (d->forces[i].kind == ISK_FORCE_POTENTIAL && d->forces[i].draw && d->forces[i].pot.enabled)

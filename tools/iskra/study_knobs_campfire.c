@@ -35,7 +35,7 @@ static int render(isk_sinlut_mode mode, picture *out)
         return 1;
     }
     for (int i = 0; i < def.nemitters; i++)
-        def.emitters[i].osc_table = mode;
+        def.emitters[i].motion.osc_table = mode;
     const long frames = def.show.frames;
     isk_status st = isk_effect_create(&fx, &def, &err);
     int w = def.width, h = def.height;

@@ -63,14 +63,14 @@ static isk_effect *make(int fps, double rate, isk_rate_mode rm, isk_birth_mode b
     isk_emitter_def *e = isk_effect_def_add_emitter(&d, "stream");
     isk_effect *fx = NULL;
     if (e && (g <= 0 || gi >= 0)) {
-        e->source = ISK_SOURCE_STREAM;
-        e->rate = rate;
-        e->rate_mode = rm;
-        e->birth = bm;
-        e->vel = isk_vec2_make(vx, vy);
-        e->life = INFINITY;
-        e->capacity = 4 * (size_t)rate + 1024; /* never full: the thesis mode over-emits by < 1 per step */
-        e->draw = ISK_DRAW_NONE;
+        e->born.source = ISK_SOURCE_STREAM;
+        e->born.rate = rate;
+        e->born.rate_mode = rm;
+        e->born.birth = bm;
+        e->launch.velocity = isk_vec2_make(vx, vy);
+        e->life.seconds = INFINITY;
+        e->born.capacity = 4 * (size_t)rate + 1024; /* never full: the thesis mode over-emits by < 1 per step */
+        e->look.draw = ISK_DRAW_NONE;
         if (gi >= 0)
             isk_emitter_use_force(e, gi);
         isk_error err;
