@@ -1,6 +1,6 @@
 /* SPDX-License-Identifier: MIT */
 /* Where the threaded draw cuts the canvas (effect_bands.c's
- * fx_place_cuts): at the quantiles of a sample of the particles' screen
+ * isk__fx_place_cuts): at the quantiles of a sample of the particles' screen
  * rows, or of their columns when the particles crowd into a few rows.  The
  * cuts never change a byte (threads_check shows that); what they are for is
  * sharing the work evenly, and that is what is checked here: every band
@@ -31,7 +31,7 @@ static void check_shares(isk_effect *fx, const isk_canvas *c, int nb, int column
 {
     const fx_group *g = &fx->groups[0];
     int cut[ISK_TASKS_MAX_WORKERS + 1];
-    const int columns = fx_place_cuts(fx, g, c, nb, 1, cut);
+    const int columns = isk__fx_place_cuts(fx, g, c, nb, 1, cut);
     cr_assert_eq(columns, columns_expected, "%d bands: columns %d", nb, columns);
     const int n = columns ? c->width : c->height;
     cr_assert_eq(cut[0], 0);
@@ -106,12 +106,12 @@ Test(band_cuts, the_cuts_depend_on_the_particles_alone)
     steps(fx, 240);
     int first[8], again[8], rows[8];
     for (int nb = 2; nb <= 7; nb++) {
-        cr_assert_eq(fx_place_cuts(fx, &fx->groups[0], &c, nb, 1, first), 1);
+        cr_assert_eq(isk__fx_place_cuts(fx, &fx->groups[0], &c, nb, 1, first), 1);
         for (int k = 0; k < 50; k++) {
-            cr_assert_eq(fx_place_cuts(fx, &fx->groups[0], &c, nb, 1, again), 1);
+            cr_assert_eq(isk__fx_place_cuts(fx, &fx->groups[0], &c, nb, 1, again), 1);
             cr_assert_arr_eq(first, again, (size_t)(nb + 1) * sizeof *first);
         }
-        cr_assert_eq(fx_place_cuts(fx, &fx->groups[0], &c, nb, 0, rows), 0);
+        cr_assert_eq(isk__fx_place_cuts(fx, &fx->groups[0], &c, nb, 0, rows), 0);
         cr_assert_eq(rows[nb], 480);
     }
     isk_canvas_free(&c);

@@ -517,7 +517,7 @@ static chart_axis log_axis(double lo, double hi, int len, int horizontal)
     a.log = 1;
     a.tlo = log10(lo);
     a.thi = log10(hi);
-    chart_axis_setup(&a, 0, 0, 0, len, horizontal, ISK_FONT_5X8, 1);
+    isk__chart_axis_setup(&a, 0, 0, 0, len, horizontal, ISK_FONT_5X8, 1);
     return a;
 }
 
@@ -525,7 +525,7 @@ static chart_axis lin_fit(double lo, double hi, int len, int horizontal)
 {
     chart_axis a;
     memset(&a, 0, sizeof a);
-    chart_axis_setup(&a, 1, lo, hi, len, horizontal, ISK_FONT_5X8, 1);
+    isk__chart_axis_setup(&a, 1, lo, hi, len, horizontal, ISK_FONT_5X8, 1);
     return a;
 }
 
@@ -535,7 +535,7 @@ static chart_axis lin_explicit(double lo, double hi, int len, int horizontal)
     memset(&a, 0, sizeof a);
     a.tlo = lo;
     a.thi = hi;
-    chart_axis_setup(&a, 0, 0, 0, len, horizontal, ISK_FONT_5X8, 1);
+    isk__chart_axis_setup(&a, 0, 0, 0, len, horizontal, ISK_FONT_5X8, 1);
     return a;
 }
 
@@ -577,15 +577,15 @@ Test(chart, ticks_log_fitted)
     chart_axis a;
     memset(&a, 0, sizeof a);
     a.log = 1;
-    chart_axis_setup(&a, 1, log10(3e-9), log10(7e-6), 600, 1, ISK_FONT_5X8, 1);
+    isk__chart_axis_setup(&a, 1, log10(3e-9), log10(7e-6), 600, 1, ISK_FONT_5X8, 1);
     cr_assert_float_eq(a.tlo, -9.0, 0);
     cr_assert_float_eq(a.thi, -5.0, 0);
     /* all on one decade: one more each side */
-    chart_axis_setup(&a, 1, -3.0, -3.0, 600, 1, ISK_FONT_5X8, 1);
+    isk__chart_axis_setup(&a, 1, -3.0, -3.0, 600, 1, ISK_FONT_5X8, 1);
     cr_assert_float_eq(a.tlo, -4.0, 0);
     cr_assert_float_eq(a.thi, -2.0, 0);
     /* subnormal to DBL_MAX: still finite t */
-    chart_axis_setup(&a, 1, log10(5e-324), log10(DBL_MAX), 600, 0, ISK_FONT_5X8, 1);
+    isk__chart_axis_setup(&a, 1, log10(5e-324), log10(DBL_MAX), 600, 0, ISK_FONT_5X8, 1);
     cr_assert_float_eq(a.tlo, -324.0, 0);
     cr_assert_float_eq(a.thi, 309.0, 0);
 }
@@ -630,11 +630,11 @@ Test(chart, ticks_linear_labels)
     LABELS_EQ(lin_explicit(0, 3e-4, 400, 1), "0 5e-5 1e-4 1.5e-4 2e-4 2.5e-4 3e-4");
     LABELS_EQ(lin_explicit(1e5, 2e5, 250, 0), "1e5 1.2e5 1.4e5 1.6e5 1.8e5 2e5");
     char buf[CHART_LABEL_MAX];
-    chart_format_linear(buf, sizeof buf, -1.5e-7, -8, 2e-7);
+    isk__chart_format_linear(buf, sizeof buf, -1.5e-7, -8, 2e-7);
     cr_assert_str_eq(buf, "-1.5e-7");
-    chart_format_linear(buf, sizeof buf, -0.0, 0, 1);
+    isk__chart_format_linear(buf, sizeof buf, -0.0, 0, 1);
     cr_assert_str_eq(buf, "0");
-    chart_format_linear(buf, sizeof buf, DBL_MAX, 307, DBL_MAX);
+    isk__chart_format_linear(buf, sizeof buf, DBL_MAX, 307, DBL_MAX);
     cr_assert_str_eq(buf, "1.8e308");
 }
 
@@ -674,7 +674,7 @@ Test(chart, labels_never_overlap)
                 cr_assert_geq(a.n, 1, "no labels for %g..%g at %d", spans[i][0], spans[i][1], len);
                 double prev = -1e9;
                 for (int k = 0; k < a.n; k++) {
-                    double p = chart_axis_frac(&a, a.t[k]) * len;
+                    double p = isk__chart_axis_frac(&a, a.t[k]) * len;
                     double half = hz ? 0.5 * (6.0 * strlen(a.label[k])) : 4.5;
                     cr_assert_geq(p - half - prev, hz ? 6.0 : 9.0, "%s too close", a.label[k]);
                     prev = p + half;
@@ -723,7 +723,7 @@ Test(chart, clip_stays_inside)
         cr_assert_eq(isk_chart_draw(&ch, &full), ISK_OK);
         chart_axis ax, ay;
         chart_layout lay;
-        cr_assert_eq(chart_prepare(&ch, &full, &ax, &ay, &lay), ISK_OK);
+        cr_assert_eq(isk__chart_prepare(&ch, &full, &ax, &ay, &lay), ISK_OK);
         long changed = 0;
         for (int j = 0; j < full.height; j++)
             for (int i = 0; i < full.width; i++) {

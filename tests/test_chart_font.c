@@ -334,9 +334,9 @@ Test(chart_font, the_margins_follow_the_font)
     chart_layout small, big;
     linear_chart(&ch, lin, ISK_FONT_5X8);
     ch.legend = ISK_LEGEND_NONE;
-    cr_assert_eq(chart_prepare(&ch, &c, &x, &y5, &small), ISK_OK);
+    cr_assert_eq(isk__chart_prepare(&ch, &c, &x, &y5, &small), ISK_OK);
     ch.font = ISK_FONT_6X13;
-    cr_assert_eq(chart_prepare(&ch, &c, &x, &y13, &big), ISK_OK);
+    cr_assert_eq(isk__chart_prepare(&ch, &c, &x, &y13, &big), ISK_OK);
     /* top: pad 6, the title's line (9 or 14) and pad 6, half a line (4 or
      * 7), 1: so 26 and 34 */
     cr_expect_eq(small.T, 6 + 9 + 6 + 4 + 1);
@@ -365,16 +365,16 @@ Test(chart_font, tick_spacing_follows_the_font)
     memset(&a, 0, sizeof a);
     a.tlo = 0;
     a.thi = 100;
-    chart_axis_setup(&a, 0, 0, 0, 320, 1, ISK_FONT_5X8, 1);
+    isk__chart_axis_setup(&a, 0, 0, 0, 320, 1, ISK_FONT_5X8, 1);
     cr_expect_eq(a.n, 6);
-    chart_axis_setup(&a, 0, 0, 0, 320, 1, ISK_FONT_6X13, 1);
+    isk__chart_axis_setup(&a, 0, 0, 0, 320, 1, ISK_FONT_6X13, 1);
     cr_expect_eq(a.n, 3);
-    chart_axis_setup(&a, 0, 0, 0, 400, 0, ISK_FONT_5X8, 1);
+    isk__chart_axis_setup(&a, 0, 0, 0, 400, 0, ISK_FONT_5X8, 1);
     cr_expect_eq(a.n, 11);
-    chart_axis_setup(&a, 0, 0, 0, 400, 0, ISK_FONT_6X13, 1);
+    isk__chart_axis_setup(&a, 0, 0, 0, 400, 0, ISK_FONT_6X13, 1);
     cr_expect_eq(a.n, 6);
     /* at scale 2, twice the pixels: the same ticks on twice the length */
-    chart_axis_setup(&a, 0, 0, 0, 640, 1, ISK_FONT_6X13, 2);
+    isk__chart_axis_setup(&a, 0, 0, 0, 640, 1, ISK_FONT_6X13, 2);
     cr_expect_eq(a.n, 3);
 }
 
@@ -386,18 +386,18 @@ Test(chart_font, a_short_axis_keeps_the_data_range)
 {
     chart_axis a;
     memset(&a, 0, sizeof a);
-    chart_axis_setup(&a, 1, -8e6, 1e6, 54, 0, ISK_FONT_6X13, 1);
+    isk__chart_axis_setup(&a, 1, -8e6, 1e6, 54, 0, ISK_FONT_6X13, 1);
     cr_expect_eq(a.n, 0);
     cr_expect_eq(a.tlo, -8e6);
     cr_expect_eq(a.thi, 1e6);
     /* 56 px hold three labels two lines apart: -1e7, 0, 1e7 */
-    chart_axis_setup(&a, 1, -8e6, 1e6, 56, 0, ISK_FONT_6X13, 1);
+    isk__chart_axis_setup(&a, 1, -8e6, 1e6, 56, 0, ISK_FONT_6X13, 1);
     cr_expect_eq(a.n, 3);
     cr_expect_eq(a.tlo, -1e7);
     cr_expect_eq(a.thi, 1e7);
     /* within ten spans a step may still grow: 0.9..1.1 in 20 px across at
      * 5x8 ("0", "2": steps of 2, ten times the span) */
-    chart_axis_setup(&a, 1, 0.9, 1.1, 20, 1, ISK_FONT_5X8, 1);
+    isk__chart_axis_setup(&a, 1, 0.9, 1.1, 20, 1, ISK_FONT_5X8, 1);
     cr_expect_eq(a.n, 2, "%d", a.n);
     cr_expect_eq(a.tlo, 0.0);
     cr_expect_eq(a.thi, 2.0);

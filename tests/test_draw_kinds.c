@@ -124,14 +124,14 @@ Test(draw_kinds, a_kind_that_declares_nothing_is_drawn_whole)
  * bands (each honours its band's rows); sorting only with a finite reach. */
 Test(draw_kinds, the_librarys_kinds_declare_themselves)
 {
-    const fx_draw_kind *kinds[] = {&fx_kind_dots,    &fx_kind_browser_dots, &fx_kind_pixels,
-                                   &fx_kind_styled_dots, &fx_kind_styled_pixels, &fx_kind_discs,
-                                   &fx_kind_sprites, &fx_kind_textures};
+    const fx_draw_kind *kinds[] = {&isk__fx_kind_dots,    &isk__fx_kind_browser_dots, &isk__fx_kind_pixels,
+                                   &isk__fx_kind_styled_dots, &isk__fx_kind_styled_pixels, &isk__fx_kind_discs,
+                                   &isk__fx_kind_sprites, &isk__fx_kind_textures};
     for (size_t k = 0; k < sizeof kinds / sizeof kinds[0]; k++) {
         cr_expect(kinds[k]->name && kinds[k]->draw, "kind %zu", k);
         cr_expect(kinds[k]->may & FX_MAY_BANDS, "%s", kinds[k]->name);
         cr_expect(!(kinds[k]->may & FX_MAY_SORT) || kinds[k]->reach >= ISK__DOT_REACH, "%s", kinds[k]->name);
         cr_expect_gt(kinds[k]->cost, 0.0, "%s", kinds[k]->name);
     }
-    cr_expect_eq(fx_kind_nothing.may, 0);
+    cr_expect_eq(isk__fx_kind_nothing.may, 0);
 }

@@ -127,7 +127,7 @@ Test(fire, backdated_birth_worked_example)
     for (int k = 0; k < 2; k++) {
         isk__pipeline_run(&g->pipeline, &g->store, 0, g->store.count, h[k], &fx->scratch, NULL);
         size_t before = g->store.count;
-        cr_assert_eq(fx_step_spawn.run(fx, g, t, h[k]), ISK_OK);
+        cr_assert_eq(isk__fx_step_spawn.run(fx, g, t, h[k]), ISK_OK);
         allocations += g->store.count - before;
         isk_particles_cull(&g->store);
         t += h[k];

@@ -200,3 +200,22 @@ Test(hygiene, the_library_reads_no_clock)
     cr_assert_eq(pclose(p), 0, "%s failed", cmd);
     cr_assert_gt(symbols, 10, "%s listed nothing", cmd);
 }
+
+/* One naming scheme: every global symbol of the static libraries is isk_
+ * (the public API, which the test above holds to the headers) or isk__
+ * (internal, shared between the library's files); everything else is
+ * static.  So a program linking libiskra.a meets no name of ours but
+ * these two kinds. */
+Test(hygiene, every_global_symbol_is_isk_or_isk__)
+{
+    char cmd[1024];
+    snprintf(cmd, sizeof cmd,
+             "nm %s/lib/libiskra.a %s/lib/libiskra-sdl.a 2>/dev/null | awk 'NF == 3 && $2 ~ /^[TDRBCV]$/ "
+             "&& $3 !~ /^isk_/ {print $3}' | sort -u",
+             refimg_build_dir(), refimg_build_dir());
+    static char others[MOST_NAMES][96];
+    const int n = read_names(cmd, 0, others, MOST_NAMES);
+    for (int i = 0; i < n; i++)
+        cr_log_error("a global symbol outside the scheme: %s (isk_ public, isk__ internal, or static)", others[i]);
+    cr_assert_eq(n, 0, "%d global symbols outside the scheme (above)", n);
+}

@@ -85,7 +85,7 @@ static void *fresh_item(isk_effect_def *d, isk_section_kind s)
     case ISK_SECTION_DRAWING: isk_effect_def_add_drawing(d, "w", ISK_DRAWING_POLYLINE); break;
     default: break;
     }
-    return fx_section_item(d, s, 0);
+    return isk__fx_section_item(d, s, 0);
 }
 
 /* Defaults are valid, and format -> parse -> format is the identity. */
@@ -98,12 +98,12 @@ Test(keys, defaults_are_valid_and_read_back)
         isk_effect_def d;
         void *item = fresh_item(&d, k->section);
         char why[400], a[400], b[400];
-        cr_assert_eq(fx_key_set_default(k, item), 0, "%s default '%s'", k->name, k->dflt);
+        cr_assert_eq(isk__fx_key_set_default(k, item), 0, "%s default '%s'", k->name, k->dflt);
         if (k->type != ISK_KEY_REF)
-            cr_assert_eq(fx_key_check(k, item, &d, why, sizeof why), 0, "%s: %s", k->name, why);
-        cr_assert_eq(fx_key_format(k, item, &d, a, sizeof a), 0, "%s", k->name);
-        cr_assert_eq(fx_key_parse(k, item, a, &d, why, sizeof why), 0, "%s: '%s': %s", k->name, a, why);
-        cr_assert_eq(fx_key_format(k, item, &d, b, sizeof b), 0);
+            cr_assert_eq(isk__fx_key_check(k, item, &d, why, sizeof why), 0, "%s: %s", k->name, why);
+        cr_assert_eq(isk__fx_key_format(k, item, &d, a, sizeof a), 0, "%s", k->name);
+        cr_assert_eq(isk__fx_key_parse(k, item, a, &d, why, sizeof why), 0, "%s: '%s': %s", k->name, a, why);
+        cr_assert_eq(isk__fx_key_format(k, item, &d, b, sizeof b), 0);
         cr_assert_str_eq(a, b, "%s", k->name);
         isk_effect_def_free(&d);
     }
@@ -122,20 +122,20 @@ Test(keys, numbers_and_angles_round_trip_exactly)
     char buf[80], why[300];
     for (int i = 0; i < 5; i++) {
         e->launch.angle = angles[i];
-        cr_assert_eq(fx_key_format(angle, e, &d, buf, sizeof buf), 0);
+        cr_assert_eq(isk__fx_key_format(angle, e, &d, buf, sizeof buf), 0);
         e->launch.angle = 0;
-        cr_assert_eq(fx_key_parse(angle, e, buf, &d, why, sizeof why), 0, "%s: %s", buf, why);
+        cr_assert_eq(isk__fx_key_parse(angle, e, buf, &d, why, sizeof why), 0, "%s: %s", buf, why);
         cr_assert(e->launch.angle == angles[i], "angle %.17g read back as %.17g from '%s'", angles[i], e->launch.angle,
                   buf);
         e->life.seconds = lives[i];
-        cr_assert_eq(fx_key_format(life, e, &d, buf, sizeof buf), 0);
+        cr_assert_eq(isk__fx_key_format(life, e, &d, buf, sizeof buf), 0);
         e->life.seconds = 1;
-        cr_assert_eq(fx_key_parse(life, e, buf, &d, why, sizeof why), 0, "%s: %s", buf, why);
+        cr_assert_eq(isk__fx_key_parse(life, e, buf, &d, why, sizeof why), 0, "%s: %s", buf, why);
         cr_assert(e->life.seconds == lives[i], "life %.17g read back as %.17g from '%s'", lives[i], e->life.seconds,
                   buf);
     }
     cr_assert_eq(
-        fx_key_format(angle, &(isk_emitter_def){.launch.angle = 3.14159265358979323846 / 2}, &d, buf, sizeof buf), 0);
+        isk__fx_key_format(angle, &(isk_emitter_def){.launch.angle = 3.14159265358979323846 / 2}, &d, buf, sizeof buf), 0);
     cr_assert_str_eq(buf, "90"); /* degrees when they are exact */
     isk_effect_def_free(&d);
 }
@@ -193,7 +193,7 @@ Test(keys, parser_and_create_refuse_alike)
         /* the same value set from C */
         void *item = fresh_item(&d, k->section);
         if (nkinds && kk && *kk)
-            fx_key_parse(isk_key_find(k->section, kk), item, kinds[kind], &d, want, sizeof want);
+            isk__fx_key_parse(isk_key_find(k->section, kk), item, kinds[kind], &d, want, sizeof want);
         if (k->section == ISK_SECTION_VIEW)
             d.view_kind = (isk_view_def_kind)kind; /* the parser derives it from the keys given */
         char num[64];
@@ -206,7 +206,7 @@ Test(keys, parser_and_create_refuse_alike)
         default: *(size_t *)((char *)item + k->offset) = (size_t)bad; break;
         }
         char why[400];
-        cr_assert_neq(fx_key_check(k, item, &d, why, sizeof why), 0, "%s accepted %s", k->name, num);
+        cr_assert_neq(isk__fx_key_check(k, item, &d, why, sizeof why), 0, "%s accepted %s", k->name, num);
         char create_msg[500];
         snprintf(create_msg, sizeof create_msg, "%s: %s", k->name, why);
         cr_assert_str_eq(create_msg, parse_msg, "%s", k->name);

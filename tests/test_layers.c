@@ -95,7 +95,7 @@ static const struct {
     const char *a, *b, *why;
 } known_circles[] = {
     {"src/scene/effect_draws.c", "src/scene/effect_texture.c",
-     "the draw-kind table names fx_draw_textures, which styles by fx_style and fx_varies: those belong in a "
+     "the draw-kind table names isk__fx_draw_textures, which styles by isk__fx_style and isk__fx_varies: those belong in a "
      "file of their own"},
     {"src/ui/ui.c", "src/ui/ui_choice.c", "the popups call the widget state's functions and it draws them"},
 };

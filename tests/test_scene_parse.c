@@ -41,29 +41,29 @@ static void load_fails(const char *text, const char *msg)
 Test(scene_values, numbers)
 {
     double v;
-    cr_assert(scv_number("1", &v) && v == 1);
-    cr_assert(scv_number("-2.5", &v) && v == -2.5);
-    cr_assert(scv_number("+.5", &v) && v == 0.5);
-    cr_assert(scv_number("5.", &v) && v == 5);
-    cr_assert(scv_number("1e3", &v) && v == 1000);
-    cr_assert(scv_number("1.25E-2", &v) && v == 0.0125);
-    cr_assert(scv_number("1/60", &v) && v == 1.0 / 60.0);
-    cr_assert(scv_number("1 / 4", &v) && v == 0.25);
+    cr_assert(isk__scv_number("1", &v) && v == 1);
+    cr_assert(isk__scv_number("-2.5", &v) && v == -2.5);
+    cr_assert(isk__scv_number("+.5", &v) && v == 0.5);
+    cr_assert(isk__scv_number("5.", &v) && v == 5);
+    cr_assert(isk__scv_number("1e3", &v) && v == 1000);
+    cr_assert(isk__scv_number("1.25E-2", &v) && v == 0.0125);
+    cr_assert(isk__scv_number("1/60", &v) && v == 1.0 / 60.0);
+    cr_assert(isk__scv_number("1 / 4", &v) && v == 0.25);
     const char *bad[] = {"", " ", "nan", "NaN", "inf", "-inf", "infinity", "1e", "0x10", "1.2.3", "1,5",
                          "fast", "1 2", "1/0", "1/", "/2", "1e400", "--1", "1/2/3", "."};
     for (size_t i = 0; i < sizeof bad / sizeof bad[0]; i++)
-        cr_assert_not(scv_number(bad[i], &v), "accepted \"%s\"", bad[i]);
+        cr_assert_not(isk__scv_number(bad[i], &v), "accepted \"%s\"", bad[i]);
 }
 
 Test(scene_values, integers_and_seed)
 {
     uint64_t u;
-    cr_assert(scv_u64("0", &u) && u == 0);
-    cr_assert(scv_u64("18446744073709551615", &u) && u == UINT64_MAX);
-    cr_assert_not(scv_u64("18446744073709551616", &u));
-    cr_assert_not(scv_u64("-1", &u));
-    cr_assert_not(scv_u64("1.0", &u));
-    cr_assert_not(scv_u64("", &u));
+    cr_assert(isk__scv_u64("0", &u) && u == 0);
+    cr_assert(isk__scv_u64("18446744073709551615", &u) && u == UINT64_MAX);
+    cr_assert_not(isk__scv_u64("18446744073709551616", &u));
+    cr_assert_not(isk__scv_u64("-1", &u));
+    cr_assert_not(isk__scv_u64("1.0", &u));
+    cr_assert_not(isk__scv_u64("", &u));
 }
 
 Test(scene_values, booleans)
@@ -72,41 +72,41 @@ Test(scene_values, booleans)
     const char *t[] = {"true", "yes", "on", "1", "TRUE", "Yes"};
     const char *f[] = {"false", "no", "off", "0", "False"};
     for (int i = 0; i < 6; i++)
-        cr_assert(scv_bool(t[i], &b) && b == 1, "%s", t[i]);
+        cr_assert(isk__scv_bool(t[i], &b) && b == 1, "%s", t[i]);
     for (int i = 0; i < 5; i++)
-        cr_assert(scv_bool(f[i], &b) && b == 0, "%s", f[i]);
-    cr_assert_not(scv_bool("maybe", &b));
-    cr_assert_not(scv_bool("", &b));
+        cr_assert(isk__scv_bool(f[i], &b) && b == 0, "%s", f[i]);
+    cr_assert_not(isk__scv_bool("maybe", &b));
+    cr_assert_not(isk__scv_bool("", &b));
 }
 
 Test(scene_values, colours)
 {
     isk_color c;
-    cr_assert(scv_color("#ff8000", &c) && c.r == 255 && c.g == 128 && c.b == 0 && c.a == 255);
-    cr_assert(scv_color("#FF800040", &c) && c.a == 0x40);
-    cr_assert(scv_color("green", &c) && c.r == 0 && c.g == 128 && c.b == 0 && c.a == 255);
-    cr_assert(scv_color("Yellow", &c) && c.r == 255 && c.g == 255 && c.b == 0);
-    cr_assert(scv_color("orange", &c) && c.r == 255 && c.g == 165 && c.b == 0);
-    cr_assert(scv_color("transparent", &c) && c.a == 0);
+    cr_assert(isk__scv_color("#ff8000", &c) && c.r == 255 && c.g == 128 && c.b == 0 && c.a == 255);
+    cr_assert(isk__scv_color("#FF800040", &c) && c.a == 0x40);
+    cr_assert(isk__scv_color("green", &c) && c.r == 0 && c.g == 128 && c.b == 0 && c.a == 255);
+    cr_assert(isk__scv_color("Yellow", &c) && c.r == 255 && c.g == 255 && c.b == 0);
+    cr_assert(isk__scv_color("orange", &c) && c.r == 255 && c.g == 165 && c.b == 0);
+    cr_assert(isk__scv_color("transparent", &c) && c.a == 0);
     const char *bad[] = {"#fff", "#ff80", "#gg0000", "#ff00001", "yelow", "", "#"};
     for (size_t i = 0; i < sizeof bad / sizeof bad[0]; i++)
-        cr_assert_not(scv_color(bad[i], &c), "accepted \"%s\"", bad[i]);
+        cr_assert_not(isk__scv_color(bad[i], &c), "accepted \"%s\"", bad[i]);
     /* every listed name parses */
-    for (int i = 0; i < scv_color_count; i++)
-        cr_assert(scv_color(scv_color_name_at(i), &c), "%s", scv_color_name_at(i));
+    for (int i = 0; i < isk__scv_color_count; i++)
+        cr_assert(isk__scv_color(isk__scv_color_name_at(i), &c), "%s", isk__scv_color_name_at(i));
 }
 
 Test(scene_values, lists)
 {
     char buf[64], *items[8];
     int n;
-    cr_assert(scv_split(" a , b,c ", buf, sizeof buf, ',', items, 8, &n) && n == 3);
+    cr_assert(isk__scv_split(" a , b,c ", buf, sizeof buf, ',', items, 8, &n) && n == 3);
     cr_assert_str_eq(items[0], "a");
     cr_assert_str_eq(items[2], "c");
-    cr_assert(scv_split("  ", buf, sizeof buf, ',', items, 8, &n) && n == 0);
-    cr_assert_not(scv_split("a,,b", buf, sizeof buf, ',', items, 8, &n));
-    cr_assert_not(scv_split("a,", buf, sizeof buf, ',', items, 8, &n));
-    cr_assert_not(scv_split("1,2,3", buf, sizeof buf, ',', items, 2, &n));
+    cr_assert(isk__scv_split("  ", buf, sizeof buf, ',', items, 8, &n) && n == 0);
+    cr_assert_not(isk__scv_split("a,,b", buf, sizeof buf, ',', items, 8, &n));
+    cr_assert_not(isk__scv_split("a,", buf, sizeof buf, ',', items, 8, &n));
+    cr_assert_not(isk__scv_split("1,2,3", buf, sizeof buf, ',', items, 2, &n));
 }
 
 /* ---- round trip: every section and key ----------------------------------------- */

@@ -90,7 +90,7 @@ static size_t data_extent(const isk_chart *ch, double *x0, double *x1, double *y
         const isk_chart_series *s = &ch->series[k];
         for (size_t i = 0; i < s->n; i++) {
             double tx, ty;
-            if (!chart_axis_place(ch->x_log != 0, s->x[i], &tx) || !chart_axis_place(ch->y_log != 0, s->y[i], &ty))
+            if (!isk__chart_axis_place(ch->x_log != 0, s->x[i], &tx) || !isk__chart_axis_place(ch->y_log != 0, s->y[i], &ty))
                 continue;
             if (count == 0) {
                 *x0 = *x1 = tx;
@@ -134,7 +134,7 @@ static void text_layout(chart_layout *lay, isk_font font, int s)
     lay->cap_mid = (m->cap_h - 1) / 2 * s;
 }
 
-isk_status chart_prepare(const isk_chart *ch, const isk_canvas *c, chart_axis *xa, chart_axis *ya,
+isk_status isk__chart_prepare(const isk_chart *ch, const isk_canvas *c, chart_axis *xa, chart_axis *ya,
                          chart_layout *out)
 {
     isk_status st = validate(ch, c);
@@ -168,7 +168,7 @@ isk_status chart_prepare(const isk_chart *ch, const isk_canvas *c, chart_axis *x
     top2_h = top2_h > H / 6 ? H / 6 : top2_h;
     /* A legend over the plot: its rows under the title (at most a third of
      * the height). */
-    int legend_h = ch->legend == ISK_LEGEND_ABOVE ? chart_legend_above_height(ch, &lay, W - 2 * pad, W, H) : 0;
+    int legend_h = ch->legend == ISK_LEGEND_ABOVE ? isk__chart_legend_above_height(ch, &lay, W - 2 * pad, W, H) : 0;
     legend_h = legend_h > H / 3 ? H / 3 : legend_h;
     lay.legend_y = pad + title_h;
     lay.T = pad + title_h + legend_h + top2_h + lay.chh / 2 + s;
@@ -179,7 +179,7 @@ isk_status chart_prepare(const isk_chart *ch, const isk_canvas *c, chart_axis *x
     ay.log = ch->y_log != 0;
     if (!fit_y)
         explicit_range(&ay, ch->y_min, ch->y_max);
-    chart_axis_setup(&ay, fit_y, dy0, dy1, lay.B - lay.T, 0, font, s);
+    isk__chart_axis_setup(&ay, fit_y, dy0, dy1, lay.B - lay.T, 0, font, s);
 
     int maxw = 0;
     for (int k = 0; k < ay.n; k++) {
@@ -201,10 +201,10 @@ isk_status chart_prepare(const isk_chart *ch, const isk_canvas *c, chart_axis *x
     for (int pass = 0; pass < 2; pass++) {
         if (!fit_x)
             explicit_range(&ax, ch->x_min, ch->x_max);
-        chart_axis_setup(&ax, fit_x, dx0, dx1, lay.R - lay.L, 1, font, s);
+        isk__chart_axis_setup(&ax, fit_x, dx0, dx1, lay.R - lay.L, 1, font, s);
         int over = 0;
         for (int k = 0; k < ax.n; k++) {
-            double f = chart_axis_frac(&ax, ax.t[k]);
+            double f = isk__chart_axis_frac(&ax, ax.t[k]);
             if (!(f >= 0.0 && f <= 1.0 + 1e-6))
                 continue;
             int iw = isk_font_text_width(font, ax.label[k], s) - lay.space;
@@ -223,7 +223,7 @@ isk_status chart_prepare(const isk_chart *ch, const isk_canvas *c, chart_axis *x
         a2->log = 1;
         a2->tlo = ch->x2_inverse ? ls - ax.thi : ls + ax.tlo;
         a2->thi = ch->x2_inverse ? ls - ax.tlo : ls + ax.thi;
-        chart_axis_setup(a2, 0, 0.0, 0.0, lay.R - lay.L, 1, font, s);
+        isk__chart_axis_setup(a2, 0, 0.0, 0.0, lay.R - lay.L, 1, font, s);
     }
     *xa = ax;
     *ya = ay;
@@ -235,16 +235,16 @@ isk_status isk_chart_draw(const isk_chart *ch, isk_canvas *c)
 {
     chart_axis ax, ay;
     chart_layout lay;
-    isk_status st = chart_prepare(ch, c, &ax, &ay, &lay);
+    isk_status st = isk__chart_prepare(ch, c, &ax, &ay, &lay);
     if (st != ISK_OK)
         return st;
     isk_canvas_fill(c, ch->background);
-    chart_draw_grid(ch, &ax, &ay, &lay, c);
-    chart_draw_lines(ch, &ax, &ay, &lay, c);
-    chart_draw_frame(ch, &ax, &ay, &lay, c);
-    chart_draw_markers(ch, &ax, &ay, &lay, c);
-    chart_draw_notes(ch, &ax, &ay, &lay, c);
-    chart_draw_text(ch, &ax, &ay, &lay, c);
-    chart_draw_legend(ch, &lay, c);
+    isk__chart_draw_grid(ch, &ax, &ay, &lay, c);
+    isk__chart_draw_lines(ch, &ax, &ay, &lay, c);
+    isk__chart_draw_frame(ch, &ax, &ay, &lay, c);
+    isk__chart_draw_markers(ch, &ax, &ay, &lay, c);
+    isk__chart_draw_notes(ch, &ax, &ay, &lay, c);
+    isk__chart_draw_text(ch, &ax, &ay, &lay, c);
+    isk__chart_draw_legend(ch, &lay, c);
     return ISK_OK;
 }

@@ -26,7 +26,7 @@
 #define PREF_X 64          /* preferred linear tick spacing, px of the 5x8 font at scale 1 */
 #define PREF_Y 40          /* (follows the labels' font: x by its cell width, y by its line height) */
 
-int chart_axis_place(int log, double v, double *t)
+int isk__chart_axis_place(int log, double v, double *t)
 {
     if (!isfinite(v) || (log && v <= 0.0))
         return 0;
@@ -34,7 +34,7 @@ int chart_axis_place(int log, double v, double *t)
     return 1;
 }
 
-double chart_axis_frac(const chart_axis *a, double t)
+double isk__chart_axis_frac(const chart_axis *a, double t)
 {
     double span = a->thi - a->tlo, d = t - a->tlo, f;
     if (isfinite(span) && isfinite(d))
@@ -104,7 +104,7 @@ static void strip_zeros(char *s)
         s[--n] = '\0';
 }
 
-void chart_format_linear(char *buf, size_t n, double v, int e, double vmax)
+void isk__chart_format_linear(char *buf, size_t n, double v, int e, double vmax)
 {
     if (n == 0)
         return;
@@ -158,7 +158,7 @@ static int labels_fit(const chart_axis *a, int len, int horizontal, const label_
 {
     double prev = 0.0;
     for (int k = 0; k < a->n; k++) {
-        double p = chart_axis_frac(a, a->t[k]) * (double)len;
+        double p = isk__chart_axis_frac(a, a->t[k]) * (double)len;
         double half = horizontal ? 0.5 * isk_font_text_width(lt->font, a->label[k], lt->scale) : 0.5 * lt->chh;
         double gap = horizontal ? lt->cw : lt->chh;
         if (k > 0 && (p - half) - prev < gap)
@@ -201,7 +201,7 @@ static int linear_ticks(chart_axis *a, double lo, double hi, int m, int e, int l
             t = log10(t);
         }
         a->t[a->n] = t;
-        chart_format_linear(a->label[a->n], CHART_LABEL_MAX, vals[k], e, vmax);
+        isk__chart_format_linear(a->label[a->n], CHART_LABEL_MAX, vals[k], e, vmax);
         a->n++;
     }
     return 1;
@@ -345,7 +345,7 @@ static void setup_log(chart_axis *a, int fitted, double dmin, double dmax, int l
     }
 }
 
-void chart_axis_setup(chart_axis *a, int fitted, double dmin, double dmax, int len, int horizontal,
+void isk__chart_axis_setup(chart_axis *a, int fitted, double dmin, double dmax, int len, int horizontal,
                       isk_font font, int scale)
 {
     const isk_font_metrics *m = isk_font_metrics_of(font);

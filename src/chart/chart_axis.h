@@ -9,9 +9,9 @@
  * columns/rows sit exactly at f = 0 and f = 1.
  *
  *     chart_axis a = {.log = 1};
- *     chart_axis_setup(&a, 1, -3.0, 2.0, 400, 1, ISK_FONT_5X8, 1);   // fitted to 1e-3 .. 1e2
+ *     isk__chart_axis_setup(&a, 1, -3.0, 2.0, 400, 1, ISK_FONT_5X8, 1);   // fitted to 1e-3 .. 1e2
  *     double t, x;
- *     if (chart_axis_place(a.log, 0.5, &t)) x = chart_px(&lay, chart_axis_frac(&a, t));
+ *     if (isk__chart_axis_place(a.log, 0.5, &t)) x = chart_px(&lay, isk__chart_axis_frac(&a, t));
  */
 #ifndef ISKRA_CHART_AXIS_H
 #define ISKRA_CHART_AXIS_H
@@ -70,11 +70,11 @@ static inline double chart_py(const chart_layout *l, double f)
 }
 
 /* The t coordinate of value v, and whether v can be placed at all. */
-int chart_axis_place(int log, double v, double *t);
+int isk__chart_axis_place(int log, double v, double *t);
 
 /* Fraction of the way from tlo to thi (never NaN for finite t; clamped
  * to +-1e300 so later differences cannot overflow). */
-double chart_axis_frac(const chart_axis *a, double t);
+double isk__chart_axis_frac(const chart_axis *a, double t);
 
 /* Chooses the range (when fitted) and the labelled ticks of an axis `len`
  * pixels long.  fitted: [dmin, dmax] is the data's extent in t space (may
@@ -82,12 +82,12 @@ double chart_axis_frac(const chart_axis *a, double t);
  * horizontal: labels stand side by side (x axis), else stacked (y axis);
  * they are written in `font` at `scale` (a known font).  Never fails: at
  * worst an axis gets no labels. */
-void chart_axis_setup(chart_axis *a, int fitted, double dmin, double dmax, int len, int horizontal,
+void isk__chart_axis_setup(chart_axis *a, int fitted, double dmin, double dmax, int len, int horizontal,
                       isk_font font, int scale);
 
 /* Label text of a linear tick value v on an axis whose step is m * 10^e and
  * whose largest tick magnitude is vmax (the rule is in chart.h). */
-void chart_format_linear(char *buf, size_t n, double v, int e, double vmax);
+void isk__chart_format_linear(char *buf, size_t n, double v, int e, double vmax);
 
 /* Layout constants, in pixels at scale 1 (times lay->s). */
 #define CHART_PAD 6        /* canvas edge to anything */

@@ -27,11 +27,11 @@ static int row_of(const chart_layout *l, double f)
 
 static int tick_frac(const chart_axis *a, int k, double *f)
 {
-    *f = chart_axis_frac(a, a->t[k]);
+    *f = isk__chart_axis_frac(a, a->t[k]);
     return *f >= -FEPS && *f <= 1.0 + FEPS;
 }
 
-void chart_draw_grid(const isk_chart *ch, const chart_axis *x, const chart_axis *y,
+void isk__chart_draw_grid(const isk_chart *ch, const chart_axis *x, const chart_axis *y,
                      const chart_layout *lay, isk_canvas *c)
 {
     double f;
@@ -80,7 +80,7 @@ static void minor_ticks(const isk_chart *ch, const chart_axis *a, const chart_la
         for (int m = 1; m <= 9; m++) {
             if ((m == 1 && !decades) || (m > 1 && !subs))
                 continue;
-            double f = chart_axis_frac(a, d + log10((double)m));
+            double f = isk__chart_axis_frac(a, d + log10((double)m));
             if (f < -FEPS || f > 1.0 + FEPS)
                 continue;
             if (horizontal)
@@ -91,7 +91,7 @@ static void minor_ticks(const isk_chart *ch, const chart_axis *a, const chart_la
     }
 }
 
-void chart_draw_frame(const isk_chart *ch, const chart_axis *x, const chart_axis *y,
+void isk__chart_draw_frame(const isk_chart *ch, const chart_axis *x, const chart_axis *y,
                       const chart_layout *lay, isk_canvas *c)
 {
     int s = lay->s, o = s - 1; /* a thicker frame grows outwards */
@@ -158,7 +158,7 @@ static int text_width(const chart_layout *lay, const char *s)
 }
 
 
-void chart_draw_text(const isk_chart *ch, const chart_axis *x, const chart_axis *y,
+void isk__chart_draw_text(const isk_chart *ch, const chart_axis *x, const chart_axis *y,
                      const chart_layout *lay, isk_canvas *c)
 {
     int s = lay->s, pad = CHART_PAD * s, line_gap = chart_up(lay, CHART_LINE_GAP);
@@ -167,16 +167,16 @@ void chart_draw_text(const isk_chart *ch, const chart_axis *x, const chart_axis 
     for (int k = 0; k < x->n; k++) {
         if (!tick_frac(x, k, &f))
             continue;
-        int w = text_width(lay, x->label[k]), iw = chart_ink_width(lay, x->label[k]);
+        int w = text_width(lay, x->label[k]), iw = isk__chart_ink_width(lay, x->label[k]);
         int lx = clampi(col_of(lay, f) - (iw - s) / 2, 0, c->width - w);
-        chart_text_at(c, lay, lx, ly, x->label[k], ch->ink);
+        isk__chart_text_at(c, lay, lx, ly, x->label[k], ch->ink);
     }
     int right = lay->L - (s - 1) - CHART_TICK * s - CHART_GAP * s; /* one past the ink */
     for (int k = 0; k < y->n; k++) {
         if (!tick_frac(y, k, &f))
             continue;
-        int iw = chart_ink_width(lay, y->label[k]);
-        chart_text_at(c, lay, right - iw, row_of(lay, f) - lay->cap_mid, y->label[k], ch->ink);
+        int iw = isk__chart_ink_width(lay, y->label[k]);
+        isk__chart_text_at(c, lay, right - iw, row_of(lay, f) - lay->cap_mid, y->label[k], ch->ink);
     }
     int mid = (lay->L + lay->R + 1) / 2;
     if (lay->top2) {
@@ -185,43 +185,43 @@ void chart_draw_text(const isk_chart *ch, const chart_axis *x, const chart_axis 
             f = chart_x2_frac(ch, lay, lay->x2.t[k]);
             if (!(f >= -FEPS && f <= 1.0 + FEPS))
                 continue;
-            int w = text_width(lay, lay->x2.label[k]), iw = chart_ink_width(lay, lay->x2.label[k]);
+            int w = text_width(lay, lay->x2.label[k]), iw = isk__chart_ink_width(lay, lay->x2.label[k]);
             int lx = clampi(col_of(lay, f) - (iw - s) / 2, 0, c->width - w);
-            chart_text_at(c, lay, lx, ly2, lay->x2.label[k], ch->ink);
+            isk__chart_text_at(c, lay, lx, ly2, lay->x2.label[k], ch->ink);
         }
-        int w = text_width(lay, ch->x2_label), iw = chart_ink_width(lay, ch->x2_label);
+        int w = text_width(lay, ch->x2_label), iw = isk__chart_ink_width(lay, ch->x2_label);
         int tx = clampi(mid - iw / 2, pad, c->width - pad - w);
         int ty = ly2 - line_gap - isk_font_text_height(lay->font, ch->x2_label, s);
-        chart_text_at(c, lay, tx, ty, ch->x2_label, ch->ink);
+        isk__chart_text_at(c, lay, tx, ty, ch->x2_label, ch->ink);
     }
     if (ch->title && *ch->title) {
-        int w = text_width(lay, ch->title), iw = chart_ink_width(lay, ch->title);
+        int w = text_width(lay, ch->title), iw = isk__chart_ink_width(lay, ch->title);
         int tx = clampi(mid - iw / 2, pad, c->width - pad - w);
-        chart_text_at(c, lay, tx, pad, ch->title, ch->ink);
+        isk__chart_text_at(c, lay, tx, pad, ch->title, ch->ink);
         if (s > 1 && ch->ink.a == 255) /* bold: again one pixel right (at scale 1 it smudges) */
-            chart_text_at(c, lay, tx + 1, pad, ch->title, ch->ink);
+            isk__chart_text_at(c, lay, tx + 1, pad, ch->title, ch->ink);
     }
     if (ch->x_label && *ch->x_label) {
-        int w = text_width(lay, ch->x_label), iw = chart_ink_width(lay, ch->x_label);
+        int w = text_width(lay, ch->x_label), iw = isk__chart_ink_width(lay, ch->x_label);
         int tx = clampi(mid - iw / 2, pad, c->width - pad - w);
         int ty = ly + lay->chh + line_gap;
-        chart_text_at(c, lay, tx, ty, ch->x_label, ch->ink);
+        isk__chart_text_at(c, lay, tx, ty, ch->x_label, ch->ink);
     }
     if (ch->y_label && *ch->y_label) {
-        int iw = chart_ink_width(lay, ch->y_label);
+        int iw = isk__chart_ink_width(lay, ch->y_label);
         int midy = (lay->T + lay->B + 1) / 2;
         int ybot = clampi(midy + iw / 2, iw + pad, c->height - pad);
         draw_text_up(c, lay->font, pad, ybot, ch->y_label, s, ch->ink);
     }
 }
 
-int chart_ink_width(const chart_layout *lay, const char *s)
+int isk__chart_ink_width(const chart_layout *lay, const char *s)
 {
     int w = text_width(lay, s);
     return w > lay->space ? w - lay->space : w;
 }
 
-void chart_text_at(isk_canvas *c, const chart_layout *lay, int x, int y, const char *s, isk_color col)
+void isk__chart_text_at(isk_canvas *c, const chart_layout *lay, int x, int y, const char *s, isk_color col)
 {
     isk_font_draw_text(c, lay->font, x, y, s, lay->s, col, ISK_BLEND_OVER);
 }

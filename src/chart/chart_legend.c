@@ -33,7 +33,7 @@ static entry entry_of(const isk_chart_series *se, const chart_layout *lay, int W
 {
     entry e;
     const int mark = 2 * lay->mark_r + 3;
-    int w = chart_ink_width(lay, se->name), th = isk_font_text_height(lay->font, se->name, lay->s);
+    int w = isk__chart_ink_width(lay, se->name), th = isk_font_text_height(lay->font, se->name, lay->s);
     w = w > W ? W : w;
     e.se = se;
     e.th = th > H ? H : th;
@@ -47,10 +47,10 @@ static void draw_entry(const isk_chart *ch, const entry *e, int x, int y, const 
 {
     const int sample = chart_across(lay, LEGEND_SAMPLE);
     int cy = y + (e->h - 1) / 2; /* pixel row of the entry's middle */
-    chart_draw_sample(&e->se->style, x, x + sample, cy + 0.5, lay, c);
+    isk__chart_draw_sample(&e->se->style, x, x + sample, cy + 0.5, lay, c);
     /* one line: its capitals centred on the sample */
     int ty = e->th > lay->chh ? y : cy - lay->cap_mid;
-    chart_text_at(c, lay, x + sample + chart_across(lay, LEGEND_GAP), ty, e->se->name, ch->ink);
+    isk__chart_text_at(c, lay, x + sample + chart_across(lay, LEGEND_GAP), ty, e->se->name, ch->ink);
 }
 
 /* ---- a box in a corner of the plot ---------------------------------------- */
@@ -148,12 +148,12 @@ static int above_rows(const isk_chart *ch, const chart_layout *lay, int width, i
     return y - top;
 }
 
-int chart_legend_above_height(const isk_chart *ch, const chart_layout *lay, int width, int W, int H)
+int isk__chart_legend_above_height(const isk_chart *ch, const chart_layout *lay, int width, int W, int H)
 {
     return above_rows(ch, lay, width, W, H, 0, 0, NULL);
 }
 
-void chart_draw_legend(const isk_chart *ch, const chart_layout *lay, isk_canvas *c)
+void isk__chart_draw_legend(const isk_chart *ch, const chart_layout *lay, isk_canvas *c)
 {
     if (ch->legend == ISK_LEGEND_NONE)
         return;

@@ -222,14 +222,14 @@ static int point_frac(const isk_chart_series *s, size_t i, const chart_axis *x, 
                       double *fx, double *fy)
 {
     double tx, ty;
-    if (!chart_axis_place(x->log, s->x[i], &tx) || !chart_axis_place(y->log, s->y[i], &ty))
+    if (!isk__chart_axis_place(x->log, s->x[i], &tx) || !isk__chart_axis_place(y->log, s->y[i], &ty))
         return 0;
-    *fx = chart_axis_frac(x, tx);
-    *fy = chart_axis_frac(y, ty);
+    *fx = isk__chart_axis_frac(x, tx);
+    *fy = isk__chart_axis_frac(y, ty);
     return 1;
 }
 
-void chart_draw_lines(const isk_chart *ch, const chart_axis *x, const chart_axis *y,
+void isk__chart_draw_lines(const isk_chart *ch, const chart_axis *x, const chart_axis *y,
                       const chart_layout *lay, isk_canvas *parent)
 {
     /* Stroked into a view of the frame's rectangle: anti-aliased edges and
@@ -329,7 +329,7 @@ static void draw_marker(isk_canvas *c, isk_chart_marker m, double x, double y, c
     }
 }
 
-void chart_draw_markers(const isk_chart *ch, const chart_axis *x, const chart_axis *y,
+void isk__chart_draw_markers(const isk_chart *ch, const chart_axis *x, const chart_axis *y,
                         const chart_layout *lay, isk_canvas *c)
 {
     const double eps = 1e-9;
@@ -348,7 +348,7 @@ void chart_draw_markers(const isk_chart *ch, const chart_axis *x, const chart_ax
     }
 }
 
-void chart_draw_notes(const isk_chart *ch, const chart_axis *x, const chart_axis *y, const chart_layout *lay,
+void isk__chart_draw_notes(const isk_chart *ch, const chart_axis *x, const chart_axis *y, const chart_layout *lay,
                       isk_canvas *c)
 {
     const double eps = 1e-9;
@@ -357,9 +357,9 @@ void chart_draw_notes(const isk_chart *ch, const chart_axis *x, const chart_axis
     for (size_t k = 0; k < ch->nnotes; k++) {
         const isk_chart_note *n = &ch->notes[k];
         double tx, ty;
-        if (!chart_axis_place(x->log, n->x, &tx) || !chart_axis_place(y->log, n->y, &ty))
+        if (!isk__chart_axis_place(x->log, n->x, &tx) || !isk__chart_axis_place(y->log, n->y, &ty))
             continue;
-        double fx = chart_axis_frac(x, tx), fy = chart_axis_frac(y, ty);
+        double fx = isk__chart_axis_frac(x, tx), fy = isk__chart_axis_frac(y, ty);
         if (fx < -eps || fx > 1.0 + eps || fy < -eps || fy > 1.0 + eps)
             continue;
         double px = chart_px(lay, fx), py = chart_py(lay, fy);
@@ -372,7 +372,7 @@ void chart_draw_notes(const isk_chart *ch, const chart_axis *x, const chart_axis
     }
 }
 
-void chart_draw_sample(const isk_chart_style *st, double x0, double x1, double y, const chart_layout *lay,
+void isk__chart_draw_sample(const isk_chart_style *st, double x0, double x1, double y, const chart_layout *lay,
                        isk_canvas *c)
 {
     if (st->dash != ISK_DASH_NONE) {

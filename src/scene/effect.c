@@ -17,20 +17,20 @@ static void free_group(fx_group *g)
 {
     isk_particles_free(&g->store);
     isk__rest_free(&g->rest);
-    fx_retain_clear(&g->retained);
+    isk__fx_retain_clear(&g->retained);
     free(g->pick);
     free(g->defl);
-    fx_free_ramps(g);
-    fx_looks_free(g);
-    fx_events_free(g);
+    isk__fx_free_ramps(g);
+    isk__fx_looks_free(g);
+    isk__fx_events_free(g);
 }
 
 /* Room for the group's picks (its segments grow as it compiles). */
 static isk_status alloc_group(isk_effect *e, fx_group *g)
 {
     isk_status s = isk_particles_init(&g->store, 0,
-                                      (fx_emitter_oscillates(g->def) ? ISK_PARTICLES_OSC : 0) | fx_looks_columns(g->def));
-    if (s != ISK_OK || (s = fx_events_columns(g)) != ISK_OK)
+                                      (isk__fx_emitter_oscillates(g->def) ? ISK_PARTICLES_OSC : 0) | isk__fx_looks_columns(g->def));
+    if (s != ISK_OK || (s = isk__fx_events_columns(g)) != ISK_OK)
         return s;
     g->pick_cap = e->pots_cap;
     g->pick = calloc(g->pick_cap ? g->pick_cap : 1, sizeof *g->pick);
@@ -64,7 +64,7 @@ static isk_status populate(isk_effect *e, fx_group *g)
         s = isk_particles_add(p, em->born.position.x, em->born.position.y, em->launch.velocity.x, em->launch.velocity.y,
                               em->launch.mass, NULL);
         if (s == ISK_OK)
-            fx_adopt(e, g, 0);
+            isk__fx_adopt(e, g, 0);
         break;
     case ISK_SOURCE_LAYER: {
         if (em->born.count == 0)
@@ -75,18 +75,18 @@ static isk_status populate(isk_effect *e, fx_group *g)
         for (size_t i = 0; s == ISK_OK && i < p->count; i++)
             p->m[i] = em->launch.mass;
         if (s == ISK_OK)
-            fx_adopt(e, g, 0);
+            isk__fx_adopt(e, g, 0);
         break;
     }
     case ISK_SOURCE_EXPLOSION:
         if (em->born.start <= 0) {
-            s = fx_fire_explosion(e, g, em->born.explosion, em->born.position.x, em->born.position.y, em->born.count,
+            s = isk__fx_fire_explosion(e, g, em->born.explosion, em->born.position.x, em->born.position.y, em->born.count,
                                   em->born.kick);
             g->fired = 1;
         }
         break;
     case ISK_SOURCE_STREAM:
-        fx_stream_reset(g, 0.0);
+        isk__fx_stream_reset(g, 0.0);
         break;
     default:
         break;
@@ -110,13 +110,13 @@ static isk_status build(isk_effect *e, isk_error *err)
         isk_status s = alloc_group(e, g);
         if (s != ISK_OK)
             return isk_error_set(err, s, "emitter '%s': %s", em->name, isk_status_str(s));
-        isk_rng_seed(&g->rng, fx_group_seed(d->seed, gi));
-        if ((s = fx_bake_ramps(g, err)) != ISK_OK || (s = fx_looks_prepare(e, g, err)) != ISK_OK)
+        isk_rng_seed(&g->rng, isk__fx_group_seed(d->seed, gi));
+        if ((s = isk__fx_bake_ramps(g, err)) != ISK_OK || (s = isk__fx_looks_prepare(e, g, err)) != ISK_OK)
             return s;
-        if ((s = fx_compile(e, g)) != ISK_OK)
+        if ((s = isk__fx_compile(e, g)) != ISK_OK)
             return isk_error_set(err, s, "emitter '%s': cannot compile: %s", em->name, isk_status_str(s));
     }
-    fx_start_clocks(e, d->dt / d->speed_divisor);
+    isk__fx_start_clocks(e, d->dt / d->speed_divisor);
     for (int gi = 0; gi < e->ngroups; gi++) {
         fx_group *g = &e->groups[gi];
         isk_status s = populate(e, g);
@@ -124,7 +124,7 @@ static isk_status build(isk_effect *e, isk_error *err)
             return isk_error_set(err, s, "emitter '%s': cannot create its particles: %s", g->def->name,
                                  isk_status_str(s));
     }
-    isk_status s = fx_prewarm(e);
+    isk_status s = isk__fx_prewarm(e);
     if (s != ISK_OK)
         return isk_error_set(err, s, "prewarm: %s", isk_status_str(s));
     if (d->click.at_start && d->click.after_frames == 0) {
@@ -136,7 +136,7 @@ static isk_status build(isk_effect *e, isk_error *err)
 }
 
 /* Draw order: by `order`, ties by definition order (insertion sort: stable). */
-void fx_sort_draw_order(isk_effect *e)
+void isk__fx_sort_draw_order(isk_effect *e)
 {
     const isk_effect_def *d = &e->def;
     for (int i = 0; i < e->ngroups; i++) {
@@ -154,7 +154,7 @@ isk_status isk_effect_create(isk_effect **out, const isk_effect_def *def, isk_er
     if (!out || !def)
         return isk_error_set(err, ISK_ERR_NULL, "effect: NULL argument");
     *out = NULL;
-    isk_status s = fx_check(def, err);
+    isk_status s = isk__fx_check(def, err);
     if (s != ISK_OK)
         return s;
     isk_effect *e = calloc(1, sizeof *e);
@@ -163,7 +163,7 @@ isk_status isk_effect_create(isk_effect **out, const isk_effect_def *def, isk_er
     isk__workers_init(&e->workers);
     e->band_min_work = FX_BAND_MIN_WORK;
     e->update_min_work = FX_UPDATE_MIN_WORK;
-    s = fx_def_copy(&e->def, def);
+    s = isk__fx_def_copy(&e->def, def);
     if (s != ISK_OK) {
         free(e);
         return isk_error_set(err, s, "effect: out of memory");
@@ -188,7 +188,7 @@ isk_status isk_effect_create(isk_effect **out, const isk_effect_def *def, isk_er
         isk_effect_destroy(e);
         return isk_error_set(err, ISK_ERR_NOMEM, "effect: out of memory");
     }
-    fx_sort_draw_order(e);
+    isk__fx_sort_draw_order(e);
     if ((s = isk_effect_set_threads(e, d->threads)) != ISK_OK) {
         isk_effect_destroy(e);
         return isk_error_set(err, s, "effect: cannot start its threads: %s", isk_status_str(s));
@@ -213,7 +213,7 @@ void isk_effect_destroy(isk_effect *e)
     free(e->pot_force);
     isk_sprite_cache_destroy(e->sprites);
     isk_texture_cache_destroy(e->textures);
-    fx_bins_free(&e->bins);
+    isk__fx_bins_free(&e->bins);
     isk__workers_free(&e->workers);
     isk_effect_def_free(&e->def);
     free(e);
@@ -281,7 +281,7 @@ void isk_effect_describe(const isk_effect *e, FILE *out)
     fprintf(out, ", dt %g s, %d substep%s of %s%s\n", d->dt, d->substeps, d->substeps == 1 ? "" : "s",
             isk_integrator_name(d->integrator), d->clear ? "" : ", trails");
     for (int gi = 0; gi < e->ngroups; gi++)
-        fx_describe_group(e, &e->groups[gi], out);
+        isk__fx_describe_group(e, &e->groups[gi], out);
     if (d->ndrawings)
         fprintf(out, "drawings (before the particles):\n");
     for (int i = 0; i < d->ndrawings; i++) {
@@ -294,7 +294,7 @@ void isk_effect_describe(const isk_effect *e, FILE *out)
         fprintf(out, ", %s, %s%s\n", isk_blend_names[g->blend], isk_units_names[g->pixels ? 1 : 0],
                 g->pixels ? "" : " units");
     }
-    fx_describe_settings(d, out);
+    isk__fx_describe_settings(d, out);
 }
 
 size_t isk_effect_particle_count(const isk_effect *e)

@@ -1,5 +1,5 @@
 /* SPDX-License-Identifier: MIT */
-/* The one rule every source's new particles follow (fx_adopt): explosions
+/* The one rule every source's new particles follow (isk__fx_adopt): explosions
  * (effect_group.c), stream births (effect_stream.c) and sub-emitters'
  * children (effect_events.c) all end here, so lifetimes, oscillation state
  * and looks are drawn the same way, in the same order. */
@@ -12,7 +12,7 @@
  * osc_random_phase the phase (the offset starts where the sine is, so the
  * first step moves the particle by the change only); last the looks
  * (angle, spin, size, colour: effect_looks.c). */
-void fx_adopt(isk_effect *e, fx_group *g, size_t from)
+void isk__fx_adopt(isk_effect *e, fx_group *g, size_t from)
 {
     const isk_emitter_def *em = g->def;
     isk_particles *p = &g->store;
@@ -31,5 +31,5 @@ void fx_adopt(isk_effect *e, fx_group *g, size_t from)
         }
     }
     /* last: the looks' draws come after every draw above (effect_looks.c) */
-    fx_looks_adopt(g, from);
+    isk__fx_looks_adopt(g, from);
 }

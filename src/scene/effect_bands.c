@@ -267,7 +267,7 @@ static int quantile_cuts(const int *v, int m, int nb, int n, int *cut)
  * scene settled on its floor has most of them on its last row, and a row
  * is never cut), cuts at the quantiles of the columns instead: returns 1
  * for columns, 0 for rows. */
-int fx_place_cuts(const isk_effect *e, const fx_group *g, const isk_canvas *c, int nb, int columns_may, int *cut)
+int isk__fx_place_cuts(const isk_effect *e, const fx_group *g, const isk_canvas *c, int nb, int columns_may, int *cut)
 {
     int xs[FX_BAND_SAMPLES], ys[FX_BAND_SAMPLES]; /* whole columns and rows */
     const isk_particles *p = &g->store;
@@ -316,7 +316,7 @@ static int grow(void **p, size_t *cap, size_t n, size_t size)
     return 1;
 }
 
-void fx_bins_free(fx_bins *b)
+void isk__fx_bins_free(fx_bins *b)
 {
     free(b->code);
     free(b->idx);
@@ -416,7 +416,7 @@ static int split_particles(band_job *j, const fx_band *whole, int threads)
     return 1;
 }
 
-fx_band fx_band_whole(const isk_canvas *c, const fx_group *g)
+fx_band isk__fx_band_whole(const isk_canvas *c, const fx_group *g)
 {
     return (fx_band){.r0 = 0, .r1 = c->height, .c0 = 0, .c1 = c->width, .first = 0, .end = g->store.count};
 }
@@ -451,7 +451,7 @@ static void replay_band(void *ctx, int worker, size_t item)
     }
     if (j->fill)
         isk_fill_rect(&own, b.c0, b.r0, w, b.r1 - b.r0, *j->fill, ISK_BLEND_REPLACE);
-    j->status[item] = fx_retain_replay(j->e, &own, j->g, &b);
+    j->status[item] = isk__fx_retain_replay(j->e, &own, j->g, &b);
     if (j->copy[item])
         copy_tile(j->c->pixels, own.pixels, j->c, b.r0, b.r1, b.c0, b.c1);
 }
@@ -479,7 +479,7 @@ static isk_status replay_bands(isk_effect *e, isk_canvas *c, fx_group *g, const 
             const fx_band b = retained_band(whole, rt, k);
             if (fill && rt->nb > 1)
                 isk_fill_rect(c, b.c0, b.r0, b.c1 - b.c0, b.r1 - b.r0, *fill, ISK_BLEND_REPLACE);
-            s = fx_retain_replay(e, c, g, &b);
+            s = isk__fx_retain_replay(e, c, g, &b);
         }
         return s;
     }
@@ -496,7 +496,7 @@ static isk_status replay_bands(isk_effect *e, isk_canvas *c, fx_group *g, const 
     return finish(j);
 }
 
-isk_status fx_draw_bands(isk_effect *e, isk_canvas *c, fx_group *g, const fx_draw_kind *k, const fx_band *whole,
+isk_status isk__fx_draw_bands(isk_effect *e, isk_canvas *c, fx_group *g, const fx_draw_kind *k, const fx_band *whole,
                          double units, const isk_color *fill)
 {
     if (!ISK__FAST_BANDS) { /* the reference: the group drawn whole */
@@ -505,7 +505,7 @@ isk_status fx_draw_bands(isk_effect *e, isk_canvas *c, fx_group *g, const fx_dra
         return k->draw(e, c, g, whole);
     }
     const int threads = isk__workers_count(&e->workers);
-    fx_retained *rt = ISK__FAST_RETAIN && (k->may & FX_MAY_RETAIN) ? fx_retain_begin(e, c, g, threads) : NULL;
+    fx_retained *rt = ISK__FAST_RETAIN && (k->may & FX_MAY_RETAIN) ? isk__fx_retain_begin(e, c, g, threads) : NULL;
     if (rt && rt->nb > 0) {
         rt->replays++;
         return replay_bands(e, c, g, whole, rt, fill);
@@ -523,18 +523,18 @@ isk_status fx_draw_bands(isk_effect *e, isk_canvas *c, fx_group *g, const fx_dra
             return k->draw(e, c, g, whole);
         fx_band one = *whole;
         one.index = 0;
-        const isk_status s = fx_retain_record(e, c, g, &one);
-        fx_retain_end(rt, &one, 1, 0);
+        const isk_status s = isk__fx_retain_record(e, c, g, &one);
+        isk__fx_retain_end(rt, &one, 1, 0);
         return s;
     }
     j->e = e;
     j->c = c;
     j->g = g;
     j->fill = fill;
-    j->draw = rt ? fx_retain_record : k->draw;
+    j->draw = rt ? isk__fx_retain_record : k->draw;
     j->reach = k->reach;
     int cut[ISK_TASKS_MAX_WORKERS + 1];
-    const int columns = fx_place_cuts(e, g, c, threads, (k->may & FX_MAY_COLUMNS) != 0, cut);
+    const int columns = isk__fx_place_cuts(e, g, c, threads, (k->may & FX_MAY_COLUMNS) != 0, cut);
     /* an additive group is split where its bands would be columns (which
      * draw in copies of the canvas anyway, and each scan the whole store;
      * docs/performance.md has the measures); not while its blends are
@@ -568,6 +568,6 @@ isk_status fx_draw_bands(isk_effect *e, isk_canvas *c, fx_group *g, const fx_dra
         give_copies(j);
     isk__workers_for(&e->workers, (size_t)j->nb, 2, run_band, j);
     if (rt)
-        fx_retain_end(rt, j->band, j->nb, columns);
+        isk__fx_retain_end(rt, j->band, j->nb, columns);
     return finish(j);
 }

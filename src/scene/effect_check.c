@@ -195,7 +195,7 @@ static isk_status check_emitter(ctx *c)
      * a stream's own, and a sub-emitter's, which runs as long as the
      * longest prewarm of the emitters that feed it. */
     double frames[ISK_EFFECT_MAX_EMITTERS];
-    fx_prewarm_offsets(d, frames);
+    isk__fx_prewarm_offsets(d, frames);
     const double steps = frames[c->index] * (double)(e->motion.substeps ? e->motion.substeps : d->substeps);
     if (frames[c->index] > 0 && !(steps <= ISK_PREWARM_MAX_STEPS)) {
         if (e->born.source == ISK_SOURCE_SUB)
@@ -207,7 +207,7 @@ static isk_status check_emitter(ctx *c)
                        e->born.prewarm, steps, d->dt, ISK_PREWARM_MAX_STEPS);
     }
     char why[200];
-    const char *looks = fx_looks_check(e, why, sizeof why);
+    const char *looks = isk__fx_looks_check(e, why, sizeof why);
     if (looks)
         return bad_key(c, looks, "%s", why);
     isk_status se = check_sub_emitters(c, e);
@@ -265,13 +265,13 @@ static const section_check section_checks[ISK_SECTION_COUNT] = {
 
 /* ---- the whole item, the whole definition ---------------------------------------- */
 
-isk_status fx_check_item(const isk_effect_def *d, isk_section_kind s, int index, int rows, fx_report *r)
+isk_status isk__fx_check_item(const isk_effect_def *d, isk_section_kind s, int index, int rows, fx_report *r)
 {
     ctx c = {d, s, index, r};
-    const void *item = fx_section_item_c(d, s, index);
+    const void *item = isk__fx_section_item_c(d, s, index);
     if (!item)
         return bad_item(&c, NULL, "no such item");
-    const int kind = fx_item_kind(d, s, index);
+    const int kind = isk__fx_item_kind(d, s, index);
     int nkinds = 0;
     isk_section_kind_names(s, &nkinds);
     if (nkinds && (kind < 0 || kind >= nkinds))
@@ -279,7 +279,7 @@ isk_status fx_check_item(const isk_effect_def *d, isk_section_kind s, int index,
     for (int i = 0; rows && i < isk_key_count(); i++) {
         const isk_key *k = isk_key_at(i);
         char why[300];
-        if (k->section == s && fx_key_applies(k, kind) && fx_key_check(k, item, d, why, sizeof why) != 0)
+        if (k->section == s && isk__fx_key_applies(k, kind) && isk__fx_key_check(k, item, d, why, sizeof why) != 0)
             return bad_key(&c, k->name, "%s", why);
     }
     return section_checks[s] ? section_checks[s](&c) : ISK_OK;
@@ -287,11 +287,11 @@ isk_status fx_check_item(const isk_effect_def *d, isk_section_kind s, int index,
 
 static isk_status unique_names(const isk_effect_def *d, isk_section_kind s, fx_report *r)
 {
-    int n = fx_section_items(d, s);
+    int n = isk__fx_section_items(d, s);
     for (int i = 0; i < n; i++) {
-        const char *a = fx_item_name(d, s, i);
+        const char *a = isk__fx_item_name(d, s, i);
         for (int j = 0; *a && j < i; j++)
-            if (!strcmp(a, fx_item_name(d, s, j))) {
+            if (!strcmp(a, isk__fx_item_name(d, s, j))) {
                 ctx c = {d, s, i, r};
                 return bad_item(&c, NULL, "a second %s named '%s'", isk_section_name(s), a);
             }
@@ -340,12 +340,12 @@ static isk_status memory_fits(const isk_effect_def *d, fx_report *r)
             int taken = 0;
             for (int j = 0; j < nshown; j++)
                 taken |= shown[j] == i;
-            if (!taken && (best < 0 || fx_emitter_memory(&d->emitters[i]) > fx_emitter_memory(&d->emitters[best])))
+            if (!taken && (best < 0 || isk__fx_emitter_memory(&d->emitters[i]) > isk__fx_emitter_memory(&d->emitters[best])))
                 best = i;
         }
         shown[nshown++] = best;
         char e[40];
-        bytes_text(fx_emitter_memory(&d->emitters[best]), e, sizeof e);
+        bytes_text(isk__fx_emitter_memory(&d->emitters[best]), e, sizeof e);
         used += (size_t)snprintf(msg + used, used < sizeof msg ? sizeof msg - used : 0, "%s'%s' %s", k ? ", " : "",
                                  d->emitters[best].name, e);
     }
@@ -356,7 +356,7 @@ static isk_status memory_fits(const isk_effect_def *d, fx_report *r)
     return structure_fails(d, r, ISK_ERR_SIZE, msg);
 }
 
-isk_status fx_check_def(const isk_effect_def *d, fx_report *r)
+isk_status isk__fx_check_def(const isk_effect_def *d, fx_report *r)
 {
     if (d->nforces < 0 || d->nforces > ISK_EFFECT_MAX_FORCES || d->nemitters < 0 ||
         d->nemitters > ISK_EFFECT_MAX_EMITTERS || d->ndeflectors < 0 || d->ndeflectors > ISK_EFFECT_MAX_DEFLECTORS ||
@@ -370,15 +370,15 @@ isk_status fx_check_def(const isk_effect_def *d, fx_report *r)
         (d->ndrawings && !d->drawings))
         return structure_fails(d, r, ISK_ERR_NULL, "a count is set but its array is NULL");
     char why[sizeof(((isk_error *)0)->message)];
-    isk_status ts = fx_def_textures_check(d, why, sizeof why);
+    isk_status ts = isk__fx_def_textures_check(d, why, sizeof why);
     if (ts != ISK_OK)
         return structure_fails(d, r, ts, why);
     if (d->threads < 0 || d->threads > 256)
         return structure_fails(d, r, ISK_ERR_RANGE, "threads must be 0 (the default) .. 256");
     for (int s = 0; s < ISK_SECTION_COUNT; s++) {
         isk_status st = unique_names(d, (isk_section_kind)s, r);
-        for (int i = 0; st == ISK_OK && i < fx_section_items(d, (isk_section_kind)s); i++)
-            st = fx_check_item(d, (isk_section_kind)s, i, 1, r);
+        for (int i = 0; st == ISK_OK && i < isk__fx_section_items(d, (isk_section_kind)s); i++)
+            st = isk__fx_check_item(d, (isk_section_kind)s, i, 1, r);
         if (st != ISK_OK)
             return st;
     }
@@ -401,20 +401,20 @@ static void create_emit(fx_report *r, isk_status s, isk_section_kind section, in
     const create_report *cr = (const create_report *)r;
     const isk_effect_def *d = cr->d;
     char where[32] = "";
-    int line = fx_item_line(d, section, index);
+    int line = isk__fx_item_line(d, section, index);
     if (line > 0)
         snprintf(where, sizeof where, " (line %d)", line);
     const char *sec = isk_section_name(section);
     if (isk_section_named(section))
-        isk_error_set(cr->err, s, "%s '%s'%s: %s%s%s", sec, fx_item_name(d, section, index), where,
+        isk_error_set(cr->err, s, "%s '%s'%s: %s%s%s", sec, isk__fx_item_name(d, section, index), where,
                       key && show_key ? key : "", key && show_key ? ": " : "", msg);
     else
         isk_error_set(cr->err, s, "%s%s: %s%s%s", sec, where, key && show_key ? key : "",
                       key && show_key ? ": " : "", msg);
 }
 
-isk_status fx_check(const isk_effect_def *d, isk_error *err)
+isk_status isk__fx_check(const isk_effect_def *d, isk_error *err)
 {
     create_report cr = {{create_emit, NULL, ISK_OK}, d, err};
-    return fx_check_def(d, &cr.r);
+    return isk__fx_check_def(d, &cr.r);
 }

@@ -28,10 +28,10 @@ struct fx_report {
 
 /* Checks one item: its fields against their rows (with `rows`), then what
  * spans fields.  ISK_OK, or the first failure's status after reporting it. */
-isk_status fx_check_item(const isk_effect_def *d, isk_section_kind s, int index, int rows, fx_report *r);
+isk_status isk__fx_check_item(const isk_effect_def *d, isk_section_kind s, int index, int rows, fx_report *r);
 
 /* The whole definition: structure (counts, arrays, unique names), then
  * every item with its rows. */
-isk_status fx_check_def(const isk_effect_def *d, fx_report *r);
+isk_status isk__fx_check_def(const isk_effect_def *d, fx_report *r);
 
 #endif

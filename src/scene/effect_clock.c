@@ -4,11 +4,11 @@
  * reads it here, so none of them calls back into the frame loop. */
 #include "effect_internal.h"
 
-double fx_clock_at(const fx_clock *c, long frame) { return c->t0 + (double)(frame - c->f0) * c->step; }
+double isk__fx_clock_at(const fx_clock *c, long frame) { return c->t0 + (double)(frame - c->f0) * c->step; }
 
-double fx_group_time(const isk_effect *e, const fx_group *g)
+double isk__fx_group_time(const isk_effect *e, const fx_group *g)
 {
-    return fx_clock_at(&g->clock, e->frame + g->frame_offset);
+    return isk__fx_clock_at(&g->clock, e->frame + g->frame_offset);
 }
 
-int fx_group_started(const isk_effect *e, const fx_group *g) { return e->frame + g->frame_offset >= 0; }
+int isk__fx_group_started(const isk_effect *e, const fx_group *g) { return e->frame + g->frame_offset >= 0; }

@@ -94,7 +94,7 @@ static void osc_params(isk_stage_osc *o, isk_effect *e, const isk_emitter_def *e
 
 #define ADD(kind) ((st = isk__pipeline_add(&g->pipeline, &(kind))) != NULL)
 
-isk_status fx_compile(isk_effect *e, fx_group *g)
+isk_status isk__fx_compile(isk_effect *e, fx_group *g)
 {
     const isk_effect_def *d = &e->def;
     const isk_emitter_def *em = g->def;
@@ -105,7 +105,7 @@ isk_status fx_compile(isk_effect *e, fx_group *g)
     /* A recompiled list may differ in anything: what rested is forgotten. */
     g->rests = 0;
     isk__rest_forget(&g->rest, 0);
-    fx_retain_clear(&g->retained);
+    isk__fx_retain_clear(&g->retained);
     gather_forces(e, g);
     g->integrator = em->motion.integrator == ISK_INTEGRATE_INHERIT ? d->integrator : em->motion.integrator;
     g->substeps = em->motion.substeps ? em->motion.substeps : d->substeps;
@@ -133,10 +133,10 @@ isk_status fx_compile(isk_effect *e, fx_group *g)
     g->keep_on_canvas = walls && d->bounds.mode == ISK_BOUNCE_REFLECT;
 
     if (walls && em->motion.draw_before_bounce)
-        g->frame_start[g->nframe_start++] = &fx_step_late_walls;
+        g->frame_start[g->nframe_start++] = &isk__fx_step_late_walls;
     if (em->born.source == ISK_SOURCE_EXPLOSION &&
         (em->born.start > 0 || em->born.explosion == ISK_EXPLOSION_MULTI_COULOMB))
-        g->frame_start[g->nframe_start++] = &fx_step_release;
+        g->frame_start[g->nframe_start++] = &isk__fx_step_release;
 
     if ((g->has_field = gather_field(e, g)) != 0) {
         if (!ADD(isk__stage_field))
@@ -216,7 +216,7 @@ isk_status fx_compile(isk_effect *e, fx_group *g)
         st->u.deflect.drag = f->drag;
         st->u.deflect.hit = em->events.on_hit >= 0;
     }
-    if (g->store.angle && fx_looks_spins(em)) {
+    if (g->store.angle && isk__fx_looks_spins(em)) {
         if (!ADD(isk__stage_spin))
             return ISK_ERR_FULL;
         st->u.spin.spin = em->look.spin;
@@ -250,26 +250,26 @@ isk_status fx_compile(isk_effect *e, fx_group *g)
         return ISK_ERR_FULL;
 
     if (em->born.source == ISK_SOURCE_STREAM && em->born.space == ISK_SPACE_LOCAL)
-        g->substep_end[g->nsubstep_end++] = &fx_step_carry;
+        g->substep_end[g->nsubstep_end++] = &isk__fx_step_carry;
     if (em->born.source == ISK_SOURCE_STREAM)
-        g->substep_end[g->nsubstep_end++] = &fx_step_spawn;
+        g->substep_end[g->nsubstep_end++] = &isk__fx_step_spawn;
     if (em->events.on_hit >= 0 && (walls || g->ndefl)) /* sub-emitters (effect_events.c) */
-        g->substep_end[g->nsubstep_end++] = &fx_step_hits;
+        g->substep_end[g->nsubstep_end++] = &isk__fx_step_hits;
     if (mortal)
-        g->substep_end[g->nsubstep_end++] = &fx_step_cull;
+        g->substep_end[g->nsubstep_end++] = &isk__fx_step_cull;
     /* Blocks rest when the pipeline's stages allow it and nothing else moves
      * the group's particles: no step at the frame's start (the late walls,
      * the releases) and no carry with the emitter. */
     g->rests = isk__pipeline_rest_prefix(&g->pipeline) > 0 && g->nframe_start == 0 &&
                !(em->born.source == ISK_SOURCE_STREAM && em->born.space == ISK_SPACE_LOCAL);
-    g->draw = fx_choose_draw(g);
+    g->draw = isk__fx_choose_draw(g);
     return ISK_OK;
 }
 
-isk_status fx_compile_all(isk_effect *e)
+isk_status isk__fx_compile_all(isk_effect *e)
 {
     for (int i = 0; i < e->ngroups; i++) {
-        isk_status s = fx_compile(e, &e->groups[i]);
+        isk_status s = isk__fx_compile(e, &e->groups[i]);
         if (s != ISK_OK)
             return s;
     }
@@ -285,7 +285,7 @@ static void describe_steps(const isk_effect *e, const fx_group *g, const fx_step
     }
 }
 
-void fx_describe_group(const isk_effect *e, const fx_group *g, FILE *out)
+void isk__fx_describe_group(const isk_effect *e, const fx_group *g, FILE *out)
 {
     const isk_emitter_def *em = g->def;
     fprintf(out, "emitter %s (%s, %zu particles, %d substep%s of %s):\n", em->name, isk_source_names[em->born.source],
@@ -307,7 +307,7 @@ void fx_describe_group(const isk_effect *e, const fx_group *g, FILE *out)
         fprintf(out, "  draw      %s, %s%s%s%s\n", isk_draw_mode_names[em->look.draw], isk_blend_name(em->look.blend),
                 g->has_color_ramp ? ", colour over life" : "", g->has_alpha_ramp ? ", alpha over life" : "",
                 g->has_size_ramp ? ", size over life" : "");
-    fx_looks_describe(g, out);
+    isk__fx_looks_describe(g, out);
     if (em->look.trail > 0)
         fprintf(out, "  trail     the last %d positions, %g px wide, fade %g (drawn first)\n", em->look.trail,
                 em->look.trail_width, em->look.trail_fade);

@@ -18,10 +18,10 @@ void isk_effect_def_init(isk_effect_def *d)
     if (!d)
         return;
     memset(d, 0, sizeof *d);
-    fx_section_defaults(ISK_SECTION_SCENE, d);
-    fx_section_defaults(ISK_SECTION_VIEW, d);
-    fx_section_defaults(ISK_SECTION_BOUNDS, &d->bounds);
-    fx_section_defaults(ISK_SECTION_CLICK, &d->click);
+    isk__fx_section_defaults(ISK_SECTION_SCENE, d);
+    isk__fx_section_defaults(ISK_SECTION_VIEW, d);
+    isk__fx_section_defaults(ISK_SECTION_BOUNDS, &d->bounds);
+    isk__fx_section_defaults(ISK_SECTION_CLICK, &d->click);
     d->view_kind = ISK_VIEWDEF_WINDOW;
 }
 
@@ -31,7 +31,7 @@ void isk_effect_def_free(isk_effect_def *d)
         return;
     for (int i = 0; d->drawings && i < d->ndrawings; i++)
         free(d->drawings[i].points);
-    fx_def_textures_free(d);
+    isk__fx_def_textures_free(d);
     free(d->forces);
     free(d->deflectors);
     free(d->emitters);
@@ -66,10 +66,10 @@ int isk_effect_def_add_force(isk_effect_def *d, const char *name, isk_force_kind
     isk_force_def *f = grow((void **)&d->forces, &d->nforces, ISK_EFFECT_MAX_FORCES, sizeof *f);
     if (!f)
         return -1;
-    fx_section_defaults(ISK_SECTION_FORCE, f);
+    isk__fx_section_defaults(ISK_SECTION_FORCE, f);
     set_name(f->name, name);
     f->kind = kind;
-    fx_force_sync(f);
+    isk__fx_force_sync(f);
     return d->nforces - 1;
 }
 
@@ -80,7 +80,7 @@ int isk_effect_def_add_deflector(isk_effect_def *d, const char *name, isk_deflec
     isk_deflector_def *g = grow((void **)&d->deflectors, &d->ndeflectors, ISK_EFFECT_MAX_DEFLECTORS, sizeof *g);
     if (!g)
         return -1;
-    fx_section_defaults(ISK_SECTION_DEFLECTOR, g); /* show, color */
+    isk__fx_section_defaults(ISK_SECTION_DEFLECTOR, g); /* show, color */
     set_name(g->name, name);
     g->seg = seg;
     return d->ndeflectors - 1;
@@ -93,7 +93,7 @@ isk_emitter_def *isk_effect_def_add_emitter(isk_effect_def *d, const char *name)
     isk_emitter_def *e = grow((void **)&d->emitters, &d->nemitters, ISK_EFFECT_MAX_EMITTERS, sizeof *e);
     if (!e)
         return NULL;
-    fx_section_defaults(ISK_SECTION_EMITTER, e);
+    isk__fx_section_defaults(ISK_SECTION_EMITTER, e);
     set_name(e->name, name);
     e->look.order = d->nemitters - 1;
     return e;
@@ -106,21 +106,21 @@ isk_drawing_def *isk_effect_def_add_drawing(isk_effect_def *d, const char *name,
     isk_drawing_def *s = grow((void **)&d->drawings, &d->ndrawings, ISK_EFFECT_MAX_DRAWINGS, sizeof *s);
     if (!s)
         return NULL;
-    fx_section_defaults(ISK_SECTION_DRAWING, s);
+    isk__fx_section_defaults(ISK_SECTION_DRAWING, s);
     set_name(s->name, name);
     s->kind = kind;
     return s;
 }
 
-int fx_emitter_oscillates(const isk_emitter_def *em)
+int isk__fx_emitter_oscillates(const isk_emitter_def *em)
 {
     return em->motion.osc_amplitude_max > 0 && em->motion.osc_omega_max != 0;
 }
 
 /* What one emitter's pool takes at its fullest. */
-size_t fx_emitter_memory(const isk_emitter_def *e)
+size_t isk__fx_emitter_memory(const isk_emitter_def *e)
 {
-    unsigned flags = (fx_emitter_oscillates(e) ? ISK_PARTICLES_OSC : 0) | fx_looks_columns(e);
+    unsigned flags = (isk__fx_emitter_oscillates(e) ? ISK_PARTICLES_OSC : 0) | isk__fx_looks_columns(e);
     /* sub-emitters and trails: the hit and trail columns, a sub-emitter's waiting events */
     flags |= (e->events.on_hit >= 0 ? ISK_PARTICLES_HIT : 0) | (e->look.trail > 0 ? ISK_PARTICLES_TRAIL : 0);
     size_t b = isk_particles_bytes_trail(e->born.capacity, flags,
@@ -140,13 +140,13 @@ size_t isk_effect_def_memory(const isk_effect_def *d)
      * small and bounded; the pools are what grows. */
     size_t total = sizeof(isk_effect_def) + ((size_t)1 << 20);
     for (int i = 0; d->emitters && i < d->nemitters; i++) {
-        size_t b = fx_emitter_memory(&d->emitters[i]);
+        size_t b = isk__fx_emitter_memory(&d->emitters[i]);
         total = b > SIZE_MAX - total ? SIZE_MAX : total + b;
     }
     return total;
 }
 
-void fx_force_sync(isk_force_def *f)
+void isk__fx_force_sync(isk_force_def *f)
 {
     if (isk_potential_set_law(&f->pot, f->law, f->exponent) != ISK_OK)
         f->pot.P = f->exponent; /* an unknown law is the check's to report */
@@ -219,7 +219,7 @@ static void *dup_array(const void *src, size_t n, size_t size, int *ok)
     return p;
 }
 
-isk_status fx_def_copy(isk_effect_def *dst, const isk_effect_def *src)
+isk_status isk__fx_def_copy(isk_effect_def *dst, const isk_effect_def *src)
 {
     int ok = 1;
     *dst = *src;
@@ -234,7 +234,7 @@ isk_status fx_def_copy(isk_effect_def *dst, const isk_effect_def *src)
     for (int i = 0; ok && dst->drawings && i < dst->ndrawings; i++)
         dst->drawings[i].points = dup_array(src->drawings[i].points, (size_t)src->drawings[i].npoints * 2,
                                             sizeof(double), &ok);
-    if (fx_def_textures_copy(dst, src) != ISK_OK) /* none shared either way */
+    if (isk__fx_def_textures_copy(dst, src) != ISK_OK) /* none shared either way */
         ok = 0;
     if (!ok) {
         if (!dst->drawings)

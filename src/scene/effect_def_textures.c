@@ -70,7 +70,7 @@ isk_status isk_effect_def_add_texture(isk_effect_def *d, const char *name, const
     return ISK_OK;
 }
 
-isk_status fx_def_textures_check(const isk_effect_def *d, char *why, size_t n)
+isk_status isk__fx_def_textures_check(const isk_effect_def *d, char *why, size_t n)
 {
     if (d->ntextures < 0 || d->ntextures > ISK_EFFECT_MAX_TEXTURES) {
         snprintf(why, n, "at most %d textures", ISK_EFFECT_MAX_TEXTURES);
@@ -96,7 +96,7 @@ isk_status fx_def_textures_check(const isk_effect_def *d, char *why, size_t n)
     return ISK_OK;
 }
 
-isk_status fx_def_textures_copy(isk_effect_def *dst, const isk_effect_def *src)
+isk_status isk__fx_def_textures_copy(isk_effect_def *dst, const isk_effect_def *src)
 {
     dst->textures = NULL;
     dst->ntextures = 0;
@@ -113,7 +113,7 @@ isk_status fx_def_textures_copy(isk_effect_def *dst, const isk_effect_def *src)
     return ISK_OK;
 }
 
-void fx_def_textures_free(isk_effect_def *d)
+void isk__fx_def_textures_free(isk_effect_def *d)
 {
     for (int i = 0; d->textures && i < d->ntextures; i++)
         isk_canvas_free(&d->textures[i].pixels);

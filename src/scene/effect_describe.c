@@ -11,15 +11,15 @@
  * emitter, no sub-emitter) is shown as its default in words. */
 static void item_keys(const isk_effect_def *d, isk_section_kind s, int index, FILE *out)
 {
-    const void *item = fx_section_item_c(d, s, index);
-    const int kind = fx_item_kind(d, s, index);
+    const void *item = isk__fx_section_item_c(d, s, index);
+    const int kind = isk__fx_item_kind(d, s, index);
     int first = 1;
     for (int i = 0; i < isk_key_count(); i++) {
         const isk_key *k = isk_key_at(i);
-        if (k->section != s || k->directive || !fx_key_applies(k, kind))
+        if (k->section != s || k->directive || !isk__fx_key_applies(k, kind))
             continue;
         char value[512];
-        if (fx_key_format(k, item, d, value, sizeof value) != ISK_OK)
+        if (isk__fx_key_format(k, item, d, value, sizeof value) != ISK_OK)
             snprintf(value, sizeof value, "(too long to show)");
         else if (!value[0])
             isk_key_default_text(k, value, sizeof value);
@@ -29,7 +29,7 @@ static void item_keys(const isk_effect_def *d, isk_section_kind s, int index, FI
     fputc('\n', out);
 }
 
-void fx_describe_settings(const isk_effect_def *d, FILE *out)
+void isk__fx_describe_settings(const isk_effect_def *d, FILE *out)
 {
     fprintf(out, "[scene] ");
     item_keys(d, ISK_SECTION_SCENE, 0, out);

@@ -2,7 +2,7 @@
 /* src/scene/effect_describe.h — the parts of isk_effect_describe that are
  * the scene's settings rather than its pipeline (internal).
  *
- * fx_describe_settings prints, after the pipeline and the drawings, every
+ * isk__fx_describe_settings prints, after the pipeline and the drawings, every
  * key of [scene], of [bounds] (when it has walls), of each
  * [deflector NAME] and of [click] (when clicks or a click at the start are
  * on) as "key = value", formatted by the key table, so describe shows what
@@ -15,6 +15,6 @@
 
 #include "iskra/effect.h"
 
-void fx_describe_settings(const isk_effect_def *d, FILE *out);
+void isk__fx_describe_settings(const isk_effect_def *d, FILE *out);
 
 #endif

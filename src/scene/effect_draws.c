@@ -16,7 +16,7 @@
 #include "raster/sprite_rows.h"
 #include "view/world_batch.h"
 
-isk_status fx_bake_ramps(fx_group *g, isk_error *err)
+isk_status isk__fx_bake_ramps(fx_group *g, isk_error *err)
 {
     const isk_emitter_def *em = g->def;
     isk_status s = ISK_OK;
@@ -41,7 +41,7 @@ isk_status fx_bake_ramps(fx_group *g, isk_error *err)
     return ISK_OK;
 }
 
-void fx_free_ramps(fx_group *g)
+void isk__fx_free_ramps(fx_group *g)
 {
     if (g->has_color_ramp)
         isk_color_gradient_free(&g->color_ramp);
@@ -74,7 +74,7 @@ static inline isk_color particle_color(const fx_group *g, const isk_particles *p
     return col;
 }
 
-int fx_varies(const fx_group *g)
+int isk__fx_varies(const fx_group *g)
 {
     return g->has_color_ramp || g->has_alpha_ramp || g->has_size_ramp || g->store.color;
 }
@@ -91,15 +91,15 @@ static inline isk_color style(const fx_group *g, const isk_particles *p, size_t 
 }
 
 /* style() for effect_texture.c (the draws here keep the inline one). */
-isk_color fx_style(const fx_group *g, const isk_particles *p, size_t i, int vary, double *mult)
+isk_color isk__fx_style(const fx_group *g, const isk_particles *p, size_t i, int vary, double *mult)
 {
     return style(g, p, i, vary, mult);
 }
 
-isk_color fx_particle_color(const fx_group *g, size_t i) /* the trails' colour (effect_trail.c) */
+isk_color isk__fx_particle_color(const fx_group *g, size_t i) /* the trails' colour (effect_trail.c) */
 {
     double mult;
-    return style(g, &g->store, i, fx_varies(g), &mult);
+    return style(g, &g->store, i, isk__fx_varies(g), &mult);
 }
 
 /* ---- the groups' draws --------------------------------------------------
@@ -128,7 +128,7 @@ static isk_status draw_styled_dots(isk_effect *e, isk_canvas *c, fx_group *g, co
     const isk_particles *p = &g->store;
     const isk_blend blend = g->def->look.blend;
     const int browser = g->def->look.draw == ISK_DRAW_DOT_BROWSER;
-    const int vary = fx_varies(g);
+    const int vary = isk__fx_varies(g);
     const size_t n = b->list ? b->nlist : b->end;
     for (size_t k = b->list ? 0 : b->first; k < n; k++) {
         const size_t i = b->list ? b->list[k] : k;
@@ -143,7 +143,7 @@ static isk_status draw_styled_dots(isk_effect *e, isk_canvas *c, fx_group *g, co
     return ISK_OK;
 }
 
-unsigned fx_dots_rule(const fx_group *g)
+unsigned isk__fx_dots_rule(const fx_group *g)
 {
     const unsigned rule = g->def->look.draw == ISK_DRAW_DOT_BROWSER ? ISK__BATCH_DOT_BROWSER
                           : g->def->look.draw == ISK_DRAW_PIXEL     ? ISK__BATCH_PIXEL
@@ -160,7 +160,7 @@ static isk_status draw_dots(isk_effect *e, isk_canvas *c, fx_group *g, const fx_
 {
     if (!ISK__FAST_BATCH)
         return g->def->look.draw == ISK_DRAW_PIXEL ? draw_styled_pixels(e, c, g, b) : draw_styled_dots(e, c, g, b);
-    const unsigned rule = fx_dots_rule(g);
+    const unsigned rule = isk__fx_dots_rule(g);
     if (b->list)
         isk__draw_batch_list_rows(c, &e->view, b->list, b->nlist, g->store.x, g->store.y, g->def->look.color,
                                   g->def->look.blend, rule, b->r0, b->r1);
@@ -173,7 +173,7 @@ static isk_status draw_dots(isk_effect *e, isk_canvas *c, fx_group *g, const fx_
 static isk_status draw_styled_pixels(isk_effect *e, isk_canvas *c, fx_group *g, const fx_band *b)
 {
     const isk_particles *p = &g->store;
-    const int vary = fx_varies(g);
+    const int vary = isk__fx_varies(g);
     const size_t n = b->list ? b->nlist : b->end;
     for (size_t k = b->list ? 0 : b->first; k < n; k++) {
         const size_t i = b->list ? b->list[k] : k;
@@ -189,7 +189,7 @@ static isk_status draw_styled_pixels(isk_effect *e, isk_canvas *c, fx_group *g, 
 static isk_status draw_discs(isk_effect *e, isk_canvas *c, fx_group *g, const fx_band *b)
 {
     const isk_particles *p = &g->store;
-    const int vary = fx_varies(g);
+    const int vary = isk__fx_varies(g);
     const double scale = fabs(e->view.sx);
     for (size_t i = b->first; i < b->end; i++) {
         double X, Y, mult;
@@ -252,7 +252,7 @@ static isk_status prepare_sprites(isk_effect *e, fx_group *g, fx_band *b)
 static isk_status draw_sprites(isk_effect *e, isk_canvas *c, fx_group *g, const fx_band *b)
 {
     const isk_particles *p = &g->store;
-    const int vary = fx_varies(g);
+    const int vary = isk__fx_varies(g);
     const int tinted = g->has_color_ramp || g->has_alpha_ramp || p->color;
     const double scale = fabs(e->view.sx);
     /* a band's thread reads every particle: those whose sprite cannot reach
@@ -312,35 +312,35 @@ static isk_status draw_nothing(isk_effect *e, isk_canvas *c, fx_group *g, const 
  * the scheduler weighs against FX_BAND_MIN_WORK). */
 #define FX_ROWS (FX_MAY_BANDS | FX_MAY_SPLIT)
 
-const fx_draw_kind fx_kind_dots = {"dots", draw_dots, NULL, 1.0, ISK__DOT_REACH,
+const fx_draw_kind isk__fx_kind_dots = {"dots", draw_dots, NULL, 1.0, ISK__DOT_REACH,
                                    FX_ROWS | FX_MAY_SORT | FX_MAY_COLUMNS | FX_MAY_RETAIN};
-const fx_draw_kind fx_kind_browser_dots = {"browser dots", draw_dots, NULL, 1.0, ISK__DOT_REACH,
+const fx_draw_kind isk__fx_kind_browser_dots = {"browser dots", draw_dots, NULL, 1.0, ISK__DOT_REACH,
                                            FX_ROWS | FX_MAY_SORT | FX_MAY_COLUMNS};
 /* a third of a dot: a single pixel's bands gain least (every band scans
  * the store for a pixel's worth of work) */
-const fx_draw_kind fx_kind_pixels = {"pixels", draw_dots, NULL, 1.0 / 3.0, ISK__DOT_REACH,
+const fx_draw_kind isk__fx_kind_pixels = {"pixels", draw_dots, NULL, 1.0 / 3.0, ISK__DOT_REACH,
                                      FX_ROWS | FX_MAY_SORT | FX_MAY_COLUMNS};
 /* a screen transform, a style and a kernel call each: ten dots */
-const fx_draw_kind fx_kind_styled_dots = {"dots, a colour each", draw_styled_dots, NULL, 10.0, ISK__DOT_REACH,
+const fx_draw_kind isk__fx_kind_styled_dots = {"dots, a colour each", draw_styled_dots, NULL, 10.0, ISK__DOT_REACH,
                                           FX_ROWS | FX_MAY_SORT};
-const fx_draw_kind fx_kind_styled_pixels = {"pixels, a colour each", draw_styled_pixels, NULL, 10.0, ISK__DOT_REACH,
+const fx_draw_kind isk__fx_kind_styled_pixels = {"pixels, a colour each", draw_styled_pixels, NULL, 10.0, ISK__DOT_REACH,
                                             FX_ROWS | FX_MAY_SORT};
-const fx_draw_kind fx_kind_discs = {"discs", draw_discs, NULL, 10.0, 0, FX_ROWS};
-const fx_draw_kind fx_kind_sprites = {"sprites", draw_sprites, prepare_sprites, 10.0, 0, FX_ROWS};
-const fx_draw_kind fx_kind_textures = {"textures", fx_draw_textures, NULL, 10.0, 0, FX_ROWS};
-const fx_draw_kind fx_kind_nothing = {"nothing", draw_nothing, NULL, 0.0, 0, 0};
+const fx_draw_kind isk__fx_kind_discs = {"discs", draw_discs, NULL, 10.0, 0, FX_ROWS};
+const fx_draw_kind isk__fx_kind_sprites = {"sprites", draw_sprites, prepare_sprites, 10.0, 0, FX_ROWS};
+const fx_draw_kind isk__fx_kind_textures = {"textures", isk__fx_draw_textures, NULL, 10.0, 0, FX_ROWS};
+const fx_draw_kind isk__fx_kind_nothing = {"nothing", draw_nothing, NULL, 0.0, 0, 0};
 
-const fx_draw_kind *fx_choose_draw(const fx_group *g)
+const fx_draw_kind *isk__fx_choose_draw(const fx_group *g)
 {
-    const int vary = fx_varies(g);
+    const int vary = isk__fx_varies(g);
     if (g->texture && g->def->look.draw != ISK_DRAW_NONE)
-        return &fx_kind_textures; /* a texture or a streak (effect_texture.c) */
+        return &isk__fx_kind_textures; /* a texture or a streak (effect_texture.c) */
     switch (g->def->look.draw) {
-    case ISK_DRAW_DOT: return vary ? &fx_kind_styled_dots : &fx_kind_dots;
-    case ISK_DRAW_DOT_BROWSER: return vary ? &fx_kind_styled_dots : &fx_kind_browser_dots;
-    case ISK_DRAW_PIXEL: return vary ? &fx_kind_styled_pixels : &fx_kind_pixels;
-    case ISK_DRAW_DISC: return &fx_kind_discs;
-    case ISK_DRAW_SPRITE: return &fx_kind_sprites;
-    default: return &fx_kind_nothing;
+    case ISK_DRAW_DOT: return vary ? &isk__fx_kind_styled_dots : &isk__fx_kind_dots;
+    case ISK_DRAW_DOT_BROWSER: return vary ? &isk__fx_kind_styled_dots : &isk__fx_kind_browser_dots;
+    case ISK_DRAW_PIXEL: return vary ? &isk__fx_kind_styled_pixels : &isk__fx_kind_pixels;
+    case ISK_DRAW_DISC: return &isk__fx_kind_discs;
+    case ISK_DRAW_SPRITE: return &isk__fx_kind_sprites;
+    default: return &isk__fx_kind_nothing;
     }
 }

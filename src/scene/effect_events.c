@@ -39,7 +39,7 @@
 
 #include "effect_internal.h"
 
-isk_status fx_events_columns(fx_group *g)
+isk_status isk__fx_events_columns(fx_group *g)
 {
     const isk_emitter_def *em = g->def;
     isk_particles *p = &g->store;
@@ -51,7 +51,7 @@ isk_status fx_events_columns(fx_group *g)
     return s;
 }
 
-void fx_events_free(fx_group *g)
+void isk__fx_events_free(fx_group *g)
 {
     free(g->pending.ev);
     g->pending.ev = NULL;
@@ -87,7 +87,7 @@ static isk_status push(fx_group *c, const isk_particles *p, size_t i, double t)
     return ISK_OK;
 }
 
-isk_status fx_events_deaths(isk_effect *e, fx_group *g, double t)
+isk_status isk__fx_events_deaths(isk_effect *e, fx_group *g, double t)
 {
     const int to = g->def->events.on_death;
     if (to < 0 || to >= e->ngroups)
@@ -127,7 +127,7 @@ static void describe_hits(const isk_effect *e, const fx_group *g, FILE *out)
     fprintf(out, "bounces -> events of %s", e->def.emitters[g->def->events.on_hit].name);
 }
 
-const fx_step_kind fx_step_hits = {"hits", run_hits, describe_hits};
+const fx_step_kind isk__fx_step_hits = {"hits", run_hits, describe_hits};
 
 /* The children of one event: `count` of them, launched from the event's
  * position, with inherit times its velocity added to their launch. */
@@ -135,7 +135,7 @@ static isk_status release_group(isk_effect *e, fx_group *g)
 {
     const isk_emitter_def *em = g->def;
     fx_events *q = &g->pending;
-    fx_launcher l = fx_launcher_of(em);
+    fx_launcher l = isk__fx_launcher_of(em);
     for (size_t k = 0; k < q->n; k++) {
         const fx_event *ev = &q->ev[k];
         const size_t room = g->store.count < em->born.capacity ? em->born.capacity - g->store.count : 0;
@@ -145,7 +145,7 @@ static isk_status release_group(isk_effect *e, fx_group *g)
         }
         l.shape.cx = ev->x;
         l.shape.cy = ev->y;
-        double age = fx_group_time(e, g) - ev->t;
+        double age = isk__fx_group_time(e, g) - ev->t;
         if (!(age > 0))
             age = 0;
         const double dv[2] = {em->launch.inherit * ev->vx, em->launch.inherit * ev->vy};
@@ -154,7 +154,7 @@ static isk_status release_group(isk_effect *e, fx_group *g)
             g->dropped =
                 em->born.count - born > UINT64_MAX - g->dropped ? UINT64_MAX : g->dropped + (em->born.count - born);
         for (size_t j = 0; j < born; j++) {
-            isk_status s = fx_birth(e, g, &l, age, ev->t, em->launch.inherit > 0 ? dv : NULL);
+            isk_status s = isk__fx_birth(e, g, &l, age, ev->t, em->launch.inherit > 0 ? dv : NULL);
             if (s != ISK_OK) {
                 q->n = 0;
                 return s;
@@ -165,7 +165,7 @@ static isk_status release_group(isk_effect *e, fx_group *g)
     return ISK_OK;
 }
 
-isk_status fx_events_release(isk_effect *e)
+isk_status isk__fx_events_release(isk_effect *e)
 {
     for (int i = 0; i < e->ngroups; i++) {
         fx_group *g = &e->groups[i];

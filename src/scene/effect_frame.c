@@ -20,7 +20,7 @@
 static isk_status advance(isk_effect *e);
 
 /* Every clock at frame 0 of a frame length of `step`. */
-void fx_start_clocks(isk_effect *e, double step)
+void isk__fx_start_clocks(isk_effect *e, double step)
 {
     e->clock = (fx_clock){0.0, 0, step};
     for (int gi = 0; gi < e->ngroups; gi++)
@@ -33,30 +33,30 @@ void fx_start_clocks(isk_effect *e, double step)
  * clock goes on from where it is now at the new rate. */
 static void rebase_clocks(isk_effect *e, double step)
 {
-    e->clock = (fx_clock){fx_clock_at(&e->clock, e->frame), e->frame, step};
+    e->clock = (fx_clock){isk__fx_clock_at(&e->clock, e->frame), e->frame, step};
     for (int gi = 0; gi < e->ngroups; gi++) {
         fx_group *g = &e->groups[gi];
         const long f = e->frame + g->frame_offset;
-        g->clock = (fx_clock){fx_clock_at(&g->clock, f), f, step};
+        g->clock = (fx_clock){isk__fx_clock_at(&g->clock, f), f, step};
     }
 }
 
 /* prewarm: the whole effect, every group built, runs the frames before
  * frame 0 that its prewarmed emitters ask for.  An emitter prewarmed by n
  * frames starts n frames before frame 0 (its clock at 0 then), a
- * sub-emitter with the emitters that feed it (fx_prewarm_offsets); every
+ * sub-emitter with the emitters that feed it (isk__fx_prewarm_offsets); every
  * other group, and the potentials, start at frame 0, so they stand still
  * meanwhile.  The children of events are released and the trails recorded
  * after each of these frames, as after any other, so frame 0 of an effect
  * prewarmed by T holds what frame T/dt holds without it. */
-isk_status fx_prewarm(isk_effect *e)
+isk_status isk__fx_prewarm(isk_effect *e)
 {
     const isk_effect_def *d = &e->def;
     double *frames = calloc((size_t)(e->ngroups ? e->ngroups : 1), sizeof *frames);
     if (!frames)
         return ISK_ERR_NOMEM;
     long most = 0;
-    fx_prewarm_offsets(d, frames); /* each bounded by the check (iskra/limits.h) */
+    isk__fx_prewarm_offsets(d, frames); /* each bounded by the check (iskra/limits.h) */
     for (int gi = 0; gi < e->ngroups; gi++) {
         e->groups[gi].frame_offset = (long)frames[gi];
         if ((long)frames[gi] > most)
@@ -65,7 +65,7 @@ isk_status fx_prewarm(isk_effect *e)
     free(frames);
     isk_status s = ISK_OK;
     e->frame = -most;
-    e->time = fx_clock_at(&e->clock, e->frame);
+    e->time = isk__fx_clock_at(&e->clock, e->frame);
     while (s == ISK_OK && e->frame < 0)
         s = advance(e);
     return s;
@@ -103,11 +103,11 @@ static isk_status step_group(isk_effect *e, fx_group *g)
     const isk_effect_def *d = &e->def;
     const int N = g->substeps;
     const double h = d->dt / (double)N / d->speed_divisor;
-    const double time = fx_group_time(e, g); /* e->time unless a prewarm ran */
+    const double time = isk__fx_group_time(e, g); /* e->time unless a prewarm ran */
     isk_status s = run_steps(e, g, g->frame_start, g->nframe_start, time, h * (double)N);
     for (int j = 0; s == ISK_OK && j < N; j++) {
         if (g->has_field)
-            fx_field_clock(g, time + h * j);
+            isk__fx_field_clock(g, time + h * j);
         /* a multi-Coulomb explosion releases particles of the store as it goes */
         isk_rest *rest = g->rests && !g->mc_active && !e->no_rest ? &g->rest : NULL;
         if (!rest) /* every block steps: the states describe nothing after it */
@@ -158,7 +158,7 @@ static isk_status advance(isk_effect *e)
     size_t total = 0;
     for (int gi = 0; gi < e->ngroups; gi++) {
         fx_group *g = &e->groups[gi];
-        if (!fx_group_started(e, g))
+        if (!isk__fx_group_started(e, g))
             continue;
         isk_status s = step_group(e, g);
         if (s != ISK_OK)
@@ -167,21 +167,21 @@ static isk_status advance(isk_effect *e)
     }
     for (int gi = 0; gi < e->ngroups; gi++)
         if (lost_a_potential(e, &e->groups[gi])) {
-            isk_status s = fx_compile(e, &e->groups[gi]);
+            isk_status s = isk__fx_compile(e, &e->groups[gi]);
             if (s != ISK_OK)
                 return s;
         }
     e->frame++;
-    e->time = fx_clock_at(&e->clock, e->frame);
+    e->time = isk__fx_clock_at(&e->clock, e->frame);
     /* The thesis's h stays unassigned when there are no particles: then its
      * potentials do not move. */
     if (started)
         e->last_frame_time = total ? frame_time : 0.0;
     /* sub-emitters' children, then the trails' newest points */
-    isk_status se = fx_events_release(e);
+    isk_status se = isk__fx_events_release(e);
     if (se != ISK_OK)
         return se;
-    fx_trail_record(e, stepped);
+    isk__fx_trail_record(e, stepped);
     if (d->click.at_start && d->click.after_frames > 0 && e->frame == d->click.after_frames)
         return isk_effect_click(e, d->click.x, d->click.y);
     return ISK_OK;
@@ -224,7 +224,7 @@ isk_status isk_effect_render(isk_effect *e, isk_canvas *c)
         return ISK_ERR_NULL;
     if (c->width != e->def.width || c->height != e->def.height)
         return ISK_ERR_SIZE;
-    return fx_render(e, c);
+    return isk__fx_render(e, c);
 }
 
 isk_status isk_effect_click(isk_effect *e, double x, double y)
@@ -238,5 +238,5 @@ isk_status isk_effect_click(isk_effect *e, double x, double y)
         return ISK_OK;
     int gi = d->click.emitter >= 0 ? d->click.emitter : 0;
     fx_group *g = &e->groups[gi];
-    return fx_fire_explosion(e, g, d->click.explosion, x, y, d->click.count, g->def->born.kick);
+    return isk__fx_fire_explosion(e, g, d->click.explosion, x, y, d->click.count, g->def->born.kick);
 }

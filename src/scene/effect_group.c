@@ -1,7 +1,7 @@
 /* SPDX-License-Identifier: MIT */
 /* Births and deaths of a group's particles: the thesis's explosions (at
  * create, timed, scheduled or clicked), and the frame-level stages that
- * release and cull them.  Every source's new particles go through fx_adopt
+ * release and cull them.  Every source's new particles go through isk__fx_adopt
  * (effect_adopt.c), so lifetimes and oscillation state follow one rule.
  * Stream births are effect_stream.c's; what exists at time 0 is effect.c's
  * (populate). */
@@ -10,14 +10,14 @@
 #include "effect_internal.h"
 #include "sim/store_internal.h"
 
-uint64_t fx_group_seed(uint64_t seed, int index)
+uint64_t isk__fx_group_seed(uint64_t seed, int index)
 {
     /* Emitter 0 uses the scene seed itself, so a one-emitter scene draws the
      * same numbers as a C program seeding one isk_system with that seed. */
     return seed + (uint64_t)index * 0x9E3779B97F4A7C15ull;
 }
 
-isk_status fx_fire_explosion(isk_effect *e, fx_group *g, isk_explosion kind, double cx, double cy, size_t count,
+isk_status isk__fx_fire_explosion(isk_effect *e, fx_group *g, isk_explosion kind, double cx, double cy, size_t count,
                              isk_kick_target kick)
 {
     const isk_emitter_def *em = g->def;
@@ -54,7 +54,7 @@ isk_status fx_fire_explosion(isk_effect *e, fx_group *g, isk_explosion kind, dou
     /* A Coulomb explosion that kicks every particle moves those at rest */
     isk__rest_forget(&g->rest, kind == ISK_EXPLOSION_COULOMB && kick == ISK_KICK_ALL ? 0 : before);
     if (s == ISK_OK)
-        fx_adopt(e, g, before);
+        isk__fx_adopt(e, g, before);
     return s;
 }
 
@@ -65,9 +65,9 @@ static isk_status run_release(isk_effect *e, fx_group *g, double t0, double h)
     (void)t0;
     (void)h;
     const isk_emitter_def *em = g->def;
-    if (em->born.source == ISK_SOURCE_EXPLOSION && !g->fired && fx_group_time(e, g) >= em->born.start) {
+    if (em->born.source == ISK_SOURCE_EXPLOSION && !g->fired && isk__fx_group_time(e, g) >= em->born.start) {
         g->fired = 1;
-        isk_status s = fx_fire_explosion(e, g, em->born.explosion, em->born.position.x, em->born.position.y,
+        isk_status s = isk__fx_fire_explosion(e, g, em->born.explosion, em->born.position.x, em->born.position.y,
                                          em->born.count, em->born.kick);
         if (s != ISK_OK)
             return s;
@@ -85,7 +85,7 @@ static isk_status run_release(isk_effect *e, fx_group *g, double t0, double h)
         isk_status s = isk_multi_coulomb_release(&g->mc, &g->store, &g->rng, NULL);
         if (s != ISK_OK)
             return s;
-        fx_adopt(e, g, before);
+        isk__fx_adopt(e, g, before);
     }
     return ISK_OK;
 }
@@ -98,7 +98,7 @@ static void describe_release(const isk_effect *e, const fx_group *g, FILE *out)
             em->born.start);
 }
 
-const fx_step_kind fx_step_release = {"release", run_release, describe_release};
+const fx_step_kind isk__fx_step_release = {"release", run_release, describe_release};
 
 /* draw_before_bounce: the thesis examples draw, then bounce, so the walls of
  * frame N run at the start of frame N + 1 (never before the first frame). */
@@ -117,12 +117,12 @@ static void describe_late_walls(const isk_effect *e, const fx_group *g, FILE *ou
     fprintf(out, "%s (after drawing: at the start of the next frame)", isk_bounce_mode_names[e->def.bounds.mode]);
 }
 
-const fx_step_kind fx_step_late_walls = {"walls", run_late_walls, describe_late_walls};
+const fx_step_kind isk__fx_step_late_walls = {"walls", run_late_walls, describe_late_walls};
 
 static isk_status run_cull(isk_effect *e, fx_group *g, double t0, double h)
 {
     if (g->def->events.on_death >= 0) { /* sub-emitters: the deaths as events first (effect_events.c) */
-        isk_status s = fx_events_deaths(e, g, t0 + h);
+        isk_status s = isk__fx_events_deaths(e, g, t0 + h);
         if (s != ISK_OK)
             return s;
     }
@@ -144,4 +144,4 @@ static void describe_cull(const isk_effect *e, const fx_group *g, FILE *out)
         fprintf(out, "; deaths -> events of %s", e->def.emitters[g->def->events.on_death].name);
 }
 
-const fx_step_kind fx_step_cull = {"cull", run_cull, describe_cull};
+const fx_step_kind isk__fx_step_cull = {"cull", run_cull, describe_cull};

@@ -19,7 +19,7 @@
  *   effect_check.c    validation of a definition
  *   effect_compile.c  definition -> lists, and describe
  *   effect_group.c    explosions, their release, the cull
- *   effect_adopt.c    births: every source's particles enter through fx_adopt
+ *   effect_adopt.c    births: every source's particles enter through isk__fx_adopt
  *   effect_clock.c    the time of a frame, a group's time
  *   effect_live.c     changes while running: isk_effect_set / get, potentials
  *   effect_stream.c   when a stream's particles are born
@@ -60,7 +60,7 @@ typedef struct fx_clock {
     long f0;
     double step;
 } fx_clock;
-double fx_clock_at(const fx_clock *c, long frame);
+double isk__fx_clock_at(const fx_clock *c, long frame);
 
 /* ---- sub-emitters and trails ----
  * An event waiting in a sub-emitter's group: where and how fast the parent
@@ -233,7 +233,7 @@ struct isk_effect {
                                       (split_particles) wherever bands would be cut, to check both */
     isk_sinlut sin_table;
     fx_clock clock;                /* the effect's simulated time at its frame */
-    double time;                   /* fx_clock_at(&clock, frame), kept current */
+    double time;                   /* isk__fx_clock_at(&clock, frame), kept current */
     long frame;                    /* frames stepped since create or reset (negative while prewarming) */
     double last_frame_time;        /* potentials move by this at the next step */
     isk_sprite_cache *sprites;
@@ -242,84 +242,84 @@ struct isk_effect {
 };
 
 /* effect_check.c: validates a whole definition; messages name the item. */
-isk_status fx_check(const isk_effect_def *d, isk_error *err);
+isk_status isk__fx_check(const isk_effect_def *d, isk_error *err);
 
 /* effect_def.c */
-isk_status fx_def_copy(isk_effect_def *dst, const isk_effect_def *src);
+isk_status isk__fx_def_copy(isk_effect_def *dst, const isk_effect_def *src);
 /* pot.P from the force's exponent and law. */
-void fx_force_sync(isk_force_def *f);
+void isk__fx_force_sync(isk_force_def *f);
 /* What one emitter's pool takes at its fullest (SIZE_MAX: more than can be). */
-size_t fx_emitter_memory(const isk_emitter_def *e);
+size_t isk__fx_emitter_memory(const isk_emitter_def *e);
 /* The emitter's particles sway (they need the store's oscillation columns). */
-int fx_emitter_oscillates(const isk_emitter_def *em);
+int isk__fx_emitter_oscillates(const isk_emitter_def *em);
 
 /* effect_def_textures.c: the definition's textures (isk_effect_def.textures),
  * checked, copied (dst's arrays are set: free with isk_effect_def_free
  * even on ISK_ERR_NOMEM), freed. */
-isk_status fx_def_textures_check(const isk_effect_def *d, char *why, size_t n);
-isk_status fx_def_textures_copy(isk_effect_def *dst, const isk_effect_def *src);
-void fx_def_textures_free(isk_effect_def *d);
+isk_status isk__fx_def_textures_check(const isk_effect_def *d, char *why, size_t n);
+isk_status isk__fx_def_textures_copy(isk_effect_def *dst, const isk_effect_def *src);
+void isk__fx_def_textures_free(isk_effect_def *d);
 
 /* effect.c */
-void fx_sort_draw_order(isk_effect *e);
+void isk__fx_sort_draw_order(isk_effect *e);
 
 /* effect_frame.c: every clock at frame 0 of a frame of `step` seconds;
  * the frames before frame 0 that the prewarmed emitters ask for, run on
  * the built effect. */
-void fx_start_clocks(isk_effect *e, double step);
-isk_status fx_prewarm(isk_effect *e);
+void isk__fx_start_clocks(isk_effect *e, double step);
+isk_status isk__fx_prewarm(isk_effect *e);
 
 /* effect_compile.c: (re)builds the group's lists from the definition and the
  * effect's live potentials; ISK_ERR_FULL if a list overflowed (a bug),
  * ISK_ERR_NOMEM if the group's segments could not grow. */
-isk_status fx_compile(isk_effect *e, fx_group *g);
-isk_status fx_compile_all(isk_effect *e);
-void fx_describe_group(const isk_effect *e, const fx_group *g, FILE *out);
+isk_status isk__fx_compile(isk_effect *e, fx_group *g);
+isk_status isk__fx_compile_all(isk_effect *e);
+void isk__fx_describe_group(const isk_effect *e, const fx_group *g, FILE *out);
 
 /* effect_group.c */
-uint64_t fx_group_seed(uint64_t seed, int index);
+uint64_t isk__fx_group_seed(uint64_t seed, int index);
 /* effect_adopt.c: new particles [from, count) take the emitter's lifetime,
  * then their oscillation state: every source's particles go through here. */
-void fx_adopt(isk_effect *e, fx_group *g, size_t from);
-isk_status fx_fire_explosion(isk_effect *e, fx_group *g, isk_explosion kind, double cx, double cy, size_t count,
+void isk__fx_adopt(isk_effect *e, fx_group *g, size_t from);
+isk_status isk__fx_fire_explosion(isk_effect *e, fx_group *g, isk_explosion kind, double cx, double cy, size_t count,
                              isk_kick_target kick);
-extern const fx_step_kind fx_step_release;    /* frame start: timed and scheduled explosions */
-extern const fx_step_kind fx_step_late_walls; /* frame start: draw_before_bounce's walls */
-extern const fx_step_kind fx_step_cull;       /* substep end: age >= life */
+extern const fx_step_kind isk__fx_step_release;    /* frame start: timed and scheduled explosions */
+extern const fx_step_kind isk__fx_step_late_walls; /* frame start: draw_before_bounce's walls */
+extern const fx_step_kind isk__fx_step_cull;       /* substep end: age >= life */
 
 /* effect_stream.c */
-void fx_stream_reset(fx_group *g, double time);
-extern const fx_step_kind fx_step_spawn;      /* substep end: births in (t0, t0 + h] */
-extern const fx_step_kind fx_step_carry;      /* substep end, before spawn: local space */
+void isk__fx_stream_reset(fx_group *g, double time);
+extern const fx_step_kind isk__fx_step_spawn;      /* substep end: births in (t0, t0 + h] */
+extern const fx_step_kind isk__fx_step_carry;      /* substep end, before spawn: local space */
 /* effect_clock.c: the group's clock at the current frame: the effect's
  * time, plus the frames a prewarm ran before frame 0. */
-double fx_group_time(const isk_effect *e, const fx_group *g);
+double isk__fx_group_time(const isk_effect *e, const fx_group *g);
 /* The group's clock has started: its emitter is prewarmed at least as far
  * back as the effect's frame (always true from frame 0 on). */
-int fx_group_started(const isk_effect *e, const fx_group *g);
+int isk__fx_group_started(const isk_effect *e, const fx_group *g);
 /* Where the emitter is at time t (its path; em: its definition, which may
  * be an older copy than g->def during a live change). */
-isk_vec2 fx_emitter_pos(const fx_group *g, const isk_emitter_def *em, double t);
+isk_vec2 isk__fx_emitter_pos(const fx_group *g, const isk_emitter_def *em, double t);
 /* Sets the field stage's clock to time t (and the emitter's position then). */
-void fx_field_clock(fx_group *g, double t);
+void isk__fx_field_clock(fx_group *g, double t);
 /* A live change of the emitter's position or velocity (old: the
  * definition before it): the path continues from where the emitter is
  * now; a new position is reached over the next frame, the births of that
  * frame spread along the way. */
-void fx_path_changed(isk_effect *e, fx_group *g, const isk_emitter_def *old, const char *key);
+void isk__fx_path_changed(isk_effect *e, fx_group *g, const isk_emitter_def *old, const char *key);
 /* A live rate of a stream with a duration: the births of its cycles are
  * counted anew at the new rate, those due by now done (no catch-up burst). */
-void fx_stream_rate_changed(isk_effect *e, fx_group *g);
+void isk__fx_stream_rate_changed(isk_effect *e, fx_group *g);
 /* The whole frames a prewarm runs (a double: it may be beyond any count). */
-double fx_prewarm_frames(const isk_effect_def *d, const isk_emitter_def *em);
+double isk__fx_prewarm_frames(const isk_effect_def *d, const isk_emitter_def *em);
 /* Every emitter's prewarm in frames (frames[i] for emitter i): a stream's
  * own, and a sub-emitter's the largest of the emitters whose on_death or
  * on_hit reach it, directly or through a chain, so its children live on
  * the clock of the particles they came from. */
-void fx_prewarm_offsets(const isk_effect_def *d, double *frames);
+void isk__fx_prewarm_offsets(const isk_effect_def *d, double *frames);
 
 /* effect_render.c */
-isk_status fx_render(isk_effect *e, isk_canvas *c);
+isk_status isk__fx_render(isk_effect *e, isk_canvas *c);
 
 /* effect_draws.c: the draw kinds, one row each (the meaning of every field
  * is written there, above the rows).  The band scheduler reads a group's
@@ -333,9 +333,9 @@ struct fx_draw_kind {
     int reach;                                                       /* FX_MAY_SORT: rows beyond its own */
     unsigned may;                                                    /* FX_MAY_*: 0, drawn whole on the caller */
 };
-extern const fx_draw_kind fx_kind_dots, fx_kind_browser_dots, fx_kind_pixels, fx_kind_styled_dots,
-    fx_kind_styled_pixels, fx_kind_discs, fx_kind_sprites, fx_kind_textures, fx_kind_nothing;
-const fx_draw_kind *fx_choose_draw(const fx_group *g);
+extern const fx_draw_kind isk__fx_kind_dots, isk__fx_kind_browser_dots, isk__fx_kind_pixels, isk__fx_kind_styled_dots,
+    isk__fx_kind_styled_pixels, isk__fx_kind_discs, isk__fx_kind_sprites, isk__fx_kind_textures, isk__fx_kind_nothing;
+const fx_draw_kind *isk__fx_choose_draw(const fx_group *g);
 
 /* effect_bands.c: kind k's draw of g over the canvas, in bands on the
  * effect's workers when its row allows and the draw is worth it (whole:
@@ -343,17 +343,17 @@ const fx_draw_kind *fx_choose_draw(const fx_group *g);
  * kind's cost is per particle times this, a trail's points; fill: NULL, or
  * a colour the canvas is filled with first, each band filling its own
  * pixels on its own thread, so they start in its caches). */
-isk_status fx_draw_bands(isk_effect *e, isk_canvas *c, fx_group *g, const fx_draw_kind *k, const fx_band *whole,
+isk_status isk__fx_draw_bands(isk_effect *e, isk_canvas *c, fx_group *g, const fx_draw_kind *k, const fx_band *whole,
                          double units, const isk_color *fill);
 /* The band of g's whole draw: every row and column of c, every particle. */
-fx_band fx_band_whole(const isk_canvas *c, const fx_group *g);
+fx_band isk__fx_band_whole(const isk_canvas *c, const fx_group *g);
 /* The nb bands' cuts of the canvas for g's draw, at the quantiles of a
  * sample of its particles' screen rows (or columns, when `columns` allows
  * them and the rows cannot share the particles): cut[0] = 0 <= ... <=
  * cut[nb] = the canvas's height (or width); returns 1 for columns, 0 for
  * rows.  The cuts only share out the work: any cuts give the same bytes;
  * they depend on the particles alone, so they are the same on every run. */
-int fx_place_cuts(const isk_effect *e, const fx_group *g, const isk_canvas *c, int nb, int columns, int *cut);
+int isk__fx_place_cuts(const isk_effect *e, const fx_group *g, const isk_canvas *c, int nb, int columns, int *cut);
 /* Below this much work a group's draw runs on the caller alone, in batched
  * coverage dots (docs/performance.md, "When a draw is shared out"). */
 #define FX_BAND_MIN_WORK 50000.0
@@ -362,34 +362,34 @@ int fx_place_cuts(const isk_effect *e, const fx_group *g, const isk_canvas *c, i
  * more than they save (docs/performance.md, "When an update is shared
  * out"). */
 #define FX_UPDATE_MIN_WORK 150000.0
-void fx_bins_free(fx_bins *b);
-isk_status fx_bake_ramps(fx_group *g, isk_error *err);
-void fx_free_ramps(fx_group *g);
+void isk__fx_bins_free(fx_bins *b);
+isk_status isk__fx_bake_ramps(fx_group *g, isk_error *err);
+void isk__fx_free_ramps(fx_group *g);
 /* Particle i's colour and size multiplier (vary: whether anything varies
  * per particle, varies(g)). */
-isk_color fx_style(const fx_group *g, const isk_particles *p, size_t i, int vary, double *mult);
-int fx_varies(const fx_group *g);
+isk_color isk__fx_style(const fx_group *g, const isk_particles *p, size_t i, int vary, double *mult);
+int isk__fx_varies(const fx_group *g);
 
 /* effect_looks.c: rotation, spin, size and colour variation, textures. */
 /* The optional store columns the emitter's looks need (ISK_PARTICLES_*). */
-unsigned fx_looks_columns(const isk_emitter_def *em);
+unsigned isk__fx_looks_columns(const isk_emitter_def *em);
 /* The emitter's particles turn by themselves (spin or spin_range): the spin stage. */
-int fx_looks_spins(const isk_emitter_def *em);
+int isk__fx_looks_spins(const isk_emitter_def *em);
 /* New particles [from, count): angle, spin, size, colour (after every other
  * draw of their birth; a draw only where a range or color_pick asks). */
-void fx_looks_adopt(fx_group *g, size_t from);
+void isk__fx_looks_adopt(fx_group *g, size_t from);
 /* The emitter's texture made from the definition's pixels (through the
  * effect's cache) or its streak baked, so the draw can choose
  * effect_texture.c; messages name the texture.  No file is read. */
-isk_status fx_looks_prepare(isk_effect *e, fx_group *g, isk_error *err);
-void fx_looks_free(fx_group *g);
+isk_status isk__fx_looks_prepare(isk_effect *e, fx_group *g, isk_error *err);
+void isk__fx_looks_free(fx_group *g);
 /* Adds the columns a live change needs; ISK_ERR_NOMEM. */
-isk_status fx_looks_live(fx_group *g);
+isk_status isk__fx_looks_live(fx_group *g);
 /* What spans the looks' keys: NULL, or the key at fault with why. */
-const char *fx_looks_check(const isk_emitter_def *em, char *why, size_t n);
-void fx_looks_describe(const fx_group *g, FILE *out);
+const char *isk__fx_looks_check(const isk_emitter_def *em, char *why, size_t n);
+void isk__fx_looks_describe(const fx_group *g, FILE *out);
 /* effect_texture.c: the draw of textured particles and streaks. */
-isk_status fx_draw_textures(isk_effect *e, isk_canvas *c, fx_group *g, const fx_band *b);
+isk_status isk__fx_draw_textures(isk_effect *e, isk_canvas *c, fx_group *g, const fx_band *b);
 
 /* ---- sub-emitters and trails ---------------------------------------
  * effect_stream.c: a stream's launcher and one birth, shared with the
@@ -404,49 +404,49 @@ typedef struct fx_launcher {
 } fx_launcher;
 /* The emitter's shape and launch, not moving (a sub-emitter's, or a stream's
  * before run_spawn sets its path). */
-fx_launcher fx_launcher_of(const isk_emitter_def *em);
+fx_launcher isk__fx_launcher_of(const isk_emitter_def *em);
 /* tb: the birth's time (the field's clock and a moving emitter's place). */
-isk_status fx_birth(isk_effect *e, fx_group *g, const fx_launcher *l, double age, double tb, const double *dv);
+isk_status isk__fx_birth(isk_effect *e, fx_group *g, const fx_launcher *l, double age, double tb, const double *dv);
 
 /* effect_events.c */
 /* The optional columns the emitter's keys call for (hit with on_hit, the
  * trail with trail > 0), added to or taken from the group's store. */
-isk_status fx_events_columns(fx_group *g);
-void fx_events_free(fx_group *g);
+isk_status isk__fx_events_columns(fx_group *g);
+void isk__fx_events_free(fx_group *g);
 /* The cull's deaths as events of the group's on_death emitter, in index
  * order, at time t (the end of the substep). */
-isk_status fx_events_deaths(isk_effect *e, fx_group *g, double t);
+isk_status isk__fx_events_deaths(isk_effect *e, fx_group *g, double t);
 /* Every SUB group's waiting events born, in group then event order (the
  * end of a frame, after every group stepped). */
-isk_status fx_events_release(isk_effect *e);
-extern const fx_step_kind fx_step_hits;       /* substep end: the bounces counted in hit as events */
+isk_status isk__fx_events_release(isk_effect *e);
+extern const fx_step_kind isk__fx_step_hits;       /* substep end: the bounces counted in hit as events */
 
 /* effect_trail.c */
 /* After frame `stepped`: each trailed group that stepped in it (a group
  * not yet started by a prewarm did not) takes its positions as its newest
  * points. */
-void fx_trail_record(isk_effect *e, long stepped);
+void isk__fx_trail_record(isk_effect *e, long stepped);
 /* The group's trails, drawn before its particles (in bands on the threads);
- * fill as fx_draw_bands'. */
-isk_status fx_trail_render(isk_effect *e, isk_canvas *c, fx_group *g, const isk_color *fill);
+ * fill as isk__fx_draw_bands'. */
+isk_status isk__fx_trail_render(isk_effect *e, isk_canvas *c, fx_group *g, const isk_color *fill);
 /* effect_render.c: particle i's colour as its own draw gives it. */
-isk_color fx_particle_color(const fx_group *g, size_t i);
+isk_color isk__fx_particle_color(const fx_group *g, size_t i);
 /* ---- end of sub-emitters and trails ---- */
 
 /* effect_retain.c: a group at rest drawn from its recorded blends.
- *   rt = fx_retain_begin(e, c, g, threads)  NULL: draw as usual; else
- *        rt->nb > 0: replay rt's bands (fx_retain_replay each);
- *        rt->nb == 0: record this draw (fx_retain_record each band, no
- *        split), then fx_retain_end with its bands.
+ *   rt = isk__fx_retain_begin(e, c, g, threads)  NULL: draw as usual; else
+ *        rt->nb > 0: replay rt's bands (isk__fx_retain_replay each);
+ *        rt->nb == 0: record this draw (isk__fx_retain_record each band, no
+ *        split), then isk__fx_retain_end with its bands.
  * What is recorded is valid while every block of the group rests and its
  * isk_rest.changes, its count, the view, the canvas's size, the dot rule
  * and the thread count stay the same. */
-fx_retained *fx_retain_begin(isk_effect *e, const isk_canvas *c, fx_group *g, int threads);
-isk_status fx_retain_record(isk_effect *e, isk_canvas *c, fx_group *g, const fx_band *b);
-isk_status fx_retain_replay(isk_effect *e, isk_canvas *c, fx_group *g, const fx_band *b);
-void fx_retain_end(fx_retained *rt, const fx_band *band, int nb, int columns);
-void fx_retain_clear(fx_retained *rt); /* frees the records; keeps the counters */
+fx_retained *isk__fx_retain_begin(isk_effect *e, const isk_canvas *c, fx_group *g, int threads);
+isk_status isk__fx_retain_record(isk_effect *e, isk_canvas *c, fx_group *g, const fx_band *b);
+isk_status isk__fx_retain_replay(isk_effect *e, isk_canvas *c, fx_group *g, const fx_band *b);
+void isk__fx_retain_end(fx_retained *rt, const fx_band *band, int nb, int columns);
+void isk__fx_retain_clear(fx_retained *rt); /* frees the records; keeps the counters */
 /* effect_render.c: the batched dots' rule for g (ISK__BATCH_*, keep-on-canvas or-ed in). */
-unsigned fx_dots_rule(const fx_group *g);
+unsigned isk__fx_dots_rule(const fx_group *g);
 
 #endif

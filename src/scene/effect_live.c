@@ -40,7 +40,7 @@ static isk_status find_item(const isk_effect_def *d, const char *section, where 
         const char *types[ISK_SECTION_COUNT];
         for (int i = 0; i < ISK_SECTION_COUNT; i++)
             types[i] = isk_section_name((isk_section_kind)i);
-        const char *sug = scv_suggest(type, types, ISK_SECTION_COUNT);
+        const char *sug = isk__scv_suggest(type, types, ISK_SECTION_COUNT);
         return isk_error_set(err, ISK_ERR_RANGE, "no section type '%s'%s%s%s (scene, view, force NAME, deflector NAME, "
                                                  "bounds, emitter NAME, drawing NAME, click)",
                              type, sug ? "; did you mean '" : "", sug ? sug : "", sug ? "'?" : "");
@@ -56,17 +56,17 @@ static isk_status find_item(const isk_effect_def *d, const char *section, where 
         snprintf(w->label, sizeof w->label, "[%s]", type);
         return ISK_OK;
     }
-    int n = fx_section_items(d, w->section);
+    int n = isk__fx_section_items(d, w->section);
     for (int i = 0; i < n; i++)
-        if (!strcmp(fx_item_name(d, w->section, i), name)) {
+        if (!strcmp(isk__fx_item_name(d, w->section, i), name)) {
             w->index = i;
-            snprintf(w->label, sizeof w->label, "[%s %s]", type, fx_item_name(d, w->section, i));
+            snprintf(w->label, sizeof w->label, "[%s %s]", type, isk__fx_item_name(d, w->section, i));
             return ISK_OK;
         }
     const char *names[ISK_EFFECT_MAX_DEFLECTORS];
     for (int i = 0; i < n && i < ISK_EFFECT_MAX_DEFLECTORS; i++)
-        names[i] = fx_item_name(d, w->section, i);
-    const char *sug = scv_suggest(name, names, n);
+        names[i] = isk__fx_item_name(d, w->section, i);
+    const char *sug = isk__scv_suggest(name, names, n);
     return isk_error_set(err, ISK_ERR_RANGE, "no %s named '%s'%s%s%s", type, name, sug ? "; did you mean '" : "",
                          sug ? sug : "", sug ? "'?" : "");
 }
@@ -76,14 +76,14 @@ static isk_status find_key(const isk_effect_def *d, const where *w, const char *
 {
     const isk_key *k = isk_key_find(w->section, key);
     if (!k) {
-        const char *sug = fx_key_suggest(w->section, key);
+        const char *sug = isk__fx_key_suggest(w->section, key);
         return isk_error_set(err, ISK_ERR_RANGE, "%s unknown key '%s'%s%s%s", w->label, key,
                              sug ? "; did you mean '" : "", sug ? sug : "", sug ? "'?" : "");
     }
-    int kind = fx_item_kind(d, w->section, w->index);
-    if (!fx_key_applies(k, kind)) {
+    int kind = isk__fx_item_kind(d, w->section, w->index);
+    if (!isk__fx_key_applies(k, kind)) {
         char msg[240];
-        fx_key_kind_message(k, kind, msg, sizeof msg);
+        isk__fx_key_kind_message(k, kind, msg, sizeof msg);
         return isk_error_set(err, ISK_ERR_RANGE, "%s %s: %s", w->label, key, msg);
     }
     *out = k;
@@ -110,7 +110,7 @@ static void live_emit(fx_report *r, isk_status s, isk_section_kind section, int 
                       const char *msg)
 {
     const live_report *lr = (const live_report *)r;
-    const char *name = fx_item_name(lr->d, section, index);
+    const char *name = isk__fx_item_name(lr->d, section, index);
     isk_error_set(lr->err, s, "[%s%s%s] %s%s%s", isk_section_name(section), *name ? " " : "", name,
                   key && show_key ? key : "", key && show_key ? ": " : "", msg);
 }
@@ -123,7 +123,7 @@ static void live_emit(fx_report *r, isk_status s, isk_section_kind section, int 
 static void update_potentials(isk_effect *e, int f, const char *key)
 {
     isk_force_def *fd = &e->def.forces[f];
-    fx_force_sync(fd);
+    isk__fx_force_sync(fd);
     for (size_t k = 0; k < e->npots; k++) {
         if (e->pot_force[k] != f)
             continue;
@@ -143,7 +143,7 @@ static void update_potentials(isk_effect *e, int f, const char *key)
  * of the new one), so no burst of catch-up births and no gap. */
 static void rebase_stream(isk_effect *e, fx_group *g, double old_rate)
 {
-    const double t = fx_group_time(e, g), rate = g->def->born.rate;
+    const double t = isk__fx_group_time(e, g), rate = g->def->born.rate;
     double f = 0.0;
     if (old_rate > 0 && g->def->born.rate_mode == ISK_RATE_ACCUMULATE) {
         double last = g->origin + (double)g->emitted / old_rate;
@@ -175,30 +175,30 @@ static isk_status apply(isk_effect *e, const where *w, const isk_key *k, const v
         fx_group *g = &e->groups[w->index];
         const isk_emitter_def *em = g->def, *old = old_item;
         if (!strcmp(k->name, "order"))
-            fx_sort_draw_order(e);
+            isk__fx_sort_draw_order(e);
         if (k->type == ISK_KEY_COLOR_STOPS || k->type == ISK_KEY_SCALAR_STOPS) {
-            fx_free_ramps(g);
-            s = fx_bake_ramps(g, NULL);
+            isk__fx_free_ramps(g);
+            s = isk__fx_bake_ramps(g, NULL);
         }
-        if (fx_emitter_oscillates(em) && !g->store.osc_amp)
+        if (isk__fx_emitter_oscillates(em) && !g->store.osc_amp)
             s = isk_particles_add_columns(&g->store, ISK_PARTICLES_OSC);
         if (s == ISK_OK)
-            s = fx_looks_live(g);
+            s = isk__fx_looks_live(g);
         if (s == ISK_OK)
-            s = fx_events_columns(g); /* on_hit, trail */
+            s = isk__fx_events_columns(g); /* on_hit, trail */
         if (!strcmp(k->name, "rate") && em->born.source == ISK_SOURCE_STREAM) {
             rebase_stream(e, g, old->born.rate);
-            fx_stream_rate_changed(e, g);
+            isk__fx_stream_rate_changed(e, g);
         }
         if ((!strcmp(k->name, "position") || !strcmp(k->name, "emitter_velocity")) &&
             em->born.source == ISK_SOURCE_STREAM)
-            fx_path_changed(e, g, old, k->name); /* births spread along the way: no gap */
+            isk__fx_path_changed(e, g, old, k->name); /* births spread along the way: no gap */
         break;
     }
     default:
         break;
     }
-    return s != ISK_OK ? s : fx_compile_all(e);
+    return s != ISK_OK ? s : isk__fx_compile_all(e);
 }
 
 /* ---- set and get ------------------------------------------------------------------- */
@@ -218,7 +218,7 @@ isk_status isk_effect_set(isk_effect *e, const char *section, const char *key, c
                                                  "definition and create the effect again)",
                              w.label, key);
     /* Parse into a copy of the item, so a refused value changes nothing. */
-    void *item = fx_section_item(d, w.section, w.index);
+    void *item = isk__fx_section_item(d, w.section, w.index);
     union {
         isk_effect_def def;
         isk_force_def force;
@@ -238,11 +238,11 @@ isk_status isk_effect_set(isk_effect *e, const char *section, const char *key, c
     if (k->type == ISK_KEY_POINTS)
         copy.drawing.points = NULL; /* the parse allocates anew; the old points stay until it is accepted */
     char why[400];
-    if ((s = fx_key_parse(k, &copy, value, d, why, sizeof why)) != ISK_OK)
+    if ((s = isk__fx_key_parse(k, &copy, value, d, why, sizeof why)) != ISK_OK)
         return isk_error_set(err, s, "%s %s: %s", w.label, key, why);
     memcpy(item, &copy, size);
     live_report lr = {{live_emit, NULL, ISK_OK}, d, err};
-    if ((s = fx_check_def(d, &lr.r)) != ISK_OK) {
+    if ((s = isk__fx_check_def(d, &lr.r)) != ISK_OK) {
         if (k->type == ISK_KEY_POINTS)
             free(copy.drawing.points);
         memcpy(item, &old, size);
@@ -270,7 +270,7 @@ isk_status isk_effect_get(const isk_effect *e, const char *section, const char *
     isk_status s = locate(d, section, key, &w, &k, err);
     if (s != ISK_OK)
         return s;
-    if (fx_key_format(k, fx_section_item_c(d, w.section, w.index), d, buf, size) != ISK_OK) {
+    if (isk__fx_key_format(k, isk__fx_section_item_c(d, w.section, w.index), d, buf, size) != ISK_OK) {
         buf[0] = 0;
         return isk_error_set(err, ISK_ERR_SIZE, "%s %s: the value needs more than %zu bytes", w.label, key, size);
     }
@@ -350,7 +350,7 @@ isk_status isk_effect_add_potential(isk_effect *e, const char *name, const isk_p
     e->pots[e->npots].id = id + 1;
     e->pot_force[e->npots] = f;
     e->npots++;
-    return fx_compile_all(e);
+    return isk__fx_compile_all(e);
 }
 
 isk_status isk_effect_remove_force(isk_effect *e, const char *name, isk_error *err)
@@ -385,7 +385,7 @@ isk_status isk_effect_remove_force(isk_effect *e, const char *name, isk_error *e
         w++;
     }
     e->npots = w;
-    return fx_compile_all(e);
+    return isk__fx_compile_all(e);
 }
 
 const isk_potential *isk_effect_potentials(const isk_effect *e, size_t *count)

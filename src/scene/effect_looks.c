@@ -6,7 +6,7 @@
  * column (and the spin stage, effect_compile.c) exist only with a rotation
  * or a spin, the size column only with size_range, the colour column only
  * with color_pick; every random draw here happens only when its range or
- * color_pick asks, after every other draw of the birth (fx_adopt calls this
+ * color_pick asks, after every other draw of the birth (isk__fx_adopt calls this
  * last), so every existing scene keeps its bytes.  The drawing is
  * effect_texture.c's.  A texture is made from the pixels the definition
  * holds (isk_effect_def.textures, read by the scene loader): nothing here
@@ -34,15 +34,15 @@ static int angle_seen(const isk_emitter_def *em)
 
 static int rotates(const isk_emitter_def *em)
 {
-    return angle_seen(em) && (em->look.rotation != 0 || em->look.rotation_range > 0 || fx_looks_spins(em));
+    return angle_seen(em) && (em->look.rotation != 0 || em->look.rotation_range > 0 || isk__fx_looks_spins(em));
 }
 
-int fx_looks_spins(const isk_emitter_def *em)
+int isk__fx_looks_spins(const isk_emitter_def *em)
 {
     return angle_seen(em) && (em->look.spin != 0 || em->look.spin_range > 0);
 }
 
-unsigned fx_looks_columns(const isk_emitter_def *em)
+unsigned isk__fx_looks_columns(const isk_emitter_def *em)
 {
     return (rotates(em) ? ISK_PARTICLES_ANGLE : 0u) | (em->look.size_range > 0 ? ISK_PARTICLES_SIZE : 0u) |
            (em->look.color_pick.n > 0 ? ISK_PARTICLES_COLOR : 0u);
@@ -56,7 +56,7 @@ static double wrap(double a)
     return a >= PI ? a - TWO_PI : a < -PI ? a + TWO_PI : a;
 }
 
-void fx_looks_adopt(fx_group *g, size_t from)
+void isk__fx_looks_adopt(fx_group *g, size_t from)
 {
     const isk_emitter_def *em = g->def;
     isk_particles *p = &g->store;
@@ -89,13 +89,13 @@ static int streaks(const isk_emitter_def *em)
         (em->look.align == ISK_ALIGN_VELOCITY || em->look.size_range > 0);
 }
 
-isk_status fx_looks_live(fx_group *g)
+isk_status isk__fx_looks_live(fx_group *g)
 {
     const isk_emitter_def *em = g->def;
     /* align, size_range, draw or sprite may have made a streak of a sprite
      * kind, or unmade it (the texture itself is fixed at create) */
     if (!em->look.texture[0]) {
-        fx_looks_free(g);
+        isk__fx_looks_free(g);
         if (streaks(em)) {
             isk_status s = isk_texture_from_sprite(&g->streak, em->look.sprite, FX_STREAK_TEXELS);
             if (s != ISK_OK)
@@ -103,7 +103,7 @@ isk_status fx_looks_live(fx_group *g)
             g->texture = &g->streak;
         }
     }
-    const unsigned want = fx_looks_columns(em);
+    const unsigned want = isk__fx_looks_columns(em);
     if (!(want & ~g->store.flags))
         return ISK_OK;
     /* the particles already there get the emitter's own size and colour */
@@ -112,7 +112,7 @@ isk_status fx_looks_live(fx_group *g)
     return isk_particles_add_columns(&g->store, want);
 }
 
-isk_status fx_looks_prepare(isk_effect *e, fx_group *g, isk_error *err)
+isk_status isk__fx_looks_prepare(isk_effect *e, fx_group *g, isk_error *err)
 {
     const isk_emitter_def *em = g->def;
     g->texture = NULL;
@@ -149,7 +149,7 @@ isk_status fx_looks_prepare(isk_effect *e, fx_group *g, isk_error *err)
     return ISK_OK;
 }
 
-void fx_looks_free(fx_group *g)
+void isk__fx_looks_free(fx_group *g)
 {
     isk_texture_free(&g->streak);
     g->texture = NULL;
@@ -160,7 +160,7 @@ static int whole_in(double v, double lo, double hi)
     return v >= lo && v <= hi && v == floor(v);
 }
 
-const char *fx_looks_check(const isk_emitter_def *em, char *why, size_t n)
+const char *isk__fx_looks_check(const isk_emitter_def *em, char *why, size_t n)
 {
     if (!whole_in(em->look.texture_grid.x, 1, ISK_TEXTURE_MAX_GRID) ||
         !whole_in(em->look.texture_grid.y, 1, ISK_TEXTURE_MAX_GRID)) {
@@ -175,7 +175,7 @@ const char *fx_looks_check(const isk_emitter_def *em, char *why, size_t n)
     return NULL;
 }
 
-void fx_looks_describe(const fx_group *g, FILE *out)
+void isk__fx_looks_describe(const fx_group *g, FILE *out)
 {
     const isk_emitter_def *em = g->def;
     if (!g->texture && !rotates(em) && !em->look.size_range && !em->look.color_pick.n)

@@ -107,9 +107,9 @@ static int any_deflector_shown(const isk_effect_def *d)
  * first pass. */
 static isk_status render_group(isk_effect *e, isk_canvas *c, fx_group *g, const isk_color *fill)
 {
-    fx_band whole = fx_band_whole(c, g);
+    fx_band whole = isk__fx_band_whole(c, g);
     if (g->store.trail) { /* trails under the particles (effect_trail.c) */
-        isk_status s = fx_trail_render(e, c, g, fill);
+        isk_status s = isk__fx_trail_render(e, c, g, fill);
         if (s != ISK_OK)
             return s;
         fill = NULL;
@@ -120,10 +120,10 @@ static isk_status render_group(isk_effect *e, isk_canvas *c, fx_group *g, const 
         if (s != ISK_OK)
             return s;
     }
-    return fx_draw_bands(e, c, g, k, &whole, 1.0, fill);
+    return isk__fx_draw_bands(e, c, g, k, &whole, 1.0, fill);
 }
 
-isk_status fx_render(isk_effect *e, isk_canvas *c)
+isk_status isk__fx_render(isk_effect *e, isk_canvas *c)
 {
     const isk_effect_def *d = &e->def;
     /* The clear goes to the first group's bands when nothing is drawn

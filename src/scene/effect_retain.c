@@ -39,7 +39,7 @@ static void free_records(fx_retained *rt)
     rt->nb = rt->cap = rt->columns = 0;
 }
 
-void fx_retain_clear(fx_retained *rt)
+void isk__fx_retain_clear(fx_retained *rt)
 {
     free_records(rt);
     const long records = rt->records, replays = rt->replays;
@@ -60,33 +60,33 @@ static int same_view(const isk_view *a, const isk_view *b)
 static int same_key(const fx_retained *rt, const isk_effect *e, const isk_canvas *c, const fx_group *g, int threads)
 {
     return rt->changes == g->rest.changes && rt->count == g->store.count && same_view(&rt->view, &e->view) &&
-           rt->width == c->width && rt->height == c->height && rt->threads == threads && rt->rule == fx_dots_rule(g);
+           rt->width == c->width && rt->height == c->height && rt->threads == threads && rt->rule == isk__fx_dots_rule(g);
 }
 
 /* Room for `bands` bands' records, each empty. */
 static int make_room(fx_retained *rt, int bands)
 {
-    fx_retain_clear(rt);
+    isk__fx_retain_clear(rt);
     rt->tile = calloc((size_t)bands, sizeof *rt->tile);
     rt->rec = calloc((size_t)bands, sizeof *rt->rec);
     rt->n = calloc((size_t)bands, sizeof *rt->n);
     rt->failed = calloc((size_t)bands, sizeof *rt->failed);
     if (!rt->tile || !rt->rec || !rt->n || !rt->failed) {
-        fx_retain_clear(rt);
+        isk__fx_retain_clear(rt);
         return 0;
     }
     rt->cap = bands;
     return 1;
 }
 
-fx_retained *fx_retain_begin(isk_effect *e, const isk_canvas *c, fx_group *g, int threads)
+fx_retained *isk__fx_retain_begin(isk_effect *e, const isk_canvas *c, fx_group *g, int threads)
 {
     fx_retained *rt = &g->retained;
     const int resting = g->rests && !g->mc_active && !e->no_rest && !e->no_retain &&
                         isk__rest_all(&g->rest, g->store.count);
     if (!resting) {
         if (rt->cap || rt->refused)
-            fx_retain_clear(rt);
+            isk__fx_retain_clear(rt);
         return NULL;
     }
     const int same = same_key(rt, e, c, g, threads);
@@ -102,11 +102,11 @@ fx_retained *fx_retain_begin(isk_effect *e, const isk_canvas *c, fx_group *g, in
     rt->width = c->width;
     rt->height = c->height;
     rt->threads = threads;
-    rt->rule = fx_dots_rule(g);
+    rt->rule = isk__fx_dots_rule(g);
     return rt; /* record */
 }
 
-isk_status fx_retain_record(isk_effect *e, isk_canvas *c, fx_group *g, const fx_band *b)
+isk_status isk__fx_retain_record(isk_effect *e, isk_canvas *c, fx_group *g, const fx_band *b)
 {
     fx_retained *rt = &g->retained;
     const int k = b->index;
@@ -147,7 +147,7 @@ isk_status fx_retain_record(isk_effect *e, isk_canvas *c, fx_group *g, const fx_
     return ISK_OK;
 }
 
-isk_status fx_retain_replay(isk_effect *e, isk_canvas *c, fx_group *g, const fx_band *b)
+isk_status isk__fx_retain_replay(isk_effect *e, isk_canvas *c, fx_group *g, const fx_band *b)
 {
     (void)e;
     const fx_retained *rt = &g->retained;
@@ -156,7 +156,7 @@ isk_status fx_retain_replay(isk_effect *e, isk_canvas *c, fx_group *g, const fx_
     return ISK_OK;
 }
 
-void fx_retain_end(fx_retained *rt, const fx_band *band, int nb, int columns)
+void isk__fx_retain_end(fx_retained *rt, const fx_band *band, int nb, int columns)
 {
     int failed = nb < 1 || nb > rt->cap;
     for (int k = 0; k < nb && !failed; k++)
@@ -166,7 +166,7 @@ void fx_retain_end(fx_retained *rt, const fx_band *band, int nb, int columns)
         rt->refused = 1;
         return;
     }
-    for (int k = 0; k < nb; k++) { /* (the rows its records blend: fx_retain_record's) */
+    for (int k = 0; k < nb; k++) { /* (the rows its records blend: isk__fx_retain_record's) */
         rt->tile[k].r0 = band[k].r0;
         rt->tile[k].r1 = band[k].r1;
         rt->tile[k].c0 = band[k].c0;

@@ -22,7 +22,7 @@
  * whatever the frame rate.  A live change of the position starts a segment
  * from where the emitter is to the new position over the next frame, so
  * an emitter dragged around leaves no gaps.  In local space the particles
- * are carried by the emitter's motion (fx_step_carry) and are born around
+ * are carried by the emitter's motion (isk__fx_step_carry) and are born around
  * its position at the end of the step.  A stream with a duration emits in
  * cycles (run_cycles). */
 #include <math.h>
@@ -57,7 +57,7 @@ static isk_velgen velgen_of(const isk_emitter_def *em)
     }
 }
 
-void fx_stream_reset(fx_group *g, double time)
+void isk__fx_stream_reset(fx_group *g, double time)
 {
     g->dropped = 0;
     g->next_burst = g->def->born.count > 0 ? g->def->born.start + time : INFINITY;
@@ -82,7 +82,7 @@ static isk_vec2 on_path(const fx_group *g, const isk_emitter_def *em, double t)
     return p;
 }
 
-isk_vec2 fx_emitter_pos(const fx_group *g, const isk_emitter_def *em, double t)
+isk_vec2 isk__fx_emitter_pos(const fx_group *g, const isk_emitter_def *em, double t)
 {
     if (em->born.source != ISK_SOURCE_STREAM)
         return em->born.position;
@@ -97,18 +97,18 @@ isk_vec2 fx_emitter_pos(const fx_group *g, const isk_emitter_def *em, double t)
     return on_path(g, em, t);
 }
 
-void fx_field_clock(fx_group *g, double t)
+void isk__fx_field_clock(fx_group *g, double t)
 {
-    const isk_vec2 c = fx_emitter_pos(g, g->def, t);
+    const isk_vec2 c = isk__fx_emitter_pos(g, g->def, t);
     g->field.t = t;
     g->field.cx = c.x;
     g->field.cy = c.y;
 }
 
-void fx_path_changed(isk_effect *e, fx_group *g, const isk_emitter_def *old, const char *key)
+void isk__fx_path_changed(isk_effect *e, fx_group *g, const isk_emitter_def *old, const char *key)
 {
-    const double now = fx_group_time(e, g);
-    const isk_vec2 here = fx_emitter_pos(g, old, now);
+    const double now = isk__fx_group_time(e, g);
+    const isk_vec2 here = isk__fx_emitter_pos(g, old, now);
     if (!strcmp(key, "position")) {
         /* the new position is reached at the end of the next frame */
         const double t1 = now + e->def.dt / e->def.speed_divisor;
@@ -143,7 +143,7 @@ static int moving(const fx_group *g, const isk_emitter_def *em)
 static isk_status run_carry(isk_effect *e, fx_group *g, double t0, double h)
 {
     (void)e;
-    const isk_vec2 to = fx_emitter_pos(g, g->def, t0 + h);
+    const isk_vec2 to = isk__fx_emitter_pos(g, g->def, t0 + h);
     const double dx = to.x - g->carried.x, dy = to.y - g->carried.y;
     g->carried = to;
     if (dx == 0 && dy == 0)
@@ -163,9 +163,9 @@ static void describe_carry(const isk_effect *e, const fx_group *g, FILE *out)
     fprintf(out, "local space: the particles move with the emitter");
 }
 
-const fx_step_kind fx_step_carry = {"carry", run_carry, describe_carry};
+const fx_step_kind isk__fx_step_carry = {"carry", run_carry, describe_carry};
 
-double fx_prewarm_frames(const isk_effect_def *d, const isk_emitter_def *em)
+double isk__fx_prewarm_frames(const isk_effect_def *d, const isk_emitter_def *em)
 {
     if (!(em->born.prewarm > 0) || em->born.source != ISK_SOURCE_STREAM)
         return 0;
@@ -173,10 +173,10 @@ double fx_prewarm_frames(const isk_effect_def *d, const isk_emitter_def *em)
     return n < 1 ? 1 : n;
 }
 
-void fx_prewarm_offsets(const isk_effect_def *d, double *frames)
+void isk__fx_prewarm_offsets(const isk_effect_def *d, double *frames)
 {
     for (int i = 0; i < d->nemitters; i++)
-        frames[i] = fx_prewarm_frames(d, &d->emitters[i]);
+        frames[i] = isk__fx_prewarm_frames(d, &d->emitters[i]);
     /* a longest path in the graph of events visits each emitter once, so
      * nemitters rounds of "a target takes its largest source" settle it
      * (a cycle only carries the same largest value round) */
@@ -198,17 +198,17 @@ void fx_prewarm_offsets(const isk_effect_def *d, double *frames)
 }
 
 /* Where and how fast new particles start: built once per spawn call. */
-fx_launcher fx_launcher_of(const isk_emitter_def *em)
+fx_launcher isk__fx_launcher_of(const isk_emitter_def *em)
 {
     fx_launcher l = {shape_of(em), velgen_of(em), 0, NAN, 0.0};
     return l;
 }
 
 /* One new particle: position, velocity and mass drawn here, lifetime and
- * oscillation by fx_adopt, then its first moments: back-dated births run the
+ * oscillation by isk__fx_adopt, then its first moments: back-dated births run the
  * group's own pipeline on it for its age; the thesis's jitter applies a
  * random whole number of milliseconds of the external force. */
-isk_status fx_birth(isk_effect *e, fx_group *g, const fx_launcher *l, double age, double tb, const double *dv)
+isk_status isk__fx_birth(isk_effect *e, fx_group *g, const fx_launcher *l, double age, double tb, const double *dv)
 {
     const isk_emitter_def *em = g->def;
     isk_particles *p = &g->store;
@@ -221,7 +221,7 @@ isk_status fx_birth(isk_effect *e, fx_group *g, const fx_launcher *l, double age
         isk_shape s = l->shape;
         /* birth = frame: born, and so placed, at the end of the step */
         const double at = !isnan(l->place) ? l->place : em->born.birth == ISK_BIRTH_FRAME ? l->t1 : tb;
-        const isk_vec2 c = fx_emitter_pos(g, em, at);
+        const isk_vec2 c = isk__fx_emitter_pos(g, em, at);
         s.cx = c.x;
         s.cy = c.y;
         isk_shape_sample(&s, &g->rng, &x, &y);
@@ -242,14 +242,14 @@ isk_status fx_birth(isk_effect *e, fx_group *g, const fx_launcher *l, double age
     isk_status st = isk_particles_add(p, x, y, vx, vy, m, &i);
     if (st != ISK_OK)
         return st;
-    fx_adopt(e, g, i);
+    isk__fx_adopt(e, g, i);
     switch (em->born.birth) {
     case ISK_BIRTH_BACKDATE:
         if (age > 0) {
             /* the field acts from the birth: its time, the emitter there */
             const double kt = g->field.t, kx = g->field.cx, ky = g->field.cy;
             if (g->has_field)
-                fx_field_clock(g, tb);
+                isk__fx_field_clock(g, tb);
             isk__pipeline_run(&g->pipeline, p, i, i + 1, age, &e->scratch, NULL);
             g->field.t = kt;
             g->field.cx = kx;
@@ -327,7 +327,7 @@ static isk_status run_bursts(isk_effect *e, fx_group *g, const fx_launcher *l, d
             continue; /* dead on arrival: the whole burst */
         }
         for (size_t k = 0; k < em->born.count; k++) {
-            isk_status s = fx_birth(e, g, l, em->born.birth == ISK_BIRTH_THESIS_JITTER ? h : age, tb, NULL);
+            isk_status s = isk__fx_birth(e, g, l, em->born.birth == ISK_BIRTH_THESIS_JITTER ? h : age, tb, NULL);
             if (s != ISK_OK)
                 return s;
         }
@@ -429,7 +429,7 @@ static isk_status run_events(isk_effect *e, fx_group *g, const fx_launcher *l, d
         }
         double a = em->born.birth == ISK_BIRTH_BACKDATE ? age : (em->born.birth == ISK_BIRTH_THESIS_JITTER ? h : 0.0);
         for (size_t k = 0; k < each; k++) {
-            isk_status s = fx_birth(e, g, l, a, tb, NULL);
+            isk_status s = isk__fx_birth(e, g, l, a, tb, NULL);
             if (s != ISK_OK)
                 return s;
         }
@@ -437,11 +437,11 @@ static isk_status run_events(isk_effect *e, fx_group *g, const fx_launcher *l, d
     return ISK_OK;
 }
 
-void fx_stream_rate_changed(isk_effect *e, fx_group *g)
+void isk__fx_stream_rate_changed(isk_effect *e, fx_group *g)
 {
     const isk_emitter_def *em = g->def;
     if (em->born.duration > 0 && em->born.rate > 0)
-        g->cycle_births = events_due(g, fx_group_time(e, g), births_per_cycle(em), 1.0 / em->born.rate, 1.0);
+        g->cycle_births = events_due(g, isk__fx_group_time(e, g), births_per_cycle(em), 1.0 / em->born.rate, 1.0);
 }
 
 static isk_status run_cycles(isk_effect *e, fx_group *g, const fx_launcher *l, double t0, double h)
@@ -459,7 +459,7 @@ static isk_status run_cycles(isk_effect *e, fx_group *g, const fx_launcher *l, d
         double want = floor(h * em->born.rate + 0.5);
         double take = fmin(want, (double)room_left(g));
         for (size_t j = 0; j < (size_t)take; j++)
-            if ((s = fx_birth(e, g, l, em->born.birth == ISK_BIRTH_THESIS_JITTER ? h : 0.0, t1, NULL)) != ISK_OK)
+            if ((s = isk__fx_birth(e, g, l, em->born.birth == ISK_BIRTH_THESIS_JITTER ? h : 0.0, t1, NULL)) != ISK_OK)
                 return s;
         drop(g, want - take);
         return ISK_OK;
@@ -478,13 +478,13 @@ static isk_status run_spawn(isk_effect *e, fx_group *g, double t0, double h)
     /* A birth due within a nanosecond of the step's end belongs to this step:
      * 30 steps of 1/30 s and 144 of 1/144 s must agree on "t = 1 s". */
     const double t1_tol = t1 + 1e-9 * (t1 > 1.0 ? t1 : 1.0);
-    fx_launcher l = fx_launcher_of(em);
+    fx_launcher l = isk__fx_launcher_of(em);
     l.moving = moving(g, em);
     l.t1 = t1;
     if (em->born.space == ISK_SPACE_LOCAL)
         l.place = t1;
     if (l.moving) {
-        const isk_vec2 c = fx_emitter_pos(g, em, t1);
+        const isk_vec2 c = isk__fx_emitter_pos(g, em, t1);
         l.shape.cx = c.x;
         l.shape.cy = c.y;
     }
@@ -503,7 +503,7 @@ static isk_status run_spawn(isk_effect *e, fx_group *g, double t0, double h)
         double want = floor(h * em->born.rate + 0.5); /* <= 10^10: clamped before any integer cast */
         double take = fmin(want, (double)room_left(g));
         for (size_t j = 0; j < (size_t)take; j++)
-            if ((s = fx_birth(e, g, &l, em->born.birth == ISK_BIRTH_THESIS_JITTER ? h : 0.0, t1, NULL)) != ISK_OK)
+            if ((s = isk__fx_birth(e, g, &l, em->born.birth == ISK_BIRTH_THESIS_JITTER ? h : 0.0, t1, NULL)) != ISK_OK)
                 return s;
         drop(g, want - take);
         return ISK_OK;
@@ -541,7 +541,7 @@ static isk_status run_spawn(isk_effect *e, fx_group *g, double t0, double h)
             continue; /* would be dead already: never created */
         }
         double a = em->born.birth == ISK_BIRTH_BACKDATE ? age : (em->born.birth == ISK_BIRTH_THESIS_JITTER ? h : 0.0);
-        if ((s = fx_birth(e, g, &l, a, tb, NULL)) != ISK_OK)
+        if ((s = isk__fx_birth(e, g, &l, a, tb, NULL)) != ISK_OK)
             return s;
     }
     return ISK_OK;
@@ -563,4 +563,4 @@ static void describe_spawn(const isk_effect *e, const fx_group *g, FILE *out)
         fprintf(out, ", prewarmed %ld frames", g->frame_offset);
 }
 
-const fx_step_kind fx_step_spawn = {"spawn", run_spawn, describe_spawn};
+const fx_step_kind isk__fx_step_spawn = {"spawn", run_spawn, describe_spawn};

@@ -21,7 +21,7 @@
 #include "iskra/limits.h"
 #include "raster/trail_rows.h"
 
-void fx_trail_record(isk_effect *e, long stepped)
+void isk__fx_trail_record(isk_effect *e, long stepped)
 {
     for (int i = 0; i < e->ngroups; i++)
         if (e->groups[i].store.trail && stepped + e->groups[i].frame_offset >= 0)
@@ -42,7 +42,7 @@ static isk_status draw_trails(isk_effect *e, isk_canvas *c, fx_group *g, const f
             int slot = (p->trail_head + 1 + k) % n;
             isk_view_to_screen(&e->view, t[2 * slot], t[2 * slot + 1], &xy[2 * k], &xy[2 * k + 1]);
         }
-        isk__stroke_trail_rows(c, xy, n, em->look.trail_width, fx_particle_color(g, i), em->look.trail_fade,
+        isk__stroke_trail_rows(c, xy, n, em->look.trail_width, isk__fx_particle_color(g, i), em->look.trail_fade,
                                em->look.blend, b->r0, b->r1);
     }
     return ISK_OK;
@@ -50,16 +50,16 @@ static isk_status draw_trails(isk_effect *e, isk_canvas *c, fx_group *g, const f
 
 /* A trail's stroke blends only the band's rows (isk__stroke_trail_rows);
  * its reach is its width, so a band reads every particle; cost: a dot a
- * segment, times the points (fx_trail_render's units). */
+ * segment, times the points (isk__fx_trail_render's units). */
 static const fx_draw_kind trails = {"trails", draw_trails, NULL, 1.0, 0, FX_MAY_BANDS | FX_MAY_SPLIT};
 
-isk_status fx_trail_render(isk_effect *e, isk_canvas *c, fx_group *g, const isk_color *fill)
+isk_status isk__fx_trail_render(isk_effect *e, isk_canvas *c, fx_group *g, const isk_color *fill)
 {
     if (!g->store.trail) {
         if (fill)
             isk_canvas_fill(c, *fill);
         return ISK_OK;
     }
-    const fx_band whole = fx_band_whole(c, g);
-    return fx_draw_bands(e, c, g, &trails, &whole, (double)g->store.trail_len, fill); /* a segment a point */
+    const fx_band whole = isk__fx_band_whole(c, g);
+    return isk__fx_draw_bands(e, c, g, &trails, &whole, (double)g->store.trail_len, fill); /* a segment a point */
 }

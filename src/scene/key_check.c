@@ -21,33 +21,33 @@
 static isk_status refused(const isk_key *k, const void *item, const isk_effect_def *d, char *why, size_t n)
 {
     char got[MAX_TEXT];
-    if (fx_key_format(k, item, d, got, sizeof got) != 0)
+    if (isk__fx_key_format(k, item, d, got, sizeof got) != 0)
         snprintf(got, sizeof got, "?");
-    return fx_expected(k, why, n, got);
+    return isk__fx_expected(k, why, n, got);
 }
 
 static int numbers_ok(const isk_key *k, const double *v, int count)
 {
     for (int i = 0; i < count; i++)
-        if (!isfinite(v[i]) || !fx_in_range(k, v[i]))
+        if (!isfinite(v[i]) || !isk__fx_in_range(k, v[i]))
             return 0;
     return 1;
 }
 
-isk_status fx_key_check(const isk_key *k, const void *item, const isk_effect_def *d, char *why, size_t n)
+isk_status isk__fx_key_check(const isk_key *k, const void *item, const isk_effect_def *d, char *why, size_t n)
 {
     switch (k->type) {
     case ISK_KEY_NUMBER: {
         double v = *FX_AT_C(double, item, k->offset);
-        if (fx_word_of(k, v) || (isfinite(v) && fx_in_range(k, v)))
+        if (isk__fx_word_of(k, v) || (isfinite(v) && isk__fx_in_range(k, v)))
             return ISK_OK;
         return refused(k, item, d, why, n);
     }
     case ISK_KEY_WHOLE:
     case ISK_KEY_LONG:
     case ISK_KEY_COUNT: {
-        double v = fx_whole_get(k, item);
-        return fx_word_of(k, v) || fx_in_range(k, v) ? ISK_OK : refused(k, item, d, why, n);
+        double v = isk__fx_whole_get(k, item);
+        return isk__fx_word_of(k, v) || isk__fx_in_range(k, v) ? ISK_OK : refused(k, item, d, why, n);
     }
     case ISK_KEY_BOOL: {
         int v = *FX_AT_C(int, item, k->offset);
@@ -55,7 +55,7 @@ isk_status fx_key_check(const isk_key *k, const void *item, const isk_effect_def
     }
     case ISK_KEY_ENUM: {
         int v = *FX_AT_C(int, item, k->offset);
-        return (v >= 0 && v < k->nnames) || fx_word_of(k, v) ? ISK_OK : refused(k, item, d, why, n);
+        return (v >= 0 && v < k->nnames) || isk__fx_word_of(k, v) ? ISK_OK : refused(k, item, d, why, n);
     }
     case ISK_KEY_VECTOR:
     case ISK_KEY_NUMBERS4: {
@@ -72,7 +72,7 @@ isk_status fx_key_check(const isk_key *k, const void *item, const isk_effect_def
         isk_key r = *k;
         r.min = k->min * (PI / 180.0);
         r.max = k->max * (PI / 180.0);
-        return isfinite(v) && fx_in_range(&r, v) ? ISK_OK : refused(k, item, d, why, n);
+        return isfinite(v) && isk__fx_in_range(&r, v) ? ISK_OK : refused(k, item, d, why, n);
     }
     case ISK_KEY_PAIR: {
         const double *v = FX_AT_C(double, item, k->offset);
@@ -101,9 +101,9 @@ isk_status fx_key_check(const isk_key *k, const void *item, const isk_effect_def
             return ISK_ERR_RANGE;
         }
         for (int i = 0; i < r->n; i++)
-            if (!fx_in_range(k, r->stops[i].value)) {
+            if (!isk__fx_in_range(k, r->stops[i].value)) {
                 char want[120];
-                fx_range_words(k, "a number", want, sizeof want);
+                isk__fx_range_words(k, "a number", want, sizeof want);
                 snprintf(why, n, "stop %d: expected %s, got \"%.17g\"", i + 1, want, r->stops[i].value);
                 return ISK_ERR_RANGE;
             }
@@ -136,7 +136,7 @@ isk_status fx_key_check(const isk_key *k, const void *item, const isk_effect_def
         const int *idx = FX_AT_C(int, item, k->offset);
         int count = *FX_AT_C(int, item, k->aux);
         const int cap = k->refers == ISK_SECTION_FORCE ? ISK_EFFECT_MAX_FORCES : ISK_EFFECT_MAX_DEFLECTORS;
-        int total = d ? fx_section_items(d, k->refers) : 0;
+        int total = d ? isk__fx_section_items(d, k->refers) : 0;
         if (count < 0 || count > cap) {
             snprintf(why, n, "0..%d references expected, got %d", cap, count);
             return ISK_ERR_RANGE;
@@ -148,7 +148,7 @@ isk_status fx_key_check(const isk_key *k, const void *item, const isk_effect_def
             }
             for (int j = 0; j < i; j++)
                 if (idx[j] == idx[i]) {
-                    snprintf(why, n, "'%s' is listed twice", fx_item_name(d, k->refers, idx[i]));
+                    snprintf(why, n, "'%s' is listed twice", isk__fx_item_name(d, k->refers, idx[i]));
                     return ISK_ERR_RANGE;
                 }
         }
@@ -156,7 +156,7 @@ isk_status fx_key_check(const isk_key *k, const void *item, const isk_effect_def
     }
     case ISK_KEY_REF: {
         int v = *FX_AT_C(int, item, k->offset);
-        int total = d ? fx_section_items(d, k->refers) : 0;
+        int total = d ? isk__fx_section_items(d, k->refers) : 0;
         if (v >= -1 && v < total)
             return ISK_OK;
         snprintf(why, n, "%s %d does not exist", isk_section_name(k->refers), v);

@@ -50,7 +50,7 @@ static void num(char *buf, size_t n, double v)
 
 static isk_status colour_text(char *buf, size_t n, isk_color c)
 {
-    const char *name = scv_color_name(c);
+    const char *name = isk__scv_color_name(c);
     if (name)
         return put(buf, n, "%s", name);
     if (c.a == 255)
@@ -73,7 +73,7 @@ static isk_status numbers_text(char *buf, size_t n, const double *v, int count)
     return ISK_OK;
 }
 
-isk_status fx_key_format(const isk_key *k, const void *item, const isk_effect_def *d, char *buf, size_t n)
+isk_status isk__fx_key_format(const isk_key *k, const void *item, const isk_effect_def *d, char *buf, size_t n)
 {
     char t[40];
     if (n == 0)
@@ -81,7 +81,7 @@ isk_status fx_key_format(const isk_key *k, const void *item, const isk_effect_de
     switch (k->type) {
     case ISK_KEY_NUMBER: {
         double v = *FX_AT_C(double, item, k->offset);
-        const char *w = fx_word_of(k, v);
+        const char *w = isk__fx_word_of(k, v);
         if (w)
             return put(buf, n, "%s", w);
         num(t, sizeof t, v);
@@ -90,8 +90,8 @@ isk_status fx_key_format(const isk_key *k, const void *item, const isk_effect_de
     case ISK_KEY_WHOLE:
     case ISK_KEY_LONG:
     case ISK_KEY_COUNT: {
-        double v = fx_whole_get(k, item); /* exact: every accepted value is below 2^53 */
-        const char *w = fx_word_of(k, v);
+        double v = isk__fx_whole_get(k, item); /* exact: every accepted value is below 2^53 */
+        const char *w = isk__fx_word_of(k, v);
         return w ? put(buf, n, "%s", w) : put(buf, n, "%.0f", v);
     }
     case ISK_KEY_SEED: return put(buf, n, "%llu", (unsigned long long)*FX_AT_C(uint64_t, item, k->offset));
@@ -104,7 +104,7 @@ isk_status fx_key_format(const isk_key *k, const void *item, const isk_effect_de
         int v = *FX_AT_C(int, item, k->offset);
         if (v >= 0 && v < k->nnames)
             return put(buf, n, "%s", k->names[v]);
-        const char *w = fx_word_of(k, v);
+        const char *w = isk__fx_word_of(k, v);
         return put(buf, n, "%s", w ? w : "?");
     }
     case ISK_KEY_VECTOR:
@@ -180,7 +180,7 @@ isk_status fx_key_format(const isk_key *k, const void *item, const isk_effect_de
             return put(buf, n, "none");
         size_t used = 0;
         for (int i = 0; i < count; i++) {
-            if (put(buf + used, n - used, "%s%s", i ? ", " : "", d ? fx_item_name(d, k->refers, idx[i]) : "?"))
+            if (put(buf + used, n - used, "%s%s", i ? ", " : "", d ? isk__fx_item_name(d, k->refers, idx[i]) : "?"))
                 return ISK_ERR_RANGE;
             used += strlen(buf + used);
         }
@@ -188,7 +188,7 @@ isk_status fx_key_format(const isk_key *k, const void *item, const isk_effect_de
     }
     case ISK_KEY_REF: {
         int v = *FX_AT_C(int, item, k->offset);
-        return put(buf, n, "%s", v >= 0 && d ? fx_item_name(d, k->refers, v) : "");
+        return put(buf, n, "%s", v >= 0 && d ? isk__fx_item_name(d, k->refers, v) : "");
     }
     default: return ISK_ERR_RANGE;
     }
@@ -197,21 +197,21 @@ isk_status fx_key_format(const isk_key *k, const void *item, const isk_effect_de
 
 /* ---- defaults ------------------------------------------------------------------ */
 
-isk_status fx_key_set_default(const isk_key *k, void *item)
+isk_status isk__fx_key_set_default(const isk_key *k, void *item)
 {
     /* An empty default means "none" except for a reference, where it is the
      * first item (-1). */
     if (!k->dflt || (!*k->dflt && k->type != ISK_KEY_REF) || k->type == ISK_KEY_REFS || k->type == ISK_KEY_POINTS)
         return ISK_OK;
     char why[160];
-    return fx_key_parse(k, item, k->dflt, NULL, why, sizeof why);
+    return isk__fx_key_parse(k, item, k->dflt, NULL, why, sizeof why);
 }
 
-void fx_section_defaults(isk_section_kind s, void *item)
+void isk__fx_section_defaults(isk_section_kind s, void *item)
 {
     for (int i = 0; i < isk_key_count(); i++) {
         const isk_key *k = isk_key_at(i);
         if (k->section == s)
-            fx_key_set_default(k, item);
+            isk__fx_key_set_default(k, item);
     }
 }

@@ -17,7 +17,7 @@
 
 /* ---- items ------------------------------------------------------------------- */
 
-int fx_section_items(const isk_effect_def *d, isk_section_kind s)
+int isk__fx_section_items(const isk_effect_def *d, isk_section_kind s)
 {
     switch (s) {
     case ISK_SECTION_FORCE: return d->nforces;
@@ -28,9 +28,9 @@ int fx_section_items(const isk_effect_def *d, isk_section_kind s)
     }
 }
 
-void *fx_section_item(isk_effect_def *d, isk_section_kind s, int i)
+void *isk__fx_section_item(isk_effect_def *d, isk_section_kind s, int i)
 {
-    if (i < 0 || i >= fx_section_items(d, s))
+    if (i < 0 || i >= isk__fx_section_items(d, s))
         return NULL;
     switch (s) {
     case ISK_SECTION_SCENE:
@@ -45,14 +45,14 @@ void *fx_section_item(isk_effect_def *d, isk_section_kind s, int i)
     }
 }
 
-const void *fx_section_item_c(const isk_effect_def *d, isk_section_kind s, int i)
+const void *isk__fx_section_item_c(const isk_effect_def *d, isk_section_kind s, int i)
 {
-    return fx_section_item((isk_effect_def *)d, s, i);
+    return isk__fx_section_item((isk_effect_def *)d, s, i);
 }
 
-const char *fx_item_name(const isk_effect_def *d, isk_section_kind s, int i)
+const char *isk__fx_item_name(const isk_effect_def *d, isk_section_kind s, int i)
 {
-    if (i < 0 || i >= fx_section_items(d, s))
+    if (i < 0 || i >= isk__fx_section_items(d, s))
         return "";
     switch (s) {
     case ISK_SECTION_FORCE: return d->forces[i].name;
@@ -63,9 +63,9 @@ const char *fx_item_name(const isk_effect_def *d, isk_section_kind s, int i)
     }
 }
 
-int fx_item_line(const isk_effect_def *d, isk_section_kind s, int i)
+int isk__fx_item_line(const isk_effect_def *d, isk_section_kind s, int i)
 {
-    if (i < 0 || i >= fx_section_items(d, s))
+    if (i < 0 || i >= isk__fx_section_items(d, s))
         return 0;
     switch (s) {
     case ISK_SECTION_FORCE: return d->forces[i].line;
@@ -76,9 +76,9 @@ int fx_item_line(const isk_effect_def *d, isk_section_kind s, int i)
     }
 }
 
-int fx_item_kind(const isk_effect_def *d, isk_section_kind s, int i)
+int isk__fx_item_kind(const isk_effect_def *d, isk_section_kind s, int i)
 {
-    if (i < 0 || i >= fx_section_items(d, s))
+    if (i < 0 || i >= isk__fx_section_items(d, s))
         return -1;
     switch (s) {
     case ISK_SECTION_VIEW: return (int)d->view_kind;
@@ -90,13 +90,13 @@ int fx_item_kind(const isk_effect_def *d, isk_section_kind s, int i)
     }
 }
 
-int fx_key_applies(const isk_key *k, int kind)
+int isk__fx_key_applies(const isk_key *k, int kind)
 {
     return kind < 0 || k->applies == 0 || (kind < 32 && (k->applies >> kind & 1u));
 }
 
 /* "gravity", "drag or wind" */
-void fx_join_names(char *buf, size_t n, const char *const *names, int count, unsigned mask)
+void isk__fx_join_names(char *buf, size_t n, const char *const *names, int count, unsigned mask)
 {
     int total = 0, j = 0;
     buf[0] = 0;
@@ -111,7 +111,7 @@ void fx_join_names(char *buf, size_t n, const char *const *names, int count, uns
     }
 }
 
-void fx_key_kind_message(const isk_key *k, int kind, char *buf, size_t n)
+void isk__fx_key_kind_message(const isk_key *k, int kind, char *buf, size_t n)
 {
     int count;
     const char *const *names = isk_section_kind_names(k->section, &count);
@@ -127,7 +127,7 @@ void fx_key_kind_message(const isk_key *k, int kind, char *buf, size_t n)
     if (!*word)
         word = "kind";
     char list[160];
-    fx_join_names(list, sizeof list, names, count, k->applies);
+    isk__fx_join_names(list, sizeof list, names, count, k->applies);
     snprintf(buf, n, "only for %s = %s (this %s has %s = %s)", word, list, nouns[k->section], word,
              kind >= 0 && kind < count ? names[kind] : "?");
 }
@@ -142,7 +142,7 @@ _Static_assert(sizeof(isk_integrator) == sizeof(int) && sizeof(isk_blend) == siz
                "enum fields are read as int");
 
 /* Whole-number fields come in three types; a row says which. */
-double fx_whole_get(const isk_key *k, const void *item)
+double isk__fx_whole_get(const isk_key *k, const void *item)
 {
     switch (k->type) {
     case ISK_KEY_WHOLE: return (double)*FX_AT_C(int, item, k->offset);
@@ -151,7 +151,7 @@ double fx_whole_get(const isk_key *k, const void *item)
     }
 }
 
-void fx_whole_set(const isk_key *k, void *item, double v)
+void isk__fx_whole_set(const isk_key *k, void *item, double v)
 {
     switch (k->type) {
     case ISK_KEY_WHOLE: *FX_AT(int, item, k->offset) = (int)v; break;
@@ -196,7 +196,7 @@ static void bound_words(double v, char *buf, size_t n)
     snprintf(buf, n, "%s", strlen(plain) > 6 && strlen(e) < strlen(plain) ? e : plain);
 }
 
-void fx_range_words(const isk_key *k, const char *what, char *buf, size_t n)
+void isk__fx_range_words(const isk_key *k, const char *what, char *buf, size_t n)
 {
     const char *op_lo = k->lo_bound == ISK_BOUND_INCL ? ">=" : ">";
     const char *op_hi = k->hi_bound == ISK_BOUND_INCL ? "<=" : "<";
@@ -225,17 +225,17 @@ static void append_word(const isk_key *k, char *buf, size_t n)
     }
 }
 
-void fx_key_expect(const isk_key *k, char *buf, size_t n)
+void isk__fx_key_expect(const isk_key *k, char *buf, size_t n)
 {
     switch (k->type) {
     case ISK_KEY_NUMBER:
-        fx_range_words(k, k->what ? k->what : "a number", buf, n);
+        isk__fx_range_words(k, k->what ? k->what : "a number", buf, n);
         append_word(k, buf, n);
         return;
     case ISK_KEY_WHOLE:
     case ISK_KEY_LONG:
     case ISK_KEY_COUNT:
-        fx_range_words(k, k->what ? k->what : "a whole number", buf, n);
+        isk__fx_range_words(k, k->what ? k->what : "a whole number", buf, n);
         append_word(k, buf, n);
         return;
     case ISK_KEY_SEED: snprintf(buf, n, "a whole number between 0 and 18446744073709551615"); return;
@@ -244,12 +244,12 @@ void fx_key_expect(const isk_key *k, char *buf, size_t n)
     case ISK_KEY_ENUM: {
         const char *all[64];
         int m = isk_key_choices(k, all, 64);
-        fx_join_names(buf, n, all, m, m >= 32 ? ~0u : (1u << m) - 1u);
+        isk__fx_join_names(buf, n, all, m, m >= 32 ? ~0u : (1u << m) - 1u);
         return;
     }
     case ISK_KEY_VECTOR: snprintf(buf, n, "2 numbers \"%s\"", k->what ? k->what : "x, y"); return;
     case ISK_KEY_POINT: snprintf(buf, n, "2 numbers \"x, y\" or none"); return;
-    case ISK_KEY_ANGLE: fx_range_words(k, "an angle in degrees (or \"N rad\")", buf, n); return;
+    case ISK_KEY_ANGLE: isk__fx_range_words(k, "an angle in degrees (or \"N rad\")", buf, n); return;
     case ISK_KEY_PAIR: snprintf(buf, n, "2 numbers \"%s\"", k->what ? k->what : "min, max"); return;
     case ISK_KEY_NUMBERS4: snprintf(buf, n, "4 numbers \"%s\"", k->what ? k->what : "a, b, c, d"); return;
     case ISK_KEY_COLOR_STOPS: snprintf(buf, n, "stops \"t:colour, t:colour, ...\" or off"); return;
@@ -257,7 +257,7 @@ void fx_key_expect(const isk_key *k, char *buf, size_t n)
     case ISK_KEY_TEXT: snprintf(buf, n, "text of at most %zu characters", k->aux - 1); return;
     case ISK_KEY_SIDES: {
         char sides[120];
-        fx_join_names(sides, sizeof sides, k->names, k->nnames, (1u << k->nnames) - 1u);
+        isk__fx_join_names(sides, sizeof sides, k->names, k->nnames, (1u << k->nnames) - 1u);
         snprintf(buf, n, "%s (or all, none)", sides);
         return;
     }
@@ -270,7 +270,7 @@ void fx_key_expect(const isk_key *k, char *buf, size_t n)
     }
 }
 
-int fx_in_range(const isk_key *k, double v)
+int isk__fx_in_range(const isk_key *k, double v)
 {
     if (k->lo_bound == ISK_BOUND_INCL && !(v >= k->min)) return 0;
     if (k->lo_bound == ISK_BOUND_EXCL && !(v > k->min)) return 0;
@@ -279,47 +279,47 @@ int fx_in_range(const isk_key *k, double v)
     return 1;
 }
 
-isk_status fx_expected(const isk_key *k, char *why, size_t n, const char *got)
+isk_status isk__fx_expected(const isk_key *k, char *why, size_t n, const char *got)
 {
     char want[200];
-    fx_key_expect(k, want, sizeof want);
+    isk__fx_key_expect(k, want, sizeof want);
     snprintf(why, n, "expected %s, got \"%s\"", want, got);
     return ISK_ERR_RANGE;
 }
 
 /* "expected ..., got "x"; did you mean "y"?" (a suggestion from names). */
-isk_status fx_expected_or_guess(const isk_key *k, const char *text, const char *const *names, int count,
+isk_status isk__fx_expected_or_guess(const isk_key *k, const char *text, const char *const *names, int count,
                                     char *why, size_t n)
 {
-    const char *s = count ? scv_suggest(text, names, count) : NULL;
+    const char *s = count ? isk__scv_suggest(text, names, count) : NULL;
     char want[200];
-    fx_key_expect(k, want, sizeof want);
+    isk__fx_key_expect(k, want, sizeof want);
     snprintf(why, n, "expected %s, got \"%s\"%s%s%s", want, text, s ? "; did you mean \"" : "", s ? s : "",
              s ? "\"?" : "");
     return ISK_ERR_RANGE;
 }
 
-const char *fx_key_suggest(isk_section_kind section, const char *word)
+const char *isk__fx_key_suggest(isk_section_kind section, const char *word)
 {
     const char *names[128];
     int n = 0;
     for (int i = 0; i < isk_key_count() && n < 128; i++)
         if (isk_key_at(i)->section == section)
             names[n++] = isk_key_at(i)->name;
-    return scv_suggest(word, names, n);
+    return isk__scv_suggest(word, names, n);
 }
 
 /* A word standing for a value: its index, or -1. */
-int fx_word_index(const isk_key *k, const char *s)
+int isk__fx_word_index(const isk_key *k, const char *s)
 {
     for (int i = 0; k->words && k->words[i].word; i++)
-        if (scv_lookup(s, &k->words[i].word, 1) == 0)
+        if (isk__scv_lookup(s, &k->words[i].word, 1) == 0)
             return i;
     return -1;
 }
 
 /* The word whose value v is, or NULL (exact comparison; INFINITY too). */
-const char *fx_word_of(const isk_key *k, double v)
+const char *isk__fx_word_of(const isk_key *k, double v)
 {
     for (int i = 0; k->words && k->words[i].word; i++)
         if (k->words[i].value == v)
@@ -331,25 +331,25 @@ const char *fx_word_of(const isk_key *k, double v)
 
 int isk_key_items(const isk_effect_def *d, isk_section_kind s)
 {
-    return d && (unsigned)s < ISK_SECTION_COUNT ? fx_section_items(d, s) : 0;
+    return d && (unsigned)s < ISK_SECTION_COUNT ? isk__fx_section_items(d, s) : 0;
 }
 
 const char *isk_key_item_name(const isk_effect_def *d, isk_section_kind s, int i)
 {
-    return d && (unsigned)s < ISK_SECTION_COUNT ? fx_item_name(d, s, i) : "";
+    return d && (unsigned)s < ISK_SECTION_COUNT ? isk__fx_item_name(d, s, i) : "";
 }
 
 int isk_key_item_kind(const isk_effect_def *d, isk_section_kind s, int i)
 {
-    return d && (unsigned)s < ISK_SECTION_COUNT ? fx_item_kind(d, s, i) : -1;
+    return d && (unsigned)s < ISK_SECTION_COUNT ? isk__fx_item_kind(d, s, i) : -1;
 }
 
 const void *isk_key_item(const isk_effect_def *d, isk_section_kind s, int i)
 {
-    return d && (unsigned)s < ISK_SECTION_COUNT ? fx_section_item_c(d, s, i) : NULL;
+    return d && (unsigned)s < ISK_SECTION_COUNT ? isk__fx_section_item_c(d, s, i) : NULL;
 }
 
-int isk_key_applies(const isk_key *k, int kind) { return k && fx_key_applies(k, kind); }
+int isk_key_applies(const isk_key *k, int kind) { return k && isk__fx_key_applies(k, kind); }
 
 isk_key_when isk_key_when_set(const isk_key *k, int kind)
 {

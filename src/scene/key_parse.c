@@ -23,16 +23,16 @@ static isk_status parse_numbers(const isk_key *k, const char *text, int count, d
     char buf[MAX_TEXT], want[160];
     char *items[SCV_LIST_MAX];
     int got;
-    fx_key_expect(k, want, sizeof want);
-    if (strlen(text) >= sizeof buf || !scv_split(text, buf, sizeof buf, ',', items, SCV_LIST_MAX, &got) ||
+    isk__fx_key_expect(k, want, sizeof want);
+    if (strlen(text) >= sizeof buf || !isk__scv_split(text, buf, sizeof buf, ',', items, SCV_LIST_MAX, &got) ||
         got != count) {
         snprintf(why, n, "expected %s, got \"%s\"", want, text);
         return ISK_ERR_RANGE;
     }
     for (int i = 0; i < count; i++)
-        if (!scv_number(items[i], &out[i]) || !fx_in_range(k, out[i])) {
+        if (!isk__scv_number(items[i], &out[i]) || !isk__fx_in_range(k, out[i])) {
             char w2[120];
-            fx_range_words(k, "a number", w2, sizeof w2);
+            isk__fx_range_words(k, "a number", w2, sizeof w2);
             snprintf(why, n, "expected %s: item %d is not %s: \"%s\"", want, i + 1, w2, items[i]);
             return ISK_ERR_RANGE;
         }
@@ -41,14 +41,14 @@ static isk_status parse_numbers(const isk_key *k, const char *text, int count, d
 
 static isk_status parse_whole(const isk_key *k, const char *text, double *out, char *why, size_t n)
 {
-    int w = fx_word_index(k, text);
+    int w = isk__fx_word_index(k, text);
     if (w >= 0) {
         *out = k->words[w].value;
         return ISK_OK;
     }
     double x = 0;
-    if (!scv_number(text, &x) || x != floor(x) || !fx_in_range(k, x))
-        return fx_expected(k, why, n, text);
+    if (!isk__scv_number(text, &x) || x != floor(x) || !isk__fx_in_range(k, x))
+        return isk__fx_expected(k, why, n, text);
     *out = x;
     return ISK_OK;
 }
@@ -59,7 +59,7 @@ static isk_status parse_stops(const isk_key *k, void *item, const char *text, ch
     isk_color_ramp *cr = FX_AT(isk_color_ramp, item, k->offset);
     isk_scalar_ramp *sr = FX_AT(isk_scalar_ramp, item, k->offset);
     static const char *const off[] = {"off", "none"};
-    if (scv_lookup(text, off, 2) >= 0) {
+    if (isk__scv_lookup(text, off, 2) >= 0) {
         if (is_color)
             cr->n = 0;
         else
@@ -70,7 +70,7 @@ static isk_status parse_stops(const isk_key *k, void *item, const char *text, ch
     char *items[SCV_LIST_MAX];
     int count;
     const char *form = is_color ? "t:colour, t:colour, ..." : "t:value, t:value, ...";
-    if (strlen(text) >= sizeof buf || !scv_split(text, buf, sizeof buf, ',', items, SCV_LIST_MAX, &count) ||
+    if (strlen(text) >= sizeof buf || !isk__scv_split(text, buf, sizeof buf, ',', items, SCV_LIST_MAX, &count) ||
         count < 1) {
         snprintf(why, n, "expected stops \"%s\", got \"%s\"", form, text);
         return ISK_ERR_RANGE;
@@ -89,9 +89,9 @@ static isk_status parse_stops(const isk_key *k, void *item, const char *text, ch
             return ISK_ERR_RANGE;
         }
         *colon = 0;
-        char *tv = scv_trim(items[i]), *val = scv_trim(colon + 1);
+        char *tv = isk__scv_trim(items[i]), *val = isk__scv_trim(colon + 1);
         double t;
-        if (!scv_number(tv, &t) || t < 0 || t > 1) {
+        if (!isk__scv_number(tv, &t) || t < 0 || t > 1) {
             snprintf(why, n, "stop %d: expected a position t between 0 and 1, got \"%s\"", i + 1, tv);
             return ISK_ERR_RANGE;
         }
@@ -102,15 +102,15 @@ static isk_status parse_stops(const isk_key *k, void *item, const char *text, ch
         prev = t;
         if (is_color) {
             cs[i].t = t;
-            if (!scv_color(val, &cs[i].color)) {
+            if (!isk__scv_color(val, &cs[i].color)) {
                 snprintf(why, n, "stop %d: expected a colour (#rrggbb, #rrggbbaa or a name), got \"%s\"", i + 1, val);
                 return ISK_ERR_RANGE;
             }
         } else {
             ss[i].t = t;
-            if (!scv_number(val, &ss[i].value) || !fx_in_range(k, ss[i].value)) {
+            if (!isk__scv_number(val, &ss[i].value) || !isk__fx_in_range(k, ss[i].value)) {
                 char want[120];
-                fx_range_words(k, "a number", want, sizeof want);
+                isk__fx_range_words(k, "a number", want, sizeof want);
                 snprintf(why, n, "stop %d: expected %s, got \"%s\"", i + 1, want, val);
                 return ISK_ERR_RANGE;
             }
@@ -130,7 +130,7 @@ static isk_status parse_sides(const isk_key *k, void *item, const char *text, ch
 {
     static const char *const words[] = {"all", "none"};
     unsigned *sides = FX_AT(unsigned, item, k->offset);
-    int w = scv_lookup(text, words, 2);
+    int w = isk__scv_lookup(text, words, 2);
     if (w >= 0) {
         *sides = w == 0 ? ISK_SIDE_ALL : 0u;
         return ISK_OK;
@@ -138,14 +138,14 @@ static isk_status parse_sides(const isk_key *k, void *item, const char *text, ch
     char buf[MAX_TEXT];
     char *items[SCV_LIST_MAX];
     int count;
-    if (strlen(text) >= sizeof buf || !scv_split(text, buf, sizeof buf, ',', items, SCV_LIST_MAX, &count) ||
+    if (strlen(text) >= sizeof buf || !isk__scv_split(text, buf, sizeof buf, ',', items, SCV_LIST_MAX, &count) ||
         count == 0)
-        return fx_expected(k, why, n, text);
+        return isk__fx_expected(k, why, n, text);
     unsigned mask = 0;
     for (int j = 0; j < count; j++) {
-        int sd = scv_lookup(items[j], k->names, k->nnames);
+        int sd = isk__scv_lookup(items[j], k->names, k->nnames);
         if (sd < 0) {
-            return fx_expected_or_guess(k, items[j], k->names, k->nnames, why, n);
+            return isk__fx_expected_or_guess(k, items[j], k->names, k->nnames, why, n);
         }
         if (mask & (1u << sd)) {
             snprintf(why, n, "'%s' is listed twice", k->names[sd]);
@@ -162,16 +162,16 @@ static isk_status parse_points(const isk_key *k, void *item, const char *text, c
     char buf[MAX_TEXT];
     char *items[SCV_LIST_MAX];
     int count;
-    if (strlen(text) >= sizeof buf || !scv_split(text, buf, sizeof buf, ',', items, SCV_LIST_MAX, &count) ||
+    if (strlen(text) >= sizeof buf || !isk__scv_split(text, buf, sizeof buf, ',', items, SCV_LIST_MAX, &count) ||
         count % 2 || count < 2 * (int)k->min || count > 2 * (int)k->max)
-        return fx_expected(k, why, n, text);
+        return isk__fx_expected(k, why, n, text);
     double *pts = malloc(sizeof *pts * (size_t)count);
     if (!pts) {
         snprintf(why, n, "out of memory");
         return ISK_ERR_NOMEM;
     }
     for (int j = 0; j < count; j++)
-        if (!scv_number(items[j], &pts[j])) {
+        if (!isk__scv_number(items[j], &pts[j])) {
             free(pts);
             snprintf(why, n, "item %d is not a number: \"%s\"", j + 1, items[j]);
             return ISK_ERR_RANGE;
@@ -198,24 +198,24 @@ static int name_ok(const char *s)
 static isk_status unknown_name(const isk_key *k, const isk_effect_def *d, const char *name, char *why, size_t n)
 {
     const char *sec = isk_section_name(k->refers);
-    int count = d ? fx_section_items(d, k->refers) : 0;
+    int count = d ? isk__fx_section_items(d, k->refers) : 0;
     if (count == 0) {
         snprintf(why, n, "no %s named '%s' (the scene defines no [%s NAME] section)", sec, name, sec);
         return ISK_ERR_RANGE;
     }
     const char *names[ISK_EFFECT_MAX_DEFLECTORS];
     for (int i = 0; i < count && i < ISK_EFFECT_MAX_DEFLECTORS; i++)
-        names[i] = fx_item_name(d, k->refers, i);
-    const char *s = scv_suggest(name, names, count);
+        names[i] = isk__fx_item_name(d, k->refers, i);
+    const char *s = isk__scv_suggest(name, names, count);
     snprintf(why, n, "no %s named '%s'%s%s%s", sec, name, s ? "; did you mean '" : "", s ? s : "", s ? "'?" : "");
     return ISK_ERR_RANGE;
 }
 
 static int find_name(const isk_effect_def *d, isk_section_kind s, const char *name)
 {
-    int count = d ? fx_section_items(d, s) : 0;
+    int count = d ? isk__fx_section_items(d, s) : 0;
     for (int i = 0; i < count; i++)
-        if (!strcmp(fx_item_name(d, s, i), name))
+        if (!strcmp(isk__fx_item_name(d, s, i), name))
             return i;
     return -1;
 }
@@ -224,10 +224,10 @@ static isk_status parse_refs(const isk_key *k, void *item, const char *text, con
 {
     int *idx = FX_AT(int, item, k->offset);
     int *count = FX_AT(int, item, k->aux);
-    const int total = d ? fx_section_items(d, k->refers) : 0;
+    const int total = d ? isk__fx_section_items(d, k->refers) : 0;
     const int cap = k->refers == ISK_SECTION_FORCE ? ISK_EFFECT_MAX_FORCES : ISK_EFFECT_MAX_DEFLECTORS;
     static const char *const words[] = {"all", "none"};
-    int w = scv_lookup(text, words, 2);
+    int w = isk__scv_lookup(text, words, 2);
     if (w >= 0) {
         int m = w == 0 ? (total < cap ? total : cap) : 0;
         for (int i = 0; i < m; i++)
@@ -238,9 +238,9 @@ static isk_status parse_refs(const isk_key *k, void *item, const char *text, con
     char buf[MAX_TEXT];
     char *items[SCV_LIST_MAX];
     int m;
-    if (strlen(text) >= sizeof buf || !scv_split(text, buf, sizeof buf, ',', items, SCV_LIST_MAX, &m) ||
+    if (strlen(text) >= sizeof buf || !isk__scv_split(text, buf, sizeof buf, ',', items, SCV_LIST_MAX, &m) ||
         m > cap)
-        return fx_expected(k, why, n, text);
+        return isk__fx_expected(k, why, n, text);
     int got[SCV_LIST_MAX];
     for (int j = 0; j < m; j++) {
         int i = find_name(d, k->refers, items[j]);
@@ -266,7 +266,7 @@ static isk_status parse_ref(const isk_key *k, void *item, const char *text, cons
         return ISK_OK;
     }
     if (!name_ok(text))
-        return fx_expected(k, why, n, text);
+        return isk__fx_expected(k, why, n, text);
     int i = find_name(d, k->refers, text);
     if (i < 0)
         return unknown_name(k, d, text, why, n);
@@ -287,36 +287,36 @@ static isk_status parse_angle(const isk_key *k, void *item, const char *text, ch
         while (m > 0 && (text[m - 1] == ' ' || text[m - 1] == '\t'))
             m--;
         if (m == 0 || m >= sizeof buf)
-            return fx_expected(k, why, n, text);
+            return isk__fx_expected(k, why, n, text);
         memcpy(buf, text, m);
         buf[m] = 0;
         isk_key r = *k;
         r.min = k->min * (PI / 180.0);
         r.max = k->max * (PI / 180.0);
-        if (!scv_number(buf, &v) || !fx_in_range(&r, v))
-            return fx_expected(k, why, n, text);
+        if (!isk__scv_number(buf, &v) || !isk__fx_in_range(&r, v))
+            return isk__fx_expected(k, why, n, text);
         *field = v;
         return ISK_OK;
     }
-    if (!scv_number(text, &v) || !fx_in_range(k, v))
-        return fx_expected(k, why, n, text);
+    if (!isk__scv_number(text, &v) || !isk__fx_in_range(k, v))
+        return isk__fx_expected(k, why, n, text);
     *field = v * (PI / 180.0);
     return ISK_OK;
 }
 
-isk_status fx_key_parse(const isk_key *k, void *item, const char *text, const isk_effect_def *d, char *why, size_t n)
+isk_status isk__fx_key_parse(const isk_key *k, void *item, const char *text, const isk_effect_def *d, char *why, size_t n)
 {
     double x = 0, q[4];
     int i;
     switch (k->type) {
     case ISK_KEY_NUMBER: {
-        int w = fx_word_index(k, text);
+        int w = isk__fx_word_index(k, text);
         if (w >= 0) {
             *FX_AT(double, item, k->offset) = k->words[w].value;
             return ISK_OK;
         }
-        if (!scv_number(text, &x) || !fx_in_range(k, x))
-            return fx_expected(k, why, n, text);
+        if (!isk__scv_number(text, &x) || !isk__fx_in_range(k, x))
+            return isk__fx_expected(k, why, n, text);
         *FX_AT(double, item, k->offset) = x;
         return ISK_OK;
     }
@@ -325,30 +325,30 @@ isk_status fx_key_parse(const isk_key *k, void *item, const char *text, const is
     case ISK_KEY_COUNT:
         if (parse_whole(k, text, &x, why, n))
             return ISK_ERR_RANGE;
-        fx_whole_set(k, item, x);
+        isk__fx_whole_set(k, item, x);
         return ISK_OK;
     case ISK_KEY_SEED:
-        return scv_u64(text, FX_AT(uint64_t, item, k->offset)) ? ISK_OK : fx_expected(k, why, n, text);
+        return isk__scv_u64(text, FX_AT(uint64_t, item, k->offset)) ? ISK_OK : isk__fx_expected(k, why, n, text);
     case ISK_KEY_BOOL:
-        return scv_bool(text, FX_AT(int, item, k->offset)) ? ISK_OK : fx_expected(k, why, n, text);
+        return isk__scv_bool(text, FX_AT(int, item, k->offset)) ? ISK_OK : isk__fx_expected(k, why, n, text);
     case ISK_KEY_COLOR:
-        if (!scv_color(text, FX_AT(isk_color, item, k->offset))) {
+        if (!isk__scv_color(text, FX_AT(isk_color, item, k->offset))) {
             const char *names[64];
-            int m = scv_color_count < 64 ? scv_color_count : 64;
+            int m = isk__scv_color_count < 64 ? isk__scv_color_count : 64;
             for (int j = 0; j < m; j++)
-                names[j] = scv_color_name_at(j);
-            return fx_expected_or_guess(k, text, names, text[0] != '#' ? m : 0, why, n);
+                names[j] = isk__scv_color_name_at(j);
+            return isk__fx_expected_or_guess(k, text, names, text[0] != '#' ? m : 0, why, n);
         }
         return ISK_OK;
     case ISK_KEY_ENUM: {
-        int w = fx_word_index(k, text);
+        int w = isk__fx_word_index(k, text);
         if (w >= 0) {
             *FX_AT(int, item, k->offset) = (int)k->words[w].value;
             return ISK_OK;
         }
-        i = scv_lookup(text, k->names, k->nnames);
+        i = isk__scv_lookup(text, k->names, k->nnames);
         if (i < 0)
-            return fx_expected_or_guess(k, text, k->names, k->nnames, why, n);
+            return isk__fx_expected_or_guess(k, text, k->names, k->nnames, why, n);
         *FX_AT(int, item, k->offset) = i;
         return ISK_OK;
     }
@@ -359,7 +359,7 @@ isk_status fx_key_parse(const isk_key *k, void *item, const char *text, const is
         return ISK_OK;
     case ISK_KEY_POINT: {
         static const char *const none[] = {"none", "off"};
-        if (scv_lookup(text, none, 2) >= 0) {
+        if (isk__scv_lookup(text, none, 2) >= 0) {
             *FX_AT(int, item, k->aux) = 0;
             return ISK_OK;
         }

@@ -27,38 +27,38 @@
 /* How many items of a section the definition holds (1 for the unnamed
  * sections), the i-th item, its name ("" for unnamed sections) and the line
  * it was defined at (0 if unknown or unnamed). */
-int fx_section_items(const isk_effect_def *d, isk_section_kind s);
-void *fx_section_item(isk_effect_def *d, isk_section_kind s, int i);
-const void *fx_section_item_c(const isk_effect_def *d, isk_section_kind s, int i);
-const char *fx_item_name(const isk_effect_def *d, isk_section_kind s, int i);
-int fx_item_line(const isk_effect_def *d, isk_section_kind s, int i);
+int isk__fx_section_items(const isk_effect_def *d, isk_section_kind s);
+void *isk__fx_section_item(isk_effect_def *d, isk_section_kind s, int i);
+const void *isk__fx_section_item_c(const isk_effect_def *d, isk_section_kind s, int i);
+const char *isk__fx_item_name(const isk_effect_def *d, isk_section_kind s, int i);
+int isk__fx_item_line(const isk_effect_def *d, isk_section_kind s, int i);
 /* The item's kind (its force kind, source, ...); -1 for sections without. */
-int fx_item_kind(const isk_effect_def *d, isk_section_kind s, int i);
+int isk__fx_item_kind(const isk_effect_def *d, isk_section_kind s, int i);
 /* Whether a key applies to an item of that kind (-1: every key applies). */
-int fx_key_applies(const isk_key *k, int kind);
+int isk__fx_key_applies(const isk_key *k, int kind);
 /* "only for source = stream (this emitter has source = particle)" */
-void fx_key_kind_message(const isk_key *k, int kind, char *buf, size_t n);
+void isk__fx_key_kind_message(const isk_key *k, int kind, char *buf, size_t n);
 
 /* Text -> field.  `d` resolves names (REFS, REF); may be NULL otherwise.
  * ISK_OK, or ISK_ERR_RANGE (ISK_ERR_NOMEM) with the reason in `why`. */
-isk_status fx_key_parse(const isk_key *k, void *item, const char *text, const isk_effect_def *d, char *why, size_t n);
+isk_status isk__fx_key_parse(const isk_key *k, void *item, const char *text, const isk_effect_def *d, char *why, size_t n);
 /* The field's value checked against the row: ISK_OK, or ISK_ERR_RANGE with
  * the reason. */
-isk_status fx_key_check(const isk_key *k, const void *item, const isk_effect_def *d, char *why, size_t n);
+isk_status isk__fx_key_check(const isk_key *k, const void *item, const isk_effect_def *d, char *why, size_t n);
 /* Field -> text (parses back to the same value); ISK_OK, or ISK_ERR_SIZE if
  * `buf` is too small. */
-isk_status fx_key_format(const isk_key *k, const void *item, const isk_effect_def *d, char *buf, size_t n);
+isk_status isk__fx_key_format(const isk_key *k, const void *item, const isk_effect_def *d, char *buf, size_t n);
 /* The section's key most like a misspelt `word`, or NULL. */
-const char *fx_key_suggest(isk_section_kind section, const char *word);
+const char *isk__fx_key_suggest(isk_section_kind section, const char *word);
 /* "a number between 0 and 10000000", "ring, uniform, gauss, coulomb or multi-coulomb" */
-void fx_key_expect(const isk_key *k, char *buf, size_t n);
+void isk__fx_key_expect(const isk_key *k, char *buf, size_t n);
 
 /* Sets the row's default (its `dflt` text) into the item; rows without a
  * default are left alone.  ISK_OK (a bad default is a bug the test of the
  * table catches). */
-isk_status fx_key_set_default(const isk_key *k, void *item);
+isk_status isk__fx_key_set_default(const isk_key *k, void *item);
 /* Every default of a section into one item. */
-void fx_section_defaults(isk_section_kind s, void *item);
+void isk__fx_section_defaults(isk_section_kind s, void *item);
 
 /* ---- shared by the key_*.c files ------------------------------------------- */
 
@@ -67,21 +67,21 @@ void fx_section_defaults(isk_section_kind s, void *item);
 #define FX_AT_C(T, item, off) ((const T *)(const void *)((const char *)(item) + (off)))
 
 /* Whole-number fields (int, long, size_t by the row's type), as a double. */
-double fx_whole_get(const isk_key *k, const void *item);
-void fx_whole_set(const isk_key *k, void *item, double v);
+double isk__fx_whole_get(const isk_key *k, const void *item);
+void isk__fx_whole_set(const isk_key *k, void *item, double v);
 /* "a number between 0 and 1", "a number > 0" for the row's range. */
-void fx_range_words(const isk_key *k, const char *what, char *buf, size_t n);
-int fx_in_range(const isk_key *k, double v);
+void isk__fx_range_words(const isk_key *k, const char *what, char *buf, size_t n);
+int isk__fx_in_range(const isk_key *k, double v);
 /* why = "expected <the row's expectation>, got "text"" (ISK_ERR_RANGE). */
-isk_status fx_expected(const isk_key *k, char *why, size_t n, const char *got);
+isk_status isk__fx_expected(const isk_key *k, char *why, size_t n, const char *got);
 /* The same with "; did you mean "x"?" from names. */
-isk_status fx_expected_or_guess(const isk_key *k, const char *text, const char *const *names, int count, char *why,
+isk_status isk__fx_expected_or_guess(const isk_key *k, const char *text, const char *const *names, int count, char *why,
                                 size_t n);
 /* The word standing for a value: its index in k->words, or -1; the word of
  * a value, or NULL. */
-int fx_word_index(const isk_key *k, const char *s);
-const char *fx_word_of(const isk_key *k, double v);
+int isk__fx_word_index(const isk_key *k, const char *s);
+const char *isk__fx_word_of(const isk_key *k, double v);
 /* "a, b or c" of the names whose bit is set in mask. */
-void fx_join_names(char *buf, size_t n, const char *const *names, int count, unsigned mask);
+void isk__fx_join_names(char *buf, size_t n, const char *const *names, int count, unsigned mask);
 
 #endif

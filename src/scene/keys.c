@@ -302,7 +302,7 @@ static const isk_key keys[] = {
 
     /* [emitter NAME] */
     {EMITTER("preset"), .type = ISK_KEY_TEXT, EM(preset), .aux = sizeof(((isk_emitter_def *)0)->preset),
-     .names = fx_preset_names, .nnames = FX_PRESET_COUNT, .what = "a preset's name, or NAME, SCALE", .dflt = "",
+     .names = isk__fx_preset_names, .nnames = FX_PRESET_COUNT, .what = "a preset's name, or NAME, SCALE", .dflt = "",
      .create_only = 1, .directive = 1,
      .meaning = "the section's first key: starts the emitter from a preset (iskra/presets.h) at SCALE world units "
                 "per 100 cocos2d points (default 1); keys after it override it"},

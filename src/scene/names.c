@@ -20,4 +20,4 @@ const char *const isk_view_kind_names[ISK_VIEWDEF_COUNT] = {"window", "camera"};
 const char *const isk_align_names[ISK_ALIGN_COUNT] = {"none", "velocity"};
 
 #define PRESET_NAME(name) #name,
-const char *const fx_preset_names[FX_PRESET_COUNT] = {FX_PRESETS(PRESET_NAME)};
+const char *const isk__fx_preset_names[FX_PRESET_COUNT] = {FX_PRESETS(PRESET_NAME)};

@@ -16,6 +16,6 @@
 enum { FX_PRESET_COUNT = 0 FX_PRESETS(FX_PRESET_PLUS_ONE) };
 
 /* "fire", "smoke", ...: the names, indexed as isk_preset_name counts them. */
-extern const char *const fx_preset_names[FX_PRESET_COUNT];
+extern const char *const isk__fx_preset_names[FX_PRESET_COUNT];
 
 #endif

@@ -61,7 +61,7 @@ static int own_sub_emitter(isk_effect_def *d, int index, const char *what)
         k = d->nemitters - 1;
     } else {
         isk_emitter_def keep = d->emitters[k];
-        fx_section_defaults(ISK_SECTION_EMITTER, &d->emitters[k]);
+        isk__fx_section_defaults(ISK_SECTION_EMITTER, &d->emitters[k]);
         memcpy(d->emitters[k].name, keep.name, sizeof keep.name);
         d->emitters[k].line = keep.line;
         d->emitters[k].look.order = keep.look.order;
@@ -456,12 +456,12 @@ static preset_fill *const fills[FX_PRESET_COUNT] = {FX_PRESETS(PRESET_FILL)};
 
 int isk_preset_count(void) { return FX_PRESET_COUNT; }
 
-const char *isk_preset_name(int i) { return i >= 0 && i < FX_PRESET_COUNT ? fx_preset_names[i] : NULL; }
+const char *isk_preset_name(int i) { return i >= 0 && i < FX_PRESET_COUNT ? isk__fx_preset_names[i] : NULL; }
 
 int isk_preset_find(const char *name)
 {
     for (int i = 0; name && i < FX_PRESET_COUNT; i++)
-        if (!strcmp(fx_preset_names[i], name))
+        if (!strcmp(isk__fx_preset_names[i], name))
             return i;
     return -1;
 }
@@ -477,12 +477,12 @@ isk_status isk_preset_apply(isk_effect_def *d, int emitter, const char *preset, 
         return ISK_ERR_RANGE;
     isk_emitter_def *e = &d->emitters[emitter];
     isk_emitter_def keep = *e;
-    fx_section_defaults(ISK_SECTION_EMITTER, e);
+    isk__fx_section_defaults(ISK_SECTION_EMITTER, e);
     memcpy(e->name, keep.name, sizeof e->name);
     e->line = keep.line;
     e->look.order = keep.look.order;
     e->born.position = keep.born.position;
-    snprintf(e->preset, sizeof e->preset, "%s", fx_preset_names[p]);
+    snprintf(e->preset, sizeof e->preset, "%s", isk__fx_preset_names[p]);
     const int nforces = d->nforces, ndeflectors = d->ndeflectors, nemitters = d->nemitters;
     if (!fills[p](d, emitter, scale / 100.0)) {
         /* an item of its own found no room, or could not be allocated */

@@ -29,7 +29,7 @@ const char *isk_scene_builtin_text(const char *name)
     return NULL;
 }
 
-const unsigned char *fx_builtin_file(const char *path, size_t *size)
+const unsigned char *isk__fx_builtin_file(const char *path, size_t *size)
 {
     for (int i = 0; path && builtin_files[i].path; i++)
         if (!strcmp(builtin_files[i].path, path)) {

@@ -15,14 +15,14 @@
 
 /* scene_builtin.c: a file the built-in scenes use (scenes/textures/NAME.png,
  * embedded with them), by the path they name it with; NULL if none. */
-const unsigned char *fx_builtin_file(const char *path, size_t *size);
+const unsigned char *isk__fx_builtin_file(const char *path, size_t *size);
 
 /* scene_textures.c, the parser's part: the emitter's texture path made
  * relative to the scene file's directory (scene_name: the file's path),
  * its PNG read into the definition (once per path) and the grid checked
  * against the image.  Messages name the path; *key is the key at fault
  * (texture, or texture_grid when it does not divide the image). */
-isk_status fx_scene_texture(isk_effect_def *d, isk_emitter_def *em, const char *scene_name, const char **key,
+isk_status isk__fx_scene_texture(isk_effect_def *d, isk_emitter_def *em, const char *scene_name, const char **key,
                             char *why, size_t n);
 
 #endif

@@ -136,7 +136,7 @@ static isk_status add_item(parser *P, section *s, const char *name, int line)
         s->index = isk_effect_def_add_deflector(d, name, seg);
         if (s->index >= 0) {
             d->deflectors[s->index].line = line;
-            fx_section_defaults(ISK_SECTION_DEFLECTOR, &d->deflectors[s->index]);
+            isk__fx_section_defaults(ISK_SECTION_DEFLECTOR, &d->deflectors[s->index]);
         }
         what = "deflectors", max = ISK_EFFECT_MAX_DEFLECTORS;
         break;
@@ -169,7 +169,7 @@ static isk_status add_item(parser *P, section *s, const char *name, int line)
         s->index = 0;
         break;
     }
-    if (s->index < 0 && fx_section_items(d, s->type) >= max)
+    if (s->index < 0 && isk__fx_section_items(d, s->type) >= max)
         return isk__ini_error(P->err, P->name, line, "too many %s (at most %d)", what, max);
     if (s->index < 0) /* room, so the add could not allocate */
         return isk_error_set(P->err, ISK_ERR_NOMEM, "%s: out of memory", P->name);
@@ -197,12 +197,12 @@ static isk_status on_section(void *user, const char *header, int line, isk_error
     parser *P = user;
     char text[ISK_INI_MAX_LINE + 1];
     snprintf(text, sizeof text, "%s", header);
-    char *type = scv_trim(text), *name = type;
+    char *type = isk__scv_trim(text), *name = type;
     while (*name && *name != ' ' && *name != '\t')
         name++;
     if (*name)
         *name++ = 0;
-    name = scv_trim(name);
+    name = isk__scv_trim(name);
 
     int t = isk_section_find(type);
     if (t < 0) {
@@ -211,7 +211,7 @@ static isk_status on_section(void *user, const char *header, int line, isk_error
             types[i] = isk_section_name((isk_section_kind)i);
         if (!*type)
             return isk__ini_error(P->err, P->name, line, "empty section header []");
-        const char *s = scv_suggest(type, types, ISK_SECTION_COUNT);
+        const char *s = isk__scv_suggest(type, types, ISK_SECTION_COUNT);
         if (s)
             return isk__ini_error(P->err, P->name, line, "unknown section [%s%s%s]; did you mean [%s%s%s]?", type,
                                  *name ? " " : "", name, s, *name ? " " : "", name);
@@ -274,7 +274,7 @@ static isk_status on_section(void *user, const char *header, int line, isk_error
 
 static isk_status unknown_key(parser *P, const section *s, const char *key, int line)
 {
-    const char *sug = fx_key_suggest(s->type, key);
+    const char *sug = isk__fx_key_suggest(s->type, key);
     if (sug)
         return fail_at(P, s, line, NULL, "unknown key '%s'; did you mean '%s'?", key, sug);
     for (int i = 0; i < isk_key_count(); i++) {
@@ -316,8 +316,8 @@ static isk_status apply_preset(parser *P, section *s, const isk_key *k, int line
     if (isk_preset_find(name) < 0) {
         /* the row's names are the presets (preset_list.h) */
         char list[300];
-        fx_join_names(list, sizeof list, k->names, k->nnames, (1u << k->nnames) - 1u);
-        const char *guess = scv_suggest(name, k->names, k->nnames);
+        isk__fx_join_names(list, sizeof list, k->names, k->nnames, (1u << k->nnames) - 1u);
+        const char *guess = isk__scv_suggest(name, k->names, k->nnames);
         return fail_at(P, s, line, k->name, "no preset '%s'%s%s%s (the presets: %s)", name,
                        guess ? "; did you mean '" : "", guess ? guess : "", guess ? "'?" : "", list);
     }
@@ -361,7 +361,7 @@ static isk_status on_key(void *user, const char *section_name, const char *key, 
         return ISK_OK;
     }
     char why[400];
-    isk_status st = fx_key_parse(k, fx_section_item(P->d, s->type, s->index), value, P->d, why, sizeof why);
+    isk_status st = isk__fx_key_parse(k, isk__fx_section_item(P->d, s->type, s->index), value, P->d, why, sizeof why);
     if (st == ISK_ERR_NOMEM)
         return isk_error_set(P->err, st, "%s: out of memory", P->name);
     if (st != ISK_OK)
@@ -379,8 +379,8 @@ static isk_status on_key(void *user, const char *section_name, const char *key, 
 static isk_status needs_kind(parser *P, section *s, const isk_key *kk)
 {
     char list[300];
-    fx_join_names(list, sizeof list, kk->names, kk->nnames, (1u << kk->nnames) - 1u);
-    const char *guess = scv_suggest(s->name, kk->names, kk->nnames);
+    isk__fx_join_names(list, sizeof list, kk->names, kk->nnames, (1u << kk->nnames) - 1u);
+    const char *guess = isk__scv_suggest(s->name, kk->names, kk->nnames);
     if (guess)
         return fail_at(P, s, s->line, NULL, "needs kind = %s; did you mean [%s %s]?", list, isk_section_name(s->type),
                        guess);
@@ -396,13 +396,13 @@ static isk_status derive_kind(parser *P, section *s)
     if (!kk || given(s, kk))
         return ISK_OK;
     if (s->type == ISK_SECTION_FORCE) {
-        int k = scv_lookup(s->name, kk->names, kk->nnames);
+        int k = isk__scv_lookup(s->name, kk->names, kk->nnames);
         if (k < 0)
             return needs_kind(P, s, kk);
         d->forces[s->index].kind = (isk_force_kind)k;
         return ISK_OK;
     }
-    int k = scv_lookup(s->name, kk->names, kk->nnames);
+    int k = isk__scv_lookup(s->name, kk->names, kk->nnames);
     if (k < 0 && given(s, isk_key_find(s->type, "points")))
         k = ISK_DRAWING_POLYLINE;
     else if (k < 0 && given(s, isk_key_find(s->type, "radius")))
@@ -440,14 +440,14 @@ static isk_status view_kind(parser *P, section *s)
  * the required ones not given (in table order). */
 static isk_status kinds_and_required(parser *P, section *s)
 {
-    const int kind = fx_item_kind(P->d, s->type, s->index);
+    const int kind = isk__fx_item_kind(P->d, s->type, s->index);
     if (s->type == ISK_SECTION_VIEW)
         return ISK_OK; /* the keys given decided its kind */
     const isk_key *first = NULL;
     int first_line = 0;
     for (int i = 0; i < P->nkeys; i++) {
         const isk_key *k = isk_key_at(i);
-        if (k->section == s->type && s->key_line[i] && !fx_key_applies(k, kind) &&
+        if (k->section == s->type && s->key_line[i] && !isk__fx_key_applies(k, kind) &&
             (!first || s->key_line[i] < first_line)) {
             first = k;
             first_line = s->key_line[i];
@@ -455,7 +455,7 @@ static isk_status kinds_and_required(parser *P, section *s)
     }
     if (first) {
         char msg[240];
-        fx_key_kind_message(first, kind, msg, sizeof msg);
+        isk__fx_key_kind_message(first, kind, msg, sizeof msg);
         return fail_at(P, s, first_line, first->name, "%s", msg);
     }
     for (int i = 0; i < P->nkeys && !s->reused; i++) { /* a preset's item has them all */
@@ -474,7 +474,7 @@ static isk_status derived_defaults(parser *P, section *s)
         isk_force_def *f = &d->forces[s->index];
         if (given(s, isk_key_find(s->type, "law")) && !given(s, isk_key_find(s->type, "exponent")))
             return fail_at(P, s, line_of(s, "law"), "law", "needs an exponent to apply to");
-        fx_force_sync(f);
+        isk__fx_force_sync(f);
         return ISK_OK;
     }
     if (s->type == ISK_SECTION_EMITTER) {
@@ -483,7 +483,7 @@ static isk_status derived_defaults(parser *P, section *s)
             return fail_at(P, s, line_of(s, "rate"), NULL, "a stream needs rate > 0 or a burst count > 0");
         char why[400];
         const char *key;
-        isk_status st = fx_scene_texture(d, e, P->name, &key, why, sizeof why); /* the texture beside the file */
+        isk_status st = isk__fx_scene_texture(d, e, P->name, &key, why, sizeof why); /* the texture beside the file */
         if (st == ISK_ERR_NOMEM)
             return isk_error_set(P->err, st, "%s: out of memory", P->name);
         if (st != ISK_OK)
@@ -515,7 +515,7 @@ static isk_status resolve(parser *P, section *s)
             continue;
         const isk_key *k = isk_key_at(i);
         char why[400];
-        if (fx_key_parse(k, fx_section_item(P->d, s->type, s->index), s->deferred[i], P->d, why, sizeof why))
+        if (isk__fx_key_parse(k, isk__fx_section_item(P->d, s->type, s->index), s->deferred[i], P->d, why, sizeof why))
             return fail_at(P, s, s->key_line[i], k->name, "%s", why);
     }
     return ISK_OK;
@@ -560,7 +560,7 @@ static isk_status finish(parser *P)
     }
     parse_report pr = {{parse_emit, NULL, ISK_OK}, P};
     for (int i = 0; i < P->nsec; i++)
-        if (fx_check_item(P->d, P->sec[i].type, P->sec[i].index, 0, &pr.r) != ISK_OK)
+        if (isk__fx_check_item(P->d, P->sec[i].type, P->sec[i].index, 0, &pr.r) != ISK_OK)
             return ISK_ERR_FORMAT; /* reported as FILE:LINE by parse_emit */
     return ISK_OK;
 }

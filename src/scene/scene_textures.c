@@ -23,7 +23,7 @@ static isk_status read_texture(isk_effect_def *d, const char *path, isk_canvas *
     int k = isk_effect_def_find_texture(d, path);
     if (k < 0) {
         size_t size = 0;
-        const unsigned char *built_in = access(path, F_OK) != 0 ? fx_builtin_file(path, &size) : NULL;
+        const unsigned char *built_in = access(path, F_OK) != 0 ? isk__fx_builtin_file(path, &size) : NULL;
         isk_canvas img;
         isk_status s = built_in ? isk_texture_image_read_memory(&img, built_in, size, path, err)
                                 : isk_texture_image_read(&img, path, err);
@@ -39,11 +39,11 @@ static isk_status read_texture(isk_effect_def *d, const char *path, isk_canvas *
     return ISK_OK;
 }
 
-isk_status fx_scene_texture(isk_effect_def *d, isk_emitter_def *em, const char *scene_name, const char **key,
+isk_status isk__fx_scene_texture(isk_effect_def *d, isk_emitter_def *em, const char *scene_name, const char **key,
                             char *why, size_t n)
 {
     *key = "texture";
-    if (!em->look.texture[0] || fx_looks_check(em, why, n))
+    if (!em->look.texture[0] || isk__fx_looks_check(em, why, n))
         return ISK_OK; /* a malformed grid is the shared check's to report */
     const char *slash = scene_name ? strrchr(scene_name, '/') : NULL;
     if (em->look.texture[0] != '/' && slash) {
@@ -61,7 +61,7 @@ isk_status fx_scene_texture(isk_effect_def *d, isk_emitter_def *em, const char *
     isk_canvas *img = NULL;
     isk_status s = read_texture(d, em->look.texture, &img, &err);
     /* the texture module's rules (the grid itself is well formed here:
-     * fx_looks_check said so), so a RANGE is the grid not dividing the
+     * isk__fx_looks_check said so), so a RANGE is the grid not dividing the
      * image: that key's line */
     if (s == ISK_OK &&
         (s = isk_texture_check_size(em->look.texture, img->width, img->height, (int)em->look.texture_grid.x,

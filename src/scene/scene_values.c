@@ -53,7 +53,7 @@ static int decimal(const char *s, size_t len, double *out)
     return 1;
 }
 
-int scv_number(const char *s, double *out)
+int isk__scv_number(const char *s, double *out)
 {
     if (!s)
         return 0;
@@ -87,7 +87,7 @@ int scv_number(const char *s, double *out)
     return 1;
 }
 
-int scv_u64(const char *s, uint64_t *out)
+int isk__scv_u64(const char *s, uint64_t *out)
 {
     if (!s || !*s)
         return 0;
@@ -112,7 +112,7 @@ static int same_word(const char *a, const char *b)
     return !*a && !*b;
 }
 
-int scv_lookup(const char *s, const char *const *names, int n)
+int isk__scv_lookup(const char *s, const char *const *names, int n)
 {
     for (int i = 0; i < n; i++)
         if (same_word(s, names[i]))
@@ -120,10 +120,10 @@ int scv_lookup(const char *s, const char *const *names, int n)
     return -1;
 }
 
-int scv_bool(const char *s, int *out)
+int isk__scv_bool(const char *s, int *out)
 {
     static const char *const names[] = {"false", "true", "no", "yes", "off", "on", "0", "1"};
-    int i = scv_lookup(s, names, 8);
+    int i = isk__scv_lookup(s, names, 8);
     if (i < 0)
         return 0;
     *out = i & 1;
@@ -148,9 +148,9 @@ static const struct {
 };
 #define NCOLORS ((int)(sizeof colors / sizeof colors[0]))
 
-const int scv_color_count = NCOLORS;
+const int isk__scv_color_count = NCOLORS;
 
-const char *scv_color_name_at(int i)
+const char *isk__scv_color_name_at(int i)
 {
     return i >= 0 && i < NCOLORS ? colors[i].name : NULL;
 }
@@ -165,7 +165,7 @@ static int hexval(char c)
     return -1;
 }
 
-int scv_color(const char *s, isk_color *out)
+int isk__scv_color(const char *s, isk_color *out)
 {
     if (!s)
         return 0;
@@ -191,7 +191,7 @@ int scv_color(const char *s, isk_color *out)
     return 0;
 }
 
-char *scv_trim(char *s)
+char *isk__scv_trim(char *s)
 {
     while (*s == ' ' || *s == '\t')
         s++;
@@ -201,21 +201,21 @@ char *scv_trim(char *s)
     return s;
 }
 
-int scv_split(const char *s, char *buf, size_t bufsize, char sep, char **items, int max, int *n)
+int isk__scv_split(const char *s, char *buf, size_t bufsize, char sep, char **items, int max, int *n)
 {
     *n = 0;
     size_t len = strlen(s);
     if (len + 1 > bufsize)
         return 0;
     memcpy(buf, s, len + 1);
-    if (!*scv_trim(buf))
+    if (!*isk__scv_trim(buf))
         return 1;
     char *p = buf;
     for (;;) {
         char *c = strchr(p, sep);
         if (c)
             *c = 0;
-        char *item = scv_trim(p);
+        char *item = isk__scv_trim(p);
         if (!*item || *n >= max)
             return 0;
         items[(*n)++] = item;
@@ -225,7 +225,7 @@ int scv_split(const char *s, char *buf, size_t bufsize, char sep, char **items, 
     }
 }
 
-const char *scv_suggest(const char *word, const char *const *names, int count)
+const char *isk__scv_suggest(const char *word, const char *const *names, int count)
 {
     const char *s = isk__ini_suggest(word, names, (size_t)count);
     if (s)
@@ -244,7 +244,7 @@ const char *scv_suggest(const char *word, const char *const *names, int count)
     return NULL;
 }
 
-const char *scv_color_name(isk_color c)
+const char *isk__scv_color_name(isk_color c)
 {
     for (int i = 0; i < NCOLORS; i++)
         if (colors[i].r == c.r && colors[i].g == c.g && colors[i].b == c.b && colors[i].a == c.a)

@@ -25,28 +25,28 @@
 /* Most items in one list. */
 #define SCV_LIST_MAX 128
 
-int scv_number(const char *s, double *out);
+int isk__scv_number(const char *s, double *out);
 /* Decimal digits only, 0..2^64-1. */
-int scv_u64(const char *s, uint64_t *out);
-int scv_bool(const char *s, int *out);
-int scv_color(const char *s, isk_color *out);
+int isk__scv_u64(const char *s, uint64_t *out);
+int isk__scv_bool(const char *s, int *out);
+int isk__scv_color(const char *s, isk_color *out);
 /* Splits `s` at commas into trimmed items (pointers into `buf`, which must
  * hold strlen(s)+1 bytes).  Returns 0 for more than `max` items or an empty
  * item; *n = 0 for an empty or blank string. */
-int scv_split(const char *s, char *buf, size_t bufsize, char sep, char **items, int max, int *n);
+int isk__scv_split(const char *s, char *buf, size_t bufsize, char sep, char **items, int max, int *n);
 /* Blanks (space, tab, CR) removed from both ends, in place. */
-char *scv_trim(char *s);
+char *isk__scv_trim(char *s);
 /* Case-insensitive lookup of s in names[0..n-1]: the index, or -1. */
-int scv_lookup(const char *s, const char *const *names, int n);
+int isk__scv_lookup(const char *s, const char *const *names, int n);
 /* The likely intended one of names[0..n-1] for a misspelt `word` (edit
  * distance, or one swap of adjacent letters: "widht" -> "width"), or NULL. */
-const char *scv_suggest(const char *word, const char *const *names, int n);
+const char *isk__scv_suggest(const char *word, const char *const *names, int n);
 /* The CSS name of a colour if it has one ("yellow"), else NULL. */
-const char *scv_color_name(isk_color c);
+const char *isk__scv_color_name(isk_color c);
 
-/* The CSS colour names we accept (scv_color_count of them, for messages and
+/* The CSS colour names we accept (isk__scv_color_count of them, for messages and
  * did-you-mean): the i-th, or NULL. */
-const char *scv_color_name_at(int i);
-extern const int scv_color_count;
+const char *isk__scv_color_name_at(int i);
+extern const int isk__scv_color_count;
 
 #endif

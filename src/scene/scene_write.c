@@ -1,7 +1,7 @@
 /* SPDX-License-Identifier: MIT */
 /* A definition written as a scene file (isk_scene_write, isk_scene_save in
  * iskra/scene.h): every key of every item, walked from the key table and
- * formatted by its row (fx_key_format gives text that parses back to the
+ * formatted by its row (isk__fx_key_format gives text that parses back to the
  * same bits), so the text reproduces the definition exactly, whatever was
  * changed while it ran.
  *
@@ -74,25 +74,25 @@ static int required(const isk_key *k, int kind)
 
 static isk_status write_item(out *o, const isk_effect_def *d, isk_section_kind s, int index, isk_error *err)
 {
-    const char *name = fx_item_name(d, s, index);
+    const char *name = isk__fx_item_name(d, s, index);
     char label[ISK_NAME_MAX + 24], value[ISK_INI_MAX_LINE + 2];
     snprintf(label, sizeof label, "[%s%s%s]", isk_section_name(s), *name ? " " : "", name);
     put(o, "\n");
     put(o, label);
     put(o, "\n");
-    const void *item = fx_section_item_c(d, s, index);
-    const int kind = fx_item_kind(d, s, index);
+    const void *item = isk__fx_section_item_c(d, s, index);
+    const int kind = isk__fx_item_kind(d, s, index);
     if (s == ISK_SECTION_FORCE && d->forces[index].kind == ISK_FORCE_POTENTIAL && d->forces[index].pot.motion)
         return isk_error_set(err, ISK_ERR_FORMAT, "%s moves by a C function, which a scene file cannot hold", label);
     for (int i = 0; i < isk_key_count(); i++) {
         const isk_key *k = isk_key_at(i);
-        if (k->section != s || !fx_key_applies(k, kind) || k->directive)
+        if (k->section != s || !isk__fx_key_applies(k, kind) || k->directive)
             continue;
         if (k->type == ISK_KEY_REF && *(const int *)((const char *)item + k->offset) < 0)
             continue; /* "the first emitter" is the default, and has no name to write */
         if (k->type == ISK_KEY_TEXT && !*((const char *)item + k->offset) && !required(k, kind))
             continue; /* empty text ("texture =") is the key's absence: nothing to write */
-        if (fx_key_format(k, item, d, value, sizeof value) != ISK_OK || strlen(k->name) + 3 + strlen(value) >
+        if (isk__fx_key_format(k, item, d, value, sizeof value) != ISK_OK || strlen(k->name) + 3 + strlen(value) >
                                                                              ISK_INI_MAX_LINE)
             return isk_error_set(err, ISK_ERR_FORMAT, "%s %s: the value is longer than a scene line holds (%d "
                                                       "characters)",
@@ -122,7 +122,7 @@ isk_status isk_scene_write(const isk_effect_def *d, char **text, isk_error *err)
     out o = {NULL, 0, 0, 0};
     put(&o, "; an iskra scene: every key of every section, as the definition held them\n");
     for (size_t j = 0; j < sizeof order / sizeof order[0]; j++) {
-        const int n = fx_section_items(d, order[j]);
+        const int n = isk__fx_section_items(d, order[j]);
         for (int i = 0; i < n; i++) {
             isk_status s = write_item(&o, d, order[j], i, err);
             if (s != ISK_OK) {

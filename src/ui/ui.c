@@ -43,7 +43,7 @@ void isk_ui_init(isk_ui *ui, int scale)
 
 /* ---- names ------------------------------------------------------------------------ */
 
-uint32_t ui_id(const char *name)
+uint32_t isk__ui_id(const char *name)
 {
     uint32_t h = 2166136261u;
     for (const unsigned char *p = (const unsigned char *)(name ? name : ""); *p; p++)
@@ -51,7 +51,7 @@ uint32_t ui_id(const char *name)
     return h ? h : 1u;
 }
 
-void ui_sub_name(char *out, size_t n, const char *name, const char *label, int index)
+void isk__ui_sub_name(char *out, size_t n, const char *name, const char *label, int index)
 {
     if (!label) {
         snprintf(out, n, "%s/%d", name, index);
@@ -64,7 +64,7 @@ void ui_sub_name(char *out, size_t n, const char *name, const char *label, int i
         out[k] = 0;
 }
 
-void ui_record(isk_ui *ui, const char *name, isk_ui_rect r)
+void isk__ui_record(isk_ui *ui, const char *name, isk_ui_rect r)
 {
     if (ui->nitems >= ISK_UI_MAX_ITEMS || !name)
         return;
@@ -241,7 +241,7 @@ void isk_ui_begin(isk_ui *ui, isk_canvas *canvas)
     ui->popup_seen = 0;
     ui->popup_pick = -1;
     ui->popup_closed_id = 0;
-    ui_popup_input(ui);
+    isk__ui_popup_input(ui);
     /* A press anywhere else clears a refused value's message. */
     if (ui->pressed && ui->error_id && ui->focus != ui->error_id)
         ui->error_id = 0;
@@ -287,10 +287,10 @@ static void floating_message(isk_ui *ui)
         box.x = in.x;
     if (box.y + box.h > in.y + in.h)
         box.y = ui->error_rect.y - h - s;
-    ui_round_outline(ui, box, 2 * s, s, ui->style.error, ui->style.panel);
+    isk__ui_round_outline(ui, box, 2 * s, s, ui->style.error, ui->style.panel);
     isk_ui_rect t = isk_ui_inset(box, pad);
     if (n == 1)
-        ui_text_line(ui, t, lines, ui->style.error, ISK_UI_LEFT);
+        isk__ui_text_line(ui, t, lines, ui->style.error, ISK_UI_LEFT);
     else
         isk_ui_text(ui, t, lines, ui->style.error, ISK_UI_LEFT);
 }
@@ -307,7 +307,7 @@ void isk_ui_end(isk_ui *ui)
         ui->popup_id = 0; /* its choice was not drawn: the list goes with it */
     if (ui->error_id && ui->error[0] && ui->canvas && !ui->error_placed)
         floating_message(ui);
-    ui_popup_draw(ui);
+    isk__ui_popup_draw(ui);
     ui->frame++;
 }
 
@@ -352,14 +352,14 @@ void isk_ui_focus(isk_ui *ui, const char *id)
     if (!ui)
         return;
     if (id)
-        ui->focus_next = ui_id(id); /* the field loads its value when it is drawn */
+        ui->focus_next = isk__ui_id(id); /* the field loads its value when it is drawn */
     else
         ui->focus = ui->focus_next = 0;
 }
 
-int isk_ui_focused(const isk_ui *ui, const char *id) { return ui && id && ui->focus && ui->focus == ui_id(id); }
+int isk_ui_focused(const isk_ui *ui, const char *id) { return ui && id && ui->focus && ui->focus == isk__ui_id(id); }
 
-ui_state ui_interact(isk_ui *ui, uint32_t id, isk_ui_rect r)
+ui_state isk__ui_interact(isk_ui *ui, uint32_t id, isk_ui_rect r)
 {
     ui_state st = {0, 0, 0, 0, 0};
     if (ui->disabled)

@@ -5,7 +5,7 @@
  * Immediate mode with a list drawn over later widgets: the list's
  * rectangle and labels are kept in the isk_ui between frames (copied, so
  * the program's strings need not outlive the frame).  At isk_ui_begin a
- * press on the open list is the list's alone (ui_popup_input marks the
+ * press on the open list is the list's alone (isk__ui_popup_input marks the
  * press taken, so no widget under it reacts) and picks an option, which
  * the choice returns when it is drawn; a press anywhere else, or Escape,
  * closes the list.  The list opens at the press on its choice (so the
@@ -23,7 +23,7 @@ static isk_ui_rect option_rect(const isk_ui *ui, int i)
     return (isk_ui_rect){ui->popup_rect.x + s, ui->popup_rect.y + s + i * rh, ui->popup_rect.w - 2 * s, rh};
 }
 
-void ui_popup_input(isk_ui *ui)
+void isk__ui_popup_input(isk_ui *ui)
 {
     if (!ui->popup_id)
         return;
@@ -54,10 +54,10 @@ int isk_ui_choice(isk_ui *ui, const char *id, isk_ui_rect r, const char *const *
         return 0;
     if (n > ISK_UI_CHOICE_MAX)
         n = ISK_UI_CHOICE_MAX;
-    const uint32_t h = ui_id(id);
+    const uint32_t h = isk__ui_id(id);
     const int s = ui->scale;
-    ui_record(ui, id, r);
-    ui_state st = ui_interact(ui, h, r);
+    isk__ui_record(ui, id, r);
+    ui_state st = isk__ui_interact(ui, h, r);
     int changed = 0;
     if (ui->popup_id == h) {
         ui->popup_seen = 1;
@@ -83,44 +83,44 @@ int isk_ui_choice(isk_ui *ui, const char *id, isk_ui_rect r, const char *const *
         for (int i = 0; i < n; i++) {
             snprintf(ui->popup_labels[i], sizeof ui->popup_labels[i], "%s", labels[i] ? labels[i] : "");
             char name[ISK_UI_ID_MAX];
-            ui_sub_name(name, sizeof name, id, ui->popup_labels[i], i);
-            ui_record(ui, name, option_rect(ui, i));
+            isk__ui_sub_name(name, sizeof name, id, ui->popup_labels[i], i);
+            isk__ui_record(ui, name, option_rect(ui, i));
         }
         ui->popup_mark = *selected;
     }
     /* the button: the chosen label, and a small triangle at the right */
-    isk_color bg = st.hover || ui->popup_id == h ? ui_shade(ui->style.field, 16) : ui->style.field;
-    isk_color edge = ui->popup_id == h ? ui->style.focus : st.hover ? ui_shade(ui->style.border, 24) : ui->style.border;
+    isk_color bg = st.hover || ui->popup_id == h ? isk__ui_shade(ui->style.field, 16) : ui->style.field;
+    isk_color edge = ui->popup_id == h ? ui->style.focus : st.hover ? isk__ui_shade(ui->style.border, 24) : ui->style.border;
     if (ui->disabled) {
-        bg = ui_dim(ui, bg);
-        edge = ui_dim(ui, edge);
+        bg = isk__ui_dim(ui, bg);
+        edge = isk__ui_dim(ui, edge);
     }
-    ui_round_outline(ui, r, 2 * s, s, edge, bg);
+    isk__ui_round_outline(ui, r, 2 * s, s, edge, bg);
     isk_ui_rect t = isk_ui_inset(r, 4 * s);
     isk_ui_rect arrow = isk_ui_cut_right(&t, 7 * s);
     const double cx = arrow.x + arrow.w / 2.0, cy = r.y + r.h / 2.0;
     if (ui->canvas)
         isk_fill_triangle(ui->canvas, cx - 3.5 * s, cy - 1.75 * s, cx + 3.5 * s, cy - 1.75 * s, cx, cy + 2.25 * s,
-                          ui->disabled ? ui_dim(ui, ui->style.label) : ui->style.label, ISK_BLEND_OVER);
+                          ui->disabled ? isk__ui_dim(ui, ui->style.label) : ui->style.label, ISK_BLEND_OVER);
     const char *label = *selected >= 0 && *selected < n && labels[*selected] ? labels[*selected] : "-";
-    ui_text_line(ui, t, label, ui->disabled ? ui_dim(ui, ui->style.text) : ui->style.text, ISK_UI_LEFT);
+    isk__ui_text_line(ui, t, label, ui->disabled ? isk__ui_dim(ui, ui->style.text) : ui->style.text, ISK_UI_LEFT);
     return changed;
 }
 
-void ui_popup_draw(isk_ui *ui)
+void isk__ui_popup_draw(isk_ui *ui)
 {
     if (!ui->popup_id || !ui->canvas)
         return;
     const int s = ui->scale;
-    ui_round_outline(ui, ui->popup_rect, 2 * s, s, ui->style.focus, ui->style.panel);
+    isk__ui_round_outline(ui, ui->popup_rect, 2 * s, s, ui->style.focus, ui->style.panel);
     for (int i = 0; i < ui->popup_n; i++) {
         isk_ui_rect row = option_rect(ui, i);
         if (i == ui->popup_mark)
-            ui_fill(ui, row, ui->style.accent);
+            isk__ui_fill(ui, row, ui->style.accent);
         else if (isk_ui_contains(row, ui->mouse_x, ui->mouse_y))
-            ui_fill(ui, row, ui_shade(ui->style.panel, 24));
+            isk__ui_fill(ui, row, isk__ui_shade(ui->style.panel, 24));
         isk_ui_rect t = row;
         isk_ui_cut_left(&t, 4 * s);
-        ui_text_line(ui, t, ui->popup_labels[i], ui->style.text, ISK_UI_LEFT);
+        isk__ui_text_line(ui, t, ui->popup_labels[i], ui->style.text, ISK_UI_LEFT);
     }
 }

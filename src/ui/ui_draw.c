@@ -12,7 +12,7 @@
 
 #define PI 3.14159265358979323846
 
-isk_color ui_shade(isk_color c, int delta)
+isk_color isk__ui_shade(isk_color c, int delta)
 {
     int v[3] = {c.r + delta, c.g + delta, c.b + delta};
     for (int i = 0; i < 3; i++)
@@ -20,7 +20,7 @@ isk_color ui_shade(isk_color c, int delta)
     return isk_rgba((uint8_t)v[0], (uint8_t)v[1], (uint8_t)v[2], c.a);
 }
 
-isk_color ui_dim(const isk_ui *ui, isk_color c)
+isk_color isk__ui_dim(const isk_ui *ui, isk_color c)
 {
     const isk_color b = ui->style.panel;
     return isk_rgba((uint8_t)((c.r + b.r) / 2), (uint8_t)((c.g + b.g) / 2), (uint8_t)((c.b + b.b) / 2), c.a);
@@ -47,7 +47,7 @@ static int view_of(isk_ui *ui, isk_ui_rect r, isk_canvas *v, int *ox, int *oy)
     return 1;
 }
 
-void ui_fill(isk_ui *ui, isk_ui_rect r, isk_color c)
+void isk__ui_fill(isk_ui *ui, isk_ui_rect r, isk_color c)
 {
     /* An opaque colour over anything is the colour itself: a plain fill of
      * the rectangle's view gives the same bytes as blending each pixel. */
@@ -64,7 +64,7 @@ void ui_fill(isk_ui *ui, isk_ui_rect r, isk_color c)
         isk_fill_rect(ui->canvas, r.x, r.y, r.w, r.h, c, ISK_BLEND_OVER);
 }
 
-void ui_disc(isk_ui *ui, double cx, double cy, double r, isk_color c)
+void isk__ui_disc(isk_ui *ui, double cx, double cy, double r, isk_color c)
 {
     if (ui->canvas)
         isk_fill_circle_aa(ui->canvas, cx, cy, r, c, ISK_BLEND_OVER);
@@ -81,7 +81,7 @@ static void corner(isk_ui *ui, int x, int y, int rad, double cx, double cy, isk_
         isk_fill_circle_aa(&v, cx - ox, cy - oy, rad, c, ISK_BLEND_OVER);
 }
 
-void ui_round(isk_ui *ui, isk_ui_rect r, int rad, isk_color c)
+void isk__ui_round(isk_ui *ui, isk_ui_rect r, int rad, isk_color c)
 {
     if (!ui->canvas || r.w <= 0 || r.h <= 0)
         return;
@@ -90,15 +90,15 @@ void ui_round(isk_ui *ui, isk_ui_rect r, int rad, isk_color c)
     if (2 * rad > r.h)
         rad = r.h / 2;
     if (rad <= 0) {
-        ui_fill(ui, r, c);
+        isk__ui_fill(ui, r, c);
         return;
     }
     isk_ui_rect mid = {r.x + rad, r.y, r.w - 2 * rad, r.h};
     isk_ui_rect left = {r.x, r.y + rad, rad, r.h - 2 * rad};
     isk_ui_rect right = {r.x + r.w - rad, r.y + rad, rad, r.h - 2 * rad};
-    ui_fill(ui, mid, c);
-    ui_fill(ui, left, c);
-    ui_fill(ui, right, c);
+    isk__ui_fill(ui, mid, c);
+    isk__ui_fill(ui, left, c);
+    isk__ui_fill(ui, right, c);
     const int xr = r.x + r.w - rad, yb = r.y + r.h - rad;
     corner(ui, r.x, r.y, rad, r.x + rad, r.y + rad, c);
     corner(ui, xr, r.y, rad, xr, r.y + rad, c);
@@ -106,35 +106,35 @@ void ui_round(isk_ui *ui, isk_ui_rect r, int rad, isk_color c)
     corner(ui, xr, yb, rad, xr, yb, c);
 }
 
-void ui_round_outline(isk_ui *ui, isk_ui_rect r, int rad, int width, isk_color outline, isk_color fill)
+void isk__ui_round_outline(isk_ui *ui, isk_ui_rect r, int rad, int width, isk_color outline, isk_color fill)
 {
-    ui_round(ui, r, rad, outline);
-    ui_round(ui, isk_ui_inset(r, width), rad > width ? rad - width : 0, fill);
+    isk__ui_round(ui, r, rad, outline);
+    isk__ui_round(ui, isk_ui_inset(r, width), rad > width ? rad - width : 0, fill);
 }
 
 /* ---- text ------------------------------------------------------------------------------ */
 
-const isk_font_metrics *ui_font(const isk_ui *ui)
+const isk_font_metrics *isk__ui_font(const isk_ui *ui)
 {
     const isk_font_metrics *m = isk_font_metrics_of(ui->font);
     return m ? m : isk_font_metrics_of(ISK_FONT_5X8);
 }
 
-int ui_text_y(const isk_ui *ui, isk_ui_rect r)
+int isk__ui_text_y(const isk_ui *ui, isk_ui_rect r)
 {
     /* Capitals and digits (7 font rows of the 5x8 font, 10 of the 6x13): centre those. */
-    return r.y + (r.h - ui_font(ui)->cap_h * ui->scale) / 2;
+    return r.y + (r.h - isk__ui_font(ui)->cap_h * ui->scale) / 2;
 }
 
 isk_ui_rect isk_ui_text_line(const isk_ui *ui, isk_ui_rect r)
 {
     if (!ui)
         return r;
-    const int y = ui_text_y(ui, r);
+    const int y = isk__ui_text_y(ui, r);
     return (isk_ui_rect){r.x, y, r.w, r.y + r.h - y};
 }
 
-int ui_text_x(const isk_ui *ui, isk_ui_rect r, const char *s, isk_ui_align align)
+int isk__ui_text_x(const isk_ui *ui, isk_ui_rect r, const char *s, isk_ui_align align)
 {
     int w = isk_ui_text_width(ui, s);
     if (align == ISK_UI_CENTER)
@@ -144,7 +144,7 @@ int ui_text_x(const isk_ui *ui, isk_ui_rect r, const char *s, isk_ui_align align
     return r.x;
 }
 
-void ui_text_clip(isk_ui *ui, isk_ui_rect clip, int x, int y, const char *s, isk_color c)
+void isk__ui_text_clip(isk_ui *ui, isk_ui_rect clip, int x, int y, const char *s, isk_color c)
 {
     isk_canvas v;
     int ox, oy;
@@ -152,19 +152,19 @@ void ui_text_clip(isk_ui *ui, isk_ui_rect clip, int x, int y, const char *s, isk
         isk_font_draw_text(&v, ui->font, x - ox, y - oy, s, ui->scale, c, ISK_BLEND_OVER);
 }
 
-void ui_text_scaled(isk_ui *ui, isk_ui_rect r, const char *s, isk_color c, int scale)
+void isk__ui_text_scaled(isk_ui *ui, isk_ui_rect r, const char *s, isk_color c, int scale)
 {
     isk_canvas v;
     int ox, oy;
     int w = isk_font_text_width(ui->font, s, scale) - scale;
     if (s && *s && view_of(ui, r, &v, &ox, &oy))
-        isk_font_draw_text(&v, ui->font, r.x + (r.w - w) / 2 - ox, r.y + (r.h - ui_font(ui)->cap_h * scale) / 2 - oy,
+        isk_font_draw_text(&v, ui->font, r.x + (r.w - w) / 2 - ox, r.y + (r.h - isk__ui_font(ui)->cap_h * scale) / 2 - oy,
                            s, scale, c, ISK_BLEND_OVER);
 }
 
-void ui_text_line(isk_ui *ui, isk_ui_rect r, const char *s, isk_color c, isk_ui_align align)
+void isk__ui_text_line(isk_ui *ui, isk_ui_rect r, const char *s, isk_color c, isk_ui_align align)
 {
-    ui_text_clip(ui, r, ui_text_x(ui, r, s, align), ui_text_y(ui, r), s, c);
+    isk__ui_text_clip(ui, r, isk__ui_text_x(ui, r, s, align), isk__ui_text_y(ui, r), s, c);
 }
 
 /* Each line of s placed by `align`, starting at y. */
@@ -177,7 +177,7 @@ static void text_lines(isk_ui *ui, isk_ui_rect r, int y, const char *s, isk_colo
         size_t k = n < sizeof line ? n : sizeof line - 1;
         memcpy(line, s, k);
         line[k] = 0;
-        ui_text_clip(ui, r, ui_text_x(ui, r, line, align), y, line, c);
+        isk__ui_text_clip(ui, r, isk__ui_text_x(ui, r, line, align), y, line, c);
         y += lh;
         s += n;
         if (*s == '\n')
@@ -202,7 +202,7 @@ static void arc_arrow(isk_ui *ui, double cx, double cy, double r, double a0, dou
     const int n = (int)(fabs(a1 - a0) * r / (width * 0.25)) + 2;
     for (int i = 0; i <= n; i++) {
         double a = a0 + (a1 - a0) * i / n;
-        ui_disc(ui, cx + r * cos(a), cy + r * sin(a), width / 2, c);
+        isk__ui_disc(ui, cx + r * cos(a), cy + r * sin(a), width / 2, c);
     }
     /* The head: a triangle across the arc's end, pointing along it. */
     double ex = cx + r * cos(a1), ey = cy + r * sin(a1);
@@ -214,7 +214,7 @@ static void arc_arrow(isk_ui *ui, double cx, double cy, double r, double a0, dou
                       ey + ty * h * 1.3, c, ISK_BLEND_OVER);
 }
 
-void ui_icon(isk_ui *ui, isk_ui_rect r, isk_ui_icon icon, isk_color c)
+void isk__ui_icon(isk_ui *ui, isk_ui_rect r, isk_ui_icon icon, isk_color c)
 {
     if (!ui->canvas)
         return;
@@ -262,14 +262,14 @@ void ui_icon(isk_ui *ui, isk_ui_rect r, isk_ui_icon icon, isk_color c)
 void isk_ui_clear(isk_ui *ui)
 {
     if (ui && ui->canvas)
-        ui_fill(ui, (isk_ui_rect){0, 0, ui->canvas->width, ui->canvas->height}, ui->style.background);
+        isk__ui_fill(ui, (isk_ui_rect){0, 0, ui->canvas->width, ui->canvas->height}, ui->style.background);
 }
 
 void isk_ui_panel(isk_ui *ui, isk_ui_rect r)
 {
     if (!ui)
         return;
-    ui_round(ui, r, 3 * ui->scale, ui->style.panel);
+    isk__ui_round(ui, r, 3 * ui->scale, ui->style.panel);
     if (ui->npanels < ISK_UI_PANELS_MAX)
         ui->panels[ui->npanels++] = r; /* where a message about a field inside may go */
 }
@@ -277,7 +277,7 @@ void isk_ui_panel(isk_ui *ui, isk_ui_rect r)
 void isk_ui_box(isk_ui *ui, isk_ui_rect r)
 {
     if (ui)
-        ui_round(ui, r, 3 * ui->scale, ui->style.box);
+        isk__ui_round(ui, r, 3 * ui->scale, ui->style.box);
 }
 
 void isk_ui_label(isk_ui *ui, isk_ui_rect r, const char *text, isk_ui_align align)
@@ -285,14 +285,14 @@ void isk_ui_label(isk_ui *ui, isk_ui_rect r, const char *text, isk_ui_align alig
     if (!ui || !text)
         return;
     int lines = count_lines(text);
-    int y = ui_text_y(ui, r) - (lines - 1) * isk_ui_line_height(ui) / 2;
-    text_lines(ui, r, y, text, ui->disabled ? ui_dim(ui, ui->style.label) : ui->style.label, align);
+    int y = isk__ui_text_y(ui, r) - (lines - 1) * isk_ui_line_height(ui) / 2;
+    text_lines(ui, r, y, text, ui->disabled ? isk__ui_dim(ui, ui->style.label) : ui->style.label, align);
 }
 
 void isk_ui_text(isk_ui *ui, isk_ui_rect r, const char *text, isk_color color, isk_ui_align align)
 {
     if (ui && text)
-        text_lines(ui, r, r.y, text, ui->disabled ? ui_dim(ui, color) : color, align);
+        text_lines(ui, r, r.y, text, ui->disabled ? isk__ui_dim(ui, color) : color, align);
 }
 
 /* Greedy wrapping by characters of the fixed-width font: words move to the
@@ -304,7 +304,7 @@ int isk_ui_wrap(const isk_ui *ui, const char *text, int width, char *out, size_t
     out[0] = 0;
     if (!ui || !text || !*text)
         return 0;
-    const int per_line = width / (ui_font(ui)->cell_w * ui->scale);
+    const int per_line = width / (isk__ui_font(ui)->cell_w * ui->scale);
     if (per_line <= 4)
         return 0;
     size_t o = 0;
@@ -358,13 +358,13 @@ void isk_ui_swatches(isk_ui *ui, isk_ui_rect r, const isk_color *colors, int n)
     if (!ui || !ui->canvas || !colors || n <= 0 || r.w <= 0 || r.h <= 0)
         return;
     const int s = ui->scale, sq = 4 * s;
-    ui_fill(ui, r, ui->style.border);
+    isk__ui_fill(ui, r, ui->style.border);
     isk_ui_rect in = isk_ui_inset(r, s);
     /* the checkerboard, in squares from the rectangle's corner */
     for (int y = 0; y < in.h; y += sq)
         for (int x = 0; x < in.w; x += sq) {
             isk_ui_rect c = {in.x + x, in.y + y, x + sq > in.w ? in.w - x : sq, y + sq > in.h ? in.h - y : sq};
-            ui_fill(ui, c, ((x / sq + y / sq) & 1) ? isk_rgba(0x99, 0x99, 0x99, 255) : isk_rgba(0x66, 0x66, 0x66, 255));
+            isk__ui_fill(ui, c, ((x / sq + y / sq) & 1) ? isk_rgba(0x99, 0x99, 0x99, 255) : isk_rgba(0x66, 0x66, 0x66, 255));
         }
     for (int i = 0; i < n; i++) {
         int x0 = (int)((long)in.w * i / n), x1 = (int)((long)in.w * (i + 1) / n);

@@ -99,7 +99,7 @@ static isk_ui_field_result edit_key(isk_ui *ui, int key, unsigned flags)
  * fits; while editing, scrolled so the cursor stays in view). */
 static int text_x(const isk_ui *ui, isk_ui_rect inner, const char *shown, int editing)
 {
-    const int s = ui->scale, cell = ui_font(ui)->cell_w * s;
+    const int s = ui->scale, cell = isk__ui_font(ui)->cell_w * s;
     int tw = isk_ui_text_width(ui, shown);
     int x0 = tw <= inner.w ? inner.x + (inner.w - tw) / 2 : inner.x;
     if (editing) {
@@ -117,13 +117,13 @@ isk_ui_field_result isk_ui_field(isk_ui *ui, const char *id, isk_ui_rect r, cons
         return ISK_UI_FIELD_IDLE;
     if (!value)
         value = "";
-    const uint32_t h = ui_id(id);
-    const int s = ui->scale, pad = 4 * s, cell = ui_font(ui)->cell_w * s;
+    const uint32_t h = isk__ui_id(id);
+    const int s = ui->scale, pad = 4 * s, cell = isk__ui_font(ui)->cell_w * s;
     const int readonly = (flags & ISK_UI_FIELD_READONLY) != 0;
-    ui_record(ui, id, r);
+    isk__ui_record(ui, id, r);
     ui_state st = {0, 0, 0, 0, 0};
     if (!readonly)
-        st = ui_interact(ui, h, r);
+        st = isk__ui_interact(ui, h, r);
     isk_ui_field_result result = ISK_UI_FIELD_IDLE;
 
     if (!readonly && !ui->disabled && ui->tab_pending && ui->focus != h) {
@@ -177,16 +177,16 @@ isk_ui_field_result isk_ui_field(isk_ui *ui, const char *id, isk_ui_rect r, cons
     const int erred = ui->error_id == h, still_editing = ui->focus == h;
     isk_color edge = erred ? ui->style.error : still_editing ? ui->style.focus : ui->style.border;
     if (st.hover && !still_editing && !erred)
-        edge = ui_shade(edge, 24);
+        edge = isk__ui_shade(edge, 24);
     isk_color bg = readonly ? ui->style.field_readonly : ui->style.field;
     if (ui->disabled) {
-        edge = ui_dim(ui, edge);
-        bg = ui_dim(ui, bg);
+        edge = isk__ui_dim(ui, edge);
+        bg = isk__ui_dim(ui, bg);
     }
-    ui_round_outline(ui, r, 2 * s, s, edge, bg);
+    isk__ui_round_outline(ui, r, 2 * s, s, edge, bg);
     const char *shown = still_editing ? ui->edit : value;
     isk_color ink = readonly || ui->disabled ? ui->style.dim : ui->style.text;
-    const int x0 = text_x(ui, inner, shown, still_editing), ty = ui_text_y(ui, r);
+    const int x0 = text_x(ui, inner, shown, still_editing), ty = isk__ui_text_y(ui, r);
     const int line = isk_ui_line_height(ui);
     isk_ui_rect clip = isk_ui_inset(r, s);
     if (still_editing && sel_start(ui) != sel_end(ui)) {
@@ -195,14 +195,14 @@ isk_ui_field_result isk_ui_field(isk_ui *ui, const char *id, isk_ui_rect r, cons
         a = a < clip.x ? clip.x : a;
         b = b > clip.x + clip.w ? clip.x + clip.w : b;
         if (b > a)
-            ui_fill(ui, (isk_ui_rect){a, ty - s, b - a, line}, ui->style.selection);
+            isk__ui_fill(ui, (isk_ui_rect){a, ty - s, b - a, line}, ui->style.selection);
     }
-    ui_text_clip(ui, clip, x0, ty, shown, ink);
+    isk__ui_text_clip(ui, clip, x0, ty, shown, ink);
     if (still_editing && sel_start(ui) == sel_end(ui)) {
         int cx = x0 + ui->cursor * cell - s;
         if (cx < inner.x - s)
             cx = inner.x - s;
-        ui_fill(ui, (isk_ui_rect){cx, ty - s, s, line}, ui->style.focus);
+        isk__ui_fill(ui, (isk_ui_rect){cx, ty - s, s, line}, ui->style.focus);
     }
     if (erred)
         ui->error_rect = r;
@@ -213,7 +213,7 @@ void isk_ui_field_error(isk_ui *ui, const char *id, const char *message)
 {
     if (!ui || !id)
         return;
-    const uint32_t h = ui_id(id);
+    const uint32_t h = isk__ui_id(id);
     snprintf(ui->error, sizeof ui->error, "%s", message ? message : "refused");
     snprintf(ui->error_name, sizeof ui->error_name, "%s", id);
     ui->error_id = h;
@@ -237,7 +237,7 @@ const char *isk_ui_field_message_text(const isk_ui *ui, const char **id_out)
 
 int isk_ui_field_message(isk_ui *ui, const char *id, isk_ui_rect *area)
 {
-    if (!ui || !area || !ui->error_id || !ui->error[0] || (id && ui_id(id) != ui->error_id) ||
+    if (!ui || !area || !ui->error_id || !ui->error[0] || (id && isk__ui_id(id) != ui->error_id) ||
         (!id && ui->error_placed))
         return 0;
     /* In a box with the error's outline: the text wrapped inside it. */
@@ -249,7 +249,7 @@ int isk_ui_field_message(isk_ui *ui, const char *id, isk_ui_rect *area)
     const int h = n * isk_ui_line_height(ui) + 2 * pad - s;
     isk_ui_rect box = isk_ui_cut_top(area, h);
     isk_ui_cut_top(area, isk_ui_px(ui, 4));
-    ui_round_outline(ui, box, 2 * s, s, ui->style.error, ui->style.panel);
+    isk__ui_round_outline(ui, box, 2 * s, s, ui->style.error, ui->style.panel);
     isk_ui_text(ui, isk_ui_inset(box, pad), lines, ui->style.error, ISK_UI_LEFT);
     ui->error_placed = 1;
     return h + isk_ui_px(ui, 4);

@@ -1,7 +1,7 @@
 /* SPDX-License-Identifier: MIT */
 /* The widgets that are not text fields: buttons, toggles, slider, radio
  * group, list, area (see iskra/ui.h).  Each records its rectangle under its
- * name, asks ui_interact what the pointer does to it, draws itself in the
+ * name, asks isk__ui_interact what the pointer does to it, draws itself in the
  * state that results, and returns what happened. */
 #include <math.h>
 #include <stdio.h>
@@ -12,26 +12,26 @@
 
 static isk_color hover_shade(isk_color c, ui_state st)
 {
-    return st.active && st.hover ? ui_shade(c, -18) : st.hover || st.active ? ui_shade(c, 20) : c;
+    return st.active && st.hover ? isk__ui_shade(c, -18) : st.hover || st.active ? isk__ui_shade(c, 20) : c;
 }
 
 static isk_color text_colour(const isk_ui *ui, isk_color c)
 {
-    return ui->disabled ? ui_dim(ui, c) : c;
+    return ui->disabled ? isk__ui_dim(ui, c) : c;
 }
 
 int isk_ui_button(isk_ui *ui, const char *id, isk_ui_rect r, const char *label)
 {
     if (!ui || !id)
         return 0;
-    ui_record(ui, id, r);
-    ui_state st = ui_interact(ui, ui_id(id), r);
+    isk__ui_record(ui, id, r);
+    ui_state st = isk__ui_interact(ui, isk__ui_id(id), r);
     const int s = ui->scale;
     isk_color bg = hover_shade(ui->style.button, st);
-    ui_round_outline(ui, r, 3 * s, s, ui->disabled ? ui_dim(ui, ui->style.border) : ui->style.border,
-                     ui->disabled ? ui_dim(ui, bg) : bg);
+    isk__ui_round_outline(ui, r, 3 * s, s, ui->disabled ? isk__ui_dim(ui, ui->style.border) : ui->style.border,
+                     ui->disabled ? isk__ui_dim(ui, bg) : bg);
     if (label)
-        ui_text_line(ui, r, label, text_colour(ui, ui->style.text), ISK_UI_CENTER);
+        isk__ui_text_line(ui, r, label, text_colour(ui, ui->style.text), ISK_UI_CENTER);
     return st.clicked;
 }
 
@@ -40,13 +40,13 @@ int isk_ui_icon_button(isk_ui *ui, const char *id, isk_ui_rect r, isk_ui_icon ic
 {
     if (!ui || !id)
         return 0;
-    ui_record(ui, id, r);
-    ui_state st = ui_interact(ui, ui_id(id), r);
+    isk__ui_record(ui, id, r);
+    ui_state st = isk__ui_interact(ui, isk__ui_id(id), r);
     const int s = ui->scale;
     isk_color bg = hover_shade(color, st);
-    ui_round(ui, r, 3 * s, ui->disabled ? ui_dim(ui, bg) : bg);
+    isk__ui_round(ui, r, 3 * s, ui->disabled ? isk__ui_dim(ui, bg) : bg);
     isk_ui_rect pic = r;
-    const int cell_h = ui_font(ui)->cell_h, line = cell_h * s;
+    const int cell_h = isk__ui_font(ui)->cell_h, line = cell_h * s;
     if (label && *label && r.h >= 3 * line) {
         /* The label under the picture, a size smaller when it would not fit. */
         int ts = s;
@@ -54,9 +54,9 @@ int isk_ui_icon_button(isk_ui *ui, const char *id, isk_ui_rect r, isk_ui_icon ic
             ts--;
         isk_ui_rect under = isk_ui_cut_bottom(&pic, cell_h * ts + 2 * s);
         isk_ui_rect t = isk_ui_cut_top(&under, cell_h * ts);
-        ui_text_scaled(ui, t, label, text_colour(ui, ui->style.icon), ts);
+        isk__ui_text_scaled(ui, t, label, text_colour(ui, ui->style.icon), ts);
     }
-    ui_icon(ui, pic, icon, text_colour(ui, ui->style.icon));
+    isk__ui_icon(ui, pic, icon, text_colour(ui, ui->style.icon));
     return st.clicked;
 }
 
@@ -66,22 +66,22 @@ static void thick_line(isk_ui *ui, double x0, double y0, double x1, double y1, d
     double len = hypot(x1 - x0, y1 - y0);
     int n = (int)(len / (w * 0.25)) + 1;
     for (int i = 0; i <= n; i++)
-        ui_disc(ui, x0 + (x1 - x0) * i / n, y0 + (y1 - y0) * i / n, w / 2, c);
+        isk__ui_disc(ui, x0 + (x1 - x0) * i / n, y0 + (y1 - y0) * i / n, w / 2, c);
 }
 
 int isk_ui_toggle(isk_ui *ui, const char *id, isk_ui_rect r, const char *label, int *on)
 {
     if (!ui || !id || !on)
         return 0;
-    ui_record(ui, id, r);
-    ui_state st = ui_interact(ui, ui_id(id), r);
+    isk__ui_record(ui, id, r);
+    ui_state st = isk__ui_interact(ui, isk__ui_id(id), r);
     const int s = ui->scale, box = 11 * s;
     isk_ui_rect b = {r.x, r.y + (r.h - box) / 2, box, box};
     if (st.clicked)
         *on = !*on;
     isk_color edge = hover_shade(*on ? ui->style.accent : ui->style.border, st);
-    ui_round_outline(ui, b, 2 * s, s, ui->disabled ? ui_dim(ui, edge) : edge,
-                     *on ? (ui->disabled ? ui_dim(ui, ui->style.accent) : ui->style.accent) : ui->style.field);
+    isk__ui_round_outline(ui, b, 2 * s, s, ui->disabled ? isk__ui_dim(ui, edge) : edge,
+                     *on ? (ui->disabled ? isk__ui_dim(ui, ui->style.accent) : ui->style.accent) : ui->style.field);
     if (*on) {
         const isk_color mark = text_colour(ui, ui->style.icon);
         thick_line(ui, b.x + 2.5 * s, b.y + 5.5 * s, b.x + 4.5 * s, b.y + 8 * s, 1.6 * s, mark);
@@ -90,7 +90,7 @@ int isk_ui_toggle(isk_ui *ui, const char *id, isk_ui_rect r, const char *label, 
     if (label) {
         isk_ui_rect t = r;
         isk_ui_cut_left(&t, box + 4 * s);
-        ui_text_line(ui, t, label, text_colour(ui, ui->style.label), ISK_UI_LEFT);
+        isk__ui_text_line(ui, t, label, text_colour(ui, ui->style.label), ISK_UI_LEFT);
     }
     return st.clicked;
 }
@@ -99,29 +99,29 @@ int isk_ui_toggle_bar(isk_ui *ui, const char *id, isk_ui_rect r, int *on)
 {
     if (!ui || !id || !on)
         return 0;
-    ui_record(ui, id, r);
-    ui_state st = ui_interact(ui, ui_id(id), r);
+    isk__ui_record(ui, id, r);
+    ui_state st = isk__ui_interact(ui, isk__ui_id(id), r);
     if (st.clicked)
         *on = !*on;
     const int s = ui->scale;
     isk_color c = hover_shade(ui->style.bar_on, st);
     if (ui->disabled)
-        c = ui_dim(ui, c);
+        c = isk__ui_dim(ui, c);
     if (*on) {
-        ui_round(ui, r, 2 * s, c);
+        isk__ui_round(ui, r, 2 * s, c);
         return st.clicked;
     }
     /* Off: a dashed outline of the bar. */
     const int dash = 3 * s, gap = 2 * s, t = s;
     for (int x = r.x; x < r.x + r.w; x += dash + gap) {
         int w = x + dash > r.x + r.w ? r.x + r.w - x : dash;
-        ui_fill(ui, (isk_ui_rect){x, r.y, w, t}, c);
-        ui_fill(ui, (isk_ui_rect){x, r.y + r.h - t, w, t}, c);
+        isk__ui_fill(ui, (isk_ui_rect){x, r.y, w, t}, c);
+        isk__ui_fill(ui, (isk_ui_rect){x, r.y + r.h - t, w, t}, c);
     }
     for (int y = r.y; y < r.y + r.h; y += dash + gap) {
         int h = y + dash > r.y + r.h ? r.y + r.h - y : dash;
-        ui_fill(ui, (isk_ui_rect){r.x, y, t, h}, c);
-        ui_fill(ui, (isk_ui_rect){r.x + r.w - t, y, t, h}, c);
+        isk__ui_fill(ui, (isk_ui_rect){r.x, y, t, h}, c);
+        isk__ui_fill(ui, (isk_ui_rect){r.x + r.w - t, y, t, h}, c);
     }
     return st.clicked;
 }
@@ -175,8 +175,8 @@ static double round_3(double v, double min, double max, int whole)
 
 static int slider(isk_ui *ui, const char *id, isk_ui_rect r, double *value, const track *t, double step, int whole)
 {
-    ui_record(ui, id, r);
-    ui_state st = ui_interact(ui, ui_id(id), r);
+    isk__ui_record(ui, id, r);
+    ui_state st = isk__ui_interact(ui, isk__ui_id(id), r);
     const int s = ui->scale, knob = 7 * s;
     const double x0 = r.x + knob, x1 = r.x + r.w - knob;
     const double min = t->min, max = t->max;
@@ -212,11 +212,11 @@ static int slider(isk_ui *ui, const char *id, isk_ui_rect r, double *value, cons
     left.w = (int)lround(kx) - bar.x;
     right.x = bar.x + left.w;
     right.w = bar.w - left.w;
-    ui_round(ui, left, 2 * s, ui->disabled ? ui_dim(ui, ui->style.accent) : ui->style.accent);
-    ui_round(ui, right, 2 * s, ui->disabled ? ui_dim(ui, ui->style.track) : ui->style.track);
+    isk__ui_round(ui, left, 2 * s, ui->disabled ? isk__ui_dim(ui, ui->style.accent) : ui->style.accent);
+    isk__ui_round(ui, right, 2 * s, ui->disabled ? isk__ui_dim(ui, ui->style.track) : ui->style.track);
     isk_color k = hover_shade(ui->style.knob, st);
-    ui_disc(ui, kx, cy, knob, text_colour(ui, ui->style.track));
-    ui_disc(ui, kx, cy, knob - 1.5 * s, ui->disabled ? ui_dim(ui, k) : k);
+    isk__ui_disc(ui, kx, cy, knob, text_colour(ui, ui->style.track));
+    isk__ui_disc(ui, kx, cy, knob - 1.5 * s, ui->disabled ? isk__ui_dim(ui, k) : k);
     return changed;
 }
 
@@ -243,7 +243,7 @@ int isk_ui_radio(isk_ui *ui, const char *id, isk_ui_rect r, const char *const *l
 {
     if (!ui || !id || !labels || !selected || n <= 0)
         return 0;
-    ui_record(ui, id, r);
+    isk__ui_record(ui, id, r);
     const int cols = per_row > 0 && per_row < n ? per_row : n, rows = (n + cols - 1) / cols;
     const int s = ui->scale, ring = 5 * s;
     /* One row: each option as wide as its label, the room left shared out
@@ -263,9 +263,9 @@ int isk_ui_radio(isk_ui *ui, const char *id, isk_ui_rect r, const char *const *l
             x += cell.w;
         }
         char name[ISK_UI_ID_MAX];
-        ui_sub_name(name, sizeof name, id, labels[i], i);
-        ui_record(ui, name, cell);
-        ui_state st = ui_interact(ui, ui_id(name), cell);
+        isk__ui_sub_name(name, sizeof name, id, labels[i], i);
+        isk__ui_record(ui, name, cell);
+        ui_state st = isk__ui_interact(ui, isk__ui_id(name), cell);
         if (st.clicked && *selected != i) {
             *selected = i;
             changed = 1;
@@ -273,13 +273,13 @@ int isk_ui_radio(isk_ui *ui, const char *id, isk_ui_rect r, const char *const *l
         const int on = *selected == i;
         const double cx = cell.x + ring, cy = cell.y + cell.h / 2.0;
         isk_color edge = hover_shade(on ? ui->style.accent : ui->style.border, st);
-        ui_disc(ui, cx, cy, ring, ui->disabled ? ui_dim(ui, edge) : edge);
-        ui_disc(ui, cx, cy, ring - 1.25 * s, on ? ui->style.track : ui->style.field);
+        isk__ui_disc(ui, cx, cy, ring, ui->disabled ? isk__ui_dim(ui, edge) : edge);
+        isk__ui_disc(ui, cx, cy, ring - 1.25 * s, on ? ui->style.track : ui->style.field);
         if (on)
-            ui_disc(ui, cx, cy, ring - 2.5 * s, ui->disabled ? ui_dim(ui, ui->style.accent) : ui->style.accent);
+            isk__ui_disc(ui, cx, cy, ring - 2.5 * s, ui->disabled ? isk__ui_dim(ui, ui->style.accent) : ui->style.accent);
         isk_ui_rect t = cell;
         isk_ui_cut_left(&t, 2 * ring + 3 * s);
-        ui_text_line(ui, t, labels[i], text_colour(ui, ui->style.label), ISK_UI_LEFT);
+        isk__ui_text_line(ui, t, labels[i], text_colour(ui, ui->style.label), ISK_UI_LEFT);
     }
     return changed;
 }
@@ -293,9 +293,9 @@ static void scroll_bar(isk_ui *ui, isk_ui_rect bar, int *scroll, int n, int visi
         *scroll = max_scroll;
     if (*scroll < 0)
         *scroll = 0;
-    ui_fill(ui, bar, ui->style.box);
+    isk__ui_fill(ui, bar, ui->style.box);
     int th = bar.h * visible / n, ty = bar.y + (bar.h - th) * *scroll / max_scroll;
-    ui_round(ui, (isk_ui_rect){bar.x + s, ty, bar.w - 2 * s, th}, 2 * s, ui->style.bar_on);
+    isk__ui_round(ui, (isk_ui_rect){bar.x + s, ty, bar.w - 2 * s, th}, 2 * s, ui->style.bar_on);
     if (held && isk_ui_contains(bar, ui->mouse_x, ui->mouse_y))
         *scroll = (int)((long)(ui->mouse_y - bar.y) * (max_scroll + 1) / (bar.h > 0 ? bar.h : 1));
     if (*scroll > max_scroll)
@@ -307,12 +307,12 @@ int isk_ui_list(isk_ui *ui, const char *id, isk_ui_rect r, const char *const *ro
 {
     if (!ui || !id || !selected || !scroll || n < 0 || (n > 0 && !rows))
         return 0;
-    ui_record(ui, id, r);
+    isk__ui_record(ui, id, r);
     const int s = ui->scale, rh = isk_ui_row_height(ui);
-    ui_round_outline(ui, r, 2 * s, s, ui->style.border, ui->style.field);
+    isk__ui_round_outline(ui, r, 2 * s, s, ui->style.border, ui->style.field);
     isk_ui_rect in = isk_ui_inset(r, s);
     const int visible = in.h / rh > 0 ? in.h / rh : 1;
-    ui_state whole = ui_interact(ui, ui_id(id), r);
+    ui_state whole = isk__ui_interact(ui, isk__ui_id(id), r);
     if (whole.hover && ui->wheel)
         *scroll -= ui->wheel;
     isk_ui_rect body = in;
@@ -327,20 +327,20 @@ int isk_ui_list(isk_ui *ui, const char *id, isk_ui_rect r, const char *const *ro
     for (int i = *scroll; i < n && i < *scroll + visible; i++) {
         isk_ui_rect row = {body.x, body.y + (i - *scroll) * rh, body.w, rh};
         char name[ISK_UI_ID_MAX];
-        ui_sub_name(name, sizeof name, id, NULL, i);
-        ui_record(ui, name, row);
+        isk__ui_sub_name(name, sizeof name, id, NULL, i);
+        isk__ui_record(ui, name, row);
         int over = !ui->disabled && isk_ui_hovered(ui, row);
         if (whole.clicked && over && *selected != i) {
             *selected = i;
             changed = 1;
         }
         if (*selected == i)
-            ui_fill(ui, row, ui->disabled ? ui_dim(ui, ui->style.accent) : ui->style.accent);
+            isk__ui_fill(ui, row, ui->disabled ? isk__ui_dim(ui, ui->style.accent) : ui->style.accent);
         else if (over)
-            ui_fill(ui, row, ui_shade(ui->style.field, 16));
+            isk__ui_fill(ui, row, isk__ui_shade(ui->style.field, 16));
         isk_ui_rect t = isk_ui_inset(row, 0);
         isk_ui_cut_left(&t, 4 * s);
-        ui_text_line(ui, t, rows[i], text_colour(ui, ui->style.text), ISK_UI_LEFT);
+        isk__ui_text_line(ui, t, rows[i], text_colour(ui, ui->style.text), ISK_UI_LEFT);
     }
     return changed;
 }
@@ -349,8 +349,8 @@ int isk_ui_scrollbar(isk_ui *ui, const char *id, isk_ui_rect r, int *first, int 
 {
     if (!ui || !id || !first)
         return 0;
-    ui_record(ui, id, r);
-    ui_state st = ui_interact(ui, ui_id(id), r);
+    isk__ui_record(ui, id, r);
+    ui_state st = isk__ui_interact(ui, isk__ui_id(id), r);
     const int before = *first;
     if (total <= visible || visible < 1) {
         *first = 0;
@@ -364,17 +364,17 @@ int isk_ui_selectable(isk_ui *ui, const char *id, isk_ui_rect r, const char *lab
 {
     if (!ui || !id)
         return 0;
-    ui_record(ui, id, r);
-    ui_state st = ui_interact(ui, ui_id(id), r);
+    isk__ui_record(ui, id, r);
+    ui_state st = isk__ui_interact(ui, isk__ui_id(id), r);
     const int s = ui->scale;
     if (selected)
-        ui_fill(ui, r, ui->disabled ? ui_dim(ui, ui->style.accent) : ui->style.accent);
+        isk__ui_fill(ui, r, ui->disabled ? isk__ui_dim(ui, ui->style.accent) : ui->style.accent);
     else if (st.hover)
-        ui_fill(ui, r, ui_shade(ui->style.field, 16));
+        isk__ui_fill(ui, r, isk__ui_shade(ui->style.field, 16));
     isk_ui_rect t = r;
     isk_ui_cut_left(&t, 4 * s);
     if (label)
-        ui_text_line(ui, t, label, text_colour(ui, ui->style.text), ISK_UI_LEFT);
+        isk__ui_text_line(ui, t, label, text_colour(ui, ui->style.text), ISK_UI_LEFT);
     return st.clicked;
 }
 
@@ -383,8 +383,8 @@ isk_ui_area_state isk_ui_area(isk_ui *ui, const char *id, isk_ui_rect r)
     isk_ui_area_state a = {0, 0, 0, 0, 0, 0};
     if (!ui || !id)
         return a;
-    ui_record(ui, id, r);
-    ui_state st = ui_interact(ui, ui_id(id), r);
+    isk__ui_record(ui, id, r);
+    ui_state st = isk__ui_interact(ui, isk__ui_id(id), r);
     a.hover = st.hover;
     a.pressed = st.pressed;
     a.down = st.active && ui->mouse_down;

@@ -297,7 +297,7 @@ int cmd_keys(int argc, char **argv)
             const char *names[ISK_SECTION_COUNT];
             for (int s = 0; s < ISK_SECTION_COUNT; s++)
                 names[s] = isk_section_name((isk_section_kind)s);
-            const char *guess = scv_suggest(argv[i], names, ISK_SECTION_COUNT);
+            const char *guess = isk__scv_suggest(argv[i], names, ISK_SECTION_COUNT);
             fprintf(stderr, "iskra keys: no section '%s'%s%s%s (%s)\n", argv[i], guess ? "; did you mean '" : "",
                     guess ? guess : "", guess ? "'?" : "", sections);
             return 2;

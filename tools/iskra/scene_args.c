@@ -75,7 +75,7 @@ int scene_args_take(scene_args *a, int argc, char **argv, int *i)
     if ((r = arg_value(a->cmd, argc, argv, i, "--seed", &v)) != 0) {
         if (r < 0)
             return -1;
-        if (!scv_u64(v, &a->seed)) {
+        if (!isk__scv_u64(v, &a->seed)) {
             fprintf(stderr, "iskra %s: --seed: expected a whole number between 0 and 18446744073709551615, got \"%s\"\n",
                     a->cmd, v);
             return -1;
