@@ -23,10 +23,10 @@
 #include <string.h>
 
 #include "iskra/blend.h"
+#include "core/cpu.h"
 #include "iskra/blend_inline.h" /* ISK__INLINE, isk__px: the rule for one pixel */
-
-#if defined(__SSE2__)
-#include <emmintrin.h>
+#if ISK__CPU_SSE2
+#include "raster/blend_px_sse2.h"
 #endif
 
 /* n pixels from d set to s (ISK_BLEND_REPLACE, whatever the source alpha):
@@ -134,16 +134,8 @@ static ISK__INLINE uint64_t isk__div255_lanes(uint64_t x)
  * lanes p and the weight inv = 255 - a'. */
 static ISK__INLINE void isk__over_opaque_lanes(uint8_t *d, uint64_t p, uint32_t inv)
 {
-#if defined(__SSE2__)
-    /* the same lanes in SSE2 (x86: the u64's 16-bit lanes are r g b a in
-     * order); div255 as the high half of (x + 128) * 257 */
-    uint32_t d32;
-    memcpy(&d32, d, 4);
-    __m128i D = _mm_unpacklo_epi8(_mm_cvtsi32_si128((int)d32), _mm_setzero_si128());
-    __m128i x = _mm_add_epi16(_mm_mullo_epi16(D, _mm_set1_epi16((short)inv)), _mm_cvtsi64_si128((long long)p));
-    x = _mm_mulhi_epu16(_mm_add_epi16(x, _mm_set1_epi16(128)), _mm_set1_epi16(257));
-    d32 = (uint32_t)_mm_cvtsi128_si32(_mm_packus_epi16(x, x));
-    memcpy(d, &d32, 4);
+#if ISK__CPU_SSE2
+    isk__over_opaque_lanes_sse2(d, p, inv); /* the same lanes in one SSE2 register */
 #else
     uint64_t x = (uint64_t)d[0] | (uint64_t)d[1] << 16 | (uint64_t)d[2] << 32 | (uint64_t)255u << 48;
     x = isk__div255_lanes(x * inv + p);
@@ -176,8 +168,8 @@ static ISK__INLINE void isk__px_lut(uint8_t *d, const isk__cov_lut *t, uint32_t 
         uint32_t v, inc;
         memcpy(&v, d, 4);
         memcpy(&inc, t->add[cov], 4);
-#if defined(__SSE2__)
-        v = (uint32_t)_mm_cvtsi128_si32(_mm_adds_epu8(_mm_cvtsi32_si128((int)v), _mm_cvtsi32_si128((int)inc)));
+#if ISK__CPU_SSE2
+        v = isk__sat_add_u8x4_sse2(v, inc);
 #else
         v = isk__sat_add_u8x4(v, inc);
 #endif

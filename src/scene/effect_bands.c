@@ -48,7 +48,7 @@
 
 #include "effect_internal.h"
 #include "iskra/draw.h"
-#include "raster/span_simd.h"
+#include "raster/span.h"
 #include "sim/pool.h"
 #include "view/world_batch.h"
 
