@@ -68,7 +68,7 @@ Test(KERNEL_SUITE, span_cov_equals_blend_pixel_cov)
         isk_blend mode = K_MODES[isk_rng_below(&r, 3)];
         isk__span_cov(d0, cov, n, col, mode);
         for (int i = 0; i < n; i++)
-            ref_blend_pixel_cov(d1 + 4 * i, col, cov[i], mode);
+            isk__rule_pixel_cov(d1 + 4 * i, col, cov[i], mode);
         cr_assert(memcmp(d0, d1, sizeof d0) == 0, "row %d (n %d, mode %d)", t, n, mode);
     }
 }
@@ -162,7 +162,7 @@ Test(KERNEL_SUITE, avx2_kernels_equal_the_rule)
             isk_blend mode = K_MODES[isk_rng_below(&r, 3)];
             k_cov_avx2(d0, cov, n, col, mode);
             for (int i = 0; i < n; i++)
-                ref_blend_pixel_cov(d1 + 4 * i, col, cov[i], mode);
+                isk__rule_pixel_cov(d1 + 4 * i, col, cov[i], mode);
         } else {
             /* a baked colour's increments (as isk_sprite_init makes them) */
             for (int i = 0; i < n; i++) {
@@ -178,7 +178,7 @@ Test(KERNEL_SUITE, avx2_kernels_equal_the_rule)
             else
                 k_over_inc_avx2(d0, inc, n, col);
             for (int i = 0; i < n; i++)
-                ref_blend_pixel_cov(d1 + 4 * i, col, cov[i], mode);
+                isk__rule_pixel_cov(d1 + 4 * i, col, cov[i], mode);
         }
         cr_assert(memcmp(d0, d1, sizeof d0) == 0, "row %d (n %d, kind %d)", t, n, kind);
     }

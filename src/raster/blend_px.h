@@ -2,16 +2,18 @@
 /* src/raster/blend_px.h — the blend rules of iskra/blend.h as inline kernels,
  * one per mode, for the primitives' inner loops.
  *
- * The rule for one pixel, isk__px, is in iskra/blend_inline.h (public, so
- * that isk_draw_pixel can be inlined into its callers' loops); the
- * coverage and table forms built on it are here.  isk_blend_pixel /
+ * The rule for one pixel is raster/blend_rule.h's; its fast form isk__px
+ * is in iskra/blend_inline.h (public, so that isk_draw_pixel can be inlined
+ * into its callers' loops), and the library's kernels run isk__blend_px,
+ * that form or its SSE2 twin; the coverage and table forms built on it
+ * are here.  isk_blend_pixel /
  * isk_blend_pixel_cov (blend.c) are thin wrappers, and every primitive calls these with the
  * mode as a compile-time constant, so the switch below folds away and each
  * primitive gets one loop per mode (AGG's "blender as template argument",
  * in C).  The usual shape is
  *
  *     static ISK__INLINE void fill_row(uint8_t *d, int n, isk_color s, isk_blend mode)
- *     { for (...) isk__px(d, s, mode); }           // generic in mode
+ *     { for (...) isk__blend_px(d, s, mode); }     // generic in mode
  *     ISK__BLEND_DISPATCH(mode, fill_row, d, n, s); // one call per mode
  *
  * Nothing here allocates, fails or keeps state.
@@ -61,6 +63,29 @@ static ISK__INLINE void isk__fill_span(uint8_t *d, size_t n, isk_color s)
         }                                                   \
     } while (0)
 
+/* One pixel, as the library's kernels blend it: iskra/blend_inline.h's
+ * isk__px (plain C, what a program's inlined isk_draw_pixel runs), or
+ * where the build has SSE2 its twin (blend_px_sse2.h), which does the four
+ * channels in one register: the same bytes, the rule of
+ * raster/blend_rule.h. */
+static ISK__INLINE void isk__blend_px(uint8_t *d, isk_color s, isk_blend mode)
+{
+#if ISK__CPU_SSE2
+    isk__px_sse2(d, s, mode);
+#else
+    isk__px(d, s, mode);
+#endif
+}
+
+static ISK__INLINE void isk__blend_px_over(uint8_t *d, isk_color s)
+{
+#if ISK__CPU_SSE2
+    isk__px_over_sse2(d, s);
+#else
+    isk__px_over(d, s);
+#endif
+}
+
 /* The source alpha scaled by coverage first; coverage 0 leaves the pixel
  * alone in every mode. */
 static ISK__INLINE void isk__px_cov(uint8_t *d, isk_color s, uint32_t coverage, isk_blend mode)
@@ -68,7 +93,7 @@ static ISK__INLINE void isk__px_cov(uint8_t *d, isk_color s, uint32_t coverage, 
     if (coverage == 0u)
         return;
     s.a = (uint8_t)isk_div255((uint32_t)s.a * coverage);
-    isk__px(d, s, mode);
+    isk__blend_px(d, s, mode);
 }
 
 /* ---- a colour prepared for many coverage values --------------------------
@@ -160,7 +185,7 @@ static ISK__INLINE void isk__px_lut(uint8_t *d, const isk__cov_lut *t, uint32_t 
         } else {
             isk_color s = t->col;
             s.a = t->alpha[cov];
-            isk__px_over(d, s);
+            isk__blend_px_over(d, s);
         }
         break;
     case ISK_BLEND_ADD: {

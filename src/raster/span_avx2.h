@@ -133,7 +133,7 @@ static ISK__INLINE ISK__AVX2_FN void isk__span_add_bytes_avx2(uint8_t *d, const 
 /* Source-over of a baked sprite row from its additive increments: byte 3
  * of each pixel's increments is its a' (iskra/sprite.h), spread over the
  * four channels by one byte shuffle; out = div255(c a' + d (255 - a')) on
- * opaque destinations, isk__px_over with alpha a' elsewhere (the same as
+ * opaque destinations, isk__blend_px_over with alpha a' elsewhere (the same as
  * isk__px_cov with the mask byte, whose a' this is).  The constants are
  * built once per sprite (isk__over_k) and passed down. */
 typedef struct isk__over_k {
@@ -162,7 +162,7 @@ static ISK__INLINE ISK__AVX2_FN void isk__over_inc_fallback(uint8_t *d, const ui
     for (int i = 0; i < n; i++) {
         isk_color s = col;
         s.a = inc[4 * i + 3];
-        isk__px_over(d + 4 * i, s);
+        isk__blend_px_over(d + 4 * i, s);
     }
 }
 

@@ -24,7 +24,7 @@
  * transforms each point and finds its pixel (prefetching it: a random
  * access the hardware cannot guess), a second blends in index order.  The
  * colour is prepared once: its coverage-255 table entry, since
- * isk__px_lut(d, t, 255, mode) is isk__px(d, col, mode) (div255(a*255) = a). */
+ * isk__px_lut(d, t, 255, mode) is isk__blend_px(d, col, mode) (div255(a*255) = a). */
 #define PIXEL_BLOCK 64
 
 /* The batch's k-th point: k itself, or the k-th entry of a list of indices
