@@ -21,9 +21,12 @@
  * -ffp-contract=off holds in target functions too); tests compare them.
  *
  * The switches, 1 where this build compiles the twins of that kind:
- *   ISK__CPU_SSE2     x86 with SSE2 (always on x86-64)
- *   ISK__CPU_VECTOR   no SSE2, but GCC >= 9 or Clang on a little-endian
- *                     target (the byte-packing of the span kernels)
+ *   ISK__CPU_SSE2     x86-64 (SSE2 is part of it; the twins use its 64-bit
+ *                     moves)
+ *   ISK__CPU_VECTOR   otherwise, GCC >= 9 or Clang on a little-endian
+ *                     target (the byte-packing of the span kernels), but
+ *                     not 32-bit x86 without SSE2, where the vectors would
+ *                     be scalar code and change the functions' ABI
  *   ISK__CPU_AVX2     SSE2, and a compiler with target("avx2")
  *   ISK__CPU_AVX512   AVX2, and a compiler with the AVX-512 targets
  * With ISKRA_REFERENCE defined (make test REFERENCE=1, or
@@ -62,11 +65,11 @@
 #if defined(ISKRA_REFERENCE)
 #define ISK__CPU_SSE2 0
 #define ISK__CPU_VECTOR 0
-#elif defined(__SSE2__) && !defined(ISK__CPU_NO_SSE2)
+#elif defined(__x86_64__) && defined(__SSE2__) && !defined(ISK__CPU_NO_SSE2)
 #define ISK__CPU_SSE2 1
 #define ISK__CPU_VECTOR 0
 #elif defined(__GNUC__) && defined(__BYTE_ORDER__) && __BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__ && \
-    (defined(__clang__) || __GNUC__ >= 9)
+    (defined(__clang__) || __GNUC__ >= 9) && (!defined(__i386__) || defined(__SSE2__))
 #define ISK__CPU_SSE2 0
 #define ISK__CPU_VECTOR 1
 #else

@@ -178,6 +178,7 @@ static const isk__texture_walkers scalar_walkers = TEXTURE_TABLE(scalar_);
 static const isk__texture_walkers *pick_walkers(int paths)
 {
     const isk__texture_walkers *w = &scalar_walkers;
+    (void)paths; /* a build without twins has nothing to choose */
 #if ISK__CPU_SSE2
     if (!(paths & ISK__TEXTURE_SCALAR))
         w = &isk__texture_walkers_sse2;

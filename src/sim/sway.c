@@ -54,6 +54,8 @@ void isk_sway_build(int avx2, const isk_sway *w, size_t n, double *x, double *vx
         isk__sway_loops_avx2[mode][w->faithful != 0](n, x, vx, amp, phase, omega, offset, w);
         return;
     }
+#else
+    (void)avx2; /* no AVX2 build to choose */
 #endif
     sway_loops[mode][w->faithful != 0](n, x, vx, amp, phase, omega, offset, w);
 }
