@@ -95,13 +95,16 @@ static ISK__INLINE void isk__px_over(uint8_t *d, isk_color s)
 }
 
 /* Add (iskra/blend.h): each channel gains div255(c sa), the alpha sa, each
- * saturating at 255. */
+ * saturating at 255 (a byte sum that wraps below its first term passed
+ * 255). */
 static ISK__INLINE void isk__px_add(uint8_t *d, isk_color s)
 {
-    const uint32_t c[3] = {s.r, s.g, s.b};
-    for (int k = 0; k < 3; k++)
-        d[k] = isk__sat_add(d[k], isk_div255(c[k] * s.a));
-    d[3] = isk__sat_add(d[3], s.a);
+    const uint8_t inc[4] = {(uint8_t)isk_div255((uint32_t)s.r * s.a), (uint8_t)isk_div255((uint32_t)s.g * s.a),
+                            (uint8_t)isk_div255((uint32_t)s.b * s.a), s.a};
+    for (int k = 0; k < 4; k++) {
+        const uint8_t sum = (uint8_t)(d[k] + inc[k]);
+        d[k] = sum < d[k] ? 255u : sum;
+    }
 }
 
 /* One pixel in any mode. */

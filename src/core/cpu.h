@@ -13,7 +13,9 @@
  *   name_avx2.c    AVX2 (and name_avx512.c AVX-512 F, VL, BW, DQ): their
  *                  functions are compiled for it by a target attribute
  *                  (ISK__AVX2_FN), the rest of the build stays baseline
- *                  x86-64, and they run only when the CPU says it has it.
+ *                  x86-64, and they run only when the CPU says it has it;
+ *   name_loops.h   a loop the portable file and its AVX2 / AVX-512 files
+ *                  compile alike (each for its own target).
  *
  * The portable file calls its twin from one place (its dispatch point).
  * A twin gives the plain loop's bytes: integer arithmetic, or the same
@@ -43,10 +45,13 @@
  *                                          1 (AVX2), 2 (AVX-512) that is
  *                                          at most `most` and runs here
  *
- *     if (isk__have_avx2())
- *         isk__span_rows_avx2(...);   // the twin, in span_avx2.c
- *     else
- *         span_rows(...);             // the plain loop
+ *     #if ISK__CPU_AVX2
+ *         if (isk__have_avx2()) {                        // the twin (circle_avx2.c)
+ *             isk__circle_aa_rows_small_avx2(c, ...);
+ *             return;
+ *         }
+ *     #endif
+ *         aa_rows_small(c, ...);                         // the plain loop
  */
 #ifndef ISKRA_CORE_CPU_H
 #define ISKRA_CORE_CPU_H
