@@ -64,7 +64,6 @@ void isk_fill_circle(isk_canvas *c, double cx, double cy, double r, isk_color co
     }
 }
 
-
 /* Antiderivative of min(cl, h(x)) (cl >= 0), for x in [-r, r]. */
 static double min_antideriv(double x, double cl, double r)
 {

@@ -69,7 +69,6 @@ static ISK__INLINE void isk__px_w(uint8_t *d, isk_color col, const isk__cov_lut 
         isk__px_cov(d, col, w, mode);
 }
 
-
 /* Blends the weights into the 2x2 block whose top-left pixel is (ix, iy),
  * skipping pixels outside the canvas. */
 static ISK__INLINE void isk__blend_2x2(const isk_canvas *c, int ix, int iy, const uint32_t w[4], isk_color col,

@@ -17,8 +17,8 @@ static ISK__AVX2_FN __attribute__((noinline)) void rows_over_avx2(uint8_t *drow,
 {
     isk__rows_over_inc_avx2(drow, stride, inc, inc_stride, span, S, col);
 }
-SPRITE_ROWS(isk__sprite_rows_avx2, ISK__AVX2_FN, isk__span_cov_avx2, isk__span_add_bytes_avx2, isk__span_add_bytes16_avx2,
-            isk__span_over_inc_avx2, rows_over_avx2, SRC_INC_OVER)
+SPRITE_ROWS(isk__sprite_rows_avx2, ISK__AVX2_FN, isk__span_cov_avx2, isk__span_add_bytes_avx2,
+            isk__span_add_bytes16_avx2, isk__span_over_inc_avx2, rows_over_avx2, SRC_INC_OVER)
 #else
 typedef int isk__sprite_avx2_unused; /* ISO C wants a declaration in every file */
 #endif

@@ -191,8 +191,6 @@ static ISK__INLINE uint64_t pot_step(const pot_par *restrict p, double x0, doubl
     return over & p->sm;
 }
 
-
-
 /* The loop: NP potentials, A constant acceleration, D drag, E explicit
  * Euler, all compile-time.  Stores the state a particle starts the step
  * from in kx..kvy as it reads it: for the fix-up, and as the contact

@@ -30,7 +30,6 @@ uint64_t isk_wall_screen_portable(size_t n, const double *x, const double *y, co
     SCREEN_GROUPS(fires16, mask16, ISK_WALL_SCREEN, w->left, w->right, w->bottom, w->top);
 }
 
-
 isk_wall_screen_fn isk_wall_screen_avx512(void)
 {
 #if ISK__CPU_AVX512

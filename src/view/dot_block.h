@@ -226,7 +226,6 @@ static inline int select_scalar(const select_view *s, const double *y, int m, do
     return kept;
 }
 
-
 /* The twins of weights_scalar and select_scalar, for a CPU that has their
  * instruction set (pick_weights, pick_select; tests/test_dot_block.c runs
  * each against the scalar code). */

@@ -9,10 +9,11 @@
 
 #include "view/dot_block.h"
 
-/* weights_avx2 for 8 points a group, WEIGHTS_GROUPS groups a step: the
- * same operations on the doubles; the rank selection in 32-bit lanes
- * instead of 0/1 doubles (small integers either way: the same comparisons,
- * the same sums), with the comparisons as mask registers.
+/* isk__dot_weights_avx2 (dot_block_avx2.c) for 8 points a group,
+ * WEIGHTS_GROUPS groups a step: the same operations on the doubles; the
+ * rank selection in 32-bit lanes instead of 0/1 doubles (small integers
+ * either way: the same comparisons, the same sums), with the comparisons
+ * as mask registers.
  * Plain stores, no masked ones: the block's arrays hold DOT_BATCH entries
  * (m <= DOT_BATCH) and a group never starts past its last 8, so what lands
  * past the m-th point is scratch nobody reads, and a load that follows a
@@ -102,10 +103,11 @@ ISK__AVX512_FN void isk__dot_weights_avx512(dot_block *b, int m, double X0, doub
     }
 }
 
-/* Eight points a step, the last one masked: select_avx2's operations, the
- * lanes compressed by the mask register (oy and oix may be written up to 8
- * entries past what is kept, kept <= k and k + 8 <= DOT_BLOCK: within a
- * batch's arrays after what it has, fewer than DOT_BLOCK). */
+/* Eight points a step, the last one masked: isk__dot_select_avx2's
+ * operations, the lanes compressed by the mask register (oy and oix may
+ * be written up to 8 entries past what is kept, kept <= k and k + 8 <=
+ * DOT_BLOCK: within a batch's arrays after what it has, fewer than
+ * DOT_BLOCK). */
 ISK__AVX512_FN int isk__dot_select_avx512(const select_view *s, const double *y, int m, double *oy, int32_t *oix)
 {
     /* view_transform.h's isk__view_axis_map, lane by lane */
