@@ -134,7 +134,7 @@ DEBUG_INFO := -g $(if $(GCC_IS),-fno-var-tracking-assignments)
 # fused motion loops store as they read (src/sim/motion_fused.c) and hoists
 # them out as memcpy calls before the loop: a pass of its own that waits on
 # memory with no arithmetic to overlap (docs/performance.md, "Compiler
-# flags").  Only that file: elsewhere the memcpy idiom is welcome.
+# flags").  Only those files: elsewhere the memcpy idiom is welcome.
 GCC_NO_COPY_IDIOM := $(if $(GCC_IS),-fno-tree-loop-distribute-patterns)
 # (After the configurations above: SANITIZE=clang sets CC, and OPT, a
 # recursive variable, reads GCC_SCHEDULE when it is used.)
@@ -249,8 +249,9 @@ $(BUILD)/obj/%.o: %.c
 # The one test that drives SDL itself.
 $(BUILD)/obj/tests/test_sdl.o: ALL_CFLAGS += $(PKG_SDL_CFLAGS)
 
-# The fused motion loops keep their start-state stores (GCC_NO_COPY_IDIOM).
-$(BUILD)/obj/src/sim/motion_fused.o: ALL_CFLAGS += $(GCC_NO_COPY_IDIOM)
+# The fused motion loops keep their start-state stores (GCC_NO_COPY_IDIOM),
+# in every build of them (motion_fused.c, motion_fused_avx2.c, ...).
+$(BUILD)/obj/src/sim/motion_fused%.o: ALL_CFLAGS += $(GCC_NO_COPY_IDIOM)
 
 # ---- libraries -----------------------------------------------------------
 $(LIBA): $(LIB_OBJ)

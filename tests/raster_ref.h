@@ -1,9 +1,12 @@
 /* SPDX-License-Identifier: MIT */
 /* tests/raster_ref.h — the rasterizer's per-pixel reference implementation,
- * frozen as it was before the span kernels (one isk_blend_pixel_cov-style call
- * and a blend-mode switch per pixel).  The fast paths in src/raster must give
- * exactly these bytes: tests/test_raster_fast.c draws random input with both
- * and compares canvases.  Header-only (static), included by that test only.
+ * frozen as it was before the span kernels (one blend call and a
+ * blend-mode switch per pixel).  The blend of one pixel is the library's
+ * readable rule (src/raster/blend_rule.h: isk__rule_pixel,
+ * isk__rule_pixel_cov), the definition every fast form is tested against.
+ * The fast paths in src/raster must give exactly these bytes:
+ * tests/test_raster_fast.c draws random input with both and compares
+ * canvases.  Header-only (static), included by the raster tests only.
  * Do not "optimize" this file: its point is to stay the old code. */
 #ifndef ISKRA_TESTS_RASTER_REF_H
 #define ISKRA_TESTS_RASTER_REF_H
@@ -13,68 +16,8 @@
 
 #include "iskra/draw.h"
 #include "iskra/sprite.h"
+#include "raster/blend_rule.h"
 #include "raster/clip.h"
-
-static inline void ref_blend_over(uint8_t *d, isk_color s)
-{
-    uint32_t sa = s.a;
-    if (sa == 255u) {
-        d[0] = s.r; d[1] = s.g; d[2] = s.b; d[3] = 255;
-        return;
-    }
-    if (sa == 0u)
-        return;
-    uint32_t da = d[3];
-    uint32_t inv = 255u - sa;
-    if (da == 255u) {
-        /* Opaque destination: the common case, no division by A. */
-        d[0] = (uint8_t)isk_div255(s.r * sa + d[0] * inv);
-        d[1] = (uint8_t)isk_div255(s.g * sa + d[1] * inv);
-        d[2] = (uint8_t)isk_div255(s.b * sa + d[2] * inv);
-        return;
-    }
-    uint32_t wd = da * inv;              /* destination weight, scaled by 255 */
-    uint32_t A = 255u * sa + wd;         /* 255 * output alpha */
-    uint32_t half = A / 2u;
-    d[0] = (uint8_t)((255u * s.r * sa + d[0] * wd + half) / A);
-    d[1] = (uint8_t)((255u * s.g * sa + d[1] * wd + half) / A);
-    d[2] = (uint8_t)((255u * s.b * sa + d[2] * wd + half) / A);
-    d[3] = (uint8_t)isk_div255(A);
-}
-
-static inline uint8_t ref_sat_add(uint32_t a, uint32_t b)
-{
-    uint32_t s = a + b;
-    return (uint8_t)(s > 255u ? 255u : s);
-}
-
-static inline void ref_blend_pixel(uint8_t *d, isk_color s, isk_blend mode)
-{
-    switch (mode) {
-    case ISK_BLEND_REPLACE:
-        d[0] = s.r; d[1] = s.g; d[2] = s.b; d[3] = s.a;
-        break;
-    case ISK_BLEND_OVER:
-        ref_blend_over(d, s);
-        break;
-    case ISK_BLEND_ADD:
-        d[0] = ref_sat_add(d[0], isk_div255((uint32_t)s.r * s.a));
-        d[1] = ref_sat_add(d[1], isk_div255((uint32_t)s.g * s.a));
-        d[2] = ref_sat_add(d[2], isk_div255((uint32_t)s.b * s.a));
-        d[3] = ref_sat_add(d[3], s.a);
-        break;
-    default:
-        break;
-    }
-}
-
-static inline void ref_blend_pixel_cov(uint8_t *d, isk_color s, uint8_t coverage, isk_blend mode)
-{
-    if (coverage == 0u) /* untouched, whatever the mode */
-        return;
-    s.a = (uint8_t)isk_div255((uint32_t)s.a * coverage);
-    ref_blend_pixel(d, s, mode);
-}
 
 static inline void ref_weights_frac(double fx, double fy, uint8_t w[4])
 {
@@ -120,13 +63,13 @@ static inline void ref_blend_2x2(isk_canvas *c, int ix, int iy, const uint8_t w[
     int top = iy >= 0 && iy < c->height, bottom = iy + 1 >= 0 && iy + 1 < c->height;
     if (top) {
         uint8_t *p = c->pixels + (size_t)iy * c->stride;
-        if (left) ref_blend_pixel_cov(p + (size_t)ix * 4u, color, w[0], mode);
-        if (right) ref_blend_pixel_cov(p + (size_t)(ix + 1) * 4u, color, w[1], mode);
+        if (left) isk__rule_pixel_cov(p + (size_t)ix * 4u, color, w[0], mode);
+        if (right) isk__rule_pixel_cov(p + (size_t)(ix + 1) * 4u, color, w[1], mode);
     }
     if (bottom) {
         uint8_t *p = c->pixels + (size_t)(iy + 1) * c->stride;
-        if (left) ref_blend_pixel_cov(p + (size_t)ix * 4u, color, w[2], mode);
-        if (right) ref_blend_pixel_cov(p + (size_t)(ix + 1) * 4u, color, w[3], mode);
+        if (left) isk__rule_pixel_cov(p + (size_t)ix * 4u, color, w[2], mode);
+        if (right) isk__rule_pixel_cov(p + (size_t)(ix + 1) * 4u, color, w[3], mode);
     }
 }
 
@@ -219,7 +162,7 @@ static inline void ref_fill_circle(isk_canvas *c, double cx, double cy, double r
             double dx = (i + 0.5) - cx;
             int in = big ? hypot(dx, dy) < r : dx * dx + dy * dy < r2;
             if (in)
-                ref_blend_pixel(isk_canvas_at(c, i, j), color, mode);
+                isk__rule_pixel(isk_canvas_at(c, i, j), color, mode);
         }
     }
 }
@@ -316,7 +259,7 @@ static inline void ref_fill_circle_aa(isk_canvas *c, double cx, double cy, doubl
                 else
                     area = ref_tangent_area(x0, y0, r);
             }
-            ref_blend_pixel_cov(isk_canvas_at(c, i, j), color, isk__coverage(area), mode);
+            isk__rule_pixel_cov(isk_canvas_at(c, i, j), color, isk__coverage(area), mode);
         }
     }
 }
@@ -394,7 +337,7 @@ static inline void ref_draw_sprite_tinted(isk_canvas *c, const isk_sprite *s, do
         } else {
             for (int i = b; i < e; i++, d += 4)
                 if (mrow[i])
-                    ref_blend_pixel_cov(d, color, mrow[i], mode);
+                    isk__rule_pixel_cov(d, color, mrow[i], mode);
         }
     }
 }
@@ -431,7 +374,7 @@ static inline void ref_draw_sprite(isk_canvas *c, const isk_sprite *s, double cx
                 if (!mrow[i])
                     continue;
                 isk_color src = {s->color.r, s->color.g, s->color.b, s->lut[mrow[i]][3]};
-                ref_blend_pixel(d, src, ISK_BLEND_OVER);
+                isk__rule_pixel(d, src, ISK_BLEND_OVER);
             }
             break;
         case ISK_BLEND_REPLACE:
@@ -455,7 +398,7 @@ static inline void ref_draw_pixel(isk_canvas *c, int x, int y, isk_color color, 
 {
     if (!isk__canvas_ok(c) || x < 0 || y < 0 || x >= c->width || y >= c->height)
         return;
-    ref_blend_pixel(isk_canvas_at(c, x, y), color, mode);
+    isk__rule_pixel(isk_canvas_at(c, x, y), color, mode);
 }
 
 #endif

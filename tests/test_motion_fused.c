@@ -26,7 +26,7 @@
 #include <stdio.h>
 #include <string.h>
 
-#include "raster/span_simd.h" /* isk__simd_level */
+#include "core/cpu.h" /* isk__simd_level */
 #include "iskra/integrate.h"
 #include "sim/kernels.h"
 #include "sim/motion_fused.h"

@@ -110,21 +110,53 @@ Test(raster_fast, swar_saturating_add_every_pair)
 
 /* Source-over onto an opaque pixel takes one path, without a test of the
  * source alpha, for every alpha (0 and 255 too): every alpha, colour and
- * destination channel value against the reference. */
+ * destination channel value against the rule, in the inlined form and in
+ * the library's (its SSE2 twin where the build has one). */
 Test(raster_fast, over_opaque_destination_every_alpha)
 {
     for (uint32_t sa = 0; sa < 256u; sa++)
         for (uint32_t c = 0; c < 256u; c++)
             for (uint32_t v = 0; v < 256u; v++) {
                 const isk_color s = {(uint8_t)c, (uint8_t)(255u - c), (uint8_t)(c ^ 0x5Au), (uint8_t)sa};
-                uint8_t a[4] = {(uint8_t)v, (uint8_t)(v ^ 0xA5u), (uint8_t)(255u - v), 255u}, b[4];
+                uint8_t a[4] = {(uint8_t)v, (uint8_t)(v ^ 0xA5u), (uint8_t)(255u - v), 255u}, b[4], f[4];
                 memcpy(b, a, 4);
+                memcpy(f, a, 4);
                 isk__px(a, s, ISK_BLEND_OVER);
-                ref_blend_pixel(b, s, ISK_BLEND_OVER);
-                if (memcmp(a, b, 4) != 0)
-                    cr_assert_fail("sa %u colour %u destination %u: %u %u %u %u, reference %u %u %u %u", sa, c, v,
-                                   a[0], a[1], a[2], a[3], b[0], b[1], b[2], b[3]);
+                isk__blend_px(f, s, ISK_BLEND_OVER);
+                isk__rule_pixel(b, s, ISK_BLEND_OVER);
+                if (memcmp(a, b, 4) != 0 || memcmp(f, b, 4) != 0)
+                    cr_assert_fail("sa %u colour %u destination %u: %u %u %u %u (library %u %u %u %u), the rule "
+                                   "%u %u %u %u",
+                                   sa, c, v, a[0], a[1], a[2], a[3], f[0], f[1], f[2], f[3], b[0], b[1], b[2], b[3]);
             }
+}
+
+/* The one-pixel forms against the readable rule (src/raster/blend_rule.h):
+ * the one a program's isk_draw_pixel inlines (iskra/blend_inline.h's
+ * isk__px, plain C with its shortcuts: an opaque destination first, the
+ * source alphas 0 and 255) and the library's (isk__blend_px: its SSE2
+ * twin where the build has one), over and add, for every pair of source
+ * and destination alpha, each with every colour channel value (three
+ * relations between source and destination channel, one per channel). */
+Test(raster_fast, one_pixel_rule_every_alpha_pair)
+{
+    for (uint32_t sa = 0; sa < 256u; sa++)
+        for (uint32_t da = 0; da < 256u; da++)
+            for (uint32_t c = 0; c < 256u; c++)
+                for (int mi = 1; mi < 3; mi++) {
+                    const isk_color s = {(uint8_t)c, (uint8_t)(255u - c), (uint8_t)(c * 37u + sa), (uint8_t)sa};
+                    uint8_t a[4] = {(uint8_t)(c + da), (uint8_t)c, (uint8_t)(c * 11u ^ da), (uint8_t)da}, b[4], f[4];
+                    memcpy(b, a, 4);
+                    memcpy(f, a, 4);
+                    isk__px(a, s, MODES[mi]);
+                    isk__blend_px(f, s, MODES[mi]);
+                    isk__rule_pixel(b, s, MODES[mi]);
+                    if (memcmp(a, b, 4) != 0 || memcmp(f, b, 4) != 0)
+                        cr_assert_fail("mode %d sa %u da %u colour %u: %u %u %u %u (library %u %u %u %u), the rule "
+                                       "%u %u %u %u",
+                                       mi, sa, da, c, a[0], a[1], a[2], a[3], f[0], f[1], f[2], f[3], b[0], b[1], b[2],
+                                       b[3]);
+                }
 }
 
 /* Every colour's table against the per-pixel rule, for every coverage. */
@@ -142,10 +174,10 @@ Test(raster_fast, coverage_table_equals_blend_pixel_cov)
                 for (int k = 0; k < 4; k++)
                     a[k] = b[k] = rnd_byte(&r);
                 isk__px_lut(a, &lut, cov, MODES[mi]);
-                ref_blend_pixel_cov(b, col, (uint8_t)cov, MODES[mi]);
+                isk__rule_pixel_cov(b, col, (uint8_t)cov, MODES[mi]);
                 cr_assert(memcmp(a, b, 4) == 0, "colour %d cov %u mode %d", n, cov, mi);
                 isk_blend_pixel_cov(a, col, (uint8_t)cov, MODES[mi]);
-                ref_blend_pixel_cov(b, col, (uint8_t)cov, MODES[mi]);
+                isk__rule_pixel_cov(b, col, (uint8_t)cov, MODES[mi]);
                 cr_assert(memcmp(a, b, 4) == 0, "isk_blend_pixel_cov: colour %d cov %u mode %d", n, cov, mi);
             }
     }

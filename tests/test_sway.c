@@ -26,7 +26,7 @@
 #include "iskra/integrate.h" /* ISK_SIM_BLOCK, ISK_FLUSH_TINY */
 #include "iskra/particles.h"
 #include "iskra/sinlut.h"
-#include "raster/span_simd.h" /* isk__have_avx2 */
+#include "core/cpu.h" /* isk__have_avx2 */
 #include "sim/stage.h"
 #include "sim/sway.h"
 

@@ -3,8 +3,11 @@
  * own numbers. */
 #include <criterion/criterion.h>
 #include <math.h>
+#include <string.h>
 
+#include "iskra/rng.h"
 #include "iskra/view.h"
+#include "view/view_transform.h"
 
 Test(view, window_minus10_10_on_600)
 {
@@ -117,4 +120,47 @@ Test(view, camera_inverse_and_invalid)
     cr_assert_eq(isk_view_camera(&v, 800, 600, NAN, 0, 0), ISK_ERR_NAN);
     cr_assert_eq(isk_view_camera(&v, 800, 600, 1, INFINITY, 0), ISK_ERR_NAN);
     cr_assert_eq(isk_view_camera(&v, 0, 600, 1, 0, 0), ISK_ERR_SIZE);
+}
+
+/* The transform helper every kernel shares (src/view/view_transform.h)
+ * gives, bit for bit, the theses' formulas as iskra/view.h writes them:
+ * the camera's X as w/2 + a*(x + tx) although the helper computes
+ * w/2 - (-a)*(x + tx).  Random views of both kinds, points on and far off
+ * the canvas, huge, infinite, zero of either sign. */
+Test(view, helper_is_the_theses_formulas_bit_for_bit)
+{
+    isk_rng r;
+    isk_rng_seed(&r, 3);
+    const double special[] = {0.0, -0.0, 1e-300, -1e-300, 1e300, -1e300, INFINITY, -INFINITY, 0.5, -0.5};
+    for (int n = 0; n < 2000; n++) {
+        const int w = 1 + (int)isk_rng_below(&r, 2000), h = 1 + (int)isk_rng_below(&r, 2000);
+        isk_view v;
+        const int camera = (int)isk_rng_below(&r, 2);
+        const isk_status st =
+            camera ? isk_view_camera(&v, w, h, isk_rng_range(&r, 1e-3, 1e3), isk_rng_range(&r, -1e3, 1e3),
+                                     isk_rng_range(&r, -1e3, 1e3))
+                   : isk_view_window(&v, w, h, isk_rng_range(&r, -1e3, -1e-3), isk_rng_range(&r, 1e-3, 1e3),
+                                     isk_rng_range(&r, -1e3, -1e-3), isk_rng_range(&r, 1e-3, 1e3));
+        cr_assert_eq(st, ISK_OK);
+        for (int k = 0; k < 200; k++) {
+            const double x = k < 10 ? special[k] : isk_rng_range(&r, -3e3, 3e3);
+            const double y = k < 10 ? special[9 - k] : isk_rng_range(&r, -3e3, 3e3);
+            const double wantX = camera ? v.width / 2.0 + v.a * (x + v.tx) : v.sx * x + v.px;
+            const double wantY = camera ? v.height / 2.0 - v.a * (y + v.ty) : v.sy * y + v.py;
+            double X, Y, X1, Y1;
+            isk__view_to_screen(&v, x, y, &X, &Y);
+            isk_view_to_screen(&v, x, y, &X1, &Y1);
+            const double gotX = isk__view_axis_map(isk__view_axis_x(&v), isk__view_is_camera(&v), x);
+            const double gotY = isk__view_axis_map(isk__view_axis_y(&v), isk__view_is_camera(&v), y);
+            if (isnan(wantX) || isnan(wantY)) { /* inf - inf: NaN either way */
+                cr_assert(isnan(X) == isnan(wantX) && isnan(Y) == isnan(wantY));
+                continue;
+            }
+            cr_assert(!memcmp(&X, &wantX, sizeof X) && !memcmp(&Y, &wantY, sizeof Y) && !memcmp(&X1, &wantX, sizeof X) &&
+                          !memcmp(&Y1, &wantY, sizeof Y) && !memcmp(&gotX, &wantX, sizeof X) &&
+                          !memcmp(&gotY, &wantY, sizeof Y),
+                      "view %d (%s), point (%a, %a): (%a, %a), the formulas (%a, %a)", n, camera ? "camera" : "window",
+                      x, y, X, Y, wantX, wantY);
+        }
+    }
 }

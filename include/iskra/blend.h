@@ -2,7 +2,9 @@
 /* iskra/blend.h — how a source colour combines with the pixel underneath.
  *
  * Every drawing primitive takes an isk_blend.  All arithmetic is integer and
- * exactly specified, so buffers are byte-identical on every machine.
+ * exactly specified, so buffers are byte-identical on every machine.  The
+ * library states these rules once as plain C (src/raster/blend_rule.h) and
+ * tests every faster form of them against it.
  * div255(x) below means x/255 rounded to the nearest integer; (x+127)/255 in
  * integers (x/255 is never exactly half-way, so there are no ties).
  *
@@ -10,8 +12,9 @@
  *   ISK_BLEND_OVER     source-over on straight (non-premultiplied) colour:
  *                        A   = 255*sa + da*(255-sa)             (= 255*out alpha)
  *                        out.a = div255(A)
- *                        out.c = round((255*sc*sa + dc*da*(255-sa)) / A), 0 if A = 0
- *                      so over an opaque destination out.c = div255(sc*sa + dc*(255-sa))
+ *                        out.c = (255*sc*sa + dc*da*(255-sa) + A/2) / A   (rounded to nearest)
+ *                      sa = 0 leaves the pixel as it is (A = 0 is only then);
+ *                      over an opaque destination out.c = div255(sc*sa + dc*(255-sa))
  *                      and out.a = 255; sa = 255 copies the source.
  *   ISK_BLEND_ADD      saturating add weighted by source alpha:
  *                        out.c = min(255, dc + div255(sc*sa)),  out.a = min(255, da + sa)

@@ -89,21 +89,28 @@ extern "C" {
 
 void isk_draw_pixel(isk_canvas *c, int x, int y, isk_color color, isk_blend mode);
 
+/* Pixel (x, y) of c, or NULL when there is none: unsigned compares reject
+ * negative coordinates too, and an empty or pixel-less canvas fails them
+ * as well. */
+static ISK__INLINE uint8_t *isk__pixel_at(isk_canvas *c, int x, int y)
+{
+    if (!c || !c->pixels || (unsigned)x >= (unsigned)c->width || (unsigned)y >= (unsigned)c->height)
+        return (uint8_t *)0;
+    return isk_canvas_at(c, x, y);
+}
+
 /* isk_draw_pixel is also a macro over this inline copy of it (C11 7.1.4
  * lets a library function be one): a loop of calls then compiles to a loop
- * of blends, with no call and the colour's part of the rule computed once
- * (docs/performance.md, "Drawing primitives").  The bytes are the same either way;
+ * of blends, with no call and with the colour's part of the rule left
+ * out of the loop by the compiler (the blend is iskra/blend_inline.h's
+ * plain C).  The bytes are the same either way;
  * (isk_draw_pixel)(...) or &isk_draw_pixel reach the function. */
+
 static ISK__INLINE void isk__draw_pixel_inline(isk_canvas *c, int x, int y, isk_color color, isk_blend mode)
 {
-    /* First, unconditionally, and used by two modes: a loop of one colour
-     * then computes it once, before the loop, whatever its mode. */
-    const isk__src_k K = isk__source_k(color);
-    /* Unsigned compares reject negative coordinates too; an empty or
-     * pixel-less canvas fails them as well. */
-    if (!c || !c->pixels || (unsigned)x >= (unsigned)c->width || (unsigned)y >= (unsigned)c->height)
-        return;
-    isk__px_k(isk_canvas_at(c, x, y), color, K, mode);
+    uint8_t *d = isk__pixel_at(c, x, y);
+    if (d)
+        isk__px(d, color, mode);
 }
 #define isk_draw_pixel(c, x, y, color, mode) isk__draw_pixel_inline((c), (x), (y), (color), (mode))
 

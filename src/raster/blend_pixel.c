@@ -8,9 +8,9 @@
 
 void isk_blend_pixel(uint8_t *d, isk_color s, isk_blend mode)
 {
-    if (!d) /* the public entry checks; the primitives call isk__px directly */
+    if (!d) /* the public entry checks; the primitives call isk__blend_px directly */
         return;
-    isk__px(d, s, mode);
+    isk__blend_px(d, s, mode);
 }
 
 void isk_blend_pixel_cov(uint8_t *d, isk_color s, uint8_t coverage, isk_blend mode)

@@ -2,16 +2,18 @@
 /* src/raster/blend_px.h — the blend rules of iskra/blend.h as inline kernels,
  * one per mode, for the primitives' inner loops.
  *
- * The rule for one pixel, isk__px, is in iskra/blend_inline.h (public, so
- * that isk_draw_pixel can be inlined into its callers' loops); the
- * coverage and table forms built on it are here.  isk_blend_pixel /
+ * The rule for one pixel is raster/blend_rule.h's; its fast form isk__px
+ * is in iskra/blend_inline.h (public, so that isk_draw_pixel can be inlined
+ * into its callers' loops), and the library's kernels run isk__blend_px,
+ * that form or its SSE2 twin; the coverage and table forms built on it
+ * are here.  isk_blend_pixel /
  * isk_blend_pixel_cov (blend.c) are thin wrappers, and every primitive calls these with the
  * mode as a compile-time constant, so the switch below folds away and each
  * primitive gets one loop per mode (AGG's "blender as template argument",
  * in C).  The usual shape is
  *
  *     static ISK__INLINE void fill_row(uint8_t *d, int n, isk_color s, isk_blend mode)
- *     { for (...) isk__px(d, s, mode); }           // generic in mode
+ *     { for (...) isk__blend_px(d, s, mode); }     // generic in mode
  *     ISK__BLEND_DISPATCH(mode, fill_row, d, n, s); // one call per mode
  *
  * Nothing here allocates, fails or keeps state.
@@ -23,10 +25,10 @@
 #include <string.h>
 
 #include "iskra/blend.h"
+#include "core/cpu.h"
 #include "iskra/blend_inline.h" /* ISK__INLINE, isk__px: the rule for one pixel */
-
-#if defined(__SSE2__)
-#include <emmintrin.h>
+#if ISK__CPU_SSE2
+#include "raster/blend_px_sse2.h"
 #endif
 
 /* n pixels from d set to s (ISK_BLEND_REPLACE, whatever the source alpha):
@@ -61,6 +63,29 @@ static ISK__INLINE void isk__fill_span(uint8_t *d, size_t n, isk_color s)
         }                                                   \
     } while (0)
 
+/* One pixel, as the library's kernels blend it: iskra/blend_inline.h's
+ * isk__px (plain C, what a program's inlined isk_draw_pixel runs), or
+ * where the build has SSE2 its twin (blend_px_sse2.h), which does the four
+ * channels in one register: the same bytes, the rule of
+ * raster/blend_rule.h. */
+static ISK__INLINE void isk__blend_px(uint8_t *d, isk_color s, isk_blend mode)
+{
+#if ISK__CPU_SSE2
+    isk__px_sse2(d, s, mode);
+#else
+    isk__px(d, s, mode);
+#endif
+}
+
+static ISK__INLINE void isk__blend_px_over(uint8_t *d, isk_color s)
+{
+#if ISK__CPU_SSE2
+    isk__px_over_sse2(d, s);
+#else
+    isk__px_over(d, s);
+#endif
+}
+
 /* The source alpha scaled by coverage first; coverage 0 leaves the pixel
  * alone in every mode. */
 static ISK__INLINE void isk__px_cov(uint8_t *d, isk_color s, uint32_t coverage, isk_blend mode)
@@ -68,7 +93,7 @@ static ISK__INLINE void isk__px_cov(uint8_t *d, isk_color s, uint32_t coverage, 
     if (coverage == 0u)
         return;
     s.a = (uint8_t)isk_div255((uint32_t)s.a * coverage);
-    isk__px(d, s, mode);
+    isk__blend_px(d, s, mode);
 }
 
 /* ---- a colour prepared for many coverage values --------------------------
@@ -134,16 +159,8 @@ static ISK__INLINE uint64_t isk__div255_lanes(uint64_t x)
  * lanes p and the weight inv = 255 - a'. */
 static ISK__INLINE void isk__over_opaque_lanes(uint8_t *d, uint64_t p, uint32_t inv)
 {
-#if defined(__SSE2__)
-    /* the same lanes in SSE2 (x86: the u64's 16-bit lanes are r g b a in
-     * order); div255 as the high half of (x + 128) * 257 */
-    uint32_t d32;
-    memcpy(&d32, d, 4);
-    __m128i D = _mm_unpacklo_epi8(_mm_cvtsi32_si128((int)d32), _mm_setzero_si128());
-    __m128i x = _mm_add_epi16(_mm_mullo_epi16(D, _mm_set1_epi16((short)inv)), _mm_set_epi64x(0, (long long)p));
-    x = _mm_mulhi_epu16(_mm_add_epi16(x, _mm_set1_epi16(128)), _mm_set1_epi16(257));
-    d32 = (uint32_t)_mm_cvtsi128_si32(_mm_packus_epi16(x, x));
-    memcpy(d, &d32, 4);
+#if ISK__CPU_SSE2
+    isk__over_opaque_lanes_sse2(d, p, inv); /* the same lanes in one SSE2 register */
 #else
     uint64_t x = (uint64_t)d[0] | (uint64_t)d[1] << 16 | (uint64_t)d[2] << 32 | (uint64_t)255u << 48;
     x = isk__div255_lanes(x * inv + p);
@@ -168,7 +185,7 @@ static ISK__INLINE void isk__px_lut(uint8_t *d, const isk__cov_lut *t, uint32_t 
         } else {
             isk_color s = t->col;
             s.a = t->alpha[cov];
-            isk__px_over(d, s);
+            isk__blend_px_over(d, s);
         }
         break;
     case ISK_BLEND_ADD: {
@@ -176,8 +193,8 @@ static ISK__INLINE void isk__px_lut(uint8_t *d, const isk__cov_lut *t, uint32_t 
         uint32_t v, inc;
         memcpy(&v, d, 4);
         memcpy(&inc, t->add[cov], 4);
-#if defined(__SSE2__)
-        v = (uint32_t)_mm_cvtsi128_si32(_mm_adds_epu8(_mm_cvtsi32_si128((int)v), _mm_cvtsi32_si128((int)inc)));
+#if ISK__CPU_SSE2
+        v = isk__sat_add_u8x4_sse2(v, inc);
 #else
         v = isk__sat_add_u8x4(v, inc);
 #endif

@@ -16,8 +16,12 @@
 #include <stdint.h>
 #include <string.h>
 
+#include "core/cpu.h"
 #include "iskra/canvas.h"
 #include "raster/blend_px.h"
+#if ISK__CPU_SSE2
+#include "raster/dot_kernel_sse2.h"
+#endif
 
 /* Exact-area weights of the dot for fractional parts fx, fy in [0, 1).
  * a_k = 255*gx*gy, 255*fx*gy, 255*gx*fy, 255*fx*fy (left to right, no
@@ -65,45 +69,6 @@ static ISK__INLINE void isk__px_w(uint8_t *d, isk_color col, const isk__cov_lut 
         isk__px_cov(d, col, w, mode);
 }
 
-#if defined(__SSE2__)
-/* One row of the block: two pixels at p with their a' spread over their
- * channels (aa = [a0 x4, a1 x4]); isk__px_cov's bytes (see blend_px.h). */
-static ISK__INLINE void isk__row2_sse2(uint8_t *p, __m128i aa, __m128i C, isk_color col, const uint32_t *w,
-                                       isk_blend mode)
-{
-    const __m128i z = _mm_setzero_si128(), k128 = _mm_set1_epi16(128), k257 = _mm_set1_epi16(257);
-    __m128i v = _mm_loadl_epi64((const __m128i *)(const void *)p);
-    if (mode == ISK_BLEND_ADD) {
-        __m128i inc = _mm_mulhi_epu16(_mm_add_epi16(_mm_mullo_epi16(aa, C), k128), k257);
-        _mm_storel_epi64((__m128i *)(void *)p, _mm_adds_epu8(v, _mm_packus_epi16(inc, inc)));
-    } else if (p[3] == 255u && p[7] == 255u) {
-        __m128i x = _mm_add_epi16(_mm_mullo_epi16(_mm_unpacklo_epi8(v, z), _mm_sub_epi16(_mm_set1_epi16(255), aa)),
-                                  _mm_mullo_epi16(C, aa));
-        x = _mm_mulhi_epu16(_mm_add_epi16(x, k128), k257);
-        _mm_storel_epi64((__m128i *)(void *)p, _mm_packus_epi16(x, x));
-    } else {
-        isk__px_cov(p, col, w[0], mode);
-        isk__px_cov(p + 4, col, w[1], mode);
-    }
-}
-
-/* The whole 2x2 block (add or over): a' = div255(sa w) for the four
- * weights at once, then a row of two pixels at a time. */
-static ISK__INLINE void isk__blend_2x2_sse2(uint8_t *p, size_t stride, const uint32_t w[4], isk_color col,
-                                            isk_blend mode)
-{
-    __m128i A = _mm_setr_epi16((short)w[0], (short)w[1], (short)w[2], (short)w[3], 0, 0, 0, 0);
-    A = _mm_mulhi_epu16(_mm_add_epi16(_mm_mullo_epi16(A, _mm_set1_epi16((short)col.a)), _mm_set1_epi16(128)),
-                        _mm_set1_epi16(257));
-    __m128i t = _mm_unpacklo_epi16(A, A);
-    uint32_t c32 = (uint32_t)col.r | (uint32_t)col.g << 8 | (uint32_t)col.b << 16 | 0xFF000000u;
-    __m128i C = _mm_unpacklo_epi8(_mm_cvtsi32_si128((int)c32), _mm_setzero_si128());
-    C = _mm_unpacklo_epi64(C, C);
-    isk__row2_sse2(p, _mm_unpacklo_epi32(t, t), C, col, w, mode);
-    isk__row2_sse2(p + stride, _mm_unpackhi_epi32(t, t), C, col, w + 2, mode);
-}
-#endif
-
 /* Blends the weights into the 2x2 block whose top-left pixel is (ix, iy),
  * skipping pixels outside the canvas. */
 static ISK__INLINE void isk__blend_2x2(const isk_canvas *c, int ix, int iy, const uint32_t w[4], isk_color col,
@@ -112,8 +77,8 @@ static ISK__INLINE void isk__blend_2x2(const isk_canvas *c, int ix, int iy, cons
     const size_t stride = c->stride;
     if ((unsigned)ix < (unsigned)(c->width - 1) && (unsigned)iy < (unsigned)(c->height - 1)) {
         uint8_t *p = c->pixels + (size_t)iy * stride + (size_t)ix * 4u;
-#if defined(__SSE2__)
-        if (!lut && mode != ISK_BLEND_REPLACE) {
+#if ISK__CPU_SSE2
+        if (!lut && mode != ISK_BLEND_REPLACE) { /* the whole block in SSE2 registers */
             isk__blend_2x2_sse2(p, stride, w, col, mode);
             return;
         }

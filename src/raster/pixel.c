@@ -2,7 +2,7 @@
 /* Integer-coordinate primitives: a single pixel and a filled rectangle.
  * All bounds arithmetic is 64-bit so INT_MIN/INT_MAX arguments are safe.
  * The blend mode is chosen once per call (raster/blend_px.h); the pixel's
- * own code is inline in iskra/draw.h. */
+ * own code is also inline in iskra/draw.h. */
 #include "iskra/draw.h"
 
 #include "raster/blend_px.h"
@@ -10,10 +10,13 @@
 
 /* The function behind the macro of iskra/draw.h (the name in parentheses
  * is not expanded): for function pointers, other languages' bindings and
- * callers that ask for it. */
+ * callers that ask for it.  The macro's pixel, blended as the library's
+ * kernels blend (isk__blend_px: its SSE2 twin where the build has one). */
 void (isk_draw_pixel)(isk_canvas *c, int x, int y, isk_color color, isk_blend mode)
 {
-    isk__draw_pixel_inline(c, x, y, color, mode);
+    uint8_t *d = isk__pixel_at(c, x, y);
+    if (d)
+        isk__blend_px(d, color, mode);
 }
 
 static ISK__INLINE void fill_rows(isk_canvas *c, int x0, int y0, int x1, int y1, isk_color color,
@@ -26,7 +29,7 @@ static ISK__INLINE void fill_rows(isk_canvas *c, int x0, int y0, int x1, int y1,
             continue;
         }
         for (int i = x0; i < x1; i++, p += 4)
-            isk__px(p, color, mode);
+            isk__blend_px(p, color, mode);
     }
 }
 

@@ -44,8 +44,8 @@
 
 #include "effect_internal.h"
 #include "iskra/draw.h"
-#include "raster/span_simd.h"
 #include "core/fast_paths.h"
+#include "raster/span.h"
 #include "sim/workers.h"
 #include "view/world_batch.h"
 

@@ -10,6 +10,7 @@
 
 #include "core/fast_paths.h"
 #include "effect_internal.h"
+#include "effect_style.h"
 #include "raster/circle_rows.h"
 #include "raster/clip.h"
 #include "raster/dot_kernel.h"
@@ -52,55 +53,6 @@ void isk__fx_free_ramps(fx_group *g)
     g->has_color_ramp = g->has_alpha_ramp = g->has_size_ramp = 0;
 }
 
-/* The colour, alpha and size multiplier of particle i at normalised age t. */
-static inline isk_color particle_color(const fx_group *g, const isk_particles *p, size_t i, double t,
-                                       double *size_mult)
-{
-    isk_color col = p->color ? p->color[i] : g->def->look.color;
-    if (g->has_color_ramp) {
-        isk_color ramp = isk_color_gradient_at(&g->color_ramp, t);
-        /* a picked base colour (color_pick) is multiplied, channel by
-         * channel, div255(base * ramp); otherwise the ramp is the colour */
-        if (g->def->look.color_pick.n && p->color)
-            ramp = isk_rgba((uint8_t)((col.r * ramp.r + 127) / 255), (uint8_t)((col.g * ramp.g + 127) / 255),
-                            (uint8_t)((col.b * ramp.b + 127) / 255), (uint8_t)((col.a * ramp.a + 127) / 255));
-        col = ramp;
-    }
-    if (g->has_alpha_ramp) {
-        double a = col.a * isk_scalar_gradient_at(&g->alpha_ramp, t);
-        col.a = (uint8_t)(a >= 255.0 ? 255 : (a > 0 ? (int)(a + 0.5) : 0));
-    }
-    *size_mult = g->has_size_ramp ? isk_scalar_gradient_at(&g->size_ramp, t) : 1.0;
-    return col;
-}
-
-int isk__fx_varies(const fx_group *g)
-{
-    return g->has_color_ramp || g->has_alpha_ramp || g->has_size_ramp || g->store.color;
-}
-
-/* Particle i's colour and size multiplier, constant unless something varies
- * (a group-level fact: the branch always goes the same way). */
-static inline isk_color style(const fx_group *g, const isk_particles *p, size_t i, int vary, double *mult)
-{
-    *mult = 1.0;
-    if (!vary)
-        return g->def->look.color;
-    double t = isfinite(p->life[i]) && p->life[i] > 0 ? p->age[i] / p->life[i] : 0.0;
-    return particle_color(g, p, i, t, mult);
-}
-
-/* style() for effect_texture.c (the draws here keep the inline one). */
-isk_color isk__fx_style(const fx_group *g, const isk_particles *p, size_t i, int vary, double *mult)
-{
-    return style(g, p, i, vary, mult);
-}
-
-isk_color isk__fx_particle_color(const fx_group *g, size_t i) /* the trails' colour (effect_trail.c) */
-{
-    double mult;
-    return style(g, &g->store, i, isk__fx_varies(g), &mult);
-}
 
 /* ---- the groups' draws --------------------------------------------------
  * Each draws the rows [b->r0, b->r1) of the canvas: the whole canvas on one
@@ -128,13 +80,13 @@ static isk_status draw_styled_dots(isk_effect *e, isk_canvas *c, fx_group *g, co
     const isk_particles *p = &g->store;
     const isk_blend blend = g->def->look.blend;
     const int browser = g->def->look.draw == ISK_DRAW_DOT_BROWSER;
-    const int vary = isk__fx_varies(g);
+    const int vary = fx_varies(g);
     const size_t n = b->list ? b->nlist : b->end;
     for (size_t k = b->list ? 0 : b->first; k < n; k++) {
         const size_t i = b->list ? b->list[k] : k;
         double X, Y, mult;
         screen_point(e, c, g, i, &X, &Y);
-        isk_color col = style(g, p, i, vary, &mult);
+        isk_color col = fx_style(g, p, i, vary, &mult);
         if (browser)
             ISK__BLEND_DISPATCH(blend, isk__dot_browser_rows, c, b->r0, b->r1, X, Y, col, NULL);
         else
@@ -173,13 +125,13 @@ static isk_status draw_dots(isk_effect *e, isk_canvas *c, fx_group *g, const fx_
 static isk_status draw_styled_pixels(isk_effect *e, isk_canvas *c, fx_group *g, const fx_band *b)
 {
     const isk_particles *p = &g->store;
-    const int vary = isk__fx_varies(g);
+    const int vary = fx_varies(g);
     const size_t n = b->list ? b->nlist : b->end;
     for (size_t k = b->list ? 0 : b->first; k < n; k++) {
         const size_t i = b->list ? b->list[k] : k;
         double X, Y, mult;
         screen_point(e, c, g, i, &X, &Y);
-        isk_color col = style(g, p, i, vary, &mult);
+        isk_color col = fx_style(g, p, i, vary, &mult);
         if (X >= 0 && Y >= b->r0 && X < c->width && Y < b->r1)
             isk_draw_pixel(c, (int)X, (int)Y, col, g->def->look.blend);
     }
@@ -189,12 +141,12 @@ static isk_status draw_styled_pixels(isk_effect *e, isk_canvas *c, fx_group *g, 
 static isk_status draw_discs(isk_effect *e, isk_canvas *c, fx_group *g, const fx_band *b)
 {
     const isk_particles *p = &g->store;
-    const int vary = isk__fx_varies(g);
+    const int vary = fx_varies(g);
     const double scale = fabs(e->view.sx);
     for (size_t i = b->first; i < b->end; i++) {
         double X, Y, mult;
         isk_view_to_screen(&e->view, p->x[i], p->y[i], &X, &Y);
-        isk_color col = style(g, p, i, vary, &mult);
+        isk_color col = fx_style(g, p, i, vary, &mult);
         const double size = p->size ? p->size[i] : g->def->look.size; /* size_range: its own */
         isk__fill_circle_aa_rows(c, X, Y, 0.5 * size * mult * scale, col, g->def->look.blend, b->r0, b->r1);
     }
@@ -252,7 +204,7 @@ static isk_status prepare_sprites(isk_effect *e, fx_group *g, fx_band *b)
 static isk_status draw_sprites(isk_effect *e, isk_canvas *c, fx_group *g, const fx_band *b)
 {
     const isk_particles *p = &g->store;
-    const int vary = isk__fx_varies(g);
+    const int vary = fx_varies(g);
     const int tinted = g->has_color_ramp || g->has_alpha_ramp || p->color;
     const double scale = fabs(e->view.sx);
     /* a band's thread reads every particle: those whose sprite cannot reach
@@ -273,7 +225,7 @@ static isk_status draw_sprites(isk_effect *e, isk_canvas *c, fx_group *g, const 
             const size_t i = o + (size_t)in_reach[q];
             double X, Y, mult;
             isk_view_to_screen(&e->view, p->x[i], p->y[i], &X, &Y);
-            isk_color col = style(g, p, i, vary, &mult);
+            isk_color col = fx_style(g, p, i, vary, &mult);
             const isk_sprite *spr = b->sprite[sprite_px(g, scale, mult)];
             if (spr)
                 isk__draw_sprite_rows(c, spr, X, Y, tinted ? &col : NULL, g->def->look.blend, b->r0, b->r1);
@@ -332,7 +284,7 @@ const fx_draw_kind isk__fx_kind_nothing = {"nothing", draw_nothing, NULL, 0.0, 0
 
 const fx_draw_kind *isk__fx_choose_draw(const fx_group *g)
 {
-    const int vary = isk__fx_varies(g);
+    const int vary = fx_varies(g);
     if (g->texture && g->def->look.draw != ISK_DRAW_NONE)
         return &isk__fx_kind_textures; /* a texture or a streak (effect_texture.c) */
     switch (g->def->look.draw) {

@@ -365,10 +365,7 @@ int isk__fx_place_cuts(const isk_effect *e, const fx_group *g, const isk_canvas 
 void isk__fx_bins_free(fx_bins *b);
 isk_status isk__fx_bake_ramps(fx_group *g, isk_error *err);
 void isk__fx_free_ramps(fx_group *g);
-/* Particle i's colour and size multiplier (vary: whether anything varies
- * per particle, varies(g)). */
-isk_color isk__fx_style(const fx_group *g, const isk_particles *p, size_t i, int vary, double *mult);
-int isk__fx_varies(const fx_group *g);
+/* A particle's colour and size: effect_style.h. */
 
 /* effect_looks.c: rotation, spin, size and colour variation, textures. */
 /* The optional store columns the emitter's looks need (ISK_PARTICLES_*). */
@@ -429,8 +426,6 @@ void isk__fx_trail_record(isk_effect *e, long stepped);
 /* The group's trails, drawn before its particles (in bands on the threads);
  * fill as isk__fx_draw_bands'. */
 isk_status isk__fx_trail_render(isk_effect *e, isk_canvas *c, fx_group *g, const isk_color *fill);
-/* effect_render.c: particle i's colour as its own draw gives it. */
-isk_color isk__fx_particle_color(const fx_group *g, size_t i);
 /* ---- end of sub-emitters and trails ---- */
 
 /* effect_retain.c: a group at rest drawn from its recorded blends.

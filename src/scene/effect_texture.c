@@ -23,6 +23,7 @@
 #include <math.h>
 
 #include "effect_internal.h"
+#include "effect_style.h"
 #include "raster/texture_rows.h"
 
 /* The frame of particle i (0 for a single image). */
@@ -49,7 +50,7 @@ isk_status isk__fx_draw_textures(isk_effect *e, isk_canvas *c, fx_group *g, cons
     const isk_emitter_def *em = g->def;
     const isk_texture *t = g->texture;
     const isk_view *v = &e->view;
-    const int vary = isk__fx_varies(g);
+    const int vary = fx_varies(g);
     const int streak = t == &g->streak;
     const int align = em->look.align == ISK_ALIGN_VELOCITY;
     const int turn = p->angle && (!streak || align);
@@ -61,7 +62,7 @@ isk_status isk__fx_draw_textures(isk_effect *e, isk_canvas *c, fx_group *g, cons
     for (size_t i = b->first; i < b->end; i++) {
         double X, Y, mult;
         isk_view_to_screen(v, p->x[i], p->y[i], &X, &Y);
-        isk_color col = isk__fx_style(g, p, i, vary, &mult);
+        isk_color col = fx_style(g, p, i, vary, &mult);
         const double w = (p->size ? p->size[i] : em->look.size) * mult * scale;
         double angle = turn ? turn_sign * p->angle[i] : 0.0;
         if (align)

@@ -18,6 +18,7 @@
  * isk__stroke_trail_rows, each band reading every particle: the same bytes
  * on any number of threads. */
 #include "effect_internal.h"
+#include "effect_style.h"
 #include "iskra/limits.h"
 #include "raster/trail_rows.h"
 
@@ -26,6 +27,13 @@ void isk__fx_trail_record(isk_effect *e, long stepped)
     for (int i = 0; i < e->ngroups; i++)
         if (e->groups[i].store.trail && stepped + e->groups[i].frame_offset >= 0)
             isk_particles_record_trail(&e->groups[i].store);
+}
+
+/* A trail takes its particle's colour. */
+static isk_color trail_color(const fx_group *g, size_t i)
+{
+    double mult;
+    return fx_style(g, &g->store, i, fx_varies(g), &mult);
 }
 
 static isk_status draw_trails(isk_effect *e, isk_canvas *c, fx_group *g, const fx_band *b)
@@ -42,7 +50,7 @@ static isk_status draw_trails(isk_effect *e, isk_canvas *c, fx_group *g, const f
             int slot = (p->trail_head + 1 + k) % n;
             isk_view_to_screen(&e->view, t[2 * slot], t[2 * slot + 1], &xy[2 * k], &xy[2 * k + 1]);
         }
-        isk__stroke_trail_rows(c, xy, n, em->look.trail_width, isk__fx_particle_color(g, i), em->look.trail_fade,
+        isk__stroke_trail_rows(c, xy, n, em->look.trail_width, trail_color(g, i), em->look.trail_fade,
                                em->look.blend, b->r0, b->r1);
     }
     return ISK_OK;

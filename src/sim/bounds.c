@@ -7,13 +7,14 @@
 #include <stdint.h>
 #include <string.h>
 
+#include "core/cpu.h"
 #include "sim/flight.h"
 #include "sim/kernels.h"
 #include "sim/rest_screen.h"
 #include "sim/wall_screen.h"
 
-#if defined(__SSE2__)
-#include <emmintrin.h>
+#if ISK__CPU_SSE2
+#include "sim/bounds_sse2.h"
 #endif
 
 const char *const isk_bounce_mode_names[ISK_BOUNCE_MODE_COUNT] = {"thesis", "reflect"};
@@ -537,11 +538,9 @@ static uint32_t screen_rests(size_t o, size_t n, double *pos, double *vel, const
     double rest[ISK_WALL_SCREEN];
     iw->rest_screen(n, pos + o, vel + o, m ? m + o : NULL, iw->drag, &ax, rest);
     uint32_t rested = 0;
-    size_t j = 0;
-#if defined(__SSE2__)
-    const __m128d Z = _mm_setzero_pd();
-    for (; j + 2 <= n; j += 2)
-        rested |= (uint32_t)_mm_movemask_pd(_mm_cmpneq_pd(_mm_loadu_pd(rest + j), Z)) << j;
+    size_t j = 0; /* the particles a fast twin did */
+#if ISK__CPU_SSE2
+    j = rested_bits_sse2(rest, n, &rested);
 #endif
     for (; j < n; j++)
         rested |= (uint32_t)(rest[j] != 0.0) << j;
@@ -551,21 +550,13 @@ static uint32_t screen_rests(size_t o, size_t n, double *pos, double *vel, const
     /* the last particle rested: its input and answer go to the memo */
     const size_t last = o + highest_bit(rested);
     const double last_p1 = pos[last], last_v1 = vel[last];
-    /* the group rewritten two particles at a time, each with its own value
-     * unless it rests: selects, where a branch a particle cost 3 cycles */
+    /* the group rewritten: each particle that rests put on its wall (the
+     * SSE2 twin two at a time, by selects) */
     const double delta = am->delta;
     double *p = pos + o, *v = vel + o;
     j = 0;
-#if defined(__SSE2__)
-    static const uint64_t lane[4][2] = {{0, 0}, {~0ull, 0}, {0, ~0ull}, {~0ull, ~0ull}};
-    const __m128d L = _mm_set1_pd(lo), H = _mm_set1_pd(hi), D = _mm_set1_pd(delta), ONE = _mm_set1_pd(1.0);
-    for (; j + 2 <= n; j += 2) {
-        const __m128d M = _mm_loadu_pd((const double *)(const void *)lane[rested >> j & 3u]);
-        const __m128d at_lo = _mm_cmpeq_pd(_mm_loadu_pd(rest + j), ONE);
-        const __m128d wall = _mm_or_pd(_mm_and_pd(at_lo, L), _mm_andnot_pd(at_lo, H));
-        _mm_storeu_pd(p + j, _mm_or_pd(_mm_and_pd(M, wall), _mm_andnot_pd(M, _mm_loadu_pd(p + j))));
-        _mm_storeu_pd(v + j, _mm_or_pd(_mm_and_pd(M, D), _mm_andnot_pd(M, _mm_loadu_pd(v + j))));
-    }
+#if ISK__CPU_SSE2
+    j = rest_on_walls_sse2(p, v, rest, n, rested, lo, hi, delta);
 #endif
     for (; j < n; j++)
         if (rested >> j & 1u) {

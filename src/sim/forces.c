@@ -5,7 +5,8 @@
 #include <math.h>
 #include <string.h>
 
-#include "raster/span_simd.h" /* ISK__SPAN_AVX2, ISK__AVX2_FN, isk__have_avx2 */
+#include "core/cpu.h" /* ISK__CPU_AVX2, isk__have_avx2 */
+#include "sim/forces_loops.h"
 #include "sim/kernels.h"
 #include "sim/motion_fused.h" /* isk__forces_potentials_on */
 
@@ -109,70 +110,14 @@ void isk_force_drag(size_t n, const double *restrict vx, const double *restrict 
     }
 }
 
-/* One specialised loop per (power kind, centre rule): both are constants
- * here, so the loop body has no scene-level branch.  Every loop vectorizes
- * but the pow() variants, which call libm: the sound-mode loops reduce
- * their "all forces representable" flag as an integer or of the kernel's
- * keep masks (isk_k_force_keep).  The rare particles whose force saturates
- * get 0 in the first pass and their saturated force in a second one, which
- * runs only when the first saw any. */
-static inline void coulomb_loop(size_t n, const double *restrict x, const double *restrict y,
-                                double *restrict px, double *restrict py, double cx, double cy,
-                                double s, double xm, double minv, double P, const int kind,
-                                const int sound)
-{
-    uint64_t all_ok = 1;
-    for (size_t i = 0; i < n; i++) {
-        double fx, fy;
-        all_ok &= (uint64_t)isk_k_coulomb(cx, cy, x[i], y[i], s, xm, minv, P, kind, sound, &fx, &fy);
-        double ax = px[i] + fx, ay = py[i] + fy;
-        px[i] = ax;
-        py[i] = ay;
-    }
-    if (!sound || all_ok)
-        return;
-    for (size_t i = 0; i < n; i++) {
-        double fx, fy;
-        if (isk_k_coulomb(cx, cy, x[i], y[i], s, xm, minv, P, kind, sound, &fx, &fy))
-            continue;
-        isk_k_coulomb_saturated(cx, cy, x[i], y[i], s, xm, &fx, &fy);
-        px[i] = px[i] + fx;
-        py[i] = py[i] + fy;
-    }
-}
-
-typedef void (*coulomb_fn)(size_t n, const double *restrict x, const double *restrict y, double *restrict px,
-                           double *restrict py, double cx, double cy, double s, double xm, double minv, double P);
-
-/* Each (power kind, centre rule) twice: baseline x86-64 (SSE2) and, chosen
- * at run time, AVX2 (twice the lanes for the sqrt and the divisions).  The
- * same IEEE operations in the same order either way (no FMA:
- * -ffp-contract=off), so the same bits. */
-#define COULOMB_AS(name, attr, kind, sound)                                                                      \
-    static attr void name(size_t n, const double *restrict x, const double *restrict y, double *restrict px,    \
-                          double *restrict py, double cx, double cy, double s, double xm, double minv, double P)  \
-    {                                                                                                            \
-        coulomb_loop(n, x, y, px, py, cx, cy, s, xm, minv, P, kind, sound);                                     \
-    }
-#if ISK__SPAN_AVX2
-#define COULOMB(kind, sound)                                                                                     \
-    COULOMB_AS(coulomb_##kind##sound, , kind, sound) COULOMB_AS(coulomb_avx2_##kind##sound, ISK__AVX2_FN, kind, sound)
-#else
-#define COULOMB(kind, sound) COULOMB_AS(coulomb_##kind##sound, , kind, sound)
-#endif
+/* One specialised loop per (power kind, centre rule), forces_loops.h's,
+ * in the portable build; forces_avx2.c has the AVX2 one. */
+#define COULOMB(kind, sound) COULOMB_AS(coulomb_##kind##sound, static, kind, sound)
 COULOMB(0, 0) COULOMB(0, 1) COULOMB(1, 0) COULOMB(1, 1) COULOMB(2, 0) COULOMB(2, 1)
 #undef COULOMB
-#undef COULOMB_AS
 
-/* [avx2][power kind * 2 + sound]. */
-#define ROW(p) {p##00, p##01, p##10, p##11, p##20, p##21}
-static const coulomb_fn coulomb_loops[1 + ISK__SPAN_AVX2][6] = {
-    ROW(coulomb_),
-#if ISK__SPAN_AVX2
-    ROW(coulomb_avx2_),
-#endif
-};
-#undef ROW
+/* [power kind * 2 + sound]. */
+static const coulomb_fn coulomb_loops[6] = COULOMB_ROW(coulomb_);
 
 /* First particle that trips the max-distance switch, or n. */
 static size_t first_within(size_t n, const double *restrict x, const double *restrict y, double cx,
@@ -204,7 +149,14 @@ void isk_force_potential(isk_potential *pot, size_t n, const double *x, const do
         return;
     double xm = pot->x_mult, minv = pot->min_dist, P = pot->P;
     const int sound = centre == ISK_FIDELITY_SOUND;
-    coulomb_loops[isk__have_avx2()][pw_kind_of(P) * 2 + sound](cut, x, y, px, py, cx, cy, s, xm, minv, P);
+    const int k = pw_kind_of(P) * 2 + sound;
+#if ISK__CPU_AVX2
+    if (isk__have_avx2()) {
+        isk__coulomb_loops_avx2[k](cut, x, y, px, py, cx, cy, s, xm, minv, P);
+        return;
+    }
+#endif
+    coulomb_loops[k](cut, x, y, px, py, cx, cy, s, xm, minv, P);
 }
 
 static void add_into(size_t n, double *restrict fx, double *restrict fy, const double *restrict px,

@@ -92,7 +92,7 @@ int isk__motion_fused(isk_integrator method, const isk_forces *f, size_t n, doub
 
 /* The same with the widest build it may take: simd = 0 the portable
  * loops, 1 AVX2, 2 AVX-512, each only when the CPU has it
- * (raster/span_simd.h's isk__simd_level).  isk__motion_fused takes the
+ * (src/core/cpu.h's isk__simd_level).  isk__motion_fused takes the
  * widest; the tests compare them all. */
 int isk__motion_fused_build(int simd, isk_integrator method, const isk_forces *f, size_t n, double *x, double *y,
                            double *vx, double *vy, const double *m, double dt, const isk_motion_start *start,

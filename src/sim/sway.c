@@ -1,39 +1,13 @@
 /* SPDX-License-Identifier: MIT */
-/* The fire's sway over a block, portable and AVX2 (see sway.h). */
+/* The fire's sway over a block, the portable loops, and the one place that
+ * picks sway_avx2.c's twins (see sway.h). */
 #include "sim/sway.h"
 
 #include <math.h>
 #include <stdint.h>
 
-#include "raster/span_simd.h" /* ISK__SPAN_AVX2, ISK__AVX2_FN, isk__have_avx2 */
-#include "sim/kernels.h"
-
-/* The sine of the sway, read as the emitter asks: `mode` is a constant at
- * every call below, so the loops have no per-particle branch on it. */
-static inline double sway_sine(const isk_sinlut *t, const int mode, double ph)
-{
-    switch (mode) {
-    case ISK_SINLUT_FLOOR: return isk_sinlut_floor(t, ph);
-    case ISK_SINLUT_ROUND: return isk_sinlut_round(t, ph);
-    case ISK_SINLUT_LERP: return isk_sinlut_lerp(t, ph);
-    default: return sin(ph);
-    }
-}
-
-/* Particle i, sway.h's operations in their order. */
-static inline void sway_one(size_t i, double *restrict x, double *restrict vx, double *restrict amp,
-                            double *restrict ph, const double *restrict om, double *restrict off,
-                            const isk_sway *w, const int mode, const int faithful)
-{
-    ph[i] += om[i] * w->h;
-    double s = amp[i] * sway_sine(w->table, mode, ph[i]);
-    double dx = s - off[i];
-    x[i] += dx;
-    if (faithful)
-        vx[i] += dx;
-    off[i] = s;
-    amp[i] = isk_k_flush(amp[i] * w->decay);
-}
+#include "core/cpu.h" /* ISK__CPU_AVX2, isk__have_avx2 */
+#include "sim/sway_loops.h"
 
 static inline void sway_loop(size_t n, double *restrict x, double *restrict vx, double *restrict amp,
                              double *restrict ph, const double *restrict om, double *restrict off,
@@ -42,8 +16,6 @@ static inline void sway_loop(size_t n, double *restrict x, double *restrict vx, 
     for (size_t i = 0; i < n; i++)
         sway_one(i, x, vx, amp, ph, om, off, w, mode, faithful);
 }
-
-typedef void (*sway_fn)(size_t, double *, double *, double *, double *, const double *, double *, const isk_sway *);
 
 #define SWAY_AS(name, mode, faithful)                                                                            \
     static void name(size_t n, double *x, double *vx, double *amp, double *ph, const double *om, double *off,   \
@@ -54,268 +26,9 @@ typedef void (*sway_fn)(size_t, double *, double *, double *, double *, const do
 SWAY_AS(sway_00, 0, 0) SWAY_AS(sway_01, 0, 1) SWAY_AS(sway_10, 1, 0) SWAY_AS(sway_11, 1, 1)
 SWAY_AS(sway_20, 2, 0) SWAY_AS(sway_21, 2, 1) SWAY_AS(sway_30, 3, 0) SWAY_AS(sway_31, 3, 1)
 #undef SWAY_AS
-
-#if ISK__SPAN_AVX2
-/* The constants of a block's AVX2 loop, broadcast once. */
-typedef struct sway_k4 {
-    __m256d h, scale, decay, sign, two31, half, tiny;
-    __m128i mask, stride;
-    const double *tab;
-    size_t step; /* the stride, for the lerp's second entry */
-} sway_k4;
-
-static ISK__INLINE ISK__AVX2_FN sway_k4 sway_k4_of(const isk_sway *w)
-{
-    sway_k4 k;
-    k.h = _mm256_set1_pd(w->h);
-    k.scale = _mm256_set1_pd(w->table->scale);
-    k.decay = _mm256_set1_pd(w->decay);
-    k.sign = _mm256_set1_pd(-0.0);
-    k.two31 = _mm256_set1_pd(2147483648.0);
-    k.half = _mm256_set1_pd(0.5);
-    k.tiny = _mm256_set1_pd(ISK_FLUSH_TINY);
-    k.mask = _mm_set1_epi32((int)w->table->mask);
-    k.stride = _mm_set1_epi32((int)w->table->stride);
-    k.tab = w->table->table;
-    k.step = w->table->stride;
-    return k;
-}
-
-/* The low 32 bits of each 64-bit lane of v, in order. */
-static ISK__INLINE ISK__AVX2_FN __m128i sway_low32(__m256i v)
-{
-    return _mm256_castsi256_si128(_mm256_permutevar8x32_epi32(v, _mm256_setr_epi32(0, 2, 4, 6, 0, 2, 4, 6)));
-}
-
-/* The sine of four angles t in table steps, every |t| < 2^31, as
- * iskra/sinlut.h's lookup of `mode` computes it: fl = floor(t) (exact), the
- * index (int64)fl mod N (+1 where round goes up) from its 32-bit
- * conversion (the same low bits), the entry at index*stride, and for lerp
- * a + (t - fl)*(b - a). */
-static ISK__INLINE ISK__AVX2_FN __m256d sway_sine4(const sway_k4 *k, __m256d t, const int mode)
-{
-    const __m256d fl = _mm256_round_pd(t, _MM_FROUND_TO_NEG_INF | _MM_FROUND_NO_EXC);
-    __m128i j = _mm256_cvttpd_epi32(fl);
-    if (mode == ISK_SINLUT_ROUND) { /* up = (t - fl) >= 0.5: all ones, i.e. -1, where it holds */
-        const __m256d up = _mm256_cmp_pd(_mm256_sub_pd(t, fl), k->half, _CMP_GE_OQ);
-        j = _mm_sub_epi32(j, sway_low32(_mm256_castpd_si256(up)));
-    }
-    const __m128i at = _mm_mullo_epi32(_mm_and_si128(j, k->mask), k->stride);
-    const __m256d a = _mm256_i32gather_pd(k->tab, at, 8);
-    if (mode != ISK_SINLUT_LERP)
-        return a;
-    const __m256d b = _mm256_i32gather_pd(k->tab + k->step, at, 8); /* entry n exists: no wrap */
-    return _mm256_add_pd(a, _mm256_mul_pd(_mm256_sub_pd(t, fl), _mm256_sub_pd(b, a)));
-}
-
-/* +0.0 where |v| < ISK_FLUSH_TINY, else v (kernels.h's isk_k_flush: a
- * quiet compare, so NaN stays). */
-static ISK__INLINE ISK__AVX2_FN __m256d sway_flush4(const sway_k4 *k, __m256d v)
-{
-    return _mm256_andnot_pd(_mm256_cmp_pd(_mm256_andnot_pd(k->sign, v), k->tiny, _CMP_LT_OQ), v);
-}
-
-/* The sway of particles i .. i+3, their x and vx in *X and *VX (the
- * caller loads and stores those two; VX is read only when faithful), the
- * other columns loaded and stored here.  0 with nothing changed when some
- * angle is beyond the 32-bit index (|t| >= 2^31, infinite or NaN). */
-static ISK__INLINE ISK__AVX2_FN int sway4_core(size_t i, __m256d *X, __m256d *VX, double *restrict amp,
-                                               double *restrict ph, const double *restrict om,
-                                               double *restrict off, const sway_k4 *k, const int mode,
-                                               const int faithful)
-{
-    const __m256d p = _mm256_add_pd(_mm256_loadu_pd(ph + i), _mm256_mul_pd(_mm256_loadu_pd(om + i), k->h));
-    const __m256d t = _mm256_mul_pd(p, k->scale);
-    const __m256d in = _mm256_cmp_pd(_mm256_andnot_pd(k->sign, t), k->two31, _CMP_LT_OQ);
-    if (_mm256_movemask_pd(in) != 0xF)
-        return 0;
-    const __m256d A = _mm256_loadu_pd(amp + i);
-    const __m256d s = _mm256_mul_pd(A, sway_sine4(k, t, mode));
-    const __m256d dx = _mm256_sub_pd(s, _mm256_loadu_pd(off + i));
-    _mm256_storeu_pd(ph + i, p);
-    *X = _mm256_add_pd(*X, dx);
-    if (faithful)
-        *VX = _mm256_add_pd(*VX, dx);
-    _mm256_storeu_pd(off + i, s);
-    _mm256_storeu_pd(amp + i, sway_flush4(k, _mm256_mul_pd(A, k->decay)));
-    return 1;
-}
-
-/* Particles i .. i+3, or 0 with nothing written (sway4_core). */
-static ISK__INLINE ISK__AVX2_FN int sway4_avx2(size_t i, double *restrict x, double *restrict vx,
-                                               double *restrict amp, double *restrict ph,
-                                               const double *restrict om, double *restrict off, const sway_k4 *k,
-                                               const int mode, const int faithful)
-{
-    __m256d X = _mm256_loadu_pd(x + i), VX = faithful ? _mm256_loadu_pd(vx + i) : X;
-    if (!sway4_core(i, &X, &VX, amp, ph, om, off, k, mode, faithful))
-        return 0;
-    _mm256_storeu_pd(x + i, X);
-    if (faithful)
-        _mm256_storeu_pd(vx + i, VX);
-    return 1;
-}
-
-static ISK__INLINE ISK__AVX2_FN void sway_loop_avx2(size_t n, double *restrict x, double *restrict vx,
-                                                    double *restrict amp, double *restrict ph,
-                                                    const double *restrict om, double *restrict off,
-                                                    const isk_sway *w, const int mode, const int faithful)
-{
-    const sway_k4 k = sway_k4_of(w);
-    size_t i = 0;
-    for (; i + 4 <= n; i += 4)
-        if (!sway4_avx2(i, x, vx, amp, ph, om, off, &k, mode, faithful))
-            for (size_t j = i; j < i + 4; j++)
-                sway_one(j, x, vx, amp, ph, om, off, w, mode, faithful);
-    for (; i < n; i++)
-        sway_one(i, x, vx, amp, ph, om, off, w, mode, faithful);
-}
-
-#define SWAY_AVX2(name, mode, faithful)                                                                          \
-    static ISK__AVX2_FN void name(size_t n, double *x, double *vx, double *amp, double *ph, const double *om,   \
-                                  double *off, const isk_sway *w)                                                \
-    {                                                                                                            \
-        sway_loop_avx2(n, x, vx, amp, ph, om, off, w, mode, faithful);                                          \
-    }
-SWAY_AVX2(sway_avx2_00, 0, 0) SWAY_AVX2(sway_avx2_01, 0, 1) SWAY_AVX2(sway_avx2_10, 1, 0)
-SWAY_AVX2(sway_avx2_11, 1, 1) SWAY_AVX2(sway_avx2_20, 2, 0) SWAY_AVX2(sway_avx2_21, 2, 1)
-#undef SWAY_AVX2
-#endif
-
-/* ---- the drift, then the sway, in one pass ------------------------------------ */
-#if ISK__SPAN_AVX2
-
-/* The drift's constants for a block: dvx = ax*h and dvy = ay*h as the
- * drift stages form them; keep_vx where vx is left as it is (the plain
- * drift with ax == 0, whose loop does not store vx: v + 0 would turn a
- * -0 into +0). */
-typedef struct drift_c {
-    double dvx, dvy, f, h;
-    int keep_vx;
-} drift_c;
-
-static drift_c drift_c_of(const isk_sway_drift *d, double h)
-{
-    drift_c c = {d->ax * h, d->ay * h, d->f, h, d->order != ISK_DRIFT_THESIS && d->ax == 0.0};
-    return c;
-}
-
-/* Particle i's drift, the drift stages' operations (stage_motion.c's
- * drift_loop, stage_fire.c's run_drift_slow and run_slow) in their order. */
-static inline void drift_one(size_t i, double *restrict x, double *restrict y, double *restrict vx,
-                             double *restrict vy, const drift_c *c, const int order)
-{
-    double wx, wy;
-    if (order == ISK_DRIFT_THESIS) {
-        wx = isk_k_flush((vx[i] + c->dvx) * c->f);
-        wy = isk_k_flush((vy[i] + c->dvy) * c->f);
-    } else {
-        wx = c->keep_vx ? vx[i] : vx[i] + c->dvx;
-        wy = vy[i] + c->dvy;
-    }
-    x[i] = x[i] + c->h * wx;
-    y[i] = y[i] + c->h * wy;
-    if (order == ISK_DRIFT_SOUND) {
-        wx = isk_k_flush(wx * c->f);
-        wy = isk_k_flush(wy * c->f);
-    }
-    vx[i] = wx;
-    vy[i] = wy;
-}
-
-typedef struct drift_k4 {
-    __m256d dvx, dvy, f, keep_vx; /* keep_vx: all ones or all zeros */
-} drift_k4;
-
-/* Particles i .. i+3: drift_one's operations; y and vy stored, the new x
- * and vx in *X and *VX for the sway. */
-static ISK__INLINE ISK__AVX2_FN void drift4_avx2(size_t i, double *restrict x, double *restrict y,
-                                                 double *restrict vx, double *restrict vy, const sway_k4 *k,
-                                                 const drift_k4 *d, const int order, __m256d *X, __m256d *VX)
-{
-    const __m256d ux = _mm256_loadu_pd(vx + i), uy = _mm256_loadu_pd(vy + i);
-    __m256d wx, wy;
-    if (order == ISK_DRIFT_THESIS) {
-        wx = sway_flush4(k, _mm256_mul_pd(_mm256_add_pd(ux, d->dvx), d->f));
-        wy = sway_flush4(k, _mm256_mul_pd(_mm256_add_pd(uy, d->dvy), d->f));
-    } else {
-        wx = _mm256_blendv_pd(_mm256_add_pd(ux, d->dvx), ux, d->keep_vx);
-        wy = _mm256_add_pd(uy, d->dvy);
-    }
-    *X = _mm256_add_pd(_mm256_loadu_pd(x + i), _mm256_mul_pd(k->h, wx));
-    _mm256_storeu_pd(y + i, _mm256_add_pd(_mm256_loadu_pd(y + i), _mm256_mul_pd(k->h, wy)));
-    if (order == ISK_DRIFT_SOUND) {
-        wx = sway_flush4(k, _mm256_mul_pd(wx, d->f));
-        wy = sway_flush4(k, _mm256_mul_pd(wy, d->f));
-    }
-    _mm256_storeu_pd(vy + i, wy);
-    *VX = wx;
-}
-
-static ISK__INLINE ISK__AVX2_FN void drift_sway_avx2(size_t n, double *restrict x, double *restrict y,
-                                                     double *restrict vx, double *restrict vy,
-                                                     double *restrict amp, double *restrict ph,
-                                                     const double *restrict om, double *restrict off,
-                                                     const drift_c *c, const isk_sway *w, const int order,
-                                                     const int mode, const int faithful)
-{
-    const sway_k4 k = sway_k4_of(w);
-    const drift_k4 d = {_mm256_set1_pd(c->dvx), _mm256_set1_pd(c->dvy), _mm256_set1_pd(c->f),
-                        _mm256_castsi256_pd(_mm256_set1_epi64x(c->keep_vx ? -1 : 0))};
-    /* vx unchanged (the plain drift with ax == 0, no coupling) is not
-     * stored, as the drift's loop does not: its cache lines stay clean */
-    const int store_vx = faithful || order != ISK_DRIFT_PLAIN || !c->keep_vx;
-    size_t i = 0;
-    for (; i + 4 <= n; i += 4) {
-        __m256d X, VX;
-        drift4_avx2(i, x, y, vx, vy, &k, &d, order, &X, &VX);
-        const int swayed = sway4_core(i, &X, &VX, amp, ph, om, off, &k, mode, faithful);
-        _mm256_storeu_pd(x + i, X);
-        if (store_vx)
-            _mm256_storeu_pd(vx + i, VX);
-        if (!swayed) /* the drift is done: the sway one by one */
-            for (size_t j = i; j < i + 4; j++)
-                sway_one(j, x, vx, amp, ph, om, off, w, mode, faithful);
-    }
-    for (; i < n; i++) {
-        drift_one(i, x, y, vx, vy, c, order);
-        sway_one(i, x, vx, amp, ph, om, off, w, mode, faithful);
-    }
-}
-
-typedef void (*drift_sway_fn)(size_t, double *, double *, double *, double *, double *, double *, const double *,
-                              double *, const drift_c *, const isk_sway *);
-
-#define DRIFT_SWAY(order, mode, faithful)                                                                        \
-    static ISK__AVX2_FN void drift_sway_##order##mode##faithful(size_t n, double *x, double *y, double *vx,       \
-                                                                double *vy, double *amp, double *ph,             \
-                                                                const double *om, double *off, const drift_c *c, \
-                                                                const isk_sway *w)                               \
-    {                                                                                                            \
-        drift_sway_avx2(n, x, y, vx, vy, amp, ph, om, off, c, w, order, mode, faithful);                        \
-    }
-#define DRIFT_SWAY_ORDER(order)                                                                                  \
-    DRIFT_SWAY(order, 0, 0) DRIFT_SWAY(order, 0, 1) DRIFT_SWAY(order, 1, 0) DRIFT_SWAY(order, 1, 1)             \
-    DRIFT_SWAY(order, 2, 0) DRIFT_SWAY(order, 2, 1)
-DRIFT_SWAY_ORDER(0) DRIFT_SWAY_ORDER(1) DRIFT_SWAY_ORDER(2)
-#undef DRIFT_SWAY_ORDER
-#undef DRIFT_SWAY
-
-/* [order][mode * 2 + faithful], the three table sines. */
-#define ROW(o) {drift_sway_##o##00, drift_sway_##o##01, drift_sway_##o##10, drift_sway_##o##11, \
-                drift_sway_##o##20, drift_sway_##o##21}
-static const drift_sway_fn drift_sway_loops[3][6] = {ROW(0), ROW(1), ROW(2)};
-#undef ROW
-#endif
-
-/* [avx2][mode][faithful], modes in isk_sinlut_mode order; libm's sin has
- * no AVX2 loop. */
-static const sway_fn sway_loops[1 + ISK__SPAN_AVX2][ISK_SINLUT_MODE_COUNT][2] = {
-    {{sway_00, sway_01}, {sway_10, sway_11}, {sway_20, sway_21}, {sway_30, sway_31}},
-#if ISK__SPAN_AVX2
-    {{sway_avx2_00, sway_avx2_01}, {sway_avx2_10, sway_avx2_11}, {sway_avx2_20, sway_avx2_21}, {sway_30, sway_31}},
-#endif
-};
+/* [mode][faithful], modes in isk_sinlut_mode order. */
+static const sway_fn sway_loops[ISK_SINLUT_MODE_COUNT][2] = {
+    {sway_00, sway_01}, {sway_10, sway_11}, {sway_20, sway_21}, {sway_30, sway_31}};
 
 /* 1 when every index*stride of the table, +stride, is an int32 (always,
  * for the tables isk_sinlut_init makes: at most 65536). */
@@ -324,12 +37,27 @@ static int gatherable(const isk_sinlut *t)
     return t && t->mask < (uint64_t)INT32_MAX && t->stride <= (uint64_t)INT32_MAX / (t->mask + 1u);
 }
 
+/* 1 when sway_avx2.c's loops may take this table sine: the caller asks
+ * for them (avx2), a table sine (libm's sin has no AVX2 loop), 32-bit
+ * offsets, a CPU with AVX2. */
+static int fast_sine(int avx2, unsigned mode, const isk_sinlut *t)
+{
+    return avx2 && mode < ISK_SINLUT_LIBM && gatherable(t) && isk__have_avx2();
+}
+
 void isk__sway_build(int avx2, const isk_sway *w, size_t n, double *x, double *vx, double *amp, double *phase,
                     const double *omega, double *offset)
 {
     const unsigned mode = (unsigned)w->mode < ISK_SINLUT_MODE_COUNT ? (unsigned)w->mode : ISK_SINLUT_LIBM;
-    const int fast = avx2 && mode != ISK_SINLUT_LIBM && gatherable(w->table) && isk__have_avx2();
-    sway_loops[fast][mode][w->faithful != 0](n, x, vx, amp, phase, omega, offset, w);
+#if ISK__CPU_AVX2
+    if (fast_sine(avx2, mode, w->table)) {
+        isk__sway_loops_avx2[mode][w->faithful != 0](n, x, vx, amp, phase, omega, offset, w);
+        return;
+    }
+#else
+    (void)avx2; /* no AVX2 build to choose */
+#endif
+    sway_loops[mode][w->faithful != 0](n, x, vx, amp, phase, omega, offset, w);
 }
 
 void isk__sway_run(const isk_sway *w, size_t n, double *x, double *vx, double *amp, double *phase,
@@ -341,16 +69,16 @@ void isk__sway_run(const isk_sway *w, size_t n, double *x, double *vx, double *a
 int isk__sway_drift_build(int avx2, const isk_sway_drift *d, const isk_sway *w, size_t n, double *x, double *y,
                          double *vx, double *vy, double *amp, double *phase, const double *omega, double *offset)
 {
-#if ISK__SPAN_AVX2
     const unsigned order = (unsigned)d->order, mode = (unsigned)w->mode;
-    if (!avx2 || order > ISK_DRIFT_SOUND || mode >= ISK_SINLUT_LIBM || !gatherable(w->table) || !isk__have_avx2())
+    if (order > ISK_DRIFT_SOUND || !fast_sine(avx2, mode, w->table))
         return 0;
+#if ISK__CPU_AVX2
     const drift_c c = drift_c_of(d, w->h);
-    drift_sway_loops[order][mode * 2 + (w->faithful != 0)](n, x, y, vx, vy, amp, phase, omega, offset, &c, w);
+    isk__drift_sway_loops_avx2[order][mode * 2 + (w->faithful != 0)](n, x, y, vx, vy, amp, phase, omega, offset, &c,
+                                                                     w);
     return 1;
 #else
-    (void)avx2, (void)d, (void)w, (void)n, (void)x, (void)y, (void)vx, (void)vy;
-    (void)amp, (void)phase, (void)omega, (void)offset;
+    (void)n, (void)x, (void)y, (void)vx, (void)vy, (void)amp, (void)phase, (void)omega, (void)offset;
     return 0;
 #endif
 }

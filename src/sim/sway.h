@@ -77,7 +77,7 @@ int isk__sway_drift_build(int avx2, const isk_sway_drift *d, const isk_sway *w, 
                          double *vx, double *vy, double *amp, double *phase, const double *omega, double *offset);
 
 /* The same with the build chosen: avx2 = 0 the portable loops, 1 the AVX2
- * ones when isk__have_avx2() (raster/span_simd.h), else the portable ones
+ * ones when isk__have_avx2() (src/core/cpu.h), else the portable ones
  * too.  isk__sway_run takes the fastest; the tests compare both. */
 void isk__sway_build(int avx2, const isk_sway *w, size_t n, double *x, double *vx, double *amp, double *phase,
                     const double *omega, double *offset);

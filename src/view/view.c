@@ -6,6 +6,8 @@
 
 #include <math.h>
 
+#include "view/view_transform.h"
+
 static int bad_size(int w, int h)
 {
     return w <= 0 || h <= 0 || w > ISK_CANVAS_MAX_DIM || h > ISK_CANVAS_MAX_DIM;
@@ -76,18 +78,12 @@ isk_status isk_view_camera(isk_view *v, int width, int height, double zoom, doub
     return ISK_OK;
 }
 
+/* view_transform.h's arithmetic, which every batched kernel shares. */
 void isk_view_to_screen(const isk_view *v, double x, double y, double *sx, double *sy)
 {
-    double X, Y;
-    if (!v) {
-        X = Y = 0.0;
-    } else if (v->kind == ISK_VIEW_CAMERA) {
-        X = v->width / 2.0 + v->a * (x + v->tx);
-        Y = v->height / 2.0 - v->a * (y + v->ty);
-    } else {
-        X = v->sx * x + v->px;
-        Y = v->sy * y + v->py;
-    }
+    double X = 0.0, Y = 0.0;
+    if (v)
+        isk__view_to_screen(v, x, y, &X, &Y);
     if (sx) *sx = X;
     if (sy) *sy = Y;
 }

@@ -3,8 +3,8 @@
  * isk_draw_dots_browser, isk_draw_pixels in iskra/view.h).
  *
  * One loop per (view kind, dot rule, blend mode), chosen once per batch:
- * the transform is isk_view_to_screen's arithmetic inlined (same operations,
- * same order, so the same doubles), the dot weights are raster/dot_kernel.h's
+ * the transform is isk_view_to_screen's arithmetic inlined (view/
+ * view_transform.h's isk__view_axis_map, so the same doubles), the dot weights are raster/dot_kernel.h's
  * rules, the blend raster/blend_px.h's with the mode a constant and the
  * colour prepared once (a coverage table).  The result is byte-identical to
  * calling the single-dot functions in index order (tests/test_raster_fast.c).
@@ -17,6 +17,7 @@
 
 #include "core/fast_paths.h"
 #include "view/dot_block.h"
+#include "view/view_transform.h"
 #include "view/world_batch.h"
 
 
@@ -24,7 +25,7 @@
  * transforms each point and finds its pixel (prefetching it: a random
  * access the hardware cannot guess), a second blends in index order.  The
  * colour is prepared once: its coverage-255 table entry, since
- * isk__px_lut(d, t, 255, mode) is isk__px(d, col, mode) (div255(a*255) = a). */
+ * isk__px_lut(d, t, 255, mode) is isk__blend_px(d, col, mode) (div255(a*255) = a). */
 #define PIXEL_BLOCK 64
 
 /* The batch's k-th point: k itself, or the k-th entry of a list of indices
@@ -51,10 +52,8 @@ static ISK__INLINE void run_pixels(const isk_canvas *c, int r0, int r1, int c0, 
                                    const uint32_t *list, const double *x, const double *y, isk_color col,
                                    int camera, int keep, isk_blend mode)
 {
-    /* isk_view_to_screen: camera  X = w/2 + a*(x + tx),  Y = h/2 - a*(y + ty);
-     *                     window  X = sx*x + px,          Y = sy*y + py. */
-    const double hw = v->width / 2.0, hh = v->height / 2.0, a = v->a, tx = v->tx, ty = v->ty;
-    const double sx = v->sx, sy = v->sy, px = v->px, py = v->py;
+    /* isk_view_to_screen's arithmetic (view_transform.h) */
+    const isk__view_axis ax = isk__view_axis_x(v), ay = isk__view_axis_y(v);
     const double X0 = c0, X1 = c1, Y0 = r0, Y1 = r1;
     const size_t stride = c->stride;
     uint8_t *const pixels = c->pixels;
@@ -68,7 +67,7 @@ static ISK__INLINE void run_pixels(const isk_canvas *c, int r0, int r1, int c0, 
      * 8-12 %). */
     const int banded = r0 > 0 || r1 < c->height;
     const select_fn select = pick_select();
-    const select_view sv = {camera, keep, hh, a, ty, sy, py, Y0 - 1.0, Y1, c->height};
+    const select_view sv = {camera, keep, ay, Y0 - 1.0, Y1, c->height};
     isk__cov_lut t;
     isk__cov_lut_entry(&t, col, 255);
     size_t off[PIXEL_BLOCK];
@@ -87,7 +86,7 @@ static ISK__INLINE void run_pixels(const isk_canvas *c, int r0, int r1, int c0, 
             const int kept = select(&sv, ys, m, by, bix);
             for (int q = 0; q < kept; q++) {
                 const size_t j = POINT(list, i0 + (size_t)bix[q]);
-                double X = camera ? hw + a * (x[j] + tx) : sx * x[j] + px;
+                double X = isk__view_axis_map(ax, camera, x[j]);
                 if (keep) /* a batch constant: the branch is hoisted */
                     X = isk__keep_on_canvas(X, c->width);
                 const int in = pixel_offset(X, by[q], X0, Y0, X1, Y1, stride, &off[k]);
@@ -99,14 +98,7 @@ static ISK__INLINE void run_pixels(const isk_canvas *c, int r0, int r1, int c0, 
         } else {
             for (int q = 0; q < m; q++) {
                 const size_t j = POINT(list, i0 + (size_t)q);
-                double X, Y;
-                if (camera) {
-                    X = hw + a * (x[j] + tx);
-                    Y = hh - a * (y[j] + ty);
-                } else {
-                    X = sx * x[j] + px;
-                    Y = sy * y[j] + py;
-                }
+                double X = isk__view_axis_map(ax, camera, x[j]), Y = isk__view_axis_map(ay, camera, y[j]);
                 if (keep) {
                     X = isk__keep_on_canvas(X, c->width);
                     Y = isk__keep_on_canvas(Y, c->height);
@@ -217,8 +209,7 @@ static ISK__INLINE void run_dots_blocked(const isk_canvas *c, int r0, int r1, in
                                          const isk__cov_lut *lut, int camera, int browser, int keep,
                                          isk__dot_recording *rec, isk_blend mode)
 {
-    const double hw = v->width / 2.0, hh = v->height / 2.0, a = v->a, tx = v->tx, ty = v->ty;
-    const double sx = v->sx, sy = v->sy, px = v->px, py = v->py;
+    const isk__view_axis ax = isk__view_axis_x(v), ay = isk__view_axis_y(v); /* view_transform.h */
     const double X0 = c0, X1 = c1 - 1.0, Y0 = r0, H1 = r1 - 1.0;
     /* A point whose dot cannot touch the rows [r0, r1) is dropped before
      * anything else is computed for it: the single-dot kernels' own row
@@ -229,13 +220,12 @@ static ISK__INLINE void run_dots_blocked(const isk_canvas *c, int r0, int r1, in
     uint8_t *const pixels = c->pixels;
     const weights_fn weights = pick_weights(browser);
     const select_fn select = pick_select();
-    const select_view sv = {camera, keep, hh, a, ty, sy, py, lo, hi, c->height};
+    const select_view sv = {camera, keep, ay, lo, hi, c->height};
     /* A band of columns (whole rows, no list) selects its points by their
-     * X instead, with the same select: the camera's X = hw + a (x + tx) is
-     * hw - (-a) (x + tx) exactly, the window's sx x + px has Y's form. */
+     * X instead, with the same select on the X axis. */
     const int by_columns = !list && r0 == 0 && r1 == c->height && (c0 > 0 || c1 < c->width);
-    const select_view sc = {camera, keep, hw, -a, tx, sx, px, browser ? X0 - 2.0 : X0 - 1.0,
-                            browser ? c1 + 1.0 : (double)c1, c->width};
+    const select_view sc = {camera, keep, ax, browser ? X0 - 2.0 : X0 - 1.0, browser ? c1 + 1.0 : (double)c1,
+                            c->width};
     dot_block b;
     int have = 0; /* the batch's points (dot_block.h's DOT_BATCH) */
     for (size_t i0 = 0; i0 < n; i0 += DOT_BLOCK) {
@@ -254,14 +244,14 @@ static ISK__INLINE void run_dots_blocked(const isk_canvas *c, int r0, int r1, in
         if (by_columns) {
             kept = select(&sc, x + i0, m, b.x + have, b.ix + have);
             for (int k = have; k < have + kept; k++) {
-                const double Y = screen_y(&sv, y[i0 + (size_t)b.ix[k]]);
+                const double Y = select_screen(&sv, y[i0 + (size_t)b.ix[k]]);
                 b.y[k] = keep ? isk__keep_on_canvas(Y, c->height) : Y;
             }
         } else {
             kept = select(&sv, yb, m, b.y + have, b.ix + have);
             for (int k = have; k < have + kept; k++) {
                 const double xi = x[POINT(list, i0 + (size_t)b.ix[k])];
-                const double X = camera ? hw + a * (xi + tx) : sx * xi + px;
+                const double X = isk__view_axis_map(ax, camera, xi);
                 b.x[k] = keep ? isk__keep_on_canvas(X, c->width) : X;
             }
         }
@@ -299,7 +289,7 @@ static ISK__INLINE void run_kind(const isk_canvas *c, int r0, int r1, int c0, in
                                  const isk__cov_lut *lut, isk__batch_rule rule, int keep, isk__dot_recording *rec,
                                  isk_blend mode)
 {
-    const int camera = v->kind == ISK_VIEW_CAMERA;
+    const int camera = isk__view_is_camera(v);
     if (rule == ISK__BATCH_DOT && camera)
         run_dots_blocked(c, r0, r1, c0, c1, v, n, list, x, y, col, lut, 1, 0, keep, rec, mode);
     else if (rule == ISK__BATCH_DOT)
@@ -479,11 +469,10 @@ void isk__draw_batch_replay(isk_canvas *c, const isk__dot_rec *rec, size_t n, is
         ISK__BLEND_DISPATCH(mode, replay_rule, c, rec, n, col, r0, r1, c0, c1);
 }
 
-/* The view's Y arithmetic, for screen_y and the selects (no keep). */
+/* The view's Y axis, for select_screen and the selects (no keep). */
 static select_view rows_view(const isk_view *v, double lo, double hi)
 {
-    return (select_view){.camera = v->kind == ISK_VIEW_CAMERA, .hh = v->height / 2.0, .a = v->a, .ty = v->ty,
-                         .sy = v->sy, .py = v->py, .lo = lo, .hi = hi};
+    return (select_view){.camera = isk__view_is_camera(v), .axis = isk__view_axis_y(v), .lo = lo, .hi = hi};
 }
 
 int isk__batch_select_rows(const isk_view *v, const double *y, int m, double lo, double hi, double *oy,
@@ -503,7 +492,7 @@ void isk__batch_bin(const isk_view *v, int height, const double *y, size_t i0, s
     size_t mine[256] = {0};
     unsigned nb = 0;
     for (size_t i = i0; i < i1; i++) {
-        const double Y = screen_y(&sv, y[i]);
+        const double Y = select_screen(&sv, y[i]);
         uint16_t k = ISK__BIN_NONE;
         if (Y > lo && Y < hi) { /* also false for NaN; keeps the conversion defined */
             const int fy = (int)(Y + (reach + 1.0)) - (reach + 1); /* floor */
