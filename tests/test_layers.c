@@ -50,6 +50,7 @@ static const struct {
     {"version.h", "core"},     {"color.h", "core"},        {"status.h", "core"},     {"rng.h", "core"},
     {"sinlut.h", "core"},      {"gradient.h", "core"},     {"timestep.h", "core"},   {"vec2.h", "core"},
     {"canvas.h", "raster"},    {"blend.h", "raster"},      {"blend_inline.h", "raster"},
+    {"blend_inline_sse2.h", "raster"},
     {"draw.h", "raster"},      {"text.h", "raster"},       {"sprite.h", "raster"},   {"texture.h", "raster"},
     {"view.h", "view"},
     {"particles.h", "sim"},    {"forces.h", "sim"},        {"integrate.h", "sim"},   {"impact.h", "sim"},

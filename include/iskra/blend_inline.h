@@ -125,4 +125,31 @@ static ISK__INLINE void isk__px(uint8_t *d, isk_color s, isk_blend mode)
     }
 }
 
+/* The one-pixel rule a program's inlined isk_draw_pixel runs: isk__px,
+ * or on x86-64 its SSE2 twin (iskra/blend_inline_sse2.h, the same bytes),
+ * unless ISKRA_REFERENCE asks for the plain form.  In two steps: the
+ * colour's part first (isk__px_prepare: computed unconditionally, a loop
+ * of one colour computes it once, before the loop), then the pixel. */
+#if defined(__SSE2__) && defined(__x86_64__) && !defined(ISKRA_REFERENCE)
+#include "iskra/blend_inline_sse2.h"
+typedef __m128i isk__px_prep;
+static ISK__INLINE isk__px_prep isk__px_prepare(isk_color s) { return isk__source_k_sse2(s); }
+static ISK__INLINE void isk__px_prepared(uint8_t *d, isk_color s, isk__px_prep K, isk_blend mode)
+{
+    isk__px_k_sse2(d, s, K, mode);
+}
+#else
+typedef int isk__px_prep; /* the plain rule has no colour part to keep */
+static ISK__INLINE isk__px_prep isk__px_prepare(isk_color s)
+{
+    (void)s;
+    return 0;
+}
+static ISK__INLINE void isk__px_prepared(uint8_t *d, isk_color s, isk__px_prep K, isk_blend mode)
+{
+    (void)K;
+    isk__px(d, s, mode);
+}
+#endif
+
 #endif

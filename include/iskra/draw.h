@@ -103,14 +103,16 @@ static ISK__INLINE uint8_t *isk__pixel_at(isk_canvas *c, int x, int y)
  * lets a library function be one): a loop of calls then compiles to a loop
  * of blends, with no call and with the colour's part of the rule left
  * out of the loop by the compiler (the blend is iskra/blend_inline.h's
- * plain C).  The bytes are the same either way;
+ * rule, or on x86-64 its SSE2 twin).  The bytes are the same either way;
  * (isk_draw_pixel)(...) or &isk_draw_pixel reach the function. */
 
 static ISK__INLINE void isk__draw_pixel_inline(isk_canvas *c, int x, int y, isk_color color, isk_blend mode)
 {
+    /* first, unconditionally: a loop of one colour computes it once */
+    const isk__px_prep K = isk__px_prepare(color);
     uint8_t *d = isk__pixel_at(c, x, y);
     if (d)
-        isk__px(d, color, mode);
+        isk__px_prepared(d, color, K, mode);
 }
 #define isk_draw_pixel(c, x, y, color, mode) isk__draw_pixel_inline((c), (x), (y), (color), (mode))
 
