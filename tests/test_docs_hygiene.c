@@ -138,6 +138,45 @@ Test(docs_hygiene, no_issue_numbers_in_the_code)
     cr_assert_eq(hits, 0, "%d lines name an issue (above): say what they are about instead", hits);
 }
 
+/* Measurements, dates and machine names belong in docs/performance.md and
+ * the benchmarks' output: the library's code and headers state rules and
+ * name the section that holds the measures. */
+Test(docs_hygiene, no_diaries_in_the_library)
+{
+    regex_t diary;
+    cr_assert_eq(regcomp(&diary, "20[0-9][0-9]-[0-9][0-9]-[0-9][0-9]|this VM|Zen ?4|Xeon|EPYC|medians of",
+                         REG_EXTENDED | REG_ICASE | REG_NEWLINE),
+                 0);
+    FILE *p = popen("find src include -name '*.[ch]' -not -name sinlut_table.c | sort", "r");
+    cr_assert_not_null(p);
+    char path[512];
+    int files = 0, hits = 0;
+    while (fgets(path, sizeof path, p)) {
+        path[strcspn(path, "\n")] = 0;
+        char *text = cli_slurp(path);
+        files++;
+        long line = 1;
+        for (char *q = text, *start = text;; q++)
+            if (*q == '\n' || !*q) {
+                const char c = *q;
+                *q = 0;
+                if (regexec(&diary, start, 0, NULL, 0) == 0) {
+                    cr_log_error("%s:%ld: a measurement's date or machine: %s", path, line, start);
+                    hits++;
+                }
+                if (!c)
+                    break;
+                line++;
+                start = q + 1;
+            }
+        free(text);
+    }
+    pclose(p);
+    regfree(&diary);
+    cr_assert_gt(files, 150);
+    cr_assert_eq(hits, 0, "%d lines (above): move the measure to docs/performance.md and name its section", hits);
+}
+
 Test(docs_hygiene, iskra_list_names_no_issue)
 {
     compile_re();

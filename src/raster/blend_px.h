@@ -33,8 +33,8 @@
 
 /* n pixels from d set to s (ISK_BLEND_REPLACE, whatever the source alpha):
  * 32-bit words through locals, which the compiler vectorizes (stores
- * through bytes may alias the caller's fields and kept it from doing so:
- * an 800x600 fill took 150 us byte by byte, 45 us so). */
+ * through bytes may alias the caller's fields and kept it from doing so;
+ * docs/performance.md, "Where the constants come from"). */
 static ISK__INLINE void isk__fill_span(uint8_t *d, size_t n, isk_color s)
 {
     const uint8_t px[4] = {s.r, s.g, s.b, s.a};

@@ -574,10 +574,9 @@ static uint32_t screen_rests(size_t o, size_t n, double *pos, double *vel, const
  * the last one outside: on a floor of many masses it answers no one, and
  * the resting screen does their work anyway.  It is a cache of
  * impact_axis's answers, so whom it is asked about changes only the time.
- * (Who is outside was found here, two particles at a time with SSE2, after
- * a loop over both axes with the memo tests had made gcc spill its masks
- * through the stack at every particle: 13.5 ns a particle-step of a floor
- * of many masses, then 9.2; the screen's masks took the last 0.6 ns.) */
+ * (Who is outside is found two particles at a time with SSE2: a loop over
+ * both axes with the memo tests made gcc spill its masks through the
+ * stack at every particle; docs/performance.md, "Where the constants come from".) */
 static uint32_t split_by_memo(size_t o, size_t n, const double *pos, const double *vel, const double *m,
                               uint32_t out, const rest_memo *memo, uint32_t *hits)
 {

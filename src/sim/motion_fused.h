@@ -68,9 +68,7 @@ static inline isk_motion_start isk_motion_start_of(isk_scratch *s)
  * One loop over the four columns rather than
  * four memcpy: the copy is the first to read a block from memory, and four
  * streams at once keep four misses in flight where a memcpy a column waits
- * for one column's lines after another's
- * (bench_walls at 10^6, "from a remembered start": 2.73-2.85 ns a
- * particle-step against 2.80-3.13, alternated runs). */
+ * for one column's lines after another's (docs/performance.md, "Where the constants come from"). */
 static inline void isk_motion_start_copy(const isk_motion_start *s, size_t n, const double *x, const double *y,
                                          const double *vx, const double *vy)
 {

@@ -197,8 +197,7 @@ static ISK__INLINE uint64_t pot_step(const pot_par *restrict p, double x0, doubl
  * stages' start state when the caller asks for it (isk_motion_start: the
  * remember stage's copy without a pass of its own).  As four restrict
  * parameters: through a struct's pointers gcc could not tell the copy from
- * the columns and left the loop scalar (14.6 ns a particle-step instead of
- * 3 with a Coulomb potential).  Stores in *over
+ * the columns and left the loop scalar (docs/performance.md, "Where the constants come from").  Stores in *over
  * the or of pot_step's words: when its top bit is set some force did not
  * survive the sound rule, and the caller redoes the block (pot_fixup).
  * Returns the or-ed non-finite bits: of the four new values for explicit

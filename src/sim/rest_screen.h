@@ -8,8 +8,8 @@
  * puts it back on the floor with the integrator's offset velocity.  When
  * the particles have one mass their end states repeat and bounds.c's memo
  * answers them; with many masses (explosions, mass ranges) each needs the
- * reconstruction, a dependent chain of two divisions and the basis series:
- * 41 ns a particle in scalar code.  The screen does the same operations
+ * reconstruction, a dependent chain of two divisions and the basis series,
+ * slow in scalar code (docs/performance.md, "Where the constants come from").  The screen does the same operations
  * for a whole group on vector lanes:
  *
  *     isk_rest_axis ax = {a, delta, h, lo, hi};   // one axis, from the end state
@@ -27,8 +27,7 @@
  * Three builds of the same C loop: the portable one (what the compiler
  * makes of it for the baseline target, SSE2 on x86-64) and, on x86-64 CPUs
  * that have them, AVX2 and AVX-512, chosen at run time (AVX-512's 32
- * registers and mask registers: the all-resting row of bench_walls 8.0 ->
- * 7.4 ns a particle-step on a Zen 4). */
+ * registers and mask registers). */
 #ifndef ISKRA_SIM_REST_SCREEN_H
 #define ISKRA_SIM_REST_SCREEN_H
 

@@ -50,10 +50,8 @@
  * a band only part of each block is kept, a varying number, so the kept
  * points of successive blocks are gathered into one batch and the weights
  * and blends run on the batch's whole steps (at least DOT_BLOCK points),
- * the few left over carried to the next batch.  Against block by block
- * (10^6 dots, one process, the two interleaved, medians of 31): the draw
- * on two bands 0.94-0.99x the time, falling, settled or at rest, on one
- * thread 0.97-0.98x; 10^5 dots 0.97x.  A batch holds fewer than
+ * the few left over carried to the next batch (docs/performance.md, "Where the constants come from").
+ * A batch holds fewer than
  * DOT_BLOCK points gathered so far and a block's kept points, and the
  * selects' and the weights' whole-vector stores past them (which stay
  * within a block's DOT_BLOCK entries after where it starts). */
@@ -140,9 +138,8 @@ static inline void weights_scalar(dot_block *b, int m, double X0, double X1, dou
 /* The vector weights take WEIGHTS_GROUPS groups of points through each
  * step side by side.  One group is a chain of about 60 dependent
  * operations, more than the processor's floating-point queue looks past,
- * so one at a time it waited on each latency in turn: AVX-512 3.3 ns a
- * point on Zen 4, 2.3 ns with two (AVX2 4.4 -> 3.4); three, four or eight
- * did no better. */
+ * so one at a time it waited on each latency in turn; three, four or
+ * eight did no better than two (docs/performance.md, "Where the constants come from"). */
 #define WEIGHTS_GROUPS 2
 
 /* The browser rule's weights (integer arithmetic, already cheap). */

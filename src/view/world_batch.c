@@ -134,7 +134,7 @@ static ISK__INLINE void run_pixels(const isk_canvas *c, int r0, int r1, int c0, 
  * with the weights two groups at a time the blends' loads overlap well
  * enough on their own (the same time for points all over an 800x600
  * canvas), and where the points crowd into a small part of the canvas
- * the prefetches' own loop cost 1 ns a dot (docs/vectorization.md).
+ * the prefetches' own loop cost more than they saved (docs/vectorization.md).
  * The stages are view/dot_block.h's. */
 
 /* The pixels of a DOT_EDGE point's block that lie on the tile's rows
@@ -311,9 +311,8 @@ static ISK__INLINE void run_kind(const isk_canvas *c, int r0, int r1, int c0, in
  * (tests/test_raster_fast.c), and it is this file's bulk (a copy for every
  * entry point, blend mode, view kind and dot rule), which every CI build
  * waited for: without the table's copies, and with the recording's only
- * for the exact-area dot, it compiles in 65 s instead of 164 under
- * clang's fuzzer flags, 54 instead of 98 under gcc's sanitizers, 26
- * instead of 60 at -O3 (2026-12-05). */
+ * for the exact-area dot, it compiles in less than half the time
+ * (docs/performance.md, "Where the constants come from"). */
 #define LUT_MIN_BATCH 64
 
 /* A short batch: each point through the view (isk_view_to_screen, whose
