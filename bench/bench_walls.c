@@ -252,12 +252,12 @@ static int build(world *w, size_t n)
         }
         const int kept_start = v == V_START || v == V_COULOMB_WALLS; /* as effect_compile.c asks */
         isk_stage *m = isk__pipeline_add(pl, &isk__stage_motion);
-        m->u.motion.method = ISK_INTEGRATE_SEMI_EULER;
+        isk__stage_motion_init(m, ISK_INTEGRATE_SEMI_EULER,
+                               v == V_DRAG                              ? &w->drag
+                               : v == V_COULOMB || v == V_COULOMB_WALLS ? &w->coulomb
+                               : v == V_COULOMB_T                       ? &w->coulomb_t
+                                                                        : &w->f);
         m->u.motion.remember = kept_start;
-        m->u.motion.forces = v == V_DRAG        ? &w->drag
-                             : v == V_COULOMB || v == V_COULOMB_WALLS ? &w->coulomb
-                             : v == V_COULOMB_T ? &w->coulomb_t
-                                                : &w->f;
         if (v == V_MOTION || v == V_DRAG || v == V_COULOMB || v == V_COULOMB_T)
             continue;
         isk_stage *st = isk__pipeline_add(pl, v == V_END ? &end_walls : &isk__stage_walls);

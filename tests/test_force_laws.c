@@ -154,7 +154,7 @@ Test(force_laws, a_law_the_fused_pass_does_not_know_gives_the_reference_bytes)
                     drag(&again, &again_pot);
                 }
                 int nonfinite = 0;
-                const int fused = isk__motion_fused(methods[k], &again, ISK_SIM_BLOCK, x, y, vx, vy, m, h, NULL,
+                const int fused = isk__motion_fused(methods[k], &again, isk_forces_laws(&again), ISK_SIM_BLOCK, x, y, vx, vy, m, h, NULL,
                                                    &nonfinite);
                 cr_expect_eq(fused, (laws & ~ISK__FUSED_LAWS) == 0, "law '%s': the fused pass %s it",
                              isk_force_law_name(cases[c].law), fused ? "ran" : "declined");

@@ -166,16 +166,16 @@ Test(motion_fused, flags_the_non_finite)
     int nf = -1;
     static state b;
     b = in;
-    cr_assert(isk__motion_fused(ISK_INTEGRATE_SEMI_EULER, &f, N, b.x, b.y, b.vx, b.vy, b.m, 1.0 / 600, NULL, &nf));
+    cr_assert(isk__motion_fused(ISK_INTEGRATE_SEMI_EULER, &f, isk_forces_laws(&f), N, b.x, b.y, b.vx, b.vy, b.m, 1.0 / 600, NULL, &nf));
     cr_assert_eq(nf, 0, "a finite state of ordinary masses stays finite");
     b = in;
     b.vy[77] = NAN;
-    cr_assert(isk__motion_fused(ISK_INTEGRATE_SEMI_EULER, &f, N, b.x, b.y, b.vx, b.vy, b.m, 1.0 / 600, NULL, &nf));
+    cr_assert(isk__motion_fused(ISK_INTEGRATE_SEMI_EULER, &f, isk_forces_laws(&f), N, b.x, b.y, b.vx, b.vy, b.m, 1.0 / 600, NULL, &nf));
     cr_assert_eq(nf, 1);
     b = in;
     b.x[N * 25 / 32] = 1.7e308; /* some particle in the last quarter */
     b.vx[N * 25 / 32] = 1e308;
-    cr_assert(isk__motion_fused(ISK_INTEGRATE_EULER, &f, N, b.x, b.y, b.vx, b.vy, b.m, 0.1, NULL, &nf));
+    cr_assert(isk__motion_fused(ISK_INTEGRATE_EULER, &f, isk_forces_laws(&f), N, b.x, b.y, b.vx, b.vy, b.m, 0.1, NULL, &nf));
     cr_assert_eq(nf, 1, "x + dt*vx overflows to infinity");
 }
 
@@ -194,10 +194,10 @@ Test(motion_fused, declines_what_it_does_not_cover)
     int nf;
     for (int m = ISK_INTEGRATE_VERLET; m < ISK_INTEGRATOR_COUNT; m++) {
         b = in;
-        cr_assert_eq(isk__motion_fused((isk_integrator)m, &f, N, b.x, b.y, b.vx, b.vy, b.m, 0.01, NULL, &nf), 0);
+        cr_assert_eq(isk__motion_fused((isk_integrator)m, &f, isk_forces_laws(&f), N, b.x, b.y, b.vx, b.vy, b.m, 0.01, NULL, &nf), 0);
         cr_assert(memcmp(&b, &in, sizeof b) == 0);
     }
-    cr_assert_eq(isk__motion_fused(ISK_INTEGRATE_SEMI_EULER, &f, N, b.x, b.y, b.vx, b.vy, b.m, 0.0, NULL, &nf), 0);
+    cr_assert_eq(isk__motion_fused(ISK_INTEGRATE_SEMI_EULER, &f, isk_forces_laws(&f), N, b.x, b.y, b.vx, b.vy, b.m, 0.0, NULL, &nf), 0);
     cr_assert(memcmp(&b, &in, sizeof b) == 0);
     f.pot = &pot;
     f.npot = 1;
@@ -205,7 +205,7 @@ Test(motion_fused, declines_what_it_does_not_cover)
     const size_t none = 0;
     f.pick = &none; /* picks no potential: none acts */
     f.npick = 0;
-    cr_assert_eq(isk__motion_fused(ISK_INTEGRATE_SEMI_EULER, &f, N, b.x, b.y, b.vx, b.vy, b.m, 0.01, NULL, &nf), 1);
+    cr_assert_eq(isk__motion_fused(ISK_INTEGRATE_SEMI_EULER, &f, isk_forces_laws(&f), N, b.x, b.y, b.vx, b.vy, b.m, 0.01, NULL, &nf), 1);
     f.pick = NULL;
     pot.enabled = 0;
     compare(ISK_INTEGRATE_SEMI_EULER, &f, &in, N, 0.01, "disabled potential");
@@ -418,7 +418,7 @@ Test(motion_fused, potentials_declined_or_taken)
     /* an exponent other than 2 or 1 */
     b = in;
     pot[0].P = 3.0;
-    cr_assert_eq(isk__motion_fused(ISK_INTEGRATE_SEMI_EULER, &f, N, b.x, b.y, b.vx, b.vy, b.m, 0.01, NULL, &nf), 0, "P = 3");
+    cr_assert_eq(isk__motion_fused(ISK_INTEGRATE_SEMI_EULER, &f, isk_forces_laws(&f), N, b.x, b.y, b.vx, b.vy, b.m, 0.01, NULL, &nf), 0, "P = 3");
     cr_assert(memcmp(&b, &in, sizeof b) == 0);
     /* ... but not when it does not act */
     pot[0].enabled = 0;
@@ -432,11 +432,11 @@ Test(motion_fused, potentials_declined_or_taken)
     /* a max-distance switch, even with k*Q = 0 (it may still switch) */
     pot[1].max_dist = 0.1;
     b = in;
-    cr_assert_eq(isk__motion_fused(ISK_INTEGRATE_SEMI_EULER, &f, N, b.x, b.y, b.vx, b.vy, b.m, 0.01, NULL, &nf), 0,
+    cr_assert_eq(isk__motion_fused(ISK_INTEGRATE_SEMI_EULER, &f, isk_forces_laws(&f), N, b.x, b.y, b.vx, b.vy, b.m, 0.01, NULL, &nf), 0,
                  "max distance");
     cr_assert(memcmp(&b, &in, sizeof b) == 0);
     pot[1].charge = 0.0;
-    cr_assert_eq(isk__motion_fused(ISK_INTEGRATE_SEMI_EULER, &f, N, b.x, b.y, b.vx, b.vy, b.m, 0.01, NULL, &nf), 0,
+    cr_assert_eq(isk__motion_fused(ISK_INTEGRATE_SEMI_EULER, &f, isk_forces_laws(&f), N, b.x, b.y, b.vx, b.vy, b.m, 0.01, NULL, &nf), 0,
                  "max distance, k*Q = 0");
     cr_assert(memcmp(&b, &in, sizeof b) == 0);
     pot[1].charge = 1.0;
@@ -446,7 +446,7 @@ Test(motion_fused, potentials_declined_or_taken)
     compare(ISK_INTEGRATE_SEMI_EULER, &f, &in, N, 0.01, "four potentials");
     f.npot = 5;
     b = in;
-    cr_assert_eq(isk__motion_fused(ISK_INTEGRATE_SEMI_EULER, &f, N, b.x, b.y, b.vx, b.vy, b.m, 0.01, NULL, &nf), 0,
+    cr_assert_eq(isk__motion_fused(ISK_INTEGRATE_SEMI_EULER, &f, isk_forces_laws(&f), N, b.x, b.y, b.vx, b.vy, b.m, 0.01, NULL, &nf), 0,
                  "five potentials");
     cr_assert(memcmp(&b, &in, sizeof b) == 0);
     pot[2].enabled = 0;
@@ -455,7 +455,7 @@ Test(motion_fused, potentials_declined_or_taken)
     f.npot = 1;
     for (int m = ISK_INTEGRATE_VERLET; m < ISK_INTEGRATOR_COUNT; m++) {
         b = in;
-        cr_assert_eq(isk__motion_fused((isk_integrator)m, &f, N, b.x, b.y, b.vx, b.vy, b.m, 0.01, NULL, &nf), 0);
+        cr_assert_eq(isk__motion_fused((isk_integrator)m, &f, isk_forces_laws(&f), N, b.x, b.y, b.vx, b.vy, b.m, 0.01, NULL, &nf), 0);
         cr_assert(memcmp(&b, &in, sizeof b) == 0);
     }
     /* every potential's k*Q is 0: the loops without potentials, the same bits */

@@ -90,7 +90,10 @@ static ISK__INLINE void isk__px_k_sse2(uint8_t *d, isk_color s, __m128i K, isk_b
 {
     switch (mode) {
     case ISK_BLEND_REPLACE:
-        memcpy(d, &s, 4);
+        d[0] = s.r;
+        d[1] = s.g;
+        d[2] = s.b;
+        d[3] = s.a;
         break;
     case ISK_BLEND_OVER:
         isk__px_over_k_sse2(d, s, K);

@@ -181,8 +181,7 @@ isk_status isk__fx_compile(isk_effect *e, fx_group *g)
     } else {
         if (!ADD(isk__stage_motion))
             return ISK_ERR_FULL;
-        st->u.motion.method = g->integrator;
-        st->u.motion.forces = f;
+        isk__stage_motion_init(st, g->integrator, f);
     }
     if (em->motion.slowing > 0 && !fused_slow && !drift_sway) {
         if (!ADD(isk__stage_slow))

@@ -95,15 +95,13 @@ static uint64_t pot_run(int simd, int np, int A, int D, int E, size_t n, double 
     return acc;
 }
 
-int isk__motion_fused_build(int simd, isk_integrator method, const isk_forces *f, size_t n, double *x, double *y,
-                           double *vx, double *vy, const double *m, double dt, const isk_motion_start *start,
-                           int *nonfinite)
+/* The pass for forces whose laws it knows (the callers below check). */
+static int fused(int simd, isk_integrator method, const isk_forces *f, size_t n, double *x, double *y, double *vx,
+                 double *vy, const double *m, double dt, const isk_motion_start *start, int *nonfinite)
 {
     const int E = method == ISK_INTEGRATE_EULER;
     if (!E && method != ISK_INTEGRATE_SEMI_EULER)
         return 0;
-    if (isk_forces_laws(f) & ~ISK__FUSED_LAWS)
-        return 0; /* a law it does not know: the general path sums every law */
     pot_par p;
     const int np = pot_collect(f, &p);
     if (np < 0)
@@ -135,8 +133,20 @@ int isk__motion_fused_build(int simd, isk_integrator method, const isk_forces *f
     return 1;
 }
 
-int isk__motion_fused(isk_integrator method, const isk_forces *f, size_t n, double *x, double *y, double *vx,
-                     double *vy, const double *m, double dt, const isk_motion_start *start, int *nonfinite)
+int isk__motion_fused_build(int simd, isk_integrator method, const isk_forces *f, size_t n, double *x, double *y,
+                            double *vx, double *vy, const double *m, double dt, const isk_motion_start *start,
+                            int *nonfinite)
 {
-    return isk__motion_fused_build(2, method, f, n, x, y, vx, vy, m, dt, start, nonfinite);
+    if (isk_forces_laws(f) & ~ISK__FUSED_LAWS)
+        return 0; /* a law it does not know: the general path sums every law */
+    return fused(simd, method, f, n, x, y, vx, vy, m, dt, start, nonfinite);
+}
+
+int isk__motion_fused(isk_integrator method, const isk_forces *f, unsigned laws, size_t n, double *x, double *y,
+                      double *vx, double *vy, const double *m, double dt, const isk_motion_start *start,
+                      int *nonfinite)
+{
+    if (laws & ~ISK__FUSED_LAWS)
+        return 0; /* a law it does not know: the general path sums every law */
+    return fused(2, method, f, n, x, y, vx, vy, m, dt, start, nonfinite);
 }

@@ -14,7 +14,8 @@
  * x, y, vx, vy once: 72 B a particle-step, the bandwidth limit's own count.
  *
  *     int nonfinite;
- *     if (!isk__motion_fused(method, forces, n, x, y, vx, vy, m, dt, &nonfinite))
+ *     if (!isk__motion_fused(method, forces, isk_forces_laws(forces), n, x, y, vx, vy, m, dt, NULL,
+ *                            &nonfinite))
  *         ... the general path (isk_integrate_block + the checks) ...
  *
  * The bits are the general path's, for every input (tests/test_motion_fused.c):
@@ -84,9 +85,13 @@ static inline void isk_motion_start_copy(const isk_motion_start *s, size_t n, co
 /* Steps the n particles and returns 1 when the fused pass covers this
  * method and these forces (then *nonfinite is 1 when some new x, y, vx or
  * vy is not finite, else 0, and the old state is in *start unless start is
- * NULL); returns 0, touching nothing, otherwise. */
-int isk__motion_fused(isk_integrator method, const isk_forces *f, size_t n, double *x, double *y, double *vx,
-                     double *vy, const double *m, double dt, const isk_motion_start *start, int *nonfinite);
+ * NULL); returns 0, touching nothing, otherwise.  laws: isk_forces_laws(f),
+ * or a set that holds it (the motion stage keeps it from when its list was
+ * made: the laws only shrink until the next compile); a law outside
+ * ISK__FUSED_LAWS declines. */
+int isk__motion_fused(isk_integrator method, const isk_forces *f, unsigned laws, size_t n, double *x, double *y,
+                      double *vx, double *vy, const double *m, double dt, const isk_motion_start *start,
+                      int *nonfinite);
 
 /* The same with the widest build it may take: simd = 0 the portable
  * loops, 1 AVX2, 2 AVX-512, each only when the CPU has it

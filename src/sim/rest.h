@@ -92,5 +92,12 @@ int isk__rest_all(const isk_rest *r, size_t count);
  * worker's stand-ins for a resting axis) as its state says. */
 int isk__rest_begin(isk_rest *r, const isk_pipeline *pl, size_t end, double h, int workers, size_t *phase);
 void isk__rest_step(isk_rest *r, const isk_pipeline *pl, int prefix, const isk_block *b, size_t phase, int worker);
+/* Whether the block starting at particle `first` rests on both axes: then
+ * isk__rest_step has nothing to do (the runner asks first, inline: a
+ * layer at rest is thousands of blocks a step). */
+static inline int isk__rest_block_rests(const isk_rest *r, size_t first)
+{
+    return r->block[first / ISK_SIM_BLOCK].state == (ISK_REST_X | ISK_REST_Y);
+}
 
 #endif

@@ -76,7 +76,8 @@ static void run_block(const run_job *r, size_t item, int worker, isk_scratch *s)
     isk_block b = {p, o, n, p->x + o, p->y + o, p->vx + o, p->vy + o, p->m + o, s, 0};
     int k = 0;
     if (r->rest) {
-        isk__rest_step(r->rest, r->pl, r->prefix, &b, r->phase, worker);
+        if (!isk__rest_block_rests(r->rest, o))
+            isk__rest_step(r->rest, r->pl, r->prefix, &b, r->phase, worker);
         k = r->prefix;
     }
     for (; k < r->pl->n; k++)

@@ -122,6 +122,11 @@ struct isk_stage {
         struct {
             isk_integrator method;
             isk_forces *forces;
+            unsigned laws;                                   /* isk_forces_laws(forces) when the list was
+                                                                made (isk__stage_motion_init), if known:
+                                                                the laws only shrink until the next
+                                                                compile (a potential switching off) */
+            int laws_known;                                  /* 0: work them out at every block */
             int remember;                                    /* 1: also keep the start state in the scratch's
                                                                 x_old.. (the remember stage, in the same pass) */
         } motion;
@@ -222,7 +227,10 @@ extern const isk_stage_kind isk__stage_remember;   /* the state before the move 
 extern const isk_stage_kind isk__stage_drift;      /* constant acceleration + semi-implicit Euler, no mass */
 extern const isk_stage_kind isk__stage_drift_slow; /* the same with the fire thesis's slowing in between */
 extern const isk_stage_kind isk__stage_drift_sway; /* drift or drift_slow (+ slow), then oscillate, in one pass */
-extern const isk_stage_kind isk__stage_motion;     /* forces + an integrator (isk_integrate_block) */
+extern const isk_stage_kind isk__stage_motion;
+/* A motion stage's parameters: its integrator and forces, and the laws
+ * that act in them now (so its blocks need not work them out). */
+void isk__stage_motion_init(isk_stage *st, isk_integrator method, isk_forces *f);     /* forces + an integrator (isk_integrate_block) */
 extern const isk_stage_kind isk__stage_slow;       /* v *= max(0, 1 - slowing*h) */
 extern const isk_stage_kind isk__stage_oscillate;  /* the fire thesis's horizontal sway (ISK_PARTICLES_OSC) */
 extern const isk_stage_kind isk__stage_walls;      /* isk_bounds_apply_step (after remember) */

@@ -62,8 +62,10 @@ static void run_motion(const isk_stage *st, isk_block *b, double h)
 {
     const isk_motion_start start = isk_motion_start_of(b->s);
     int nonfinite;
-    if (ISK__FAST_FUSED && isk__motion_fused(st->u.motion.method, st->u.motion.forces, b->n, b->x, b->y, b->vx, b->vy, b->m, h,
-                         st->u.motion.remember ? &start : NULL, &nonfinite)) {
+    const unsigned laws = st->u.motion.laws_known ? st->u.motion.laws : isk_forces_laws(st->u.motion.forces);
+    if (ISK__FAST_FUSED && isk__motion_fused(st->u.motion.method, st->u.motion.forces, laws, b->n, b->x, b->y,
+                                             b->vx, b->vy, b->m, h, st->u.motion.remember ? &start : NULL,
+                                             &nonfinite)) {
         b->s->nonfinite |= nonfinite; /* the common case in one pass: the same bits (motion_fused.h) */
         return;
     }
@@ -114,6 +116,14 @@ static double cost_motion(const isk_stage *st)
 static unsigned needs_motion(const isk_stage *st)
 {
     return isk_forces_laws(st->u.motion.forces) & ISK_LAW_CUTOFF ? ISK_NEEDS_ORDER : 0u;
+}
+
+void isk__stage_motion_init(isk_stage *st, isk_integrator method, isk_forces *f)
+{
+    st->u.motion.method = method;
+    st->u.motion.forces = f;
+    st->u.motion.laws = isk_forces_laws(f);
+    st->u.motion.laws_known = 1;
 }
 
 const isk_stage_kind isk__stage_motion = {.name = "integrate",

@@ -265,8 +265,7 @@ isk_status isk_system_step(isk_system *s, double dt)
         potentials |= s->forces.pot[k].enabled;
     const int start = bounce && s->bounds.mode == ISK_BOUNCE_REFLECT && potentials;
     isk_stage *motion = isk__pipeline_add(&pl, &isk__stage_motion);
-    motion->u.motion.method = s->integrator;
-    motion->u.motion.forces = &s->forces;
+    isk__stage_motion_init(motion, s->integrator, &s->forces);
     motion->u.motion.remember = start;
     if (bounce) {
         isk_stage *w = isk__pipeline_add(&pl, &isk__stage_walls);
