@@ -311,7 +311,7 @@ static void read_library(library *L)
                 continue;
             cr_assert_lt(L->nsym, MAX_NAMES);
             symbol *s = &L->sym[L->nsym++];
-            snprintf(s->name, sizeof s->name, "%s", name);
+            memcpy(s->name, name, strlen(name) + 1); /* fits: checked above */
             s->object = L->nobj;
             s->defined = strchr("TDRBCVW", type[0]) != NULL;
         }
