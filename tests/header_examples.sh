@@ -46,6 +46,9 @@ extract() {
     NR == 1 && /^\/\* SPDX-License-Identifier: [^*]*\*\/$/ { spdx = 1; next }
     NR == 1 + spdx && !/^\/\*/ { fail("does not start with its top comment") }
     done { next }
+    inblock && /^ \*     .*\*\/[ \t]*$/ {
+        fail("line " NR ": the comment ends on a line of the example, which would not be run: put \" */\" on a line of its own")
+    }
     /\*\// { done = 1; next }
     /^ \* Example.*:$/ {
         if (heading) fail("has two \"Example...:\" lines (lines " heading " and " NR ")")

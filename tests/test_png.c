@@ -5,6 +5,9 @@
 #include <string.h>
 #include <sys/stat.h>
 
+#include <png.h>
+#include <stdlib.h>
+
 #include "iskra/png.h"
 
 static void make_dirs(void)
@@ -35,6 +38,51 @@ Test(png, round_trip_is_byte_exact)
     cr_assert(isk_canvas_equal(&c, &r));
     isk_canvas_free(&c);
     isk_canvas_free(&r);
+}
+
+/* The whole file as bytes (at most 1 MiB); its size in *n. */
+static unsigned char *slurp(const char *path, size_t *n)
+{
+    FILE *f = fopen(path, "rb");
+    cr_assert_not_null(f, "%s", path);
+    unsigned char *b = malloc(1 << 20);
+    cr_assert_not_null(b);
+    *n = fread(b, 1, 1 << 20, f);
+    fclose(f);
+    return b;
+}
+
+/* iskra writes with libpng's write struct (the browser's libpng has no
+ * setjmp, which the simplified API needs): the files are byte for byte
+ * those of libpng's simplified writer, as before. */
+Test(png, files_are_the_simplified_writers_bytes)
+{
+    make_dirs();
+    isk_canvas c;
+    cr_assert_eq(isk_canvas_init(&c, 301, 77), ISK_OK);
+    for (int y = 0; y < c.height; y++)
+        for (int x = 0; x < c.width; x++) {
+            uint8_t *p = isk_canvas_at(&c, x, y);
+            p[0] = (uint8_t)(x * 3 + y); p[1] = (uint8_t)(y * 5); p[2] = (uint8_t)((x * y) >> 3); p[3] = (uint8_t)(255 - x);
+        }
+    isk_error err;
+    cr_assert_eq(isk_png_write(&c, "out/test_png/ours.png", &err), ISK_OK, "%s", err.message);
+    png_image img;
+    memset(&img, 0, sizeof img);
+    img.version = PNG_IMAGE_VERSION;
+    img.width = (png_uint_32)c.width;
+    img.height = (png_uint_32)c.height;
+    img.format = PNG_FORMAT_RGBA;
+    cr_assert(png_image_write_to_file(&img, "out/test_png/simplified.png", 0, c.pixels, (png_int_32)c.stride, NULL));
+    png_image_free(&img);
+    size_t na, nb;
+    unsigned char *a = slurp("out/test_png/ours.png", &na), *b = slurp("out/test_png/simplified.png", &nb);
+    cr_assert_gt(na, 100);
+    cr_assert_eq(na, nb);
+    cr_assert(memcmp(a, b, na) == 0);
+    free(a);
+    free(b);
+    isk_canvas_free(&c);
 }
 
 Test(png, writes_views_with_stride)

@@ -32,7 +32,8 @@
  *     printf("%s\n", same ? "same bytes" : "different");
  *     isk_canvas_free(&a);
  *     isk_canvas_free(&b);
- *     if (!same) return 1; */
+ *     if (!same) return 1;
+ */
 #ifndef ISKRA_BLEND_INLINE_H
 #define ISKRA_BLEND_INLINE_H
 

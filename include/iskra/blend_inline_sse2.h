@@ -20,7 +20,8 @@
  *         for (int x = 0; x < 64; x++)
  *             isk_draw_pixel(&c, x, y, isk_rgba(255, 128, 0, 100), ISK_BLEND_OVER);
  *     printf("%d\n", isk_canvas_at(&c, 10, 10)[0]);
- *     isk_canvas_free(&c); */
+ *     isk_canvas_free(&c);
+ */
 /* blend_inline.h first: it includes this file in turn, after the plain
  * rule this twin falls back on (isk__px_over_general). */
 #include "iskra/blend_inline.h"

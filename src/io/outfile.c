@@ -6,10 +6,33 @@
 #include <errno.h>
 #include <fcntl.h>
 #include <limits.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
 #include <unistd.h>
+
+/* The browser's C library (wasm32-wasi) has no mkstemp, fchmod or
+ * realpath: there a temporary is the first free name of the template
+ * (created exclusively, so it is still never an existing file), files
+ * have no permissions to give, and a symbolic link is refused. */
+#ifdef __wasi__
+static int make_temp(char *tmpl)
+{
+    char *x = tmpl + strlen(tmpl) - 6;
+    for (unsigned i = 0; i < 1000000u; i++) {
+        snprintf(x, 7, "%06u", i);
+        int fd = open(tmpl, O_WRONLY | O_CREAT | O_EXCL, 0644);
+        if (fd >= 0 || errno != EEXIST)
+            return fd;
+    }
+    errno = EEXIST;
+    return -1;
+}
+#define fchmod(fd, mode) 0
+#else
+#define make_temp mkstemp
+#endif
 
 static char *dup_str(const char *s)
 {
@@ -54,7 +77,7 @@ static isk_status open_temp(isk_outfile *o, const char *target, const char *show
         return fail(o, err, ISK_ERR_NOMEM, shown, "out of memory");
     memcpy(o->temp, target, n);
     memcpy(o->temp + n, ".tmp.XXXXXX", 12);
-    int fd = mkstemp(o->temp);
+    int fd = make_temp(o->temp);
     if (fd < 0) {
         char why[300];
         snprintf(why, sizeof why, "cannot create temporary file: %s", strerror(errno));
@@ -114,7 +137,12 @@ isk_status isk_outfile_open(isk_outfile *o, const char *path, isk_error *err)
     if (S_ISLNK(lst.st_mode)) {
         /* Replace the file the link points to, beside it, so the rename
          * stays within one directory and the link keeps working. */
+#ifdef __wasi__
+        char *real = NULL;
+        errno = ENOTSUP;
+#else
         char *real = realpath(path, NULL);
+#endif
         if (!real)
             return fail(o, err, ISK_ERR_IO, path, strerror(errno));
         o->path = real;

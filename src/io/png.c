@@ -7,7 +7,9 @@
 
 #include <errno.h>
 #include <png.h>
+#ifdef PNG_SETJMP_SUPPORTED
 #include <setjmp.h>
+#endif
 #include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
@@ -35,6 +37,57 @@ static isk_status check_canvas(const isk_canvas *c, const char *what, isk_error 
     return ISK_OK;
 }
 
+/* Writing: libpng's write struct; every failure (a short write, memory)
+ * comes back through write_failed's longjmp.  Targets whose libpng has no
+ * setjmp (the browser's) abort on such a failure instead: only running out
+ * of memory can cause one there, as their files live in memory. */
+typedef struct png_writer {
+    FILE *f;
+    char msg[200];
+} png_writer;
+
+static void write_failed(png_structp png, png_const_charp msg)
+{
+    png_writer *w = png_get_error_ptr(png);
+    snprintf(w->msg, sizeof w->msg, "%s", msg);
+    png_longjmp(png, 1);
+}
+
+static void write_bytes(png_structp png, png_bytep data, size_t n)
+{
+    png_writer *w = png_get_io_ptr(png);
+    if (fwrite(data, 1, n, w->f) != n)
+        png_error(png, errno ? strerror(errno) : "write failed");
+}
+
+static void flush_bytes(png_structp png)
+{
+    png_writer *w = png_get_io_ptr(png);
+    if (fflush(w->f) != 0)
+        png_error(png, errno ? strerror(errno) : "write failed");
+}
+
+/* What libpng's simplified writer (png_image_write_to_stdio, RGBA8) writes,
+ * call for call, so the files' bytes are those it gave: an sRGB chunk,
+ * default filters and compression, one row at a time.  Returns 0 after a
+ * longjmp (w->msg says why). */
+static int write_rows(png_structp png, png_infop pi, const isk_canvas *c)
+{
+#ifdef PNG_SETJMP_SUPPORTED
+    if (setjmp(png_jmpbuf(png)))
+        return 0;
+#endif
+    png_set_benign_errors(png, 0);
+    png_set_IHDR(png, pi, (png_uint_32)c->width, (png_uint_32)c->height, 8, PNG_COLOR_TYPE_RGB_ALPHA,
+                 PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_BASE, PNG_FILTER_TYPE_BASE);
+    png_set_sRGB(png, pi, PNG_sRGB_INTENT_PERCEPTUAL);
+    png_write_info(png, pi);
+    for (int y = 0; y < c->height; y++)
+        png_write_row(png, c->pixels + (size_t)y * c->stride);
+    png_write_end(png, pi);
+    return 1;
+}
+
 isk_status isk_png_write_stream(const isk_canvas *c, FILE *f, const char *name, isk_error *err)
 {
     isk_status s = check_canvas(c, "write", err);
@@ -42,18 +95,18 @@ isk_status isk_png_write_stream(const isk_canvas *c, FILE *f, const char *name, 
         return s;
     if (!f)
         return isk_error_set(err, ISK_ERR_NULL, "png write: NULL stream");
-    png_image img;
-    memset(&img, 0, sizeof img);
-    img.version = PNG_IMAGE_VERSION;
-    img.width = (png_uint_32)c->width;
-    img.height = (png_uint_32)c->height;
-    img.format = PNG_FORMAT_RGBA;
-    int ok = png_image_write_to_stdio(&img, f, 0, c->pixels, (png_int_32)c->stride, NULL);
-    char msg[sizeof img.message];
-    memcpy(msg, img.message, sizeof msg);
-    png_image_free(&img);
+    png_writer w = {f, ""};
+    png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, &w, write_failed, NULL);
+    png_infop pi = png ? png_create_info_struct(png) : NULL;
+    if (!pi) {
+        png_destroy_write_struct(&png, NULL);
+        return isk_error_set(err, ISK_ERR_NOMEM, "%s: out of memory", name ? name : "png");
+    }
+    png_set_write_fn(png, &w, write_bytes, flush_bytes);
+    int ok = write_rows(png, pi, c);
+    png_destroy_write_struct(&png, &pi);
     if (!ok)
-        return isk_error_set(err, ISK_ERR_IO, "%s: %s", name ? name : "png", msg[0] ? msg : "write failed");
+        return isk_error_set(err, ISK_ERR_IO, "%s: %s", name ? name : "png", w.msg[0] ? w.msg : "write failed");
     return ISK_OK;
 }
 
@@ -96,6 +149,7 @@ typedef struct png_job {
     char msg[200];
 } png_job;
 
+#ifdef PNG_SETJMP_SUPPORTED
 static void on_error(png_structp png, png_const_charp msg)
 {
     png_job *j = png_get_error_ptr(png);
@@ -211,6 +265,7 @@ static int run(png_structp png, png_infop pi, png_job *j)
     j->status = ISK_OK;
     return 1;
 }
+#endif
 
 static isk_status decode(png_job *j, const char *name, isk_error *err)
 {
@@ -228,6 +283,12 @@ static isk_status decode(png_job *j, const char *name, isk_error *err)
     }
     if (got < sizeof sig || png_sig_cmp(sig, 0, sizeof sig) != 0)
         return isk_error_set(err, ISK_ERR_FORMAT, "%s: not a PNG file", name);
+#ifndef PNG_SETJMP_SUPPORTED
+    /* libpng reports a malformed file by longjmp: without setjmp it could
+     * only abort the program, so such targets read no PNG at all. */
+    return isk_error_set(err, ISK_ERR_UNSUPPORTED, "%s: this build cannot read PNG files (its libpng has no setjmp)",
+                         name);
+#else
     png_structp png = png_create_read_struct(PNG_LIBPNG_VER_STRING, j, on_error, on_warning);
     png_infop pi = png ? png_create_info_struct(png) : NULL;
     if (!pi) {
@@ -245,6 +306,7 @@ static isk_status decode(png_job *j, const char *name, isk_error *err)
         isk_canvas_free(j->out);
     isk_status st = s->io_errno ? ISK_ERR_IO : j->status == ISK_OK ? ISK_ERR_FORMAT : j->status;
     return isk_error_set(err, st, "%s: %s", name, j->msg[0] ? j->msg : "malformed PNG");
+#endif
 }
 
 static isk_status read_file(const char *path, isk_canvas *out, isk_png_info *info, long long max_pixels,

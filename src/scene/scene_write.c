@@ -19,9 +19,8 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <sys/stat.h>
-#include <unistd.h>
 
+#include "iskra/outfile.h"
 #include "iskra/scene.h"
 #include "key_value.h"
 #include "scene/ini_read.h"
@@ -147,33 +146,18 @@ isk_status isk_scene_save(const isk_effect_def *d, const char *path, isk_error *
     isk_status s = isk_scene_write(d, &text, err);
     if (s != ISK_OK)
         return s;
-    /* A temporary name in the same directory, then rename: an existing file
-     * is replaced whole or not at all. */
-    size_t n = strlen(path);
-    char *tmp = malloc(n + 16);
-    if (!tmp) {
-        free(text);
-        return isk_error_set(err, ISK_ERR_NOMEM, "scene: out of memory");
+    /* iskra/outfile.h: a temporary beside it, then a rename, so an
+     * existing file is replaced whole or not at all. */
+    isk_outfile o;
+    if ((s = isk_outfile_open(&o, path, err)) == ISK_OK) {
+        size_t len = strlen(text);
+        if (fwrite(text, 1, len, o.f) != len) {
+            s = isk_error_set(err, ISK_ERR_IO, "%s: cannot write: %s", path, strerror(errno));
+            isk_outfile_abort(&o);
+        } else {
+            s = isk_outfile_commit(&o, err);
+        }
     }
-    memcpy(tmp, path, n);
-    memcpy(tmp + n, ".tmp.XXXXXX", 12);
-    int fd = mkstemp(tmp);
-    if (fd < 0) {
-        s = isk_error_set(err, ISK_ERR_IO, "%s: cannot create a temporary file: %s", path, strerror(errno));
-        free(tmp);
-        free(text);
-        return s;
-    }
-    fchmod(fd, 0644);
-    FILE *f = fdopen(fd, "w");
-    size_t len = strlen(text);
-    int ok = f && fwrite(text, 1, len, f) == len;
-    ok = (f ? fclose(f) == 0 : (close(fd), 0)) && ok;
-    if (!ok || rename(tmp, path) != 0) {
-        s = isk_error_set(err, ISK_ERR_IO, "%s: cannot write: %s", path, strerror(errno));
-        unlink(tmp);
-    }
-    free(tmp);
     free(text);
     return s;
 }

@@ -5,6 +5,7 @@
  * atomic counter, then helps with the others' ranges. */
 #include "sim/pool.h"
 
+#if ISK__POOL_THREADS /* else pool_serial.c */
 #include <pthread.h>
 #include <signal.h>
 #include <stdatomic.h>
@@ -257,3 +258,4 @@ void isk__pool_for(isk_pool *p, size_t n, isk_task_fn *fn, void *ctx)
         pthread_cond_wait(&p->done, &p->lock);
     pthread_mutex_unlock(&p->lock);
 }
+#endif

@@ -19,6 +19,12 @@
  *
  * One pool serves one caller at a time (an effect owns its pool).  A pool
  * of 1 thread runs everything on the caller, with no thread at all.
+ *
+ * Targets without threads (the browser's wasm32-wasi) get pool_serial.c
+ * instead of pool.c: a pool of any size that runs every item on the
+ * caller, in order, which gives the bytes of every thread count because
+ * the items never depend on who runs them.  ISK__POOL_THREADS says which
+ * of the two files this target compiles.
  */
 #ifndef ISKRA_SIM_POOL_H
 #define ISKRA_SIM_POOL_H
@@ -28,9 +34,16 @@
 #include "iskra/status.h"
 #include "iskra/tasks.h"
 
+#if defined(__wasi__) && !defined(_REENTRANT)
+#define ISK__POOL_THREADS 0
+#else
+#define ISK__POOL_THREADS 1
+#endif
+
 typedef struct isk_pool isk_pool;
 
-/* threads in 1 .. ISK_TASKS_MAX_WORKERS (1: no extra thread).
+/* threads in 1 .. ISK_TASKS_MAX_WORKERS (1: no extra thread; without
+ * ISK__POOL_THREADS every size runs on the caller alone).
  * ISK_ERR_RANGE, ISK_ERR_NOMEM, or ISK_ERR_UNSUPPORTED when a thread
  * cannot be started. */
 isk_status isk__pool_create(isk_pool **out, int threads);

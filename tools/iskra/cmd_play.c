@@ -29,8 +29,7 @@
 #include <unistd.h>
 
 #include "cmd.h"
-#include "iskra/png.h"
-#include "iskra/ui_sdl.h"
+#include "iskra/sdl.h"
 #include "play.h"
 #include "scene_args.h"
 
@@ -83,58 +82,20 @@ static void scene_name(const char *scene, char *out, size_t n)
         out[len - 4] = 0;
 }
 
-/* The canvas into the window, then what lies over it. */
-static void compose(player *p)
-{
-    const play_layout *l = &p->lay;
-    for (int y = 0; y < l->canvas.h && y < p->shown->height; y++)
-        memcpy(p->shown->pixels + (size_t)y * p->shown->stride, p->sim.pixels + (size_t)y * p->sim.stride,
-               (size_t)(l->canvas.w < p->shown->width ? l->canvas.w : p->shown->width) * 4);
-    play_hud_draw(p);
-}
-
 static int frame(void *user, isk_canvas *canvas, double dt_seconds, const isk_event *ev, int nev)
 {
-    player *p = user;
-    (void)canvas; /* p->shown: the same canvas, resized in place when the panel comes and goes */
-    if (p->fixed_clock)
-        dt_seconds = p->ts.dt;
-    p->elapsed += dt_seconds;
-    p->frames_shown++;
-    for (int i = 0; i < nev; i++) {
-        isk_ui_feed_event(&p->ui, &ev[i]);
-    }
-    play_watch(p);
+    (void)canvas; /* the player's p->shown: the same canvas, resized in place when the panel comes and goes */
+    return play_frame(user, dt_seconds, ev, nev);
+}
 
-    isk_ui_begin(&p->ui, p->shown);
-    isk_ui_clear(&p->ui);
-    play_panel(p);
-    play_canvas(p);
-    isk_ui_end(&p->ui);
-    play_shortcuts(p);
-    if (p->quit || p->failed)
-        return 1;
+static isk_status window_resize(void *user, int w, int h, isk_error *err)
+{
+    return isk_window_resize_canvas(user, w, h, err);
+}
 
-    const double dropped = p->ts.dropped;
-    int steps = p->paused || p->physics_off ? 0 : isk_timestep_advance(&p->ts, dt_seconds);
-    if (!p->paused && !p->physics_off)
-        play_pace(p, dt_seconds, p->ts.dropped - dropped);
-    play_simulate(p, steps);
-    if (p->failed)
-        return 1;
-    if (p->panel_toggle) {
-        p->panel_toggle = 0;
-        play_toggle_panel(p);
-    }
-    compose(p);
-    if (p->shot_pending & 1)
-        play_screenshot(p, 0, NULL);
-    if (p->shot_pending & 2)
-        play_screenshot(p, 1, NULL);
-    p->shot_pending = 0;
-    /* After the frame is drawn: its widgets can be pressed, its window shot;
-     * the events it queues arrive with the next frame. */
-    return play_script_run(p) != 0 || p->failed;
+static isk_status window_push_event(void *user, const isk_event *ev)
+{
+    return isk_window_push_event(user, ev);
 }
 
 /* "WxH" into *w, *h (each 320..16384); 0 and a message when it is not. */
@@ -302,23 +263,25 @@ int cmd_play(int argc, char **argv)
     }
     char title[128];
     snprintf(title, sizeof title, "iskra: %s", p.name);
-    if (isk_window_open(&p.win, title, d->width, d->height, &err) != ISK_OK) {
+    isk_window *win = NULL;
+    if (isk_window_open(&win, title, d->width, d->height, &err) != ISK_OK) {
         fprintf(stderr, "iskra play: cannot open a window: %s\n", err.message);
         goto out;
     }
     char cwd[4096];
     fprintf(stderr, "iskra play: F12 screenshots go to %s\n",
             p.shots ? p.shots : getcwd(cwd, sizeof cwd) ? cwd : "the current directory");
-    isk_window_set_escape_quits(p.win, 0); /* Escape cancels an edit; outside a field it quits */
-    isk_window_set_pacing(p.win, !p.fixed_clock); /* a fixed clock runs as fast as it can */
-    if (!screen_given && isk_window_display_size(p.win, &p.screen_w, &p.screen_h) != ISK_OK) {
+    p.host = (play_host){win, window_resize, window_push_event, NULL};
+    isk_window_set_escape_quits(win, 0); /* Escape cancels an edit; outside a field it quits */
+    isk_window_set_pacing(win, !p.fixed_clock); /* a fixed clock runs as fast as it can */
+    if (!screen_given && isk_window_display_size(win, &p.screen_w, &p.screen_h) != ISK_OK) {
         p.screen_w = 1280; /* SDL cannot tell: the smallest screen a classroom has */
         p.screen_h = 720;
     }
     play_choose_layout(&p, (int)ui_scale);
     play_layout_compute(&p);
     const int w = p.lay.window.w, h = p.lay.window.h;
-    if (isk_canvas_init(&shown, w, h) != ISK_OK || isk_window_resize_canvas(p.win, w, h, &err) != ISK_OK) {
+    if (isk_canvas_init(&shown, w, h) != ISK_OK || isk_window_resize_canvas(win, w, h, &err) != ISK_OK) {
         fprintf(stderr, "iskra play: cannot size the window: %s\n", err.message);
         goto out;
     }
@@ -333,12 +296,12 @@ int cmd_play(int argc, char **argv)
                 fm->cap_h * p.ui.scale);
     }
     play_begin_scene(&p);
-    if (isk_window_run(p.win, &shown, frame, &p, max_frames, &err) != ISK_OK)
+    if (isk_window_run(win, &shown, frame, &p, max_frames, &err) != ISK_OK)
         fprintf(stderr, "iskra play: window: %s\n", err.message);
     else
         rc = p.failed ? 1 : 0;
 out:
-    isk_window_close(p.win);
+    isk_window_close(p.host.user);
     isk_canvas_free(&shown);
     isk_canvas_free(&p.sim);
     isk_canvas_free(&p.chart_cache);

@@ -3,7 +3,8 @@
  * holds the running effect, the window's canvas and the widget layer; the
  * play_*.c files each do one part of a frame.
  *
- *   cmd_play.c      options, the window, the frame callback gluing the parts
+ *   cmd_play.c      options and the SDL window (web/iskra_web.c: the web page)
+ *   play_frame.c    one shown frame, gluing the parts
  *   play_layout.c   where the parts sit, for the screen the window must fit
  *   play_actions.c  the buttons and their shortcuts (one table: play, pause,
  *                   stop, reset, reload, step, save, screenshots, panel)
@@ -130,6 +131,20 @@ typedef struct play_inspector {
     char reveal[ISK_UI_ID_MAX];/* a widget to bring into view in the next frame (scripts), or "" */
 } play_inspector_state;
 
+/* What the player asks of the program that shows it: an SDL window
+ * (cmd_play.c) or a web page (web/iskra_web.c).  Either hook may be NULL. */
+typedef struct play_host {
+    void *user;
+    /* The window's canvas becomes w x h (the panel came or went, a reloaded
+     * scene has another size); on failure err says why and nothing changed. */
+    isk_status (*resize)(void *user, int w, int h, isk_error *err);
+    /* An event as if the user made it, arriving with the next frame (--script). */
+    isk_status (*push_event)(void *user, const isk_event *ev);
+    /* A file the user asked for (save, screenshots), handed over whole: the
+     * web page offers it as a download.  NULL: written to disk. */
+    void (*deliver)(void *user, const char *file_name, const void *bytes, size_t n);
+} play_host;
+
 typedef struct player {
     /* the scene */
     scene_args args;
@@ -141,7 +156,7 @@ typedef struct player {
     long long stamp_size;
     double base_dt;            /* the scene's dt when loaded (the thesis's precision quirk scales it) */
     /* display */
-    isk_window *win;
+    play_host host;
     isk_canvas sim;            /* what the effect draws (trails live here) */
     isk_canvas *shown;         /* the window's canvas */
     isk_ui ui;
@@ -209,6 +224,10 @@ void play_do(player *p, play_action a);
 void play_keys_help(FILE *f);
 /* Runs the actions of this frame's shortcut keys (keys a field took are not shortcuts). */
 void play_shortcuts(player *p);
+/* One shown frame (play_frame.c): the events into the widgets, the panel,
+ * the steps that dt_seconds of real time call for (one with a fixed
+ * clock), the canvas and the HUD into p->shown.  Non-zero: stop. */
+int play_frame(player *p, double dt_seconds, const isk_event *ev, int nev);
 /* Hides or shows the panel: the window's canvas changes size. */
 void play_toggle_panel(player *p);
 /* Runs `steps` simulation frames (with their timing, charts and drift). */

@@ -73,7 +73,7 @@ void play_toggle_panel(player *p)
         play_say(p, "out of memory");
         return;
     }
-    if (p->win && isk_window_resize_canvas(p->win, w, h, &err) != ISK_OK) {
+    if (p->host.resize && p->host.resize(p->host.user, w, h, &err) != ISK_OK) {
         play_say(p, "cannot resize the window: %s", err.message);
         isk_canvas_free(&c);
         return;

@@ -6,6 +6,7 @@
  * as they are now, as a scene file that reproduces them: isk_scene_save),
  * screenshots of the canvas or of the whole window. */
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
 
@@ -52,7 +53,7 @@ static int resize_for(player *p, int width, int height)
         return -1;
     }
     isk_error err;
-    if (p->win && isk_window_resize_canvas(p->win, w, h, &err) != ISK_OK) {
+    if (p->host.resize && p->host.resize(p->host.user, w, h, &err) != ISK_OK) {
         play_say(p, "reload: cannot resize the window: %s", err.message);
         isk_canvas_free(&sim);
         isk_canvas_free(&shown);
@@ -95,6 +96,39 @@ int play_reload(player *p)
     return 0;
 }
 
+/* A file for the host to hand over (play_host.deliver): a scene's text or
+ * a PNG, made in memory. */
+static void deliver_scene(player *p, const char *name)
+{
+    char *text;
+    isk_error err;
+    if (isk_scene_write(isk_effect_definition(p->fx), &text, &err) != ISK_OK) {
+        play_say(p, "save failed: %s", err.message);
+        return;
+    }
+    p->host.deliver(p->host.user, name, text, strlen(text));
+    play_say(p, "saved %s", name);
+    free(text);
+}
+
+static void deliver_png(player *p, const isk_canvas *c, const char *name)
+{
+    char *bytes = NULL;
+    size_t n = 0;
+    FILE *f = open_memstream(&bytes, &n);
+    isk_error err;
+    isk_status s = f ? isk_png_write_stream(c, f, name, &err) : ISK_ERR_NOMEM;
+    if (f && fclose(f) != 0 && s == ISK_OK)
+        s = ISK_ERR_NOMEM;
+    if (s == ISK_OK) {
+        p->host.deliver(p->host.user, name, bytes, n);
+        play_say(p, "saved %s", name);
+    } else {
+        play_say(p, "screenshot failed: %s", s == ISK_ERR_NOMEM ? "out of memory" : err.message);
+    }
+    free(bytes);
+}
+
 void play_save(player *p)
 {
     char path[4200];
@@ -102,6 +136,10 @@ void play_save(player *p)
         snprintf(path, sizeof path, "%s", p->save_to);
     else
         snprintf(path, sizeof path, "iskra-%s.ini", p->name);
+    if (p->host.deliver) {
+        deliver_scene(p, path);
+        return;
+    }
     isk_error err;
     if (isk_scene_save(isk_effect_definition(p->fx), path, &err) != ISK_OK)
         play_say(p, "save failed: %s", err.message);
@@ -112,7 +150,14 @@ void play_save(player *p)
 void play_screenshot(player *p, int whole_window, const char *path)
 {
     char name[4200];
+    const isk_canvas *c = whole_window ? p->shown : &p->sim;
     if (!path) {
+        if (p->host.deliver) {
+            snprintf(name, sizeof name, "iskra-%s-%06ld%s.png", p->name, isk_effect_frame(p->fx),
+                     whole_window ? "-window" : "");
+            deliver_png(p, c, name);
+            return;
+        }
         snprintf(name, sizeof name, "%s%siskra-%s-%06ld%s.png", p->shots ? p->shots : "", p->shots ? "/" : "",
                  p->name, isk_effect_frame(p->fx), whole_window ? "-window" : "");
         path = name;
@@ -120,7 +165,7 @@ void play_screenshot(player *p, int whole_window, const char *path)
             return;
     }
     isk_error err;
-    if (isk_png_write(whole_window ? p->shown : &p->sim, path, &err) == ISK_OK)
+    if (isk_png_write(c, path, &err) == ISK_OK)
         play_say(p, "saved %s", path);
     else
         play_say(p, "screenshot failed: %s", err.message);

@@ -114,7 +114,7 @@ void play_script_free(play_script *s)
 
 static int push(player *p, isk_event ev)
 {
-    if (!p->win || isk_window_push_event(p->win, &ev) == ISK_OK)
+    if (!p->host.push_event || p->host.push_event(p->host.user, &ev) == ISK_OK)
         return 0;
     play_say(p, "--script: cannot queue an event");
     p->failed = 1;

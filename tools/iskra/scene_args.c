@@ -213,7 +213,7 @@ int scene_args_load(const scene_args *a, isk_effect_def *def, isk_effect **fx, c
         isk_effect_def_init(def);
         return 2;
     }
-    isk_status s = isk_scene_load(def, a->scene, &err);
+    isk_status s = a->text ? isk_scene_load_string(def, a->text, a->scene, &err) : isk_scene_load(def, a->scene, &err);
     if (s != ISK_OK) {
         snprintf(why, n, "%s", err.message);
         return s == ISK_ERR_NOMEM ? 1 : 2;

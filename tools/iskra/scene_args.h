@@ -12,7 +12,8 @@
 
 typedef struct scene_args {
     const char *cmd;      /* "render", for messages */
-    const char *scene;    /* path or built-in name */
+    const char *scene;    /* path or built-in name; with `text`, the name its messages give */
+    const char *text;     /* the scene's text itself (the web page's editor), or NULL: read `scene` */
     int have_seed;
     uint64_t seed;
     int width, height;    /* 0: the scene's */
