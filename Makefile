@@ -584,4 +584,6 @@ help:
 	@sed -n '2,/^$$/p' Makefile
 	@sed -n '4,/^#$$/p' Makefile
 
+include mk/web.mk
+
 -include $(shell find $(BUILD)/obj $(BUILD)/fuzz/obj -name '*.d' 2>/dev/null)

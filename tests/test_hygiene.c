@@ -141,7 +141,8 @@ Test(hygiene, every_public_header_stands_alone, .timeout = 120)
 
 /* The licence is MIT (LICENSE), and every source file says so on its first
  * lines (after a script's #! line), so a file copied out of the tree still
- * carries its terms. */
+ * carries its terms.  third_party/ holds others' files under their own
+ * licences, each beside them. */
 Test(hygiene, every_source_file_names_its_licence)
 {
     FILE *lic = fopen("LICENSE", "r");
@@ -150,9 +151,10 @@ Test(hygiene, every_source_file_names_its_licence)
     cr_assert_not_null(fgets(first, sizeof first, lic));
     fclose(lic);
     cr_assert_str_eq(first, "MIT License\n");
-    FILE *p = popen("find src include tools tests bench examples docs .ci Makefile -type f "
-                    "\\( -name '*.c' -o -name '*.h' -o -name '*.cpp' -o -name '*.js' -o -name '*.sh' "
-                    "-o -name Makefile -o -name run -o -name refimg \\) -not -path '*/regressions/*' | sort",
+    FILE *p = popen("find src include tools tests bench examples docs web mk .ci Makefile -type f "
+                    "\\( -name '*.c' -o -name '*.h' -o -name '*.cpp' -o -name '*.js' -o -name '*.sh' -o -name '*.py' "
+                    "-o -name '*.mk' -o -name '*.html' -o -name Makefile -o -name run -o -name refimg \\) "
+                    "-not -path '*/regressions/*' | sort",
                     "r");
     cr_assert_not_null(p);
     char path[1024];

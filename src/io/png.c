@@ -15,6 +15,7 @@
 #include <string.h>
 
 #include "iskra/outfile.h"
+#include "io/png_own.h"
 
 /* libpng's own allocations per chunk (we keep no ancillary chunk, so only
  * PLTE and tRNS, at most 768 bytes, are ever stored). */
@@ -146,10 +147,10 @@ typedef struct png_job {
     int have_canvas;
     png_bytep *rows;
     isk_status status;       /* set before each step that can fail */
+    int own;                 /* iskra's own bytes (isk__png_read_own) */
     char msg[200];
 } png_job;
 
-#ifdef PNG_SETJMP_SUPPORTED
 static void on_error(png_structp png, png_const_charp msg)
 {
     png_job *j = png_get_error_ptr(png);
@@ -188,8 +189,10 @@ static void read_bytes(png_structp png, png_bytep out, size_t n)
 /* The decoder proper.  Returns 0 after a longjmp (j->msg says why). */
 static int run(png_structp png, png_infop pi, png_job *j)
 {
+#ifdef PNG_SETJMP_SUPPORTED
     if (setjmp(png_jmpbuf(png)))
         return 0;
+#endif
     j->status = ISK_ERR_FORMAT;
     png_set_read_fn(png, j, read_bytes);
     png_set_user_limits(png, 1000000, 1000000); /* ours are below; this bounds libpng's own parsing */
@@ -265,7 +268,6 @@ static int run(png_structp png, png_infop pi, png_job *j)
     j->status = ISK_OK;
     return 1;
 }
-#endif
 
 static isk_status decode(png_job *j, const char *name, isk_error *err)
 {
@@ -285,10 +287,11 @@ static isk_status decode(png_job *j, const char *name, isk_error *err)
         return isk_error_set(err, ISK_ERR_FORMAT, "%s: not a PNG file", name);
 #ifndef PNG_SETJMP_SUPPORTED
     /* libpng reports a malformed file by longjmp: without setjmp it could
-     * only abort the program, so such targets read no PNG at all. */
-    return isk_error_set(err, ISK_ERR_UNSUPPORTED, "%s: this build cannot read PNG files (its libpng has no setjmp)",
-                         name);
-#else
+     * only abort the program, so such targets read only iskra's own PNGs. */
+    if (!j->own)
+        return isk_error_set(err, ISK_ERR_UNSUPPORTED,
+                             "%s: this build reads no PNG file but iskra's own (its libpng has no setjmp)", name);
+#endif
     png_structp png = png_create_read_struct(PNG_LIBPNG_VER_STRING, j, on_error, on_warning);
     png_infop pi = png ? png_create_info_struct(png) : NULL;
     if (!pi) {
@@ -306,7 +309,6 @@ static isk_status decode(png_job *j, const char *name, isk_error *err)
         isk_canvas_free(j->out);
     isk_status st = s->io_errno ? ISK_ERR_IO : j->status == ISK_OK ? ISK_ERR_FORMAT : j->status;
     return isk_error_set(err, st, "%s: %s", name, j->msg[0] ? j->msg : "malformed PNG");
-#endif
 }
 
 static isk_status read_file(const char *path, isk_canvas *out, isk_png_info *info, long long max_pixels,
@@ -366,8 +368,8 @@ isk_status isk_png_read(isk_canvas *out, const char *path, isk_error *err)
     return isk_png_read_max(out, path, ISK_PNG_MAX_PIXELS_DEFAULT, err);
 }
 
-isk_status isk_png_read_memory(isk_canvas *out, const void *data, size_t size, const char *name,
-                               long long max_pixels, isk_error *err)
+static isk_status read_memory(isk_canvas *out, const void *data, size_t size, const char *name,
+                              long long max_pixels, int own, isk_error *err)
 {
     static const uint8_t none = 0;
     isk_status s = check_read_args(out, data ? data : (size == 0 ? &none : NULL), max_pixels, err);
@@ -379,5 +381,18 @@ isk_status isk_png_read_memory(isk_canvas *out, const void *data, size_t size, c
     j.src = &src;
     j.max_pixels = max_pixels;
     j.out = out;
+    j.own = own;
     return decode(&j, name ? name : "PNG in memory", err);
+}
+
+isk_status isk_png_read_memory(isk_canvas *out, const void *data, size_t size, const char *name,
+                               long long max_pixels, isk_error *err)
+{
+    return read_memory(out, data, size, name, max_pixels, 0, err);
+}
+
+isk_status isk__png_read_own(isk_canvas *out, const void *data, size_t size, const char *name, long long max_pixels,
+                             isk_error *err)
+{
+    return read_memory(out, data, size, name, max_pixels, 1, err);
 }

@@ -14,8 +14,11 @@
 
 #include "effect_internal.h"
 #include "iskra/scene.h"
+#include "io/png_own.h"
 #include "iskra/texture_png.h"
 #include "scene/scene_load.h"
+
+#define MAX_TEXTURE_PIXELS ((long long)ISK_TEXTURE_MAX_DIM * ISK_TEXTURE_MAX_DIM)
 
 /* The PNG at `path` (or its built-in copy) into d, unless d holds it. */
 static isk_status read_texture(isk_effect_def *d, const char *path, isk_canvas **pixels, isk_error *err)
@@ -25,8 +28,10 @@ static isk_status read_texture(isk_effect_def *d, const char *path, isk_canvas *
         size_t size = 0;
         const unsigned char *built_in = access(path, F_OK) != 0 ? isk__fx_builtin_file(path, &size) : NULL;
         isk_canvas img;
-        isk_status s = built_in ? isk_texture_image_read_memory(&img, built_in, size, path, err)
+        isk_status s = built_in ? isk__png_read_own(&img, built_in, size, path, MAX_TEXTURE_PIXELS, err)
                                 : isk_texture_image_read(&img, path, err);
+        if (s == ISK_OK && built_in && (s = isk_texture_check_size(path, img.width, img.height, 1, 1, err)) != ISK_OK)
+            isk_canvas_free(&img);
         if (s != ISK_OK)
             return s;
         s = isk_effect_def_add_texture(d, path, &img, err);
