@@ -183,10 +183,10 @@ class Page {
     this.el.status.className = isError ? 'error' : '';
   }
 
-  // The screen the simulator lays itself out for: the room below the bar.
+  // The screen the simulator lays itself out for: the whole window (the
+  // page's own controls are below it).
   screenSize() {
-    const bar = this.el.bar.getBoundingClientRect().height;
-    return [Math.max(320, Math.floor(window.innerWidth)), Math.max(200, Math.floor(window.innerHeight - bar))];
+    return [Math.max(320, Math.floor(window.innerWidth)), Math.max(200, Math.floor(window.innerHeight))];
   }
 
   open(name) {
@@ -225,15 +225,23 @@ class Page {
     const x = this.iskra.x, w = x.iskra_web_width(), h = x.iskra_web_height();
     if (!w || !h) return;
     const c = this.el.screen;
-    if (c.width !== w || c.height !== h) { c.width = w; c.height = h; this.fit(); }
+    if (c.width !== w || c.height !== h || this.zoom !== this.iskra.x.iskra_web_zoom()) {
+      c.width = w;
+      c.height = h;
+      this.zoom = this.iskra.x.iskra_web_zoom();
+      this.fit();
+    }
     const px = this.iskra.pixels(x.iskra_web_pixels(), w, h, x.iskra_web_stride());
     this.ctx.putImageData(new ImageData(px, w, h), 0, 0);
     this.takeFile();
   }
 
+  // The zoom the simulator chose for the window when the scene opened
+  // (iskra_web_zoom), less if the window has shrunk since: a whole number.
   fit() {
     const c = this.el.screen, [sw, sh] = this.screenSize();
-    this.scale = Math.max(1, Math.floor(Math.min(sw / c.width, sh / c.height)));
+    const fitting = Math.floor(Math.min(sw / c.width, sh / c.height));
+    this.scale = Math.max(1, Math.min(this.iskra.x.iskra_web_zoom(), fitting));
     c.style.width = c.width * this.scale + 'px';
     c.style.height = c.height * this.scale + 'px';
   }
@@ -403,6 +411,18 @@ function testInterface(page) {
     editorMessage: () => page.el.editorMessage.textContent,
     link: () => page.link(),
     lastFile: () => page.lastFile ? [page.lastFile.name, page.lastFile.bytes.length] : null,
+    particles: () => x.iskra_web_particle_count(),
+    // A widget's rectangle in viewport pixels (CSS), for real pointer events.
+    widget(name) {
+      const out = x.iskra_web_alloc(16);
+      const found = page.iskra.withStrings([name], (p) => x.iskra_web_widget_rect(p, out));
+      const r = new Int32Array(x.memory.buffer, out, 4).slice();
+      x.iskra_web_free(out);
+      if (!found) return null;
+      const c = page.el.screen.getBoundingClientRect(), k = c.width / page.el.screen.width;
+      return [c.left + r[0] * k, c.top + r[1] * k, r[2] * k, r[3] * k];
+    },
+    press: (what) => page.press(what),
   };
 }
 

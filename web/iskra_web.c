@@ -53,6 +53,7 @@ typedef struct web_page {
     web_file file;             /* a file for the user, until the page takes it */
     web_gif gif;
     isk_canvas still;          /* iskra_web_render's canvas */
+    int zoom;                  /* the page shows the window this many times larger */
 } web_page;
 
 static web_page page; /* the module's one page (a wasm instance is one page's) */
@@ -120,6 +121,23 @@ static void close_player(web_page *g)
     g->open = 0;
 }
 
+/* The page shows the window magnified by a whole number (iskra_web_zoom),
+ * the scene's canvas with the panel: the largest zoom whose layout, made
+ * for the viewport divided by it, fits. */
+static void choose_zoom(web_page *g, int view_w, int view_h)
+{
+    player *p = &g->p;
+    for (g->zoom = 4; g->zoom >= 1; g->zoom--) {
+        p->screen_w = view_w / g->zoom < 320 ? 320 : view_w / g->zoom > 16384 ? 16384 : view_w / g->zoom;
+        p->screen_h = view_h / g->zoom < 200 ? 200 : view_h / g->zoom > 16384 ? 16384 : view_h / g->zoom;
+        play_choose_layout(p, 0);
+        play_layout_compute(p);
+        if (p->lay.window.w <= p->screen_w && p->lay.window.h <= p->screen_h)
+            return;
+    }
+    g->zoom = 1; /* nothing fits: the smallest layout, at 1, and the page scrolls */
+}
+
 /* Opens `scene` (a built-in scene's name, or with text the name of an
  * edited scene) for a screen of screen_w x screen_h CSS pixels.  On
  * failure (status 2 for a scene error, 1 otherwise) iskra_web_message
@@ -165,13 +183,12 @@ int iskra_web_open(const char *scene, const char *text, int screen_w, int screen
     p->panel = 1;
     p->hud = 1;
     p->fixed_clock = fixed_clock != 0;
-    p->screen_w = screen_w < 320 ? 320 : screen_w > 16384 ? 16384 : screen_w;
-    p->screen_h = screen_h < 200 ? 200 : screen_h > 16384 ? 16384 : screen_h;
+    p->borderless = 1; /* the page's room is all the window's */
     const isk_effect_def *d = isk_effect_definition(fx);
     p->panel_kind = play_panel_for(d);
     g->open = 1;
     isk_ui_init(&p->ui, 1);
-    play_choose_layout(p, 0);
+    choose_zoom(g, screen_w, screen_h);
     play_layout_compute(p);
     isk_canvas_free(&g->shown);
     if (isk_canvas_init(&p->sim, d->width, d->height) != ISK_OK || isk_effect_run(fx, &p->sim, 0) != ISK_OK ||
@@ -287,6 +304,7 @@ WEB_EXPORT(iskra_web_text) void iskra_web_text(const char *utf8)
 WEB_EXPORT(iskra_web_pixels) const uint8_t *iskra_web_pixels(void) { return page.shown.pixels; }
 WEB_EXPORT(iskra_web_width) int iskra_web_width(void) { return page.shown.width; }
 WEB_EXPORT(iskra_web_height) int iskra_web_height(void) { return page.shown.height; }
+WEB_EXPORT(iskra_web_zoom) int iskra_web_zoom(void) { return page.zoom < 1 ? 1 : page.zoom; }
 WEB_EXPORT(iskra_web_stride) int iskra_web_stride(void) { return (int)page.shown.stride; }
 /* The scene's own canvas (without the panel), for tests. */
 WEB_EXPORT(iskra_web_scene_pixels) const uint8_t *iskra_web_scene_pixels(void) { return page.p.sim.pixels; }
@@ -389,3 +407,25 @@ WEB_EXPORT(iskra_web_render_pixels) const uint8_t *iskra_web_render_pixels(void)
 WEB_EXPORT(iskra_web_render_width) int iskra_web_render_width(void) { return page.still.width; }
 WEB_EXPORT(iskra_web_render_height) int iskra_web_render_height(void) { return page.still.height; }
 WEB_EXPORT(iskra_web_render_stride) int iskra_web_render_stride(void) { return (int)page.still.stride; }
+
+/* ---- for scripts ----------------------------------------------------------- */
+
+/* Live particles of the running scene. */
+WEB_EXPORT(iskra_web_particle_count) double iskra_web_particle_count(void)
+{
+    return page.open ? (double)isk_effect_particle_count(page.p.fx) : 0.0;
+}
+
+/* Where the widget `name` (iskra play --list-widgets) was drawn in the last
+ * frame: x, y, w, h in window-canvas pixels into out[4]; 0 if it was not. */
+WEB_EXPORT(iskra_web_widget_rect) int iskra_web_widget_rect(const char *name, int *out)
+{
+    isk_ui_rect r;
+    if (!page.open || !name || !out || !isk_ui_find(&page.p.ui, name, &r))
+        return 0;
+    out[0] = r.x;
+    out[1] = r.y;
+    out[2] = r.w;
+    out[3] = r.h;
+    return 1;
+}

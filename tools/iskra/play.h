@@ -164,6 +164,8 @@ typedef struct player {
     play_panel_kind panel_kind;
     play_arrangement arrangement;
     int screen_w, screen_h;    /* the screen the window must fit (--screen, or the display's) */
+    int borderless;            /* 1: screen_w x screen_h is all room (a web page's); 0: a window's title
+                                * bar and sides take SCREEN_TITLE_H and SCREEN_SIDE_W of it */
     int panel, hud;            /* 1: shown */
     int panel_toggle;          /* hide/show the panel at the end of this frame */
     int shot_pending;          /* 1: canvas, 2: window screenshot at the end of this frame */

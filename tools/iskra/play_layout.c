@@ -35,20 +35,24 @@ play_panel_kind play_panel_for(const isk_effect_def *d)
 
 static int clamp(int v, int lo, int hi) { return v < lo ? lo : v > hi ? hi : v; }
 
+/* What a window's title bar and sides take of the screen (none in a page). */
+static int title_h(const player *p) { return p->borderless ? 0 : SCREEN_TITLE_H; }
+static int side_w(const player *p) { return p->borderless ? 0 : SCREEN_SIDE_W; }
+
 /* Panel widths and heights at scale s for the screen (in pixels). */
 static int compact_w(const player *p, int cw, int s)
 {
-    return clamp((p->screen_w - SCREEN_SIDE_W - cw) / s, COMPACT_MIN_W, COMPACT_MAX_W) * s;
+    return clamp((p->screen_w - side_w(p) - cw) / s, COMPACT_MIN_W, COMPACT_MAX_W) * s;
 }
 
 static int inspector_w(const player *p, int cw, int s)
 {
-    return clamp((p->screen_w - SCREEN_SIDE_W - cw) / s, INSPECTOR_MIN_W, INSPECTOR_MAX_W) * s;
+    return clamp((p->screen_w - side_w(p) - cw) / s, INSPECTOR_MIN_W, INSPECTOR_MAX_W) * s;
 }
 
 static int inspector_h(const player *p, int s)
 {
-    return clamp((p->screen_h - SCREEN_TITLE_H) / s, INSPECTOR_MIN_H, INSPECTOR_MAX_H) * s;
+    return clamp((p->screen_h - title_h(p)) / s, INSPECTOR_MIN_H, INSPECTOR_MAX_H) * s;
 }
 
 void play_layout_plan(const player *p, int cw, int ch, int panel, play_layout *l)
@@ -90,7 +94,7 @@ void play_layout_compute(player *p)
 
 static int fits(const player *p, const play_layout *l)
 {
-    return l->window.w <= p->screen_w && l->window.h <= p->screen_h - SCREEN_TITLE_H;
+    return l->window.w <= p->screen_w && l->window.h <= p->screen_h - title_h(p);
 }
 
 /* Sets the scale, font and arrangement in p; the layout they give. */
