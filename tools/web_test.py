@@ -167,6 +167,11 @@ def editor_mistake(b, url):
     frame1 = b.run("return window.iskraPage.frames(3)")
     check("a typo in the editor shows FILE:LINE", re.match(r"scene\.ini:\d+: ", msg or "") is not None, repr(msg))
     check("the last good scene keeps running", frame1 == frame0 + 3 and frame0 >= 5, "frames %s -> %s" % (frame0, frame1))
+    # The page has no files: a texture that is not a built-in one is named.
+    pinwheel = b.run("return window.iskraPage.builtinText('looks_pinwheel')")
+    other = re.sub(r"(?m)^texture = .*$", "texture = mine.png", pinwheel, count=1)
+    msg = b.run("return window.iskraPage.apply(arguments[0])", other)
+    check("a texture file the page cannot have is named", other != pinwheel and "mine.png: No such file" in msg, repr(msg))
 
 
 def shared_link(b, url, frames):

@@ -16,9 +16,10 @@
 'use strict';
 
 // ---- WASI: what the C library asks of its system --------------------------
-// The module has no files: stdout and stderr go to the console; every other
-// descriptor is refused.  Errno values of wasi_snapshot_preview1.
-const WASI_EBADF = 8, WASI_ENOTCAPABLE = 76, WASI_ESPIPE = 70;
+// The module has no files: stdout and stderr go to the console, every other
+// descriptor is refused, and no path exists ("No such file or directory").
+// Errno values of wasi_snapshot_preview1.
+const WASI_EBADF = 8, WASI_ENOENT = 44, WASI_ESPIPE = 70;
 
 function wasiImports(getMemory) {
   const pending = ['', '', ''];
@@ -48,26 +49,36 @@ function wasiImports(getMemory) {
       return 0;
     },
     fd_read(fd, iovs, n, read) { if (fd !== 0) return WASI_EBADF; view().setUint32(read, 0, true); return 0; },
-    fd_close(fd) { return fd <= 2 ? 0 : WASI_EBADF; },
+    fd_close(fd) { return fd <= 3 ? 0 : WASI_EBADF; },
     fd_seek(fd) { return fd <= 2 ? WASI_ESPIPE : WASI_EBADF; },
     fd_sync(fd) { return fd <= 2 ? 0 : WASI_EBADF; },
     fd_fdstat_get(fd, out) {
-      if (fd > 2) return WASI_EBADF;
+      if (fd > 3) return WASI_EBADF;
       const v = view();
-      v.setUint8(out, 2);                           // a character device
+      v.setUint8(out, fd === 3 ? 3 : 2);            // the directory, or a character device
       v.setUint16(out + 2, 0, true);                // no flags
       v.setBigUint64(out + 8, 0xffffffffn, true);   // rights
       v.setBigUint64(out + 16, 0xffffffffn, true);
       return 0;
     },
     fd_fdstat_set_flags(fd) { return fd <= 2 ? 0 : WASI_EBADF; },
-    fd_prestat_get() { return WASI_EBADF; },        // no directories
-    fd_prestat_dir_name() { return WASI_EBADF; },
-    path_open() { return WASI_ENOTCAPABLE; },
-    path_filestat_get() { return WASI_ENOTCAPABLE; },
-    path_create_directory() { return WASI_ENOTCAPABLE; },
-    path_rename() { return WASI_ENOTCAPABLE; },
-    path_unlink_file() { return WASI_ENOTCAPABLE; },
+    // One directory, "/", empty: so a path is looked up, and is not there.
+    fd_prestat_get(fd, out) {
+      if (fd !== 3) return WASI_EBADF;
+      view().setUint8(out, 0);                      // a directory
+      view().setUint32(out + 4, 1, true);           // its name's length
+      return 0;
+    },
+    fd_prestat_dir_name(fd, path, len) {
+      if (fd !== 3 || len < 1) return WASI_EBADF;
+      bytes()[path] = 47;                           // "/"
+      return 0;
+    },
+    path_open() { return WASI_ENOENT; },
+    path_filestat_get() { return WASI_ENOENT; },
+    path_create_directory() { return WASI_ENOENT; },
+    path_rename() { return WASI_ENOENT; },
+    path_unlink_file() { return WASI_ENOENT; },
     proc_exit(code) { throw new Error('iskra exited with status ' + code); },
   };
 }
@@ -405,6 +416,7 @@ function testInterface(page) {
       return sha256(page.iskra.pixels(x.iskra_web_render_pixels(), x.iskra_web_render_width(), x.iskra_web_render_height(), x.iskra_web_render_stride()));
     },
     builtins: () => page.iskra.builtins(),
+    builtinText: (name) => page.iskra.builtinText(name),
     sceneText() { const p = x.iskra_web_scene_text(); const t = page.iskra.string(p); x.iskra_web_free(p); return t; },
     size: () => [x.iskra_web_width(), x.iskra_web_height(), page.scale],
     message: () => page.iskra.message(),
