@@ -14,7 +14,8 @@ ISKRA is the native tool (build/bin/iskra), WEB_DIR the built page
   - a mistake in the editor shows FILE:LINE: and the last good scene runs on;
   - a shared link, loaded fresh, shows the same scene and the same bytes;
   - the downloads (scene file, PNG, GIF of the next frames) are made;
-  - the window fits a 1280x720 viewport, and is scaled by whole numbers.
+  - the window fits a 1280x720 viewport, and is scaled by whole numbers;
+  - the page (its three files) weighs at most 2 MB.
 Exit status 0 when all pass.
 """
 import argparse
@@ -220,6 +221,13 @@ def fits(b, url):
     check("a large viewport scales by a whole number", scale >= 2 and css[0] == css[1] * scale, "%s at %s" % (css, scale))
 
 
+def page_weight(web):
+    """The page is its three files, at most 2 MB together."""
+    files = ["index.html", "iskra.js", "iskra.wasm"]
+    size = sum(os.path.getsize(os.path.join(web, f)) for f in files)
+    check("the page weighs at most 2 MB (%.2f MB)" % (size / 1e6), size <= 2 * 1024 * 1024, "%d bytes" % size)
+
+
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("iskra")
@@ -227,6 +235,7 @@ def main():
     ap.add_argument("--frames", type=int, default=30)
     ap.add_argument("--only")
     a = ap.parse_args()
+    page_weight(a.web)
     with Server(a.web) as s, Browser(1366, 768) as b, tempfile.TemporaryDirectory() as tmp:
         scenes_match_native(b, s.url, a.iskra, a.frames, a.only, tmp)
         if not a.only:
