@@ -76,4 +76,6 @@ web-serve: web
 	@echo "web: serving $(WEB_OUT)/ on http://127.0.0.1:$(WEB_PORT)/ (Ctrl+C stops)"
 	@cd $(WEB_OUT) && python3 -m http.server --bind 127.0.0.1 $(WEB_PORT)
 
+include mk/web_tests.mk
+
 -include $(shell find $(WEB)/obj -name '*.d' 2>/dev/null)
