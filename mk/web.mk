@@ -77,6 +77,7 @@ WEB_TEST_PKGS := chromium chromium-driver python3
 .PHONY: test-web test-web-page
 test-web: web
 	@sh tools/deps.sh $(WEB_TEST_PKGS)
+	@$(MAKE) --no-print-directory test-web-unit
 	@$(MAKE) --no-print-directory $(TOOL) test-web-page
 test-web-page:
 	@python3 tools/web_test.py $(TOOL) $(WEB_OUT)
@@ -85,7 +86,9 @@ web-serve: web
 	@echo "web: serving $(WEB_OUT)/ on http://127.0.0.1:$(WEB_PORT)/ (Ctrl+C stops)"
 	@cd $(WEB_OUT) && python3 -m http.server --bind 127.0.0.1 $(WEB_PORT)
 
-# The benchmark (make bench-web).
+# The library's tests in the wasm module (make test-web-unit), the
+# benchmark (make bench-web).
+include mk/web_tests.mk
 include mk/web_bench.mk
 
 -include $(shell find $(WEB)/obj -name '*.d' 2>/dev/null)
