@@ -152,7 +152,7 @@ Test(hygiene, every_source_file_names_its_licence)
     fclose(lic);
     cr_assert_str_eq(first, "MIT License\n");
     FILE *p = popen("find src include tools tests bench examples docs web mk .ci Makefile -type f "
-                    "\\( -name '*.c' -o -name '*.h' -o -name '*.cpp' -o -name '*.js' -o -name '*.sh' -o -name '*.py' "
+                    "\\( -name '*.c' -o -name '*.h' -o -name '*.cpp' -o -name '*.js' -o -name '*.mjs' -o -name '*.sh' -o -name '*.py' "
                     "-o -name '*.mk' -o -name '*.html' -o -name Makefile -o -name run -o -name refimg \\) "
                     "-not -path '*/regressions/*' | sort",
                     "r");

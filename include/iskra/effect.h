@@ -99,9 +99,10 @@ extern "C" {
  * where size_t has 64 bits and 2 GiB where it has 32 (a 32-bit program has
  * at most 4 GiB of addresses, shared by its code, stacks and canvases).
  * Computed in uintmax_t: (size_t)4 << 30 would be 0 with a 32-bit size_t. */
-#define ISK_EFFECT_DEFAULT_MAX_MEMORY                                                              \
-    ((size_t)((uintmax_t)SIZE_MAX / 2 + 1 < (uintmax_t)4 << 30 ? (uintmax_t)SIZE_MAX / 2 + 1 \
-                                                               : (uintmax_t)4 << 30))
+#define ISK_EFFECT_MAX_MEMORY_CEILING ((uintmax_t)4 << 30)
+#define ISK_EFFECT_DEFAULT_MAX_MEMORY                                                            \
+    ((size_t)((uintmax_t)SIZE_MAX / 2 + 1 < ISK_EFFECT_MAX_MEMORY_CEILING ? (uintmax_t)SIZE_MAX / 2 + 1 \
+                                                                          : ISK_EFFECT_MAX_MEMORY_CEILING))
 
 /* ---- forces ------------------------------------------------------------ */
 

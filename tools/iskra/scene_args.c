@@ -166,8 +166,9 @@ void scene_args_help(FILE *f)
                "  --threads N      threads to step on, 1..256 (default: ISKRA_THREADS, else every core;\n"
                "                   the result is the same for every number)\n"
                "  --max-memory B   the most memory the scene may take with every pool full, in bytes\n"
-               "                   or with K, M, G (default %zuG); a scene that could need more is refused\n",
-            ISK_EFFECT_DEFAULT_MAX_MEMORY >> 30);
+               "                   or with K, M, G (default: the smaller of %juG and half the address\n"
+               "                   space); a scene that could need more is refused\n",
+            ISK_EFFECT_MAX_MEMORY_CEILING >> 30);
 }
 
 /* What the scene shows besides its background: a drawing, a deflector
