@@ -339,17 +339,18 @@ extern const fx_draw_kind isk__fx_kind_dots, isk__fx_kind_browser_dots, isk__fx_
 const fx_draw_kind *isk__fx_choose_draw(const fx_group *g);
 extern const fx_draw_kind isk__fx_kind_trails; /* effect_trail.c: units are a trail's points */
 
-/* effect_budget.c: the budgets.  The pixels a particle's draw may touch,
- * for the draw kinds' rows (a coverage dot, a single pixel, a disc or
- * sprite, a texture, nothing, a trail's segment); whether the definition
- * could need more memory than max_memory (1, with the message in msg);
- * whether a frame and the prewarm fit max_work (the groups compiled). */
+/* effect_footprints.c: the pixels a particle's draw may touch, for the
+ * draw kinds' rows (a coverage dot, a single pixel, a disc or sprite, a
+ * texture, nothing, a trail's segment). */
 double isk__fx_px_dot(const isk_effect *e, const fx_group *g);
 double isk__fx_px_pixel(const isk_effect *e, const fx_group *g);
 double isk__fx_px_round(const isk_effect *e, const fx_group *g);
 double isk__fx_px_texture(const isk_effect *e, const fx_group *g);
 double isk__fx_px_none(const isk_effect *e, const fx_group *g);
 double isk__fx_px_trail(const isk_effect *e, const fx_group *g);
+/* effect_budget.c: whether the definition could need more memory than
+ * max_memory (1, with the message in msg); whether a frame and the prewarm
+ * fit max_work (the groups compiled, nothing born). */
 int isk__fx_memory_over(const isk_effect_def *d, char *msg, size_t n);
 isk_status isk__fx_work_fits(const isk_effect *e, isk_error *err);
 
