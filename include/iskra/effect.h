@@ -104,6 +104,10 @@ extern "C" {
     ((size_t)((uintmax_t)SIZE_MAX / 2 + 1 < ISK_EFFECT_MAX_MEMORY_CEILING ? (uintmax_t)SIZE_MAX / 2 + 1 \
                                                                           : ISK_EFFECT_MAX_MEMORY_CEILING))
 
+/* The work a frame or a prewarm may ask for unless isk_effect_def.max_work
+ * says otherwise: about a few seconds of one core. */
+#define ISK_EFFECT_DEFAULT_MAX_WORK 1e9
+
 /* ---- forces ------------------------------------------------------------ */
 
 typedef enum isk_force_kind {
@@ -533,6 +537,17 @@ typedef struct isk_effect_def {
      * from the environment if it is set, else every online core.  The bytes
      * are the same for every number. */
     int threads;
+    /* Not a scene key either: the most work the program lets a frame, or
+     * the prewarm, ask for, in particle-steps (a particle through a stage
+     * of cost 1) plus pixels a draw may touch, counted at their worst
+     * (every store as full as its births allow, every particle at its
+     * largest; docs/scene-format.md, "Budgets").  isk_effect_create
+     * refuses a definition that could need more, naming what needs it.
+     * 0: ISK_EFFECT_DEFAULT_MAX_WORK. */
+    double max_work;
+    /* Memory the program needs beside the effect (its encoders, another
+     * canvas), counted against max_memory with the effect's; 0: none. */
+    size_t host_memory;
 } isk_effect_def;
 
 /* Defaults as documented on each field; no forces, emitters or drawings. */
@@ -549,7 +564,10 @@ int isk_effect_def_add_deflector(isk_effect_def *d, const char *name, isk_deflec
 isk_emitter_def *isk_effect_def_add_emitter(isk_effect_def *d, const char *name);
 isk_drawing_def *isk_effect_def_add_drawing(isk_effect_def *d, const char *name, isk_drawing_kind kind);
 /* The most memory the effect can take, in bytes: every emitter's pool full
- * (its capacity, the store's growth included), its scratch and sprites. */
+ * (its capacity, the store's growth included, trails too), its scratch and
+ * sprites, every image of the definition twice (its pixels and the
+ * effect's copy), every texture made from them (one per image and grid,
+ * isk_texture_bytes), the canvas it is drawn into, and host_memory. */
 size_t isk_effect_def_memory(const isk_effect_def *d);
 
 /* Index of the named force / deflector / emitter, or -1. */

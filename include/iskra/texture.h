@@ -172,6 +172,12 @@ isk_status isk_texture_from_canvas(isk_texture *t, const isk_canvas *img, int co
  * Readers check a file's header with it before decoding the pixels. */
 isk_status isk_texture_check_size(const char *name, int width, int height, int cols, int rows, isk_error *err);
 
+/* The bytes isk_texture_from_canvas takes for an image of width x height
+ * cut into cols x rows frames (the layout above: every frame's levels with
+ * their borders, and the struct), without making it; 0 for what it would
+ * refuse.  What a program budgets before making a texture. */
+size_t isk_texture_bytes(int width, int height, int cols, int rows);
+
 /* A white texture of one frame, size x size, whose alpha is the sprite
  * kind's mask (iskra/sprite.h, the phase centred on the image): tinted by a
  * colour it is that sprite, and drawn with width != height and an angle it

@@ -55,6 +55,19 @@ static void halve(uint8_t *frame, const isk_texture_level *src, const isk_textur
     }
 }
 
+size_t isk_texture_bytes(int width, int height, int cols, int rows)
+{
+    if (width < 1 || height < 1 || width > ISK_TEXTURE_MAX_DIM || height > ISK_TEXTURE_MAX_DIM || cols < 1 ||
+        cols > ISK_TEXTURE_MAX_GRID || rows < 1 || rows > ISK_TEXTURE_MAX_GRID || width % cols || height % rows)
+        return 0;
+    isk_texture t;
+    memset(&t, 0, sizeof t);
+    t.frame_w = width / cols;
+    t.frame_h = height / rows;
+    plan_levels(&t);
+    return sizeof(isk_texture) + (size_t)cols * (size_t)rows * t.frame_bytes + ISK__TEXTURE_SLACK;
+}
+
 static int canvas_ok(const isk_canvas *c)
 {
     return c->pixels && c->width > 0 && c->height > 0 && c->stride >= 4u * (size_t)c->width;

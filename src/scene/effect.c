@@ -116,6 +116,10 @@ static isk_status build(isk_effect *e, isk_error *err)
         if ((s = isk__fx_compile(e, g)) != ISK_OK)
             return isk_error_set(err, s, "emitter '%s': cannot compile: %s", em->name, isk_status_str(s));
     }
+    /* compiled, nothing born yet: what a frame and the prewarm could cost */
+    isk_status ws = isk__fx_work_fits(e, err);
+    if (ws != ISK_OK)
+        return ws;
     isk__fx_start_clocks(e, d->dt / d->speed_divisor);
     for (int gi = 0; gi < e->ngroups; gi++) {
         fx_group *g = &e->groups[gi];

@@ -308,52 +308,12 @@ static isk_status structure_fails(const isk_effect_def *d, fx_report *r, isk_sta
     return s;
 }
 
-/* "1.5 GiB", "233 MiB", "12 KiB" */
-static void bytes_text(size_t b, char *buf, size_t n)
-{
-    if (b == SIZE_MAX)
-        snprintf(buf, n, "more than can be addressed");
-    else if (b >= (size_t)1 << 30)
-        snprintf(buf, n, "%.1f GiB", (double)b / (double)((size_t)1 << 30));
-    else if (b >= (size_t)1 << 20)
-        snprintf(buf, n, "%.0f MiB", (double)b / (double)((size_t)1 << 20));
-    else
-        snprintf(buf, n, "%.0f KiB", (double)b / 1024.0);
-}
-
-/* Every pool full must fit the program's memory limit: say which emitters
- * take what (the largest first, at most four). */
+/* Every pool full, every texture and the canvas must fit the program's
+ * memory limit (effect_budget.c says what takes what). */
 static isk_status memory_fits(const isk_effect_def *d, fx_report *r)
 {
-    const size_t limit = d->max_memory ? d->max_memory : ISK_EFFECT_DEFAULT_MAX_MEMORY;
-    const size_t need = isk_effect_def_memory(d);
-    if (need <= limit)
-        return ISK_OK;
-    char msg[400], a[40], b[40];
-    bytes_text(need, a, sizeof a);
-    bytes_text(limit, b, sizeof b);
-    size_t used = (size_t)snprintf(msg, sizeof msg, "the emitters could need %s at their fullest (", a);
-    int shown[4], nshown = 0;
-    for (int k = 0; k < 4 && k < d->nemitters; k++) {
-        int best = -1;
-        for (int i = 0; i < d->nemitters; i++) {
-            int taken = 0;
-            for (int j = 0; j < nshown; j++)
-                taken |= shown[j] == i;
-            if (!taken && (best < 0 || isk__fx_emitter_memory(&d->emitters[i]) > isk__fx_emitter_memory(&d->emitters[best])))
-                best = i;
-        }
-        shown[nshown++] = best;
-        char e[40];
-        bytes_text(isk__fx_emitter_memory(&d->emitters[best]), e, sizeof e);
-        used += (size_t)snprintf(msg + used, used < sizeof msg ? sizeof msg - used : 0, "%s'%s' %s", k ? ", " : "",
-                                 d->emitters[best].name, e);
-    }
-    snprintf(msg + used, used < sizeof msg ? sizeof msg - used : 0,
-             "%s), more than the limit of %s: lower their capacity, or raise the limit (--max-memory, "
-             "isk_effect_def.max_memory)",
-             d->nemitters > 4 ? ", ..." : "", b);
-    return structure_fails(d, r, ISK_ERR_SIZE, msg);
+    char msg[1200];
+    return isk__fx_memory_over(d, msg, sizeof msg) ? structure_fails(d, r, ISK_ERR_SIZE, msg) : ISK_OK;
 }
 
 isk_status isk__fx_check_def(const isk_effect_def *d, fx_report *r)

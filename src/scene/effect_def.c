@@ -132,20 +132,6 @@ size_t isk__fx_emitter_memory(const isk_emitter_def *e)
     return b ? b : SIZE_MAX;
 }
 
-size_t isk_effect_def_memory(const isk_effect_def *d)
-{
-    if (!d)
-        return 0;
-    /* The effect itself (scratch, sine table, sprite cache, sorted order) is
-     * small and bounded; the pools are what grows. */
-    size_t total = sizeof(isk_effect_def) + ((size_t)1 << 20);
-    for (int i = 0; d->emitters && i < d->nemitters; i++) {
-        size_t b = isk__fx_emitter_memory(&d->emitters[i]);
-        total = b > SIZE_MAX - total ? SIZE_MAX : total + b;
-    }
-    return total;
-}
-
 void isk__fx_force_sync(isk_force_def *f)
 {
     if (isk_potential_set_law(&f->pot, f->law, f->exponent) != ISK_OK)

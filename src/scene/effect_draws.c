@@ -261,26 +261,28 @@ static isk_status draw_nothing(isk_effect *e, isk_canvas *c, fx_group *g, const 
  *   FX_MAY_RETAIN   its blends can be recorded while the group rests and
  *                   replayed (effect_retain.c)
  * cost: a particle's draw on one thread, in batched coverage dots (what
- * the scheduler weighs against FX_BAND_MIN_WORK). */
+ * the scheduler weighs against FX_BAND_MIN_WORK).
+ * pixels: the most pixels a particle's draw may touch (effect_budget.c:
+ * the work budget counts cost + pixels a particle). */
 #define FX_ROWS (FX_MAY_BANDS | FX_MAY_SPLIT)
 
 const fx_draw_kind isk__fx_kind_dots = {"dots", draw_dots, NULL, 1.0, ISK__DOT_REACH,
-                                   FX_ROWS | FX_MAY_SORT | FX_MAY_COLUMNS | FX_MAY_RETAIN};
+                                   FX_ROWS | FX_MAY_SORT | FX_MAY_COLUMNS | FX_MAY_RETAIN, isk__fx_px_dot};
 const fx_draw_kind isk__fx_kind_browser_dots = {"browser dots", draw_dots, NULL, 1.0, ISK__DOT_REACH,
-                                           FX_ROWS | FX_MAY_SORT | FX_MAY_COLUMNS};
+                                           FX_ROWS | FX_MAY_SORT | FX_MAY_COLUMNS, isk__fx_px_dot};
 /* a third of a dot: a single pixel's bands gain least (every band scans
  * the store for a pixel's worth of work) */
 const fx_draw_kind isk__fx_kind_pixels = {"pixels", draw_dots, NULL, 1.0 / 3.0, ISK__DOT_REACH,
-                                     FX_ROWS | FX_MAY_SORT | FX_MAY_COLUMNS};
+                                     FX_ROWS | FX_MAY_SORT | FX_MAY_COLUMNS, isk__fx_px_pixel};
 /* a screen transform, a style and a kernel call each: ten dots */
 const fx_draw_kind isk__fx_kind_styled_dots = {"dots, a colour each", draw_styled_dots, NULL, 10.0, ISK__DOT_REACH,
-                                          FX_ROWS | FX_MAY_SORT};
+                                          FX_ROWS | FX_MAY_SORT, isk__fx_px_dot};
 const fx_draw_kind isk__fx_kind_styled_pixels = {"pixels, a colour each", draw_styled_pixels, NULL, 10.0, ISK__DOT_REACH,
-                                            FX_ROWS | FX_MAY_SORT};
-const fx_draw_kind isk__fx_kind_discs = {"discs", draw_discs, NULL, 10.0, 0, FX_ROWS};
-const fx_draw_kind isk__fx_kind_sprites = {"sprites", draw_sprites, prepare_sprites, 10.0, 0, FX_ROWS};
-const fx_draw_kind isk__fx_kind_textures = {"textures", isk__fx_draw_textures, NULL, 10.0, 0, FX_ROWS};
-const fx_draw_kind isk__fx_kind_nothing = {"nothing", draw_nothing, NULL, 0.0, 0, 0};
+                                            FX_ROWS | FX_MAY_SORT, isk__fx_px_pixel};
+const fx_draw_kind isk__fx_kind_discs = {"discs", draw_discs, NULL, 10.0, 0, FX_ROWS, isk__fx_px_round};
+const fx_draw_kind isk__fx_kind_sprites = {"sprites", draw_sprites, prepare_sprites, 10.0, 0, FX_ROWS, isk__fx_px_round};
+const fx_draw_kind isk__fx_kind_textures = {"textures", isk__fx_draw_textures, NULL, 10.0, 0, FX_ROWS, isk__fx_px_texture};
+const fx_draw_kind isk__fx_kind_nothing = {"nothing", draw_nothing, NULL, 0.0, 0, 0, isk__fx_px_none};
 
 const fx_draw_kind *isk__fx_choose_draw(const fx_group *g)
 {

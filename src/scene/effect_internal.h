@@ -332,10 +332,27 @@ struct fx_draw_kind {
     double cost;                                                     /* a particle, in batched coverage dots */
     int reach;                                                       /* FX_MAY_SORT: rows beyond its own */
     unsigned may;                                                    /* FX_MAY_*: 0, drawn whole on the caller */
+    double (*pixels)(const isk_effect *e, const fx_group *g);        /* the most a particle's draw touches, a unit */
 };
 extern const fx_draw_kind isk__fx_kind_dots, isk__fx_kind_browser_dots, isk__fx_kind_pixels, isk__fx_kind_styled_dots,
     isk__fx_kind_styled_pixels, isk__fx_kind_discs, isk__fx_kind_sprites, isk__fx_kind_textures, isk__fx_kind_nothing;
 const fx_draw_kind *isk__fx_choose_draw(const fx_group *g);
+extern const fx_draw_kind isk__fx_kind_trails; /* effect_trail.c: units are a trail's points */
+
+/* effect_footprints.c: the pixels a particle's draw may touch, for the
+ * draw kinds' rows (a coverage dot, a single pixel, a disc or sprite, a
+ * texture, nothing, a trail's segment). */
+double isk__fx_px_dot(const isk_effect *e, const fx_group *g);
+double isk__fx_px_pixel(const isk_effect *e, const fx_group *g);
+double isk__fx_px_round(const isk_effect *e, const fx_group *g);
+double isk__fx_px_texture(const isk_effect *e, const fx_group *g);
+double isk__fx_px_none(const isk_effect *e, const fx_group *g);
+double isk__fx_px_trail(const isk_effect *e, const fx_group *g);
+/* effect_budget.c: whether the definition could need more memory than
+ * max_memory (1, with the message in msg); whether a frame and the prewarm
+ * fit max_work (the groups compiled, nothing born). */
+int isk__fx_memory_over(const isk_effect_def *d, char *msg, size_t n);
+isk_status isk__fx_work_fits(const isk_effect *e, isk_error *err);
 
 /* effect_bands.c: kind k's draw of g over the canvas, in bands on the
  * effect's workers when its row allows and the draw is worth it (whole:

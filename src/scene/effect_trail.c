@@ -58,8 +58,10 @@ static isk_status draw_trails(isk_effect *e, isk_canvas *c, fx_group *g, const f
 
 /* A trail's stroke blends only the band's rows (isk__stroke_trail_rows);
  * its reach is its width, so a band reads every particle; cost: a dot a
- * segment, times the points (isk__fx_trail_render's units). */
-static const fx_draw_kind trails = {"trails", draw_trails, NULL, 1.0, 0, FX_MAY_BANDS | FX_MAY_SPLIT};
+ * segment, times the points (isk__fx_trail_render's units); pixels: a
+ * segment's square of the ribbon's width. */
+const fx_draw_kind isk__fx_kind_trails = {"trails", draw_trails, NULL, 1.0, 0, FX_MAY_BANDS | FX_MAY_SPLIT,
+                                          isk__fx_px_trail};
 
 isk_status isk__fx_trail_render(isk_effect *e, isk_canvas *c, fx_group *g, const isk_color *fill)
 {
@@ -69,5 +71,5 @@ isk_status isk__fx_trail_render(isk_effect *e, isk_canvas *c, fx_group *g, const
         return ISK_OK;
     }
     const fx_band whole = isk__fx_band_whole(c, g);
-    return isk__fx_draw_bands(e, c, g, &trails, &whole, (double)g->store.trail_len, fill); /* a segment a point */
+    return isk__fx_draw_bands(e, c, g, &isk__fx_kind_trails, &whole, (double)g->store.trail_len, fill); /* a segment a point */
 }

@@ -7,9 +7,15 @@
  * otherwise, when a built-in scene names it (scenes/textures/NAME.png),
  * the copy built into the library with the scenes, so a built-in scene
  * draws anywhere.  A path in a scene file is relative to the scene file;
- * isk_scene_load_textures takes a C definition's paths as given. */
+ * isk_scene_load_textures takes a C definition's paths as given.
+ *
+ * One file, one image: paths that name the same file ("./x.png" and
+ * "x.png", a link and its target) are decoded once, and every emitter
+ * naming that file is given the first path's name, so the effect's cache
+ * of textures (keyed by name and grid) shares them too. */
 #include <stdio.h>
 #include <string.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include "effect_internal.h"
@@ -20,10 +26,26 @@
 
 #define MAX_TEXTURE_PIXELS ((long long)ISK_TEXTURE_MAX_DIM * ISK_TEXTURE_MAX_DIM)
 
-/* The PNG at `path` (or its built-in copy) into d, unless d holds it. */
-static isk_status read_texture(isk_effect_def *d, const char *path, isk_canvas **pixels, isk_error *err)
+/* The texture of d that is the file at `path` under another name, or -1
+ * (by the file's identity: device and inode). */
+static int same_file(const isk_effect_def *d, const char *path)
+{
+    struct stat want, have;
+    if (stat(path, &want) != 0)
+        return -1;
+    for (int i = 0; i < d->ntextures; i++)
+        if (stat(d->textures[i].name, &have) == 0 && have.st_dev == want.st_dev && have.st_ino == want.st_ino)
+            return i;
+    return -1;
+}
+
+/* The PNG at `path` (or its built-in copy) into d, unless d holds it
+ * (under that name, or that file under another name): its index. */
+static isk_status read_texture(isk_effect_def *d, const char *path, int *index, isk_error *err)
 {
     int k = isk_effect_def_find_texture(d, path);
+    if (k < 0)
+        k = same_file(d, path);
     if (k < 0) {
         size_t size = 0;
         const unsigned char *built_in = access(path, F_OK) != 0 ? isk__fx_builtin_file(path, &size) : NULL;
@@ -40,6 +62,19 @@ static isk_status read_texture(isk_effect_def *d, const char *path, isk_canvas *
             return s;
         k = isk_effect_def_find_texture(d, path);
     }
+    *index = k;
+    return ISK_OK;
+}
+
+/* The emitter's texture: its file read (once), and its name the one the
+ * definition holds that file under. */
+static isk_status use_texture(isk_effect_def *d, isk_emitter_def *em, isk_canvas **pixels, isk_error *err)
+{
+    int k;
+    isk_status s = read_texture(d, em->look.texture, &k, err);
+    if (s != ISK_OK)
+        return s;
+    memcpy(em->look.texture, d->textures[k].name, sizeof em->look.texture);
     *pixels = &d->textures[k].pixels;
     return ISK_OK;
 }
@@ -64,7 +99,7 @@ isk_status isk__fx_scene_texture(isk_effect_def *d, isk_emitter_def *em, const c
     }
     isk_error err = {0};
     isk_canvas *img = NULL;
-    isk_status s = read_texture(d, em->look.texture, &img, &err);
+    isk_status s = use_texture(d, em, &img, &err);
     /* the texture module's rules (the grid itself is well formed here:
      * isk__fx_looks_check said so), so a RANGE is the grid not dividing the
      * image: that key's line */
@@ -86,7 +121,7 @@ isk_status isk_scene_load_textures(isk_effect_def *d, isk_error *err)
     if (d->nemitters < 0 || d->nemitters > ISK_EFFECT_MAX_EMITTERS || (d->nemitters && !d->emitters))
         return isk_error_set(err, ISK_ERR_SIZE, "textures: a malformed definition (%d emitters)", d->nemitters);
     for (int i = 0; i < d->nemitters; i++) {
-        const isk_emitter_def *em = &d->emitters[i];
+        isk_emitter_def *em = &d->emitters[i];
         if (!em->look.texture[0])
             continue;
         if (!memchr(em->look.texture, 0, sizeof em->look.texture))
@@ -94,7 +129,7 @@ isk_status isk_scene_load_textures(isk_effect_def *d, isk_error *err)
                                  ISK_NAME_MAX - 1, em->name, ISK_TEXTURE_PATH_MAX - 1);
         isk_error le = {0};
         isk_canvas *img;
-        isk_status s = read_texture(d, em->look.texture, &img, &le);
+        isk_status s = use_texture(d, em, &img, &le);
         if (s != ISK_OK)
             return isk_error_set(err, s, "emitter '%.*s': texture: %s", ISK_NAME_MAX - 1, em->name, le.message);
     }

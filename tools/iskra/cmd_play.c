@@ -39,6 +39,7 @@ static void help(FILE *f)
                "                  [--ui-scale N] [--screen WxH] [--panel console|inspector] [--no-panel]\n"
                "                  [--save PATH] [--shots DIR] [--follow EMITTER] [--seed N] [--size WxH]\n"
                "                  [--dt S] [--substeps N] [--threads N] [--max-memory B]\n"
+               "                  [--max-work N]\n"
                "  Runs the scene in a window with a panel beside it: the thesis's simulator console\n"
                "  for the explosion thesis's scenes, the inspector (every section's live keys) for\n"
                "  the others.  Every control changes the running scene (iskra keys lists what each\n"

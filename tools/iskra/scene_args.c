@@ -143,6 +143,20 @@ int scene_args_take(scene_args *a, int argc, char **argv, int *i)
         a->max_memory = (size_t)b << shift;
         return 1;
     }
+    if ((r = arg_value(a->cmd, argc, argv, i, "--max-work", &v)) != 0) {
+        /* units of work a frame (or the prewarm) may ask for: 5e9, 2000000000 */
+        char *end;
+        errno = 0;
+        double w = r > 0 ? strtod(v, &end) : 0;
+        if (r < 0 || end == v || *end || errno || !isfinite(w) || !(w >= 1) || v[0] == '+' || v[0] == ' ') {
+            if (r > 0)
+                fprintf(stderr, "iskra %s: --max-work: expected a number of units >= 1 such as 5e9, got \"%s\"\n",
+                        a->cmd, v);
+            return -1;
+        }
+        a->max_work = w;
+        return 1;
+    }
     const char *s = argv[*i];
     if (s[0] == '-' && s[1]) {
         fprintf(stderr, "iskra %s: unknown option '%s' (iskra %s --help)\n", a->cmd, s, a->cmd);
@@ -167,8 +181,10 @@ void scene_args_help(FILE *f)
                "                   the result is the same for every number)\n"
                "  --max-memory B   the most memory the scene may take with every pool full, in bytes\n"
                "                   or with K, M, G (default: the smaller of %juG and half the address\n"
-               "                   space); a scene that could need more is refused\n",
-            ISK_EFFECT_MAX_MEMORY_CEILING >> 30);
+               "                   space); a scene that could need more is refused\n"
+               "  --max-work N     the most work a frame or the prewarm may ask for, in particle-steps and\n"
+               "                   pixels drawn, counted at their worst (default %.0e); more is refused\n",
+            ISK_EFFECT_MAX_MEMORY_CEILING >> 30, ISK_EFFECT_DEFAULT_MAX_WORK);
 }
 
 /* What the scene shows besides its background: a drawing, a deflector
@@ -230,6 +246,8 @@ int scene_args_load(const scene_args *a, isk_effect_def *def, isk_effect **fx, c
     if (a->substeps)
         def->substeps = a->substeps;
     def->max_memory = a->max_memory;
+    def->max_work = a->max_work;
+    def->host_memory = a->host_memory;
     def->threads = a->threads;
     s = isk_effect_create(fx, def, &err);
     if (s != ISK_OK) {

@@ -20,6 +20,8 @@ typedef struct scene_args {
     double dt;            /* 0: the scene's */
     int substeps;         /* 0: the scene's */
     size_t max_memory;    /* 0: the library's default budget */
+    double max_work;      /* 0: the library's default budget */
+    size_t host_memory;   /* what the command itself needs beside the effect (its encoders) */
     int threads;          /* 0: ISKRA_THREADS, else every core */
 } scene_args;
 

@@ -1,0 +1,221 @@
+/* SPDX-License-Identifier: MIT */
+/* The budgets: no accepted definition may ask for unbounded memory or work.
+ * Memory (isk_effect_def.max_memory) counts the textures and the canvas
+ * besides the pools; one file named two ways is decoded once; the work of
+ * a frame and of a prewarm (isk_effect_def.max_work, `--max-work`) is
+ * estimated at create and refused above the budget, naming what needs it. */
+#include <criterion/criterion.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "iskra/effect.h"
+#include "iskra/png.h"
+#include "iskra/scene.h"
+#include "iskra/texture.h"
+#include "tool_cli.h"
+
+#define DIR "out/test_budgets"
+
+/* A definition of 64 emitters drawing one 256 x 256 image, each cut into
+ * another grid: 64 textures of the one image. */
+static void many_grids(isk_effect_def *d)
+{
+    isk_effect_def_init(d);
+    isk_canvas img;
+    cr_assert_eq(isk_canvas_init(&img, 256, 256), ISK_OK);
+    isk_canvas_fill(&img, isk_rgba(255, 255, 255, 255));
+    cr_assert_eq(isk_effect_def_add_texture(d, "spark.png", &img, NULL), ISK_OK);
+    isk_canvas_free(&img);
+    for (int i = 0; i < 64; i++) {
+        char name[16];
+        snprintf(name, sizeof name, "e%d", i);
+        isk_emitter_def *e = isk_effect_def_add_emitter(d, name);
+        e->born.source = ISK_SOURCE_PARTICLE;
+        e->born.capacity = 1;
+        snprintf(e->look.texture, sizeof e->look.texture, "spark.png");
+        e->look.texture_grid.x = 1 << (i % 8);
+        e->look.texture_grid.y = 1 << (i / 8);
+    }
+}
+
+Test(budgets, textures_and_canvas_count_against_max_memory)
+{
+    isk_effect_def d;
+    many_grids(&d);
+    /* the sum of its parts: tables, pools, the image twice, 64 textures, the canvas */
+    size_t textures = 0;
+    for (int i = 0; i < 64; i++)
+        textures += isk_texture_bytes(256, 256, 1 << (i % 8), 1 << (i / 8));
+    cr_assert_gt(textures, (size_t)64 * 256 * 256 * 4, "each grid a texture of its own: %zu", textures);
+    const size_t image = 2u * 256 * 256 * 4, canvas = 4u * 600 * 600;
+    size_t pools = 0;
+    for (int i = 0; i < 64; i++) {
+        isk_effect_def one;
+        isk_effect_def_init(&one);
+        isk_emitter_def *e = isk_effect_def_add_emitter(&one, "p");
+        e->born.source = ISK_SOURCE_PARTICLE;
+        e->born.capacity = 1;
+        pools += isk_effect_def_memory(&one) - (sizeof(isk_effect_def) + ((size_t)1 << 20)) - canvas;
+        isk_effect_def_free(&one);
+    }
+    const size_t need = isk_effect_def_memory(&d);
+    cr_assert_eq(need, sizeof(isk_effect_def) + ((size_t)1 << 20) + pools + image + textures + canvas, "%zu", need);
+    /* a budget below it is refused at create, naming the largest parts */
+    isk_effect *fx = NULL;
+    isk_error err = {0};
+    d.max_memory = need - 1;
+    cr_assert_eq(isk_effect_create(&fx, &d, &err), ISK_ERR_SIZE);
+    cr_assert_null(fx);
+    cr_assert_not_null(strstr(err.message, "the texture spark.png cut "), "%s", err.message);
+    cr_assert_not_null(strstr(err.message, "--max-memory"), "%s", err.message);
+    d.max_memory = need;
+    cr_assert_eq(isk_effect_create(&fx, &d, &err), ISK_OK, "%s", err.message);
+    isk_effect_destroy(fx);
+    /* the canvas is counted: a bigger one needs its bytes more */
+    d.width = 1200;
+    cr_assert_eq(isk_effect_def_memory(&d), need + 4u * 600 * 600);
+    /* a program's own needs (its encoders) too */
+    d.host_memory = 12345;
+    cr_assert_eq(isk_effect_def_memory(&d), need + 4u * 600 * 600 + 12345);
+    isk_effect_def_free(&d);
+}
+
+Test(budgets, texture_bytes_are_the_made_textures)
+{
+    const int grids[][4] = {{64, 64, 1, 1}, {256, 128, 4, 2}, {4096, 4096, 256, 256}, {30, 7, 3, 7}};
+    for (size_t i = 0; i < sizeof grids / sizeof grids[0]; i++) {
+        isk_canvas img;
+        cr_assert_eq(isk_canvas_init(&img, grids[i][0], grids[i][1]), ISK_OK);
+        isk_texture t;
+        cr_assert_eq(isk_texture_from_canvas(&t, &img, grids[i][2], grids[i][3]), ISK_OK);
+        /* the texels, their slack, and the struct */
+        cr_assert_gt(isk_texture_bytes(grids[i][0], grids[i][1], grids[i][2], grids[i][3]), t.bytes);
+        cr_assert_leq(isk_texture_bytes(grids[i][0], grids[i][1], grids[i][2], grids[i][3]),
+                      t.bytes + sizeof t + 64);
+        isk_texture_free(&t);
+        isk_canvas_free(&img);
+    }
+    cr_assert_eq(isk_texture_bytes(30, 7, 4, 7), 0u); /* 4 does not divide 30 */
+    cr_assert_eq(isk_texture_bytes(0, 7, 1, 1), 0u);
+    cr_assert_eq(isk_texture_bytes(4097, 7, 1, 1), 0u);
+}
+
+Test(budgets, one_file_named_two_ways_is_one_image)
+{
+    cli_fresh(DIR "/same");
+    isk_canvas img;
+    cr_assert_eq(isk_canvas_init(&img, 8, 8), ISK_OK);
+    isk_canvas_fill(&img, isk_rgba(255, 128, 0, 255));
+    cr_assert_eq(isk_png_write(&img, DIR "/same/x.png", NULL), ISK_OK);
+    isk_canvas_free(&img);
+    cli_write_file(DIR "/same/s.ini", "[emitter a]\nsource = particle\ntexture = ./x.png\n"
+                                      "[emitter b]\nsource = particle\ntexture = x.png\ntexture_grid = 2, 2\n"
+                                      "[emitter c]\nsource = particle\ntexture = ../same/x.png\n");
+    isk_effect_def d;
+    isk_error err = {0};
+    cr_assert_eq(isk_scene_load_file(&d, DIR "/same/s.ini", &err), ISK_OK, "%s", err.message);
+    cr_assert_eq(d.ntextures, 1, "one file, one decoded image: %d", d.ntextures);
+    cr_assert_str_eq(d.emitters[1].look.texture, d.emitters[0].look.texture);
+    cr_assert_str_eq(d.emitters[2].look.texture, d.emitters[0].look.texture);
+    /* so the effect makes two textures (two grids), not three */
+    isk_effect *fx;
+    cr_assert_eq(isk_effect_create(&fx, &d, &err), ISK_OK, "%s", err.message);
+    isk_effect_destroy(fx);
+    isk_effect_def_free(&d);
+}
+
+/* One emitter of `count` particles at rest, with trails `width` px wide. */
+static void wide_trails(isk_effect_def *d, size_t count, double width)
+{
+    isk_effect_def_init(d);
+    isk_emitter_def *e = isk_effect_def_add_emitter(d, "sparks");
+    e->born.source = ISK_SOURCE_EXPLOSION;
+    e->born.count = count;
+    e->look.trail = 64;
+    e->look.trail_width = width;
+}
+
+Test(budgets, a_frame_over_max_work_is_refused_at_create)
+{
+    isk_effect_def d;
+    wide_trails(&d, 100, 4096); /* 100 x 64 segments x the whole 600 x 600 canvas: 2.3e9 */
+    isk_effect *fx = NULL;
+    isk_error err = {0};
+    cr_assert_eq(isk_effect_create(&fx, &d, &err), ISK_ERR_SIZE);
+    cr_assert_null(fx);
+    cr_assert_not_null(strstr(err.message, "emitter 'sparks': trails of 4096 px x 64 points x 100 particles = 2.3e+09 "
+                                           "units of work a frame"),
+                       "%s", err.message);
+    cr_assert_not_null(strstr(err.message, "more than the budget of 1e+09 (--max-work, isk_effect_def.max_work)"),
+                       "%s", err.message);
+    /* a program may allow it */
+    d.max_work = 3e9;
+    cr_assert_eq(isk_effect_create(&fx, &d, &err), ISK_OK, "%s", err.message);
+    isk_effect_destroy(fx);
+    isk_effect_def_free(&d);
+    /* narrow trails of the same particles fit the default */
+    wide_trails(&d, 100, 2);
+    cr_assert_eq(isk_effect_create(&fx, &d, &err), ISK_OK, "%s", err.message);
+    isk_effect_destroy(fx);
+    isk_effect_def_free(&d);
+    /* huge discs of a stream with immortal particles: its capacity of them */
+    isk_effect_def_init(&d);
+    isk_emitter_def *e = isk_effect_def_add_emitter(&d, "blobs");
+    e->born.source = ISK_SOURCE_STREAM;
+    e->born.rate = 10;
+    e->look.draw = ISK_DRAW_DISC;
+    e->look.size = 1000;
+    cr_assert_eq(isk_effect_create(&fx, &d, &err), ISK_ERR_SIZE);
+    cr_assert_not_null(strstr(err.message, "emitter 'blobs': 1e+05 particles x 3.6e+05 pixels (its discs)"), "%s",
+                       err.message);
+    e->life.seconds = 2; /* then at most 21 of them at once */
+    cr_assert_eq(isk_effect_create(&fx, &d, &err), ISK_OK, "%s", err.message);
+    isk_effect_destroy(fx);
+    isk_effect_def_free(&d);
+}
+
+Test(budgets, a_prewarm_over_max_work_is_refused_at_create)
+{
+    isk_effect_def d;
+    isk_effect_def_init(&d);
+    isk_emitter_def *e = isk_effect_def_add_emitter(&d, "stream");
+    e->born.source = ISK_SOURCE_STREAM;
+    e->born.rate = 1e6;
+    e->life.seconds = 2;
+    e->born.prewarm = 1666; /* 99,960 frames of up to 100,000 particles (its capacity) */
+    e->look.draw = ISK_DRAW_NONE;
+    isk_effect *fx = NULL;
+    isk_error err = {0};
+    cr_assert_eq(isk_effect_create(&fx, &d, &err), ISK_ERR_SIZE);
+    cr_assert_null(fx);
+    cr_assert_not_null(strstr(err.message, "emitter 'stream': a prewarm of 99960 frames x 1e+05 particles x 1 substeps"),
+                       "%s", err.message);
+    cr_assert_not_null(strstr(err.message, "units of work to prewarm"), "%s", err.message);
+    e->born.prewarm = 1; /* 60 frames: within the default */
+    cr_assert_eq(isk_effect_create(&fx, &d, &err), ISK_OK, "%s", err.message);
+    isk_effect_destroy(fx);
+    isk_effect_def_free(&d);
+}
+
+Test(budgets, max_work_option)
+{
+    cli_fresh(DIR "/mw");
+    cli_write_file(DIR "/mw/wide.ini", "[emitter sparks]\nsource = explosion\ncount = 100\ntrail = 64\n"
+                                       "trail_width = 4096\n");
+    cr_assert_eq(cli_run(DIR "/mw", "describe " DIR "/mw/wide.ini"), 2);
+    char *e = cli_slurp(DIR "/mw/stderr.txt");
+    cr_assert_not_null(strstr(e, "wide.ini: emitter 'sparks': trails of 4096 px"), "%s", e);
+    free(e);
+    cr_assert_eq(cli_run(DIR "/mw", "describe " DIR "/mw/wide.ini --max-work 3e9"), 0);
+    cr_assert_eq(cli_run(DIR "/mw", "describe " DIR "/mw/wide.ini --max-work=2.2e9"), 2);
+    const char *bad[] = {"x", "0", "-1", "1e400", "nan", ""};
+    for (size_t i = 0; i < sizeof bad / sizeof bad[0]; i++) {
+        char a[200];
+        snprintf(a, sizeof a, "describe fig09_stationary_particle --max-work=%s", bad[i]);
+        cr_assert_eq(cli_run(DIR "/mw", a), 2, "%s", a);
+        e = cli_slurp(DIR "/mw/stderr.txt");
+        cr_assert_not_null(strstr(e, "--max-work"), "%s: %s", a, e);
+        free(e);
+    }
+}
