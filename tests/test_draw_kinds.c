@@ -46,10 +46,10 @@ static isk_status draw_pair(isk_effect *e, isk_canvas *c, fx_group *g, const fx_
     return ISK_OK;
 }
 
-static const fx_draw_kind pair_declared = {"pairs", draw_pair, NULL, 1.0, ISK__DOT_REACH + 1,
-                                           FX_MAY_BANDS | FX_MAY_SORT};
-static const fx_draw_kind pair_too_short = {"pairs", draw_pair, NULL, 1.0, ISK__DOT_REACH,
-                                            FX_MAY_BANDS | FX_MAY_SORT};
+static const fx_draw_kind pair_declared = {.name = "pairs", .draw = draw_pair, .cost = 1.0,
+                                           .reach = ISK__DOT_REACH + 1, .may = FX_MAY_BANDS | FX_MAY_SORT};
+static const fx_draw_kind pair_too_short = {.name = "pairs", .draw = draw_pair, .cost = 1.0,
+                                            .reach = ISK__DOT_REACH, .may = FX_MAY_BANDS | FX_MAY_SORT};
 static const fx_draw_kind pair_undeclared = {.name = "pairs", .draw = draw_pair};
 
 /* A falling layer that covers the canvas, drawn with `kind` on `threads`

@@ -208,11 +208,18 @@ static double fx_most_alive(const isk_effect_def *d, int i)
     return most < cap ? most : cap;
 }
 
+/* What one particle of g may touch by its kind's row; a row that does not
+ * say, the whole canvas. */
+static double kind_pixels(const isk_effect *e, const fx_group *g, const fx_draw_kind *k)
+{
+    return k->pixels ? k->pixels(e, g) : (double)e->def.width * (double)e->def.height;
+}
+
 /* The work of group g's draw: its particles times what its kind's row says
  * one may touch, times its units (a trail's segments). */
 static double draw_work(const isk_effect *e, const fx_group *g, const fx_draw_kind *k, double units, double alive)
 {
-    return alive * units * (k->cost + k->pixels(e, g));
+    return alive * units * (k->cost + kind_pixels(e, g, k));
 }
 
 typedef struct work_part {
@@ -257,7 +264,7 @@ isk_status isk__fx_work_fits(const isk_effect *e, isk_error *err)
                  g->substeps, isk__pipeline_cost(&g->pipeline, 0));
         consider(&top, step, what);
         snprintf(what, sizeof what, "emitter '%s': %.3g particles x %.3g pixels (its %s)", name, alive,
-                 k->pixels(e, g), k->name);
+                 kind_pixels(e, g, k), k->name);
         consider(&top, draw, what);
         snprintf(what, sizeof what, "emitter '%s': trails of %.4g px x %d points x %.3g particles", name,
                  g->def->look.trail_width, points, alive);

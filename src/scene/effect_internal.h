@@ -332,7 +332,7 @@ struct fx_draw_kind {
     double cost;                                                     /* a particle, in batched coverage dots */
     int reach;                                                       /* FX_MAY_SORT: rows beyond its own */
     unsigned may;                                                    /* FX_MAY_*: 0, drawn whole on the caller */
-    double (*pixels)(const isk_effect *e, const fx_group *g);        /* the most a particle's draw touches, a unit */
+    double (*pixels)(const isk_effect *e, const fx_group *g);        /* the most a particle's draw touches, a unit (NULL: the canvas) */
 };
 extern const fx_draw_kind isk__fx_kind_dots, isk__fx_kind_browser_dots, isk__fx_kind_pixels, isk__fx_kind_styled_dots,
     isk__fx_kind_styled_pixels, isk__fx_kind_discs, isk__fx_kind_sprites, isk__fx_kind_textures, isk__fx_kind_nothing;
