@@ -11,8 +11,9 @@
  *     emitter,index,x,y,vx,vy,mass,age,life
  *     sparks,0,0.123...,0.5...,...
  *
- * Files are written under a temporary name and renamed, so a reader never
- * sees half of one.  The hooks are three calls, so the rest of the render
+ * Files go through the tool's one output path (cleanup.h, iskra/outfile.h):
+ * a temporary renamed into place, so a reader never sees half of one, a
+ * device or FIFO written through, an existing file's mode kept.  The hooks are three calls, so the rest of the render
  * command does not need to know about any of this:
  *
  *     state_opts so = {0};
