@@ -159,3 +159,91 @@ Test(outputs, saves_keep_links_fifos_and_modes, .timeout = 120)
     cr_assert(starts_with_file(OUT "/save_kinds/play/mine.ini", "; an iskra scene"));
     cr_assert_eq(cli_count_files(OUT "/save_kinds/play", "\\.tmp\\."), 0);
 }
+
+/* Runs iskra ARGS in dir and expects exit 2 with `want` on stderr. */
+static void refused(const char *dir, const char *args, const char *want)
+{
+    cr_assert_eq(cli_run(dir, args), 2, "%s was not refused", args);
+    char p[256];
+    snprintf(p, sizeof p, "%s/stderr.txt", dir);
+    char *err = cli_slurp(p);
+    cr_assert_not_null(strstr(err, want), "%s: %s", args, err);
+    free(err);
+}
+
+static char *file_bytes(const char *path, size_t *n)
+{
+    FILE *f = fopen(path, "rb");
+    cr_assert_not_null(f, "%s", path);
+    fseek(f, 0, SEEK_END);
+    *n = (size_t)ftell(f);
+    rewind(f);
+    char *b = malloc(*n + 1);
+    cr_assert_eq(fread(b, 1, *n, f), *n);
+    fclose(f);
+    return b;
+}
+
+/* Before, only the scene itself was checked: --out, --strip and --state
+ * overwrote the scene's texture, and two outputs with one name lost one. */
+Test(outputs, no_output_replaces_an_input_or_another_output, .timeout = 120)
+{
+    const char *d = OUT "/clash";
+    cli_fresh(d);
+    cr_assert_eq(system("mkdir -p " OUT "/clash/textures " OUT "/clash/seq && cp scenes/preset_magic.ini " OUT
+                        "/clash/ && cp scenes/textures/sparkle.png " OUT "/clash/textures/ && cp "
+                        "scenes/textures/sparkle.png " OUT "/clash/seq/frame_000004.png"),
+                 0);
+    size_t n;
+    char *before = file_bytes(OUT "/clash/textures/sparkle.png", &n);
+    const char *scene = OUT "/clash/preset_magic.ini ";
+    const char *tex = OUT "/clash/textures/sparkle.png";
+    char args[1024];
+    const char *as_input[] = {"--out", "--strip", "--state"};
+    for (int k = 0; k < 3; k++) {
+        snprintf(args, sizeof args, "render %s--frames 6 %s%s %s", scene, k == 1 ? "--every 2 " : "", as_input[k], tex);
+        refused(d, args, "refusing to overwrite the input " OUT "/clash/textures/sparkle.png (a texture of the scene)");
+    }
+    /* another spelling of the texture, through a link to its directory */
+    cr_assert_eq(symlink("textures", OUT "/clash/t"), 0);
+    snprintf(args, sizeof args, "render %s--out " OUT "/clash/t/../textures/./sparkle.png", scene);
+    refused(d, args, "(a texture of the scene)");
+    snprintf(args, sizeof args, "render %s--out " OUT "/clash/t/sparkle.png", scene);
+    refused(d, args, "(a texture of the scene)");
+    /* a texture that a sequence would overwrite */
+    cli_write_file(OUT "/clash/seq.ini", "[scene]\nframes = 8\n[emitter e]\nsource = particle\nposition = 0, 0\n"
+                                         "texture = seq/frame_000004.png\n");
+    refused(d, "render " OUT "/clash/seq.ini --every 2 --out-dir " OUT "/clash/seq",
+            "with number 4 of --out-dir " OUT "/clash/seq");
+    cr_assert_eq(cli_run(d, "render " OUT "/clash/seq.ini --every 3 --out-dir " OUT "/clash/seq2"), 0, "%s",
+                 cli_slurp(OUT "/clash/stderr.txt"));
+    unsigned char *after = (unsigned char *)file_bytes(tex, &n);
+    cr_assert(!memcmp(before, after, n), "the texture was changed");
+    free(after);
+    free(before);
+
+    /* two outputs with one name */
+    refused(d, "render fig19_coulomb --frames 4 --out " OUT "/clash/a.gif --state " OUT "/clash/a.gif",
+            "--out " OUT "/clash/a.gif and --state " OUT "/clash/a.gif are the same file");
+    refused(d, "render fig19_coulomb --frames 4 --every 2 --out " OUT "/clash/p.png --strip " OUT "/clash/p.png",
+            "are the same file: one output would replace the other");
+    refused(d, "render fig19_coulomb --frames 4 --out " OUT "/clash/new/../p.png --state ./" OUT "/clash/p.png",
+            "are the same file");
+    refused(d, "render fig19_coulomb --frames 4 --every 2 --out-dir " OUT "/clash/o --out " OUT "/clash/o/frame_000002.png",
+            "is number 2 of --out-dir");
+    refused(d, "render fig19_coulomb --frames 4 --out-dir " OUT "/clash/o --state-every 2 --state " OUT
+               "/clash/o/state_000004.csv",
+            "is number 4 of --state-every");
+    cr_assert(!cli_exists(OUT "/clash/a.gif") && !cli_exists(OUT "/clash/p.png") && !cli_exists(OUT "/clash/o"),
+              "a refused command wrote something");
+    /* names that only look alike are fine, and so is /dev/null twice */
+    cr_assert_eq(cli_run(d, "render fig19_coulomb --frames 4 --every 2 --out-dir " OUT "/clash/o --out " OUT
+                            "/clash/o/frame_000003.png --state " OUT "/clash/o/state_000002.csv"),
+                 0, "%s", cli_slurp(OUT "/clash/stderr.txt"));
+    cr_assert_eq(cli_run(d, "render fig19_coulomb --frames 4 --out /dev/null --state /dev/null"), 0);
+    /* the simulator's --save */
+    snprintf(args, sizeof args, "play --fixed-clock %s--frames 2 --save %s", scene, tex);
+    refused(d, args, "(a texture of the scene) with the output");
+    snprintf(args, sizeof args, "play --fixed-clock %s--frames 2 --save " OUT "/clash/./preset_magic.ini", scene);
+    refused(d, args, "(the scene)");
+}

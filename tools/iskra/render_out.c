@@ -11,7 +11,7 @@
 
 void render_out_frame_path(const char *dir, long f, char *path, size_t n)
 {
-    snprintf(path, n, "%s/frame_%06ld.png", dir, f);
+    snprintf(path, n, "%s/" RENDER_FRAME_PREFIX "%06ld" RENDER_FRAME_SUFFIX, dir, f);
 }
 
 int render_out_begin(render_out *o, int width, int height, double fps)

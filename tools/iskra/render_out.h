@@ -57,7 +57,10 @@ int render_out_end(render_out *o, const isk_canvas *last);
 /* Drops an unfinished animation (its temporary is removed). */
 void render_out_abort(render_out *o);
 
-/* Path of sequence frame f in dir (the one naming rule). */
+/* Path of sequence frame f in dir (the one naming rule):
+ * DIR/RENDER_FRAME_PREFIX%06ldRENDER_FRAME_SUFFIX. */
+#define RENDER_FRAME_PREFIX "frame_"
+#define RENDER_FRAME_SUFFIX ".png"
 void render_out_frame_path(const char *dir, long f, char *path, size_t n);
 
 #endif

@@ -75,7 +75,7 @@ int state_after_frame(const state_opts *o, const isk_effect *fx, const char *out
     if (!o->every || !out_dir || f % o->every != 0)
         return 0;
     char path[4200];
-    snprintf(path, sizeof path, "%s/state_%06ld.csv", out_dir, f);
+    snprintf(path, sizeof path, "%s/" STATE_PREFIX "%06ld" STATE_SUFFIX, out_dir, f);
     return state_csv_write(fx, path);
 }
 

@@ -42,7 +42,10 @@ int state_args_check(const state_opts *o, const char *out_dir);
 /* The CSV of the effect's live particles now; 0 or 1 after printing why. */
 int state_csv_write(const isk_effect *fx, const char *path);
 
-/* After frame f: DIR/state_NNNNNN.csv when f is a multiple of K. 0 or 1. */
+/* After frame f: DIR/STATE_PREFIX%06ldSTATE_SUFFIX when f is a multiple
+ * of K. 0 or 1. */
+#define STATE_PREFIX "state_"
+#define STATE_SUFFIX ".csv"
 int state_after_frame(const state_opts *o, const isk_effect *fx, const char *out_dir, long f);
 
 /* At the end of the render: --state FILE, then the report of removed
