@@ -247,3 +247,158 @@ Test(outputs, no_output_replaces_an_input_or_another_output, .timeout = 120)
     snprintf(args, sizeof args, "play --fixed-clock %s--frames 2 --save " OUT "/clash/./preset_magic.ini", scene);
     refused(d, args, "(the scene)");
 }
+
+/* Starts `iskra ARGS...` (no shell) with stdout and stderr in dir, under
+ * a file size limit of `fsize` bytes (0: none). */
+static pid_t start(const char *dir, rlim_t fsize, const char *const *args)
+{
+    char tool[512], errp[512], outp[512];
+    snprintf(tool, sizeof tool, "%s/bin/iskra", refimg_build_dir());
+    snprintf(errp, sizeof errp, "%s/stderr.txt", dir);
+    snprintf(outp, sizeof outp, "%s/stdout.txt", dir);
+    pid_t pid = fork();
+    cr_assert_neq(pid, -1);
+    if (pid == 0) {
+        int e = open(errp, O_WRONLY | O_CREAT | O_TRUNC, 0644), o = open(outp, O_WRONLY | O_CREAT | O_TRUNC, 0644);
+        if (e < 0 || o < 0 || dup2(e, 2) < 0 || dup2(o, 1) < 0)
+            _exit(99);
+        for (int s = 1; s < 32; s++)
+            signal(s, SIG_DFL);
+        struct rlimit rl = {fsize, fsize};
+        if (fsize && setrlimit(RLIMIT_FSIZE, &rl) != 0)
+            _exit(97);
+        char *argv[32];
+        int n = 0;
+        argv[n++] = tool;
+        for (; args[n - 1] && n < 31; n++)
+            argv[n] = (char *)args[n - 1];
+        argv[n] = NULL;
+        execv(tool, argv);
+        _exit(98);
+    }
+    return pid;
+}
+
+static int exit_status(pid_t pid)
+{
+    int st;
+    cr_assert_eq(waitpid(pid, &st, 0), pid);
+    cr_assert(WIFEXITED(st), "killed by signal %d instead of exiting", WIFSIGNALED(st) ? WTERMSIG(st) : 0);
+    return WEXITSTATUS(st);
+}
+
+static void nap(void)
+{
+    struct timespec ts = {0, 10 * 1000 * 1000};
+    nanosleep(&ts, NULL);
+}
+
+/* --state-every had its own temporary, unknown to the signal handler, and
+ * the message counted only frames ("nothing was written" without
+ * --out-dir frames).  Signals land at different points of the writes. */
+Test(outputs, a_signal_during_state_files_leaves_none_half_written, .timeout = 240)
+{
+    const int sigs[] = {SIGINT, SIGTERM, SIGINT};
+    for (int k = 0; k < 3; k++) {
+        const char *d = OUT "/sig_state";
+        cli_fresh(d);
+        const char *args[] = {"render", "fire_campfire", "--frames", "100000", "--every", "1000", "--out-dir",
+                              OUT "/sig_state/seq", "--state-every", "1", NULL};
+        pid_t pid = start(d, 0, args);
+        for (int i = 0; i < 3000 && cli_count_files(OUT "/sig_state/seq", "^state_.*csv$") < 3 + 5 * k; i++)
+            nap();
+        cr_assert_eq(kill(pid, sigs[k]), 0);
+        cr_assert_eq(exit_status(pid), 128 + sigs[k]);
+        cr_assert_eq(cli_count_files(OUT "/sig_state/seq", "\\.tmp\\."), 0, "a temporary was left behind");
+        const int n = cli_count_files(OUT "/sig_state/seq", "^state_.*csv$");
+        char *err = cli_slurp(OUT "/sig_state/stderr.txt");
+        char want[256];
+        snprintf(want, sizeof want,
+                 "; " OUT "/sig_state/seq: frame 0 was written (1 file); " OUT "/sig_state/seq: states 0 to %d were "
+                 "written (%d files); rerun with --resume to continue\n",
+                 n - 1, n);
+        cr_assert_not_null(strstr(err, want), "%s\nwanted: %s", err, want);
+        free(err);
+    }
+}
+
+/* Past `ulimit -f` the tool was killed by SIGXFSZ: no message, and the
+ * temporary stayed.  Now the write fails like a full disk. */
+Test(outputs, a_file_size_limit_is_reported_and_cleaned_up, .timeout = 120)
+{
+    const char *d = OUT "/fsize";
+    const char *outs[][2] = {{"--out", OUT "/fsize/a.gif"}, {"--state", OUT "/fsize/s.csv"},
+                             {"--out", OUT "/fsize/a.png"}};
+    for (int k = 0; k < 3; k++) {
+        cli_fresh(d);
+        const char *args[] = {"render", "fire_campfire", "--frames", "40", outs[k][0], outs[k][1], NULL};
+        pid_t pid = start(d, 2048, args);
+        cr_assert_eq(exit_status(pid), 1, "%s", outs[k][1]);
+        char *err = cli_slurp(OUT "/fsize/stderr.txt");
+        cr_assert_not_null(strstr(err, outs[k][1]), "%s", err);
+        cr_assert_not_null(strstr(err, "File too large"), "%s", err);
+        free(err);
+        cr_assert_not(cli_exists(outs[k][1]), "a part of %s was left", outs[k][1]);
+        cr_assert_eq(cli_count_files(d, "\\.tmp\\."), 0, "a temporary was left behind");
+    }
+}
+
+/* --resume checked a frame's PNG header only: a frame cut short after
+ * its header was kept. */
+Test(outputs, resume_writes_a_truncated_frame_again, .timeout = 120)
+{
+    const char *d = OUT "/resume";
+    cli_fresh(d);
+    cr_assert_eq(cli_run(d, "render fig16_regular --frames 6 --every 2 --out-dir " OUT "/resume/seq"), 0);
+    cr_assert_eq(system("cp -r " OUT "/resume/seq " OUT "/resume/whole"), 0);
+    const char *cut = OUT "/resume/seq/frame_000004.png";
+    struct stat st;
+    cr_assert_eq(stat(cut, &st), 0);
+    cr_assert_eq(truncate(cut, st.st_size / 2), 0);
+    isk_png_info info;
+    cr_assert_eq(isk_png_read_info(cut, &info, NULL), ISK_OK, "the cut frame must keep its header for this test");
+    cr_assert_eq(cli_run(d, "render fig16_regular --frames 6 --every 2 --out-dir " OUT "/resume/seq --resume"), 0);
+    char *err = cli_slurp(OUT "/resume/stderr.txt");
+    cr_assert_str_eq(err, "iskra render: " OUT "/resume/seq: 1 frames written, 3 already there kept\n");
+    free(err);
+    isk_canvas a, b;
+    cr_assert_eq(isk_png_read(&a, cut, NULL), ISK_OK);
+    cr_assert_eq(isk_png_read(&b, OUT "/resume/whole/frame_000004.png", NULL), ISK_OK);
+    cr_assert(isk_canvas_equal(&a, &b));
+    isk_canvas_free(&a);
+    isk_canvas_free(&b);
+}
+
+/* A run killed by SIGKILL leaves its temporaries; the next run writing
+ * the same outputs removes them, and only them: not one a running writer
+ * holds, not another file's. */
+Test(outputs, a_later_run_removes_its_old_temporaries, .timeout = 120)
+{
+    const char *d = OUT "/stale";
+    cli_fresh(d);
+    cr_assert_eq(system("mkdir -p " OUT "/stale/seq"), 0);
+    const char *stale[] = {OUT "/stale/x.png.tmp.abcdef", OUT "/stale/seq/frame_000002.png.tmp.ghijkl",
+                           OUT "/stale/seq/state_000000.csv.tmp.mnopqr"};
+    const char *kept[] = {OUT "/stale/other.png.tmp.abcdef", OUT "/stale/x.png.tmp.toolong",
+                          OUT "/stale/seq/frame_x.png.tmp.abcdef", OUT "/stale/seq/notes.txt"};
+    for (int i = 0; i < 3; i++)
+        cli_write_file(stale[i], "half");
+    for (int i = 0; i < 4; i++)
+        cli_write_file(kept[i], "other");
+    isk_outfile live;
+    cr_assert_eq(isk_outfile_open(&live, OUT "/stale/x.png", NULL), ISK_OK);
+    cr_assert_eq(isk_outfile_remove_stale(live.temp), 0, "a live temporary was taken for a stale one");
+    cr_assert_eq(cli_run(d, "render fig16_regular --frames 4 --every 2 --out " OUT "/stale/x.png --out-dir " OUT
+                            "/stale/seq --state-every 2"),
+                 0);
+    char *err = cli_slurp(OUT "/stale/stderr.txt");
+    cr_assert_str_eq(err, "iskra render: removed 3 temporary files that an interrupted run left\n");
+    free(err);
+    for (int i = 0; i < 3; i++)
+        cr_assert_not(cli_exists(stale[i]), "%s is still there", stale[i]);
+    for (int i = 0; i < 4; i++)
+        cr_assert(cli_exists(kept[i]), "%s was removed", kept[i]);
+    cr_assert(cli_exists(live.temp), "the running writer's temporary was removed");
+    isk_outfile_abort(&live);
+    cr_assert_eq(cli_count_files(d, "\\.tmp\\."), 2);
+}

@@ -64,7 +64,9 @@ static void help(FILE *f)
     scene_args_help(f);
     fprintf(f, "  A progress bar appears on stderr when it is a terminal and the render\n"
                "  takes a while.  SIGINT, SIGTERM, SIGHUP or SIGPIPE removes the temporary\n"
-               "  files, says which frames were written and exits with 128 + the signal.\n"
+               "  files, says which frames and states were written (or streamed) and exits\n"
+               "  with 128 + the signal; a file size limit (ulimit -f) is a failed write.\n"
+               "  A later run removes the temporaries that a killed one left.\n"
                "  exit status: 0 success, 1 cannot write, 2 usage or scene error\n");
 }
 
@@ -171,7 +173,8 @@ static int check(render_args *r)
 
 /* Every output against the others, and against every input: the scene
  * file and the textures it names (as the loader resolved them).  0 or 2
- * after printing which. */
+ * after printing which.  Then the temporaries a killed run left beside
+ * the outputs are removed. */
 static int check_files(const render_args *r, const isk_effect_def *def, long frames)
 {
     outpath_plan plan = {.cmd = "render"};
@@ -185,6 +188,7 @@ static int check_files(const render_args *r, const isk_effect_def *def, long fra
     for (int i = 0; i < def->ntextures; i++)
         if (outpath_refuse(&plan, def->textures[i].name, "a texture of the scene"))
             return 2;
+    outpath_remove_stale(&plan);
     return 0;
 }
 

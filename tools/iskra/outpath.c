@@ -4,6 +4,7 @@
 #define _DEFAULT_SOURCE /* realpath, strndup */
 #include "outpath.h"
 
+#include <dirent.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -176,4 +177,49 @@ int outpath_refuse_input(const char *cmd, const char *out, const char *in)
         return 0;
     fprintf(stderr, "iskra %s: refusing to overwrite the input %s with the output %s\n", cmd, in, out);
     return 1;
+}
+
+/* Removes the stale temporaries in dir named START DIGITS END.tmp.XXXXXX
+ * (no digits for a single output: START is its name, END empty);
+ * iskra/outfile.h decides which are stale.  How many were removed. */
+static long remove_stale_in(const char *dir, const char *start, const char *end)
+{
+    DIR *d = opendir(dir);
+    if (!d)
+        return 0;
+    long removed = 0;
+    const size_t ns = strlen(start), ne = strlen(end);
+    const struct dirent *e;
+    while ((e = readdir(d)) != NULL) {
+        const char *mark = strstr(e->d_name, ISK_OUTFILE_TEMP_MARK);
+        if (!mark || strncmp(e->d_name, start, ns) != 0 || (size_t)(mark - e->d_name) < ns + ne ||
+            strncmp(mark - ne, end, ne) != 0 || strspn(e->d_name + ns, "0123456789") < (size_t)(mark - ne - e->d_name) - ns)
+            continue;
+        size_t n = strlen(dir) + 1 + strlen(e->d_name) + 1;
+        char *path = malloc(n);
+        if (path) {
+            snprintf(path, n, "%s/%s", dir, e->d_name);
+            removed += isk_outfile_remove_stale(path);
+            free(path);
+        }
+    }
+    closedir(d);
+    return removed;
+}
+
+void outpath_remove_stale(const outpath_plan *p)
+{
+    long removed = 0;
+    for (int i = 0; i < p->nout; i++) {
+        const char *slash = strrchr(p->out[i], '/');
+        char *dir = slash ? strndup(p->out[i], slash == p->out[i] ? 1 : (size_t)(slash - p->out[i])) : strdup(".");
+        if (dir)
+            removed += remove_stale_in(dir, slash ? slash + 1 : p->out[i], "");
+        free(dir);
+    }
+    for (int k = 0; k < p->nseries; k++)
+        removed += remove_stale_in(p->series[k].dir, p->series[k].prefix, p->series[k].suffix);
+    if (removed > 0)
+        fprintf(stderr, "iskra %s: removed %ld temporary file%s that an interrupted run left\n", p->cmd, removed,
+                removed == 1 ? "" : "s");
 }

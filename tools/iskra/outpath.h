@@ -12,6 +12,7 @@
  *     outpath_series(&plan, dir, "frame_", ".png", every, last, "--out-dir");
  *     if (outpath_clash(&plan)) return 2;                   // outputs among themselves
  *     if (outpath_refuse(&plan, scene, "the scene")) return 2;  // each input
+ *     outpath_remove_stale(&plan);            // what a killed run left
  *     ...everything validated...
  *     if (outpath_make_parents("render", out)) return 1;
  *
@@ -60,6 +61,13 @@ int outpath_clash(const outpath_plan *p);
  * the file `in`.  An input that is not a file (NULL, a built-in scene's
  * name) is never refused. */
 int outpath_refuse(const outpath_plan *p, const char *in, const char *what);
+
+/* Removes the temporaries that an earlier run, killed before it could
+ * (SIGKILL, a crash, a power cut), left beside the plan's outputs:
+ * OUT.tmp.XXXXXX and, in a series' directory, PREFIX*SUFFIX.tmp.XXXXXX,
+ * each only when no running writer holds it (isk_outfile_remove_stale).
+ * Says on stderr how many it removed, if any. */
+void outpath_remove_stale(const outpath_plan *p);
 
 /* The same for a single output: nonzero when out is the file in. */
 int outpath_refuse_input(const char *cmd, const char *out, const char *in);

@@ -37,6 +37,9 @@ typedef struct render_out {
     /* the animation stream */
     isk_outfile anim_file;
     int anim_stdout;
+    int streaming;            /* stdout, a pipe, FIFO or device: nothing to take back */
+    FILE *stream;             /* what the animation is written to */
+    long anim_first, anim_count;
     isk_anim *anim;
     int width, height;
 } render_out;

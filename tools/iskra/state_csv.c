@@ -70,13 +70,24 @@ int state_csv_write(const isk_effect *fx, const char *path)
     return cleanup_outfile_commit(&o);
 }
 
-int state_after_frame(const state_opts *o, const isk_effect *fx, const char *out_dir, long f)
+int state_after_frame(state_opts *o, const isk_effect *fx, const char *out_dir, long f)
 {
     if (!o->every || !out_dir || f % o->every != 0)
         return 0;
     char path[4200];
     snprintf(path, sizeof path, "%s/" STATE_PREFIX "%06ld" STATE_SUFFIX, out_dir, f);
-    return state_csv_write(fx, path);
+    /* written and counted together: a file the message after a signal
+     * does not count is never in place */
+    sigset_t held;
+    cleanup_hold(&held);
+    int failed = state_csv_write(fx, path);
+    if (!failed) {
+        if (o->count++ == 0)
+            o->first = f;
+        cleanup_note(CLEANUP_STATES, out_dir, o->first, f, o->every, o->count);
+    }
+    cleanup_release(&held);
+    return failed;
 }
 
 size_t state_report_removed(const isk_effect *fx)

@@ -30,6 +30,7 @@
 typedef struct state_opts {
     const char *path; /* --state FILE.csv, or NULL */
     long every;       /* --state-every K, 0: none */
+    long first, count; /* --state-every files written so far */
 } state_opts;
 
 /* --state / --state-every at argv[*i]: 1 taken, 0 not ours, -1 error
@@ -46,7 +47,7 @@ int state_csv_write(const isk_effect *fx, const char *path);
  * of K. 0 or 1. */
 #define STATE_PREFIX "state_"
 #define STATE_SUFFIX ".csv"
-int state_after_frame(const state_opts *o, const isk_effect *fx, const char *out_dir, long f);
+int state_after_frame(state_opts *o, const isk_effect *fx, const char *out_dir, long f);
 
 /* At the end of the render: --state FILE, then the report of removed
  * particles on stderr.  0 or 1. */
