@@ -7,7 +7,9 @@
  * per function, so a crash names it; the suite also runs under ASan+UBSan
  * (make test SANITIZE=1, SANITIZE=clang).
  *
- * (src/sim and src/scene have their own tests.) */
+ * Also the sim's force and explosion helpers and the widget layer's
+ * layout arithmetic, which a pointer event at extreme coordinates reaches
+ * (the rest of src/sim and src/scene have their own tests). */
 #include <criterion/criterion.h>
 #include <limits.h>
 #include <math.h>
@@ -18,15 +20,19 @@
 #include "iskra/canvas.h"
 #include "iskra/chart.h"
 #include "iskra/draw.h"
+#include "iskra/explode.h"
+#include "iskra/forces.h"
 #include "iskra/outfile.h"
 #include "iskra/gradient.h"
 #include "iskra/png.h"
 #include "iskra/rng.h"
 #include "iskra/sinlut.h"
 #include "iskra/sprite.h"
+#include "iskra/tasks.h"
 #include "iskra/status.h"
 #include "iskra/text.h"
 #include "iskra/timestep.h"
+#include "iskra/ui.h"
 #include "iskra/view.h"
 
 /* Opaque to the optimiser, so passing them is not a compile-time warning. */
@@ -941,3 +947,127 @@ Test(hostile, isk_window_run)
     isk_canvas_free(&c);
 }
 Test(hostile, isk_window_close) { isk_window_close(NUL); }
+
+/* ---- sim: forces and explosions ----------------------------------------------- */
+
+static double arr[4][3];
+
+Test(hostile, isk_force_potential)
+{
+    isk_potential pot;
+    isk_potential_init(&pot, 1.0, (isk_vec2){0, 0}, -1.0);
+    isk_force_potential(NUL, 3, arr[0], arr[1], arr[2], arr[3], ISK_FIDELITY_SOUND);
+    isk_force_potential(&pot, 3, NUL, arr[1], arr[2], arr[3], ISK_FIDELITY_SOUND);
+    isk_force_potential(&pot, 3, arr[0], arr[1], NUL, NUL, ISK_FIDELITY_SOUND);
+}
+
+Test(hostile, isk_forces_eval)
+{
+    isk_forces f;
+    memset(&f, 0, sizeof f);
+    double x[3] = {0}, y[3] = {0}, vx[3] = {0}, vy[3] = {0}, m[3] = {1, 1, 1}, fx[3], fy[3];
+    isk_forces_eval(NUL, 3, x, y, vx, vy, m, fx, fy, NUL, NUL, 1);
+    isk_forces_eval(&f, 3, NUL, NUL, NUL, NUL, NUL, NUL, NUL, NUL, NUL, 1);
+    isk_forces_eval_step(NUL, 3, x, y, vx, vy, m, fx, fy, NUL, NUL, 1, 0.1);
+    isk_force_gravity(3, NUL, 9.81, fy);
+    isk_force_gravity(3, m, 9.81, NUL);
+    isk_force_drag(3, NUL, vy, 0.5, fx, fy);
+    isk_force_drag(3, vx, vy, 0.5, NUL, fy);
+    isk_force_accel(3, NUL, 1, 1, fx, fy);
+    isk_force_accel(3, m, 1, 1, fx, NUL);
+}
+
+/* The harmonic sum was added term by term: SIZE_MAX looped 10^19 times. */
+Test(hostile, isk_multi_coulomb_release_time, .timeout = 5)
+{
+    cr_assert_eq(isk_multi_coulomb_release_time(0), 0.0);
+    cr_assert_eq(isk_multi_coulomb_release_time(1), 0.0);
+    cr_assert_eq(isk_multi_coulomb_release_time(3), 0.010 / 1.0 + 0.010 / 2.0, "small batches are the exact sum");
+    const double big = isk_multi_coulomb_release_time(SIZE_MAX);
+    cr_assert(isfinite(big) && big > 0.4 && big < 0.5, "%.17g", big); /* 0.01 (ln 2^64 + gamma) = 0.4494 */
+    /* where the sum gives way to its expansion, the two agree (to the
+     * rounding a million-term sum gathers, about 1e-12) */
+    const size_t n = (size_t)1 << 20;
+    double step = isk_multi_coulomb_release_time(n + 1) - isk_multi_coulomb_release_time(n);
+    cr_assert(fabs(step - 0.010 / (double)n) < 1e-11, "a jump of %.3g where the terms are %.3g", step,
+              0.010 / (double)n);
+}
+
+/* ---- ui: layout arithmetic saturates ---------------------------------------------- */
+
+Test(hostile, isk_ui_cut)
+{
+    isk_ui_rect z = isk_ui_cut_top(NUL, 5);
+    cr_assert(z.x == 0 && z.y == 0 && z.w == 0 && z.h == 0);
+    z = isk_ui_cut_bottom(NUL, 5);
+    cr_assert(z.w == 0 && z.h == 0);
+    z = isk_ui_cut_left(NUL, 5);
+    cr_assert(z.w == 0 && z.h == 0);
+    z = isk_ui_cut_right(NUL, 5);
+    cr_assert(z.w == 0 && z.h == 0);
+    isk_ui_rect r = {INT_MAX - 3, INT_MAX - 3, 10, 10};
+    isk_ui_rect c = isk_ui_cut_top(&r, 8);
+    cr_assert(c.h == 8 && r.y == INT_MAX && r.h == 2, "y %d h %d", r.y, r.h);
+    c = isk_ui_cut_right(&r, INT_MAX);
+    cr_assert(c.w == 10 && r.w == 0);
+}
+
+Test(hostile, isk_ui_contains)
+{
+    cr_assert_not(isk_ui_contains((isk_ui_rect){INT_MIN, INT_MIN, 10, 10}, INT_MAX, INT_MAX),
+                  "x - r.x overflowed and wrapped into the rectangle");
+    cr_assert(isk_ui_contains((isk_ui_rect){INT_MAX - 5, 0, 10, 10}, INT_MAX, 3));
+    cr_assert_not(isk_ui_contains((isk_ui_rect){0, 0, -5, 10}, 0, 0));
+}
+
+Test(hostile, isk_ui_inset)
+{
+    isk_ui_rect o = isk_ui_inset((isk_ui_rect){0, 0, 10, 10}, INT_MAX);
+    cr_assert(o.w == 0 && o.h == 0 && o.x == 5 && o.y == 5, "%d %d %d %d", o.x, o.y, o.w, o.h);
+    o = isk_ui_inset((isk_ui_rect){INT_MAX - 1, INT_MAX - 1, 4, 4}, INT_MIN);
+    cr_assert(o.w == INT_MAX && o.x == INT_MIN + INT_MAX - 1, "%d %d", o.x, o.w);
+    o = isk_ui_inset((isk_ui_rect){10, 10, 20, 20}, 3);
+    cr_assert(o.x == 13 && o.y == 13 && o.w == 14 && o.h == 14);
+}
+
+Test(hostile, isk_ui_px)
+{
+    isk_ui ui;
+    isk_ui_init(&ui, 3);
+    cr_assert_eq(isk_ui_px(&ui, INT_MAX), INT_MAX);
+    cr_assert_eq(isk_ui_px(&ui, INT_MIN), INT_MIN);
+    cr_assert_eq(isk_ui_px(&ui, 7), 21);
+    cr_assert_eq(isk_ui_px(NUL, 7), 7);
+}
+
+Test(hostile, isk_ui_cell)
+{
+    isk_ui_rect c = isk_ui_cell((isk_ui_rect){INT_MAX - 5, 0, 10, 10}, 2, 1, 1, 0, INT_MAX);
+    cr_assert(c.x == INT_MAX && c.w >= 0, "%d %d", c.x, c.w);
+    c = isk_ui_cell((isk_ui_rect){0, 0, 10, 10}, 2, 2, 1, 1, INT_MIN);
+    cr_assert(c.w >= 0 && c.h >= 0);
+}
+
+/* It searched every scale up to max_scale: INT_MAX took seconds. */
+Test(hostile, isk_ui_fit_scale, .timeout = 1)
+{
+    cr_assert_eq(isk_ui_fit_scale(INT_MAX, INT_MAX, 1, 1, INT_MAX), INT_MAX);
+    cr_assert_eq(isk_ui_fit_scale(INT_MAX, INT_MAX, INT_MAX, INT_MAX, INT_MAX), 1);
+    cr_assert_eq(isk_ui_fit_scale(100, 50, 10, 10, 8), 5);
+    cr_assert_eq(isk_ui_fit_scale(5, 5, 10, 10, 8), 1);
+    cr_assert_eq(isk_ui_fit_scale(-5, 5, 10, 10, 8), 1);
+    cr_assert_eq(isk_ui_fit_scale(100, 100, 0, 0, 3), 3);
+    cr_assert_eq(isk_ui_fit_scale(100, 100, 10, 10, INT_MIN), 1);
+}
+
+/* ---- ISKRA_THREADS ----------------------------------------------------------------- */
+
+Test(hostile, isk_threads_from_text)
+{
+    const char *bad[] = {NULL, "", "0", "-1", "257", "99999999999999999999", "8 ", " 8", "1e2", "x", "4x"};
+    for (size_t i = 0; i < sizeof bad / sizeof bad[0]; i++)
+        cr_assert_eq(isk_threads_from_text(bad[i]), 0, "\"%s\"", bad[i] ? bad[i] : "(null)");
+    cr_assert_eq(isk_threads_from_text("1"), 1);
+    cr_assert_eq(isk_threads_from_text("008"), 8);
+    cr_assert_eq(isk_threads_from_text("256"), ISK_TASKS_MAX_WORKERS);
+}

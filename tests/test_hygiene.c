@@ -222,3 +222,31 @@ Test(hygiene, every_global_symbol_is_isk_or_isk__)
         cr_log_error("a global symbol outside the scheme: %s (isk_ public, isk__ internal, or static)", others[i]);
     cr_assert_eq(n, 0, "%d global symbols outside the scheme (above)", n);
 }
+
+/* One output path: every file the library and the tool write is replaced
+ * through iskra/outfile.h (src/io/outfile.c), which keeps links, devices,
+ * FIFOs and modes as they are.  No other object file makes a temporary
+ * or renames one into place (a second temp-and-rename is how --state
+ * once replaced /dev/null as root and a save turned 0600 into 0644). */
+Test(hygiene, only_outfile_makes_temporaries_and_renames)
+{
+    char cmd[1024];
+    snprintf(cmd, sizeof cmd,
+             "nm -A -u %s/lib/libiskra.a %s/lib/libiskra-sdl.a %s/obj/tools/iskra/*.o 2>/dev/null | awk '$NF ~ "
+             "/^(rename|renameat|renameat2|mkstemp|mkstemp64|mkstemps|mkostemp|mkostemps|tmpfile|tmpnam|mktemp)"
+             "(@.*)?$/ && $1 !~ /outfile\\.o:$/ {print $1 $NF}' | sort -u",
+             refimg_build_dir(), refimg_build_dir(), refimg_build_dir());
+    static char others[MOST_NAMES][96];
+    const int n = read_names(cmd, 0, others, MOST_NAMES);
+    for (int i = 0; i < n; i++)
+        cr_log_error("a file written around iskra/outfile.h: %s", others[i]);
+    cr_assert_eq(n, 0, "%d object files make their own temporaries (above)", n);
+    /* the check itself finds the one that does */
+    snprintf(cmd, sizeof cmd, "nm -A -u %s/lib/libiskra.a | grep -c 'outfile.o: *U rename'", refimg_build_dir());
+    FILE *p = popen(cmd, "r");
+    cr_assert_not_null(p);
+    int found = 0;
+    cr_assert_eq(fscanf(p, "%d", &found), 1);
+    pclose(p);
+    cr_assert_eq(found, 1, "nm does not show outfile.o calling rename: the check above sees nothing");
+}

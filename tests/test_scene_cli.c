@@ -301,3 +301,37 @@ int main(int argc, char *argv[])
     criterion_finalize(tests);
     return result;
 }
+
+/* (its own directory: this suite's setup empties OUT before every test) */
+#define TOUT "out/test_scene_cli_threads"
+
+/* A bad ISKRA_THREADS was ignored without a word (the library has no one
+ * to tell): the tool says so, and renders on every core all the same. */
+Test(scene_cli, a_bad_iskra_threads_is_named)
+{
+    const char *d = TOUT;
+    cli_fresh(d);
+    const char *bad[] = {"abc", "0", "1e2", "300"};
+    for (size_t i = 0; i < sizeof bad / sizeof bad[0]; i++) {
+        cr_assert_eq(setenv("ISKRA_THREADS", bad[i], 1), 0);
+        cr_assert_eq(cli_run(d, "render fig19_coulomb --frames 2 --out " TOUT "/x.png"), 0);
+        char *err = cli_slurp(TOUT "/stderr.txt");
+        char want[160];
+        snprintf(want, sizeof want,
+                 "iskra render: ISKRA_THREADS=\"%s\" is not a number of threads 1..256: ignored, every core is used\n",
+                 bad[i]);
+        cr_assert_str_eq(err, want);
+        free(err);
+        /* --threads makes it moot */
+        cr_assert_eq(cli_run(d, "render fig19_coulomb --frames 2 --threads 2 --out " TOUT "/x.png"), 0);
+        err = cli_slurp(TOUT "/stderr.txt");
+        cr_assert_str_eq(err, "");
+        free(err);
+    }
+    cr_assert_eq(setenv("ISKRA_THREADS", "3", 1), 0);
+    cr_assert_eq(cli_run(d, "render fig19_coulomb --frames 2 --out " TOUT "/x.png"), 0);
+    char *err = cli_slurp(TOUT "/stderr.txt");
+    cr_assert_str_eq(err, "");
+    free(err);
+    unsetenv("ISKRA_THREADS");
+}

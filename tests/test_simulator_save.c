@@ -10,6 +10,7 @@
 #include <sys/stat.h>
 
 #include "iskra/effect.h"
+#include "iskra/keys.h"
 #include "iskra/scene.h"
 #include "scene_open.h"
 
@@ -287,5 +288,135 @@ Test(save, names_not_old_spellings_and_no_empty_keys)
     cr_assert_eq(isk_effect_get(fx, "emitter e", "integrator", v, sizeof v, &err), ISK_OK);
     cr_assert_str_eq(v, "scene", "a word for a value no name has is still the word");
     isk_effect_destroy(fx);
+    isk_effect_def_free(&d);
+}
+
+/* The text of d saved, loaded back and saved again: the same bytes. */
+static void saves_and_loads_back(const isk_effect_def *d, const char *what)
+{
+    char *a, *b;
+    isk_error err;
+    cr_assert_eq(isk_scene_write(d, &a, &err), ISK_OK, "%s: %s", what, err.message);
+    isk_effect_def back;
+    cr_assert_eq(isk_scene_load_string(&back, a, "saved.ini", &err), ISK_OK,
+                 "%s: isk_effect_set took it, but the saved scene does not load: %s", what, err.message);
+    cr_assert_eq(isk_scene_write(&back, &b, &err), ISK_OK, "%s: %s", what, err.message);
+    cr_assert_str_eq(a, b, "%s: the saved scene loads to other bytes", what);
+    free(a);
+    free(b);
+    isk_effect_def_free(&back);
+}
+
+/* The class: whatever isk_effect_set accepts, the saved file loads (to
+ * the same bytes).  Every live numeric key of every item of a few scenes
+ * at its range's ends and at 0, every enum at each of its names.  It
+ * caught a stream's rate = 0, which set took and the loader refused. */
+Test(save, whatever_set_accepts_saves_and_loads_back, .timeout = 120)
+{
+    const char *scenes[] = {"fire_campfire", "fig19_coulomb", "simulator", "looks_pinwheel"};
+    long tried = 0, taken = 0;
+    for (size_t sc = 0; sc < sizeof scenes / sizeof scenes[0]; sc++) {
+        isk_effect *fx = scene_open_builtin(scenes[sc]);
+        for (int s = 0; s < ISK_SECTION_COUNT; s++) {
+            for (int i = 0; i < isk_key_items(isk_effect_definition(fx), (isk_section_kind)s); i++) {
+                const isk_effect_def *d = isk_effect_definition(fx);
+                const int kind = isk_key_item_kind(d, (isk_section_kind)s, i);
+                char section[64];
+                const char *name = isk_key_item_name(d, (isk_section_kind)s, i);
+                snprintf(section, sizeof section, "%s%s%s", isk_section_name((isk_section_kind)s), *name ? " " : "",
+                         name);
+                for (int r = 0; r < isk_key_count(); r++) {
+                    const isk_key *k = isk_key_at(r);
+                    if (k->section != (isk_section_kind)s || !isk_key_applies(k, kind) || k->directive ||
+                        isk_key_when_set(k, kind) == ISK_KEY_WHEN_CREATED)
+                        continue;
+                    char values[16][48];
+                    int nv = 0;
+                    if (k->type == ISK_KEY_NUMBER || k->type == ISK_KEY_WHOLE || k->type == ISK_KEY_LONG ||
+                        k->type == ISK_KEY_COUNT) {
+                        if (k->lo_bound == ISK_BOUND_INCL)
+                            snprintf(values[nv++], 48, "%.17g", k->min);
+                        if (k->hi_bound == ISK_BOUND_INCL && k->max < 1e7)
+                            snprintf(values[nv++], 48, "%.17g", k->max);
+                        snprintf(values[nv++], 48, "0");
+                    } else if (k->type == ISK_KEY_ENUM || k->type == ISK_KEY_BOOL) {
+                        const char *words[16];
+                        int nw = k->type == ISK_KEY_BOOL ? 2 : isk_key_choices(k, words, 16);
+                        for (int w = 0; w < nw && nv < 16; w++)
+                            snprintf(values[nv++], 48, "%s", k->type == ISK_KEY_BOOL ? (w ? "true" : "false") : words[w]);
+                    }
+                    char old[4096];
+                    isk_error err;
+                    cr_assert_eq(isk_effect_get(fx, section, k->name, old, sizeof old, &err), ISK_OK, "%s", err.message);
+                    for (int v = 0; v < nv; v++) {
+                        tried++;
+                        if (isk_effect_set(fx, section, k->name, values[v], &err) != ISK_OK)
+                            continue;
+                        taken++;
+                        char what[1024];
+                        snprintf(what, sizeof what, "%s: [%s] %s = %s", scenes[sc], section, k->name, values[v]);
+                        saves_and_loads_back(isk_effect_definition(fx), what);
+                        cr_assert_eq(isk_effect_set(fx, section, k->name, old, &err), ISK_OK, "%s back: %s", what,
+                                     err.message);
+                    }
+                }
+            }
+        }
+        isk_effect_destroy(fx);
+    }
+    cr_assert_gt(taken, 100, "%ld of %ld values taken: the sweep tried too little", taken, tried);
+}
+
+/* A stream stopped live (rate 0, no bursts) saves as such and loads. */
+Test(save, a_stream_stopped_live_loads_back)
+{
+    isk_effect *fx = scene_open_builtin("fire_campfire");
+    const isk_effect_def *d = isk_effect_definition(fx);
+    int stream = -1;
+    for (int i = 0; i < d->nemitters && stream < 0; i++)
+        if (d->emitters[i].born.source == ISK_SOURCE_STREAM && d->emitters[i].born.count == 0)
+            stream = i;
+    cr_assert_geq(stream, 0, "fire_campfire has a stream without bursts");
+    char section[64];
+    snprintf(section, sizeof section, "emitter %s", d->emitters[stream].name);
+    isk_error err;
+    cr_assert_eq(isk_effect_set(fx, section, "rate", "0", &err), ISK_OK, "%s", err.message);
+    saves_and_loads_back(isk_effect_definition(fx), "rate = 0");
+    isk_effect_destroy(fx);
+}
+
+/* Names come from C unchecked: one holding "]" and a line break wrote
+ * lines of its own into the saved file.  Creating the effect refuses it,
+ * and so does writing a definition that was never created. */
+Test(save, names_from_c_are_checked_where_they_enter)
+{
+    isk_effect_def d;
+    isk_error err;
+    cr_assert_eq(isk_scene_load(&d, "fig19_coulomb", &err), ISK_OK, "%s", err.message);
+    cr_assert_gt(d.nemitters, 0);
+    char good[ISK_NAME_MAX];
+    memcpy(good, d.emitters[0].name, sizeof good);
+    const char *bad[] = {"x]\nrate = 1e7\n[emitter y", "a b", "all", "none", "", "x;y"};
+    for (size_t b = 0; b < sizeof bad / sizeof bad[0]; b++) {
+        snprintf(d.emitters[0].name, sizeof d.emitters[0].name, "%s", bad[b]);
+        char *text = NULL;
+        cr_assert_eq(isk_scene_write(&d, &text, &err), ISK_ERR_FORMAT, "'%s' was written", bad[b]);
+        cr_assert_null(text);
+        cr_assert_not_null(strstr(err.message, "emitter 0"), "%s", err.message);
+        isk_effect *fx = NULL;
+        if (*bad[b]) {
+            cr_assert_eq(isk_effect_create(&fx, &d, &err), ISK_ERR_RANGE, "'%s' was taken as a name", bad[b]);
+            cr_assert_not_null(strstr(err.message, "a name is 1..31 letters"), "%s", err.message);
+        }
+    }
+    /* a name that fills its field with no terminator */
+    memset(d.emitters[0].name, 'a', sizeof d.emitters[0].name);
+    isk_effect *fx = NULL;
+    cr_assert_eq(isk_effect_create(&fx, &d, &err), ISK_ERR_RANGE);
+    char *text = NULL;
+    cr_assert_eq(isk_scene_write(&d, &text, &err), ISK_ERR_FORMAT);
+    memcpy(d.emitters[0].name, good, sizeof good);
+    cr_assert_eq(isk_scene_write(&d, &text, &err), ISK_OK, "%s", err.message);
+    free(text);
     isk_effect_def_free(&d);
 }

@@ -84,14 +84,19 @@ isk_status isk_scene_load_textures(isk_effect_def *d, isk_error *err);
  * (every key of every item, written by its row of the key table: what a
  * running effect's isk_effect_definition holds after live changes saves
  * as a scene that reproduces them).  *text is malloc'd (free it).
- * ISK_ERR_FORMAT names the key when a value cannot be written (longer than
- * a scene line, text with blanks at an end or a ' ;' comment, a potential
- * moved by a C function); ISK_ERR_NULL, ISK_ERR_NOMEM. */
+ * What it writes always loads back to the same definition: ISK_ERR_FORMAT
+ * names the key when a value cannot be written (longer than a scene line,
+ * text with blanks at an end or a ' ;' comment, a potential moved by a C
+ * function), or the item whose name a section header cannot hold (none,
+ * or other than 1..31 letters, digits, '_', '-', '.'; isk_effect_create
+ * refuses such names too); ISK_ERR_NULL, ISK_ERR_NOMEM. */
 isk_status isk_scene_write(const isk_effect_def *def, char **text, isk_error *err);
 
-/* isk_scene_write into a file, through a temporary file in the same
- * directory renamed over `path` (an existing file is replaced whole or
- * not at all); ISK_ERR_IO when it cannot be written. */
+/* isk_scene_write into a file through iskra/outfile.h: a temporary file
+ * in the same directory renamed over `path` (an existing file is replaced
+ * whole or not at all, keeping its mode; a symlink stays a link; a device
+ * or FIFO is written through, never replaced); ISK_ERR_IO when it cannot
+ * be written. */
 isk_status isk_scene_save(const isk_effect_def *def, const char *path, isk_error *err);
 
 /* The built-in scenes, sorted by name: count, name (NULL when out of range)

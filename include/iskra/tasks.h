@@ -56,6 +56,13 @@ typedef struct isk_tasks {
     void *user; /* passed to run */
 } isk_tasks;
 
+/* What the environment variable ISKRA_THREADS asks for, by the one rule
+ * effects read it with (when a definition leaves `threads` at 0): decimal
+ * digits giving 1..ISK_TASKS_MAX_WORKERS.  0 for anything else (NULL,
+ * empty, "8 ", "1e2", "0", "999"): the variable is then ignored and every
+ * core is used, so a program can tell its user (the iskra tool does). */
+int isk_threads_from_text(const char *text);
+
 #ifdef __cplusplus
 }
 #endif

@@ -1,6 +1,7 @@
 /* SPDX-License-Identifier: MIT */
 /* Animated GIF through giflib (iskra/anim.h): GIF89a, looping forever, a
  * local palette per frame (src/io/quantize.h), delays in centiseconds. */
+#include <errno.h>
 #include <gif_lib.h>
 #include <math.h>
 #include <stdlib.h>
@@ -15,7 +16,7 @@ typedef struct gif_state {
     GifFileType *gif;
     isk__quant quant;
     uint8_t *indices;
-    int write_failed;  /* the stream refused bytes */
+    int write_failed;  /* the stream refused bytes: why (errno), or -1 if unknown */
     int discard;       /* aborting: giflib's trailer goes nowhere */
     long cs_done;      /* centiseconds shown up to the end of the last frame */
     FILE *f;
@@ -27,7 +28,7 @@ static int write_bytes(GifFileType *g, const GifByteType *p, int n)
     if (s->discard)
         return n;
     if (n < 0 || fwrite(p, 1, (size_t)n, s->f) != (size_t)n) {
-        s->write_failed = 1;
+        s->write_failed = n >= 0 && errno ? errno : -1;
         return 0;
     }
     return n;
@@ -36,7 +37,8 @@ static int write_bytes(GifFileType *g, const GifByteType *p, int n)
 static isk_status gif_failed(const gif_state *s, int code, const char *what, isk_error *err)
 {
     if (s->write_failed)
-        return isk_error_set(err, ISK_ERR_IO, "gif: write failed (disk full, or the reader went away?)");
+        return isk_error_set(err, ISK_ERR_IO, "gif: write failed: %s",
+                             s->write_failed > 0 ? strerror(s->write_failed) : "disk full, or the reader went away?");
     isk_status st = code == E_GIF_ERR_NOT_ENOUGH_MEM ? ISK_ERR_NOMEM : ISK_ERR_IO;
     const char *msg = GifErrorString(code);
     return isk_error_set(err, st, "gif: %s: %s", what, msg ? msg : "giflib error");
@@ -122,7 +124,8 @@ isk_status isk__gif_end(isk_anim *a, isk_error *err)
     if (!ok || s->write_failed)
         return gif_failed(s, code, "close", err);
     if (fflush(a->f) != 0 || ferror(a->f))
-        return isk_error_set(err, ISK_ERR_IO, "gif: write failed (disk full, or the reader went away?)");
+        return isk_error_set(err, ISK_ERR_IO, "gif: write failed: %s",
+                             errno ? strerror(errno) : "disk full, or the reader went away?");
     return ISK_OK;
 }
 

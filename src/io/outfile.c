@@ -1,6 +1,6 @@
 /* SPDX-License-Identifier: MIT */
 /* Output files that never destroy what they replace (iskra/outfile.h). */
-#define _XOPEN_SOURCE 700 /* realpath */
+#define _DEFAULT_SOURCE /* realpath, fchown, flock */
 #include "iskra/outfile.h"
 
 #include <errno.h>
@@ -11,11 +11,15 @@
 #include <string.h>
 #include <sys/stat.h>
 #include <unistd.h>
+#ifndef __wasi__
+#include <sys/file.h>
+#endif
 
-/* The browser's C library (wasm32-wasi) has no mkstemp, fchmod or
- * realpath: there a temporary is the first free name of the template
- * (created exclusively, so it is still never an existing file), files
- * have no permissions to give, and a symbolic link is refused. */
+/* The browser's C library (wasm32-wasi) has no mkstemp, fchmod, fchown,
+ * flock or realpath: there a temporary is the first free name of the
+ * template (created exclusively, so it is still never an existing file),
+ * files have no permissions or owners to give, nothing else runs that
+ * could leave or remove a temporary, and a symbolic link is refused. */
 #ifdef __wasi__
 static int make_temp(char *tmpl)
 {
@@ -30,6 +34,10 @@ static int make_temp(char *tmpl)
     return -1;
 }
 #define fchmod(fd, mode) ((void)(fd), (void)(mode), 0)
+#define fchown(fd, uid, gid) ((void)(fd), (void)(uid), (void)(gid), 0)
+#define flock(fd, how) ((void)(fd), (void)(how), 0)
+#define LOCK_EX 2
+#define LOCK_NB 4
 #else
 #define make_temp mkstemp
 #endif
@@ -67,26 +75,56 @@ static isk_status open_stream(isk_outfile *o, const char *path, isk_error *err)
     return ISK_OK;
 }
 
+/* A temporary made by make_temp and locked (flock) for as long as it is
+ * open, which is how isk_outfile_remove_stale tells a live writer's
+ * temporary from one a killed writer left.  A remover that catches the
+ * name between the creation and the lock takes the lock first and
+ * unlinks the file: the name then no longer leads to our file, and we
+ * make another.  -1 with errno on failure. */
+static int make_locked_temp(char *tmpl)
+{
+    const size_t n = strlen(tmpl);
+    for (int attempt = 0; attempt < 100; attempt++) {
+        memcpy(tmpl + n - 6, "XXXXXX", 6);
+        int fd = make_temp(tmpl);
+        if (fd < 0)
+            return -1;
+        struct stat mine, named;
+        if (flock(fd, LOCK_EX) == 0 && fstat(fd, &mine) == 0 && stat(tmpl, &named) == 0 &&
+            mine.st_dev == named.st_dev && mine.st_ino == named.st_ino)
+            return fd;
+        close(fd);
+    }
+    errno = EAGAIN;
+    return -1;
+}
+
 /* A regular file (or none yet) at `target`: a temporary beside it. */
 static isk_status open_temp(isk_outfile *o, const char *target, const char *shown, const struct stat *existing,
                             isk_error *err)
 {
     size_t n = strlen(target);
-    o->temp = malloc(n + 12);
+    o->temp = malloc(n + sizeof ISK_OUTFILE_TEMP_MARK + 6);
     if (!o->temp)
         return fail(o, err, ISK_ERR_NOMEM, shown, "out of memory");
     memcpy(o->temp, target, n);
-    memcpy(o->temp + n, ".tmp.XXXXXX", 12);
-    int fd = make_temp(o->temp);
+    memcpy(o->temp + n, ISK_OUTFILE_TEMP_MARK "XXXXXX", sizeof ISK_OUTFILE_TEMP_MARK + 6);
+    int fd = make_locked_temp(o->temp);
     if (fd < 0) {
         char why[300];
         snprintf(why, sizeof why, "cannot create temporary file: %s", strerror(errno));
         return fail(o, err, ISK_ERR_IO, shown, why);
     }
-    /* mkstemp makes it 0600: give it the permissions of the file it
-     * replaces, or the usual 0644 for a new one. */
+    /* mkstemp makes it 0600, owned by us: give it the owner and the
+     * permissions of the file it replaces (owner first: a change of owner
+     * clears the set-id bits), or the usual 0644 for a new one.  Neither
+     * is fatal: the file is still ours and readable by us (only root may
+     * give a file away). */
+    if (existing && fchown(fd, existing->st_uid, existing->st_gid) != 0) {
+        /* keep our own */
+    }
     if (fchmod(fd, existing ? (existing->st_mode & 07777) : 0644) != 0) {
-        /* not fatal: the file is still ours and readable by us */
+        /* keep 0600 */
     }
     o->f = fdopen(fd, "wb");
     if (!o->f) {
@@ -166,7 +204,14 @@ isk_status isk_outfile_commit(isk_outfile *o, isk_error *err)
         ok = 0;
         e = errno;
     }
-    if (fclose(o->f) != 0 && ok) {
+    /* Renamed while still open: the lock on the temporary holds until it
+     * has its final name (isk_outfile_remove_stale). */
+    int renamed = 0, rename_errno = 0;
+    if (ok && o->temp) {
+        renamed = rename(o->temp, o->path) == 0;
+        rename_errno = errno;
+    }
+    if (fclose(o->f) != 0 && ok && !renamed) {
         ok = 0;
         e = errno;
     }
@@ -177,9 +222,9 @@ isk_status isk_outfile_commit(isk_outfile *o, isk_error *err)
                           e == ENOSPC ? "no space left on device" : strerror(e ? e : EIO));
         if (o->temp)
             unlink(o->temp);
-    } else if (o->temp && rename(o->temp, o->path) != 0) {
+    } else if (o->temp && !renamed) {
         s = isk_error_set(err, ISK_ERR_IO, "%s: cannot rename the temporary file over it: %s", o->path,
-                          strerror(errno));
+                          strerror(rename_errno));
         unlink(o->temp);
     }
     free(o->temp);
@@ -199,6 +244,34 @@ void isk_outfile_abort(isk_outfile *o)
     free(o->temp);
     free(o->path);
     memset(o, 0, sizeof *o);
+}
+
+int isk_outfile_remove_stale(const char *temp)
+{
+    if (!temp)
+        return 0;
+    const char *mark = strstr(temp, ISK_OUTFILE_TEMP_MARK);
+    while (mark && strstr(mark + 1, ISK_OUTFILE_TEMP_MARK))
+        mark = strstr(mark + 1, ISK_OUTFILE_TEMP_MARK);
+    if (!mark || mark == temp || mark[-1] == '/' || strlen(mark) != sizeof ISK_OUTFILE_TEMP_MARK - 1 + 6 ||
+        strchr(mark, '/'))
+        return 0;
+#ifdef __wasi__
+    return 0; /* one program at a time: nothing can have been left by another */
+#else
+    int fd = open(temp, O_RDONLY | O_NOFOLLOW | O_NONBLOCK | O_NOCTTY);
+    if (fd < 0)
+        return 0;
+    struct stat st, named;
+    int removed = 0;
+    /* Held by nobody: its writer is gone.  The lock is kept until the
+     * name is gone, so a writer that has just made it sees the loss. */
+    if (fstat(fd, &st) == 0 && S_ISREG(st.st_mode) && flock(fd, LOCK_EX | LOCK_NB) == 0 &&
+        lstat(temp, &named) == 0 && named.st_dev == st.st_dev && named.st_ino == st.st_ino)
+        removed = unlink(temp) == 0;
+    close(fd);
+    return removed;
+#endif
 }
 
 static int is_dir(const char *path)

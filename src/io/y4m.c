@@ -1,7 +1,9 @@
 /* SPDX-License-Identifier: MIT */
 /* YUV4MPEG2 and raw RGBA frames (iskra/anim.h). */
+#include <errno.h>
 #include <math.h>
 #include <stdlib.h>
+#include <string.h>
 
 #include "io/anim_internal.h"
 
@@ -21,7 +23,10 @@ static long long gcd(long long a, long long b)
 
 static isk_status write_failed(const isk_anim *a, isk_error *err)
 {
-    return isk_error_set(err, ISK_ERR_IO, "%s: write failed (disk full, or the reader went away?)", a->fmt->name);
+    /* just after the failed fwrite or fflush: errno says why (EFBIG past
+     * ulimit -f, ENOSPC, EPIPE) */
+    return isk_error_set(err, ISK_ERR_IO, "%s: write failed: %s", a->fmt->name,
+                         errno ? strerror(errno) : "disk full, or the reader went away?");
 }
 
 isk_status isk__y4m_begin(isk_anim *a, isk_error *err)

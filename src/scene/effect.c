@@ -226,12 +226,8 @@ void isk_effect_destroy(isk_effect *e)
 /* ISKRA_THREADS if the environment sets a valid number, else the cores. */
 static int default_threads(void)
 {
-    const char *v = getenv("ISKRA_THREADS");
-    char *end = NULL;
-    long n = v ? strtol(v, &end, 10) : 0;
-    if (v && *v && end && !*end && n >= 1 && n <= ISK_TASKS_MAX_WORKERS)
-        return (int)n;
-    return isk__pool_online_cores();
+    const int n = isk_threads_from_text(getenv("ISKRA_THREADS"));
+    return n > 0 ? n : isk__pool_online_cores();
 }
 
 int isk_effect_threads(const isk_effect *e)

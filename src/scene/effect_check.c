@@ -129,7 +129,7 @@ static isk_status check_stream(ctx *c, const isk_emitter_def *e)
         return bad_key(c, "speed_max", "must be >= speed_min (%.15g)", e->launch.speed_min);
     if (e->born.count > e->born.capacity)
         return bad_key(c, "count", "a burst of %zu exceeds the capacity %zu", e->born.count, e->born.capacity);
-    return ISK_OK; /* rate 0 and no bursts is an idle stream: fine while running, a mistake in a file (the parser's) */
+    return ISK_OK; /* rate 0 and no bursts is an idle stream: stopped live, and saved and loaded so */
 }
 
 /* ---- sub-emitters and trails ----
@@ -285,6 +285,26 @@ isk_status isk__fx_check_item(const isk_effect_def *d, isk_section_kind s, int i
     return section_checks[s] ? section_checks[s](&c) : ISK_OK;
 }
 
+static isk_status structure_fails(const isk_effect_def *d, fx_report *r, isk_status s, const char *msg);
+
+/* Every name follows the scene files' rule (names.c), so a definition
+ * made in C saves to a file that loads: no name carries a ']' or a line
+ * break into a section header.  Checked before any name is compared or
+ * printed (a name need not even be terminated). */
+static isk_status valid_names(const isk_effect_def *d, isk_section_kind s, fx_report *r)
+{
+    for (int i = 0; i < isk__fx_section_items(d, s); i++) {
+        const char *a = isk__fx_item_name(d, s, i);
+        if (isk_section_named(s) && *a && (!isk__fx_name_ok(a, ISK_NAME_MAX) || isk__fx_name_reserved(a))) {
+            char why[200];
+            snprintf(why, sizeof why, "%s %d: a name is 1..%d letters, digits, '_', '-' or '.' (not \"all\" or "
+                     "\"none\")", isk_section_name(s), i, ISK_NAME_MAX - 1);
+            return structure_fails(d, r, ISK_ERR_RANGE, why);
+        }
+    }
+    return ISK_OK;
+}
+
 static isk_status unique_names(const isk_effect_def *d, isk_section_kind s, fx_report *r)
 {
     int n = isk__fx_section_items(d, s);
@@ -336,7 +356,9 @@ isk_status isk__fx_check_def(const isk_effect_def *d, fx_report *r)
     if (d->threads < 0 || d->threads > 256)
         return structure_fails(d, r, ISK_ERR_RANGE, "threads must be 0 (the default) .. 256");
     for (int s = 0; s < ISK_SECTION_COUNT; s++) {
-        isk_status st = unique_names(d, (isk_section_kind)s, r);
+        isk_status st = valid_names(d, (isk_section_kind)s, r);
+        if (st == ISK_OK)
+            st = unique_names(d, (isk_section_kind)s, r);
         for (int i = 0; st == ISK_OK && i < isk__fx_section_items(d, (isk_section_kind)s); i++)
             st = isk__fx_check_item(d, (isk_section_kind)s, i, 1, r);
         if (st != ISK_OK)

@@ -183,17 +183,6 @@ static isk_status parse_points(const isk_key *k, void *item, const char *text, c
     return ISK_OK;
 }
 
-static int name_ok(const char *s)
-{
-    if (!*s || strlen(s) >= ISK_NAME_MAX)
-        return 0;
-    for (; *s; s++)
-        if (!((*s >= 'a' && *s <= 'z') || (*s >= 'A' && *s <= 'Z') || (*s >= '0' && *s <= '9') || *s == '_' ||
-              *s == '-' || *s == '.'))
-            return 0;
-    return 1;
-}
-
 /* "no force named 'gravty'; did you mean 'gravity'?" */
 static isk_status unknown_name(const isk_key *k, const isk_effect_def *d, const char *name, char *why, size_t n)
 {
@@ -265,7 +254,7 @@ static isk_status parse_ref(const isk_key *k, void *item, const char *text, cons
         *field = -1;
         return ISK_OK;
     }
-    if (!name_ok(text))
+    if (!isk__fx_name_ok(text, ISK_NAME_MAX))
         return isk__fx_expected(k, why, n, text);
     int i = find_name(d, k->refers, text);
     if (i < 0)

@@ -27,6 +27,11 @@
 /* How many items of a section the definition holds (1 for the unnamed
  * sections), the i-th item, its name ("" for unnamed sections) and the line
  * it was defined at (0 if unknown or unnamed). */
+/* The name rule (names.c): 1 when s, within cap bytes, can name an item
+ * in a scene file; and the words a section may not be named. */
+int isk__fx_name_ok(const char *s, size_t cap);
+int isk__fx_name_reserved(const char *s);
+
 int isk__fx_section_items(const isk_effect_def *d, isk_section_kind s);
 void *isk__fx_section_item(isk_effect_def *d, isk_section_kind s, int i);
 const void *isk__fx_section_item_c(const isk_effect_def *d, isk_section_kind s, int i);

@@ -4,7 +4,10 @@
  * table (keys.c), the parser, describe, the messages and `iskra keys` all
  * read these.  Data only, so every file may use them and none of them
  * reaches back. */
+#include <string.h>
+
 #include "iskra/effect.h"
+#include "key_value.h"
 #include "preset_list.h"
 
 const char *const isk_force_kind_names[ISK_FORCE_KIND_COUNT] = {"gravity", "drag", "wind", "potential",
@@ -21,3 +24,30 @@ const char *const isk_align_names[ISK_ALIGN_COUNT] = {"none", "velocity"};
 
 #define PRESET_NAME(name) #name,
 const char *const isk__fx_preset_names[FX_PRESET_COUNT] = {FX_PRESETS(PRESET_NAME)};
+
+/* The one rule for the name of a force, deflector, emitter or drawing:
+ * scene files hold it in a section header and in references, so it is
+ * 1..ISK_NAME_MAX-1 letters, digits, '_', '-' or '.', terminated within
+ * its field (`cap` bytes).  Anything else ("x]\nrate = 1e7") could not be
+ * written, or would be written as other lines. */
+int isk__fx_name_ok(const char *s, size_t cap)
+{
+    if (!s || cap == 0 || !s[0])
+        return 0;
+    for (size_t i = 0; i < cap; i++) {
+        const char c = s[i];
+        if (c == 0)
+            return 1;
+        if (i + 1 >= ISK_NAME_MAX ||
+            !((c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '_' || c == '-' ||
+              c == '.'))
+            return 0;
+    }
+    return 0; /* not terminated within its field */
+}
+
+/* Words that mean something else where a name is expected. */
+int isk__fx_name_reserved(const char *s)
+{
+    return !strcmp(s, "all") || !strcmp(s, "none");
+}

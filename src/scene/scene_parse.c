@@ -19,7 +19,6 @@
  *      at the line of the key they are about.
  * The first error stops everything; the definition is then emptied.
  */
-#include <ctype.h>
 #include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -106,17 +105,6 @@ static int line_of(const section *s, const char *key)
 }
 
 /* ---- sections ------------------------------------------------------------------ */
-
-static int valid_name(const char *s)
-{
-    if (!*s)
-        return 0;
-    for (; *s; s++)
-        if (!isalnum((unsigned char)*s) && *s != '_' && *s != '-' && *s != '.')
-            return 0;
-    return 1;
-}
-
 
 /* A new item of the section's type, with the table's defaults. */
 static isk_status add_item(parser *P, section *s, const char *name, int line)
@@ -225,12 +213,12 @@ static isk_status on_section(void *user, const char *header, int line, isk_error
         return isk__ini_error(P->err, P->name, line, "section [%s] needs a name: [%s NAME]", type, type);
     if (!named && *name)
         return isk__ini_error(P->err, P->name, line, "section [%s] takes no name (got [%s %s])", type, type, name);
-    if (named && (!valid_name(name) || strlen(name) >= ISK_NAME_MAX))
+    if (named && !isk__fx_name_ok(name, strlen(name) + 1))
         return isk__ini_error(P->err, P->name, line,
                              "bad name '%s' in [%s %s]: use letters, digits, '_', '-' or '.' "
                              "(at most %d characters)",
                              name, type, name, ISK_NAME_MAX - 1);
-    if (named && (!strcmp(name, "all") || !strcmp(name, "none")))
+    if (named && isk__fx_name_reserved(name))
         return isk__ini_error(P->err, P->name, line, "'%s' is reserved and cannot name a [%s]", name, type);
     for (int i = 0; i < P->nsec; i++)
         if (P->sec[i].type == (isk_section_kind)t && !strcmp(P->sec[i].name, name)) {
@@ -479,8 +467,6 @@ static isk_status derived_defaults(parser *P, section *s)
     }
     if (s->type == ISK_SECTION_EMITTER) {
         isk_emitter_def *e = &d->emitters[s->index];
-        if (e->born.source == ISK_SOURCE_STREAM && e->born.rate == 0 && e->born.count == 0)
-            return fail_at(P, s, line_of(s, "rate"), NULL, "a stream needs rate > 0 or a burst count > 0");
         char why[400];
         const char *key;
         isk_status st = isk__fx_scene_texture(d, e, P->name, &key, why, sizeof why); /* the texture beside the file */

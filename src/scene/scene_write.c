@@ -14,7 +14,8 @@
  * without a texture: "texture =" would say nothing).  What a line cannot
  * hold is refused with ISK_ERR_FORMAT rather than written wrong: a value
  * longer than a scene line, text that starts or ends with blanks or holds
- * a comment, a potential moved by a C function. */
+ * a comment, a potential moved by a C function, an item without a name
+ * or with one a section header cannot hold. */
 #include <errno.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -74,6 +75,13 @@ static int required(const isk_key *k, int kind)
 static isk_status write_item(out *o, const isk_effect_def *d, isk_section_kind s, int index, isk_error *err)
 {
     const char *name = isk__fx_item_name(d, s, index);
+    /* A section header holds the name as it is: one that breaks the name
+     * rule (names.c) would not load, or would inject lines ("x]\nrate = 1"). */
+    if (isk_section_named(s) && (!isk__fx_name_ok(name, ISK_NAME_MAX) || isk__fx_name_reserved(name)))
+        return isk_error_set(err, ISK_ERR_FORMAT, "%s %d: %s (a scene file needs a name of 1..%d letters, digits, "
+                                                  "'_', '-' or '.', not \"all\" or \"none\")",
+                             isk_section_name(s), index, *name ? "its name cannot be written" : "it has no name",
+                             ISK_NAME_MAX - 1);
     char label[ISK_NAME_MAX + 24], value[ISK_INI_MAX_LINE + 2];
     snprintf(label, sizeof label, "[%s%s%s]", isk_section_name(s), *name ? " " : "", name);
     put(o, "\n");

@@ -162,8 +162,19 @@ void isk_multi_coulomb_plan(size_t n, size_t *batch_size, size_t *batches, size_
         *last_size = rest ? rest : s;
 }
 
+/* The sum is added term by term, in order (the thesis's bits), up to this
+ * batch; an explosion has at most a few dozen batches.  Past it the
+ * harmonic number's expansion ln n + gamma + 1/2n - 1/12n^2 (its error is
+ * below 1/120n^4) gives the value in constant time: a hostile
+ * batch = SIZE_MAX must not loop 10^19 times. */
+#define RELEASE_SUM_MAX ((size_t)1 << 20)
+
 double isk_multi_coulomb_release_time(size_t batch)
 {
+    if (batch > RELEASE_SUM_MAX) {
+        const double n = (double)(batch - 1);
+        return 0.010 * (log(n) + 0.57721566490153286061 + 1.0 / (2.0 * n) - 1.0 / (12.0 * n * n));
+    }
     double t = 0.0;
     for (size_t j = 1; j < batch; j++)
         t += 0.010 / (double)j;

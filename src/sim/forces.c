@@ -97,6 +97,8 @@ void isk_potential_move(isk_potential *pot, double param)
 
 void isk_force_gravity(size_t n, const double *restrict m, double g, double *restrict fy)
 {
+    if (!m || !fy)
+        return;
     for (size_t i = 0; i < n; i++)
         fy[i] = fy[i] + isk_k_gravity_fy(m[i], g);
 }
@@ -104,6 +106,8 @@ void isk_force_gravity(size_t n, const double *restrict m, double g, double *res
 void isk_force_drag(size_t n, const double *restrict vx, const double *restrict vy, double b,
                     double *restrict fx, double *restrict fy)
 {
+    if (!vx || !vy || !fx || !fy)
+        return;
     for (size_t i = 0; i < n; i++) {
         fx[i] = fx[i] + isk_k_drag(vx[i], b);
         fy[i] = fy[i] + isk_k_drag(vy[i], b);
@@ -132,8 +136,8 @@ static size_t first_within(size_t n, const double *restrict x, const double *res
 void isk_force_potential(isk_potential *pot, size_t n, const double *x, const double *y, double *px,
                          double *py, isk_fidelity centre)
 {
-    if (!pot->enabled || n == 0)
-        return;
+    if (!pot || !pot->enabled || n == 0 || !x || !y || !px || !py)
+        return; /* nothing to act on (NULL arrays: the caller's contract broken; do nothing) */
     double cx = pot->r.x, cy = pot->r.y;
     size_t cut = n;
     if (pot->max_dist > 0.0) {
@@ -170,6 +174,8 @@ static void add_into(size_t n, double *restrict fx, double *restrict fy, const d
 
 void isk_force_accel(size_t n, const double *m, double ax, double ay, double *fx, double *fy)
 {
+    if (!m || !fx || !fy)
+        return;
     for (size_t i = 0; i < n; i++) {
         fx[i] += m[i] * ax;
         fy[i] += m[i] * ay;
@@ -318,6 +324,8 @@ const char *isk_force_law_name(unsigned law)
 void isk_forces_eval_step(isk_forces *f, size_t n, const double *x, const double *y, double *vx, double *vy,
                           const double *m, double *fx, double *fy, double *px, double *py, int with_drag, double h)
 {
+    if (!f || n == 0 || !x || !y || !vx || !vy || !m || !fx || !fy)
+        return; /* px, py may be NULL without potentials (isk_force_potential checks) */
     memset(fx, 0, n * sizeof *fx); /* all-bits-zero is +0.0 */
     memset(fy, 0, n * sizeof *fy);
     const law_args a = {f, n, x, y, m, vx, vy, fx, fy, px, py, h};

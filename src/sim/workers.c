@@ -98,3 +98,18 @@ void isk__workers_for(isk_workers *w, size_t n, size_t min_items, isk_task_fn *f
     }
     w->tasks.run(w->tasks.user, fn, task, n);
 }
+
+int isk_threads_from_text(const char *text)
+{
+    if (!text || !*text)
+        return 0;
+    long n = 0;
+    for (const char *c = text; *c; c++) {
+        if (*c < '0' || *c > '9')
+            return 0;
+        n = n * 10 + (*c - '0');
+        if (n > ISK_TASKS_MAX_WORKERS)
+            return 0;
+    }
+    return n >= 1 ? (int)n : 0;
+}

@@ -15,8 +15,21 @@
 /* Read by the handler: every field is written with the signals blocked. */
 static const char *volatile temps[MAX_TEMPS];
 static const char *volatile cmd_name = "iskra";
-static const char *volatile seq_dir;
-static volatile long seq_first = -1, seq_last = -1, seq_every = 1, seq_count;
+static volatile long files_committed; /* regular files renamed into place */
+
+/* What the numbered outputs have done so far (cleanup_note). */
+static struct {
+    const char *volatile where;
+    volatile long first, last, every, count;
+} noted[CLEANUP_NSERIES];
+
+static const struct {
+    const char *noun, *nouns, *done, *dones, *unit, *units;
+} series_words[CLEANUP_NSERIES] = {
+    [CLEANUP_FRAMES] = {"frame", "frames", "was written", "were written", "file", "files"},
+    [CLEANUP_STATES] = {"state", "states", "was written", "were written", "file", "files"},
+    [CLEANUP_STREAM] = {"frame", "frames", "was streamed", "were streamed", "frame", "frames"},
+};
 
 static const struct {
     int sig;
@@ -53,6 +66,35 @@ static void put_long(long v)
     put(buf + i);
 }
 
+/* "; WHERE: frames 0 to 8 (every 2) were written (5 files)", or
+ * "; WHERE: frame 0 was written (1 file)" */
+static void put_series(int k)
+{
+    const int one = noted[k].count == 1;
+    put("; ");
+    put(noted[k].where);
+    put(": ");
+    put(one ? series_words[k].noun : series_words[k].nouns);
+    put(" ");
+    put_long(noted[k].first);
+    if (!one) {
+        put(" to ");
+        put_long(noted[k].last);
+        if (noted[k].every > 1) {
+            put(" (every ");
+            put_long(noted[k].every);
+            put(")");
+        }
+    }
+    put(" ");
+    put(one ? series_words[k].done : series_words[k].dones);
+    put(" (");
+    put_long(noted[k].count);
+    put(" ");
+    put(one ? series_words[k].unit : series_words[k].units);
+    put(")");
+}
+
 static void on_signal(int sig)
 {
     for (int i = 0; i < MAX_TEMPS; i++)
@@ -66,27 +108,31 @@ static void on_signal(int sig)
     put(cmd_name);
     put(": interrupted by ");
     put(name);
-    if (seq_dir && seq_count > 0) {
-        put("; ");
-        put(seq_dir);
-        put(": frames ");
-        put_long(seq_first);
-        put(seq_count > 1 ? " to " : "");
-        if (seq_count > 1)
-            put_long(seq_last);
-        if (seq_count > 1 && seq_every > 1) {
-            put(" (every ");
-            put_long(seq_every);
-            put(")");
+    long in_series = 0;
+    int said = 0;
+    for (int k = 0; k < CLEANUP_NSERIES; k++)
+        if (noted[k].where && noted[k].count > 0) {
+            put_series(k);
+            said = 1;
+            if (k != CLEANUP_STREAM)
+                in_series += noted[k].count;
         }
-        put(" were written (");
-        put_long(seq_count);
-        put(seq_count == 1 ? " file); rerun with --resume to continue\n" : " files); rerun with --resume to continue\n");
-    } else if (seq_dir) {
-        put("; no frame was written\n");
-    } else {
-        put("; nothing was written\n");
+    const long others = files_committed - in_series;
+    if (others > 0) {
+        put("; ");
+        put_long(others);
+        put(said ? (others == 1 ? " more file was written" : " more files were written")
+                 : (others == 1 ? " file was written" : " files were written"));
+        said = 1;
     }
+    if (noted[CLEANUP_FRAMES].where && noted[CLEANUP_FRAMES].count > 0)
+        put("; rerun with --resume to continue\n");
+    else if (said)
+        put("\n");
+    else if (noted[CLEANUP_FRAMES].where)
+        put("; no frame was written\n");
+    else
+        put("; nothing was written\n");
     _exit(128 + sig);
 }
 
@@ -121,6 +167,10 @@ void cleanup_install(const char *cmd)
             continue;
         sigaction(handled[i].sig, &sa, NULL);
     }
+    /* Past the file size limit (ulimit -f) a write fails with EFBIG
+     * instead of killing us: the failure is then reported and cleaned up
+     * like a full disk. */
+    signal(SIGXFSZ, SIG_IGN);
 }
 
 static void forget(const char *temp)
@@ -160,7 +210,10 @@ int cleanup_outfile_commit(isk_outfile *o)
     isk_error err;
     block(&old);
     forget(o->temp);
+    const int renamed_file = o->temp != NULL;
     isk_status s = isk_outfile_commit(o, &err);
+    if (s == ISK_OK && renamed_file)
+        files_committed++;
     unblock(&old);
     if (s != ISK_OK) {
         fprintf(stderr, "iskra %s: %s\n", cmd_name, err.message);
@@ -192,15 +245,15 @@ int cleanup_png_write(const isk_canvas *c, const char *path)
     return cleanup_outfile_commit(&o);
 }
 
-void cleanup_note_frames(const char *dir, long first, long last, long every, long count)
+void cleanup_note(cleanup_series k, const char *where, long first, long last, long every, long count)
 {
     sigset_t old;
     block(&old);
-    seq_dir = dir;
-    seq_first = first;
-    seq_last = last;
-    seq_every = every;
-    seq_count = count;
+    noted[k].where = where;
+    noted[k].first = first;
+    noted[k].last = last;
+    noted[k].every = every;
+    noted[k].count = count;
     unblock(&old);
 }
 

@@ -11,9 +11,11 @@
  *     if (cleanup_outfile_open(&o, path)) return 1;  ...write o.f...
  *     if (cleanup_outfile_commit(&o)) return 1;       // or cleanup_outfile_abort(&o)
  *
- * A sequence render tells it which frames are complete
- * (cleanup_note_frames), so an interrupted one says which frames were
- * written and that --resume continues.  The handler only calls unlink,
+ * A render tells it which numbered outputs are complete (cleanup_note:
+ * frames, states, frames streamed), so an interrupted one says what was
+ * written, or streamed, and that --resume continues.  SIGXFSZ (past
+ * `ulimit -f`) is ignored: the write then fails with EFBIG and is
+ * reported and cleaned up like any failed write.  The handler only calls unlink,
  * write and _exit (async-signal-safe); the registry is updated with the
  * signals blocked.  This is the tool's state, never the library's. */
 #ifndef ISKRA_TOOL_CLEANUP_H
@@ -38,9 +40,17 @@ void cleanup_outfile_abort(isk_outfile *o);
 /* A whole PNG through the above.  0, or 1 after printing why. */
 int cleanup_png_write(const isk_canvas *c, const char *path);
 
-/* The sequence so far: `count` frames first, first + every, ..., last in
- * dir (dir must outlive the command, e.g. an argv string). */
-void cleanup_note_frames(const char *dir, long first, long last, long every, long count);
+/* What a numbered output has done so far: `count` of them, first,
+ * first + every, ..., last, in `where` (a directory, a file name or
+ * "standard output"; it must outlive the command, e.g. an argv string).
+ * The message after a signal lists each, and any other file written. */
+typedef enum cleanup_series {
+    CLEANUP_FRAMES, /* render --out-dir: "frames ... were written (N files)", --resume continues */
+    CLEANUP_STATES, /* render --state-every: "states ... were written (N files)" */
+    CLEANUP_STREAM, /* frames streamed into a pipe, FIFO or device: "frames ... were streamed" */
+    CLEANUP_NSERIES
+} cleanup_series;
+void cleanup_note(cleanup_series k, const char *where, long first, long last, long every, long count);
 
 /* Holds the signals back between hold and release (which nest), so that
  * writing a frame and noting it happen together: a frame the message

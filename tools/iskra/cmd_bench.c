@@ -5,6 +5,7 @@
 #include <stdio.h>
 #include <string.h>
 
+#include "cleanup.h"
 #include "cmd.h"
 #include "outpath.h"
 #include "study.h"
@@ -86,6 +87,7 @@ int cmd_bench(int argc, char **argv)
     /* Before the first study: a bad --out fails now, not after a long run. */
     if (outpath_make_dirs("bench", o.out_dir))
         return 1;
+    cleanup_install("bench");
     int rc = 0;
     for (int i = 0; i < NSTUDIES; i++) {
         if (only && strcmp(only, studies[i].name) != 0)

@@ -30,6 +30,7 @@
 
 #include "cmd.h"
 #include "iskra/sdl.h"
+#include "outpath.h"
 #include "play.h"
 #include "scene_args.h"
 
@@ -223,7 +224,18 @@ int cmd_play(int argc, char **argv)
         play_script_free(&p.script);
         return rc;
     }
+    /* Save never writes over what the simulator reads (outpath.h). */
+    outpath_plan plan = {.cmd = "play"};
+    outpath_output(&plan, p.save_to, "--save");
+    rc = outpath_refuse(&plan, p.args.text ? NULL : p.args.scene, "the scene") ? 2 : 0;
+    for (int i = 0; !rc && i < def.ntextures; i++)
+        rc = outpath_refuse(&plan, def.textures[i].name, "a texture of the scene") ? 2 : 0;
     isk_effect_def_free(&def);
+    if (rc) {
+        isk_effect_destroy(p.fx);
+        play_script_free(&p.script);
+        return rc;
+    }
     if (p.follow) {
         const isk_effect_def *fd = isk_effect_definition(p.fx);
         int k = isk_effect_def_find_emitter(fd, p.follow);

@@ -8,8 +8,9 @@
  * a PNG, and/or frames 0, K, 2K, ... <= N as a numbered PNG sequence, an
  * animated GIF, a YUV4MPEG2 video or raw RGBA frames (render_out.h);
  * --state / --state-every write the particles as CSV (state_csv.h).
- * Everything is validated before anything is written; a signal removes
- * the temporaries and says what was written (cleanup.h). */
+ * Everything is validated before anything is written, and no output may
+ * be an input (the scene, its textures) or another output (outpath.h); a
+ * signal removes the temporaries and says what was written (cleanup.h). */
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -57,12 +58,15 @@ static void help(FILE *f)
                "  --state FILE.csv every live particle at frame N: emitter,index,x,y,vx,vy,\n"
                "                   mass,age,life, values in round-trip precision (%%.17g)\n"
                "  --state-every K  with --out-dir: DIR/state_000000.csv ... every K frames\n"
-               "  Missing directories of every output are created.  Particles removed\n"
-               "  because their state went non-finite are reported.\n");
+               "  Missing directories of every output are created.  An output that is an\n"
+               "  input (the scene, a texture) or another output is refused.  Particles\n"
+               "  removed because their state went non-finite are reported.\n");
     scene_args_help(f);
     fprintf(f, "  A progress bar appears on stderr when it is a terminal and the render\n"
                "  takes a while.  SIGINT, SIGTERM, SIGHUP or SIGPIPE removes the temporary\n"
-               "  files, says which frames were written and exits with 128 + the signal.\n"
+               "  files, says which frames and states were written (or streamed) and exits\n"
+               "  with 128 + the signal; a file size limit (ulimit -f) is a failed write.\n"
+               "  A later run removes the temporaries that a killed one left.\n"
                "  exit status: 0 success, 1 cannot write, 2 usage or scene error\n");
 }
 
@@ -164,10 +168,27 @@ static int check(render_args *r)
     }
     if (state_args_check(&r->so, r->o.dir))
         return 2;
-    if (outpath_refuse_input("render", r->out, r->scene.scene) ||
-        outpath_refuse_input("render", r->so.path, r->scene.scene) ||
-        outpath_refuse_input("render", r->strip, r->scene.scene))
+    return 0;
+}
+
+/* Every output against the others, and against every input: the scene
+ * file and the textures it names (as the loader resolved them).  0 or 2
+ * after printing which.  Then the temporaries a killed run left beside
+ * the outputs are removed. */
+static int check_files(const render_args *r, const isk_effect_def *def, long frames)
+{
+    outpath_plan plan = {.cmd = "render"};
+    outpath_output(&plan, r->out, "--out");
+    outpath_output(&plan, r->strip, "--strip");
+    outpath_output(&plan, r->so.path, "--state");
+    outpath_series(&plan, r->o.dir, RENDER_FRAME_PREFIX, RENDER_FRAME_SUFFIX, r->o.every, frames, "--out-dir");
+    outpath_series(&plan, r->o.dir, STATE_PREFIX, STATE_SUFFIX, r->so.every, frames, "--state-every");
+    if (outpath_clash(&plan) || outpath_refuse(&plan, r->scene.text ? NULL : r->scene.scene, "the scene"))
         return 2;
+    for (int i = 0; i < def->ntextures; i++)
+        if (outpath_refuse(&plan, def->textures[i].name, "a texture of the scene"))
+            return 2;
+    outpath_remove_stale(&plan);
     return 0;
 }
 
@@ -207,7 +228,7 @@ int cmd_render(int argc, char **argv)
     double fps;
     isk_canvas canvas = {0};
     render_strip strip = {0};
-    if ((rc = choose_fps(&r, def.dt, &fps)) != 0)
+    if ((rc = check_files(&r, &def, frames)) != 0 || (rc = choose_fps(&r, def.dt, &fps)) != 0)
         goto done;
     if (isk_canvas_init(&canvas, def.width, def.height) != ISK_OK) {
         fprintf(stderr, "iskra render: out of memory (a %dx%d canvas)\n", def.width, def.height);

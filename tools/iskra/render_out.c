@@ -2,6 +2,7 @@
 /* The outputs of `iskra render` (see render_out.h). */
 #include "render_out.h"
 
+#include <errno.h>
 #include <stdio.h>
 #include <string.h>
 
@@ -11,7 +12,7 @@
 
 void render_out_frame_path(const char *dir, long f, char *path, size_t n)
 {
-    snprintf(path, n, "%s/frame_%06ld.png", dir, f);
+    snprintf(path, n, "%s/" RENDER_FRAME_PREFIX "%06ld" RENDER_FRAME_SUFFIX, dir, f);
 }
 
 int render_out_begin(render_out *o, int width, int height, double fps)
@@ -22,7 +23,7 @@ int render_out_begin(render_out *o, int width, int height, double fps)
     if ((o->dir && outpath_make_dirs("render", o->dir)) || (o->png && outpath_make_parents("render", o->png)))
         return 1;
     if (o->dir)
-        cleanup_note_frames(o->dir, -1, -1, o->every, 0);
+        cleanup_note(CLEANUP_FRAMES, o->dir, -1, -1, o->every, 0);
     if (!o->anim_path)
         return 0;
     isk_error err;
@@ -35,6 +36,8 @@ int render_out_begin(render_out *o, int width, int height, double fps)
             return 1;
         f = o->anim_file.f;
     }
+    o->streaming = o->anim_stdout || o->anim_file.streaming;
+    o->stream = f;
     isk_anim_opts ao = {o->anim_format, width, height, fps};
     if (isk_anim_begin(&o->anim, f, &ao, &err) != ISK_OK) {
         fprintf(stderr, "iskra render: %s: %s\n", o->anim_path, err.message);
@@ -49,13 +52,21 @@ int render_out_wants(const render_out *o, long f)
     return f % o->every == 0 && (o->dir || o->anim);
 }
 
-/* A sequence frame that a previous run finished: a PNG of this size (a
- * frame is renamed into place only when complete, so one that exists is
- * whole; the header check guards against another render's leftovers). */
+/* A sequence frame that a previous run finished: a PNG of this size that
+ * decodes to its end, every chunk's CRC and the image data whole (this
+ * tool renames a frame into place only when complete, but a frame copied
+ * half-way, cut by a full disk elsewhere or left by another program is
+ * truncated: it is written again, never kept). */
 static int already_there(const render_out *o, const char *path)
 {
     isk_png_info info;
-    return isk_png_read_info(path, &info, NULL) == ISK_OK && info.width == o->width && info.height == o->height;
+    if (isk_png_read_info(path, &info, NULL) != ISK_OK || info.width != o->width || info.height != o->height)
+        return 0;
+    isk_canvas c;
+    if (isk_png_read(&c, path, NULL) != ISK_OK)
+        return 0;
+    isk_canvas_free(&c);
+    return 1;
 }
 
 int render_out_frame(render_out *o, const isk_canvas *c, long f)
@@ -76,7 +87,7 @@ int render_out_frame(render_out *o, const isk_canvas *c, long f)
                 if (o->seq_first < 0)
                     o->seq_first = f;
                 o->seq_last = f;
-                cleanup_note_frames(o->dir, o->seq_first, o->seq_last, o->every, o->seq_written);
+                cleanup_note(CLEANUP_FRAMES, o->dir, o->seq_first, o->seq_last, o->every, o->seq_written);
             }
             cleanup_release(&held);
             if (failed)
@@ -88,6 +99,19 @@ int render_out_frame(render_out *o, const isk_canvas *c, long f)
         if (isk_anim_frame(o->anim, c, &err) != ISK_OK) {
             fprintf(stderr, "iskra render: %s: %s\n", o->anim_path, err.message);
             return 1;
+        }
+        /* A stream cannot be taken back: each frame is pushed out whole,
+         * so the message after a signal counts what the reader got. */
+        if (o->streaming) {
+            if (fflush(o->stream) != 0) {
+                fprintf(stderr, "iskra render: %s: %s\n", o->anim_stdout ? "standard output" : o->anim_path,
+                        strerror(errno));
+                return 1;
+            }
+            if (o->anim_count++ == 0)
+                o->anim_first = f;
+            cleanup_note(CLEANUP_STREAM, o->anim_stdout ? "standard output" : o->anim_path, o->anim_first, f, o->every,
+                         o->anim_count);
         }
     }
     return 0;

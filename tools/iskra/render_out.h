@@ -37,6 +37,9 @@ typedef struct render_out {
     /* the animation stream */
     isk_outfile anim_file;
     int anim_stdout;
+    int streaming;            /* stdout, a pipe, FIFO or device: nothing to take back */
+    FILE *stream;             /* what the animation is written to */
+    long anim_first, anim_count;
     isk_anim *anim;
     int width, height;
 } render_out;
@@ -57,7 +60,10 @@ int render_out_end(render_out *o, const isk_canvas *last);
 /* Drops an unfinished animation (its temporary is removed). */
 void render_out_abort(render_out *o);
 
-/* Path of sequence frame f in dir (the one naming rule). */
+/* Path of sequence frame f in dir (the one naming rule):
+ * DIR/RENDER_FRAME_PREFIX%06ldRENDER_FRAME_SUFFIX. */
+#define RENDER_FRAME_PREFIX "frame_"
+#define RENDER_FRAME_SUFFIX ".png"
 void render_out_frame_path(const char *dir, long f, char *path, size_t n);
 
 #endif

@@ -11,6 +11,7 @@
 #include <string.h>
 
 #include "iskra/scene.h"
+#include "iskra/tasks.h"
 
 int arg_value(const char *cmd, int argc, char **argv, int *i, const char *name, const char **value)
 {
@@ -268,6 +269,12 @@ int scene_args_load(const scene_args *a, isk_effect_def *def, isk_effect **fx, c
 
 int scene_args_open(const scene_args *a, isk_effect_def *def, isk_effect **fx)
 {
+    /* The library ignores a bad ISKRA_THREADS (it has no one to tell):
+     * say so, unless --threads makes it moot. */
+    const char *env = getenv("ISKRA_THREADS");
+    if (!a->threads && env && *env && !isk_threads_from_text(env))
+        fprintf(stderr, "iskra %s: ISKRA_THREADS=\"%s\" is not a number of threads 1..%d: ignored, every core is "
+                        "used\n", a->cmd, env, ISK_TASKS_MAX_WORKERS);
     char why[1024];
     int rc = scene_args_load(a, def, fx, why, sizeof why);
     if (rc)

@@ -5,11 +5,9 @@
 
 #include <errno.h>
 #include <stdio.h>
-#include <stdlib.h>
 #include <string.h>
-#include <sys/stat.h>
-#include <unistd.h>
 
+#include "cleanup.h"
 #include "outpath.h"
 #include "scene_args.h"
 
@@ -61,52 +59,35 @@ static int rows(FILE *f, const isk_effect *fx)
 
 int state_csv_write(const isk_effect *fx, const char *path)
 {
-    if (outpath_make_parents("render", path))
+    isk_outfile o;
+    if (outpath_make_parents("render", path) || cleanup_outfile_open(&o, path))
         return 1;
-    size_t n = strlen(path);
-    char *tmp = malloc(n + 16);
-    if (!tmp) {
-        fprintf(stderr, "iskra render: %s: out of memory\n", path);
-        return 1;
-    }
-    memcpy(tmp, path, n);
-    memcpy(tmp + n, ".tmp.XXXXXX", 12);
-    int fd = mkstemp(tmp);
-    if (fd < 0) {
-        fprintf(stderr, "iskra render: %s: cannot create a temporary file: %s\n", path, strerror(errno));
-        free(tmp);
+    if (!rows(o.f, fx)) {
+        cleanup_outfile_abort(&o);
+        fprintf(stderr, "iskra render: %s: write failed: %s\n", path, strerror(errno ? errno : EIO));
         return 1;
     }
-    struct stat st;
-    fchmod(fd, stat(path, &st) == 0 ? (st.st_mode & 07777) : 0644); /* mkstemp makes 0600 */
-    FILE *f = fdopen(fd, "wb");
-    if (!f) {
-        fprintf(stderr, "iskra render: %s: %s\n", path, strerror(errno));
-        close(fd);
-        unlink(tmp);
-        free(tmp);
-        return 1;
-    }
-    int ok = rows(f, fx);
-    ok = fflush(f) == 0 && ok;
-    ok = fclose(f) == 0 && ok;
-    if (!ok || rename(tmp, path) != 0) {
-        fprintf(stderr, "iskra render: %s: %s\n", path, !ok ? "write failed (disk full?)" : strerror(errno));
-        unlink(tmp);
-        free(tmp);
-        return 1;
-    }
-    free(tmp);
-    return 0;
+    return cleanup_outfile_commit(&o);
 }
 
-int state_after_frame(const state_opts *o, const isk_effect *fx, const char *out_dir, long f)
+int state_after_frame(state_opts *o, const isk_effect *fx, const char *out_dir, long f)
 {
     if (!o->every || !out_dir || f % o->every != 0)
         return 0;
     char path[4200];
-    snprintf(path, sizeof path, "%s/state_%06ld.csv", out_dir, f);
-    return state_csv_write(fx, path);
+    snprintf(path, sizeof path, "%s/" STATE_PREFIX "%06ld" STATE_SUFFIX, out_dir, f);
+    /* written and counted together: a file the message after a signal
+     * does not count is never in place */
+    sigset_t held;
+    cleanup_hold(&held);
+    int failed = state_csv_write(fx, path);
+    if (!failed) {
+        if (o->count++ == 0)
+            o->first = f;
+        cleanup_note(CLEANUP_STATES, out_dir, o->first, f, o->every, o->count);
+    }
+    cleanup_release(&held);
+    return failed;
 }
 
 size_t state_report_removed(const isk_effect *fx)

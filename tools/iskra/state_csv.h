@@ -11,8 +11,9 @@
  *     emitter,index,x,y,vx,vy,mass,age,life
  *     sparks,0,0.123...,0.5...,...
  *
- * Files are written under a temporary name and renamed, so a reader never
- * sees half of one.  The hooks are three calls, so the rest of the render
+ * Files go through the tool's one output path (cleanup.h, iskra/outfile.h):
+ * a temporary renamed into place, so a reader never sees half of one, a
+ * device or FIFO written through, an existing file's mode kept.  The hooks are three calls, so the rest of the render
  * command does not need to know about any of this:
  *
  *     state_opts so = {0};
@@ -29,6 +30,7 @@
 typedef struct state_opts {
     const char *path; /* --state FILE.csv, or NULL */
     long every;       /* --state-every K, 0: none */
+    long first, count; /* --state-every files written so far */
 } state_opts;
 
 /* --state / --state-every at argv[*i]: 1 taken, 0 not ours, -1 error
@@ -41,8 +43,11 @@ int state_args_check(const state_opts *o, const char *out_dir);
 /* The CSV of the effect's live particles now; 0 or 1 after printing why. */
 int state_csv_write(const isk_effect *fx, const char *path);
 
-/* After frame f: DIR/state_NNNNNN.csv when f is a multiple of K. 0 or 1. */
-int state_after_frame(const state_opts *o, const isk_effect *fx, const char *out_dir, long f);
+/* After frame f: DIR/STATE_PREFIX%06ldSTATE_SUFFIX when f is a multiple
+ * of K. 0 or 1. */
+#define STATE_PREFIX "state_"
+#define STATE_SUFFIX ".csv"
+int state_after_frame(state_opts *o, const isk_effect *fx, const char *out_dir, long f);
 
 /* At the end of the render: --state FILE, then the report of removed
  * particles on stderr.  0 or 1. */

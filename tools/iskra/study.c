@@ -11,8 +11,8 @@
 #include <time.h>
 #include <unistd.h>
 
+#include "cleanup.h"
 #include "iskra/canvas.h"
-#include "iskra/png.h"
 
 double study_now(void)
 {
@@ -90,35 +90,22 @@ static int join(const study_opts *o, const char *name, char *path, size_t cap)
 
 int study_write_text(const study_opts *o, const char *name, const study_buf *b)
 {
-    char path[4096], tmp[4200];
+    char path[4096];
     if (join(o, name, path, sizeof path))
         return 1;
     if (b->failed) {
         fprintf(stderr, "iskra bench: %s: out of memory while formatting\n", path);
         return 1;
     }
-    snprintf(tmp, sizeof tmp, "%s.tmp.XXXXXX", path);
-    int fd = mkstemp(tmp);
-    if (fd < 0) {
-        fprintf(stderr, "iskra bench: %s: %s\n", path, strerror(errno));
+    isk_outfile out;
+    if (cleanup_outfile_open(&out, path))
+        return 1;
+    if (b->len != 0 && fwrite(b->text, 1, b->len, out.f) != b->len) {
+        fprintf(stderr, "iskra bench: %s: write failed: %s\n", path, strerror(errno ? errno : EIO));
+        cleanup_outfile_abort(&out);
         return 1;
     }
-    fchmod(fd, 0644); /* mkstemp makes it 0600; a CSV is for everyone to read, like the PNGs */
-    FILE *f = fdopen(fd, "wb");
-    if (!f) {
-        fprintf(stderr, "iskra bench: %s: %s\n", path, strerror(errno));
-        close(fd);
-        unlink(tmp);
-        return 1;
-    }
-    int ok = (b->len == 0 || fwrite(b->text, 1, b->len, f) == b->len);
-    ok = (fclose(f) == 0) && ok;
-    if (!ok || rename(tmp, path) != 0) {
-        fprintf(stderr, "iskra bench: %s: %s\n", path, strerror(errno ? errno : EIO));
-        unlink(tmp);
-        return 1;
-    }
-    return 0;
+    return cleanup_outfile_commit(&out);
 }
 
 int study_write_chart(const study_opts *o, const char *name, const isk_chart *ch, int w, int h)
@@ -138,12 +125,7 @@ int study_write_chart(const study_opts *o, const char *name, const isk_chart *ch
         isk_canvas_free(&c);
         return 1;
     }
-    isk_error err;
-    st = isk_png_write(&c, path, &err);
+    int rc = cleanup_png_write(&c, path);
     isk_canvas_free(&c);
-    if (st != ISK_OK) {
-        fprintf(stderr, "iskra bench: %s\n", err.message);
-        return 1;
-    }
-    return 0;
+    return rc;
 }
