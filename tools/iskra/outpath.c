@@ -30,14 +30,26 @@ int outpath_make_parents(const char *cmd, const char *path)
     return 1;
 }
 
+/* wasi-libc (the browser's build) has no realpath: there a path that
+ * exists is its name as given (the page's one directory has no links). */
+#ifdef __wasi__
+static char *real_path(const char *path)
+{
+    struct stat st;
+    return stat(path, &st) == 0 ? strdup(path) : NULL;
+}
+#else
+static char *real_path(const char *path) { return realpath(path, NULL); }
+#endif
+
 /* The absolute name a file not there yet will have: its directory
  * resolved (symlinks, "..") as far as it exists, the rest joined by name
  * (a directory not there yet is no symlink, so "a/../b" is "b").  NULL
  * when even the working directory cannot be resolved (or no memory). */
 static char *resolved(const char *path)
 {
-    char *real = realpath(path, NULL);
-    if (real)
+    char *real = real_path(path);
+    if (real || !strcmp(path, "."))
         return real;
     size_t n = strlen(path);
     while (n > 1 && path[n - 1] == '/')
