@@ -37,7 +37,7 @@ import subprocess
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from webdriver import Browser, Server  # noqa: E402
+from webdriver import Browser, Server, WebDriverError  # noqa: E402
 
 TARGET_FPS = 60.0
 SIDES = ("native", "simd128", "no simd")
@@ -185,4 +185,7 @@ def main():
 
 
 if __name__ == "__main__":
-    sys.exit(main())
+    try:
+        sys.exit(main())
+    except (subprocess.CalledProcessError, WebDriverError, RuntimeError, OSError) as e:
+        sys.exit("web_bench: %s" % e)
