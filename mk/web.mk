@@ -65,6 +65,15 @@ $(WEB_OUT)/iskra.wasm: $(WEB_OBJ) $(WEB_LIBS)
 	$(Q)$(WEB_CC) -mexec-model=reactor -o $@ $(WEB_OBJ) $(WEB_LIBS) -lm \
 	    -Wl,-z,stack-size=1048576 -Wl,--strip-all
 $(WEB_LIBS): $(WEB_STAMP)
+
+# The library as an archive of the web build's objects, libinih's one file
+# with it: a test module or the benchmark takes only what it calls.
+WEB_LIBA := $(WEB)/lib/libiskra.a
+WEB_LIB_OBJ := $(LIB_SRC:%.c=$(WEB)/obj/%.o) $(WEB)/obj/third_party/inih/ini.o
+$(WEB_LIBA): $(WEB_LIB_OBJ)
+	@mkdir -p $(dir $@)
+	$(call say,AR,$@)
+	$(Q)rm -f $@ && $(WEB_AR) rcs $@ $^
 $(WEB_STAMP):
 	@echo "web: run 'make web' (it builds the libraries for wasm first)" >&2; exit 1
 

@@ -32,8 +32,7 @@ $(WEB_BENCH_NATIVE): $(BUILD)/obj/bench/web/bench_web_native.o $(BUILD)/obj/benc
 # kernels call), once with -msimd128 (the objects of iskra.wasm) and once
 # without.
 WEB_NOSIMD_CFLAGS = $(filter-out -msimd128,$(WEB_CFLAGS))
-WEB_LIB_OBJ := $(LIB_SRC:%.c=$(WEB)/obj/%.o)
-WEB_LIB_NOSIMD_OBJ := $(LIB_SRC:%.c=$(WEB)/obj-nosimd/%.o)
+WEB_LIB_NOSIMD_OBJ := $(WEB_LIB_OBJ:$(WEB)/obj/%=$(WEB)/obj-nosimd/%)
 WEB_BENCH_SRC := bench/web/web_kernels.c web/bench_web.c
 
 $(WEB)/obj-nosimd/%.o: %.c $(WEB_STAMP)
@@ -42,16 +41,14 @@ $(WEB)/obj-nosimd/%.o: %.c $(WEB_STAMP)
 	$(Q)$(WEB_CC) $(WEB_NOSIMD_CFLAGS) -MMD -MP -c $< -o $@
 $(WEB)/obj-nosimd/src/scene/scene_builtin.o: $(WEB)/gen/scenes_gen.h
 
-$(WEB)/lib/libiskra.a: $(WEB_LIB_OBJ)
 $(WEB)/lib-nosimd/libiskra.a: $(WEB_LIB_NOSIMD_OBJ)
-$(WEB)/lib/libiskra.a $(WEB)/lib-nosimd/libiskra.a:
 	@mkdir -p $(dir $@)
 	$(call say,AR,$@)
 	$(Q)rm -f $@ && $(WEB_AR) rcs $@ $^
 
 # Reactors, as iskra.wasm: no main; the page calls the exports.
 WEB_BENCH_LINK = $(WEB_CC) -mexec-model=reactor -o $@ $^ -lm -Wl,-z,stack-size=1048576 -Wl,--strip-all
-$(WEB_OUT)/bench.wasm: $(WEB_BENCH_SRC:%.c=$(WEB)/obj/%.o) $(WEB)/lib/libiskra.a
+$(WEB_OUT)/bench.wasm: $(WEB_BENCH_SRC:%.c=$(WEB)/obj/%.o) $(WEB_LIBA)
 	@mkdir -p $(dir $@)
 	$(call say,LD,$@)
 	$(Q)$(WEB_BENCH_LINK)

@@ -21,10 +21,6 @@ WEB_TEST_SKIP := $(shell sed -n 's/^\(test_[A-Za-z0-9_]*\)[[:space:]].*/\1/p' $(
 WEB_TEST_NAMES := $(filter-out $(WEB_TEST_SKIP),$(TEST_SRC:tests/%.c=%))
 WEB_TEST_MODULES := $(WEB_TEST_NAMES:%=$(WEB)/tests/%.wasm)
 
-# The library as an archive of the web build's objects (libinih's one
-# file with it): a test module takes only what it calls.
-WEB_LIBA := $(WEB)/lib/libiskra.a
-WEB_LIB_OBJ := $(LIB_SRC:%.c=$(WEB)/obj/%.o) $(WEB)/obj/third_party/inih/ini.o
 # The tests' own helpers (refimg.c, key_case.c, ...), also an archive: a
 # helper that needs what wasm lacks stays out of the modules that do not
 # call it.  One that does not compile for wasm is left out of it.
@@ -48,11 +44,6 @@ web-test-deps:
 	@sh tools/deps.sh $(WEB_TEST_PKGS)
 web-test-unit-run: $(WEB_TEST_MODULES)
 	@nice $(WEB_TEST_NODE) tools/wasm_test_run.mjs --skip $(WEB_TEST_SKIP_FILE) $(WEB_TEST_MODULES)
-
-$(WEB_LIBA): $(WEB_LIB_OBJ)
-	@mkdir -p $(dir $@)
-	$(call say,AR,$@)
-	$(Q)rm -f $@ && $(WEB_AR) rcs $@ $^
 
 $(WEB)/tests/obj/%.o: %.c $(WEB_STAMP)
 	@mkdir -p $(dir $@)

@@ -61,6 +61,12 @@ function wasiImports(getMemory) {
       v.setBigUint64(out + 16, 0xffffffffn, true);
       return 0;
     },
+    fd_filestat_get(fd, out) {
+      if (fd > 3) return WASI_EBADF;
+      bytes().fill(0, out, out + 64);
+      view().setUint8(out + 16, fd === 3 ? 3 : 2);  // the directory, or a character device
+      return 0;
+    },
     fd_fdstat_set_flags(fd) { return fd <= 2 ? 0 : WASI_EBADF; },
     // One directory, "/", empty: so a path is looked up, and is not there.
     fd_prestat_get(fd, out) {
