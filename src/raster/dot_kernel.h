@@ -21,6 +21,8 @@
 #include "raster/blend_px.h"
 #if ISK__CPU_SSE2
 #include "raster/dot_kernel_sse2.h"
+#elif ISK__CPU_VECTOR
+#include "raster/dot_kernel_vector.h"
 #endif
 
 /* Exact-area weights of the dot for fractional parts fx, fy in [0, 1).
@@ -80,6 +82,11 @@ static ISK__INLINE void isk__blend_2x2(const isk_canvas *c, int ix, int iy, cons
 #if ISK__CPU_SSE2
         if (!lut && mode != ISK_BLEND_REPLACE) { /* the whole block in SSE2 registers */
             isk__blend_2x2_sse2(p, stride, w, col, mode);
+            return;
+        }
+#elif ISK__CPU_VECTOR
+        if (!lut && mode != ISK_BLEND_REPLACE) { /* the same in vector-extension lanes */
+            isk__blend_2x2_vector(p, stride, w, col, mode);
             return;
         }
 #endif

@@ -18,7 +18,8 @@
  * so anything built from them draws the bytes of the loop of single calls.
  * The functions here are the plain ones (static inline: each includer
  * keeps the ones it uses) and pick their twins: px2 and px4 in SSE2
- * (dot_block_sse2.h), the weights and the select in AVX2
+ * (dot_block_sse2.h) or, on other targets, vector extensions
+ * (dot_block_vector.h), the weights and the select in AVX2
  * (dot_block_avx2.c, 4 points a step) and AVX-512 (dot_block_avx512.c, 8),
  * chosen at run time by pick_weights and pick_select. */
 #ifndef ISKRA_VIEW_DOT_BLOCK_H
@@ -35,6 +36,8 @@
 #include "view/world_batch.h" /* isk__keep_on_canvas */
 #if ISK__CPU_SSE2
 #include "view/dot_block_sse2.h"
+#elif ISK__CPU_VECTOR
+#include "view/dot_block_vector.h"
 #endif
 
 /* Points per block.  On a band of a threaded draw only part of a block is
@@ -170,6 +173,9 @@ static ISK__INLINE void px2(uint8_t *p, isk_color col, const isk__cov_lut *lut, 
 #if ISK__CPU_SSE2
     if (px2_sse2(p, lut, wa, wb, mode)) /* add, or over on two opaque pixels: one register */
         return;
+#elif ISK__CPU_VECTOR
+    if (px2_vector(p, lut, wa, wb, mode)) /* the same in one vector */
+        return;
 #endif
     isk__px_w(p, col, lut, wa, mode);
     isk__px_w(p + 4, col, lut, wb, mode);
@@ -183,6 +189,9 @@ static ISK__INLINE void px4(uint8_t *p, size_t stride, isk_color col, const isk_
 {
 #if ISK__CPU_SSE2
     if (px4_sse2(p, stride, lut, w, mode)) /* over on four opaque pixels: one set of lanes */
+        return;
+#elif ISK__CPU_VECTOR
+    if (px4_vector(p, stride, lut, w, mode)) /* the same in vector-extension lanes */
         return;
 #endif
     px2(p, col, lut, w[0], w[1], mode);
