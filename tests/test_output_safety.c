@@ -141,23 +141,6 @@ Test(output_safety, a_character_device_is_written_through_never_replaced)
     isk_canvas_free(&a);
 }
 
-/* Reads the FIFO to its end in a child process, copying it into `copy`. */
-static pid_t drain(const char *fifo, const char *copy)
-{
-    pid_t pid = fork();
-    cr_assert_neq(pid, -1);
-    if (pid == 0) {
-        int in = open(fifo, O_RDONLY), out = open(copy, O_WRONLY | O_CREAT | O_TRUNC, 0644);
-        char buf[4096];
-        ssize_t n;
-        while (in >= 0 && out >= 0 && (n = read(in, buf, sizeof buf)) > 0)
-            if (write(out, buf, (size_t)n) != n)
-                _exit(1);
-        _exit(in < 0 || out < 0);
-    }
-    return pid;
-}
-
 Test(output_safety, a_fifo_is_streamed_to_its_reader, .timeout = 30)
 {
     const char *d = OUT "/fifo";
@@ -165,7 +148,7 @@ Test(output_safety, a_fifo_is_streamed_to_its_reader, .timeout = 30)
     cr_assert_eq(mkfifo(OUT "/fifo/pipe.png", 0644), 0);
     isk_canvas a;
     picture(&a, 16, 9, 6);
-    pid_t pid = drain(OUT "/fifo/pipe.png", OUT "/fifo/copy.png");
+    pid_t pid = cli_drain_fifo(OUT "/fifo/pipe.png", OUT "/fifo/copy.png");
     isk_error err;
     cr_assert_eq(isk_png_write(&a, OUT "/fifo/pipe.png", &err), ISK_OK, "%s", err.message);
     int status;
@@ -175,7 +158,7 @@ Test(output_safety, a_fifo_is_streamed_to_its_reader, .timeout = 30)
     same_picture(OUT "/fifo/copy.png", &a);
     cr_assert_eq(temporaries_in(d), 0);
     /* the command line does the same: iskra render ... --out FIFO */
-    pid = drain(OUT "/fifo/pipe.png", OUT "/fifo/render.png");
+    pid = cli_drain_fifo(OUT "/fifo/pipe.png", OUT "/fifo/render.png");
     cr_assert_eq(cli_run(d, "render fig09_stationary_particle --out " OUT "/fifo/pipe.png"), 0);
     cr_assert_eq(waitpid(pid, &status, 0), pid);
     cr_assert_eq(kind(OUT "/fifo/pipe.png", 0), S_IFIFO);

@@ -56,23 +56,6 @@ static int starts_with_file(const char *path, const char *prefix)
     return yes;
 }
 
-/* Reads the FIFO to its end in a child process, copying it into `copy`. */
-static pid_t drain(const char *fifo, const char *copy)
-{
-    pid_t pid = fork();
-    cr_assert_neq(pid, -1);
-    if (pid == 0) {
-        int in = open(fifo, O_RDONLY), out = open(copy, O_WRONLY | O_CREAT | O_TRUNC, 0644);
-        char buf[4096];
-        ssize_t n;
-        while (in >= 0 && out >= 0 && (n = read(in, buf, sizeof buf)) > 0)
-            if (write(out, buf, (size_t)n) != n)
-                _exit(1);
-        _exit(in < 0 || out < 0);
-    }
-    return pid;
-}
-
 static void drained(pid_t pid)
 {
     int st;
@@ -98,7 +81,7 @@ Test(outputs, state_keeps_links_fifos_and_modes, .timeout = 60)
     cr_assert_eq(mode_of(OUT "/state_kinds/real.csv"), 0600, "the mode became %o", mode_of(OUT "/state_kinds/real.csv"));
 
     cr_assert_eq(mkfifo(OUT "/state_kinds/pipe.csv", 0644), 0);
-    pid_t pid = drain(OUT "/state_kinds/pipe.csv", OUT "/state_kinds/copy.csv");
+    pid_t pid = cli_drain_fifo(OUT "/state_kinds/pipe.csv", OUT "/state_kinds/copy.csv");
     cr_assert_eq(cli_run(d, "render fig19_coulomb --frames 3 --state " OUT "/state_kinds/pipe.csv"), 0);
     drained(pid);
     cr_assert_eq(kind_of(OUT "/state_kinds/pipe.csv"), S_IFIFO, "--state replaced the FIFO");
@@ -135,7 +118,7 @@ Test(outputs, saves_keep_links_fifos_and_modes, .timeout = 120)
     cr_assert_eq(isk_scene_save(&def, "/dev/null", &err), ISK_OK, "%s", err.message);
     cr_assert_eq(kind_of("/dev/null"), S_IFCHR);
     cr_assert_eq(mkfifo(OUT "/save_kinds/pipe.ini", 0644), 0);
-    pid_t pid = drain(OUT "/save_kinds/pipe.ini", OUT "/save_kinds/copy.ini");
+    pid_t pid = cli_drain_fifo(OUT "/save_kinds/pipe.ini", OUT "/save_kinds/copy.ini");
     cr_assert_eq(isk_scene_save(&def, OUT "/save_kinds/pipe.ini", &err), ISK_OK, "%s", err.message);
     drained(pid);
     cr_assert_eq(kind_of(OUT "/save_kinds/pipe.ini"), S_IFIFO);
@@ -248,37 +231,6 @@ Test(outputs, no_output_replaces_an_input_or_another_output, .timeout = 120)
     refused(d, args, "(the scene)");
 }
 
-/* Starts `iskra ARGS...` (no shell) with stdout and stderr in dir, under
- * a file size limit of `fsize` bytes (0: none). */
-static pid_t start(const char *dir, rlim_t fsize, const char *const *args)
-{
-    char tool[512], errp[512], outp[512];
-    snprintf(tool, sizeof tool, "%s/bin/iskra", refimg_build_dir());
-    snprintf(errp, sizeof errp, "%s/stderr.txt", dir);
-    snprintf(outp, sizeof outp, "%s/stdout.txt", dir);
-    pid_t pid = fork();
-    cr_assert_neq(pid, -1);
-    if (pid == 0) {
-        int e = open(errp, O_WRONLY | O_CREAT | O_TRUNC, 0644), o = open(outp, O_WRONLY | O_CREAT | O_TRUNC, 0644);
-        if (e < 0 || o < 0 || dup2(e, 2) < 0 || dup2(o, 1) < 0)
-            _exit(99);
-        for (int s = 1; s < 32; s++)
-            signal(s, SIG_DFL);
-        struct rlimit rl = {fsize, fsize};
-        if (fsize && setrlimit(RLIMIT_FSIZE, &rl) != 0)
-            _exit(97);
-        char *argv[32];
-        int n = 0;
-        argv[n++] = tool;
-        for (; args[n - 1] && n < 31; n++)
-            argv[n] = (char *)args[n - 1];
-        argv[n] = NULL;
-        execv(tool, argv);
-        _exit(98);
-    }
-    return pid;
-}
-
 static int exit_status(pid_t pid)
 {
     int st;
@@ -304,7 +256,7 @@ Test(outputs, a_signal_during_state_files_leaves_none_half_written, .timeout = 2
         cli_fresh(d);
         const char *args[] = {"render", "fire_campfire", "--frames", "100000", "--every", "1000", "--out-dir",
                               OUT "/sig_state/seq", "--state-every", "1", NULL};
-        pid_t pid = start(d, 0, args);
+        pid_t pid = cli_start(d, -1, 0, args);
         for (int i = 0; i < 3000 && cli_count_files(OUT "/sig_state/seq", "^state_.*csv$") < 3 + 5 * k; i++)
             nap();
         cr_assert_eq(kill(pid, sigs[k]), 0);
@@ -332,7 +284,7 @@ Test(outputs, a_file_size_limit_is_reported_and_cleaned_up, .timeout = 120)
     for (int k = 0; k < 3; k++) {
         cli_fresh(d);
         const char *args[] = {"render", "fire_campfire", "--frames", "40", outs[k][0], outs[k][1], NULL};
-        pid_t pid = start(d, 2048, args);
+        pid_t pid = cli_start(d, -1, 2048, args);
         cr_assert_eq(exit_status(pid), 1, "%s", outs[k][1]);
         char *err = cli_slurp(OUT "/fsize/stderr.txt");
         cr_assert_not_null(strstr(err, outs[k][1]), "%s", err);

@@ -22,35 +22,6 @@
 
 #define OUT "out/test_render_signals"
 
-/* Starts `iskra ARGS...` with stderr to dir/stderr.txt (stdout to
- * dir/stdout.txt unless out_fd >= 0). */
-static pid_t start(const char *dir, int out_fd, const char *const *args)
-{
-    char tool[512], errp[512], outp[512];
-    snprintf(tool, sizeof tool, "%s/bin/iskra", refimg_build_dir());
-    snprintf(errp, sizeof errp, "%s/stderr.txt", dir);
-    snprintf(outp, sizeof outp, "%s/stdout.txt", dir);
-    pid_t pid = fork();
-    cr_assert_neq(pid, -1);
-    if (pid == 0) {
-        int e = open(errp, O_WRONLY | O_CREAT | O_TRUNC, 0644);
-        int o = out_fd >= 0 ? out_fd : open(outp, O_WRONLY | O_CREAT | O_TRUNC, 0644);
-        if (e < 0 || o < 0 || dup2(e, 2) < 0 || dup2(o, 1) < 0)
-            _exit(99);
-        for (int s = 1; s < 32; s++)
-            signal(s, SIG_DFL);
-        char *argv[32];
-        int n = 0;
-        argv[n++] = tool;
-        for (; args[n - 1] && n < 31; n++)
-            argv[n] = (char *)args[n - 1];
-        argv[n] = NULL;
-        execv(tool, argv);
-        _exit(98);
-    }
-    return pid;
-}
-
 static void nap(void)
 {
     struct timespec ts = {0, 20 * 1000 * 1000};
@@ -79,7 +50,7 @@ Test(render_signals, a_sequence_interrupted_says_what_it_wrote_and_resumes, .tim
     cli_fresh(d);
     const char *args[] = {"render", "fig16_regular", "--frames", "100000", "--every", "2", "--out-dir", OUT "/resume/seq",
                           NULL};
-    pid_t pid = start(d, -1, args);
+    pid_t pid = cli_start(d, -1, 0, args);
     wait_for_frames(OUT "/resume/seq", 4);
     cr_assert_eq(kill(pid, SIGTERM), 0);
     cr_assert_eq(exit_status(pid), 128 + SIGTERM);
@@ -149,7 +120,7 @@ Test(render_signals, every_signal_removes_the_temporaries, .timeout = 240)
         /* the PNG case: a sequence too, so there is something to wait for */
         const char *seq_args[] = {"render", "fire_campfire", "--frames", "100000", "--out", outs[k],
                                   "--out-dir", OUT "/sigs/seq", NULL};
-        pid_t pid = start(d, -1, k == 2 ? seq_args : args);
+        pid_t pid = cli_start(d, -1, 0, k == 2 ? seq_args : args);
         if (k == 2) {
             wait_for_frames(OUT "/sigs/seq", 2);
         } else {
@@ -181,7 +152,7 @@ Test(render_signals, a_closed_pipe_ends_a_raw_render, .timeout = 120)
     cr_assert_eq(pipe(fds), 0);
     cr_assert_eq(fcntl(fds[0], F_SETFD, FD_CLOEXEC), 0); /* the tool must not hold its own reader */
     const char *args[] = {"render", "fire_campfire", "--frames", "100000", "--raw", "--out", "-", NULL};
-    pid_t pid = start(d, fds[1], args);
+    pid_t pid = cli_start(d, fds[1], 0, args);
     close(fds[1]);
     static char buf[480 * 400 * 4];
     size_t got = 0;

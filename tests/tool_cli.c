@@ -7,6 +7,9 @@
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
+#include <fcntl.h>
+#include <signal.h>
+#include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -106,4 +109,50 @@ void cli_check_chart(const char *path, int min_w, int min_h)
             ink += memcmp(c.pixels + (size_t)y * c.stride + (size_t)x * 4, c.pixels, 4) != 0;
     cr_assert_gt(ink, n / 100, "%s: only %zu pixels drawn", path, ink);
     isk_canvas_free(&c);
+}
+
+pid_t cli_start(const char *dir, int out_fd, long fsize, const char *const *args)
+{
+    char tool[512], errp[512], outp[512];
+    snprintf(tool, sizeof tool, "%s/bin/iskra", refimg_build_dir());
+    snprintf(errp, sizeof errp, "%s/stderr.txt", dir);
+    snprintf(outp, sizeof outp, "%s/stdout.txt", dir);
+    pid_t pid = fork();
+    cr_assert_neq(pid, -1);
+    if (pid == 0) {
+        int e = open(errp, O_WRONLY | O_CREAT | O_TRUNC, 0644);
+        int o = out_fd >= 0 ? out_fd : open(outp, O_WRONLY | O_CREAT | O_TRUNC, 0644);
+        if (e < 0 || o < 0 || dup2(e, 2) < 0 || dup2(o, 1) < 0)
+            _exit(99);
+        for (int s = 1; s < 32; s++)
+            signal(s, SIG_DFL);
+        struct rlimit rl = {(rlim_t)fsize, (rlim_t)fsize};
+        if (fsize > 0 && setrlimit(RLIMIT_FSIZE, &rl) != 0)
+            _exit(97);
+        char *argv[32];
+        int n = 0;
+        argv[n++] = tool;
+        for (; args[n - 1] && n < 31; n++)
+            argv[n] = (char *)args[n - 1];
+        argv[n] = NULL;
+        execv(tool, argv);
+        _exit(98);
+    }
+    return pid;
+}
+
+pid_t cli_drain_fifo(const char *fifo, const char *copy)
+{
+    pid_t pid = fork();
+    cr_assert_neq(pid, -1);
+    if (pid == 0) {
+        int in = open(fifo, O_RDONLY), out = open(copy, O_WRONLY | O_CREAT | O_TRUNC, 0644);
+        char buf[4096];
+        ssize_t n;
+        while (in >= 0 && out >= 0 && (n = read(in, buf, sizeof buf)) > 0)
+            if (write(out, buf, (size_t)n) != n)
+                _exit(1);
+        _exit(in < 0 || out < 0);
+    }
+    return pid;
 }

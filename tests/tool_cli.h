@@ -12,8 +12,20 @@
 #ifndef ISKRA_TESTS_TOOL_CLI_H
 #define ISKRA_TESTS_TOOL_CLI_H
 
+#include <sys/types.h>
+
 /* rm -rf dir && mkdir -p dir (asserts success). */
 void cli_fresh(const char *dir);
+
+/* Starts `iskra ARGS...` (args NULL-terminated; no shell) with stderr to
+ * dir/stderr.txt and stdout to out_fd, or to dir/stdout.txt when out_fd
+ * is -1, every signal at its default and, for fsize > 0, a file size
+ * limit of fsize bytes.  Returns at once: waitpid the result. */
+pid_t cli_start(const char *dir, int out_fd, long fsize, const char *const *args);
+
+/* Reads the FIFO to its end in a child process, copying it into `copy`
+ * (the reader a write into a FIFO waits for). */
+pid_t cli_drain_fifo(const char *fifo, const char *copy);
 
 /* Runs `iskra ARGS` with stdout and stderr in dir/stdout.txt and
  * dir/stderr.txt; asserts a normal exit and returns the exit status. */
