@@ -96,6 +96,8 @@ M32_LIBDIRS = $(M32_ROOT)/usr/lib/i386-linux-gnu $(M32_ROOT)/lib/i386-linux-gnu 
 SANFLAGS = -m32 -msse2 -mfpmath=sse -isystem $(M32_ROOT)/usr/include -isystem $(M32_ROOT)/usr/include/i386-linux-gnu \
            $(addprefix -L,$(M32_LIBDIRS)) $(foreach d,$(M32_LIBDIRS),-Wl,-rpath-link,$(d))
 export LD_LIBRARY_PATH = $(subst $(eval) ,:,$(strip $(M32_LIBDIRS)))
+# The i386 libraries, for a test that sets its own library path (build_tree_link.sh).
+export ISKRA_M32_LIBS = $(LD_LIBRARY_PATH)
 OPT     ?= -O3 $(DEBUG_INFO) $(GCC_SCHEDULE)
 PKG_CONFIG = PKG_CONFIG_SYSROOT_DIR=$(M32_ROOT) \
              PKG_CONFIG_LIBDIR=$(M32_ROOT)/usr/lib/i386-linux-gnu/pkgconfig:$(M32_ROOT)/usr/share/pkgconfig pkg-config

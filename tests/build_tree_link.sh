@@ -5,7 +5,9 @@
 # $BUILD/gen/header_examples.env), it needs libiskra.so.MAJOR.MINOR and
 # libiskra-sdl.so.MAJOR.MINOR (the sonames), and runs with
 # LD_LIBRARY_PATH=$BUILD/lib alone: the build tree holds a file or link of
-# each soname, as an installed tree does.  The program opens a window
+# each soname, as an installed tree does.  (A 32-bit build, M32=1, keeps
+# the path to its fetched i386 libraries after it: SDL2 and libpng live
+# there, not on the system.)  The program opens a window
 # (SDL_VIDEODRIVER=dummy), draws into a canvas and checks that the library
 # it runs with is the one its headers describe.
 # Prints "build tree link: ok"; exit status 0 on success.
@@ -57,7 +59,7 @@ for lib in libiskra libiskra-sdl; do
     readelf -d "$work/prog" | grep -q "NEEDED.*\[$lib\.so\.$so\]" || fail "the program does not need $lib.so.$so"
     [ -e "$BUILD/lib/$lib.so.$so" ] || fail "$BUILD/lib has no $lib.so.$so (the soname)"
 done
-out=$(SDL_VIDEODRIVER=dummy SDL_AUDIODRIVER=dummy LD_LIBRARY_PATH="$BUILD/lib" "$work/prog" 2>&1) \
+out=$(SDL_VIDEODRIVER=dummy SDL_AUDIODRIVER=dummy LD_LIBRARY_PATH="$BUILD/lib${ISKRA_M32_LIBS:+:$ISKRA_M32_LIBS}" "$work/prog" 2>&1) \
     || fail "the program does not start with LD_LIBRARY_PATH=$BUILD/lib: $out"
 [ "$out" = drawn ] || fail "unexpected output: $out"
 echo "build tree link: ok"
