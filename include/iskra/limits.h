@@ -100,6 +100,10 @@ extern "C" {
 #define ISK_PREWARM_MAX_STEPS 100000 /* ... and at most this many of the emitter's substeps */
 #define ISK_TURBULENCE_SCALE_MIN 1e-9 /* world units */
 #define ISK_DURATION_MAX 1e9         /* seconds a stream's emission cycle may last */
+/* burst_every below this many seconds (down to 5e-324) is read as this:
+ * either is finer than any clock, and a cycle of ISK_DURATION_MAX or a
+ * step of ISK_DT_MAX then still counts a finite number of bursts. */
+#define ISK_BURST_EVERY_MIN 1e-290
 /* |spin| and spin_range, degrees per second: a thousand turns a second, far
  * past any visible spin.  One step turns by at most 2 * 6284 rad/s *
  * ISK_DT_MAX < 1.3e7 rad, which the spin stage's wrap into [-pi, pi)
