@@ -40,8 +40,9 @@
  *                                     10^4-particle fire are a few seconds); a longer
  *                                     warm-up is a mistake, not a wish
  *   turbulence scale                  range [ISK_TURBULENCE_SCALE_MIN, ISK_COORD_MAX]: x/scale
- *                                     stays finite; noise coordinates beyond 2^52 (where a
- *                                     double has no fraction left) are clamped there
+ *                                     stays finite; where x/scale or y/scale is beyond
+ *                                     2^52 (a double has no fraction left) there is no
+ *                                     turbulence; time beyond it freezes the pattern
  *   stream duration                   range 0..ISK_DURATION_MAX seconds
  *   a trail's points (trail = N)      range 0..ISK_TRAIL_MAX: the history costs 16 bytes per
  *                                     point per particle (64 points: 1 KiB, so a pool of
