@@ -56,9 +56,11 @@
  *     at g = 9.81, h = 1/60), e.g. the top of an arc grazing a ceiling;
  *   - more than ISK_BOUNCE_MAX_REFLECTIONS hits on walls in one step (very
  *     fast particles in a small box) fold the rest of the path in closed
- *     form (iskra/bounds.h); hops on one wall beyond that are flown in
- *     closed form without drag (the whole ones skipped: a restitution-1
- *     ball keeps hopping at any step), and rest with drag.
+ *     form (iskra/bounds.h), except without drag: with restitution 1 the
+ *     path repeats from one bounce on a wall to the next on it, and the
+ *     whole periods are skipped; hops on one wall that shrink are a
+ *     geometric series, skipped too.  With drag, hops on one wall beyond
+ *     that count rest.
  *
  * Speeds.  A deflector's restitution may exceed 1 (a pinball bumper); a
  * bounce then never leaves a speed above ISK_SPEED_LIMIT (the velocity is

@@ -286,6 +286,19 @@ typedef struct axis_motion {
     double a, delta;
 } axis_motion;
 
+/* Restitution 1 without drag: the path from a bounce on a wall repeats
+ * from the next bounce on it, `period` later.  Flies the whole periods
+ * that fit in the rest s of the step.  Returns 0 when none fits. */
+static int skip_periods(double *s, double period)
+{
+    if (!(period > 0.0 && *s >= period))
+        return 0;
+    *s -= period * floor(*s / period);
+    if (*s < 0.0)
+        *s = 0.0; /* rounding: the bounce itself */
+    return 1;
+}
+
 /* Hops on one wall without drag, from it at speed |U| for the rest s of
  * the step: each lasts 2 |U| / |a|, c times the one before.  Flies the
  * whole ones that fit in s (c = 1: they repeat; c < 1: fewer than all, or
@@ -381,6 +394,9 @@ static int impact_axis(double *pos, double *vel, const axis_motion *am, size_t i
     }
     double s = h, end = p1, uend = v1 - delta;
     int last = 0, same = 0, skipped = 0;
+    /* the rest of the step at the last bounce on each wall, and the time
+     * between the last two bounces on the wall `last` */
+    double s_lo = NAN, s_hi = NAN, period = NAN;
     for (int n = 0;; n++) {
         if (end >= lo && end <= hi && !turn_may_leave(P, U, a, k, lo, hi))
             break; /* what the tests below would find, without the turning point */
@@ -395,8 +411,11 @@ static int impact_axis(double *pos, double *vel, const axis_motion *am, size_t i
         const int out_hi = end > hi || (turn_in && p_turn > hi);
         if (!out_lo && !out_hi)
             break;
-        if (n == ISK_BOUNCE_MAX_REFLECTIONS && same >= 2 && k == 0.0 && !skipped &&
-            skip_hops(&U, &s, a, c)) {
+        /* Without drag, restitution 1 repeats the path from one bounce on
+         * a wall to the next on it (one wall or two): whole periods are
+         * skipped.  Hops on one wall that shrink: skip_hops. */
+        if (n == ISK_BOUNCE_MAX_REFLECTIONS && k == 0.0 && !skipped &&
+            ((c == 1.0 && skip_periods(&s, period)) || (same >= 2 && skip_hops(&U, &s, a, c)))) {
             skipped = 1; /* the whole hops on the wall `last` are flown: the last ones, afresh */
             n = 0;
             double e, d1, d2;
@@ -445,6 +464,9 @@ static int impact_axis(double *pos, double *vel, const axis_motion *am, size_t i
             *vel = delta;
             return BOUNCED;
         }
+        double *s_wall = wall < 0 ? &s_lo : &s_hi;
+        period = *s_wall - s; /* NaN at a wall's first bounce */
+        *s_wall = s;
         same = wall == last ? same + 1 : 0;
         last = wall;
         isk_fl_basis_cached(cache, k, s, &e, &d1, &d2);
