@@ -55,6 +55,31 @@ Test(births, burst_intervals_down_to_1e_300_end_every_frame, .timeout = 60)
     }
 }
 
+/* burst_every below 1e-300, down to the smallest double (accepted): a
+ * time over it was an infinite burst index, the next burst at infinity,
+ * and emission stopped after the first life.  Now it is read as
+ * ISK_BURST_EVERY_MIN, and the pool is still refilled after two lives;
+ * the same with a looping duration (a whole cycle over it was NaN). */
+Test(births, burst_intervals_down_to_the_smallest_double_keep_emitting, .timeout = 60)
+{
+    static const char *const every[] = {"5e-324", "1e-320", "2.2e-308", "1e-295"};
+    for (int k = 0; k < 4; k++)
+        for (int loop = 0; loop < 2; loop++) {
+            char keys[200];
+            snprintf(keys, sizeof keys, "count = 2\nburst_every = %s\ncapacity = 500\nlife = 0.25\n%s", every[k],
+                     loop ? "duration = 0.1\nloop = true\n" : "");
+            isk_effect *fx = stream(keys, 1.0 / 60);
+            for (int f = 0; f < 40; f++)
+                cr_assert_eq(isk_effect_step(fx), ISK_OK);
+            const isk_particles *p = isk_effect_particles(fx, 0);
+            cr_assert_eq(p->count, 500, "every %s%s: %zu alive after 0.67 s", every[k], loop ? ", looping" : "",
+                         p->count);
+            for (size_t i = 0; i < p->count; i++)
+                cr_assert_lt(p->age[i], 0.25, "every %s: an old particle", every[k]);
+            isk_effect_destroy(fx);
+        }
+}
+
 /* The dropped count is the due births the pool had no room for, computed
  * rather than counted one by one: 10^4 bursts of 3 a frame into a pool of
  * 100 (their ages all below the life). */

@@ -10,6 +10,7 @@
  * number of threads. */
 #include <criterion/criterion.h>
 
+#include <float.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -344,6 +345,49 @@ Test(looks, angles_wrap_and_stay_precise)
         cr_assert(a >= -PI && a < PI, "angle %.17g after %d steps", a, i + 1);
     }
     isk_effect_destroy(fx);
+}
+
+/* The phase at the fastest spin: each step's turn (6.3e6 rad at a step of
+ * 1000 s) is rounded at its own size and wrapped with a rounded 2 pi, so
+ * the angle drifts from the exact spin x time by up to 1.4e-9 rad a step
+ * at 1000 s and 2.3e-14 at 1/60 s (limits.h), never more.  The reference:
+ * the same turns in long double (64-bit mantissa; where long double is a
+ * double, nothing to compare with). */
+Test(looks, the_phase_drifts_no_more_than_limits_h_says)
+{
+#if LDBL_MANT_DIG >= 64
+    const struct {
+        const char *dt;
+        long double h;
+        double per_step;
+    } cases[2] = {{"1000", 1000.0L, 1.4e-9}, {"1/60", 1.0L / 60, 2.3e-14}};
+    for (int c = 0; c < 2; c++) {
+        char text[300];
+        snprintf(text, sizeof text,
+                 "[scene]\ndt = %s\n[emitter e]\nsource = particle\nspin = -360000\nspin_range = 0\n"
+                 "align = velocity\n",
+                 cases[c].dt);
+        isk_effect *fx = make(text);
+        cr_assert_eq(isk_effect_step(fx), ISK_OK);
+        const isk_particles *p = isk_effect_particles(fx, 0);
+        cr_assert_eq(p->count, 1);
+        const long double two_pi = 6.283185307179586476925286766559L;
+        /* the step's h as the scene has it (1/60 rounded to a double) */
+        const long double turn = (long double)p->spin[0] * (long double)(double)cases[c].h;
+        const double a0 = p->angle[0];
+        double worst = 0;
+        for (int n = 1; n <= 2000; n++) {
+            cr_assert_eq(isk_effect_step(fx), ISK_OK);
+            const long double exact = remainderl((long double)a0 + n * turn, two_pi);
+            const double e = (double)fabsl(remainderl((long double)p->angle[0] - exact, two_pi));
+            worst = e > worst ? e : worst;
+            cr_assert(e <= cases[c].per_step * n, "dt = %s, step %d: %.3g rad from the exact phase", cases[c].dt,
+                      n, e);
+        }
+        cr_log_info("dt = %s: drift after 2000 steps %.3g rad", cases[c].dt, worst);
+        isk_effect_destroy(fx);
+    }
+#endif
 }
 
 /* The angle column and the spin stage only where used; no draw without a

@@ -105,6 +105,29 @@ Test(fx_motion_field, turbulence_is_seeded_and_deterministic)
     cr_assert(isfinite(n) && isfinite(du) && isfinite(dv));
 }
 
+/* Where the noise lattice has no fraction left (|x/scale| or |y/scale|
+ * from 2^52 on) there is no turbulence: before, every such point was the
+ * clamped corner, a uniform wind of sqrt 2 x strength.  Just inside, the
+ * field is still there. */
+Test(fx_motion_field, no_turbulence_past_the_lattice)
+{
+    int inside = 0;
+    for (int k = 0; k < 200; k++) {
+        const double far = ldexp(1.0, 52 + k % 60) * (1.0 + k / 200.0), t = 0.37 * k;
+        const double pts[4][2] = {{far, 0.3}, {-far, 2.7}, {1.5, far}, {far, -far}};
+        for (int q = 0; q < 4; q++) {
+            double du = 1, dv = 1;
+            const double n = isk__noise3(isk__noise_key(3, k), pts[q][0], pts[q][1], t, &du, &dv);
+            cr_assert(n == 0.0 && du == 0.0 && dv == 0.0, "(%g, %g): noise %g, gradient (%g, %g)", pts[q][0],
+                      pts[q][1], n, du, dv);
+        }
+        double du, dv;
+        isk__noise3(isk__noise_key(3, k), 0x1p50 + 0.3 + k, 0.6 * k, t, &du, &dv);
+        inside += du != 0.0 || dv != 0.0;
+    }
+    cr_assert_gt(inside, 150, "inside the lattice the field is there");
+}
+
 /* The field's time: speed*t moves the pattern; speed 0 is still. */
 Test(fx_motion_field, turbulence_evolves_with_speed)
 {

@@ -204,6 +204,37 @@ Test(impact, a_ball_in_a_box_follows_the_exact_bounces_at_any_step)
         }
 }
 
+/* Restitution 1 at steps longer than a hop: the hops do not shrink, so
+ * neither "every further hop fits in the step" nor the resting contact at
+ * once (within |a| h^2 / 64 of the floor) may rest the ball.  Dropped from
+ * 9 m onto a floor (a hop of 2.71 s), at steps of 8 s to 1000 s, it keeps
+ * following the exact bounces (before: put to rest on the floor, all its
+ * energy gone).  The same with c = 0.99, whose hops shrink but take 271 s
+ * to die out: they do not fit in these steps either. */
+Test(impact, a_ball_that_keeps_hopping_is_not_rested_by_a_long_step)
+{
+    const double dts[4] = {8.0, 13.0, 100.0, 1000.0}, cs[2] = {1.0, 0.99};
+    for (int m = 0; m < ISK_INTEGRATOR_COUNT; m++)
+        for (int j = 0; j < 4; j++)
+            for (int q = 0; q < 2 && (q == 0 || dts[j] < 20); q++) {
+                const double h = dts[j], c = cs[q];
+                const double off = m == ISK_INTEGRATE_SEMI_EULER ? -0.5 * G * h
+                                                                 : (m == ISK_INTEGRATE_EULER ? 0.5 * G * h : 0.0);
+                isk_system s;
+                /* the flight starts at rest (the integrator's velocity is -off) */
+                ball_system(&s, (isk_integrator)m, c, 0.0, 0.5, 9, 0, -off, ISK_SIDE_BOTTOM);
+                ref r = {0.5, 9, 0, 0};
+                for (int i = 0; i < 3; i++) {
+                    cr_assert_eq(isk_system_step(&s, h), ISK_OK);
+                    r = reference(r, c, 0.0, h);
+                    /* hundreds of hops a step: the rounding of each adds up */
+                    cr_assert(fabs(s.particles.y[0] - r.y) < 1e-7 * (1 + h), "%s c=%g h=%g step %d: y %.12g, the reference %.12g",
+                              isk_integrator_name((isk_integrator)m), c, h, i, s.particles.y[0], r.y);
+                }
+                isk_system_free(&s);
+            }
+}
+
 /* After a bounce inside the step, the reflected flight may cross the
  * opposite wall only around its turning point and end inside: the walls
  * look at the turning point of every flight after a bounce (a flight's
@@ -333,6 +364,29 @@ Test(impact, a_closed_box_of_500_particles_keeps_its_energy, .timeout = 120)
                       segments ? "segments" : "walls", method, e1 / e0, (int)BOX_FRAMES);
             isk_effect_destroy(fx);
         }
+}
+
+/* One live frame of dt = 1000 in the closed box (restitution 1): every
+ * particle makes hundreds of bounces, on one wall or between two.  The
+ * integrators whose velocity is the flight's keep the energy (before: the
+ * resting contact at once removed 86 % of it; the path between floor and
+ * ceiling, folded without gravity, multiplied it 1465 times). */
+Test(impact, a_closed_box_keeps_its_energy_through_a_frame_of_1000_s, .timeout = 60)
+{
+    static const char *const methods[] = {"verlet", "rk4", "yoshida4"};
+    for (int m = 0; m < 3; m++) {
+        isk_effect *fx = box(0, methods[m], 1.0, "source = explosion\nexplosion = gauss\nposition = 0, 5\ncount = 500\n");
+        const isk_particles *p = isk_effect_particles(fx, 0);
+        cr_assert_eq(isk_effect_step(fx), ISK_OK);
+        const double e0 = energy(p);
+        isk_error err;
+        cr_assert_eq(isk_effect_set(fx, "scene", "dt", "1000", &err), ISK_OK, "%s", err.message);
+        cr_assert_eq(isk_effect_step(fx), ISK_OK);
+        const double e1 = energy(p);
+        cr_assert_eq(p->count, 500);
+        cr_assert(fabs(e1 / e0 - 1) < 1e-6, "%s: energy %.9g -> %.9g after a frame of 1000 s", methods[m], e0, e1);
+        isk_effect_destroy(fx);
+    }
 }
 
 /* c < 1: everything comes to rest on the floor and stays on it (never

@@ -109,6 +109,32 @@ Test(keys, defaults_are_valid_and_read_back)
     }
 }
 
+/* A default the docs give as a word is accepted written out: every key
+ * whose empty default is documented as "none" (texture, on_death, on_hit)
+ * reads "none" as that default (before: texture = none looked for a file
+ * "none", on_death = none for an emitter of that name). */
+Test(keys, the_documented_default_none_is_accepted)
+{
+    int seen = 0;
+    for (int i = 0; i < isk_key_count(); i++) {
+        const isk_key *k = isk_key_at(i);
+        if (!(k->dflt && !*k->dflt && k->dflt_doc && !strcmp(k->dflt_doc, "none")))
+            continue;
+        seen++;
+        isk_effect_def d, e;
+        void *item = fresh_item(&d, k->section), *dflt = fresh_item(&e, k->section);
+        char why[400], a[400], b[400];
+        cr_assert_eq(isk__fx_key_set_default(k, dflt), 0, "%s", k->name);
+        cr_assert_eq(isk__fx_key_parse(k, item, "none", &d, why, sizeof why), 0, "%s = none: %s", k->name, why);
+        cr_assert_eq(isk__fx_key_format(k, item, &d, a, sizeof a), 0, "%s", k->name);
+        cr_assert_eq(isk__fx_key_format(k, dflt, &e, b, sizeof b), 0, "%s", k->name);
+        cr_assert_str_eq(a, b, "%s = none reads as '%s', the default is '%s'", k->name, a, b);
+        isk_effect_def_free(&d);
+        isk_effect_def_free(&e);
+    }
+    cr_assert_geq(seen, 3, "texture, on_death and on_hit at least");
+}
+
 /* Values that need every digit survive a round trip bit for bit (the
  * simulator's save and isk_effect_get depend on it). */
 Test(keys, numbers_and_angles_round_trip_exactly)

@@ -97,7 +97,7 @@ Test(rest_screen, builds_agree_and_their_rests_are_the_walls_own)
             m[j] = mass(&s);
             resting[j] = end_state(&s, wall, a, delta, drag > 0.0 ? drag / m[j] : 0.0, h, &pos[j], &vel[j]);
         }
-        const isk_rest_axis ax = {a, delta, h, lo, hi};
+        const isk_rest_axis ax = {a, delta, h, lo, hi, 0.5}; /* the walls' restitution below */
         for (int b = 0; b < nb; b++)
             build[b](n, pos, vel, drag > 0.0 ? m : NULL, drag, &ax, rest[b]);
         for (size_t j = 0; j < n; j++) {

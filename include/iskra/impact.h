@@ -41,7 +41,10 @@
  * the wall for semi-implicit Euler, which is the velocity whose next step
  * lands it on the wall again).  A particle within |a| h^2 / 64 of a wall
  * it is pressed into, no faster than |a| h / 64, rests at once (any hops
- * left would be lower than |a| h^2 / 60: 2.7e-7 m at g = 9.81, h = 1/600).  A particle
+ * left would be lower than |a| h^2 / 60: 2.7e-7 m at g = 9.81, h = 1/600)
+ * when c <= 0.64; above, both bounds shrink with 1 - c so that those hops
+ * still fit in the step, and at c = 1 (hops that never shrink) only a
+ * particle on the wall at speed 0 rests.  A particle
  * never leaves a wall or a segment by rounding, and a resting one costs a
  * few operations a step, not a root solve.
  *
@@ -53,7 +56,11 @@
  *     at g = 9.81, h = 1/60), e.g. the top of an arc grazing a ceiling;
  *   - more than ISK_BOUNCE_MAX_REFLECTIONS hits on walls in one step (very
  *     fast particles in a small box) fold the rest of the path in closed
- *     form (iskra/bounds.h); hops on one wall beyond that count rest.
+ *     form (iskra/bounds.h), except without drag: with restitution 1 the
+ *     path repeats from one bounce on a wall to the next on it, and the
+ *     whole periods are skipped; hops on one wall that shrink are a
+ *     geometric series, skipped too.  With drag, hops on one wall beyond
+ *     that count rest.
  *
  * Speeds.  A deflector's restitution may exceed 1 (a pinball bumper); a
  * bounce then never leaves a speed above ISK_SPEED_LIMIT (the velocity is

@@ -197,7 +197,7 @@ static double fx_most_alive(const isk_effect_def *d, int i)
         double bursts = 0;
         if (em->born.count)
             bursts = (double)em->born.count *
-                     (em->born.burst_every > 0 ? ceil(life / em->born.burst_every) + 1
+                     (em->born.burst_every > 0 ? ceil(life / isk__fx_burst_every(em)) + 1
                       : em->born.loop && em->born.duration > 0 ? ceil(life / em->born.duration) + 1
                                                                : 1);
         most = ceil(em->born.rate * life) + 1 + bursts;

@@ -461,4 +461,13 @@ void isk__fx_retain_clear(fx_retained *rt); /* frees the records; keeps the coun
 /* effect_render.c: the batched dots' rule for g (ISK__BATCH_*, keep-on-canvas or-ed in). */
 unsigned isk__fx_dots_rule(const fx_group *g);
 
+/* A stream's interval between bursts as the schedule uses it: 0 (a single
+ * burst), or burst_every read as at least ISK_BURST_EVERY_MIN, so that a
+ * time over it is a finite count. */
+static inline double isk__fx_burst_every(const isk_emitter_def *em)
+{
+    const double every = em->born.burst_every;
+    return every > 0 && every < ISK_BURST_EVERY_MIN ? ISK_BURST_EVERY_MIN : every;
+}
+
 #endif

@@ -297,7 +297,7 @@ static size_t room_left(const fx_group *g)
 static isk_status run_bursts(isk_effect *e, fx_group *g, const fx_launcher *l, double t1, double t1_tol, double h)
 {
     const isk_emitter_def *em = g->def;
-    const double every = em->born.burst_every, nb = g->next_burst;
+    const double every = isk__fx_burst_every(em), nb = g->next_burst;
     double due = every > 0 ? floor((t1_tol - nb) / every) + 1.0 : 1.0;
     if (!(due >= 1.0))
         due = 1.0; /* rounding at the edge: the one that made the test true */
@@ -358,7 +358,7 @@ static double bursts_per_cycle(const isk_emitter_def *em)
         return 0;
     if (!(em->born.burst_every > 0))
         return 1;
-    const double x = em->born.duration / em->born.burst_every;
+    const double x = em->born.duration / isk__fx_burst_every(em);
     const double m = ceil(x - 1e-9 * (x > 1.0 ? x : 1.0));
     return m < 1 ? 1 : m;
 }
@@ -448,7 +448,7 @@ static isk_status run_cycles(isk_effect *e, fx_group *g, const fx_launcher *l, d
 {
     const isk_emitter_def *em = g->def;
     const double t1 = t0 + h;
-    const double every = em->born.burst_every > 0 ? em->born.burst_every : em->born.duration;
+    const double every = em->born.burst_every > 0 ? isk__fx_burst_every(em) : em->born.duration;
     isk_status s = run_events(e, g, l, t1, h, &g->cycle_bursts, bursts_per_cycle(em), every, 0.0, em->born.count);
     if (s != ISK_OK || !(em->born.rate > 0))
         return s;

@@ -293,10 +293,19 @@ static isk_status parse_angle(const isk_key *k, void *item, const char *text, ch
     return ISK_OK;
 }
 
+/* Whether the key's default is empty and documented as "none": that word,
+ * the documented default written out, then reads as the default. */
+static int none_is_default(const isk_key *k)
+{
+    return k->dflt && !*k->dflt && k->dflt_doc && !strcmp(k->dflt_doc, "none");
+}
+
 isk_status isk__fx_key_parse(const isk_key *k, void *item, const char *text, const isk_effect_def *d, char *why, size_t n)
 {
     double x = 0, q[4];
     int i;
+    if (none_is_default(k) && !strcmp(text, "none"))
+        text = k->dflt;
     switch (k->type) {
     case ISK_KEY_NUMBER: {
         int w = isk__fx_word_index(k, text);

@@ -286,6 +286,51 @@ typedef struct axis_motion {
     double a, delta;
 } axis_motion;
 
+/* Restitution 1 without drag: the path from a bounce on a wall repeats
+ * from the next bounce on it, `period` later.  Flies the whole periods
+ * that fit in the rest s of the step.  Returns 0 when none fits. */
+static int skip_periods(double *s, double period)
+{
+    if (!(period > 0.0 && *s >= period))
+        return 0;
+    *s -= period * floor(*s / period);
+    if (*s < 0.0)
+        *s = 0.0; /* rounding: the bounce itself */
+    return 1;
+}
+
+/* Hops on one wall without drag, from it at speed |U| for the rest s of
+ * the step: each lasts 2 |U| / |a|, c times the one before.  Flies the
+ * whole ones that fit in s (c = 1: they repeat; c < 1: fewer than all, or
+ * the fitting rule would have rested it) in closed form, leaving U and s
+ * for the last, partial one.  Returns 0 when there is nothing to skip. */
+static int skip_hops(double *U, double *s, double a, double c)
+{
+    const double T0 = 2.0 * fabs(*U) / fabs(a);
+    if (!(T0 > 0.0 && isfinite(T0) && *s > T0))
+        return 0;
+    double N, span;
+    if (c == 1.0) {
+        N = floor(*s / T0);
+        span = N * T0;
+    } else {
+        const double q = 1.0 - *s * (1.0 - c) / T0; /* in (0, 1): all of them do not fit */
+        if (!(q > 0.0 && c > 0.0))
+            return 0;
+        N = floor(log(q) / log(c));
+        span = T0 * (1.0 - pow(c, N)) / (1.0 - c);
+    }
+    while (N >= 1.0 && span > *s) { /* rounding: never past the step's end */
+        N -= 1.0;
+        span = c == 1.0 ? N * T0 : T0 * (1.0 - pow(c, N)) / (1.0 - c);
+    }
+    if (!(N >= 1.0))
+        return 0;
+    *U *= c == 1.0 ? 1.0 : pow(c, N);
+    *s -= span;
+    return 1;
+}
+
 /* One axis of one particle whose step ended outside [lo, hi] (a disabled
  * wall is at -inf / +inf): the bounces of iskra/impact.h.  (*pos, *vel) is
  * the integrator's end state, k the drag rate b/m. */
@@ -333,8 +378,10 @@ static int impact_axis(double *pos, double *vel, const axis_motion *am, size_t i
      * Euler forms the flight is not exactly theirs: a resting particle
      * comes back with a speed of ~ (b h/m) |a| h and would otherwise make a
      * real hop, with Newton, every step.  A ball in flight is never this
-     * slow this close to the floor, whatever the step.) */
-    const double near = fabs(a) * h * h / 64.0, slow = fabs(a) * h / 64.0;
+     * slow this close to the floor, whatever the step.)  Only while every
+     * further hop fits in the step: the bounds shrink as c nears 1. */
+    double near, slow;
+    isk__rest_at_once(a, h, c, &near, &slow);
     if (a < 0.0 && P - lo <= near && fabs(U) <= slow) {
         *pos = lo;
         *vel = delta;
@@ -346,7 +393,10 @@ static int impact_axis(double *pos, double *vel, const axis_motion *am, size_t i
         return RESTED_AT_ONCE;
     }
     double s = h, end = p1, uend = v1 - delta;
-    int last = 0, same = 0;
+    int last = 0, same = 0, skipped = 0;
+    /* the rest of the step at the last bounce on each wall, and the time
+     * between the last two bounces on the wall `last` */
+    double s_lo = NAN, s_hi = NAN, period = NAN;
     for (int n = 0;; n++) {
         if (end >= lo && end <= hi && !turn_may_leave(P, U, a, k, lo, hi))
             break; /* what the tests below would find, without the turning point */
@@ -361,8 +411,21 @@ static int impact_axis(double *pos, double *vel, const axis_motion *am, size_t i
         const int out_hi = end > hi || (turn_in && p_turn > hi);
         if (!out_lo && !out_hi)
             break;
-        if (n == ISK_BOUNCE_MAX_REFLECTIONS) {
-            if (same >= 2) { /* hopping on one wall ever more often: it rests there */
+        /* Without drag, restitution 1 repeats the path from one bounce on
+         * a wall to the next on it (one wall or two): whole periods are
+         * skipped.  Hops on one wall that shrink: skip_hops. */
+        if (n == ISK_BOUNCE_MAX_REFLECTIONS && k == 0.0 && !skipped &&
+            ((c == 1.0 && skip_periods(&s, period)) || (same >= 2 && skip_hops(&U, &s, a, c)))) {
+            skipped = 1; /* the whole hops on the wall `last` are flown: the last ones, afresh */
+            n = 0;
+            double e, d1, d2;
+            isk_fl_basis_cached(cache, k, s, &e, &d1, &d2);
+            end = P + U * d1 + a * d2;
+            uend = U * e + a * d1;
+            continue;
+        }
+        if (n >= ISK_BOUNCE_MAX_REFLECTIONS) {
+            if (same >= 2) { /* hopping on one wall ever more often (with drag): it rests there */
                 *pos = last < 0 ? lo : hi;
                 *vel = delta;
                 return BOUNCED;
@@ -401,6 +464,9 @@ static int impact_axis(double *pos, double *vel, const axis_motion *am, size_t i
             *vel = delta;
             return BOUNCED;
         }
+        double *s_wall = wall < 0 ? &s_lo : &s_hi;
+        period = *s_wall - s; /* NaN at a wall's first bounce */
+        *s_wall = s;
         same = wall == last ? same + 1 : 0;
         last = wall;
         isk_fl_basis_cached(cache, k, s, &e, &d1, &d2);
@@ -533,7 +599,7 @@ static uint32_t screen_rests(size_t o, size_t n, double *pos, double *vel, const
 {
     if (am->p0 || am->a == 0.0 || !(isfinite(am->a) && isfinite(am->delta)) || !has_bits(need, REST_SCREEN_MIN))
         return need;
-    const isk_rest_axis ax = {am->a, am->delta, iw->h, lo, hi};
+    const isk_rest_axis ax = {am->a, am->delta, iw->h, lo, hi, iw->c};
     const double *m = iw->m;
     double rest[ISK_WALL_SCREEN];
     iw->rest_screen(n, pos + o, vel + o, m ? m + o : NULL, iw->drag, &ax, rest);

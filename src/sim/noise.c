@@ -35,11 +35,15 @@ static const signed char *corner_grad(uint64_t key, int64_t i, int64_t j, int64_
     return grad[h >> 60];
 }
 
-/* The lattice cell of u and the fraction within it; u beyond 2^52 (no
- * fraction left, and an integer conversion would overflow) is clamped. */
+/* Beyond 2^52 a double has no fraction left: every point is a lattice
+ * point, where the noise is 0 and its gradient that corner's, the same
+ * everywhere past the clamp below (a uniform wind of sqrt 2 x strength). */
+static const double lim = 4503599627370496.0; /* 2^52 */
+
+/* The lattice cell of u and the fraction within it; u beyond 2^52 (and an
+ * integer conversion would overflow) is clamped. */
 static double cell(double u, int64_t *i)
 {
-    const double lim = 4503599627370496.0; /* 2^52 */
     if (!(u > -lim))
         u = -lim; /* NaN too: never converted */
     if (u > lim)
@@ -54,6 +58,16 @@ static double dfade(double t) { return 30.0 * t * t * (t * (t - 2.0) + 1.0); }
 
 double isk__noise3(uint64_t key, double u, double v, double w, double *du, double *dv)
 {
+    /* Where the plane has no lattice fraction left (or is not a number)
+     * there is no noise: a still field, not a wind.  Time (w) past it only
+     * freezes the pattern. */
+    if (!(fabs(u) < lim && fabs(v) < lim)) {
+        if (du)
+            *du = 0.0;
+        if (dv)
+            *dv = 0.0;
+        return 0.0;
+    }
     int64_t i, j, k;
     const double fu = cell(u, &i), fv = cell(v, &j), fw = cell(w, &k);
     const double su = fade(fu), sv = fade(fv), sw = fade(fw);

@@ -12,7 +12,7 @@
  * slow in scalar code (docs/performance.md, "Where the constants come from").  The screen does the same operations
  * for a whole group on vector lanes:
  *
- *     isk_rest_axis ax = {a, delta, h, lo, hi};   // one axis, from the end state
+ *     isk_rest_axis ax = {a, delta, h, lo, hi, c};   // one axis, from the end state
  *     isk__rest_screen_pick()(n, y, vy, m, drag, &ax, rest);   // n <= ISK_WALL_SCREEN
  *     // rest[j] == 1: impact_axis rests particle j on lo; 2: on hi;
  *     // 0: it does something else, or the screen cannot tell (the series
@@ -31,13 +31,30 @@
 #ifndef ISKRA_SIM_REST_SCREEN_H
 #define ISKRA_SIM_REST_SCREEN_H
 
+#include <math.h>
 #include <stddef.h>
 
 typedef struct isk_rest_axis {
     double a, delta; /* the constant acceleration and the integrator's velocity offset (a h offset) */
     double h;        /* the step */
     double lo, hi;   /* the walls (a missing one at -inf / +inf) */
+    double c;        /* their restitution */
 } isk_rest_axis;
+
+/* The resting contact at once (iskra/impact.h): a particle within *near of
+ * a wall it is pressed into, no faster than *slow, rests without a root
+ * solve.  That is sound only when all its further hops fit in the step:
+ * they start at most at V = 0.178 |a| h (V^2 <= 2 |a| near + slow^2) and
+ * last 2 V / (|a| (1 - c)) in all, within h while c <= 0.64; above that
+ * both bounds shrink with 1 - c, to nothing at c = 1, where hops do not
+ * shrink and only a particle on the wall at speed 0 rests.  One rule for
+ * the walls and this screen. */
+static inline void isk__rest_at_once(double a, double h, double c, double *near, double *slow)
+{
+    const double f = c <= 0.64 ? 1.0 : (1.0 - c) / 0.36;
+    *near = fabs(a) * h * h / 64.0 * (f * f);
+    *slow = fabs(a) * h / 64.0 * f;
+}
 
 typedef void (*isk_rest_screen_fn)(size_t n, const double *pos, const double *vel, const double *m, double drag,
                                    const isk_rest_axis *ax, double *rest);

@@ -28,7 +28,8 @@ static inline void rest_screen_loop(size_t n, const double *restrict pos, const 
                           const int with_drag)
 {
     const double a = ax->a, delta = ax->delta, h = ax->h, lo = ax->lo, hi = ax->hi;
-    const double near = fabs(a) * h * h / 64.0, slow = fabs(a) * h / 64.0;
+    double near, slow;
+    isk__rest_at_once(a, h, ax->c, &near, &slow);
     const double lo_side = a < 0.0 ? 1.0 : 0.0, hi_side = a > 0.0 ? 1.0 : 0.0;
     for (size_t i = 0; i < n; i++) {
         const double p1 = pos[i], v1 = vel[i];
