@@ -99,13 +99,6 @@ def open_page(b, url, fragment):
         raise RuntimeError("the page did not start: " + str(b.run("return document.getElementById('status').textContent")))
 
 
-def set_viewport(b, w, h):
-    """Resizes the browser window so that the page's viewport is w x h."""
-    iw, ih = b.run("return [window.innerWidth, window.innerHeight]")
-    rect = b._call("GET", b._s("/window/rect"))
-    b._call("POST", b._s("/window/rect"), {"width": rect["width"] + w - iw, "height": rect["height"] + h - ih})
-
-
 def scenes_match_native(b, url, iskra, frames, only, tmp):
     names = subprocess.run([iskra, "list"], check=True, stdout=subprocess.PIPE, text=True).stdout.split("\n")
     names = [n.split()[0] for n in names if n.strip()]
@@ -209,12 +202,12 @@ def downloads(b, url):
 def fits(b, url):
     for w, h, scene in ((1280, 720, "fig22_simulator_regular"), (1366, 768, "fig22_simulator_regular"),
                         (1280, 720, "fire_campfire")):
-        set_viewport(b, w, h)
+        b.set_viewport(w, h)
         open_page(b, url, "scene=" + scene)
         ww, wh, scale = b.run("return window.iskraPage.size()")
         check("%s fits a %dx%d viewport" % (scene, w, h), ww * scale <= w and wh * scale <= h,
               "window %dx%d at %dx" % (ww, wh, scale))
-    set_viewport(b, 2560, 1440)
+    b.set_viewport(2560, 1440)
     open_page(b, url, "scene=fire_campfire")
     ww, wh, scale = b.run("return window.iskraPage.size()")
     css = b.run("const c = document.getElementById('screen'); return [c.getBoundingClientRect().width, c.width]")

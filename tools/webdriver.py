@@ -163,6 +163,12 @@ class Browser:
         self._call("POST", self._s("/actions"), {"actions": [{"type": "key", "id": "keyboard", "actions": acts}]})
         self._call("DELETE", self._s("/actions"))
 
+    def set_viewport(self, w, h):
+        """Resizes the window so that the page's viewport is w x h."""
+        iw, ih = self.run("return [window.innerWidth, window.innerHeight]")
+        rect = self._call("GET", self._s("/window/rect"))
+        self._call("POST", self._s("/window/rect"), {"width": rect["width"] + w - iw, "height": rect["height"] + h - ih})
+
     def screenshot(self, path):
         with open(path, "wb") as f:
             f.write(base64.b64decode(self._call("GET", self._s("/screenshot"))))

@@ -240,6 +240,21 @@ static void work_text(double w, char *buf, size_t n)
     snprintf(buf, n, "%.3g", w);
 }
 
+/* The refusal: the largest part, the total and the budget ("when": "a
+ * frame" or "to prewarm"; "whole": what could take the total). */
+static isk_status over_budget(isk_error *err, const work_part *top, double total, double budget, const char *when,
+                              const char *units, const char *whole, const char *advice)
+{
+    char part[40], all[40], limit[40];
+    work_text(top->amount, part, sizeof part);
+    work_text(total, all, sizeof all);
+    work_text(budget, limit, sizeof limit);
+    return isk_error_set(err, ISK_ERR_SIZE,
+                         "%s = %s units of work %s (%s); %s could take %s in all, more than the budget of %s "
+                         "(--max-work, isk_effect_def.max_work): %s, or raise the budget",
+                         top->what, part, when, units, whole, all, limit, advice);
+}
+
 isk_status isk__fx_work_fits(const isk_effect *e, isk_error *err)
 {
     const isk_effect_def *d = &e->def;
@@ -275,25 +290,10 @@ isk_status isk__fx_work_fits(const isk_effect *e, isk_error *err)
                  name, frames[i], alive, g->substeps, isk__pipeline_cost(&g->pipeline, 0));
         consider(&warm, frames[i] * step, what);
     }
-    char a[40], b[40], c[40];
-    work_text(budget, b, sizeof b);
-    if (!(frame <= budget)) {
-        work_text(frame, a, sizeof a);
-        work_text(top.amount, c, sizeof c);
-        return isk_error_set(err, ISK_ERR_SIZE,
-                             "%s = %s units of work a frame (particle-steps and pixels); a frame could take %s in "
-                             "all, more than the budget of %s (--max-work, isk_effect_def.max_work): lower them, or "
-                             "raise the budget",
-                             top.what, c, a, b);
-    }
-    if (!(prewarm <= budget)) {
-        work_text(prewarm, a, sizeof a);
-        work_text(warm.amount, c, sizeof c);
-        return isk_error_set(err, ISK_ERR_SIZE,
-                             "%s = %s units of work to prewarm (particle-steps); the prewarm could take %s in all, "
-                             "more than the budget of %s (--max-work, isk_effect_def.max_work): lower the prewarm, "
-                             "rate or capacity, or raise the budget",
-                             warm.what, c, a, b);
-    }
+    if (!(frame <= budget))
+        return over_budget(err, &top, frame, budget, "a frame", "particle-steps and pixels", "a frame", "lower them");
+    if (!(prewarm <= budget))
+        return over_budget(err, &warm, prewarm, budget, "to prewarm", "particle-steps", "the prewarm",
+                           "lower the prewarm, rate or capacity");
     return ISK_OK;
 }
