@@ -239,8 +239,7 @@ static int write_kepler(const study_opts *o, const kepler_table *K)
             snprintf(names[ns], sizeof names[ns], "%s, %s", isk_integrator_name(t->method),
                      q ? "modified energy" : "energy");
             ser[ns] = (isk_chart_series){names[ns], xs, ys[ns], (size_t)K->nstep, style};
-            if (q)
-                ser[ns].style.dash = ISK_DASH_DASHED;
+            ser[ns].style.dash = q ? ISK_DASH_DASHED : ISK_DASH_SOLID;
             ns++;
         }
         for (int j = 0; j < K->nstep; j++)
@@ -441,8 +440,7 @@ static int study_euler(const study_opts *o, isk_system *s)
                 isk_chart_series *x = &ser[2 * c + q];
                 snprintf(names[2 * c + q], sizeof names[0], "%s: %s", cases[c].name, q ? "E~" : "E");
                 *x = (isk_chart_series){names[2 * c + q], t, ys[2 * c + q], k, isk_chart_style_default(c)};
-                if (q)
-                    x->style.dash = ISK_DASH_DASHED;
+                x->style.dash = q ? ISK_DASH_DASHED : ISK_DASH_SOLID;
             }
         }
         isk_chart ch;
