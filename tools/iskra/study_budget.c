@@ -37,7 +37,7 @@ static const struct {
     {ISK_PROBLEM_PROJECTILE, 10.0, 256},
     {ISK_PROBLEM_KEPLER, 100.0, 256},
 };
-enum { NPROB = sizeof PROBLEMS / sizeof PROBLEMS[0], NI = ISK_INTEGRATOR_COUNT, MAXS = 128 };
+enum { NPROB = sizeof PROBLEMS / sizeof PROBLEMS[0], NI = ISK_INTEGRATOR_COUNT, MAXS = 256 };
 enum { BUDGET = 16 };                    /* semi-Euler substeps per frame: the budget */
 static const double FRAME = 1.0 / 60;    /* simulated seconds per frame */
 static const double DIVERGED = 1e3;      /* errors above: left out of the chart */
