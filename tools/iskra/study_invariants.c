@@ -120,6 +120,7 @@ static isk_status kepler_run(isk_system *s, const shadow_terms *t, int n, int pe
     pb.start_min = pb.start_max = 1.0; /* a = 1: period 1 s */
     pb.T = periods;
     const double mu = pb.kq / pb.mass, h = 1.0 / n;
+    const double P0 = 2 * acos(-1.0) / sqrt(mu); /* 2 pi sqrt(a^3/mu), a = 1 */
     isk_status st = isk_system_init(s, 1, 0);
     if (st == ISK_OK)
         st = isk_problem_setup(&pb, s);
@@ -151,7 +152,7 @@ static isk_status kepler_run(isk_system *s, const shadow_terms *t, int n, int pe
         out->energy = fmax(out->energy, fabs(E / E0 - 1));
         out->modified = fmax(out->modified, fabs(Em / M0 - 1));
     }
-    out->period = out->passages > 1 ? fabs((last - first) / (out->passages - 1) - 1.0) : NAN;
+    out->period = out->passages > 1 ? fabs((last - first) / (out->passages - 1) / P0 - 1.0) : NAN;
     if (!t->has_shadow)
         out->modified = NAN;
     isk_system_free(s);
