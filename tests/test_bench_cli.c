@@ -223,7 +223,8 @@ Test(bench_cli, quick_integrator_study_writes_csv_and_charts, .timeout = 120)
 }
 
 /* The long run: 10^3 Kepler periods in the quick run.  The symplectic
- * methods' energy error stays bounded; RK4's grows with the time. */
+ * methods' energy error stays bounded (within 1 % from 10 to 1000
+ * periods); RK4's grows with the time. */
 Test(bench_cli, quick_long_run_shows_bounded_against_drifting, .timeout = 120)
 {
     cli_fresh(OUT "/longrun");
@@ -240,10 +241,13 @@ Test(bench_cli, quick_long_run_shows_bounded_against_drifting, .timeout = 120)
         if (p == 1000)
             last[m] = e;
     }
-    const isk_integrator bounded[4] = {ISK_INTEGRATE_VERLET, ISK_INTEGRATE_LEAPFROG, ISK_INTEGRATE_YOSHIDA4,
-                                       ISK_INTEGRATE_SEMI_EULER};
-    for (int i = 0; i < 4; i++)
-        cr_assert(last[bounded[i]] < 2 * first[bounded[i]], "%s: %g -> %g", isk_integrator_name(bounded[i]),
+    /* tracked after every step, the bounded error does not grow at all
+     * (tracked every 1/16 period it seemed to: the samples missed the
+     * periapsis spike and found it later as the orbit's phase drifted) */
+    const isk_integrator bounded[5] = {ISK_INTEGRATE_VERLET, ISK_INTEGRATE_LEAPFROG, ISK_INTEGRATE_YOSHIDA4,
+                                       ISK_INTEGRATE_SEMI_EULER, ISK_INTEGRATE_STRANG};
+    for (int i = 0; i < 5; i++)
+        cr_assert(last[bounded[i]] < 1.01 * first[bounded[i]], "%s: %g -> %g", isk_integrator_name(bounded[i]),
                   first[bounded[i]], last[bounded[i]]);
     cr_assert(last[ISK_INTEGRATE_RK4] > 50 * first[ISK_INTEGRATE_RK4], "rk4: %g -> %g", first[ISK_INTEGRATE_RK4],
               last[ISK_INTEGRATE_RK4]);
@@ -281,4 +285,119 @@ Test(bench_cli, quick_thesis_scene_study, .timeout = 300)
         snprintf(path, sizeof path, OUT "/thesis/acc/%s", charts[i]);
         cli_check_chart(path, 1200, 800);
     }
+}
+
+/* ---- what each integrator keeps (--only invariants) ------------------------- */
+
+/* One row of invariants_kepler.csv: the column `what` of (integrator, steps). */
+static double kepler_cell(const csv *c, const char *integrator, int steps, const char *what)
+{
+    const int ci = col(c, "integrator"), cn = col(c, "steps_per_period"), cw = col(c, what);
+    for (int r = 0; r < c->nrows; r++)
+        if (!strcmp(c->cell[r][ci], integrator) && (int)num(c->cell[r][cn]) == steps)
+            return num(c->cell[r][cw]);
+    cr_assert_fail("invariants_kepler.csv: no row %s, %d", integrator, steps);
+    return NAN;
+}
+
+static double kepler_order(const csv *c, const char *integrator, int steps, const char *what)
+{
+    return log2(kepler_cell(c, integrator, steps, what) / kepler_cell(c, integrator, 2 * steps, what));
+}
+
+/* The quick run (512 .. 8192 steps per period on the Kepler ellipse e 0.6):
+ * the plain energy swings at order p, the modified energy is flat to order
+ * p + 1 (semi-Euler) or p + 2 (the kick-drift-kick and drift-kick-drift
+ * methods); the numerical orbit's period is second order for semi-Euler
+ * too; RK4's energy error is fifth order at everyday steps and fourth from
+ * 4096 steps per period on.  The Euler forms keep E - offset h m v.a to
+ * rounding in a closed box under gravity while their energy swings by 1 %. */
+Test(bench_cli, quick_invariants_modified_energy_period_and_euler_invariant, .timeout = 120)
+{
+    cli_fresh(OUT "/invariants");
+    cr_assert_eq(cli_run(OUT "/invariants", "bench accuracy --quick --only invariants --out " OUT "/invariants/acc"),
+                 0);
+    csv *c = malloc(sizeof *c);
+    csv_read(c, OUT "/invariants/acc/invariants_kepler.csv");
+    static const struct {
+        const char *name;
+        double p, q, gain; /* plain order, modified order, plain / modified at 1024 steps */
+    } kept[4] = {{"semi-euler", 1, 2, 25}, {"verlet", 2, 4, 5000}, {"leapfrog", 2, 4, 5000}, {"strang", 2, 4, 4000}};
+    for (int i = 0; i < 4; i++) {
+        for (int n = 512; n <= 4096; n *= 2) {
+            double op = kepler_order(c, kept[i].name, n, "energy_swing");
+            double oq = kepler_order(c, kept[i].name, n, "modified_energy_swing");
+            cr_expect(fabs(op - kept[i].p) < 0.05, "%s at %d: energy order %.3f", kept[i].name, n, op);
+            cr_expect(fabs(oq - kept[i].q) < 0.05, "%s at %d: modified energy order %.3f", kept[i].name, n, oq);
+        }
+        double e = kepler_cell(c, kept[i].name, 1024, "energy_swing");
+        double m = kepler_cell(c, kept[i].name, 1024, "modified_energy_swing");
+        cr_expect(e > kept[i].gain * m, "%s at 1024: energy swing %.3e, modified %.3e", kept[i].name, e, m);
+    }
+    /* the period from the orbit's timing, not from the energy */
+    for (int n = 512; n <= 4096; n *= 2) {
+        double o = kepler_order(c, "semi-euler", n, "period_error");
+        cr_expect(fabs(o - 2) < 0.05, "semi-euler period order %.3f at %d", o, n);
+    }
+    double o5 = kepler_order(c, "rk4", 1024, "energy_swing"), o4 = kepler_order(c, "rk4", 4096, "energy_swing");
+    cr_expect(fabs(o5 - 5) < 0.05, "rk4 energy order at 1024 -> 2048: %.3f", o5);
+    cr_expect(fabs(o4 - 4) < 0.1, "rk4 energy order at 4096 -> 8192: %.3f", o4);
+    free(c->text);
+
+    csv_read(c, OUT "/invariants/acc/invariants_euler.csv");
+    cr_assert_eq(c->nrows, 3);
+    const int cs = col(c, "energy_swing"), ck = col(c, "invariant_swing");
+    for (int r = 0; r < 3; r++) {
+        double swing = num(c->cell[r][cs]), kept_ = num(c->cell[r][ck]);
+        cr_expect(swing > 0.01, "%s %s: energy swing %.3e", c->cell[r][0], c->cell[r][1], swing);
+        cr_expect(kept_ < 1e-13, "%s %s: invariant swing %.3e", c->cell[r][0], c->cell[r][1], kept_);
+    }
+    free(c->text);
+    free(c);
+    const char *charts[3] = {"invariants_kepler.png", "invariants_period.png", "invariants_euler.png"};
+    for (int i = 0; i < 3; i++) {
+        char path[256];
+        snprintf(path, sizeof path, OUT "/invariants/acc/%s", charts[i]);
+        cli_check_chart(path, 1200, 800);
+    }
+}
+
+/* Error against time at a fixed cost per frame: every integrator of every
+ * problem has a curve, its substeps fit the budget (or are 1), times grow,
+ * and the errors are the closed form's (exact drag is exact). */
+Test(bench_cli, quick_budget_curves, .timeout = 120)
+{
+    cli_fresh(OUT "/budget");
+    cr_assert_eq(cli_run(OUT "/budget", "bench accuracy --quick --only budget --out " OUT "/budget/acc"), 0);
+    const char *names[2] = {"projectile", "kepler"};
+    csv *c = malloc(sizeof *c);
+    for (int p = 0; p < 2; p++) {
+        char path[256];
+        snprintf(path, sizeof path, OUT "/budget/acc/budget_%s.csv", names[p]);
+        csv_read(c, path);
+        const int ci = col(c, "integrator"), cs = col(c, "substeps"), cf = col(c, "budget_fraction"),
+                  ct = col(c, "time"), ce = col(c, "position_error");
+        int rows[ISK_INTEGRATOR_COUNT] = {0};
+        double last_t[ISK_INTEGRATOR_COUNT] = {0};
+        for (int r = 0; r < c->nrows; r++) {
+            cr_assert_str_eq(c->cell[r][0], names[p]);
+            int m = integrator_index(c->cell[r][ci]);
+            int sub = (int)num(c->cell[r][cs]);
+            double t = num(c->cell[r][ct]), e = num(c->cell[r][ce]);
+            cr_assert(sub >= 1);
+            cr_assert(sub == 1 || num(c->cell[r][cf]) <= 1.0, "%s row %d: over the budget", path, r + 1);
+            cr_assert_gt(t, last_t[m], "%s row %d: time goes forward", path, r + 1);
+            last_t[m] = t;
+            cr_assert(e >= 0, "%s row %d", path, r + 1);
+            if (p == 0 && m == ISK_INTEGRATE_EXACT_DRAG)
+                cr_assert_lt(e, 1e-12, "exact drag is exact at any step");
+            rows[m]++;
+        }
+        for (int m = 0; m < ISK_INTEGRATOR_COUNT; m++)
+            cr_assert_geq(rows[m], 20, "%s: %d rows for %s", path, rows[m], isk_integrator_name((isk_integrator)m));
+        free(c->text);
+        snprintf(path, sizeof path, OUT "/budget/acc/budget_%s.png", names[p]);
+        cli_check_chart(path, 1200, 800);
+    }
+    free(c);
 }

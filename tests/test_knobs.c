@@ -119,6 +119,23 @@ Test(knobs, emission_counts_after_one_second)
         }
 }
 
+/* The thesis's rounding emits up to twice the rate: at 60 steps/s a rate
+ * of 30/s gives dt*rate + 0.5 = 1 every step, 60 particles a second (200 %),
+ * and a rate just below it, 29.99/s, gives 0 every step (0 %). */
+Test(knobs, thesis_rounding_emits_from_nothing_to_twice_the_rate)
+{
+    const double rates[2] = {30, 29.99};
+    const size_t expected[2] = {60, 0};
+    for (int r = 0; r < 2; r++) {
+        isk_effect *fx = stream(60, rates[r], ISK_RATE_THESIS, ISK_BIRTH_BACKDATE, 0, 1, 0);
+        for (int n = 0; n < 60; n++)
+            cr_assert_eq(isk_effect_step(fx), ISK_OK);
+        cr_expect_eq(isk_effect_particle_count(fx), expected[r], "thesis %g/s at 60 steps/s: %zu", rates[r],
+                     isk_effect_particle_count(fx));
+        isk_effect_destroy(fx);
+    }
+}
+
 /* ---- emission: where sub-step births are ---------------------------------------- */
 
 typedef struct birth_err {

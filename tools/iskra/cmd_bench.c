@@ -20,6 +20,9 @@ static const study_entry studies[] = {
     {"integrators", "integrator x step x substeps on five closed-form problems", study_integrators},
     {"longrun", "energy over 10^5 Kepler periods: symplectic bounded, RK4 drifting", study_longrun},
     {"thesis", "fig 29 against a 256-substep reference: pixels off, switch-off frames, seeds", study_thesis},
+    {"budget", "error against simulated time at the cost of 16 semi-Euler substeps per frame", study_budget},
+    {"invariants", "what each integrator keeps: modified energy, Kepler period, the Euler forms' invariant",
+     study_invariants},
     {"knobs", "sine table (and on the campfire), emission modes, ellipse sampler, float vs double", study_knobs},
 };
 enum { NSTUDIES = sizeof studies / sizeof studies[0] };

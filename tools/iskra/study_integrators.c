@@ -395,8 +395,24 @@ static void print_substeps(const results *R)
         }
         qsort(ratio, (size_t)n, sizeof *ratio, cmp_double);
         printf("  substeps %d at dt vs substeps 1 at dt/%d: final states bit-identical in %d of %d;\n"
-               "    time ratio median %.2f (range %.2f..%.2f)\n",
+               "    time ratio median %.2f (range %.2f..%.2f); per integrator:",
                SUBSTEPS[j], SUBSTEPS[j], same, total, ratio[n / 2], ratio[0], ratio[n - 1]);
+        /* the median per integrator: a shared machine's noise shows up here
+         * as ratios far from 1 for single integrators */
+        for (int m = 0; m < NI; m++) {
+            double own[NK];
+            int nown = 0;
+            for (int k = 0; k + shift < NK; k++) {
+                const cell *a = &R->c[m][j][k], *b = &R->c[m][0][k + shift];
+                if (a->ran && b->ran)
+                    own[nown++] = a->ns_run / b->ns_run;
+            }
+            if (nown) {
+                qsort(own, (size_t)nown, sizeof *own, cmp_double);
+                printf(" %s %.2f", isk_integrator_name((isk_integrator)m), own[nown / 2]);
+            }
+        }
+        printf("\n");
     }
     int nondet = 0;
     for (int m = 0; m < NI; m++)
