@@ -79,7 +79,9 @@ static isk_status populate(isk_effect *e, fx_group *g)
         break;
     }
     case ISK_SOURCE_EXPLOSION:
-        if (em->born.start <= 0) {
+        if (em->born.start <= 0 && !em->born.active) {
+            g->fired = 1; /* stopped at its time: skipped (isk_emitter_born.active) */
+        } else if (em->born.start <= 0) {
             s = isk__fx_fire_explosion(e, g, em->born.explosion, em->born.position.x, em->born.position.y, em->born.count,
                                   em->born.kick);
             g->fired = 1;
