@@ -22,6 +22,8 @@
  *   effect_adopt.c    births: every source's particles enter through isk__fx_adopt
  *   effect_clock.c    the time of a frame, a group's time
  *   effect_live.c     changes while running: isk_effect_set / get, potentials
+ *   effect_control.c  driving an emitter by hand: emit, set_active, set_paused, move
+ *   effect_snapshot.c snapshots: the running state kept, put back, as exact bytes
  *   effect_stream.c   when a stream's particles are born
  *   effect_events.c   sub-emitters: deaths and bounces as events, their children
  *   effect_render.c   a frame's drawing: drawings, deflectors, groups in order, potentials
@@ -244,6 +246,13 @@ struct isk_effect {
 /* effect_live.c: the group of "emitter NAME" (messages start with fn);
  * ISK_ERR_NULL, ISK_ERR_RANGE (no such emitter, another section). */
 isk_status isk__fx_emitter_of(isk_effect *e, const char *fn, const char *section, fx_group **g, isk_error *err);
+
+/* effect.c: an effect of def, checked, its groups compiled, nothing born,
+ * no threads started (a snapshot's restore builds one); and e taking
+ * bare's state but keeping its own workers and test knobs, bare left with
+ * e's old state to destroy (the lists are compiled again: ISK_ERR_NOMEM). */
+isk_status isk__fx_create_bare(isk_effect **out, const isk_effect_def *def, isk_error *err);
+isk_status isk__fx_take_state(isk_effect *e, isk_effect *bare);
 
 /* effect_check.c: validates a whole definition; messages name the item. */
 isk_status isk__fx_check(const isk_effect_def *d, isk_error *err);
