@@ -1,6 +1,8 @@
 /* SPDX-License-Identifier: MIT */
 /* iskra/snapshot.h — an effect's whole running state, kept and put back.
  *
+ * Example:
+ *
  *     isk_snapshot *at20;
  *     for (int f = 0; f < 20; f++) isk_effect_step(fx);
  *     isk_effect_snapshot(fx, &at20, &err);          // frame 20, all of it

@@ -243,6 +243,8 @@ isk_status isk__fx_take_state(isk_effect *e, isk_effect *bare)
 
 isk_status isk_effect_create(isk_effect **out, const isk_effect_def *def, isk_error *err)
 {
+    if (!out)
+        return isk_error_set(err, ISK_ERR_NULL, "effect: NULL argument");
     isk_effect *e;
     isk_status s = isk__fx_create_bare(&e, def, err);
     if (s != ISK_OK)
