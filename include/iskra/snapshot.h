@@ -3,13 +3,21 @@
  *
  * Example:
  *
+ *     isk_effect_def d;
+ *     isk_effect *fx;
  *     isk_snapshot *at20;
+ *     isk_error err;
+ *     if (isk_scene_load(&d, "fire_campfire", &err) != ISK_OK) return 2;
+ *     isk_status s = isk_effect_create(&fx, &d, &err);
+ *     isk_effect_def_free(&d);
+ *     if (s != ISK_OK) return 2;
  *     for (int f = 0; f < 20; f++) isk_effect_step(fx);
- *     isk_effect_snapshot(fx, &at20, &err);          // frame 20, all of it
+ *     if (isk_effect_snapshot(fx, &at20, &err) != ISK_OK) return 1;   // frame 20, all of it
  *     for (int f = 20; f < 90; f++) isk_effect_step(fx);
- *     isk_effect_restore(fx, at20, &err);            // back at frame 20
- *     isk_snapshot_save(at20, "at20.snap", &err);    // for another process
+ *     isk_effect_restore(fx, at20, &err);              // back at frame 20, as it was
+ *     isk_snapshot_save(at20, "at20.snap", &err);      // for another process
  *     isk_snapshot_free(at20);
+ *     isk_effect_destroy(fx);
  *
  * A snapshot holds everything a run depends on: the live definition (every
  * isk_effect_set, add and remove so far), the live potentials, each
