@@ -86,6 +86,7 @@
 #include "iskra/tasks.h"
 #include "iskra/effect.h"
 #include "iskra/scene.h"
+#include "iskra/snapshot.h"
 #include "iskra/keys.h"
 #include "iskra/presets.h"
 #include "iskra/chart.h"

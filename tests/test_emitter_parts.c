@@ -33,6 +33,8 @@ typedef struct part_field {
 } part_field;
 
 #define ROW(old, part, name, key, role) {#old, #part, #name, key, role, offsetof(isk_emitter_def, part.name)}
+/* a field new since the parts: no flat field of 0.2 to migrate from */
+#define NEW(part, name, key) {NULL, #part, #name, key, FIELD, offsetof(isk_emitter_def, part.name)}
 
 static const part_field fields[] = {
     ROW(source, born, source, "source", FIELD),
@@ -58,6 +60,7 @@ static const part_field fields[] = {
     ROW(emitter_velocity, born, emitter_velocity, "emitter_velocity", FIELD),
     ROW(space, born, space, "space", FIELD),
     ROW(capacity, born, capacity, "capacity", FIELD),
+    NEW(born, active, "active"),
     ROW(launch, launch, kind, "launch", FIELD),
     ROW(vel, launch, velocity, "velocity", FIELD),
     ROW(angle, launch, angle, "angle", FIELD),
@@ -74,6 +77,7 @@ static const part_field fields[] = {
     ROW(deflectors, motion, deflectors, "deflectors", FIELD),
     ROW(ndeflectors, motion, ndeflectors, "deflectors", COUNT),
     ROW(bounded, motion, bounded, "bounded", FIELD),
+    NEW(motion, paused, "paused"),
     ROW(draw_before_bounce, motion, draw_before_bounce, "draw_before_bounce", FIELD),
     ROW(gravity_mult, motion, gravity_multiplier, "gravity_multiplier", FIELD),
     ROW(weight, motion, weight, "weight", FIELD),
@@ -188,6 +192,8 @@ Test(emitter_parts, the_migration_table_lists_every_field)
     doc[n] = 0;
     for (int i = 0; i < NFIELDS; i++) {
         const part_field *f = &fields[i];
+        if (!f->old)
+            continue;
         char row[200];
         snprintf(row, sizeof row, "| `%s` | `%s.%s` | `%s`", f->old, f->part, f->name, f->key);
         cr_assert_not_null(strstr(doc, row), "docs/versioning.md has no row %s", row);

@@ -58,6 +58,7 @@ static const struct {
     {"shape.h", "sim"},        {"problems.h", "sim"},      {"limits.h", "sim"},      {"tasks.h", "sim"},
     {"teach.h", "teach"},
     {"keys.h", "scene"},       {"effect.h", "scene"},      {"scene.h", "scene"},     {"presets.h", "scene"},
+    {"snapshot.h", "scene"},
     {"png.h", "io"},           {"texture_png.h", "io"},    {"anim.h", "io"},         {"outfile.h", "io"},
     {"refimg.h", "io"},        {"sdl.h", "io"},
     {"ui.h", "ui"},            {"ui_sdl.h", "ui_sdl"},
@@ -71,7 +72,7 @@ static const struct {
 static const char *const scene_files[] = {
     "src/scene/ini_read.c",      "src/scene/ini_read.h",      "src/scene/scene_parse.c", "src/scene/scene_load.c",
     "src/scene/scene_load.h",    "src/scene/scene_textures.c", "src/scene/scene_builtin.c",
-    "src/scene/scene_write.c",
+    "src/scene/scene_write.c",   "src/scene/snapshot_file.c",
 };
 
 /* Names of the C library that open, find or change files. */

@@ -271,6 +271,10 @@ typedef struct isk_emitter_born {
     isk_space space;           /* STREAM: WORLD (default), or LOCAL: the particles move with the emitter */
     size_t capacity;           /* pool size, for every source: births, explosions and clicks
                                   beyond it are dropped and counted */
+    int active;                /* 1 (default): births as scheduled; 0: none (a stream's births, a
+                                  timed explosion, a sub-emitter's children), its particles live
+                                  on; births due meanwhile are skipped, not caught up
+                                  (isk_effect_set_active) */
 } isk_emitter_born;
 
 /* How a particle is launched: the velocity and mass it is born with.  kind
@@ -330,6 +334,8 @@ typedef struct isk_emitter_motion {
                                   A*sin(phase), so no jump); 0: phase 0 (the thesis, presumably) */
     isk_integrator integrator; /* ISK_INTEGRATE_INHERIT (default): the scene's */
     int substeps;              /* 0 (default): the scene's */
+    int paused;                /* 1: the emitter stands still: its particles neither move nor age,
+                                  nothing is born into it (isk_effect_set_paused) */
 } isk_emitter_motion;
 
 /* How its particles are drawn: the draw mode, size and colour with their
@@ -674,6 +680,52 @@ isk_status isk_effect_get(const isk_effect *e, const char *section, const char *
  * not a valid name, a bad field, no such force), ISK_ERR_FULL, ISK_ERR_NOMEM. */
 isk_status isk_effect_add_potential(isk_effect *e, const char *name, const isk_potential *pot, isk_error *err);
 isk_status isk_effect_remove_force(isk_effect *e, const char *name, isk_error *err);
+
+/* ---- driving an emitter by hand ------------------------------------------------
+ *
+ * `section` is "emitter NAME", as for isk_effect_set.
+ *
+ *     isk_effect_emit(fx, "emitter sparks", 50, &err);        // 50 now (LÖVE's emit(50))
+ *     isk_effect_set_active(fx, "emitter sparks", 0, &err);   // no more births; the sparks live on
+ *     isk_effect_set_paused(fx, "emitter smoke", 1, &err);    // the smoke stands still
+ *     isk_effect_move(fx, "emitter sparks", mx, my, &err);    // follow the mouse, without gaps
+ *
+ * isk_effect_emit: n particles now, at the current time: a stream's at its
+ * place (on its path, in its shape) with its launch and age 0, whether or
+ * not it is active; an explosion emitter's explosion of n at its position
+ * (n up to its `limit`; a multi-coulomb one still releasing: ISK_ERR_FULL).
+ * They are drawn by the next render and move from the next step.  Those
+ * beyond the pool's capacity are dropped and counted (isk_effect_dropped),
+ * as for every source.  Random numbers come from the emitter's stream, so
+ * a run that emits at the same frames gives the same bytes.  Other sources:
+ * ISK_ERR_RANGE.
+ *
+ * isk_effect_set_active: the key `active` (streams, explosions,
+ * sub-emitters).  A stopped emitter is born nothing: a stream's births, a
+ * timed explosion and a sub-emitter's children that fall due meanwhile
+ * are skipped, not caught up; its particles live on.  Started again, a
+ * stream's next birth comes one interval later (LÖVE's stop and start,
+ * Godot's emitting).
+ *
+ * isk_effect_set_paused: the key `paused`.  A paused emitter stands
+ * still: its particles neither move nor age, nothing is born into it (its
+ * events are skipped), its trails are not recorded; it is drawn as it is.
+ * Unpaused, a stream goes on as when started again.
+ *
+ * isk_effect_move: the key `position` as numbers: a stream's births of the
+ * next frame spread along the way to (x, y) (no gap), an explosion
+ * emitter's next explosion is there, a particle source's particle starts
+ * there at the next reset.  The same bytes as isk_effect_set(fx, section,
+ * "position", "%.17g, %.17g"), without parsing and recompiling.
+ * ISK_ERR_NAN, ISK_ERR_RANGE (beyond ISK_COORD_MAX, a source without a
+ * position).
+ *
+ * All four: ISK_ERR_NULL, ISK_ERR_RANGE (no such emitter, not an emitter),
+ * ISK_ERR_NOMEM; a refused call changes nothing. */
+isk_status isk_effect_emit(isk_effect *e, const char *section, size_t n, isk_error *err);
+isk_status isk_effect_set_active(isk_effect *e, const char *section, int active, isk_error *err);
+isk_status isk_effect_set_paused(isk_effect *e, const char *section, int paused, isk_error *err);
+isk_status isk_effect_move(isk_effect *e, const char *section, double x, double y, isk_error *err);
 
 /* Threads: how many the effect steps and draws on, and a new number
  * (1..256; 0: the default as isk_effect_def.threads says).  Changing it

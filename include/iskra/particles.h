@@ -157,6 +157,11 @@ void isk_particles_clear(isk_particles *p);
  * starts again at its position.  0 removes the column.  All-or-nothing.
  * Errors: ISK_ERR_NULL, ISK_ERR_RANGE (points out of range), ISK_ERR_NOMEM. */
 isk_status isk_particles_set_trail(isk_particles *p, int points);
+
+/* dst becomes a copy of src: the same particles, columns, trail and
+ * defaults, in memory of its own (dst: a store, which is freed, or all zero).
+ * All-or-nothing: ISK_ERR_NULL, ISK_ERR_NOMEM. */
+isk_status isk_particles_copy(isk_particles *dst, const isk_particles *src);
 /* Records the current positions as every particle's newest trail point (the
  * ring moves on by one slot).  No-op without the column. */
 void isk_particles_record_trail(isk_particles *p);

@@ -79,7 +79,9 @@ static isk_status populate(isk_effect *e, fx_group *g)
         break;
     }
     case ISK_SOURCE_EXPLOSION:
-        if (em->born.start <= 0) {
+        if (em->born.start <= 0 && !em->born.active) {
+            g->fired = 1; /* stopped at its time: skipped (isk_emitter_born.active) */
+        } else if (em->born.start <= 0) {
             s = isk__fx_fire_explosion(e, g, em->born.explosion, em->born.position.x, em->born.position.y, em->born.count,
                                   em->born.kick);
             g->fired = 1;
@@ -94,8 +96,10 @@ static isk_status populate(isk_effect *e, fx_group *g)
     return s;
 }
 
-/* Builds all groups from the definition: the state right after create. */
-static isk_status build(isk_effect *e, isk_error *err)
+/* Builds all groups from the definition, compiled, nothing born yet, every
+ * clock at 0; refused if a frame or the prewarm could cost more than the
+ * work budget. */
+static isk_status build_groups(isk_effect *e, isk_error *err)
 {
     const isk_effect_def *d = &e->def;
     reset_potentials(e);
@@ -121,6 +125,14 @@ static isk_status build(isk_effect *e, isk_error *err)
     if (ws != ISK_OK)
         return ws;
     isk__fx_start_clocks(e, d->dt / d->speed_divisor);
+    return ISK_OK;
+}
+
+/* What exists at time 0, the prewarm, a click at the start: the state
+ * right after create. */
+static isk_status populate_all(isk_effect *e, isk_error *err)
+{
+    const isk_effect_def *d = &e->def;
     for (int gi = 0; gi < e->ngroups; gi++) {
         fx_group *g = &e->groups[gi];
         isk_status s = populate(e, g);
@@ -139,6 +151,12 @@ static isk_status build(isk_effect *e, isk_error *err)
     return ISK_OK;
 }
 
+static isk_status build(isk_effect *e, isk_error *err)
+{
+    isk_status s = build_groups(e, err);
+    return s != ISK_OK ? s : populate_all(e, err);
+}
+
 /* Draw order: by `order`, ties by definition order (insertion sort: stable). */
 void isk__fx_sort_draw_order(isk_effect *e)
 {
@@ -153,7 +171,7 @@ void isk__fx_sort_draw_order(isk_effect *e)
     }
 }
 
-isk_status isk_effect_create(isk_effect **out, const isk_effect_def *def, isk_error *err)
+isk_status isk__fx_create_bare(isk_effect **out, const isk_effect_def *def, isk_error *err)
 {
     if (!out || !def)
         return isk_error_set(err, ISK_ERR_NULL, "effect: NULL argument");
@@ -193,11 +211,49 @@ isk_status isk_effect_create(isk_effect **out, const isk_effect_def *def, isk_er
         return isk_error_set(err, ISK_ERR_NOMEM, "effect: out of memory");
     }
     isk__fx_sort_draw_order(e);
-    if ((s = isk_effect_set_threads(e, d->threads)) != ISK_OK) {
+    if ((s = build_groups(e, err)) != ISK_OK) {
+        isk_effect_destroy(e);
+        return s;
+    }
+    *out = e;
+    return ISK_OK;
+}
+
+isk_status isk__fx_take_state(isk_effect *e, isk_effect *bare)
+{
+    /* e keeps its workers (their threads know its address) and the tests'
+     * knobs; everything else is bare's, and bare is left with e's old
+     * state for the caller to destroy. */
+    isk_effect old = *e;
+    *e = *bare;
+    e->workers = old.workers;
+    e->no_rest = old.no_rest;
+    e->update_min_work = old.update_min_work;
+    e->band_min_work = old.band_min_work;
+    e->no_retain = old.no_retain;
+    e->split_always = old.split_always;
+    old.workers = bare->workers;
+    *bare = old;
+    /* the stage lists point into the definition, which moved with the
+     * struct: compiled again, from e's */
+    for (int gi = 0; gi < e->ngroups; gi++)
+        e->groups[gi].def = &e->def.emitters[gi];
+    return isk__fx_compile_all(e);
+}
+
+isk_status isk_effect_create(isk_effect **out, const isk_effect_def *def, isk_error *err)
+{
+    if (!out)
+        return isk_error_set(err, ISK_ERR_NULL, "effect: NULL argument");
+    isk_effect *e;
+    isk_status s = isk__fx_create_bare(&e, def, err);
+    if (s != ISK_OK)
+        return s;
+    if ((s = isk_effect_set_threads(e, e->def.threads)) != ISK_OK) {
         isk_effect_destroy(e);
         return isk_error_set(err, s, "effect: cannot start its threads: %s", isk_status_str(s));
     }
-    if ((s = build(e, err)) != ISK_OK) {
+    if ((s = populate_all(e, err)) != ISK_OK) {
         isk_effect_destroy(e);
         return s;
     }

@@ -12,3 +12,8 @@ double isk__fx_group_time(const isk_effect *e, const fx_group *g)
 }
 
 int isk__fx_group_started(const isk_effect *e, const fx_group *g) { return e->frame + g->frame_offset >= 0; }
+
+int isk__fx_group_runs(const isk_effect *e, const fx_group *g)
+{
+    return isk__fx_group_started(e, g) && !g->def->motion.paused;
+}

@@ -250,7 +250,7 @@ isk_status isk__fx_compile(isk_effect *e, fx_group *g)
 
     if (em->born.source == ISK_SOURCE_STREAM && em->born.space == ISK_SPACE_LOCAL)
         g->substep_end[g->nsubstep_end++] = &isk__fx_step_carry;
-    if (em->born.source == ISK_SOURCE_STREAM)
+    if (em->born.source == ISK_SOURCE_STREAM && em->born.active)
         g->substep_end[g->nsubstep_end++] = &isk__fx_step_spawn;
     if (em->events.on_hit >= 0 && (walls || g->ndefl)) /* sub-emitters (effect_events.c) */
         g->substep_end[g->nsubstep_end++] = &isk__fx_step_hits;

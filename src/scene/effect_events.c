@@ -171,6 +171,10 @@ isk_status isk__fx_events_release(isk_effect *e)
         fx_group *g = &e->groups[i];
         if (g->def->born.source != ISK_SOURCE_SUB || g->pending.n == 0)
             continue;
+        if (!g->def->born.active || g->def->motion.paused) {
+            g->pending.n = 0; /* nothing is born into it: its events are skipped, not kept for later */
+            continue;
+        }
         isk_status s = release_group(e, g);
         if (s != ISK_OK)
             return s;

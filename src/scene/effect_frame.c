@@ -158,7 +158,7 @@ static isk_status advance(isk_effect *e)
     size_t total = 0;
     for (int gi = 0; gi < e->ngroups; gi++) {
         fx_group *g = &e->groups[gi];
-        if (!isk__fx_group_started(e, g))
+        if (!isk__fx_group_runs(e, g))
             continue;
         isk_status s = step_group(e, g);
         if (s != ISK_OK)

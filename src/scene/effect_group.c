@@ -65,10 +65,12 @@ static isk_status run_release(isk_effect *e, fx_group *g, double t0, double h)
     (void)t0;
     (void)h;
     const isk_emitter_def *em = g->def;
+    /* one due while the emitter is stopped is skipped, never fired later */
     if (em->born.source == ISK_SOURCE_EXPLOSION && !g->fired && isk__fx_group_time(e, g) >= em->born.start) {
         g->fired = 1;
-        isk_status s = isk__fx_fire_explosion(e, g, em->born.explosion, em->born.position.x, em->born.position.y,
-                                         em->born.count, em->born.kick);
+        isk_status s = em->born.active ? isk__fx_fire_explosion(e, g, em->born.explosion, em->born.position.x,
+                                                                em->born.position.y, em->born.count, em->born.kick)
+                                       : ISK_OK;
         if (s != ISK_OK)
             return s;
     }

@@ -22,6 +22,8 @@
  *   effect_adopt.c    births: every source's particles enter through isk__fx_adopt
  *   effect_clock.c    the time of a frame, a group's time
  *   effect_live.c     changes while running: isk_effect_set / get, potentials
+ *   effect_control.c  driving an emitter by hand: emit, set_active, set_paused, move
+ *   effect_snapshot.c snapshots: the running state kept, put back, as exact bytes
  *   effect_stream.c   when a stream's particles are born
  *   effect_events.c   sub-emitters: deaths and bounces as events, their children
  *   effect_render.c   a frame's drawing: drawings, deflectors, groups in order, potentials
@@ -241,6 +243,17 @@ struct isk_effect {
     isk_texture_cache *textures;   /* made at the first emitter with a texture (effect_looks.c) */
 };
 
+/* effect_live.c: the group of "emitter NAME" (messages start with fn);
+ * ISK_ERR_NULL, ISK_ERR_RANGE (no such emitter, another section). */
+isk_status isk__fx_emitter_of(isk_effect *e, const char *fn, const char *section, fx_group **g, isk_error *err);
+
+/* effect.c: an effect of def, checked, its groups compiled, nothing born,
+ * no threads started (a snapshot's restore builds one); and e taking
+ * bare's state but keeping its own workers and test knobs, bare left with
+ * e's old state to destroy (the lists are compiled again: ISK_ERR_NOMEM). */
+isk_status isk__fx_create_bare(isk_effect **out, const isk_effect_def *def, isk_error *err);
+isk_status isk__fx_take_state(isk_effect *e, isk_effect *bare);
+
 /* effect_check.c: validates a whole definition; messages name the item. */
 isk_status isk__fx_check(const isk_effect_def *d, isk_error *err);
 
@@ -297,6 +310,9 @@ double isk__fx_group_time(const isk_effect *e, const fx_group *g);
 /* The group's clock has started: its emitter is prewarmed at least as far
  * back as the effect's frame (always true from frame 0 on). */
 int isk__fx_group_started(const isk_effect *e, const fx_group *g);
+/* The group steps this frame: it has started and is not paused (a paused
+ * group is neither moved, aged, born into, nor its trails recorded). */
+int isk__fx_group_runs(const isk_effect *e, const fx_group *g);
 /* Where the emitter is at time t (its path; em: its definition, which may
  * be an older copy than g->def during a live change). */
 isk_vec2 isk__fx_emitter_pos(const fx_group *g, const isk_emitter_def *em, double t);
@@ -310,6 +326,12 @@ void isk__fx_path_changed(isk_effect *e, fx_group *g, const isk_emitter_def *old
 /* A live rate of a stream with a duration: the births of its cycles are
  * counted anew at the new rate, those due by now done (no catch-up burst). */
 void isk__fx_stream_rate_changed(isk_effect *e, fx_group *g);
+/* n births now (isk_effect_emit), at the emitter's place and with its
+ * launch, age 0; those beyond the pool's room dropped and counted. */
+isk_status isk__fx_stream_emit(isk_effect *e, fx_group *g, size_t n);
+/* A stream starts again (active or unpaused): what fell due while it was
+ * stopped is skipped, the next birth one interval from now (no catch-up). */
+void isk__fx_stream_resume(isk_effect *e, fx_group *g);
 /* The whole frames a prewarm runs (a double: it may be beyond any count). */
 double isk__fx_prewarm_frames(const isk_effect_def *d, const isk_emitter_def *em);
 /* Every emitter's prewarm in frames (frames[i] for emitter i): a stream's

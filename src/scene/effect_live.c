@@ -71,6 +71,20 @@ static isk_status find_item(const isk_effect_def *d, const char *section, where 
                          sug ? sug : "", sug ? "'?" : "");
 }
 
+isk_status isk__fx_emitter_of(isk_effect *e, const char *fn, const char *section, fx_group **g, isk_error *err)
+{
+    if (!e || !section)
+        return isk_error_set(err, ISK_ERR_NULL, "%s: NULL argument", fn);
+    where w;
+    isk_status s = find_item(&e->def, section, &w, err);
+    if (s != ISK_OK)
+        return s;
+    if (w.section != ISK_SECTION_EMITTER)
+        return isk_error_set(err, ISK_ERR_RANGE, "%s: %s is not an emitter (write \"emitter NAME\")", fn, w.label);
+    *g = &e->groups[w.index];
+    return ISK_OK;
+}
+
 static isk_status find_key(const isk_effect_def *d, const where *w, const char *key, const isk_key **out,
                            isk_error *err)
 {
@@ -193,6 +207,10 @@ static isk_status apply(isk_effect *e, const where *w, const isk_key *k, const v
         if ((!strcmp(k->name, "position") || !strcmp(k->name, "emitter_velocity")) &&
             em->born.source == ISK_SOURCE_STREAM)
             isk__fx_path_changed(e, g, old, k->name); /* births spread along the way: no gap */
+        /* started again: what fell due meanwhile is skipped, not caught up */
+        const int ran = old->born.active && !old->motion.paused, runs = em->born.active && !em->motion.paused;
+        if (!ran && runs && em->born.source == ISK_SOURCE_STREAM)
+            isk__fx_stream_resume(e, g);
         break;
     }
     default:

@@ -467,6 +467,23 @@ static isk_status run_cycles(isk_effect *e, fx_group *g, const fx_launcher *l, d
     return run_events(e, g, l, t1, h, &g->cycle_births, births_per_cycle(em), 1.0 / em->born.rate, 1.0, 1);
 }
 
+/* Where and how fast the births of a step ending at t1 start: on the
+ * emitter's path, placed at t1 in local space. */
+static fx_launcher launcher_at(const fx_group *g, const isk_emitter_def *em, double t1)
+{
+    fx_launcher l = isk__fx_launcher_of(em);
+    l.moving = moving(g, em);
+    l.t1 = t1;
+    if (em->born.space == ISK_SPACE_LOCAL)
+        l.place = t1;
+    if (l.moving) {
+        const isk_vec2 c = isk__fx_emitter_pos(g, em, t1);
+        l.shape.cx = c.x;
+        l.shape.cy = c.y;
+    }
+    return l;
+}
+
 /* The births due in (t0, t0 + h], each created at t0 + h and advanced by
  * its age.  Every loop here ends after at most (places left in the pool +
  * 1) turns, whatever the rate, interval and step: births beyond the pool's
@@ -478,16 +495,7 @@ static isk_status run_spawn(isk_effect *e, fx_group *g, double t0, double h)
     /* A birth due within a nanosecond of the step's end belongs to this step:
      * 30 steps of 1/30 s and 144 of 1/144 s must agree on "t = 1 s". */
     const double t1_tol = t1 + 1e-9 * (t1 > 1.0 ? t1 : 1.0);
-    fx_launcher l = isk__fx_launcher_of(em);
-    l.moving = moving(g, em);
-    l.t1 = t1;
-    if (em->born.space == ISK_SPACE_LOCAL)
-        l.place = t1;
-    if (l.moving) {
-        const isk_vec2 c = isk__fx_emitter_pos(g, em, t1);
-        l.shape.cx = c.x;
-        l.shape.cy = c.y;
-    }
+    fx_launcher l = launcher_at(g, em, t1);
     isk_status s;
     if (em->born.duration > 0)
         return run_cycles(e, g, &l, t0, h);
@@ -564,3 +572,41 @@ static void describe_spawn(const isk_effect *e, const fx_group *g, FILE *out)
 }
 
 const fx_step_kind isk__fx_step_spawn = {"spawn", run_spawn, describe_spawn};
+
+/* ---- births by hand, stopping and pausing (effect_control.c) ---------------------- */
+
+isk_status isk__fx_stream_emit(isk_effect *e, fx_group *g, size_t n)
+{
+    const double now = isk__fx_group_time(e, g);
+    const fx_launcher l = launcher_at(g, g->def, now);
+    const size_t room = room_left(g), born = n < room ? n : room;
+    drop(g, (double)(n - born)); /* the rest find no room: counted in one addition */
+    for (size_t k = 0; k < born; k++) {
+        isk_status s = isk__fx_birth(e, g, &l, 0.0, now, NULL);
+        if (s != ISK_OK)
+            return s;
+    }
+    return ISK_OK;
+}
+
+void isk__fx_stream_resume(isk_effect *e, fx_group *g)
+{
+    const isk_emitter_def *em = g->def;
+    const double now = isk__fx_group_time(e, g);
+    /* the next accumulator birth one interval from now, as at a start */
+    g->origin = now;
+    g->emitted = 0;
+    if (em->born.duration > 0) {
+        const double every = em->born.burst_every > 0 ? isk__fx_burst_every(em) : em->born.duration;
+        g->cycle_bursts = events_due(g, now, bursts_per_cycle(em), every, 0.0);
+        g->cycle_births = em->born.rate > 0 ? events_due(g, now, births_per_cycle(em), 1.0 / em->born.rate, 1.0) : 0.0;
+    } else if (g->next_burst <= now) {
+        const double every = isk__fx_burst_every(em);
+        if (every > 0) {
+            double next = g->next_burst + (floor((now - g->next_burst) / every) + 1.0) * every;
+            g->next_burst = next > now ? next : nextafter(now, INFINITY);
+        } else {
+            g->next_burst = INFINITY; /* its one burst was due meanwhile */
+        }
+    }
+}

@@ -25,7 +25,8 @@
 void isk__fx_trail_record(isk_effect *e, long stepped)
 {
     for (int i = 0; i < e->ngroups; i++)
-        if (e->groups[i].store.trail && stepped + e->groups[i].frame_offset >= 0)
+        if (e->groups[i].store.trail && stepped + e->groups[i].frame_offset >= 0 &&
+            !e->groups[i].def->motion.paused)
             isk_particles_record_trail(&e->groups[i].store);
 }
 

@@ -496,3 +496,46 @@ void isk_particles_record_trail(isk_particles *p)
         t[1] = p->y[i];
     }
 }
+
+isk_status isk_particles_copy(isk_particles *dst, const isk_particles *src)
+{
+    if (!dst || !src)
+        return ISK_ERR_NULL;
+    isk_particles n;
+    isk_status s = isk_particles_init(&n, src->count, src->flags & ISK_PARTICLES_FLAGS);
+    if (s == ISK_OK && src->trail_len > 0)
+        s = isk_particles_set_trail(&n, src->trail_len);
+    if (s != ISK_OK) {
+        isk_particles_free(&n);
+        return s;
+    }
+    for (int k = 0; src->count && k < NCOLUMNS; k++) {
+        unsigned char *to = col_get(&n, &columns[k]);
+        const unsigned char *from = col_get(src, &columns[k]);
+        if (to && from)
+            memcpy(to, from, src->count * elem_of(&columns[k], src->trail_len));
+    }
+    n.count = src->count;
+    n.trail_head = src->trail_head;
+    n.default_color = src->default_color;
+    n.default_size = src->default_size;
+    isk_particles_free(dst);
+    *dst = n;
+    return ISK_OK;
+}
+
+size_t isk__store_columns(const isk_particles *p, isk__store_column *out)
+{
+    size_t n = 0;
+    for (int k = 0; k < NCOLUMNS; k++) {
+        unsigned char *a = col_get(p, &columns[k]);
+        if (!a)
+            continue;
+        out[n].bytes = a;
+        out[n].elem = elem_of(&columns[k], p->trail_len);
+        out[n].doubles = columns[k].elem == 0 || columns[k].elem == sizeof(double);
+        out[n].life = k == LIFE_COLUMN;
+        n++;
+    }
+    return n;
+}

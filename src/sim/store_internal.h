@@ -16,4 +16,16 @@ size_t isk__store_push(isk_particles *p, double x, double y, double vx, double v
 size_t isk__store_cull(isk_particles *p, int unordered, size_t *first_moved);
 size_t isk__store_remove_nonfinite(isk_particles *p, size_t *first_moved);
 
+/* The arrays a store has, in a fixed order: its bytes, the bytes of one
+ * particle's element, whether it holds doubles, whether it is the
+ * lifetime (the one double column that may be +infinity).  out has room
+ * for ISK__STORE_COLUMNS; returns how many (snapshots, effect_snapshot.c). */
+enum { ISK__STORE_COLUMNS = 32 };
+typedef struct isk__store_column {
+    unsigned char *bytes;
+    size_t elem;
+    int doubles, life;
+} isk__store_column;
+size_t isk__store_columns(const isk_particles *p, isk__store_column *out);
+
 #endif

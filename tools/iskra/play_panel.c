@@ -511,10 +511,11 @@ static void follow_mouse(player *p, double wx, double wy)
     int k = isk_effect_def_find_emitter(d, p->follow);
     if (k < 0 || (d->emitters[k].born.position.x == wx && d->emitters[k].born.position.y == wy))
         return;
-    char sec[ISK_NAME_MAX + 16], v[80];
+    char sec[ISK_NAME_MAX + 16];
+    isk_error err;
     snprintf(sec, sizeof sec, "emitter %s", p->follow);
-    snprintf(v, sizeof v, "%.17g, %.17g", wx, wy);
-    play_set(p, sec, "position", v);
+    if (isk_effect_move(p->fx, sec, wx, wy, &err) != ISK_OK)
+        play_say(p, "%s", err.message);
 }
 
 void play_canvas(player *p)
