@@ -227,3 +227,19 @@ Test(lessons, a_recording_never_replaces_the_scene, .timeout = 60)
     free(err);
     free(text);
 }
+
+/* An event that cannot be played (a widget the window does not have) stops
+ * the replay with the message and the lesson's line: exit 1. */
+Test(lessons, an_event_that_fails_names_its_line, .timeout = 60)
+{
+    cli_fresh(OUT "fails");
+    cli_write_file(OUT "fails/l.txt", "play: fig22_simulator_regular\n# a comment\nframe:2 press:wind\n"
+                                      "frame:5 shot:never\n");
+    int rc = cli_run(OUT "fails", "replay " OUT "fails/l.txt --check " OUT "fails/refs --update");
+    char *err = play_stderr(OUT "fails");
+    cr_expect_eq(rc, 1, "%s", err);
+    cr_expect(strstr(err, "no widget 'wind'"), "%s", err);
+    cr_expect(strstr(err, OUT "fails/l.txt:3: 'press:wind' failed"), "%s", err);
+    cr_expect_not(cli_exists(OUT "fails/refs"), "a reference was written after the failure");
+    free(err);
+}

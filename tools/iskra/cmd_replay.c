@@ -215,9 +215,11 @@ int cmd_replay(int argc, char **argv)
     isk_event ev[REPLAY_FRAME_EVENTS];
     for (long f = 0; max_frames == 0 || f < max_frames; f++) {
         const int n = q.n < REPLAY_FRAME_EVENTS ? q.n : REPLAY_FRAME_EVENTS;
-        memcpy(ev, q.ev, (size_t)n * sizeof *ev);
-        memmove(q.ev, q.ev + n, (size_t)(q.n - n) * sizeof *ev);
-        q.n -= n;
+        if (n > 0) {
+            memcpy(ev, q.ev, (size_t)n * sizeof *ev);
+            memmove(q.ev, q.ev + n, (size_t)(q.n - n) * sizeof *ev);
+            q.n -= n;
+        }
         if (play_frame(&p, p.ts.dt, ev, n) || (play_script_done(&p) && q.n == 0))
             break;
     }

@@ -146,12 +146,13 @@ static int mouse_button_token(const char *t, const char *prefix, int *x, int *y,
     return sscanf(t + used, ",%d%n", clicks, &more) == 1 && !t[used + more] && (*clicks == 1 || *clicks == 2);
 }
 
-/* What a token is; 1 if it is one we know (checked before anything runs). */
+/* What a token is; 1 if it is one we know (checked before anything runs).
+ * Frame counts have at most 9 digits, so they fit an int. */
 static int known(const char *t, int lesson)
 {
     int a, b, c, d, used = 0;
     char text[64];
-    if ((sscanf(t, "wait:%d%n", &a, &used) == 1 || sscanf(t, "frame:%d%n", &a, &used) == 1) && !t[used] && a >= 0)
+    if ((sscanf(t, "wait:%9d%n", &a, &used) == 1 || sscanf(t, "frame:%9d%n", &a, &used) == 1) && !t[used] && a >= 0)
         return 1;
     if ((sscanf(t, "click:%d,%d%n", &a, &b, &used) == 2 || sscanf(t, "move:%d,%d%n", &a, &b, &used) == 2 ||
          sscanf(t, "double-click:%d,%d%n", &a, &b, &used) == 2) &&
@@ -236,7 +237,7 @@ static int parse(play_script *s, const char *text, const char *file, int line)
                 fprintf(stderr, "iskra play: --script: unknown event '%s' (iskra play --help lists them)\n", t);
             return 2;
         }
-        if (file && sscanf(t, "frame:%d%n", &frame, &used) == 1 && !t[used]) {
+        if (file && sscanf(t, "frame:%9d%n", &frame, &used) == 1 && !t[used]) {
             if (frame < last_frame) {
                 fprintf(stderr, "%s:%d: frame:%d comes after frame:%ld (line %d): frames go forward\n", file, line,
                         frame, last_frame, last_frame_line);
@@ -356,11 +357,11 @@ static int run_one(player *p, const char *t)
 {
     play_script *s = &p->script;
     int a, b, c, d, used = 0;
-    if (sscanf(t, "wait:%d%n", &a, &used) == 1 && !t[used]) {
+    if (sscanf(t, "wait:%9d%n", &a, &used) == 1 && !t[used]) {
         s->wait_until = p->frames_shown + a;
         return 0;
     }
-    if (sscanf(t, "frame:%d%n", &a, &used) == 1 && !t[used]) {
+    if (sscanf(t, "frame:%9d%n", &a, &used) == 1 && !t[used]) {
         s->wait_until = a;
         return 0;
     }
@@ -447,8 +448,11 @@ int play_script_run(player *p)
 {
     play_script *s = &p->script;
     while (s->next < s->n && p->frames_shown >= s->wait_until && !p->failed && !p->quit)
-        if (run_one(p, s->tokens[s->next++]) != 0)
+        if (run_one(p, s->tokens[s->next++]) != 0) {
+            if (s->file) /* the message above says why; this says where */
+                fprintf(stderr, "%s:%d: '%s' failed\n", s->file, s->lines[s->next - 1], s->tokens[s->next - 1]);
             return -1;
+        }
     return 0;
 }
 
