@@ -274,8 +274,12 @@ int play_cli_lesson(player *p, play_opts *o, lesson *l, const char *path)
             fprintf(stderr, "%s:%d: in the play: line (iskra play --help lists the options)\n", path, l->args_line);
         return 2;
     }
-    const char *bad = o->record ? "--record" : o->replay ? "--replay" : o->script ? "--script" : o->list ? "--list-widgets"
-                    : p->args.text ? "a scene from standard input" : !p->args.scene ? "no scene" : NULL;
+    const char *bad = o->record   ? "--record"
+                    : o->replay ? "--replay"
+                    : o->script ? "--script"
+                    : o->list   ? "--list-widgets"
+                    : !p->args.scene ? "no scene"
+                                     : NULL;
     if (bad) {
         fprintf(stderr, "%s:%d: a lesson's play: line cannot have %s\n", path, l->args_line, bad);
         return 2;
