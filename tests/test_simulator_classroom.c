@@ -395,11 +395,13 @@ Test(classroom, the_usage_line_names_every_option)
     for (const char *p = body; (p = strstr(p, "--")) != NULL; p += 2) {
         if (p[2] < 'a' || p[2] > 'z')
             continue;
-        char opt[40];
+        char opt[40], form[60];
         size_t n = strspn(p, "-abcdefghijklmnopqrstuvwxyz");
         snprintf(opt, sizeof opt, "[%.*s", (int)n, p);
-        char *found = strstr(help, opt);
-        cr_expect(found && (size_t)(found - help) < usage_len, "the usage lines do not name %s", opt + 1);
+        snprintf(form, sizeof form, "iskra play %.*s ", (int)n, p); /* a usage line of its own: --replay */
+        char *found = strstr(help, opt), *own = strstr(help, form);
+        cr_expect((found && (size_t)(found - help) < usage_len) || (own && (size_t)(own - help) < usage_len),
+                  "the usage lines do not name %s", opt + 1);
         options++;
     }
     cr_expect_geq(options, 20);

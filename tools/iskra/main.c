@@ -12,6 +12,7 @@ static const isk_command commands[] = {
     {"keys", "every key of a scene file: type, default, range, meaning", cmd_keys},
     {"render", "render a scene to PNG, a PNG sequence, GIF, Y4M or raw frames", cmd_render},
     {"play", "run a scene in a window in real time", cmd_play},
+    {"replay", "check a recorded lesson against reference images, headless", cmd_replay},
     {"compare", "compare two PNG images pixel by pixel", cmd_compare},
     {"bench", "measure what accuracy costs in time (bench accuracy)", cmd_bench},
 };

@@ -46,7 +46,7 @@
 #include "scene_args.h"
 
 #define PLAY_HISTORY 600       /* samples kept for the charts */
-#define PLAY_SCRIPT_MAX 256    /* tokens of --script */
+#define PLAY_SCRIPT_MAX 4000000 /* tokens of a script or lesson (a long lesson has a few hundred thousand) */
 #define PLAY_MAX_STEPS_PER_FRAME 5
 
 /* What a click on the canvas does besides the scene's explosions. */
@@ -90,12 +90,22 @@ typedef struct play_history {
         count[PLAY_HISTORY];
 } play_history;
 
+struct player;
+
+/* Where a lesson's shot:NAME goes instead of a file (iskra play --replay,
+ * iskra replay --check): the window (whole_window 1) or the canvas. */
+typedef void (*play_shot_fn)(struct player *p, void *user, const char *name, int whole_window);
+
 typedef struct play_script {
-    char *tokens[PLAY_SCRIPT_MAX];
-    int n, next;
+    char **tokens;
+    int *lines;                /* each token's line in `file` (lessons) */
+    int n, cap, next;
     long wait_until;           /* frames_shown before which nothing more is played */
     int revealing;             /* 1: the next token's widget was asked into view (play_inspector_reveal) */
     char *text;                /* the owned copy the tokens point into */
+    const char *file;          /* the lesson file, or NULL: --script */
+    play_shot_fn shot;         /* NULL: shot:PATH writes a PNG to PATH and says so */
+    void *shot_user;
 } play_script;
 
 /* The charts' points, thinned for drawing (play_charts.c). */
@@ -360,8 +370,20 @@ void play_screenshot(player *p, int whole_window, const char *path);
 /* play_script.c */
 /* Parses --script; 0, or 2 after a message on stderr. */
 int play_script_parse(play_script *s, const char *text);
+/* Parses a lesson's events (lesson.h): text is the file's lines from
+ * first_line on; '#' at a token's start comments out the rest of its line;
+ * shot names are NAME, not paths.  0, or 2 after "FILE:LINE: message". */
+int play_script_parse_lesson(play_script *s, const char *text, const char *file, int first_line);
 /* Plays the tokens due at this frame (events into the window's queue). */
 int play_script_run(player *p);
+/* Before the first frame: the events of frame:0 (a lesson's input that
+ * reached the first frame). */
+int play_script_start(player *p);
+/* 1 when every token has been played. */
+int play_script_done(const player *p);
+/* The script's name of a window key (ISK_KEY_* or ASCII) into out: "esc",
+ * "f9", "a"; 0 when a script cannot name it. */
+int play_script_key_name(int key, char *out, size_t n);
 void play_script_free(play_script *s);
 /* The script's help lines. */
 void play_script_help(FILE *f);

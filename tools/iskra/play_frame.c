@@ -58,5 +58,5 @@ int play_frame(player *p, double dt_seconds, const isk_event *ev, int nev)
     p->shot_pending = 0;
     /* After the frame is drawn: its widgets can be pressed, its window shot;
      * the events it queues arrive with the next frame. */
-    return play_script_run(p) != 0 || p->failed;
+    return play_script_run(p) != 0 || p->failed || p->quit; /* a script's quit ends the session here */
 }
