@@ -137,30 +137,60 @@ static int moving(const fx_group *g, const isk_emitter_def *em)
     return em->born.emitter_velocity.x != 0 || em->born.emitter_velocity.y != 0 || g->path_t1 > -INFINITY;
 }
 
+/* One axis of the carry: every particle moves by d; one that a closed wall
+ * ahead (at `wall`, in d's direction) would be pushed through stops on it,
+ * its velocity through the wall turned back with the restitution c, as
+ * at a bounce.  A particle already beyond the wall before the carry (the
+ * thesis's walls let some be) is carried as it is. */
+static void carry_axis(size_t n, double *restrict pos, double *restrict v, double d, double wall, double c)
+{
+    for (size_t i = 0; i < n; i++) {
+        const double from = pos[i], to = from + d;
+        if (d > 0 ? (from <= wall && to > wall) : (from >= wall && to < wall)) {
+            pos[i] = wall;
+            if (d > 0 ? v[i] > 0 : v[i] < 0)
+                v[i] = -c * v[i];
+        } else {
+            pos[i] = to;
+        }
+    }
+}
+
 /* Local space: every particle moves by what the emitter moved since they
  * were last carried (a difference of directly computed positions, so the
- * carries add up to the emitter's whole way). */
+ * carries add up to the emitter's whole way).  The carry runs after the
+ * walls, so it respects them itself: a carried particle never ends a step
+ * beyond a closed wall. */
 static isk_status run_carry(isk_effect *e, fx_group *g, double t0, double h)
 {
-    (void)e;
     const isk_vec2 to = isk__fx_emitter_pos(g, g->def, t0 + h);
     const double dx = to.x - g->carried.x, dy = to.y - g->carried.y;
     g->carried = to;
     if (dx == 0 && dy == 0)
         return ISK_OK;
     isk_particles *p = &g->store;
-    for (size_t i = 0; i < p->count; i++) {
-        p->x[i] += dx;
-        p->y[i] += dy;
-    }
+    const isk_bounds *b = &e->def.bounds;
+    const unsigned sides = g->def->motion.bounded ? b->sides : 0u;
+    const double c = b->mode == ISK_BOUNCE_REFLECT ? b->restitution : 1.0; /* the thesis's walls flip the sign */
+    /* the wall ahead on each axis, if closed; none: infinitely far */
+    const unsigned xside = dx > 0 ? ISK_SIDE_RIGHT : ISK_SIDE_LEFT, yside = dy > 0 ? ISK_SIDE_TOP : ISK_SIDE_BOTTOM;
+    const double xwall = !(sides & xside) ? (dx > 0 ? INFINITY : -INFINITY)
+        : dx > 0                          ? b->xmax - b->margin
+                                          : b->xmin + b->margin;
+    const double ywall = !(sides & yside) ? (dy > 0 ? INFINITY : -INFINITY)
+        : dy > 0                          ? b->ymax - b->margin
+                                          : b->ymin + b->margin;
+    if (dx != 0)
+        carry_axis(p->count, p->x, p->vx, dx, xwall, c);
+    if (dy != 0)
+        carry_axis(p->count, p->y, p->vy, dy, ywall, c);
     return ISK_OK;
 }
 
 static void describe_carry(const isk_effect *e, const fx_group *g, FILE *out)
 {
-    (void)e;
-    (void)g;
-    fprintf(out, "local space: the particles move with the emitter");
+    fprintf(out, "local space: the particles move with the emitter%s",
+            g->def->motion.bounded && e->def.bounds.sides ? ", never through a wall" : "");
 }
 
 const fx_step_kind isk__fx_step_carry = {"carry", run_carry, describe_carry};
