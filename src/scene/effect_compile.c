@@ -211,7 +211,7 @@ isk_status isk__fx_compile(isk_effect *e, fx_group *g)
             return ISK_ERR_FULL;
         st->u.deflect.segs = g->defl;
         st->u.deflect.n = g->ndefl;
-        st->u.deflect.rng = &g->rng;
+        st->u.deflect.rng = &g->streams[FX_STREAM_CHANCE]; /* a draw only where probability < 1 */
         st->u.deflect.can_kill = can_kill;
         st->u.deflect.drag = f->drag;
         st->u.deflect.hit = em->events.on_hit >= 0;
