@@ -60,25 +60,24 @@ void isk__fx_looks_adopt(fx_group *g, size_t from)
 {
     const isk_emitter_def *em = g->def;
     isk_particles *p = &g->store;
+    isk_rng *rotation = &g->streams[FX_STREAM_ROTATION], *spin = &g->streams[FX_STREAM_SPIN];
+    isk_rng *size = &g->streams[FX_STREAM_SIZE], *color = &g->streams[FX_STREAM_COLOR];
     if (p->angle) {
         for (size_t i = from; i < p->count; i++) {
             double a = em->look.rotation +
-                (em->look.rotation_range > 0 ? em->look.rotation_range * isk_rng_uniform(&g->streams[FX_STREAM_ROTATION]) : 0.0);
+                (em->look.rotation_range > 0 ? em->look.rotation_range * isk_rng_uniform(rotation) : 0.0);
             p->angle[i] = wrap(a);
         }
         for (size_t i = from; i < p->count; i++)
-            p->spin[i] =
-                em->look.spin + (em->look.spin_range > 0 ? em->look.spin_range * isk_rng_uniform(&g->streams[FX_STREAM_SPIN]) : 0.0);
+            p->spin[i] = em->look.spin + (em->look.spin_range > 0 ? em->look.spin_range * isk_rng_uniform(spin) : 0.0);
     }
     if (p->size)
         for (size_t i = from; i < p->count; i++)
-            p->size[i] =
-                em->look.size + (em->look.size_range > 0 ? em->look.size_range * isk_rng_uniform(&g->streams[FX_STREAM_SIZE]) : 0.0);
+            p->size[i] = em->look.size + (em->look.size_range > 0 ? em->look.size_range * isk_rng_uniform(size) : 0.0);
     if (p->color)
         for (size_t i = from; i < p->count; i++)
             p->color[i] = em->look.color_pick.n
-                ? isk_color_gradient_eval(em->look.color_pick.stops, em->look.color_pick.n,
-                                          isk_rng_uniform(&g->streams[FX_STREAM_COLOR]))
+                ? isk_color_gradient_eval(em->look.color_pick.stops, em->look.color_pick.n, isk_rng_uniform(color))
                 : em->look.color;
 }
 

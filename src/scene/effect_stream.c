@@ -12,10 +12,10 @@
  *
  * Random draws per new particle, in this order: position (the shape's
  * draws, iskra/shape.h), velocity (the generator's), life (one, only with
- * a life range), oscillation
- * (omega then amplitude, then the phase with osc_random_phase; only with
- * oscillation), jitter (one, only in the thesis jitter mode).  A mass
- * range draws from a stream of its own (fx_stream), as the looks do.
+ * a life range), oscillation (omega then amplitude, then the phase with
+ * osc_random_phase; only with oscillation), jitter (one, only in the thesis
+ * jitter mode).  A mass range draws from a stream of its own (fx_stream),
+ * as the looks do.
  *
  * Moving emitters: the emitter's path is position(t) = base +
  * emitter_velocity*(t - t_base), computed directly at every birth time,
@@ -268,7 +268,8 @@ isk_status isk__fx_birth(isk_effect *e, fx_group *g, const fx_launcher *l, doubl
         vx += dv[0];
         vy += dv[1];
     }
-    double m = em->launch.mass + (em->launch.mass_range > 0 ? em->launch.mass_range * isk_rng_uniform(&g->streams[FX_STREAM_MASS]) : 0.0);
+    isk_rng *mass = &g->streams[FX_STREAM_MASS];
+    double m = em->launch.mass + (em->launch.mass_range > 0 ? em->launch.mass_range * isk_rng_uniform(mass) : 0.0);
     size_t i;
     isk_status st = isk_particles_add(p, x, y, vx, vy, m, &i);
     if (st != ISK_OK)
