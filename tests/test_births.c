@@ -142,6 +142,49 @@ Test(births, an_ordinary_full_pool_counts_each_lost_birth)
     isk_effect_destroy(fx);
 }
 
+/* The dead leave before the births (the cull runs before the spawn), so a
+ * steady pool holds min(capacity, rate * life) at every frame's end, also
+ * with lives shorter than a frame: 10^6/s for 0.01 s fills 1,000 places
+ * at every frame (it used to alternate 1,000 and 0). */
+Test(births, a_full_pool_of_short_lives_is_full_at_every_frame)
+{
+    isk_effect *fx = stream("rate = 1e6\ncapacity = 1000\nlife = 0.01\n", 1.0 / 60);
+    for (int f = 0; f < 30; f++) {
+        cr_assert_eq(isk_effect_step(fx), ISK_OK);
+        cr_assert_eq(isk_effect_particle_count(fx), 1000, "frame %d: %zu alive", f, isk_effect_particle_count(fx));
+    }
+    isk_effect_destroy(fx);
+}
+
+/* A saturated pool of long lives: count == capacity after every step (it
+ * read about a frame's deaths under the capacity, 383..400 of 400). */
+Test(births, a_saturated_pool_reads_its_capacity)
+{
+    isk_effect *fx = stream("rate = 1e6\ncapacity = 400\nlife = 0.5\n", 1.0 / 60);
+    for (int f = 0; f < 90; f++) {
+        cr_assert_eq(isk_effect_step(fx), ISK_OK);
+        cr_assert_eq(isk_effect_particle_count(fx), 400, "frame %d: %zu alive", f, isk_effect_particle_count(fx));
+    }
+    isk_effect_destroy(fx);
+}
+
+/* Below the capacity the pool holds rate * life once a life has passed:
+ * 800/s for 0.5 s is 400 at every frame's end (births at k/800 s, those
+ * of the last 0.5 s alive). */
+Test(births, a_steady_pool_holds_rate_times_life)
+{
+    isk_effect *fx = stream("rate = 800\ncapacity = 1000\nlife = 0.5\n", 1.0 / 60);
+    for (int f = 0; f < 120; f++) {
+        cr_assert_eq(isk_effect_step(fx), ISK_OK);
+        const size_t n = isk_effect_particle_count(fx);
+        /* 401 when a birth falls on the frame's end a life ago: its age
+         * reads a rounding under 0.5 */
+        if (f >= 30)
+            cr_assert(n == 400 || n == 401, "frame %d: %zu alive", f, n);
+    }
+    isk_effect_destroy(fx);
+}
+
 /* The scene the fuzzer kept (tests/fuzz/regressions/hang-burst_every-1e-300.ini)
  * as it stands, every key else at its default, and the same at 1e-8 (10^6
  * loop turns a frame before): frames end, rendered, with the births bounded

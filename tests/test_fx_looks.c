@@ -320,8 +320,11 @@ Test(looks, sizes_lie_in_their_range)
         lo = fmin(lo, p->size[i]);
         hi = fmax(hi, p->size[i]);
     }
-    cr_assert_lt(lo, 0.501);
-    cr_assert_gt(hi, 0.749);
+    /* 1,000 uniform draws: the least below 0.01 and the largest above
+     * 0.99 but for a chance of e^-10 each */
+    cr_assert_eq(p->count, 1000);
+    cr_assert_lt(lo, 0.5 + 0.25 * 0.01, "lo %.6g", lo);
+    cr_assert_gt(hi, 0.5 + 0.25 * 0.99, "hi %.6g", hi);
     isk_effect_destroy(fx);
 }
 

@@ -23,29 +23,32 @@ Test(fx_motion_field, radial_and_tangential_directions)
     f.cx = 1;
     f.cy = 1;
     double ax, ay;
-    isk__field_accel(&f, 3, 4, &ax, &ay); /* (2, 3) from the centre */
+    isk__field_accel(&f, 3, 4, 0, 0, &ax, &ay); /* (2, 3) from the centre */
     const double r = sqrt(13.0), ux = 2 / r, uy = 3 / r;
     cr_assert_float_eq(ax, 2 * ux - 1 * uy, 1e-15);
     cr_assert_float_eq(ay, 2 * uy + 1 * ux, 1e-15);
     /* counter-clockwise: on the +x side the tangential pull is +y */
     f.radial = 0;
-    isk__field_accel(&f, 5, 1, &ax, &ay);
+    isk__field_accel(&f, 5, 1, 0, 0, &ax, &ay);
     cr_assert(ax == 0 && ay == 1, "(%g, %g)", ax, ay);
-    /* exactly on the emitter: no direction, zero, never NaN */
+    /* exactly on the emitter at rest: no direction, zero, never NaN */
     f.radial = -7;
-    isk__field_accel(&f, 1, 1, &ax, &ay);
+    isk__field_accel(&f, 1, 1, 0, 0, &ax, &ay);
     cr_assert(ax == 0 && ay == 0, "(%g, %g)", ax, ay);
+    /* exactly on the emitter and moving: the direction it leaves in */
+    isk__field_accel(&f, 1, 1, 0, 3, &ax, &ay);
+    cr_assert(ax == -1 && ay == -7, "(%g, %g)", ax, ay);
     /* far away: still a unit direction, no overflow */
     f.cx = f.cy = 0;
     f.tangential = 0;
-    isk__field_accel(&f, 1e200, 1e200, &ax, &ay);
+    isk__field_accel(&f, 1e200, 1e200, 0, 0, &ax, &ay);
     cr_assert_float_eq(ax, -7 / sqrt(2.0), 1e-12, "%g", ax);
     cr_assert(isfinite(ay));
 }
 
 static void turb_accel(const isk_field *f, double x, double y, double *ax, double *ay)
 {
-    isk__field_accel(f, x, y, ax, ay);
+    isk__field_accel(f, x, y, 0, 0, ax, ay);
 }
 
 /* div a = dax/dx + day/dy by central differences: zero up to the
@@ -88,9 +91,9 @@ Test(fx_motion_field, turbulence_is_seeded_and_deterministic)
         double x = 0.37 * i - 50, y = 0.11 * i;
         a.t = b.t = c.t = 0.01 * i;
         double ax, ay, bx, by, cx, cy;
-        isk__field_accel(&a, x, y, &ax, &ay);
-        isk__field_accel(&b, x, y, &bx, &by);
-        isk__field_accel(&c, x, y, &cx, &cy);
+        isk__field_accel(&a, x, y, 0, 0, &ax, &ay);
+        isk__field_accel(&b, x, y, 0, 0, &bx, &by);
+        isk__field_accel(&c, x, y, 0, 0, &cx, &cy);
         cr_assert(ax == bx && ay == by);
         differ += ax != cx || ay != cy;
         sum += hypot(ax, ay);
@@ -135,12 +138,12 @@ Test(fx_motion_field, turbulence_evolves_with_speed)
     f.turb[f.nturb++] = isk__field_turbulence(1, 2, 0, isk__noise_key(1, 0));
     double a0, b0, a1, b1;
     f.t = 0;
-    isk__field_accel(&f, 0.3, 0.7, &a0, &b0);
+    isk__field_accel(&f, 0.3, 0.7, 0, 0, &a0, &b0);
     f.t = 5;
-    isk__field_accel(&f, 0.3, 0.7, &a1, &b1);
+    isk__field_accel(&f, 0.3, 0.7, 0, 0, &a1, &b1);
     cr_assert(a0 == a1 && b0 == b1);
     f.turb[0].speed = 0.5;
-    isk__field_accel(&f, 0.3, 0.7, &a1, &b1);
+    isk__field_accel(&f, 0.3, 0.7, 0, 0, &a1, &b1);
     cr_assert(a0 != a1 || b0 != b1);
 }
 

@@ -146,6 +146,40 @@ Test(fx_motion_path, local_space_moves_with_the_emitter)
     isk_effect_destroy(wld);
 }
 
+/* A local-space emitter riding into a wall: the carry never pushes a
+ * particle through a closed wall (it used to, after the walls had run:
+ * 1,498 of 1,666 ended beyond the right wall).  It stops them on the wall,
+ * an outward velocity turned back as a bounce, on 1 and 3 threads alike. */
+Test(fx_motion_path, local_space_never_carries_past_a_wall)
+{
+    const char *text = "[scene]\ndt = 1/60\nseed = 3\n[bounds]\nwindow = -10, 10, -10, 10\n[emitter e]\n"
+                       "source = stream\nrate = 833\nlife = 2\nlaunch = disc\nspeed_max = 3\nposition = -5, 0\n"
+                       "emitter_velocity = 7.4, 0\nspace = local\n";
+    isk_effect *fx = scene_text_open(text, 1), *fx3 = scene_text_open(text, 3);
+    size_t beyond_ever = 0, on_the_wall = 0;
+    for (int f = 0; f < 120; f++) {
+        cr_assert_eq(isk_effect_step(fx), ISK_OK);
+        cr_assert_eq(isk_effect_step(fx3), ISK_OK);
+        const isk_particles *p = isk_effect_particles(fx, 0);
+        size_t beyond = 0;
+        on_the_wall = 0;
+        for (size_t i = 0; i < p->count; i++) {
+            beyond += p->x[i] > 10 || p->x[i] < -10 || p->y[i] > 10 || p->y[i] < -10;
+            on_the_wall += p->x[i] == 10;
+        }
+        beyond_ever = beyond > beyond_ever ? beyond : beyond_ever;
+    }
+    const isk_particles *p = isk_effect_particles(fx, 0), *q = isk_effect_particles(fx3, 0);
+    cr_assert_eq(p->count, 1666);
+    cr_assert_eq(beyond_ever, 0, "up to %zu of %zu beyond a wall", beyond_ever, p->count);
+    cr_assert_gt(on_the_wall, 100, "the test rides into the wall: %zu on it", on_the_wall);
+    cr_assert_eq(q->count, p->count);
+    cr_assert_eq(memcmp(p->x, q->x, p->count * sizeof *p->x), 0);
+    cr_assert_eq(memcmp(p->vx, q->vx, p->count * sizeof *p->vx), 0);
+    isk_effect_destroy(fx);
+    isk_effect_destroy(fx3);
+}
+
 /* `iskra play --follow`: the emitter goes where the mouse is, and a fast
  * mouse leaves a line of births, not a spot per frame. */
 Test(fx_motion_path, play_follow_leaves_no_gaps, .timeout = 60)

@@ -42,8 +42,9 @@
  *     kept by the integrator's own pass when it has one) -> forces it
  *     references + integrator (blocked) -> slowing -> oscillation -> walls -> deflectors ->
  *     spin (only where an angle is seen and spins) -> ageing; then the
- *     local-space carry -> births (streams) -> hits (on_hit) -> culling (its
- *     deaths first as on_death events); after every emitter stepped: the
+ *     local-space carry -> hits (on_hit) -> culling (its deaths first as
+ *     on_death events) -> births (streams: after the cull, so a full pool
+ *     reads isk_effect_particle_count == capacity); after every emitter stepped: the
  *     sub-emitters' births, then the trails' newest points
  * and its draw routine: trails (only with trail) -> colour/alpha/size over
  * life (only with gradients) -> draw (a texture or a streak: the look

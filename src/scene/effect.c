@@ -114,7 +114,7 @@ static isk_status build_groups(isk_effect *e, isk_error *err)
         isk_status s = alloc_group(e, g);
         if (s != ISK_OK)
             return isk_error_set(err, s, "emitter '%s': %s", em->name, isk_status_str(s));
-        isk_rng_seed(&g->rng, isk__fx_group_seed(d->seed, gi));
+        isk__fx_seed_streams(g, d->seed);
         if ((s = isk__fx_bake_ramps(g, err)) != ISK_OK || (s = isk__fx_looks_prepare(e, g, err)) != ISK_OK)
             return s;
         if ((s = isk__fx_compile(e, g)) != ISK_OK)

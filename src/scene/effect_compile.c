@@ -11,7 +11,8 @@
  *                 (a drift with an oscillate after it, and the slow between
  *                 them if any: one drift+sway stage doing them in one pass,
  *                 which describes itself as them)
- *   substep end:  carry (local space) -> spawn (streams) -> cull (finite lives, killing deflectors)
+ *   substep end:  carry (local space) -> hits (bounces as events) ->
+ *                 cull (finite lives, killing deflectors) -> spawn (streams)
  *
  * A force no emitter references, a zero-strength force, a disabled
  * potential, or a potential switched off by its maximum distance is in no
@@ -210,7 +211,7 @@ isk_status isk__fx_compile(isk_effect *e, fx_group *g)
             return ISK_ERR_FULL;
         st->u.deflect.segs = g->defl;
         st->u.deflect.n = g->ndefl;
-        st->u.deflect.rng = &g->rng;
+        st->u.deflect.rng = &g->streams[FX_STREAM_CHANCE]; /* a draw only where probability < 1 */
         st->u.deflect.can_kill = can_kill;
         st->u.deflect.drag = f->drag;
         st->u.deflect.hit = em->events.on_hit >= 0;
@@ -250,12 +251,15 @@ isk_status isk__fx_compile(isk_effect *e, fx_group *g)
 
     if (em->born.source == ISK_SOURCE_STREAM && em->born.space == ISK_SPACE_LOCAL)
         g->substep_end[g->nsubstep_end++] = &isk__fx_step_carry;
-    if (em->born.source == ISK_SOURCE_STREAM && em->born.active)
-        g->substep_end[g->nsubstep_end++] = &isk__fx_step_spawn;
     if (em->events.on_hit >= 0 && (walls || g->ndefl)) /* sub-emitters (effect_events.c) */
         g->substep_end[g->nsubstep_end++] = &isk__fx_step_hits;
+    /* The dead leave before the births: a full pool of short lives is full
+     * again at every step's end, and a birth never finds the place of a
+     * particle that is already dead taken. */
     if (mortal)
         g->substep_end[g->nsubstep_end++] = &isk__fx_step_cull;
+    if (em->born.source == ISK_SOURCE_STREAM && em->born.active) /* a stopped stream: none */
+        g->substep_end[g->nsubstep_end++] = &isk__fx_step_spawn;
     /* Blocks rest when the pipeline's stages allow it and nothing else moves
      * the group's particles: no step at the frame's start (the late walls,
      * the releases) and no carry with the emitter. */

@@ -12,7 +12,9 @@
  *            touch right after a touch of the same kind is resting or
  *            sliding, not a bounce);
  *            the hits stage after the pipeline (substep end, on the caller)
- *            turns them into events in index order and clears them.
+ *            turns them into events in index order and clears them
+ *            (a bounce in a back-dated birth's first moments, stream or
+ *            child, waits in the column for the next substep's hits).
  * The event is the particle's position and velocity at the end of the
  * substep in which it died or bounced, and that substep's end time.
  *

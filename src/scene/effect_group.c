@@ -17,6 +17,26 @@ uint64_t isk__fx_group_seed(uint64_t seed, int index)
     return seed + (uint64_t)index * 0x9E3779B97F4A7C15ull;
 }
 
+/* Each attribute stream's constant: its seed is the group's seed xor this
+ * (isk_rng_seed mixes it through splitmix64).  Fixed forever: changing one
+ * changes every scene that uses the attribute. */
+static const uint64_t stream_salt[FX_STREAM_COUNT] = {
+    [FX_STREAM_MASS] = 0x6d617373u,     /* "mass" */
+    [FX_STREAM_ROTATION] = 0x726f7461u, /* "rota" */
+    [FX_STREAM_SPIN] = 0x7370696eu,     /* "spin" */
+    [FX_STREAM_SIZE] = 0x73697a65u,     /* "size" */
+    [FX_STREAM_COLOR] = 0x636f6c6fu,    /* "colo" */
+    [FX_STREAM_CHANCE] = 0x6368616eu,   /* "chan" */
+};
+
+void isk__fx_seed_streams(fx_group *g, uint64_t seed)
+{
+    const uint64_t s = isk__fx_group_seed(seed, g->index);
+    isk_rng_seed(&g->rng, s);
+    for (int k = 0; k < FX_STREAM_COUNT; k++)
+        isk_rng_seed(&g->streams[k], s ^ stream_salt[k]);
+}
+
 isk_status isk__fx_fire_explosion(isk_effect *e, fx_group *g, isk_explosion kind, double cx, double cy, size_t count,
                              isk_kick_target kick)
 {

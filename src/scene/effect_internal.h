@@ -141,11 +141,28 @@ typedef struct fx_retained {
     long records, replays;        /* draws recorded and replayed (tests) */
 } fx_retained;
 
+/* The emitter's random streams.  The main one (fx_group.rng) draws what
+ * the theses' scenes draw: positions, launch velocities, lives,
+ * oscillation, the thesis's jitter, explosions.  Each optional attribute,
+ * a draw that exists only when its key is set, has a stream of its own,
+ * so turning the key on or off never moves the main stream's draws (and
+ * so no other particle).  Seeds: effect_group.c's table. */
+typedef enum fx_stream {
+    FX_STREAM_MASS,     /* mass_range */
+    FX_STREAM_ROTATION, /* rotation_range */
+    FX_STREAM_SPIN,     /* spin_range */
+    FX_STREAM_SIZE,     /* size_range */
+    FX_STREAM_COLOR,    /* color_pick */
+    FX_STREAM_CHANCE,   /* a deflector's probability */
+    FX_STREAM_COUNT
+} fx_stream;
+
 struct fx_group {
     int index;                     /* emitter index in the definition */
     const isk_emitter_def *def;    /* points into effect->def */
     isk_particles store;
-    isk_rng rng;
+    isk_rng rng;                   /* the main stream */
+    isk_rng streams[FX_STREAM_COUNT]; /* one per optional attribute (fx_stream) */
 
     /* compiled (effect_compile.c) */
     const fx_step_kind *frame_start[FX_MAX_STEP_STAGES];
@@ -291,6 +308,9 @@ void isk__fx_describe_group(const isk_effect *e, const fx_group *g, FILE *out);
 
 /* effect_group.c */
 uint64_t isk__fx_group_seed(uint64_t seed, int index);
+/* Seeds a group's main stream and its attribute streams from the scene's
+ * seed and the group's index. */
+void isk__fx_seed_streams(fx_group *g, uint64_t seed);
 /* effect_adopt.c: new particles [from, count) take the emitter's lifetime,
  * then their oscillation state: every source's particles go through here. */
 void isk__fx_adopt(isk_effect *e, fx_group *g, size_t from);

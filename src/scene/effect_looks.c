@@ -6,8 +6,8 @@
  * column (and the spin stage, effect_compile.c) exist only with a rotation
  * or a spin, the size column only with size_range, the colour column only
  * with color_pick; every random draw here happens only when its range or
- * color_pick asks, after every other draw of the birth (isk__fx_adopt calls this
- * last), so every existing scene keeps its bytes.  The drawing is
+ * color_pick asks, each from the attribute's own stream (fx_stream), so
+ * turning one on or off never changes another particle's draws.  The drawing is
  * effect_texture.c's.  A texture is made from the pixels the definition
  * holds (isk_effect_def.textures, read by the scene loader): nothing here
  * opens a file. */
@@ -60,24 +60,24 @@ void isk__fx_looks_adopt(fx_group *g, size_t from)
 {
     const isk_emitter_def *em = g->def;
     isk_particles *p = &g->store;
+    isk_rng *rotation = &g->streams[FX_STREAM_ROTATION], *spin = &g->streams[FX_STREAM_SPIN];
+    isk_rng *size = &g->streams[FX_STREAM_SIZE], *color = &g->streams[FX_STREAM_COLOR];
     if (p->angle) {
         for (size_t i = from; i < p->count; i++) {
             double a = em->look.rotation +
-                (em->look.rotation_range > 0 ? em->look.rotation_range * isk_rng_uniform(&g->rng) : 0.0);
+                (em->look.rotation_range > 0 ? em->look.rotation_range * isk_rng_uniform(rotation) : 0.0);
             p->angle[i] = wrap(a);
         }
         for (size_t i = from; i < p->count; i++)
-            p->spin[i] =
-                em->look.spin + (em->look.spin_range > 0 ? em->look.spin_range * isk_rng_uniform(&g->rng) : 0.0);
+            p->spin[i] = em->look.spin + (em->look.spin_range > 0 ? em->look.spin_range * isk_rng_uniform(spin) : 0.0);
     }
     if (p->size)
         for (size_t i = from; i < p->count; i++)
-            p->size[i] =
-                em->look.size + (em->look.size_range > 0 ? em->look.size_range * isk_rng_uniform(&g->rng) : 0.0);
+            p->size[i] = em->look.size + (em->look.size_range > 0 ? em->look.size_range * isk_rng_uniform(size) : 0.0);
     if (p->color)
         for (size_t i = from; i < p->count; i++)
             p->color[i] = em->look.color_pick.n
-                ? isk_color_gradient_eval(em->look.color_pick.stops, em->look.color_pick.n, isk_rng_uniform(&g->rng))
+                ? isk_color_gradient_eval(em->look.color_pick.stops, em->look.color_pick.n, isk_rng_uniform(color))
                 : em->look.color;
 }
 

@@ -48,7 +48,15 @@ typedef struct state_row {
  * its particles, its pending events or compiled from the definition. */
 static const state_row group_rows[] = {
     GROW(rng.z1, ROW_U32),           GROW(rng.z2, ROW_U32),         GROW(rng.z3, ROW_U32),
-    GROW(rng.z4, ROW_U32),           GROW(origin, ROW_F64),         GROW(emitted, ROW_U64),
+    GROW(rng.z4, ROW_U32),
+    /* the optional attributes' own streams (effect_group.c), one row of four each */
+#define STREAM_ROWS(k)                                                                                                 \
+    GROW(streams[k].z1, ROW_U32), GROW(streams[k].z2, ROW_U32), GROW(streams[k].z3, ROW_U32),                          \
+        GROW(streams[k].z4, ROW_U32)
+    STREAM_ROWS(FX_STREAM_MASS),     STREAM_ROWS(FX_STREAM_ROTATION), STREAM_ROWS(FX_STREAM_SPIN),
+    STREAM_ROWS(FX_STREAM_SIZE),     STREAM_ROWS(FX_STREAM_COLOR),    STREAM_ROWS(FX_STREAM_CHANCE),
+#undef STREAM_ROWS
+    GROW(origin, ROW_F64),           GROW(emitted, ROW_U64),
     GROW(next_burst, ROW_F64),       GROW(dropped, ROW_U64),        GROW(removed_nonfinite, ROW_SIZE),
     GROW(mc.cx, ROW_F64),            GROW(mc.cy, ROW_F64),          GROW(mc.total, ROW_SIZE),
     GROW(mc.batch_size, ROW_SIZE),   GROW(mc.batches, ROW_SIZE),    GROW(mc.last_size, ROW_SIZE),
@@ -79,6 +87,8 @@ static const state_row potential_rows[] = {
     PROW(x_mult, ROW_F64),  PROW(enabled, ROW_INT),  PROW(vel.x, ROW_F64),    PROW(vel.y, ROW_F64),
 };
 #undef PROW
+
+_Static_assert(FX_STREAM_COUNT == 6, "a new attribute stream needs its STREAM_ROWS in group_rows");
 
 enum {
     NGROUP_ROWS = sizeof group_rows / sizeof group_rows[0],

@@ -11,10 +11,11 @@
  * already exceeds its life is never created (particle-engine thesis).
  *
  * Random draws per new particle, in this order: position (the shape's
- * draws, iskra/shape.h), velocity (the generator's), mass (one uniform, only
- * with a mass range), life (one, only with a life range), oscillation
- * (omega then amplitude, then the phase with osc_random_phase; only with
- * oscillation), jitter (one, only in the thesis jitter mode).
+ * draws, iskra/shape.h), velocity (the generator's), life (one, only with
+ * a life range), oscillation (omega then amplitude, then the phase with
+ * osc_random_phase; only with oscillation), jitter (one, only in the thesis
+ * jitter mode).  A mass range draws from a stream of its own (fx_stream),
+ * as the looks do.
  *
  * Moving emitters: the emitter's path is position(t) = base +
  * emitter_velocity*(t - t_base), computed directly at every birth time,
@@ -137,30 +138,60 @@ static int moving(const fx_group *g, const isk_emitter_def *em)
     return em->born.emitter_velocity.x != 0 || em->born.emitter_velocity.y != 0 || g->path_t1 > -INFINITY;
 }
 
+/* One axis of the carry: every particle moves by d; one that a closed wall
+ * ahead (at `wall`, in d's direction) would be pushed through stops on it,
+ * its velocity through the wall turned back with the restitution c, as
+ * at a bounce.  A particle already beyond the wall before the carry (the
+ * thesis's walls let some be) is carried as it is. */
+static void carry_axis(size_t n, double *restrict pos, double *restrict v, double d, double wall, double c)
+{
+    for (size_t i = 0; i < n; i++) {
+        const double from = pos[i], to = from + d;
+        if (d > 0 ? (from <= wall && to > wall) : (from >= wall && to < wall)) {
+            pos[i] = wall;
+            if (d > 0 ? v[i] > 0 : v[i] < 0)
+                v[i] = -c * v[i];
+        } else {
+            pos[i] = to;
+        }
+    }
+}
+
 /* Local space: every particle moves by what the emitter moved since they
  * were last carried (a difference of directly computed positions, so the
- * carries add up to the emitter's whole way). */
+ * carries add up to the emitter's whole way).  The carry runs after the
+ * walls, so it respects them itself: a carried particle never ends a step
+ * beyond a closed wall. */
 static isk_status run_carry(isk_effect *e, fx_group *g, double t0, double h)
 {
-    (void)e;
     const isk_vec2 to = isk__fx_emitter_pos(g, g->def, t0 + h);
     const double dx = to.x - g->carried.x, dy = to.y - g->carried.y;
     g->carried = to;
     if (dx == 0 && dy == 0)
         return ISK_OK;
     isk_particles *p = &g->store;
-    for (size_t i = 0; i < p->count; i++) {
-        p->x[i] += dx;
-        p->y[i] += dy;
-    }
+    const isk_bounds *b = &e->def.bounds;
+    const unsigned sides = g->def->motion.bounded ? b->sides : 0u;
+    const double c = b->mode == ISK_BOUNCE_REFLECT ? b->restitution : 1.0; /* the thesis's walls flip the sign */
+    /* the wall ahead on each axis, if closed; none: infinitely far */
+    const unsigned xside = dx > 0 ? ISK_SIDE_RIGHT : ISK_SIDE_LEFT, yside = dy > 0 ? ISK_SIDE_TOP : ISK_SIDE_BOTTOM;
+    const double xwall = !(sides & xside) ? (dx > 0 ? INFINITY : -INFINITY)
+        : dx > 0                          ? b->xmax - b->margin
+                                          : b->xmin + b->margin;
+    const double ywall = !(sides & yside) ? (dy > 0 ? INFINITY : -INFINITY)
+        : dy > 0                          ? b->ymax - b->margin
+                                          : b->ymin + b->margin;
+    if (dx != 0)
+        carry_axis(p->count, p->x, p->vx, dx, xwall, c);
+    if (dy != 0)
+        carry_axis(p->count, p->y, p->vy, dy, ywall, c);
     return ISK_OK;
 }
 
 static void describe_carry(const isk_effect *e, const fx_group *g, FILE *out)
 {
-    (void)e;
-    (void)g;
-    fprintf(out, "local space: the particles move with the emitter");
+    fprintf(out, "local space: the particles move with the emitter%s",
+            g->def->motion.bounded && e->def.bounds.sides ? ", never through a wall" : "");
 }
 
 const fx_step_kind isk__fx_step_carry = {"carry", run_carry, describe_carry};
@@ -237,7 +268,8 @@ isk_status isk__fx_birth(isk_effect *e, fx_group *g, const fx_launcher *l, doubl
         vx += dv[0];
         vy += dv[1];
     }
-    double m = em->launch.mass + (em->launch.mass_range > 0 ? em->launch.mass_range * isk_rng_uniform(&g->rng) : 0.0);
+    isk_rng *mass = &g->streams[FX_STREAM_MASS];
+    double m = em->launch.mass + (em->launch.mass_range > 0 ? em->launch.mass_range * isk_rng_uniform(mass) : 0.0);
     size_t i;
     isk_status st = isk_particles_add(p, x, y, vx, vy, m, &i);
     if (st != ISK_OK)

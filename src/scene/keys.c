@@ -444,7 +444,8 @@ static const isk_key keys[] = {
 
     /* [emitter NAME] motion (src/sim/stage_field.c, src/scene/effect_stream.c) */
     {EMITTER("radial_accel"), .type = ISK_KEY_NUMBER, EM(motion.radial_accel), STRENGTH, .dflt = "0", .live = ALL,
-     .meaning = "units/s^2 away from the emitter's current position (negative: towards it; none exactly on it)"},
+     .meaning =
+         "units/s^2 away from the emitter's current position (negative: towards it; exactly on it, along the velocity)"},
     {EMITTER("tangential_accel"), .type = ISK_KEY_NUMBER, EM(motion.tangential_accel), STRENGTH, .dflt = "0",
      .live = ALL,
      .meaning = "units/s^2 perpendicular to the radial direction, counter-clockwise for positive (orbits)"},

@@ -50,7 +50,10 @@ double isk__noise3(uint64_t key, double u, double v, double w, double *du, doubl
 
 isk_field_turb isk__field_turbulence(double strength, double scale, double speed, uint64_t key);
 
-/* The field's acceleration at (x, y) (the stage's kernel, for one point). */
-void isk__field_accel(const isk_field *f, double x, double y, double *ax, double *ay);
+/* The field's acceleration at (x, y) for a particle moving at (vx, vy)
+ * (the stage's kernel, for one point).  Exactly on the centre the radial
+ * and tangential terms take the velocity's direction (the way the particle
+ * leaves the centre), and none when it is at rest there. */
+void isk__field_accel(const isk_field *f, double x, double y, double vx, double vy, double *ax, double *ay);
 
 #endif

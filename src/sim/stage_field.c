@@ -34,12 +34,23 @@ static void direction(double dx, double dy, double *ux, double *uy)
     }
 }
 
-static void accel(const isk_field *f, double x, double y, double *ax, double *ay)
+/* The direction from the centre; exactly on it, the direction the particle
+ * leaves it in (where it is an instant later: its velocity's), so a
+ * particle born on the emitter feels the pull from its first moment. */
+static void from_centre(const isk_field *f, double x, double y, double vx, double vy, double *ux, double *uy)
+{
+    if (x == f->cx && y == f->cy)
+        direction(vx, vy, ux, uy);
+    else
+        direction(x - f->cx, y - f->cy, ux, uy);
+}
+
+static void accel(const isk_field *f, double x, double y, double vx, double vy, double *ax, double *ay)
 {
     double a = 0.0, b = 0.0;
     if (f->radial != 0.0 || f->tangential != 0.0) {
         double ux, uy;
-        direction(x - f->cx, y - f->cy, &ux, &uy);
+        from_centre(f, x, y, vx, vy, &ux, &uy);
         a = f->radial * ux - f->tangential * uy;
         b = f->radial * uy + f->tangential * ux;
     }
@@ -55,9 +66,9 @@ static void accel(const isk_field *f, double x, double y, double *ax, double *ay
     *ay = b;
 }
 
-void isk__field_accel(const isk_field *f, double x, double y, double *ax, double *ay)
+void isk__field_accel(const isk_field *f, double x, double y, double vx, double vy, double *ax, double *ay)
 {
-    accel(f, x, y, ax, ay);
+    accel(f, x, y, vx, vy, ax, ay);
 }
 
 static void run_field(const isk_stage *st, isk_block *b, double h)
@@ -65,7 +76,7 @@ static void run_field(const isk_stage *st, isk_block *b, double h)
     const isk_field *f = st->u.field.f;
     for (size_t i = 0; i < b->n; i++) {
         double ax, ay;
-        accel(f, b->x[i], b->y[i], &ax, &ay);
+        accel(f, b->x[i], b->y[i], b->vx[i], b->vy[i], &ax, &ay);
         b->vx[i] += ax * h;
         b->vy[i] += ay * h;
     }
