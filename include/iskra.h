@@ -87,6 +87,7 @@
 #include "iskra/effect.h"
 #include "iskra/scene.h"
 #include "iskra/snapshot.h"
+#include "iskra/timeline.h"
 #include "iskra/keys.h"
 #include "iskra/presets.h"
 #include "iskra/chart.h"

@@ -635,6 +635,14 @@ isk_status isk_effect_step_render(isk_effect *e, isk_canvas *c);
 /* The click action at world point (x, y). */
 isk_status isk_effect_click(isk_effect *e, double x, double y);
 
+/* How many changes from outside the effect has taken since create: each
+ * accepted isk_effect_set (and its typed setters), potential added or
+ * removed, click, isk_effect_emit and isk_effect_move adds one; steps,
+ * renders, reset and isk_effect_restore do not.  A caller that keeps a
+ * timeline of snapshots (iskra play's rewind) learns from it that the
+ * frames after now will differ from those it kept. */
+unsigned long isk_effect_edits(const isk_effect *e);
+
 /* ---- changing it while it runs ----------------------------------------------
  *
  * Any key of the key table (iskra/keys.h, `iskra keys`), by name, with its

@@ -144,7 +144,7 @@ static isk_status populate_all(isk_effect *e, isk_error *err)
     if (s != ISK_OK)
         return isk_error_set(err, s, "prewarm: %s", isk_status_str(s));
     if (d->click.at_start && d->click.after_frames == 0) {
-        s = isk_effect_click(e, d->click.x, d->click.y);
+        s = isk__fx_click(e, d->click.x, d->click.y);
         if (s != ISK_OK)
             return isk_error_set(err, s, "click: %s", isk_status_str(s));
     }
@@ -232,6 +232,7 @@ isk_status isk__fx_take_state(isk_effect *e, isk_effect *bare)
     e->band_min_work = old.band_min_work;
     e->no_retain = old.no_retain;
     e->split_always = old.split_always;
+    e->edits = old.edits; /* a restore is not an edit: a timeline's caller sees no change */
     old.workers = bare->workers;
     *bare = old;
     /* the stage lists point into the definition, which moved with the

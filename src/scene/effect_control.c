@@ -23,6 +23,7 @@ isk_status isk_effect_emit(isk_effect *e, const char *section, size_t n, isk_err
     const isk_emitter_def *em = g->def;
     switch (em->born.source) {
     case ISK_SOURCE_STREAM:
+        e->edits++;
         s = isk__fx_stream_emit(e, g, n);
         break;
     case ISK_SOURCE_EXPLOSION: {
@@ -30,6 +31,7 @@ isk_status isk_effect_emit(isk_effect *e, const char *section, size_t n, isk_err
         if (n > limit)
             return isk_error_set(err, ISK_ERR_RANGE, "isk_effect_emit: [emitter %s]: %zu particles, over its limit %zu",
                                  em->name, n, limit);
+        e->edits++;
         s = isk__fx_fire_explosion(e, g, em->born.explosion, em->born.position.x, em->born.position.y, n, em->born.kick);
         if (s == ISK_ERR_FULL)
             return isk_error_set(err, s, "isk_effect_emit: [emitter %s]: its multi-coulomb explosion is still "
@@ -76,6 +78,7 @@ isk_status isk_effect_move(isk_effect *e, const char *section, double x, double 
      * on from where it is (an explosion's next centre and a particle's
      * place at reset need nothing more) */
     const isk_emitter_def old = *em;
+    e->edits++;
     em->born.position = (isk_vec2){x, y};
     if (src == ISK_SOURCE_STREAM)
         isk__fx_path_changed(e, g, &old, "position");

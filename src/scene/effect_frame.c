@@ -183,7 +183,7 @@ static isk_status advance(isk_effect *e)
         return se;
     isk__fx_trail_record(e, stepped);
     if (d->click.at_start && d->click.after_frames > 0 && e->frame == d->click.after_frames)
-        return isk_effect_click(e, d->click.x, d->click.y);
+        return isk__fx_click(e, d->click.x, d->click.y);
     return ISK_OK;
 }
 
@@ -233,6 +233,14 @@ isk_status isk_effect_click(isk_effect *e, double x, double y)
         return ISK_ERR_NULL;
     if (!isfinite(x) || !isfinite(y))
         return ISK_ERR_NAN;
+    e->edits++;
+    return isk__fx_click(e, x, y);
+}
+
+unsigned long isk_effect_edits(const isk_effect *e) { return e ? e->edits : 0; }
+
+isk_status isk__fx_click(isk_effect *e, double x, double y)
+{
     const isk_effect_def *d = &e->def;
     if (!(d->click.enabled || d->click.at_start) || e->ngroups == 0)
         return ISK_OK;

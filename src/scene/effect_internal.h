@@ -255,6 +255,8 @@ struct isk_effect {
     double time;                   /* isk__fx_clock_at(&clock, frame), kept current */
     long frame;                    /* frames stepped since create or reset (negative while prewarming) */
     double last_frame_time;        /* potentials move by this at the next step */
+    unsigned long edits;           /* changes from outside since create (isk_effect_edits): sets,
+                                      potentials added or removed, clicks, births by hand, moves */
     isk_sprite_cache *sprites;
     fx_bins bins;
     isk_texture_cache *textures;   /* made at the first emitter with a texture (effect_looks.c) */
@@ -270,6 +272,9 @@ isk_status isk__fx_emitter_of(isk_effect *e, const char *fn, const char *section
  * e's old state to destroy (the lists are compiled again: ISK_ERR_NOMEM). */
 isk_status isk__fx_create_bare(isk_effect **out, const isk_effect_def *def, isk_error *err);
 isk_status isk__fx_take_state(isk_effect *e, isk_effect *bare);
+/* effect_frame.c: the click action at (x, y) as part of the run (a click
+ * at the start); isk_effect_click is the same from outside, an edit. */
+isk_status isk__fx_click(isk_effect *e, double x, double y);
 
 /* effect_check.c: validates a whole definition; messages name the item. */
 isk_status isk__fx_check(const isk_effect_def *d, isk_error *err);

@@ -268,6 +268,7 @@ isk_status isk_effect_set(isk_effect *e, const char *section, const char *key, c
     }
     if (k->type == ISK_KEY_POINTS)
         free(old.drawing.points);
+    e->edits++;
     s = apply(e, &w, k, &old);
     if (s != ISK_OK)
         return isk_error_set(err, s, "%s %s: %s", w.label, key, isk_status_str(s));
@@ -368,6 +369,7 @@ isk_status isk_effect_add_potential(isk_effect *e, const char *name, const isk_p
     e->pots[e->npots].id = id + 1;
     e->pot_force[e->npots] = f;
     e->npots++;
+    e->edits++;
     return isk__fx_compile_all(e);
 }
 
@@ -403,6 +405,7 @@ isk_status isk_effect_remove_force(isk_effect *e, const char *name, isk_error *e
         w++;
     }
     e->npots = w;
+    e->edits++;
     return isk__fx_compile_all(e);
 }
 

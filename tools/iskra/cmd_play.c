@@ -356,6 +356,8 @@ void play_cli_close(player *p)
     isk_effect_destroy(p->fx);
     p->fx = NULL;
     play_script_free(&p->script);
+    isk_timeline_destroy(p->timeline);
+    p->timeline = NULL;
 }
 
 /* --replay: a lesson's shot:NAME into --shots DIR as NAME.png, saying

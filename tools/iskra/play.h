@@ -43,6 +43,7 @@
 #include "iskra/sdl.h"
 #include "iskra/timestep.h"
 #include "iskra/ui.h"
+#include "iskra/timeline.h"
 #include "scene_args.h"
 
 #define PLAY_HISTORY 600       /* samples kept for the charts */
@@ -155,6 +156,10 @@ typedef struct play_host {
     void (*deliver)(void *user, const char *file_name, const void *bytes, size_t n);
 } play_host;
 
+/* Rewind keeps at most this much of a run (the campfire's first minute
+ * fits: docs/simulator.md, "Going back in time"). */
+#define PLAY_TIMELINE_BYTES ((size_t)64 << 20)
+
 typedef struct player {
     /* the scene */
     scene_args args;
@@ -211,17 +216,34 @@ typedef struct player {
     int energy_ref_valid;
     size_t count_ref;          /* particles then (a click restarts the drift) */
     int ref_integrator;        /* the integrator then */
+    /* rewind (iskra/timeline.h): the frames since the last reset, in at
+     * most PLAY_TIMELINE_BYTES (NULL until the first restart) */
+    isk_timeline *timeline;
+    int timeline_shown;        /* the bar along the canvas's foot is drawn */
+    int timeline_held;         /* the bar took the button's press: the drag is its */
+    isk_ui_rect timeline_bar;  /* where it is, in the window */
     /* files */
     const char *save_to;       /* --save PATH, or NULL: iskra-SCENE.ini */
     play_script script;
 } player;
+
+/* play_rewind.c: the timeline kept up to date (after a restart, every
+ * shown frame, every step), B's step back, the bar's input (1: it took
+ * the pointer's press or drag) and its drawing over the canvas's foot. */
+void play_rewind_restart(player *p);
+void play_rewind_watch(player *p);
+void play_rewind_stepped(player *p);
+void play_rewind_to(player *p, long frame);
+void play_rewind_back(player *p);
+int play_rewind_input(player *p, const isk_ui_area_state *a);
+void play_rewind_draw(player *p);
 
 /* play_actions.c */
 typedef enum play_action {
     PLAY_PLAY = 0, PLAY_PAUSE, PLAY_STOP, PLAY_RESET, PLAY_RELOAD, PLAY_STEP,
     PLAY_SLOWER, PLAY_FASTER, PLAY_MORE_PRECISION, PLAY_LESS_PRECISION,
     PLAY_SAVE, PLAY_SHOT, PLAY_SHOT_WINDOW, PLAY_PANEL, PLAY_HUD, PLAY_QUIT, PLAY_TOGGLE_PAUSE,
-    PLAY_ACTION_COUNT
+    PLAY_BACK, PLAY_TIMELINE, PLAY_ACTION_COUNT
 } play_action;
 typedef struct play_action_info {
     const char *id;            /* widget name, for scripts */

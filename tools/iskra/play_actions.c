@@ -26,6 +26,8 @@ static const play_action_info actions[PLAY_ACTION_COUNT] = {
     [PLAY_PANEL] = {"panel", "Panel", "Tab", ISK_UI_KEY_TAB, 0, "hide / show the panel"},
     [PLAY_HUD] = {"hud", "HUD", "H", 'h', 0, "HUD"},
     [PLAY_QUIT] = {"quit", "Quit", "Esc", ISK_UI_KEY_ESCAPE, 0, "quit"},
+    [PLAY_BACK] = {"back", "Back", "B", 'b', 0, "one frame back"},
+    [PLAY_TIMELINE] = {"timeline", "Timeline", "T", 't', 0, "timeline (click it: go there)"},
 };
 
 const play_action_info *play_action_at(play_action a)
@@ -118,6 +120,8 @@ void play_do(player *p, play_action a)
     case PLAY_PANEL: p->panel_toggle = 1; break; /* the window changes size between frames */
     case PLAY_HUD: p->hud = !p->hud; break;
     case PLAY_QUIT: p->quit = 1; break;
+    case PLAY_BACK: play_rewind_back(p); break;
+    case PLAY_TIMELINE: p->timeline_shown = !p->timeline_shown; break;
     default: break;
     }
 }

@@ -17,6 +17,7 @@ static void compose(player *p)
         memcpy(p->shown->pixels + (size_t)y * p->shown->stride, p->sim.pixels + (size_t)y * p->sim.stride,
                (size_t)(l->canvas.w < p->shown->width ? l->canvas.w : p->shown->width) * 4);
     play_hud_draw(p);
+    play_rewind_draw(p);
 }
 
 int play_frame(player *p, double dt_seconds, const isk_event *ev, int nev)
@@ -38,6 +39,7 @@ int play_frame(player *p, double dt_seconds, const isk_event *ev, int nev)
     play_shortcuts(p);
     if (p->quit || p->failed)
         return 1;
+    play_rewind_watch(p); /* after this frame's edits, before its steps */
 
     const double dropped = p->ts.dropped;
     int steps = p->paused || p->physics_off ? 0 : isk_timestep_advance(&p->ts, dt_seconds);

@@ -378,7 +378,7 @@ void play_extras(player *p, isk_ui_rect a)
     play_file_buttons(p, buttons);
     /* the keys that have no button, then the last message */
     static const play_action listed[] = {PLAY_TOGGLE_PAUSE, PLAY_SLOWER, PLAY_FASTER, PLAY_MORE_PRECISION,
-                                         PLAY_LESS_PRECISION, PLAY_HUD, PLAY_QUIT};
+                                         PLAY_LESS_PRECISION, PLAY_BACK, PLAY_TIMELINE, PLAY_HUD, PLAY_QUIT};
     char text[400];
     size_t used = (size_t)snprintf(text, sizeof text, "keys: 1-%d click mode", PLAY_CLICK_MODES);
     for (size_t i = 0; i < sizeof listed / sizeof listed[0] && used < sizeof text; i++) {
@@ -521,6 +521,8 @@ static void follow_mouse(player *p, double wx, double wy)
 void play_canvas(player *p)
 {
     isk_ui_area_state a = isk_ui_area(&p->ui, "canvas", p->lay.canvas);
+    if (play_rewind_input(p, &a))
+        return; /* the timeline's bar took the pointer */
     const isk_effect_def *d = isk_effect_definition(p->fx);
     /* The thesis turns the click's whole pixel into world units; iskra
      * takes the pixel's centre. */

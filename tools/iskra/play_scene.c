@@ -12,6 +12,7 @@
 void play_restarted(player *p)
 {
     play_charts_reset(p);
+    play_rewind_restart(p);
     p->dragging = 0;
     size_t n;
     isk_effect_potentials(p->fx, &n);
@@ -59,6 +60,7 @@ void play_simulate(player *p, int steps)
             p->failed = 1;
             return;
         }
+        play_rewind_stepped(p);
     }
     double seconds = progress_now() - t0;
     if (!trails && isk_effect_render(p->fx, &p->sim) != ISK_OK) {
