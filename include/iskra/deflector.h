@@ -152,6 +152,8 @@ typedef struct isk_deflect_stats {
     size_t last_resort; /* particles that ran out of hits (see above) */
     uint8_t *bounced;   /* optional (NULL: not kept): per particle of the call, the bounces it
                            made in it, saturating at 255; written, not added to */
+    size_t wall_bounces; /* bounces on walls (isk_contacts_step only; iskra/contacts.h) */
+    uint8_t *wall_bounced; /* optional, as `bounced`, for the walls (isk_contacts_step only) */
 } isk_deflect_stats;
 
 /* A bouncing segment with c = 1, p = 1, uniform restitution. */

@@ -193,7 +193,11 @@ isk_status isk__fx_compile(isk_effect *e, fx_group *g)
             return ISK_ERR_FULL;
         osc_params(&st->u.osc, e, em);
     }
-    if (walls && !em->motion.draw_before_bounce) {
+    /* Sound walls and deflectors together are one contact pass, in the
+     * order the path meets them (iskra/contacts.h): the deflect stage. */
+    const int walls_with_segments = walls && !em->motion.draw_before_bounce && g->ndefl &&
+                                    d->bounds.mode == ISK_BOUNCE_REFLECT;
+    if (walls && !em->motion.draw_before_bounce && !walls_with_segments) {
         if (!ADD(isk__stage_walls))
             return ISK_ERR_FULL;
         st->u.walls.b = &d->bounds;
@@ -214,6 +218,7 @@ isk_status isk__fx_compile(isk_effect *e, fx_group *g)
         st->u.deflect.can_kill = can_kill;
         st->u.deflect.drag = f->drag;
         st->u.deflect.hit = em->events.on_hit >= 0;
+        st->u.deflect.walls = walls_with_segments ? &d->bounds : NULL;
     }
     if (g->store.angle && isk__fx_looks_spins(em)) {
         if (!ADD(isk__stage_spin))

@@ -9,7 +9,10 @@
 #include <math.h>
 #include <string.h>
 
+#include "iskra/contacts.h"
 #include "sim/flight.h"
+#include "sim/rest_screen.h"  /* isk__rest_at_once */
+#include "sim/wall_contact.h"
 
 const char *const isk_deflect_reaction_names[ISK_DEFLECT_REACTION_COUNT] = {"bounce", "kill", "stick"};
 const char *const isk_restitution_mode_names[ISK_RESTITUTION_MODE_COUNT] = {"uniform", "normal"};
@@ -421,9 +424,158 @@ static void bounce_linear(const ctx *c, int hit, const isk_deflector *d, double 
     *ey = qy + ry;
 }
 
-static isk_status deflect(const isk_deflector *defs, int ndef, double *x, double *y, double *vx, double *vy,
-                          const double *x_old, const double *y_old, const isk_step_motion *mo, size_t n,
-                          isk_rng *rng, uint8_t *killed, isk_deflect_stats *stats)
+/* ---- walls in the same pass (iskra/contacts.h) ---------------------------- */
+
+/* The sound walls of a contact pass, per axis (0: x, 1: y); a missing wall
+ * at -inf / +inf. */
+typedef struct wall_box {
+    double lo[2], hi[2];
+    double c;
+    int on[2];
+} wall_box;
+
+static wall_box wall_box_of(const isk_bounds *b)
+{
+    const unsigned sd = b->sides;
+    wall_box w = {{sd & ISK_SIDE_LEFT ? b->xmin + b->margin : -INFINITY,
+                   sd & ISK_SIDE_BOTTOM ? b->ymin + b->margin : -INFINITY},
+                  {sd & ISK_SIDE_RIGHT ? b->xmax - b->margin : INFINITY,
+                   sd & ISK_SIDE_TOP ? b->ymax - b->margin : INFINITY},
+                  b->restitution,
+                  {(sd & (ISK_SIDE_LEFT | ISK_SIDE_RIGHT)) != 0, (sd & (ISK_SIDE_BOTTOM | ISK_SIDE_TOP)) != 0}};
+    return w;
+}
+
+static int in_box(const wall_box *w, double x, double y)
+{
+    return x >= w->lo[0] && x <= w->hi[0] && y >= w->lo[1] && y <= w->hi[1];
+}
+
+/* Which of the flight's axes an axis of the walls watches: those that
+ * started the step inside (one born outside is mirrored in at the end)
+ * and do not rest on a wall (its normal motion is then held at zero). */
+static int watches(const wall_box *w, const int skip[2], int a)
+{
+    return w->on[a] && !skip[a];
+}
+
+/* The first wall the flight meets in the rest of the step: its time (or
+ * INFINITY), axis and side (-1: lo, +1: hi); ties go to x. */
+static double first_wall(const flight *f, const wall_box *w, const int skip[2], int *axis, int *side)
+{
+    double best = INFINITY;
+    *axis = -1;
+    for (int a = 0; a < 2; a++) {
+        if (!watches(w, skip, a))
+            continue;
+        int wall;
+        const double t = isk__wall_time(a ? f->sy : f->sx, a ? f->uy : f->ux, a ? f->ay : f->ax, f->k, f->s,
+                                        w->lo[a], w->hi[a], &wall);
+        if (t < best) {
+            best = t;
+            *axis = a;
+            *side = wall;
+        }
+    }
+    return best;
+}
+
+/* Holds axis a of the flight on the wall W it is pressed into: the wall
+ * takes the normal acceleration, the normal velocity is zero (the stored
+ * one gets the integrator's offset back at the end, iskra/impact.h). */
+static void rest_on_wall(flight *f, int a, double W, int skip[2])
+{
+    if (a) {
+        f->sy = W;
+        f->uy = f->ay = 0.0;
+    } else {
+        f->sx = W;
+        f->ux = f->ax = 0.0;
+    }
+    skip[a] = 1;
+}
+
+/* The start of a flight on a wall it is pressed into: a normal velocity
+ * within rounding of zero is zero, and a particle within the resting
+ * distance of iskra/impact.h, no faster than its speed, rests at once, as
+ * the walls alone do it (else each step would cost a root solve for a hop
+ * below what the step resolves).  Returns 1 when an axis rested. */
+static int rest_at_start(flight *f, const wall_box *w, double h, int skip[2])
+{
+    int rested = 0;
+    for (int a = 0; a < 2; a++) {
+        if (!watches(w, skip, a))
+            continue;
+        const double P = a ? f->sy : f->sx, U = a ? f->uy : f->ux, acc = a ? f->ay : f->ax;
+        double near, slow;
+        isk__rest_at_once(acc, h, w->c, &near, &slow);
+        const double U0 = fabs(U) <= 64 * 2.220446049250313e-16 * fabs(acc) * h ? 0.0 : U;
+        const int on_lo = acc < 0.0 && P - w->lo[a] <= near, on_hi = acc > 0.0 && w->hi[a] - P <= near;
+        if ((on_lo || on_hi) && fabs(U0) <= slow) {
+            rest_on_wall(f, a, on_lo ? w->lo[a] : w->hi[a], skip);
+            rested = 1;
+        }
+    }
+    return rested;
+}
+
+/* The bounce on a wall at tau (iskra/impact.h): the flight moves to the
+ * point of impact, exactly on the wall, its velocity there has the normal
+ * part reflected with the walls' restitution (only an outward one), and
+ * the flight starts afresh from there; pressed back into the wall with all
+ * further hops fitting in the rest of the step, it rests on it. */
+static void bounce_wall(flight *f, const wall_box *w, int a, int side, double tau, int skip[2])
+{
+    double hx, hy, ux, uy;
+    flight_at(f, tau, &hx, &hy, &ux, &uy);
+    const double W = side < 0 ? w->lo[a] : w->hi[a], sigma = side < 0 ? 1.0 : -1.0; /* sigma: into the box */
+    double *un = a ? &uy : &ux;
+    if (sigma * *un < 0.0)
+        *un = -w->c * *un;
+    if (a)
+        hy = W;
+    else
+        hx = W;
+    f->s = f->s - tau > 0.0 ? f->s - tau : 0.0;
+    f->sx = hx;
+    f->sy = hy;
+    f->ux = ux;
+    f->uy = uy;
+    const double U = *un, acc = a ? f->ay : f->ax, c = w->c;
+    if (sigma * acc < 0.0 && (!(sigma * U > 0.0) || (c < 1.0 && 2.0 * sigma * U <= -sigma * acc * (1.0 - c) * f->s * (1.0 + 1e-9))))
+        rest_on_wall(f, a, W, skip);
+}
+
+/* The end of a contact pass on the walls: an axis that started outside is
+ * mirrored in (no crossing to find), and any other residual beyond a wall
+ * (rounding at a wall, the top of an arc grazing it unseen, a particle
+ * stopped by the cap of contacts) is put on the wall, an outward velocity
+ * reflected with the restitution: so no particle ends a step outside. */
+static void finish_walls(const wall_box *w, const int born_out[2], double *x, double *y, double *vx, double *vy)
+{
+    double *pos[2] = {x, y}, *vel[2] = {vx, vy};
+    for (int a = 0; a < 2; a++) {
+        if (!w->on[a])
+            continue;
+        const double lo = w->lo[a], hi = w->hi[a];
+        if (born_out[a]) {
+            if (!(*pos[a] >= lo && *pos[a] <= hi))
+                isk__wall_settle(pos[a], vel[a], lo, hi, w->c);
+        } else if (*pos[a] < lo) {
+            *pos[a] = lo;
+            if (*vel[a] < 0.0)
+                *vel[a] = -w->c * *vel[a];
+        } else if (*pos[a] > hi) {
+            *pos[a] = hi;
+            if (*vel[a] > 0.0)
+                *vel[a] = -w->c * *vel[a];
+        }
+    }
+}
+
+static isk_status deflect(const isk_bounds *walls, const isk_deflector *defs, int ndef, double *x, double *y,
+                          double *vx, double *vy, const double *x_old, const double *y_old, const isk_step_motion *mo,
+                          size_t n, isk_rng *rng, uint8_t *killed, isk_deflect_stats *stats)
 {
     if (ndef < 0)
         return ISK_ERR_SIZE;
@@ -445,13 +597,28 @@ static isk_status deflect(const isk_deflector *defs, int ndef, double *x, double
         return ISK_ERR_RANGE;
     if ((need_rng && !rng) || (need_killed && !killed))
         return ISK_ERR_NULL;
-    if (ndef == 0)
+    if (walls && walls->sides == 0)
+        walls = NULL; /* no wall: the deflectors alone */
+    if (walls) {
+        isk_status st = isk_bounds_validate(walls);
+        if (st != ISK_OK)
+            return st;
+        if (walls->mode != ISK_BOUNCE_REFLECT)
+            return ISK_ERR_RANGE;
+        if (!mo)
+            return ISK_ERR_NULL;
+    }
+    if (ndef == 0 && !walls)
         return ISK_OK;
 
-    isk_deflect_stats local = {0, 0, 0, 0, 0, 0, NULL};
+    isk_deflect_stats local = {0, 0, 0, 0, 0, 0, NULL, 0, NULL};
     uint8_t *per_particle = stats ? stats->bounced : NULL;
+    uint8_t *per_particle_walls = walls && stats ? stats->wall_bounced : NULL;
     if (per_particle && n > 0)
         memset(per_particle, 0, n);
+    if (per_particle_walls && n > 0)
+        memset(per_particle_walls, 0, n);
+    const wall_box wb = walls ? wall_box_of(walls) : (wall_box){{0, 0}, {0, 0}, 0, {0, 0}};
     ctx c;
     c.defs = defs;
     c.ndef = ndef;
@@ -466,13 +633,80 @@ static isk_status deflect(const isk_deflector *defs, int ndef, double *x, double
         flight f;
         int fitted = 0, bounced = 0, linear = mo == NULL;
         c.npassed = 0;
-        int hits = 0, done = 0;
+        int hits = 0, done = 0, contacts = 0;
+        /* walls: the axes that started outside (mirrored in at the end) or
+         * rest on a wall (skip), and those that started outside alone */
+        int skip[2] = {0, 0}, born_out[2] = {0, 0};
+        if (walls) {
+            born_out[0] = wb.on[0] && !(sx >= wb.lo[0] && sx <= wb.hi[0]);
+            born_out[1] = wb.on[1] && !(sy >= wb.lo[1] && sy <= wb.hi[1]);
+            skip[0] = born_out[0];
+            skip[1] = born_out[1];
+        }
         while (!done) {
             double t;
-            int k = nearest(&c, sx, sy, ex, ey, &t);
+            int k = ndef ? nearest(&c, sx, sy, ex, ey, &t) : -1;
+            if (walls && !linear) {
+                /* The walls and the segments in the order the path meets
+                 * them: the flight is needed once the path ends outside
+                 * the box or crosses a segment. */
+                if (!fitted && (k >= 0 || !in_box(&wb, ex, ey))) {
+                    const double kk = mo->drag > 0.0 ? mo->drag / mo->m[i] : 0.0;
+                    f.sx = sx;
+                    f.sy = sy;
+                    f.k = kk;
+                    f.s = mo->h;
+                    isk__fl_fit(sx, mo->vx0[i], ex, ux, kk, mo->h, &f.ux, &f.ax, &f.delx);
+                    isk__fl_fit(sy, mo->vy0[i], ey, uy, kk, mo->h, &f.uy, &f.ay, &f.dely);
+                    fitted = 1;
+                    if (!(isfinite(f.ux) && isfinite(f.uy) && isfinite(f.ax) && isfinite(f.ay) &&
+                          isfinite(f.delx) && isfinite(f.dely))) {
+                        linear = 1; /* no usable motion: the segments' path rule, the walls' end rule */
+                        continue;
+                    }
+                    if (rest_at_start(&f, &wb, mo->h, skip)) { /* the flight changed: its new end */
+                        double wvx, wvy;
+                        flight_at(&f, f.s, &ex, &ey, &wvx, &wvy);
+                        sx = f.sx;
+                        sy = f.sy;
+                        bounced = 1;
+                        continue;
+                    }
+                }
+                int axis = -1, side = 0;
+                const double tw = fitted ? first_wall(&f, &wb, skip, &axis, &side) : INFINITY;
+                if (axis >= 0 && k >= 0) {
+                    seg tmp;
+                    if (flight_hit(&f, get_seg(&c, k, &tmp), t) <= tw)
+                        axis = -1; /* the segment first (a tie too: the wall is met next) */
+                }
+                if (axis >= 0) {
+                    if (contacts == ISK_CONTACTS_MAX) {
+                        ex = sx; /* out of contacts: stay at the last contact, with the velocity there */
+                        ey = sy;
+                        local.last_resort++;
+                        ux = f.ux + f.delx;
+                        uy = f.uy + f.dely;
+                        bounced = 0;
+                        break;
+                    }
+                    contacts++;
+                    bounce_wall(&f, &wb, axis, side, tw, skip);
+                    local.wall_bounces++;
+                    if (per_particle_walls && per_particle_walls[i] < 255)
+                        per_particle_walls[i]++;
+                    double wvx, wvy;
+                    flight_at(&f, f.s, &ex, &ey, &wvx, &wvy);
+                    sx = f.sx;
+                    sy = f.sy;
+                    bounced = 1;
+                    c.npassed = 0; /* a new path */
+                    continue;
+                }
+            }
             if (k < 0)
                 break; /* E is final */
-            if (hits == ISK_DEFLECT_MAX_HITS) {
+            if (hits == ISK_DEFLECT_MAX_HITS || contacts == ISK_CONTACTS_MAX) {
                 ex = sx; /* out of hits: stay at the last safe point */
                 ey = sy;
                 local.last_resort++;
@@ -510,6 +744,7 @@ static isk_status deflect(const isk_deflector *defs, int ndef, double *x, double
                 break;
             }
             local.bounces++;
+            contacts++;
             if (per_particle && per_particle[i] < 255)
                 per_particle[i]++;
             c.npassed = 0; /* a new path */
@@ -544,12 +779,15 @@ static isk_status deflect(const isk_deflector *defs, int ndef, double *x, double
             ux = wx + f.delx;
             uy = wy + f.dely;
         }
+        if (walls)
+            finish_walls(&wb, born_out, &ex, &ey, &ux, &uy);
         x[i] = ex;
         y[i] = ey;
         vx[i] = ux;
         vy[i] = uy;
     }
     if (stats) {
+        stats->wall_bounces += local.wall_bounces;
         stats->hits += local.hits;
         stats->bounces += local.bounces;
         stats->kills += local.kills;
@@ -564,7 +802,7 @@ isk_status isk_deflect(const isk_deflector *defs, int ndef, double *x, double *y
                        const double *x_old, const double *y_old, size_t n, isk_rng *rng, uint8_t *killed,
                        isk_deflect_stats *stats)
 {
-    return deflect(defs, ndef, x, y, vx, vy, x_old, y_old, NULL, n, rng, killed, stats);
+    return deflect(NULL, defs, ndef, x, y, vx, vy, x_old, y_old, NULL, n, rng, killed, stats);
 }
 
 isk_status isk_deflect_step(const isk_deflector *defs, int ndef, double *x, double *y, double *vx, double *vy,
@@ -573,5 +811,14 @@ isk_status isk_deflect_step(const isk_deflector *defs, int ndef, double *x, doub
 {
     if (!mo)
         return ISK_ERR_NULL;
-    return deflect(defs, ndef, x, y, vx, vy, mo->x0, mo->y0, mo, n, rng, killed, stats);
+    return deflect(NULL, defs, ndef, x, y, vx, vy, mo->x0, mo->y0, mo, n, rng, killed, stats);
+}
+
+isk_status isk_contacts_step(const isk_bounds *walls, const isk_deflector *defs, int ndef, double *x, double *y,
+                             double *vx, double *vy, const isk_step_motion *mo, size_t n, isk_rng *rng,
+                             uint8_t *killed, isk_deflect_stats *stats)
+{
+    if (!mo)
+        return ISK_ERR_NULL;
+    return deflect(walls, defs, ndef, x, y, vx, vy, mo->x0, mo->y0, mo, n, rng, killed, stats);
 }
