@@ -44,7 +44,7 @@
  *     double x0[1] = {9}, y0[1] = {6}, vx0[1] = {600}, vy0[1] = {0}, h = 1.0 / 60;
  *     double x[1] = {9 + 600 * h}, y[1] = {6}, vx[1] = {600}, vy[1] = {0};  // 9 beyond the right wall
  *     isk_step_motion mo = {x0, y0, vx0, vy0, NULL, 0.0, h, 0, 0, 0};
- *     isk_status st = isk_contacts_step(&box, &slant, 1, x, y, vx, vy, &mo, 1, NULL, NULL, NULL);
+ *     isk_status st = isk_contacts_step(&box, &slant, 1, x, y, vx, vy, &mo, NULL, 1, NULL, NULL, NULL);
  *     printf("(%g, %g) (%g, %g)\n", x[0], y[0], vx[0], vy[0]);
  *     // off the wall at t = h/10, the slant at (4, 6) at 7h/10, then down: (4, 3) (0, -600)
  *     return st != ISK_OK;
@@ -63,6 +63,7 @@
 #include "iskra/bounds.h"
 #include "iskra/deflector.h"
 #include "iskra/impact.h"
+#include "iskra/integrate.h"
 #include "iskra/rng.h"
 #include "iskra/status.h"
 
@@ -75,12 +76,23 @@ extern "C" {
  * ISK_DEFLECT_MAX_HITS. */
 #define ISK_CONTACTS_MAX 32
 
-/* The contact pass over particles 0..n-1 (see above).  stats, when given,
- * also counts the wall bounces (wall_bounces, and per particle in
- * wall_bounced when that is not NULL). */
+/* The integrator that made the step, to fly the rest of it after a contact
+ * (see above).  Its forces are evaluated at extra states: no potential in
+ * them may switch itself off (a max_distance), or the switch would trip
+ * at states the particle never had. */
+typedef struct isk_contact_integrator {
+    isk_integrator method;
+    isk_forces *forces;
+} isk_contact_integrator;
+
+/* The contact pass over particles 0..n-1 (see above).  redo: NULL (the
+ * rest of a step after a contact is the fitted flight: exact under
+ * gravity, wind and drag), or the integrator that made the step.  stats,
+ * when given, also counts the wall bounces (wall_bounces, and per particle
+ * in wall_bounced when that is not NULL). */
 isk_status isk_contacts_step(const isk_bounds *walls, const isk_deflector *defs, int ndef, double *x, double *y,
-                             double *vx, double *vy, const isk_step_motion *mo, size_t n, isk_rng *rng,
-                             uint8_t *killed, isk_deflect_stats *stats);
+                             double *vx, double *vy, const isk_step_motion *mo, const isk_contact_integrator *redo,
+                             size_t n, isk_rng *rng, uint8_t *killed, isk_deflect_stats *stats);
 
 #ifdef __cplusplus
 }

@@ -10,6 +10,7 @@
 #include <string.h>
 
 #include "iskra/contacts.h"
+#include "iskra/integrate.h"
 #include "sim/flight.h"
 #include "sim/rest_screen.h"  /* isk__rest_at_once */
 #include "sim/wall_contact.h"
@@ -225,6 +226,8 @@ enum { SEG_CACHE = 64 }; /* more segments than this are put in canonical form on
 typedef struct ctx {
     const isk_deflector *defs;
     int ndef;
+    const isk_contact_integrator *redo; /* NULL: the rest of a step after a contact is the fitted flight */
+    isk_scratch *scratch;                /* the integrator's working arrays (with redo) */
     seg cache[SEG_CACHE];
     int passed[ISK_DEFLECT_MAX_HITS];
     int npassed;
@@ -355,14 +358,28 @@ static double flight_hit(const flight *f, const seg *s, double t_chord)
  * curve, the safe point Q before it, the reflected velocity, the rest of
  * the flight from Q; resting contact per iskra/impact.h.  Returns the new
  * chord end in (*ex, *ey). */
+static int bounce_at(const ctx *c, int hit, const isk_deflector *d, flight *f, double t_chord, double tau, double hx,
+                     double hy, double uix, double uiy, double *ex, double *ey);
+
 static void bounce_flight(const ctx *c, int hit, const isk_deflector *d, flight *f, double t_chord, double *ex,
                           double *ey)
 {
     seg tmp;
-    const seg *s = get_seg(c, hit, &tmp);
-    const double tau = flight_hit(f, s, t_chord);
+    const double tau = flight_hit(f, get_seg(c, hit, &tmp), t_chord);
     double hx, hy, uix, uiy;
     flight_at(f, tau, &hx, &hy, &uix, &uiy);
+    bounce_at(c, hit, d, f, t_chord, tau, hx, hy, uix, uiy, ex, ey);
+}
+
+/* The bounce of bounce_flight once the impact is known: at tau, at the
+ * point H = (hx, hy) with the flight's velocity (uix, uiy) there (the
+ * flight's own, or the integrator's: iskra/contacts.h).  Returns 1 when
+ * the particle came to rest on the segment. */
+static int bounce_at(const ctx *c, int hit, const isk_deflector *d, flight *f, double t_chord, double tau, double hx,
+                     double hy, double uix, double uiy, double *ex, double *ey)
+{
+    seg tmp;
+    const seg *s = get_seg(c, hit, &tmp);
     double qx, qy;
     double th = crossing(s, f->sx, f->sy, hx, hy);
     if (th >= 0.0)
@@ -390,6 +407,7 @@ static void bounce_flight(const ctx *c, int hit, const isk_deflector *d, flight 
      * at every hop too, so it stops; normal restitution lets it slide) and
      * the segment holds it against the normal acceleration. */
     const double V = f->ux * nox + f->uy * noy, an = f->ax * nox + f->ay * noy, cr = d->restitution;
+    int rested = 0;
     if (an < 0.0 && (!(V > 0.0) || (cr < 1.0 && 2.0 * V <= -an * (1.0 - cr) * f->s * (1.0 + 1e-9)))) {
         if (d->mode == ISK_RESTITUTION_UNIFORM && cr < 1.0) {
             f->ux = f->uy = 0.0;
@@ -399,9 +417,11 @@ static void bounce_flight(const ctx *c, int hit, const isk_deflector *d, flight 
         }
         f->ax -= an * nox;
         f->ay -= an * noy;
+        rested = 1;
     }
     double vx, vy;
     flight_at(f, f->s, ex, ey, &vx, &vy);
+    return rested;
 }
 
 /* Bounce of a straight path with the end-of-step velocity (isk_deflect):
@@ -422,6 +442,71 @@ static void bounce_linear(const ctx *c, int hit, const isk_deflector *d, double 
     *sy = qy;
     *ex = qx + rx;
     *ey = qy + ry;
+}
+
+/* ---- the rest of a step flown by the integrator (iskra/contacts.h) -------- */
+
+/* A particle's state as the integrator keeps it (its stored velocity). */
+typedef struct state {
+    double x, y, vx, vy;
+} state;
+
+/* One step of the integrator of c->redo over t from st. */
+static state redo_step(const ctx *c, state st, double m, double t)
+{
+    if (t > 0.0)
+        isk_integrate_block(c->redo->method, c->redo->forces, c->scratch, 1, &st.x, &st.y, &st.vx, &st.vy, &m, t);
+    return st;
+}
+
+/* The integrator's state at the contact the flight puts at *tau after the
+ * start st0 (at most s_max): one step of the integrator over *tau, its
+ * time refined by a Newton step on the signed distance nx x + ny y - off
+ * to the wall or the segment's line, so that the contact is where the
+ * integrator's own path meets it.  The flight is fitted to the ends of
+ * that path, so one step brings the distance down to rounding. */
+static state redo_contact(const ctx *c, state st0, double m, double *tau, double s_max, double nx, double ny,
+                          double off)
+{
+    state st = redo_step(c, st0, m, *tau);
+    const double g = nx * st.x + ny * st.y - off, gp = nx * st.vx + ny * st.vy;
+    const double t1 = gp != 0.0 ? *tau - g / gp : *tau;
+    if (t1 != *tau && t1 > 0.0 && t1 <= s_max && isfinite(t1)) {
+        st = redo_step(c, st0, m, t1);
+        *tau = t1;
+    }
+    return st;
+}
+
+/* At a contact resolved with the integrator, the velocity reflected is the
+ * integrator's own (its state at the contact), not the flight's: the
+ * flight's offset from it (which a potential makes of the order of the
+ * force's change over the step) is dropped, or it would be added to the
+ * reflected velocity and change the energy at every bounce. */
+static void redo_own_velocity(flight *f)
+{
+    f->delx = f->dely = 0.0;
+}
+
+/* After a contact resolved with the integrator: the rest of the step, from
+ * the flight's new start (its velocity plus the offset, the integrator's
+ * form: *start), is one step of the integrator; its end becomes the
+ * particle's and the flight is fitted to it (to find the next contact).
+ * Returns the integrator's end state. */
+static state redo_rest(const ctx *c, flight *f, double m, state *start)
+{
+    const state st0 = {f->sx, f->sy, f->ux + f->delx, f->uy + f->dely};
+    *start = st0;
+    if (!(f->s > 0.0))
+        return st0;
+    const state end = redo_step(c, st0, m, f->s);
+    flight g = *f;
+    isk__fl_fit(st0.x, st0.vx, end.x, end.vx, f->k, f->s, &g.ux, &g.ax, &g.delx);
+    isk__fl_fit(st0.y, st0.vy, end.y, end.vy, f->k, f->s, &g.uy, &g.ay, &g.dely);
+    if (isfinite(g.ux) && isfinite(g.uy) && isfinite(g.ax) && isfinite(g.ay) && isfinite(g.delx) &&
+        isfinite(g.dely))
+        *f = g;
+    return end;
 }
 
 /* ---- walls in the same pass (iskra/contacts.h) ---------------------------- */
@@ -519,15 +604,16 @@ static int rest_at_start(flight *f, const wall_box *w, double h, int skip[2])
     return rested;
 }
 
-/* The bounce on a wall at tau (iskra/impact.h): the flight moves to the
- * point of impact, exactly on the wall, its velocity there has the normal
- * part reflected with the walls' restitution (only an outward one), and
- * the flight starts afresh from there; pressed back into the wall with all
- * further hops fitting in the rest of the step, it rests on it. */
-static void bounce_wall(flight *f, const wall_box *w, int a, int side, double tau, int skip[2])
+/* The bounce on a wall at tau (iskra/impact.h), at the point (hx, hy) with
+ * the flight's velocity (ux, uy) there (the flight's own, or the
+ * integrator's): the point is put exactly on the wall, the normal part of
+ * the velocity reflected with the walls' restitution (only an outward
+ * one), and the flight starts afresh from there; pressed back into the
+ * wall with all further hops fitting in the rest of the step, it rests on
+ * it (returns 1). */
+static int bounce_wall(flight *f, const wall_box *w, int a, int side, double tau, double hx, double hy, double ux,
+                       double uy, int skip[2])
 {
-    double hx, hy, ux, uy;
-    flight_at(f, tau, &hx, &hy, &ux, &uy);
     const double W = side < 0 ? w->lo[a] : w->hi[a], sigma = side < 0 ? 1.0 : -1.0; /* sigma: into the box */
     double *un = a ? &uy : &ux;
     if (sigma * *un < 0.0)
@@ -542,8 +628,11 @@ static void bounce_wall(flight *f, const wall_box *w, int a, int side, double ta
     f->ux = ux;
     f->uy = uy;
     const double U = *un, acc = a ? f->ay : f->ax, c = w->c;
-    if (sigma * acc < 0.0 && (!(sigma * U > 0.0) || (c < 1.0 && 2.0 * sigma * U <= -sigma * acc * (1.0 - c) * f->s * (1.0 + 1e-9))))
+    if (sigma * acc < 0.0 && (!(sigma * U > 0.0) || (c < 1.0 && 2.0 * sigma * U <= -sigma * acc * (1.0 - c) * f->s * (1.0 + 1e-9)))) {
         rest_on_wall(f, a, W, skip);
+        return 1;
+    }
+    return 0;
 }
 
 /* The end of a contact pass on the walls: an axis that started outside is
@@ -573,9 +662,26 @@ static void finish_walls(const wall_box *w, const int born_out[2], double *x, do
     }
 }
 
+/* The flight of particle i in the step (iskra/impact.h), fitted to its
+ * start (sx, sy and mo's velocities) and its end (ex, ey, ux, uy).  Returns
+ * 0 when there is no usable motion (a start velocity not finite). */
+static int fit_flight(flight *f, const isk_step_motion *mo, size_t i, double sx, double sy, double ex, double ey,
+                      double ux, double uy)
+{
+    const double kk = mo->drag > 0.0 ? mo->drag / mo->m[i] : 0.0;
+    f->sx = sx;
+    f->sy = sy;
+    f->k = kk;
+    f->s = mo->h;
+    isk__fl_fit(sx, mo->vx0[i], ex, ux, kk, mo->h, &f->ux, &f->ax, &f->delx);
+    isk__fl_fit(sy, mo->vy0[i], ey, uy, kk, mo->h, &f->uy, &f->ay, &f->dely);
+    return isfinite(f->ux) && isfinite(f->uy) && isfinite(f->ax) && isfinite(f->ay);
+}
+
 static isk_status deflect(const isk_bounds *walls, const isk_deflector *defs, int ndef, double *x, double *y,
                           double *vx, double *vy, const double *x_old, const double *y_old, const isk_step_motion *mo,
-                          size_t n, isk_rng *rng, uint8_t *killed, isk_deflect_stats *stats)
+                          const isk_contact_integrator *redo, size_t n, isk_rng *rng, uint8_t *killed,
+                          isk_deflect_stats *stats)
 {
     if (ndef < 0)
         return ISK_ERR_SIZE;
@@ -608,6 +714,8 @@ static isk_status deflect(const isk_bounds *walls, const isk_deflector *defs, in
         if (!mo)
             return ISK_ERR_NULL;
     }
+    if (redo && (!mo || !redo->forces || (unsigned)redo->method >= ISK_INTEGRATOR_COUNT))
+        return redo->forces ? ISK_ERR_RANGE : ISK_ERR_NULL;
     if (ndef == 0 && !walls)
         return ISK_OK;
 
@@ -622,6 +730,9 @@ static isk_status deflect(const isk_bounds *walls, const isk_deflector *defs, in
     ctx c;
     c.defs = defs;
     c.ndef = ndef;
+    c.redo = redo;
+    isk_scratch scratch; /* the integrator's arrays for one particle (with redo) */
+    c.scratch = &scratch;
     for (int k = 0; k < ndef && k < SEG_CACHE; k++)
         c.cache[k] = canon(&defs[k]);
     for (size_t i = 0; i < n; i++) {
@@ -632,6 +743,15 @@ static isk_status deflect(const isk_bounds *walls, const isk_deflector *defs, in
             continue;
         flight f;
         int fitted = 0, bounced = 0, linear = mo == NULL;
+        /* With the integrator (redo): after each contact the rest of the
+         * step is its step, from the contact; `end` is where it ends.  Off
+         * once the particle rests on a wall or a segment (the flight holds
+         * it there). */
+        int redo_on = redo != NULL && mo != NULL;
+        const double mass = mo && mo->m ? mo->m[i] : 1.0;
+        state end = {ex, ey, ux, uy};
+        state from = {sx, sy, mo ? mo->vx0[i] : 0.0, mo ? mo->vy0[i] : 0.0}; /* the integrator's state where the
+                                                                               flight starts (redo) */
         c.npassed = 0;
         int hits = 0, done = 0, contacts = 0;
         /* walls: the axes that started outside (mirrored in at the end) or
@@ -651,16 +771,8 @@ static isk_status deflect(const isk_bounds *walls, const isk_deflector *defs, in
                  * them: the flight is needed once the path ends outside
                  * the box or crosses a segment. */
                 if (!fitted && (k >= 0 || !in_box(&wb, ex, ey))) {
-                    const double kk = mo->drag > 0.0 ? mo->drag / mo->m[i] : 0.0;
-                    f.sx = sx;
-                    f.sy = sy;
-                    f.k = kk;
-                    f.s = mo->h;
-                    isk__fl_fit(sx, mo->vx0[i], ex, ux, kk, mo->h, &f.ux, &f.ax, &f.delx);
-                    isk__fl_fit(sy, mo->vy0[i], ey, uy, kk, mo->h, &f.uy, &f.ay, &f.dely);
                     fitted = 1;
-                    if (!(isfinite(f.ux) && isfinite(f.uy) && isfinite(f.ax) && isfinite(f.ay) &&
-                          isfinite(f.delx) && isfinite(f.dely))) {
+                    if (!fit_flight(&f, mo, i, sx, sy, ex, ey, ux, uy) || !(isfinite(f.delx) && isfinite(f.dely))) {
                         linear = 1; /* no usable motion: the segments' path rule, the walls' end rule */
                         continue;
                     }
@@ -670,6 +782,7 @@ static isk_status deflect(const isk_bounds *walls, const isk_deflector *defs, in
                         sx = f.sx;
                         sy = f.sy;
                         bounced = 1;
+                        redo_on = 0;
                         continue;
                     }
                 }
@@ -691,12 +804,31 @@ static isk_status deflect(const isk_bounds *walls, const isk_deflector *defs, in
                         break;
                     }
                     contacts++;
-                    bounce_wall(&f, &wb, axis, side, tw, skip);
+                    double tau = tw, hx, hy, hvx, hvy;
+                    if (redo_on) { /* the integrator's state at the contact, its velocity reflected */
+                        const state at = redo_contact(&c, from, mass, &tau, f.s, axis ? 0.0 : 1.0,
+                                                      axis ? 1.0 : 0.0, side < 0 ? wb.lo[axis] : wb.hi[axis]);
+                        redo_own_velocity(&f);
+                        hx = at.x;
+                        hy = at.y;
+                        hvx = at.vx;
+                        hvy = at.vy;
+                    } else {
+                        flight_at(&f, tau, &hx, &hy, &hvx, &hvy);
+                    }
+                    if (bounce_wall(&f, &wb, axis, side, tau, hx, hy, hvx, hvy, skip))
+                        redo_on = 0;
                     local.wall_bounces++;
                     if (per_particle_walls && per_particle_walls[i] < 255)
                         per_particle_walls[i]++;
-                    double wvx, wvy;
-                    flight_at(&f, f.s, &ex, &ey, &wvx, &wvy);
+                    if (redo_on) {
+                        end = redo_rest(&c, &f, mass, &from);
+                        ex = end.x;
+                        ey = end.y;
+                    } else {
+                        double wvx, wvy;
+                        flight_at(&f, f.s, &ex, &ey, &wvx, &wvy);
+                    }
                     sx = f.sx;
                     sy = f.sy;
                     bounced = 1;
@@ -753,27 +885,40 @@ static isk_status deflect(const isk_bounds *walls, const isk_deflector *defs, in
                 continue;
             }
             if (!fitted) {
-                const double kk = mo->drag > 0.0 ? mo->drag / mo->m[i] : 0.0;
-                f.sx = sx;
-                f.sy = sy;
-                f.k = kk;
-                f.s = mo->h;
-                isk__fl_fit(sx, mo->vx0[i], ex, ux, kk, mo->h, &f.ux, &f.ax, &f.delx);
-                isk__fl_fit(sy, mo->vy0[i], ey, uy, kk, mo->h, &f.uy, &f.ay, &f.dely);
                 fitted = 1;
-                if (!(isfinite(f.ux) && isfinite(f.uy) && isfinite(f.ax) && isfinite(f.ay))) {
+                if (!fit_flight(&f, mo, i, sx, sy, ex, ey, ux, uy)) {
                     /* no usable motion (a start velocity not finite): the path rule */
                     bounce_linear(&c, k, d, &sx, &sy, &ex, &ey, &ux, &uy, t);
                     linear = 1;
+                    redo_on = 0;
                     continue;
                 }
             }
-            bounce_flight(&c, k, d, &f, t, &ex, &ey);
+            if (redo_on) { /* the contact where the integrator's path meets the segment's line */
+                seg tmp;
+                const seg *sg = get_seg(&c, k, &tmp);
+                double tau = flight_hit(&f, sg, t);
+                const state at = redo_contact(&c, from, mass, &tau,
+                                              f.s, sg->nx, sg->ny, sg->nx * sg->ax + sg->ny * sg->ay);
+                redo_own_velocity(&f);
+                if (bounce_at(&c, k, d, &f, t, tau, at.x, at.y, at.vx, at.vy, &ex, &ey)) {
+                    redo_on = 0;
+                } else {
+                    end = redo_rest(&c, &f, mass, &from);
+                    ex = end.x;
+                    ey = end.y;
+                }
+            } else {
+                bounce_flight(&c, k, d, &f, t, &ex, &ey);
+            }
             sx = f.sx;
             sy = f.sy;
             bounced = 1;
         }
-        if (bounced) {
+        if (bounced && redo_on) { /* the integrator's own end velocity */
+            ux = end.vx;
+            uy = end.vy;
+        } else if (bounced) {
             double px, py, wx, wy;
             flight_at(&f, f.s, &px, &py, &wx, &wy);
             ux = wx + f.delx;
@@ -802,7 +947,7 @@ isk_status isk_deflect(const isk_deflector *defs, int ndef, double *x, double *y
                        const double *x_old, const double *y_old, size_t n, isk_rng *rng, uint8_t *killed,
                        isk_deflect_stats *stats)
 {
-    return deflect(NULL, defs, ndef, x, y, vx, vy, x_old, y_old, NULL, n, rng, killed, stats);
+    return deflect(NULL, defs, ndef, x, y, vx, vy, x_old, y_old, NULL, NULL, n, rng, killed, stats);
 }
 
 isk_status isk_deflect_step(const isk_deflector *defs, int ndef, double *x, double *y, double *vx, double *vy,
@@ -811,14 +956,14 @@ isk_status isk_deflect_step(const isk_deflector *defs, int ndef, double *x, doub
 {
     if (!mo)
         return ISK_ERR_NULL;
-    return deflect(NULL, defs, ndef, x, y, vx, vy, mo->x0, mo->y0, mo, n, rng, killed, stats);
+    return deflect(NULL, defs, ndef, x, y, vx, vy, mo->x0, mo->y0, mo, NULL, n, rng, killed, stats);
 }
 
 isk_status isk_contacts_step(const isk_bounds *walls, const isk_deflector *defs, int ndef, double *x, double *y,
-                             double *vx, double *vy, const isk_step_motion *mo, size_t n, isk_rng *rng,
-                             uint8_t *killed, isk_deflect_stats *stats)
+                             double *vx, double *vy, const isk_step_motion *mo, const isk_contact_integrator *redo,
+                             size_t n, isk_rng *rng, uint8_t *killed, isk_deflect_stats *stats)
 {
     if (!mo)
         return ISK_ERR_NULL;
-    return deflect(walls, defs, ndef, x, y, vx, vy, mo->x0, mo->y0, mo, n, rng, killed, stats);
+    return deflect(walls, defs, ndef, x, y, vx, vy, mo->x0, mo->y0, mo, redo, n, rng, killed, stats);
 }

@@ -138,6 +138,7 @@ static void run_deflect(const isk_stage *st, isk_block *b, double h)
     memset(s->killed, 0, b->n);
     const isk_step_motion mo = motion_of(b, st->u.deflect.drag, h);
     const isk_bounds *walls = st->u.deflect.walls;
+    const isk_contact_integrator *redo = st->u.deflect.redo_on ? &st->u.deflect.redo : NULL;
     if (st->u.deflect.hit && b->p->hit) {
         /* A sub-emitter's on_hit: each particle's bounces counted
          * (contact_mark: a particle resting on a segment or a wall touches
@@ -155,7 +156,7 @@ static void run_deflect(const isk_stage *st, isk_block *b, double h)
             if (m1.m)
                 m1.m += o;
             isk_contacts_step(walls, st->u.deflect.segs, st->u.deflect.n, b->x + o, b->y + o, b->vx + o, b->vy + o,
-                              &m1, m, st->u.deflect.rng, s->killed + o, &ds);
+                              &m1, redo, m, st->u.deflect.rng, s->killed + o, &ds);
             for (size_t i = 0; i < m; i++) {
                 hit[o + i] = contact_mark(hit[o + i], ISK_HIT_DEFLECTOR, bounces[i]);
                 if (walls)
@@ -163,7 +164,7 @@ static void run_deflect(const isk_stage *st, isk_block *b, double h)
             }
         }
     } else {
-        isk_contacts_step(walls, st->u.deflect.segs, st->u.deflect.n, b->x, b->y, b->vx, b->vy, &mo, b->n,
+        isk_contacts_step(walls, st->u.deflect.segs, st->u.deflect.n, b->x, b->y, b->vx, b->vy, &mo, redo, b->n,
                           st->u.deflect.rng, s->killed, NULL);
     }
     if (!st->u.deflect.can_kill)
@@ -176,12 +177,15 @@ static void run_deflect(const isk_stage *st, isk_block *b, double h)
 
 static void describe_deflect(const isk_stage *st, FILE *out)
 {
-    fprintf(out, "%d segment%s", st->u.deflect.n, st->u.deflect.n == 1 ? "" : "s");
+    if (st->u.deflect.n || !st->u.deflect.walls)
+        fprintf(out, "%d segment%s", st->u.deflect.n, st->u.deflect.n == 1 ? "" : "s");
     if (st->u.deflect.walls) {
-        fprintf(out, " and the walls (");
+        fprintf(out, "%sthe walls (", st->u.deflect.n ? " and " : "");
         describe_walls_of(st->u.deflect.walls, out);
-        fprintf(out, "), in path order");
+        fprintf(out, ")%s", st->u.deflect.n ? ", in path order" : "");
     }
+    if (st->u.deflect.redo_on)
+        fprintf(out, "; the rest of a step after a contact by %s", isk_integrator_name(st->u.deflect.redo.method));
 }
 
 /* A crossing test against every segment. */
@@ -205,3 +209,10 @@ const isk_stage_kind isk__stage_deflect = {.name = "deflect",
                                           .rest = NULL /* draws from the owner's stream */,
                                           .cost = cost_deflect,
                                           .needs = needs_deflect};
+
+int isk__contacts_redo(const isk_forces *f, isk_integrator method)
+{
+    const unsigned laws = isk_forces_laws(f);
+    return (laws & (ISK_LAW_POWER_2 | ISK_LAW_POWER_1 | ISK_LAW_POWER)) && !(laws & ISK_LAW_CUTOFF) &&
+           isk_integrator_velocity_offset(method) == 0.0;
+}
