@@ -29,14 +29,34 @@
  *      deflectors' own cap does.
  * Resting contact, the velocity offset of the Euler integrators, and the
  * exact bounce under gravity, wind and drag are those of iskra/impact.h.
+ *
+ * The integrator's own flight (redo).  Under a force that changes along
+ * the step (potentials) the fitted flight is only second order, and the
+ * rest of a step after a bounce flown on it gained energy at every bounce
+ * (a spring on a restitution-1 floor: 8.5e-4 a bounce with Verlet at
+ * 1/60, 5.2e-4 with RK4).  Given the integrator that made the step, the
+ * pass instead takes the integrator's own state at the contact (one step
+ * of it from the start of the flight to the time of impact, that time
+ * refined by a Newton step on the distance to the wall or segment line),
+ * reflects that state's velocity, and flies the rest of the step with one
+ * step of the integrator; the flight is fitted to that step to find the
+ * next contact.  A bounce then adds about one step's local error: the
+ * energy per bounce is c^2 to the integrator's own order (1e-7 at 1/60
+ * for the second-order methods, 1e-11 for the fourth-order ones;
+ * docs/accuracy.md, "A spring on a floor").  The effect runtime and
+ * isk_system pass it when potentials act, none of them switches itself
+ * off, and the integrator's velocity offset is 0 (the Euler forms keep
+ * the flight and their offset: first order either way); a particle that
+ * comes to rest on a wall or segment finishes its step on the flight.
  * Every finite particle ends the step inside the walls: an axis that
  * started the step outside (a particle born there) is mirrored in, and any
  * residual beyond a wall (rounding, an arc grazing it unseen, the cap) is
  * put on the wall with an outward velocity reflected.
  *
  * The effect runtime uses this pass when an emitter has both sound walls
- * and deflectors; walls alone keep their own faster stage (its screens,
- * memo and skipped periods give the same bounces), segments alone theirs.
+ * and deflectors, or either with potentials (the redo above); otherwise
+ * walls alone keep their own faster stage (its screens, memo and skipped
+ * periods give the same bounces), segments alone theirs.
  *
  *     isk_bounds box;
  *     if (isk_bounds_reflect(&box, -10, 10, -10, 10, ISK_SIDE_ALL, 0.0, 1.0) != ISK_OK) return 1;

@@ -21,6 +21,8 @@ static const study_entry studies[] = {
     {"longrun", "energy over 10^5 Kepler periods: symplectic bounded, RK4 drifting", study_longrun},
     {"thesis", "fig 29 against a 256-substep reference: pixels off, switch-off frames, seeds", study_thesis},
     {"knobs", "sine table (and on the campfire), emission modes, ellipse sampler, float vs double", study_knobs},
+    {"spring-floor", "a spring on a restitution-1 floor: energy per bounce, every integrator at 1/60 and 1/240",
+     study_spring_floor},
 };
 enum { NSTUDIES = sizeof studies / sizeof studies[0] };
 
