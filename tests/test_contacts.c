@@ -6,6 +6,7 @@
 #include <criterion/criterion.h>
 #include <math.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include "iskra.h"
@@ -113,18 +114,19 @@ Test(contacts, the_header_example_meets_the_wall_then_the_slant)
 
 /* A particle on a spring (P = 0: F = k (centre - r), k = 4, m = 1: omega =
  * 2) centred at the origin, released from rest at (0.6, 2), bouncing on a
- * restitution-1 floor at y = -1: it meets the floor once a swing, with the
- * force changing along the step.  Returns the relative change of the
+ * restitution-1 floor at y = -1 (a wall, or a segment): it meets the floor
+ * once a swing, with the force changing along the step.  Returns the relative change of the
  * energy per bounce, (E_end / E_0)^(1 / bounces) - 1, over `seconds`. */
-static double spring_on_floor(const char *integrator, const char *dt, double seconds, int *bounces)
+static double spring_on_floor(const char *integrator, const char *dt, double seconds, int segment, int *bounces)
 {
     char text[2000];
     snprintf(text, sizeof text,
              "[scene]\ndt = %s\nintegrator = %s\nseed = 1\n[view]\nxmin = -10\nxmax = 10\nymin = -1\nymax = 10\n"
              "[bounds]\nmode = reflect\nsides = bottom\nrestitution = 1\n"
+             "[deflector floor]\nsegment = -10, -1, 10, -1\n"
              "[force spring]\nkind = potential\nk = 4\nposition = 0, 0\nexponent = 0\n"
-             "[emitter ball]\nsource = particle\nposition = 0.6, 2\nbounded = true\nforces = spring\ndraw = none\n",
-             dt, integrator);
+             "[emitter ball]\nsource = particle\nposition = 0.6, 2\n%s\nforces = spring\ndraw = none\n",
+             dt, integrator, segment ? "deflectors = floor" : "bounded = true");
     isk_effect *fx = scene(text);
     const isk_particles *p = isk_effect_particles(fx, 0);
     cr_assert_eq(isk_effect_step(fx), ISK_OK); /* born in the first frame */
@@ -146,7 +148,8 @@ static double spring_on_floor(const char *integrator, const char *dt, double sec
     return pow(e1 / e0, 1.0 / n) - 1.0;
 }
 
-/* Through a scene (the effect runtime's contact pass): the integrators of
+/* Through a scene (the effect runtime's contact pass), on a wall and on a
+ * segment: the integrators of
  * order 2 and 4 whose positions lie on the flight keep the energy per
  * bounce within their own drift (the free spring's, below).  Before the
  * rest of a step after a bounce was flown by the integrator (a constant
@@ -155,16 +158,19 @@ static double spring_on_floor(const char *integrator, const char *dt, double sec
 Test(contacts, a_spring_on_a_floor_keeps_its_energy_per_bounce, .timeout = 120)
 {
     static const char *const methods[] = {"verlet", "leapfrog", "strang", "rk4", "yoshida4"};
-    for (int m = 0; m < 5; m++)
-        for (int k = 0; k < 2; k++) {
-            int nb;
-            const char *dt = k ? "1/240" : "1/60";
-            const double d = spring_on_floor(methods[m], dt, 100, &nb);
-            const double bound = m < 3 ? (k ? 1e-6 : 1e-5) : (k ? 1e-11 : 1e-8);
-            cr_log_info("%-10s dt %-5s: %d bounces, energy per bounce %+.3e (bound %.0e)", methods[m], dt, nb, d, bound);
-            cr_assert(nb >= 45, "%s: %d bounces", methods[m], nb);
-            cr_assert(fabs(d) < bound, "%s, dt %s: energy per bounce %+.3e", methods[m], dt, d);
-        }
+    for (int segment = 0; segment < 2; segment++)
+        for (int m = 0; m < 5; m++)
+            for (int k = 0; k < 2; k++) {
+                int nb;
+                const char *dt = k ? "1/240" : "1/60";
+                const double d = spring_on_floor(methods[m], dt, 100, segment, &nb);
+                const double bound = m < 3 ? (k ? 1e-6 : 1e-5) : (k ? 1e-11 : 1e-8);
+                cr_log_info("%s, %-10s dt %-5s: %d bounces, energy per bounce %+.3e (bound %.0e)",
+                            segment ? "segment" : "wall", methods[m], dt, nb, d, bound);
+                cr_assert(nb >= 45, "%s: %d bounces", methods[m], nb);
+                cr_assert(fabs(d) < bound, "%s, %s, dt %s: energy per bounce %+.3e", segment ? "segment" : "wall",
+                          methods[m], dt, d);
+            }
 }
 
 /* ---- a Coulomb gas in a walled box --------------------------------------- */
@@ -340,5 +346,54 @@ Test(contacts, semi_implicit_euler_at_1000_s_is_its_own_first_order_error, .time
         cr_assert(worst < 1e-12, "%s: a flight's energy changed by %.3g", methods[m], worst);
         cr_assert(stored1 / stored0 > 1e5, "%s: x%.3g", methods[m], stored1 / stored0);
         isk_effect_destroy(fx);
+    }
+}
+
+/* ---- the same bytes on any number of threads ------------------------------ */
+
+/* The contact pass runs block by block (walls with segments; walls with a
+ * potential, flown by the integrator): 1, 2 and 3 threads give the same
+ * state, bit for bit, over 4,000 particles (enough blocks to share). */
+Test(contacts, the_contact_pass_gives_the_same_bytes_on_any_number_of_threads, .timeout = 120)
+{
+    static const char *const extras[] = {
+        "[deflector slant]\nsegment = -6, -4, 5, 7\n",
+        "[force centre]\nkind = potential\nk = 20\ncharge = -1\nposition = 0, 0\nexponent = 2\nmin_distance = 0.5\n",
+    };
+    static const char *const uses[] = {"deflectors = slant\n", "forces = centre\n"};
+    for (int v = 0; v < 2; v++) {
+        double *first = NULL;
+        size_t n = 0;
+        for (int threads = 1; threads <= 3; threads++) {
+            char text[3000];
+            snprintf(text, sizeof text,
+                     "[scene]\ndt = 1/60\nintegrator = verlet\nseed = 3\n[view]\nxmin = -10\nxmax = 10\nymin = -10\n"
+                     "ymax = 10\n[bounds]\nmode = reflect\nrestitution = 0.9\n%s"
+                     "[emitter fast]\nsource = stream\nposition = 3, 2\ncount = 4000\nlaunch = cone\nspread = 360\n"
+                     "speed_min = 20\nspeed_max = 300\nbounded = true\n%sdraw = none\n",
+                     extras[v], uses[v]);
+            isk_effect *fx = scene(text);
+            cr_assert_eq(isk_effect_set_threads(fx, threads), ISK_OK);
+            for (int f = 0; f < 120; f++)
+                cr_assert_eq(isk_effect_step(fx), ISK_OK);
+            const isk_particles *p = isk_effect_particles(fx, 0);
+            cr_assert_eq(p->count, 4000);
+            if (!first) {
+                n = p->count;
+                first = malloc(4 * n * sizeof *first);
+                cr_assert_not_null(first);
+                memcpy(first, p->x, n * sizeof *first);
+                memcpy(first + n, p->y, n * sizeof *first);
+                memcpy(first + 2 * n, p->vx, n * sizeof *first);
+                memcpy(first + 3 * n, p->vy, n * sizeof *first);
+            } else {
+                cr_assert(!memcmp(first, p->x, n * sizeof *first) && !memcmp(first + n, p->y, n * sizeof *first) &&
+                              !memcmp(first + 2 * n, p->vx, n * sizeof *first) &&
+                              !memcmp(first + 3 * n, p->vy, n * sizeof *first),
+                          "%s: %d threads differ from 1", v ? "walls + potential" : "walls + segment", threads);
+            }
+            isk_effect_destroy(fx);
+        }
+        free(first);
     }
 }

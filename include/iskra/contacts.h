@@ -58,6 +58,8 @@
  * walls alone keep their own faster stage (its screens, memo and skipped
  * periods give the same bounces), segments alone theirs.
  *
+ * Example: in one step, off a wall, then off a slanted segment:
+ *
  *     isk_bounds box;
  *     if (isk_bounds_reflect(&box, -10, 10, -10, 10, ISK_SIDE_ALL, 0.0, 1.0) != ISK_OK) return 1;
  *     isk_deflector slant = isk_deflector_segment(-6, -4, 5, 7);
