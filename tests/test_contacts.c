@@ -397,3 +397,33 @@ Test(contacts, the_contact_pass_gives_the_same_bytes_on_any_number_of_threads, .
         free(first);
     }
 }
+
+/* ---- hit events ------------------------------------------------------------ */
+
+/* A sub-emitter on hit sees every contact of the pass: a particle that
+ * bounces off the right wall and then off the slant in the same step (the
+ * header's example) fires two events in that step, one for each. */
+Test(contacts, on_hit_fires_for_the_wall_and_the_segment_of_one_step)
+{
+    isk_effect *fx = scene("[scene]\ndt = 1/60\nintegrator = verlet\n[view]\nxmin = -10\nxmax = 10\nymin = -10\n"
+                           "ymax = 10\n[bounds]\nmode = reflect\nrestitution = 1\n"
+                           "[deflector slant]\nsegment = -6, -4, 5, 7\n"
+                           "[emitter ball]\nsource = particle\nposition = 9, 6\nvelocity = 600, 0\nbounded = true\n"
+                           "deflectors = slant\non_hit = spark\ndraw = none\n"
+                           "[emitter spark]\nsource = sub\ncount = 1\nlife = 10\ndraw = none\n");
+    const isk_effect_def *d = isk_effect_definition(fx);
+    const isk_particles *ball = isk_effect_particles(fx, isk_effect_def_find_emitter(d, "ball"));
+    const isk_particles *spark = isk_effect_particles(fx, isk_effect_def_find_emitter(d, "spark"));
+    size_t before = 0;
+    int steps_with_two = 0;
+    for (int f = 0; f < 30; f++) {
+        cr_assert_eq(isk_effect_step(fx), ISK_OK);
+        cr_assert_eq(ball->count, 1);
+        steps_with_two += spark->count - before == 2;
+        cr_assert(spark->count - before <= 2, "frame %d: %zu events", f, spark->count - before);
+        before = spark->count;
+    }
+    cr_log_info("%zu events in 30 frames, %d frames with two", spark->count, steps_with_two);
+    cr_assert(steps_with_two >= 1);
+    isk_effect_destroy(fx);
+}

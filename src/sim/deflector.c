@@ -793,6 +793,27 @@ static isk_status deflect(const isk_bounds *walls, const isk_deflector *defs, in
                     if (flight_hit(&f, get_seg(&c, k, &tmp), t) <= tw)
                         axis = -1; /* the segment first (a tie too: the wall is met next) */
                 }
+                if (axis >= 0 && ndef) {
+                    /* The wall first, unless the chord to the point of
+                     * impact crosses a segment that the chord to the end
+                     * (beyond the wall) missed: a curved path into a
+                     * corner of a wall and a segment.  Then that segment
+                     * first, along the chord to the wall. */
+                    double hx, hy, hvx, hvy, t2;
+                    flight_at(&f, tw, &hx, &hy, &hvx, &hvy);
+                    if (axis)
+                        hy = side < 0 ? wb.lo[1] : wb.hi[1];
+                    else
+                        hx = side < 0 ? wb.lo[0] : wb.hi[0];
+                    const int k2 = nearest(&c, sx, sy, hx, hy, &t2);
+                    if (k2 >= 0) {
+                        k = k2;
+                        t = t2;
+                        ex = hx;
+                        ey = hy;
+                        axis = -1;
+                    }
+                }
                 if (axis >= 0) {
                     if (contacts == ISK_CONTACTS_MAX) {
                         ex = sx; /* out of contacts: stay at the last contact, with the velocity there */
