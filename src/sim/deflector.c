@@ -738,6 +738,8 @@ static isk_status deflect(const isk_bounds *walls, const isk_deflector *defs, in
     for (size_t i = 0; i < n; i++) {
         if (killed && killed[i])
             continue;
+        if (ndef == 0 && in_box(&wb, x[i], y[i]))
+            continue; /* walls alone, a path that ends inside: nothing to meet (a NaN is not inside) */
         double sx = x_old[i], sy = y_old[i], ex = x[i], ey = y[i], ux = vx[i], uy = vy[i];
         if (!isfinite(sx) || !isfinite(sy) || !isfinite(ex) || !isfinite(ey) || !isfinite(ux) || !isfinite(uy))
             continue;
