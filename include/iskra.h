@@ -15,6 +15,7 @@
  *   iskra/teach.h    the thesis's classes, one particle at a time
  *   iskra/sinlut.h   sine lookup table     iskra/gradient.h  baked colour/scalar ramps
  *   iskra/sprite.h   baked round sprites   iskra/deflector.h  bouncing segments
+ *   iskra/contacts.h walls and segments in one pass, in path order
  *   iskra/texture.h  image sprites: scaled, rotated, tinted, sprite-sheet frames
  *   iskra/texture_png.h  textures from PNG files and bytes
  *   iskra/shape.h    spawn shapes, velocity generators
@@ -81,6 +82,7 @@
 #include "iskra/gradient.h"
 #include "iskra/sprite.h"
 #include "iskra/deflector.h"
+#include "iskra/contacts.h"
 #include "iskra/shape.h"
 #include "iskra/timestep.h"
 #include "iskra/tasks.h"

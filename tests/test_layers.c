@@ -55,6 +55,7 @@ static const struct {
     {"view.h", "view"},
     {"particles.h", "sim"},    {"forces.h", "sim"},        {"integrate.h", "sim"},   {"impact.h", "sim"},
     {"bounds.h", "sim"},       {"explode.h", "sim"},       {"system.h", "sim"},      {"deflector.h", "sim"},
+    {"contacts.h", "sim"},
     {"shape.h", "sim"},        {"problems.h", "sim"},      {"limits.h", "sim"},      {"tasks.h", "sim"},
     {"teach.h", "teach"},
     {"keys.h", "scene"},       {"effect.h", "scene"},      {"scene.h", "scene"},     {"presets.h", "scene"},

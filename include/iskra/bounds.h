@@ -49,6 +49,11 @@
  * After the stage every finite particle is inside [left, right] x
  * [bottom, top] for the enabled sides.
  *
+ * Walls together with deflector segments, or under potentials (with the
+ * integrators of iskra/contacts.h's rule), are met in one contact pass in
+ * the order of the path (iskra/contacts.h), which the effect runtime and
+ * isk_system use then.
+ *
  * The bounce is its own stage so callers choose the order: the thesis's
  * examples draw BEFORE zarobi, its simulator AFTER (isk_system has
  * bounce_in_step; isk_system_bounce() runs the stage alone).

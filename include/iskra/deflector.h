@@ -30,7 +30,8 @@
  * isk_deflect(defs, ndef, x, y, vx, vy, x_old, y_old, n, rng, killed,
  * stats), given only the old positions, reflects the end-of-step velocity
  * and the rest of the straight path (adds energy under gravity: kept for
- * callers without a start state).
+ * callers without a start state).  Segments together with sound walls are
+ * met in the order of the path by isk_contacts_step (iskra/contacts.h).
  *
  * Geometry (the fire thesis §5.8, made exact and robust):
  *   - Segment endpoints are put in a canonical order (lexicographic on
@@ -149,9 +150,12 @@ typedef struct isk_deflector {
 typedef struct isk_deflect_stats {
     size_t hits;        /* crossings found (reacting or passing) */
     size_t bounces, kills, sticks, passes;
-    size_t last_resort; /* particles that ran out of hits (see above) */
+    size_t last_resort; /* particles that ran out of hits (see above), or of contacts
+                           (ISK_CONTACTS_MAX, iskra/contacts.h) */
     uint8_t *bounced;   /* optional (NULL: not kept): per particle of the call, the bounces it
                            made in it, saturating at 255; written, not added to */
+    size_t wall_bounces; /* bounces on walls (isk_contacts_step only; iskra/contacts.h) */
+    uint8_t *wall_bounced; /* optional, as `bounced`, for the walls (isk_contacts_step only) */
 } isk_deflect_stats;
 
 /* A bouncing segment with c = 1, p = 1, uniform restitution. */

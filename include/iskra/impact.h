@@ -31,7 +31,12 @@
  * step away), so after the bounce the integrator continues on the
  * reflected flight and no integrator gains energy at a wall.  For gravity,
  * wind, buoyancy and drag the flight is the integrator's exact motion; for
- * potentials it is the second-order description the step's ends define.
+ * potentials it is the second-order description the step's ends define,
+ * and the contact pass of iskra/contacts.h (which the effect runtime and
+ * isk_system use then, with every integrator but the Euler forms) takes
+ * the integrator's own state at the contact and flies the rest of the
+ * step with the integrator, so that a bounce keeps the energy to the
+ * integrator's own order there too.
  *
  * Resting contact.  After a bounce, if the acceleration pushes the
  * particle back into the wall and (c < 1) the whole series of ever smaller

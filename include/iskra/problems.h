@@ -210,6 +210,30 @@ isk_status isk_problem_measure(const isk_problem *p, const isk_system *s, isk_pr
  * projectile (it has no conserved quantity). */
 isk_status isk_problem_track(const isk_problem *p, const isk_system *s, isk_problem_error *acc);
 
+/* ---- a spring on a floor ----------------------------------------------------
+ * The hard case of a bounce under a force that varies along the path: a
+ * particle of mass 1 on a spring (a potential with P = 0, kQ = 4: omega =
+ * 2) centred at the origin, released at rest from (0.6, 2) above a
+ * restitution-1 floor at y = -1, which it meets once a swing (about every
+ * 2 s).  E = |v|^2/2 + 2 |r|^2 is conserved, so a bounce must give back
+ * the energy it took, to the integrator's own order (iskra/contacts.h).
+ * isk_problem_spring_floor steps it with isk_system (walls at the time of
+ * impact) for `seconds` at dt with `method`, with the floor (floor = 1) or
+ * without (0: the integrator's own drift over the same time), and gives
+ * the relative change of the energy E_end / E_0 - 1 and, with the floor,
+ * the bounces (0 without).  The energy per bounce is then
+ * (1 + change)^(1 / bounces) - 1 (docs/accuracy.md has the table, from
+ * `iskra bench accuracy`).  Errors: ISK_ERR_RANGE (a method that is not
+ * one of the eight, dt not in (0, ISK_DT_MAX], seconds not in (0, 1e6]),
+ * ISK_ERR_NAN, ISK_ERR_NULL, ISK_ERR_NOMEM. */
+typedef struct isk_spring_floor {
+    double change; /* E_end / E_0 - 1 */
+    int bounces;   /* contacts with the floor (0 without it) */
+} isk_spring_floor;
+
+isk_status isk_problem_spring_floor(isk_integrator method, double dt, double seconds, int floor,
+                                    isk_spring_floor *out);
+
 #ifdef __cplusplus
 }
 #endif

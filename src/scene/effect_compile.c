@@ -194,7 +194,14 @@ isk_status isk__fx_compile(isk_effect *e, fx_group *g)
             return ISK_ERR_FULL;
         osc_params(&st->u.osc, e, em);
     }
-    if (walls && !em->motion.draw_before_bounce) {
+    /* Sound walls and deflectors together are one contact pass, in the
+     * order the path meets them (iskra/contacts.h): the deflect stage.
+     * When it flies the rest of a step after a contact with the integrator
+     * (potentials act: isk__contacts_redo), it takes the walls alone too. */
+    const int redo = f->npick > 0 && isk__contacts_redo(f, g->integrator);
+    const int sound_walls = walls && !em->motion.draw_before_bounce && d->bounds.mode == ISK_BOUNCE_REFLECT;
+    const int walls_in_contacts = sound_walls && (g->ndefl || redo);
+    if (walls && !em->motion.draw_before_bounce && !walls_in_contacts) {
         if (!ADD(isk__stage_walls))
             return ISK_ERR_FULL;
         st->u.walls.b = &d->bounds;
@@ -206,7 +213,7 @@ isk_status isk__fx_compile(isk_effect *e, fx_group *g)
         st->u.walls.offset = isk_integrator_velocity_offset(g->integrator);
         st->u.walls.hit = em->events.on_hit >= 0;
     }
-    if (g->ndefl) {
+    if (g->ndefl || walls_in_contacts) {
         if (!ADD(isk__stage_deflect))
             return ISK_ERR_FULL;
         st->u.deflect.segs = g->defl;
@@ -215,6 +222,9 @@ isk_status isk__fx_compile(isk_effect *e, fx_group *g)
         st->u.deflect.can_kill = can_kill;
         st->u.deflect.drag = f->drag;
         st->u.deflect.hit = em->events.on_hit >= 0;
+        st->u.deflect.walls = walls_in_contacts ? &d->bounds : NULL;
+        st->u.deflect.redo = (isk_contact_integrator){g->integrator, f};
+        st->u.deflect.redo_on = redo;
     }
     if (g->store.angle && isk__fx_looks_spins(em)) {
         if (!ADD(isk__stage_spin))

@@ -11,6 +11,7 @@
 #include "sim/flight.h"
 #include "sim/kernels.h"
 #include "sim/rest_screen.h"
+#include "sim/wall_contact.h"
 #include "sim/wall_screen.h"
 
 #if ISK__CPU_SSE2
@@ -204,6 +205,11 @@ static void settle_one(double *pos, double *vel, double lo, double hi, double c)
     *vel = u;
 }
 
+void isk__wall_settle(double *pos, double *vel, double lo, double hi, double c)
+{
+    settle_one(pos, vel, lo, hi, c);
+}
+
 static void settle_axis(size_t n, double *restrict pos, double *restrict v, double lo, double hi,
                         double c)
 {
@@ -276,6 +282,34 @@ static int turn_may_leave(double P, double U, double a, double k, double lo, dou
     if (!(least > margin))
         return 1;
     return a < 0.0 ? !(P + reach + margin < hi) : !(P - reach - margin > lo);
+}
+
+double isk__wall_time(double P, double U, double a, double k, double s, double lo, double hi, int *wall)
+{
+    double e, d1, d2;
+    isk__fl_basis(k, s, &e, &d1, &d2);
+    const double end = P + U * d1 + a * d2;
+    const double t_turn = isk__fl_turn(U, a, k);
+    const int turn_in = t_turn > 0.0 && t_turn < s;
+    double p_turn = P;
+    if (turn_in) {
+        isk__fl_basis(k, t_turn, &e, &d1, &d2);
+        p_turn = P + U * d1 + a * d2;
+    }
+    double tau = INFINITY;
+    *wall = 0;
+    if (end < lo || (turn_in && p_turn < lo)) {
+        tau = hit_time(P - lo, U, a, k, s, t_turn, turn_in, p_turn - lo, end - lo, NULL);
+        *wall = -1;
+    }
+    if (end > hi || (turn_in && p_turn > hi)) {
+        const double t = hit_time(hi - P, -U, -a, k, s, t_turn, turn_in, hi - p_turn, hi - end, NULL);
+        if (t < tau) {
+            tau = t;
+            *wall = 1;
+        }
+    }
+    return tau;
 }
 
 /* How an axis's flight in the step is known (iskra/impact.h): from the

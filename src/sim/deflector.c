@@ -9,7 +9,11 @@
 #include <math.h>
 #include <string.h>
 
+#include "iskra/contacts.h"
+#include "iskra/integrate.h"
 #include "sim/flight.h"
+#include "sim/rest_screen.h"  /* isk__rest_at_once */
+#include "sim/wall_contact.h"
 
 const char *const isk_deflect_reaction_names[ISK_DEFLECT_REACTION_COUNT] = {"bounce", "kill", "stick"};
 const char *const isk_restitution_mode_names[ISK_RESTITUTION_MODE_COUNT] = {"uniform", "normal"};
@@ -222,6 +226,8 @@ enum { SEG_CACHE = 64 }; /* more segments than this are put in canonical form on
 typedef struct ctx {
     const isk_deflector *defs;
     int ndef;
+    const isk_contact_integrator *redo; /* NULL: the rest of a step after a contact is the fitted flight */
+    isk_scratch *scratch;                /* the integrator's working arrays (with redo) */
     seg cache[SEG_CACHE];
     int passed[ISK_DEFLECT_MAX_HITS];
     int npassed;
@@ -352,14 +358,28 @@ static double flight_hit(const flight *f, const seg *s, double t_chord)
  * curve, the safe point Q before it, the reflected velocity, the rest of
  * the flight from Q; resting contact per iskra/impact.h.  Returns the new
  * chord end in (*ex, *ey). */
+static int bounce_at(const ctx *c, int hit, const isk_deflector *d, flight *f, double t_chord, double tau, double hx,
+                     double hy, double uix, double uiy, double *ex, double *ey);
+
 static void bounce_flight(const ctx *c, int hit, const isk_deflector *d, flight *f, double t_chord, double *ex,
                           double *ey)
 {
     seg tmp;
-    const seg *s = get_seg(c, hit, &tmp);
-    const double tau = flight_hit(f, s, t_chord);
+    const double tau = flight_hit(f, get_seg(c, hit, &tmp), t_chord);
     double hx, hy, uix, uiy;
     flight_at(f, tau, &hx, &hy, &uix, &uiy);
+    bounce_at(c, hit, d, f, t_chord, tau, hx, hy, uix, uiy, ex, ey);
+}
+
+/* The bounce of bounce_flight once the impact is known: at tau, at the
+ * point H = (hx, hy) with the flight's velocity (uix, uiy) there (the
+ * flight's own, or the integrator's: iskra/contacts.h).  Returns 1 when
+ * the particle came to rest on the segment. */
+static int bounce_at(const ctx *c, int hit, const isk_deflector *d, flight *f, double t_chord, double tau, double hx,
+                     double hy, double uix, double uiy, double *ex, double *ey)
+{
+    seg tmp;
+    const seg *s = get_seg(c, hit, &tmp);
     double qx, qy;
     double th = crossing(s, f->sx, f->sy, hx, hy);
     if (th >= 0.0)
@@ -387,6 +407,7 @@ static void bounce_flight(const ctx *c, int hit, const isk_deflector *d, flight 
      * at every hop too, so it stops; normal restitution lets it slide) and
      * the segment holds it against the normal acceleration. */
     const double V = f->ux * nox + f->uy * noy, an = f->ax * nox + f->ay * noy, cr = d->restitution;
+    int rested = 0;
     if (an < 0.0 && (!(V > 0.0) || (cr < 1.0 && 2.0 * V <= -an * (1.0 - cr) * f->s * (1.0 + 1e-9)))) {
         if (d->mode == ISK_RESTITUTION_UNIFORM && cr < 1.0) {
             f->ux = f->uy = 0.0;
@@ -396,9 +417,11 @@ static void bounce_flight(const ctx *c, int hit, const isk_deflector *d, flight 
         }
         f->ax -= an * nox;
         f->ay -= an * noy;
+        rested = 1;
     }
     double vx, vy;
     flight_at(f, f->s, ex, ey, &vx, &vy);
+    return rested;
 }
 
 /* Bounce of a straight path with the end-of-step velocity (isk_deflect):
@@ -421,9 +444,244 @@ static void bounce_linear(const ctx *c, int hit, const isk_deflector *d, double 
     *ey = qy + ry;
 }
 
-static isk_status deflect(const isk_deflector *defs, int ndef, double *x, double *y, double *vx, double *vy,
-                          const double *x_old, const double *y_old, const isk_step_motion *mo, size_t n,
-                          isk_rng *rng, uint8_t *killed, isk_deflect_stats *stats)
+/* ---- the rest of a step flown by the integrator (iskra/contacts.h) -------- */
+
+/* A particle's state as the integrator keeps it (its stored velocity). */
+typedef struct state {
+    double x, y, vx, vy;
+} state;
+
+/* One step of the integrator of c->redo over t from st. */
+static state redo_step(const ctx *c, state st, double m, double t)
+{
+    if (t > 0.0)
+        isk_integrate_block(c->redo->method, c->redo->forces, c->scratch, 1, &st.x, &st.y, &st.vx, &st.vy, &m, t);
+    return st;
+}
+
+/* The integrator's state at the contact the flight puts at *tau after the
+ * start st0 (at most s_max): one step of the integrator over *tau, its
+ * time refined by a Newton step on the signed distance nx x + ny y - off
+ * to the wall or the segment's line, so that the contact is where the
+ * integrator's own path meets it.  The flight is fitted to the ends of
+ * that path, so one step brings the distance down to rounding. */
+static state redo_contact(const ctx *c, state st0, double m, double *tau, double s_max, double nx, double ny,
+                          double off)
+{
+    state st = redo_step(c, st0, m, *tau);
+    const double g = nx * st.x + ny * st.y - off, gp = nx * st.vx + ny * st.vy;
+    const double t1 = gp != 0.0 ? *tau - g / gp : *tau;
+    if (t1 != *tau && t1 > 0.0 && t1 <= s_max && isfinite(t1)) {
+        st = redo_step(c, st0, m, t1);
+        *tau = t1;
+    }
+    return st;
+}
+
+/* At a contact resolved with the integrator, the velocity reflected is the
+ * integrator's own (its state at the contact), not the flight's: the
+ * flight's offset from it (which a potential makes of the order of the
+ * force's change over the step) is dropped, or it would be added to the
+ * reflected velocity and change the energy at every bounce. */
+static void redo_own_velocity(flight *f)
+{
+    f->delx = f->dely = 0.0;
+}
+
+/* After a contact resolved with the integrator: the rest of the step, from
+ * the flight's new start (its velocity plus the offset, the integrator's
+ * form: *start), is one step of the integrator; its end becomes the
+ * particle's and the flight is fitted to it (to find the next contact).
+ * Returns the integrator's end state. */
+static state redo_rest(const ctx *c, flight *f, double m, state *start)
+{
+    const state st0 = {f->sx, f->sy, f->ux + f->delx, f->uy + f->dely};
+    *start = st0;
+    if (!(f->s > 0.0))
+        return st0;
+    const state end = redo_step(c, st0, m, f->s);
+    flight g = *f;
+    isk__fl_fit(st0.x, st0.vx, end.x, end.vx, f->k, f->s, &g.ux, &g.ax, &g.delx);
+    isk__fl_fit(st0.y, st0.vy, end.y, end.vy, f->k, f->s, &g.uy, &g.ay, &g.dely);
+    if (isfinite(g.ux) && isfinite(g.uy) && isfinite(g.ax) && isfinite(g.ay) && isfinite(g.delx) &&
+        isfinite(g.dely))
+        *f = g;
+    return end;
+}
+
+/* ---- walls in the same pass (iskra/contacts.h) ---------------------------- */
+
+/* The sound walls of a contact pass, per axis (0: x, 1: y); a missing wall
+ * at -inf / +inf. */
+typedef struct wall_box {
+    double lo[2], hi[2];
+    double c;
+    int on[2];
+} wall_box;
+
+static wall_box wall_box_of(const isk_bounds *b)
+{
+    const unsigned sd = b->sides;
+    wall_box w = {{sd & ISK_SIDE_LEFT ? b->xmin + b->margin : -INFINITY,
+                   sd & ISK_SIDE_BOTTOM ? b->ymin + b->margin : -INFINITY},
+                  {sd & ISK_SIDE_RIGHT ? b->xmax - b->margin : INFINITY,
+                   sd & ISK_SIDE_TOP ? b->ymax - b->margin : INFINITY},
+                  b->restitution,
+                  {(sd & (ISK_SIDE_LEFT | ISK_SIDE_RIGHT)) != 0, (sd & (ISK_SIDE_BOTTOM | ISK_SIDE_TOP)) != 0}};
+    return w;
+}
+
+static int in_box(const wall_box *w, double x, double y)
+{
+    return x >= w->lo[0] && x <= w->hi[0] && y >= w->lo[1] && y <= w->hi[1];
+}
+
+/* Which of the flight's axes an axis of the walls watches: those that
+ * started the step inside (one born outside is mirrored in at the end)
+ * and do not rest on a wall (its normal motion is then held at zero). */
+static int watches(const wall_box *w, const int skip[2], int a)
+{
+    return w->on[a] && !skip[a];
+}
+
+/* The first wall the flight meets in the rest of the step: its time (or
+ * INFINITY), axis and side (-1: lo, +1: hi); ties go to x. */
+static double first_wall(const flight *f, const wall_box *w, const int skip[2], int *axis, int *side)
+{
+    double best = INFINITY;
+    *axis = -1;
+    for (int a = 0; a < 2; a++) {
+        if (!watches(w, skip, a))
+            continue;
+        int wall;
+        const double t = isk__wall_time(a ? f->sy : f->sx, a ? f->uy : f->ux, a ? f->ay : f->ax, f->k, f->s,
+                                        w->lo[a], w->hi[a], &wall);
+        if (t < best) {
+            best = t;
+            *axis = a;
+            *side = wall;
+        }
+    }
+    return best;
+}
+
+/* Holds axis a of the flight on the wall W it is pressed into: the wall
+ * takes the normal acceleration, the normal velocity is zero (the stored
+ * one gets the integrator's offset back at the end, iskra/impact.h). */
+static void rest_on_wall(flight *f, int a, double W, int skip[2])
+{
+    if (a) {
+        f->sy = W;
+        f->uy = f->ay = 0.0;
+    } else {
+        f->sx = W;
+        f->ux = f->ax = 0.0;
+    }
+    skip[a] = 1;
+}
+
+/* The start of a flight on a wall it is pressed into: a normal velocity
+ * within rounding of zero is zero, and a particle within the resting
+ * distance of iskra/impact.h, no faster than its speed, rests at once, as
+ * the walls alone do it (else each step would cost a root solve for a hop
+ * below what the step resolves).  Returns 1 when an axis rested. */
+static int rest_at_start(flight *f, const wall_box *w, double h, int skip[2])
+{
+    int rested = 0;
+    for (int a = 0; a < 2; a++) {
+        if (!watches(w, skip, a))
+            continue;
+        const double P = a ? f->sy : f->sx, U = a ? f->uy : f->ux, acc = a ? f->ay : f->ax;
+        double near, slow;
+        isk__rest_at_once(acc, h, w->c, &near, &slow);
+        const double U0 = fabs(U) <= 64 * 2.220446049250313e-16 * fabs(acc) * h ? 0.0 : U;
+        const int on_lo = acc < 0.0 && P - w->lo[a] <= near, on_hi = acc > 0.0 && w->hi[a] - P <= near;
+        if ((on_lo || on_hi) && fabs(U0) <= slow) {
+            rest_on_wall(f, a, on_lo ? w->lo[a] : w->hi[a], skip);
+            rested = 1;
+        }
+    }
+    return rested;
+}
+
+/* The bounce on a wall at tau (iskra/impact.h), at the point (hx, hy) with
+ * the flight's velocity (ux, uy) there (the flight's own, or the
+ * integrator's): the point is put exactly on the wall, the normal part of
+ * the velocity reflected with the walls' restitution (only an outward
+ * one), and the flight starts afresh from there; pressed back into the
+ * wall with all further hops fitting in the rest of the step, it rests on
+ * it (returns 1). */
+static int bounce_wall(flight *f, const wall_box *w, int a, int side, double tau, double hx, double hy, double ux,
+                       double uy, int skip[2])
+{
+    const double W = side < 0 ? w->lo[a] : w->hi[a], sigma = side < 0 ? 1.0 : -1.0; /* sigma: into the box */
+    double *un = a ? &uy : &ux;
+    if (sigma * *un < 0.0)
+        *un = -w->c * *un;
+    if (a)
+        hy = W;
+    else
+        hx = W;
+    f->s = f->s - tau > 0.0 ? f->s - tau : 0.0;
+    f->sx = hx;
+    f->sy = hy;
+    f->ux = ux;
+    f->uy = uy;
+    const double U = *un, acc = a ? f->ay : f->ax, c = w->c;
+    if (sigma * acc < 0.0 && (!(sigma * U > 0.0) || (c < 1.0 && 2.0 * sigma * U <= -sigma * acc * (1.0 - c) * f->s * (1.0 + 1e-9)))) {
+        rest_on_wall(f, a, W, skip);
+        return 1;
+    }
+    return 0;
+}
+
+/* The end of a contact pass on the walls: an axis that started outside is
+ * mirrored in (no crossing to find), and any other residual beyond a wall
+ * (rounding at a wall, the top of an arc grazing it unseen, a particle
+ * stopped by the cap of contacts) is put on the wall, an outward velocity
+ * reflected with the restitution: so no particle ends a step outside. */
+static void finish_walls(const wall_box *w, const int born_out[2], double *x, double *y, double *vx, double *vy)
+{
+    double *pos[2] = {x, y}, *vel[2] = {vx, vy};
+    for (int a = 0; a < 2; a++) {
+        if (!w->on[a])
+            continue;
+        const double lo = w->lo[a], hi = w->hi[a];
+        if (born_out[a]) {
+            if (!(*pos[a] >= lo && *pos[a] <= hi))
+                isk__wall_settle(pos[a], vel[a], lo, hi, w->c);
+        } else if (*pos[a] < lo) {
+            *pos[a] = lo;
+            if (*vel[a] < 0.0)
+                *vel[a] = -w->c * *vel[a];
+        } else if (*pos[a] > hi) {
+            *pos[a] = hi;
+            if (*vel[a] > 0.0)
+                *vel[a] = -w->c * *vel[a];
+        }
+    }
+}
+
+/* The flight of particle i in the step (iskra/impact.h), fitted to its
+ * start (sx, sy and mo's velocities) and its end (ex, ey, ux, uy).  Returns
+ * 0 when there is no usable motion (a start velocity not finite). */
+static int fit_flight(flight *f, const isk_step_motion *mo, size_t i, double sx, double sy, double ex, double ey,
+                      double ux, double uy)
+{
+    const double kk = mo->drag > 0.0 ? mo->drag / mo->m[i] : 0.0;
+    f->sx = sx;
+    f->sy = sy;
+    f->k = kk;
+    f->s = mo->h;
+    isk__fl_fit(sx, mo->vx0[i], ex, ux, kk, mo->h, &f->ux, &f->ax, &f->delx);
+    isk__fl_fit(sy, mo->vy0[i], ey, uy, kk, mo->h, &f->uy, &f->ay, &f->dely);
+    return isfinite(f->ux) && isfinite(f->uy) && isfinite(f->ax) && isfinite(f->ay);
+}
+
+static isk_status deflect(const isk_bounds *walls, const isk_deflector *defs, int ndef, double *x, double *y,
+                          double *vx, double *vy, const double *x_old, const double *y_old, const isk_step_motion *mo,
+                          const isk_contact_integrator *redo, size_t n, isk_rng *rng, uint8_t *killed,
+                          isk_deflect_stats *stats)
 {
     if (ndef < 0)
         return ISK_ERR_SIZE;
@@ -445,34 +703,165 @@ static isk_status deflect(const isk_deflector *defs, int ndef, double *x, double
         return ISK_ERR_RANGE;
     if ((need_rng && !rng) || (need_killed && !killed))
         return ISK_ERR_NULL;
-    if (ndef == 0)
+    if (walls && walls->sides == 0)
+        walls = NULL; /* no wall: the deflectors alone */
+    if (walls) {
+        isk_status st = isk_bounds_validate(walls);
+        if (st != ISK_OK)
+            return st;
+        if (walls->mode != ISK_BOUNCE_REFLECT)
+            return ISK_ERR_RANGE;
+        if (!mo)
+            return ISK_ERR_NULL;
+    }
+    if (redo && (!mo || !redo->forces || (unsigned)redo->method >= ISK_INTEGRATOR_COUNT))
+        return redo->forces ? ISK_ERR_RANGE : ISK_ERR_NULL;
+    if (ndef == 0 && !walls)
         return ISK_OK;
 
-    isk_deflect_stats local = {0, 0, 0, 0, 0, 0, NULL};
+    isk_deflect_stats local = {0, 0, 0, 0, 0, 0, NULL, 0, NULL};
     uint8_t *per_particle = stats ? stats->bounced : NULL;
+    uint8_t *per_particle_walls = walls && stats ? stats->wall_bounced : NULL;
     if (per_particle && n > 0)
         memset(per_particle, 0, n);
+    if (per_particle_walls && n > 0)
+        memset(per_particle_walls, 0, n);
+    const wall_box wb = walls ? wall_box_of(walls) : (wall_box){{0, 0}, {0, 0}, 0, {0, 0}};
     ctx c;
     c.defs = defs;
     c.ndef = ndef;
+    c.redo = redo;
+    isk_scratch scratch; /* the integrator's arrays for one particle (with redo) */
+    c.scratch = &scratch;
     for (int k = 0; k < ndef && k < SEG_CACHE; k++)
         c.cache[k] = canon(&defs[k]);
     for (size_t i = 0; i < n; i++) {
         if (killed && killed[i])
             continue;
+        if (ndef == 0 && in_box(&wb, x[i], y[i]))
+            continue; /* walls alone, a path that ends inside: nothing to meet (a NaN is not inside) */
         double sx = x_old[i], sy = y_old[i], ex = x[i], ey = y[i], ux = vx[i], uy = vy[i];
         if (!isfinite(sx) || !isfinite(sy) || !isfinite(ex) || !isfinite(ey) || !isfinite(ux) || !isfinite(uy))
             continue;
         flight f;
         int fitted = 0, bounced = 0, linear = mo == NULL;
+        /* With the integrator (redo): after each contact the rest of the
+         * step is its step, from the contact; `end` is where it ends.  Off
+         * once the particle rests on a wall or a segment (the flight holds
+         * it there). */
+        int redo_on = redo != NULL && mo != NULL;
+        const double mass = mo && mo->m ? mo->m[i] : 1.0;
+        state end = {ex, ey, ux, uy};
+        state from = {sx, sy, mo ? mo->vx0[i] : 0.0, mo ? mo->vy0[i] : 0.0}; /* the integrator's state where the
+                                                                               flight starts (redo) */
         c.npassed = 0;
-        int hits = 0, done = 0;
+        int hits = 0, done = 0, contacts = 0;
+        /* walls: the axes that started outside (mirrored in at the end) or
+         * rest on a wall (skip), and those that started outside alone */
+        int skip[2] = {0, 0}, born_out[2] = {0, 0};
+        if (walls) {
+            born_out[0] = wb.on[0] && !(sx >= wb.lo[0] && sx <= wb.hi[0]);
+            born_out[1] = wb.on[1] && !(sy >= wb.lo[1] && sy <= wb.hi[1]);
+            skip[0] = born_out[0];
+            skip[1] = born_out[1];
+        }
         while (!done) {
             double t;
-            int k = nearest(&c, sx, sy, ex, ey, &t);
+            int k = ndef ? nearest(&c, sx, sy, ex, ey, &t) : -1;
+            if (walls && !linear) {
+                /* The walls and the segments in the order the path meets
+                 * them: the flight is needed once the path ends outside
+                 * the box or crosses a segment. */
+                if (!fitted && (k >= 0 || !in_box(&wb, ex, ey))) {
+                    fitted = 1;
+                    if (!fit_flight(&f, mo, i, sx, sy, ex, ey, ux, uy) || !(isfinite(f.delx) && isfinite(f.dely))) {
+                        linear = 1; /* no usable motion: the segments' path rule, the walls' end rule */
+                        continue;
+                    }
+                    if (rest_at_start(&f, &wb, mo->h, skip)) { /* the flight changed: its new end */
+                        double wvx, wvy;
+                        flight_at(&f, f.s, &ex, &ey, &wvx, &wvy);
+                        sx = f.sx;
+                        sy = f.sy;
+                        bounced = 1;
+                        redo_on = 0;
+                        continue;
+                    }
+                }
+                int axis = -1, side = 0;
+                const double tw = fitted ? first_wall(&f, &wb, skip, &axis, &side) : INFINITY;
+                if (axis >= 0 && k >= 0) {
+                    seg tmp;
+                    if (flight_hit(&f, get_seg(&c, k, &tmp), t) <= tw)
+                        axis = -1; /* the segment first (a tie too: the wall is met next) */
+                }
+                if (axis >= 0 && ndef) {
+                    /* The wall first, unless the chord to the point of
+                     * impact crosses a segment that the chord to the end
+                     * (beyond the wall) missed: a curved path into a
+                     * corner of a wall and a segment.  Then that segment
+                     * first, along the chord to the wall. */
+                    double hx, hy, hvx, hvy, t2;
+                    flight_at(&f, tw, &hx, &hy, &hvx, &hvy);
+                    if (axis)
+                        hy = side < 0 ? wb.lo[1] : wb.hi[1];
+                    else
+                        hx = side < 0 ? wb.lo[0] : wb.hi[0];
+                    const int k2 = nearest(&c, sx, sy, hx, hy, &t2);
+                    if (k2 >= 0) {
+                        k = k2;
+                        t = t2;
+                        ex = hx;
+                        ey = hy;
+                        axis = -1;
+                    }
+                }
+                if (axis >= 0) {
+                    if (contacts == ISK_CONTACTS_MAX) {
+                        ex = sx; /* out of contacts: stay at the last contact, with the velocity there */
+                        ey = sy;
+                        local.last_resort++;
+                        ux = f.ux + f.delx;
+                        uy = f.uy + f.dely;
+                        bounced = 0;
+                        break;
+                    }
+                    contacts++;
+                    double tau = tw, hx, hy, hvx, hvy;
+                    if (redo_on) { /* the integrator's state at the contact, its velocity reflected */
+                        const state at = redo_contact(&c, from, mass, &tau, f.s, axis ? 0.0 : 1.0,
+                                                      axis ? 1.0 : 0.0, side < 0 ? wb.lo[axis] : wb.hi[axis]);
+                        redo_own_velocity(&f);
+                        hx = at.x;
+                        hy = at.y;
+                        hvx = at.vx;
+                        hvy = at.vy;
+                    } else {
+                        flight_at(&f, tau, &hx, &hy, &hvx, &hvy);
+                    }
+                    if (bounce_wall(&f, &wb, axis, side, tau, hx, hy, hvx, hvy, skip))
+                        redo_on = 0;
+                    local.wall_bounces++;
+                    if (per_particle_walls && per_particle_walls[i] < 255)
+                        per_particle_walls[i]++;
+                    if (redo_on) {
+                        end = redo_rest(&c, &f, mass, &from);
+                        ex = end.x;
+                        ey = end.y;
+                    } else {
+                        double wvx, wvy;
+                        flight_at(&f, f.s, &ex, &ey, &wvx, &wvy);
+                    }
+                    sx = f.sx;
+                    sy = f.sy;
+                    bounced = 1;
+                    c.npassed = 0; /* a new path */
+                    continue;
+                }
+            }
             if (k < 0)
                 break; /* E is final */
-            if (hits == ISK_DEFLECT_MAX_HITS) {
+            if (hits == ISK_DEFLECT_MAX_HITS || contacts == ISK_CONTACTS_MAX) {
                 ex = sx; /* out of hits: stay at the last safe point */
                 ey = sy;
                 local.last_resort++;
@@ -510,6 +899,7 @@ static isk_status deflect(const isk_deflector *defs, int ndef, double *x, double
                 break;
             }
             local.bounces++;
+            contacts++;
             if (per_particle && per_particle[i] < 255)
                 per_particle[i]++;
             c.npassed = 0; /* a new path */
@@ -518,38 +908,54 @@ static isk_status deflect(const isk_deflector *defs, int ndef, double *x, double
                 continue;
             }
             if (!fitted) {
-                const double kk = mo->drag > 0.0 ? mo->drag / mo->m[i] : 0.0;
-                f.sx = sx;
-                f.sy = sy;
-                f.k = kk;
-                f.s = mo->h;
-                isk__fl_fit(sx, mo->vx0[i], ex, ux, kk, mo->h, &f.ux, &f.ax, &f.delx);
-                isk__fl_fit(sy, mo->vy0[i], ey, uy, kk, mo->h, &f.uy, &f.ay, &f.dely);
                 fitted = 1;
-                if (!(isfinite(f.ux) && isfinite(f.uy) && isfinite(f.ax) && isfinite(f.ay))) {
+                if (!fit_flight(&f, mo, i, sx, sy, ex, ey, ux, uy)) {
                     /* no usable motion (a start velocity not finite): the path rule */
                     bounce_linear(&c, k, d, &sx, &sy, &ex, &ey, &ux, &uy, t);
                     linear = 1;
+                    redo_on = 0;
                     continue;
                 }
             }
-            bounce_flight(&c, k, d, &f, t, &ex, &ey);
+            if (redo_on) { /* the contact where the integrator's path meets the segment's line */
+                seg tmp;
+                const seg *sg = get_seg(&c, k, &tmp);
+                double tau = flight_hit(&f, sg, t);
+                const state at = redo_contact(&c, from, mass, &tau,
+                                              f.s, sg->nx, sg->ny, sg->nx * sg->ax + sg->ny * sg->ay);
+                redo_own_velocity(&f);
+                if (bounce_at(&c, k, d, &f, t, tau, at.x, at.y, at.vx, at.vy, &ex, &ey)) {
+                    redo_on = 0;
+                } else {
+                    end = redo_rest(&c, &f, mass, &from);
+                    ex = end.x;
+                    ey = end.y;
+                }
+            } else {
+                bounce_flight(&c, k, d, &f, t, &ex, &ey);
+            }
             sx = f.sx;
             sy = f.sy;
             bounced = 1;
         }
-        if (bounced) {
+        if (bounced && redo_on) { /* the integrator's own end velocity */
+            ux = end.vx;
+            uy = end.vy;
+        } else if (bounced) {
             double px, py, wx, wy;
             flight_at(&f, f.s, &px, &py, &wx, &wy);
             ux = wx + f.delx;
             uy = wy + f.dely;
         }
+        if (walls)
+            finish_walls(&wb, born_out, &ex, &ey, &ux, &uy);
         x[i] = ex;
         y[i] = ey;
         vx[i] = ux;
         vy[i] = uy;
     }
     if (stats) {
+        stats->wall_bounces += local.wall_bounces;
         stats->hits += local.hits;
         stats->bounces += local.bounces;
         stats->kills += local.kills;
@@ -564,7 +970,7 @@ isk_status isk_deflect(const isk_deflector *defs, int ndef, double *x, double *y
                        const double *x_old, const double *y_old, size_t n, isk_rng *rng, uint8_t *killed,
                        isk_deflect_stats *stats)
 {
-    return deflect(defs, ndef, x, y, vx, vy, x_old, y_old, NULL, n, rng, killed, stats);
+    return deflect(NULL, defs, ndef, x, y, vx, vy, x_old, y_old, NULL, NULL, n, rng, killed, stats);
 }
 
 isk_status isk_deflect_step(const isk_deflector *defs, int ndef, double *x, double *y, double *vx, double *vy,
@@ -573,5 +979,14 @@ isk_status isk_deflect_step(const isk_deflector *defs, int ndef, double *x, doub
 {
     if (!mo)
         return ISK_ERR_NULL;
-    return deflect(defs, ndef, x, y, vx, vy, mo->x0, mo->y0, mo, n, rng, killed, stats);
+    return deflect(NULL, defs, ndef, x, y, vx, vy, mo->x0, mo->y0, mo, NULL, n, rng, killed, stats);
+}
+
+isk_status isk_contacts_step(const isk_bounds *walls, const isk_deflector *defs, int ndef, double *x, double *y,
+                             double *vx, double *vy, const isk_step_motion *mo, const isk_contact_integrator *redo,
+                             size_t n, isk_rng *rng, uint8_t *killed, isk_deflect_stats *stats)
+{
+    if (!mo)
+        return ISK_ERR_NULL;
+    return deflect(walls, defs, ndef, x, y, vx, vy, mo->x0, mo->y0, mo, redo, n, rng, killed, stats);
 }

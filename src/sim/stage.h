@@ -40,6 +40,7 @@
 #include <stdio.h>
 
 #include "iskra/bounds.h"
+#include "iskra/contacts.h"
 #include "iskra/deflector.h"
 #include "iskra/forces.h"
 #include "iskra/integrate.h"
@@ -156,6 +157,11 @@ struct isk_stage {
             int can_kill;                                    /* some segment kills: life = -inf */
             double drag;                                     /* the motion's linear drag b */
             int hit;                                         /* count bounces into p->hit (on_hit) */
+            const isk_bounds *walls;                         /* NULL, or sound walls met in the same
+                                                                pass (iskra/contacts.h): no walls stage */
+            isk_contact_integrator redo;                     /* the integrator and forces that fly the rest
+                                                                of a step after a contact, when redo_on */
+            int redo_on;                                     /* 0: the fitted flight does (iskra/contacts.h) */
         } deflect;
         struct { const struct isk_field *f; } field;         /* isk__stage_field (src/sim/field.h) */
         struct { double spin, spin_range; } spin;           /* isk__stage_spin: for describe only (rad/s) */
@@ -234,7 +240,15 @@ void isk__stage_motion_init(isk_stage *st, isk_integrator method, isk_forces *f)
 extern const isk_stage_kind isk__stage_slow;       /* v *= max(0, 1 - slowing*h) */
 extern const isk_stage_kind isk__stage_oscillate;  /* the fire thesis's horizontal sway (ISK_PARTICLES_OSC) */
 extern const isk_stage_kind isk__stage_walls;      /* isk_bounds_apply_step (after remember) */
-extern const isk_stage_kind isk__stage_deflect;    /* deflector segments */
+extern const isk_stage_kind isk__stage_deflect;    /* deflector segments, and the walls with them or
+                                                     with potentials (iskra/contacts.h) */
+/* Whether the contact pass flies the rest of a step after a contact with
+ * the integrator (iskra/contacts.h): when potentials act (the force varies
+ * along the path), none of them may switch itself off (extra evaluations
+ * would trip it), and the integrator's positions lie on the flight
+ * (velocity offset 0; the Euler forms keep the flight and their offset:
+ * first order either way). */
+int isk__contacts_redo(const isk_forces *f, isk_integrator method);
 extern const isk_stage_kind isk__stage_spin;       /* angle += spin*h, wrapped (ISK_PARTICLES_ANGLE) */
 extern const isk_stage_kind isk__stage_age;        /* age += h */
 

@@ -95,9 +95,8 @@ static void run_walls(const isk_stage *st, isk_block *b, double h)
     }
 }
 
-static void describe_walls(const isk_stage *st, FILE *out)
+static void describe_walls_of(const isk_bounds *w, FILE *out)
 {
-    const isk_bounds *w = st->u.walls.b;
     fprintf(out, "%s", (unsigned)w->mode < ISK_BOUNCE_MODE_COUNT ? isk_bounce_mode_names[w->mode] : "?");
     if (w->sides != ISK_SIDE_ALL) {
         const char *sep = ": ";
@@ -109,6 +108,11 @@ static void describe_walls(const isk_stage *st, FILE *out)
     }
     if (w->mode == ISK_BOUNCE_REFLECT)
         fprintf(out, ", restitution %g, at the time of impact", w->restitution);
+}
+
+static void describe_walls(const isk_stage *st, FILE *out)
+{
+    describe_walls_of(st->u.walls.b, out);
 }
 
 /* Counting bounces writes the hit column, which a block at rest would stop
@@ -133,12 +137,14 @@ static void run_deflect(const isk_stage *st, isk_block *b, double h)
     isk_scratch *s = b->s;
     memset(s->killed, 0, b->n);
     const isk_step_motion mo = motion_of(b, st->u.deflect.drag, h);
+    const isk_bounds *walls = st->u.deflect.walls;
+    const isk_contact_integrator *redo = st->u.deflect.redo_on ? &st->u.deflect.redo : NULL;
     if (st->u.deflect.hit && b->p->hit) {
         /* A sub-emitter's on_hit: each particle's bounces counted
-         * (contact_mark: a particle resting on a segment touches it at
-         * every step). */
-        uint8_t bounces[ISK_SIM_BLOCK];
-        isk_deflect_stats ds = {0, 0, 0, 0, 0, 0, bounces};
+         * (contact_mark: a particle resting on a segment or a wall touches
+         * it at every step). */
+        uint8_t bounces[ISK_SIM_BLOCK], wall_bounces[ISK_SIM_BLOCK];
+        isk_deflect_stats ds = {0, 0, 0, 0, 0, 0, bounces, 0, wall_bounces};
         unsigned char *hit = b->p->hit + b->first;
         for (size_t o = 0; o < b->n; o += ISK_SIM_BLOCK) { /* a block is at most ISK_SIM_BLOCK */
             const size_t m = b->n - o < ISK_SIM_BLOCK ? b->n - o : ISK_SIM_BLOCK;
@@ -149,14 +155,17 @@ static void run_deflect(const isk_stage *st, isk_block *b, double h)
             m1.vy0 += o;
             if (m1.m)
                 m1.m += o;
-            isk_deflect_step(st->u.deflect.segs, st->u.deflect.n, b->x + o, b->y + o, b->vx + o, b->vy + o, &m1, m,
-                             st->u.deflect.rng, s->killed + o, &ds);
-            for (size_t i = 0; i < m; i++)
+            isk_contacts_step(walls, st->u.deflect.segs, st->u.deflect.n, b->x + o, b->y + o, b->vx + o, b->vy + o,
+                              &m1, redo, m, st->u.deflect.rng, s->killed + o, &ds);
+            for (size_t i = 0; i < m; i++) {
                 hit[o + i] = contact_mark(hit[o + i], ISK_HIT_DEFLECTOR, bounces[i]);
+                if (walls)
+                    hit[o + i] = contact_mark(hit[o + i], ISK_HIT_WALL, wall_bounces[i]);
+            }
         }
     } else {
-        isk_deflect_step(st->u.deflect.segs, st->u.deflect.n, b->x, b->y, b->vx, b->vy, &mo, b->n,
-                         st->u.deflect.rng, s->killed, NULL);
+        isk_contacts_step(walls, st->u.deflect.segs, st->u.deflect.n, b->x, b->y, b->vx, b->vy, &mo, redo, b->n,
+                          st->u.deflect.rng, s->killed, NULL);
     }
     if (!st->u.deflect.can_kill)
         return;
@@ -168,7 +177,15 @@ static void run_deflect(const isk_stage *st, isk_block *b, double h)
 
 static void describe_deflect(const isk_stage *st, FILE *out)
 {
-    fprintf(out, "%d segment%s", st->u.deflect.n, st->u.deflect.n == 1 ? "" : "s");
+    if (st->u.deflect.n || !st->u.deflect.walls)
+        fprintf(out, "%d segment%s", st->u.deflect.n, st->u.deflect.n == 1 ? "" : "s");
+    if (st->u.deflect.walls) {
+        fprintf(out, "%sthe walls (", st->u.deflect.n ? " and " : "");
+        describe_walls_of(st->u.deflect.walls, out);
+        fprintf(out, ")%s", st->u.deflect.n ? ", in path order" : "");
+    }
+    if (st->u.deflect.redo_on)
+        fprintf(out, "; the rest of a step after a contact by %s", isk_integrator_name(st->u.deflect.redo.method));
 }
 
 /* A crossing test against every segment. */
@@ -192,3 +209,10 @@ const isk_stage_kind isk__stage_deflect = {.name = "deflect",
                                           .rest = NULL /* draws from the owner's stream */,
                                           .cost = cost_deflect,
                                           .needs = needs_deflect};
+
+int isk__contacts_redo(const isk_forces *f, isk_integrator method)
+{
+    const unsigned laws = isk_forces_laws(f);
+    return (laws & (ISK_LAW_POWER_2 | ISK_LAW_POWER_1 | ISK_LAW_POWER)) && !(laws & ISK_LAW_CUTOFF) &&
+           isk_integrator_velocity_offset(method) == 0.0;
+}

@@ -267,7 +267,15 @@ isk_status isk_system_step(isk_system *s, double dt)
     isk_stage *motion = isk__pipeline_add(&pl, &isk__stage_motion);
     isk__stage_motion_init(motion, s->integrator, &s->forces);
     motion->u.motion.remember = start;
-    if (bounce) {
+    if (bounce && start && isk__contacts_redo(&s->forces, s->integrator)) {
+        /* the contact pass flies the rest of a step after a bounce with the
+         * integrator: a bounce keeps the energy to its order (iskra/contacts.h) */
+        isk_stage *c = isk__pipeline_add(&pl, &isk__stage_deflect);
+        c->u.deflect.walls = &s->bounds;
+        c->u.deflect.drag = s->forces.drag;
+        c->u.deflect.redo = (isk_contact_integrator){s->integrator, &s->forces};
+        c->u.deflect.redo_on = 1;
+    } else if (bounce) {
         isk_stage *w = isk__pipeline_add(&pl, &isk__stage_walls);
         w->u.walls.b = &s->bounds;
         w->u.walls.drag = s->forces.drag;

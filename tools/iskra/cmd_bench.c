@@ -24,6 +24,8 @@ static const study_entry studies[] = {
     {"invariants", "what each integrator keeps: modified energy, Kepler period, the Euler forms' invariant",
      study_invariants},
     {"knobs", "sine table (and on the campfire), emission modes, ellipse sampler, float vs double", study_knobs},
+    {"spring-floor", "a spring on a restitution-1 floor: energy per bounce, every integrator at 1/60 and 1/240",
+     study_spring_floor},
 };
 enum { NSTUDIES = sizeof studies / sizeof studies[0] };
 

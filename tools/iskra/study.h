@@ -54,7 +54,8 @@ int study_integrators(const study_opts *o); /* study_integrators.c */
 int study_longrun(const study_opts *o);     /* study_longrun.c */
 int study_thesis(const study_opts *o);      /* study_thesis.c */
 int study_knobs(const study_opts *o);       /* study_knobs.c */
-int study_invariants(const study_opts *o);  /* study_invariants.c */
-int study_budget(const study_opts *o);      /* study_budget.c */
+int study_invariants(const study_opts *o);   /* study_invariants.c */
+int study_budget(const study_opts *o);       /* study_budget.c */
+int study_spring_floor(const study_opts *o); /* study_spring_floor.c */
 
 #endif
