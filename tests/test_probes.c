@@ -236,6 +236,33 @@ Test(probes, a_probe_not_drawn_changes_no_byte_and_no_stage)
     isk_effect_destroy(probed);
 }
 
+/* `emitters` names what a probe measures: a gate on one of two streams
+ * counts only that one, the totals of one only its particles; "all" is
+ * every emitter. */
+Test(probes, emitters_choose_what_is_measured)
+{
+    const char *two = "[emitter a]\nsource = stream\nrate = 60\nposition = -2, 0\nvelocity = 4, 0\nlife = 3\n"
+                      "[emitter b]\nsource = stream\nrate = 60\nposition = -2, 1\nvelocity = 4, 0\nlife = 3\n"
+                      "[probe both]\nkind = gate\nsegment = 0, -3, 0, 3\n"
+                      "[probe only_b]\nkind = gate\nsegment = 0, -3, 0, 3\nemitters = b\n"
+                      "[probe all_named]\nkind = gate\nsegment = 0, -3, 0, 3\nemitters = all\n"
+                      "[probe tb]\nkind = totals\nemitters = b\n[probe ta]\nkind = totals\nemitters = a\n";
+    isk_effect *fx = scene_text_open(two, 0);
+    for (int f = 0; f < 90; f++)
+        cr_assert_eq(isk_effect_step(fx), ISK_OK);
+    isk_probe_reading both = read_probe(fx, 0), b = read_probe(fx, 1), all = read_probe(fx, 2);
+    isk_probe_reading tb = read_probe(fx, 3), ta = read_probe(fx, 4);
+    cr_assert(b.forward > 30, "%llu", (unsigned long long)b.forward);
+    cr_assert_eq(both.forward, 2 * b.forward, "the streams are the same, a row apart");
+    cr_assert_eq(all.forward, both.forward);
+    cr_assert_eq(tb.count, isk_effect_particles(fx, 1)->count);
+    cr_assert_eq(ta.count, isk_effect_particles(fx, 0)->count);
+    double k, u;
+    cr_assert_eq(isk_effect_energy(fx, &k, &u), ISK_OK);
+    cr_assert(fabs(ta.kinetic + tb.kinetic - k) <= 1e-12 * k);
+    isk_effect_destroy(fx);
+}
+
 /* ---- scene files ---------------------------------------------------------------- */
 
 static void refused(const char *probe, const char *expect)
@@ -260,6 +287,8 @@ Test(probes, bad_values_are_refused_at_their_line)
     refused("[probe g]\nkind = gate\nsegment = 0, 0, 1, 0\nbins = 4\n", "p.ini:7: [probe g] bins: only for kind");
     refused("[probe g]\nkind = gate\nsegment = 0, 0, 1, 0\nwindow = 0\n", "p.ini:7: [probe g] window:");
     refused("[probe]\nkind = totals\n", "needs a name");
+    refused("[probe t]\nkind = totals\nemitters = none\n", "p.ini:6: [probe t] emitters: name one or more emitters, or all");
+    refused("[probe t]\nkind = totals\nemitters = f\n", "p.ini:6: [probe t] emitters: no emitter named 'f'");
 }
 
 Test(probes, a_scene_with_probes_saves_and_loads_back)
@@ -269,7 +298,7 @@ Test(probes, a_scene_with_probes_saves_and_loads_back)
     const char *text = "[emitter e]\nsource = stream\nrate = 10\n"
                        "[probe door]\nkind = gate\nsegment = 0.1, -3, 0.25, 3\nwindow = 0.5\ncolor = #ff000080\n"
                        "[probe box]\nkind = region\nrect = -2, 2, -1.5, 1.5\nshow = false\n"
-                       "[probe ages]\nkind = histogram\nof = age\nbins = 8\nrange = 0, 4\n[probe totals]\n";
+                       "[probe ages]\nkind = histogram\nof = age\nbins = 8\nrange = 0, 4\nemitters = e\n[probe totals]\n";
     cr_assert_eq(isk_scene_load_string(&d, text, "p.ini", &err), ISK_OK, "%s", err.message);
     cr_assert_eq(d.nprobes, 4);
     cr_assert_eq(d.probes[0].kind, ISK_PROBE_GATE);

@@ -471,7 +471,7 @@ typedef struct isk_drawing_def {
 
 /* Probes: measuring tools for lessons and tests (iskra/probes.h reads
  * them; docs/scene-format.md, "Probes").  Each is measured after every
- * frame over the particles of every emitter; a definition without probes
+ * frame over the particles of its emitters; a definition without probes
  * runs, draws and describes exactly as if probes did not exist. */
 typedef enum isk_probe_kind {
     ISK_PROBE_GATE = 0,    /* a segment: crossings in each direction, per second over `window` */
@@ -503,6 +503,9 @@ typedef struct isk_probe_def {
     double range[2];           /* HISTOGRAM: lo < hi; values outside are counted as under / over */
     int show;                  /* 1 (default): drawn over the particles */
     isk_color color;           /* of its drawing */
+    int emitters[ISK_EFFECT_MAX_EMITTERS]; /* the emitters it measures (indices into
+                                  isk_effect_def.emitters); nemitters 0: every emitter */
+    int nemitters;
 } isk_probe_def;
 
 typedef enum isk_view_def_kind { ISK_VIEWDEF_WINDOW = 0, ISK_VIEWDEF_CAMERA, ISK_VIEWDEF_COUNT } isk_view_def_kind;

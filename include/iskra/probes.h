@@ -3,7 +3,8 @@
  * scene's [probe NAME] sections (or isk_effect_def_add_probe) place.
  *
  * A probe is measured after every frame, from frame 1 on, over the
- * particles of every emitter, on the caller's thread in a fixed order, so
+ * particles of its emitters (every emitter unless its `emitters` key names
+ * some), on the caller's thread in a fixed order, so
  * its readings are the same on any number of threads:
  *   gate       the particles whose path over the frame (from where they were
  *              at its start, or were born, to where they are at its end)
@@ -14,9 +15,9 @@
  *   histogram  every particle's speed, angle or age, counted in `bins`
  *              equal bins over `range` (the upper end in the last bin),
  *              with those below and above counted apart
- *   totals     the scene's momentum, kinetic energy and potential energy
- *              (isk_effect_energy: the same numbers `iskra play`'s energy
- *              chart shows)
+ *   totals     the momentum, kinetic energy and potential energy (of every
+ *              emitter: isk_effect_energy's numbers, which `iskra play`'s
+ *              energy chart shows)
  * A particle that dies during a frame is not seen by that frame's
  * measure.  An effect without probes keeps no state for them and runs
  * exactly as before they existed.

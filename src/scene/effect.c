@@ -106,7 +106,7 @@ static isk_status build(isk_effect *e, isk_error *err)
         memset(g, 0, sizeof *g);
         g->index = gi;
         g->def = &d->emitters[gi];
-        g->keep_prev = isk__fx_probes_need_prev(d);
+        g->keep_prev = isk__fx_probes_need_prev(d, gi);
         const isk_emitter_def *em = g->def;
         isk_status s = alloc_group(e, g);
         if (s != ISK_OK)

@@ -209,7 +209,7 @@ struct fx_group {
     /* ---- sub-emitters and trails: effect_events.c, effect_trail.c ---- */
     fx_events pending;             /* a SUB group's events, born at the end of the frame */
     /* ---- end of sub-emitters and trails ---- */
-    int keep_prev;                 /* a gate probe exists: the store keeps at least one trail point,
+    int keep_prev;                 /* a gate measures it: the store keeps at least one trail point,
                                       each particle's position at the end of the last frame */
 };
 
@@ -217,6 +217,7 @@ struct fx_group {
  * the crossings of each of the last frames of its window. */
 typedef struct fx_probe {
     isk_probe_reading r;
+    uint64_t emitters;             /* bit i: it measures emitter i (ISK_EFFECT_MAX_EMITTERS is 64) */
     uint64_t *ring;                /* GATE: per frame, forward then backward crossings */
     double *ring_t;                /* GATE: per frame, its length in seconds */
     int ring_n, ring_head, ring_used;
@@ -460,11 +461,11 @@ void isk__fx_trail_record(isk_effect *e, long stepped);
 isk_status isk__fx_trail_render(isk_effect *e, isk_canvas *c, fx_group *g, const isk_color *fill);
 /* ---- end of sub-emitters and trails ---- */
 
-/* effect_probes.c: whether the definition has a gate (every store then
+/* effect_probes.c: whether a gate measures the emitter (its store then
  * keeps its particles' last positions, fx_group.keep_prev); the probes'
  * state made or cleared to zero (create and reset); their measure after
  * frame `stepped`; their drawing; freed. */
-int isk__fx_probes_need_prev(const isk_effect_def *d);
+int isk__fx_probes_need_prev(const isk_effect_def *d, int emitter);
 isk_status isk__fx_probes_reset(isk_effect *e);
 void isk__fx_probes_measure(isk_effect *e, long stepped);
 void isk__fx_probes_render(isk_effect *e, isk_canvas *c);

@@ -1,14 +1,16 @@
 /* SPDX-License-Identifier: MIT */
 /* Probes (iskra/probes.h): gates, regions, histograms and totals,
- * measured after every frame and drawn over everything else.
+ * measured after every frame over their emitters' particles (every
+ * emitter's unless `emitters` names some) and drawn over everything else.
  *
  * Nothing here runs for an effect without probes: e->probes is NULL, no
  * store keeps a position for them, the frame loop and the render skip
  * them with one test.  A gate needs where each particle was at the start
  * of the frame: the store's trail column holds it (its newest point is
  * the particle's position at the end of the last frame, or where it was
- * born, and it follows its particle through culls), so with a gate every
- * store keeps at least one trail point (fx_group.keep_prev); only an
+ * born, and it follows its particle through culls), so the store of every
+ * emitter a gate measures keeps at least one trail point
+ * (fx_group.keep_prev); only an
  * emitter's own `trail` draws one.  The crossing test is the deflectors'
  * (sim/crossing.h).  Everything is measured on the caller's thread in
  * group then particle order: the readings are the same on any number of
@@ -27,10 +29,23 @@
  * its rates are the crossings of those frames over their own lengths. */
 #define FX_PROBE_MAX_WINDOW_FRAMES 100000
 
-int isk__fx_probes_need_prev(const isk_effect_def *d)
+_Static_assert(ISK_EFFECT_MAX_EMITTERS <= 64, "a probe's emitters are the bits of a uint64_t");
+
+/* The emitters probe q measures, as bits. */
+static uint64_t emitter_bits(const isk_probe_def *q)
+{
+    if (q->nemitters <= 0)
+        return ~(uint64_t)0;
+    uint64_t bits = 0;
+    for (int i = 0; i < q->nemitters && i < ISK_EFFECT_MAX_EMITTERS; i++)
+        bits |= (uint64_t)1 << q->emitters[i];
+    return bits;
+}
+
+int isk__fx_probes_need_prev(const isk_effect_def *d, int emitter)
 {
     for (int i = 0; i < d->nprobes; i++)
-        if (d->probes[i].kind == ISK_PROBE_GATE)
+        if (d->probes[i].kind == ISK_PROBE_GATE && (emitter_bits(&d->probes[i]) >> emitter & 1u))
             return 1;
     return 0;
 }
@@ -55,6 +70,7 @@ isk_status isk__fx_probes_reset(isk_effect *e)
         p->r.name = q->name;
         p->r.kind = q->kind;
         p->r.bins = q->kind == ISK_PROBE_HISTOGRAM ? q->bins : 0;
+        p->emitters = emitter_bits(q);
         p->ring_head = p->ring_used = 0;
         if (q->kind != ISK_PROBE_GATE || p->ring)
             continue;
@@ -86,7 +102,7 @@ static void measure_gate(isk_effect *e, fx_probe *p, const isk_probe_def *q, lon
     for (int gi = 0; gi < e->ngroups; gi++) {
         const fx_group *g = &e->groups[gi];
         const isk_particles *s = &g->store;
-        if (!s->trail || s->trail_len < 1 || stepped + g->frame_offset < 0)
+        if (!(p->emitters >> gi & 1u) || !s->trail || s->trail_len < 1 || stepped + g->frame_offset < 0)
             continue; /* a group a prewarm has not started did not move */
         isk__segment_crossings(&gate, s->count, s->x, s->y, s->trail + 2 * (size_t)s->trail_head,
                                2 * (size_t)s->trail_len, &f, &b);
@@ -122,6 +138,8 @@ static void measure_region(isk_effect *e, fx_probe *p, const isk_probe_def *q)
     size_t n = 0;
     double speed = 0, kinetic = 0;
     for (int gi = 0; gi < e->ngroups; gi++) {
+        if (!(p->emitters >> gi & 1u))
+            continue;
         const isk_particles *s = &e->groups[gi].store;
         for (size_t i = 0; i < s->count; i++)
             if (s->x[i] >= q->rect[0] && s->x[i] <= q->rect[1] && s->y[i] >= q->rect[2] && s->y[i] <= q->rect[3]) {
@@ -151,6 +169,8 @@ static void measure_histogram(isk_effect *e, fx_probe *p, const isk_probe_def *q
     r->under = r->over = r->count = 0;
     const double lo = q->range[0], hi = q->range[1], width = hi - lo;
     for (int gi = 0; gi < e->ngroups; gi++) {
+        if (!(p->emitters >> gi & 1u))
+            continue;
         const isk_particles *s = &e->groups[gi].store;
         for (size_t i = 0; i < s->count; i++) {
             const double v = value_of(s, i, q->of);
@@ -167,11 +187,33 @@ static void measure_histogram(isk_effect *e, fx_probe *p, const isk_probe_def *q
     }
 }
 
+/* The kinetic and potential energy of the emitters of `bits`, in group
+ * order: isk_effect_energy's (every bit) and the totals' numbers. */
+static void energy_of(const isk_effect *e, uint64_t bits, double *kinetic, double *potential)
+{
+    double k = 0, u = 0;
+    for (int g = 0; g < e->ngroups; g++) {
+        if (!(bits >> g & 1u))
+            continue;
+        const isk_particles *p = &e->groups[g].store;
+        for (size_t i = 0; i < p->count; i++)
+            k += 0.5 * p->m[i] * (p->vx[i] * p->vx[i] + p->vy[i] * p->vy[i]);
+        double ug;
+        if (isk_forces_potential_energy(&e->groups[g].forces, p->count, p->x, p->y, p->m, &ug) != ISK_OK)
+            ug = NAN; /* a law without an energy: no number rather than a wrong one */
+        u += ug;
+    }
+    *kinetic = k;
+    *potential = u;
+}
+
 static void measure_totals(isk_effect *e, fx_probe *p)
 {
     double px = 0, py = 0;
     size_t n = 0;
     for (int gi = 0; gi < e->ngroups; gi++) {
+        if (!(p->emitters >> gi & 1u))
+            continue;
         const isk_particles *s = &e->groups[gi].store;
         for (size_t i = 0; i < s->count; i++) {
             px += s->m[i] * s->vx[i];
@@ -182,7 +224,7 @@ static void measure_totals(isk_effect *e, fx_probe *p)
     p->r.count = n;
     p->r.px = px;
     p->r.py = py;
-    isk_effect_energy(e, &p->r.kinetic, &p->r.potential);
+    energy_of(e, p->emitters, &p->r.kinetic, &p->r.potential);
 }
 
 void isk__fx_probes_measure(isk_effect *e, long stepped)
@@ -224,18 +266,7 @@ isk_status isk_effect_energy(const isk_effect *e, double *kinetic, double *poten
 {
     if (!e || !kinetic || !potential)
         return ISK_ERR_NULL;
-    double k = 0, u = 0;
-    for (int g = 0; g < e->ngroups; g++) {
-        const isk_particles *p = &e->groups[g].store;
-        for (size_t i = 0; i < p->count; i++)
-            k += 0.5 * p->m[i] * (p->vx[i] * p->vx[i] + p->vy[i] * p->vy[i]);
-        double ug;
-        if (isk_forces_potential_energy(&e->groups[g].forces, p->count, p->x, p->y, p->m, &ug) != ISK_OK)
-            ug = NAN; /* a law without an energy: no number rather than a wrong one */
-        u += ug;
-    }
-    *kinetic = k;
-    *potential = u;
+    energy_of(e, ~(uint64_t)0, kinetic, potential);
     return ISK_OK;
 }
 
@@ -369,6 +400,8 @@ void isk__fx_probes_describe(const isk_effect *e, FILE *out)
             fprintf(out, ", x %g..%g, y %g..%g", q->rect[0], q->rect[1], q->rect[2], q->rect[3]);
         else if (q->kind == ISK_PROBE_HISTOGRAM)
             fprintf(out, " of %s, %d bins over %g..%g", isk_probe_of_names[q->of], q->bins, q->range[0], q->range[1]);
+        for (int k = 0; k < q->nemitters; k++)
+            fprintf(out, "%s%s", k ? ", " : "; emitters ", d->emitters[q->emitters[k]].name);
         fprintf(out, "%s\n", q->show ? "" : ", not drawn");
     }
 }

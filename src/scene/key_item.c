@@ -95,6 +95,13 @@ int isk__fx_item_kind(const isk_effect_def *d, isk_section_kind s, int i)
     }
 }
 
+int isk__fx_refs_cap(isk_section_kind refers)
+{
+    return refers == ISK_SECTION_FORCE     ? ISK_EFFECT_MAX_FORCES
+           : refers == ISK_SECTION_EMITTER ? ISK_EFFECT_MAX_EMITTERS
+                                           : ISK_EFFECT_MAX_DEFLECTORS;
+}
+
 int isk__fx_key_applies(const isk_key *k, int kind)
 {
     return kind < 0 || k->applies == 0 || (kind < 32 && (k->applies >> kind & 1u));

@@ -590,6 +590,9 @@ static const isk_key keys[] = {
     {PROBE("range"), .type = ISK_KEY_PAIR, PRB(range), .applies = P_HIST, .required = P_HIST,
      IN(-1e9, 1e9), .dflt = "0, 1", .create_only = 1,
      .meaning = "lo, hi (lo < hi): the values the bins cover; those outside count as under or over"},
+    {PROBE("emitters"), .type = ISK_KEY_REFS, PRB(emitters), .aux = offsetof(isk_probe_def, nemitters),
+     .refers = ISK_SECTION_EMITTER, .dflt = "all", .create_only = 1,
+     .meaning = "the emitters whose particles it measures"},
     {PROBE("show"), .type = ISK_KEY_BOOL, PRB(show), .dflt = "true", .create_only = 1,
      .meaning = "draw it over the particles: a gate as its line and counts, a region as its outline, a "
                 "histogram as bars at the bottom left"},
