@@ -44,7 +44,8 @@
  *     spin (only where an angle is seen and spins) -> ageing; then the
  *     local-space carry -> births (streams) -> hits (on_hit) -> culling (its
  *     deaths first as on_death events); after every emitter stepped: the
- *     sub-emitters' births, then the trails' newest points
+ *     sub-emitters' births, the probes' measures (only with probes,
+ *     iskra/probes.h), then the trails' newest points
  * and its draw routine: trails (only with trail) -> colour/alpha/size over
  * life (only with gradients) -> draw (a texture or a streak: the look
  * part of isk_emitter_def).  A force no emitter references, a
