@@ -17,6 +17,7 @@
 #include "iskra/probes.h"
 #include "iskra/scene.h"
 #include "refimg.h"
+#include "scene/effect_internal.h" /* a group's store and keep_prev, the effect's probe state */
 #include "scene_text.h"
 
 #include "../tools/iskra/play_energy.c" /* the simulator's energy chart's numbers */
@@ -261,6 +262,37 @@ Test(probes, emitters_choose_what_is_measured)
     cr_assert_eq(isk_effect_energy(fx, &k, &u), ISK_OK);
     cr_assert(fabs(ta.kinetic + tb.kinetic - k) <= 1e-12 * k);
     isk_effect_destroy(fx);
+}
+
+/* Without probes nothing of them exists: for every built-in scene no probe
+ * state, no store keeps a position it would not keep for its own trail,
+ * describe says nothing of probes, and the scene saves without a [probe]. */
+Test(probes, a_scene_without_probes_has_nothing_of_them)
+{
+    for (int i = 0; i < isk_scene_builtin_count(); i++) {
+        const char *name = isk_scene_builtin_name(i);
+        isk_effect_def d;
+        isk_error err;
+        cr_assert_eq(isk_scene_load(&d, name, &err), ISK_OK, "%s", err.message);
+        char *saved;
+        cr_assert_eq(isk_scene_write(&d, &saved, &err), ISK_OK, "%s: %s", name, err.message);
+        cr_assert_null(strstr(saved, "[probe"), "%s", name);
+        free(saved);
+        d.threads = 1;
+        isk_effect *fx = scene_open_def(&d);
+        cr_assert_eq(isk_effect_step(fx), ISK_OK, "%s", name);
+        cr_assert_eq(isk_effect_probe_count(fx), 0, "%s", name);
+        cr_assert_null(fx->probes, "%s", name);
+        for (int g = 0; g < fx->ngroups; g++) {
+            cr_assert_eq(fx->groups[g].keep_prev, 0, "%s", name);
+            cr_assert_eq(fx->groups[g].store.trail != NULL, fx->groups[g].def->look.trail > 0, "%s emitter %d", name,
+                         g);
+        }
+        char *lists = lists_of(fx);
+        cr_assert_null(strstr(lists, "probe"), "%s:\n%s", name, lists);
+        free(lists);
+        isk_effect_destroy(fx);
+    }
 }
 
 /* ---- scene files ---------------------------------------------------------------- */
