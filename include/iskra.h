@@ -21,6 +21,7 @@
  *   iskra/shape.h    spawn shapes, velocity generators
  *   iskra/timestep.h fixed-step accumulator  iskra/effect.h  whole effects (stage lists)
  *   iskra/tasks.h    an effect's work on your own job system
+ *   iskra/probes.h   gates, regions, histograms, totals: an effect's measuring tools
  *   iskra/scene.h    INI scene files      iskra/presets.h  fire, smoke, sparks, ...
  *   iskra/keys.h     every scene key: type, range, default, meaning (one table)
  *   iskra/chart.h    line charts (work-precision diagrams, log/linear axes)
@@ -87,6 +88,7 @@
 #include "iskra/timestep.h"
 #include "iskra/tasks.h"
 #include "iskra/effect.h"
+#include "iskra/probes.h"
 #include "iskra/scene.h"
 #include "iskra/snapshot.h"
 #include "iskra/timeline.h"

@@ -160,6 +160,8 @@ Test(key_meanings, every_key_naming_an_item_suggests_the_one_meant)
                 for (kind = 0; !(k->applies >> kind & 1u); kind++)
                     ;
             snprintf(user, sizeof user, "[emitter user]\nsource = %s\n", isk_source_names[kind]);
+        } else if (k->section == ISK_SECTION_PROBE) {
+            snprintf(user, sizeof user, "[probe user]\nkind = totals\n");
         } else {
             cr_assert(!isk_section_named(k->section), "[%s] %s: teach this test its section",
                       isk_section_name(k->section), k->name);

@@ -30,6 +30,7 @@ static size_t item_size(isk_section_kind s)
     case ISK_SECTION_EMITTER: return sizeof(isk_emitter_def);
     case ISK_SECTION_DRAWING: return sizeof(isk_drawing_def);
     case ISK_SECTION_CLICK: return sizeof(isk_click_def);
+    case ISK_SECTION_PROBE: return sizeof(isk_probe_def);
     default: return 0;
     }
 }
@@ -83,6 +84,7 @@ static void *fresh_item(isk_effect_def *d, isk_section_kind s)
     }
     case ISK_SECTION_EMITTER: isk_effect_def_add_emitter(d, "e"); break;
     case ISK_SECTION_DRAWING: isk_effect_def_add_drawing(d, "w", ISK_DRAWING_POLYLINE); break;
+    case ISK_SECTION_PROBE: isk_effect_def_add_probe(d, "p", ISK_PROBE_GATE); break;
     default: break;
     }
     return isk__fx_section_item(d, s, 0);

@@ -414,7 +414,7 @@ Test(scene_errors, unknown_sections_and_keys)
     load_fails("[scene]\nwidth = 400\n\n[emiter sparks]\n",
                "t.ini:4: unknown section [emiter sparks]; did you mean [emitter sparks]?");
     load_fails("[physics]\n", "t.ini:1: unknown section [physics]; sections are [scene], [view], [force NAME], "
-                              "[deflector NAME], [bounds], [emitter NAME], [drawing NAME] and [click]");
+                              "[deflector NAME], [bounds], [emitter NAME], [drawing NAME], [click] and [probe NAME]");
     load_fails("[scene]\ndt = 1/60\n\n[emitter smoke]\nsource = stream\nrat = 20\n",
                "t.ini:6: [emitter smoke] unknown key 'rat'; did you mean 'rate'?");
     load_fails("[scene]\nxmin = 0\n", "t.ini:2: [scene] unknown key 'xmin' (it belongs in a [view] section)");

@@ -45,7 +45,8 @@
  *     local-space carry -> hits (on_hit) -> culling (its deaths first as
  *     on_death events) -> births (streams: after the cull, so a full pool
  *     reads isk_effect_particle_count == capacity); after every emitter stepped: the
- *     sub-emitters' births, then the trails' newest points
+ *     sub-emitters' births, the probes' measures (only with probes,
+ *     iskra/probes.h), then the trails' newest points
  * and its draw routine: trails (only with trail) -> colour/alpha/size over
  * life (only with gradients) -> draw (a texture or a streak: the look
  * part of isk_emitter_def).  A force no emitter references, a
@@ -92,6 +93,7 @@ extern "C" {
 #define ISK_EFFECT_MAX_EMITTERS 64
 #define ISK_EFFECT_MAX_DRAWINGS 64
 #define ISK_EFFECT_MAX_TEXTURES 64
+#define ISK_EFFECT_MAX_PROBES 16
 /* Per emitter: the store's own bound (2^28); what memory allows is the
  * memory budget's to say (max_memory, isk_effect_def_memory). */
 #define ISK_EFFECT_MAX_PARTICLES 268435456u
@@ -475,6 +477,45 @@ typedef struct isk_drawing_def {
     int hairline;              /* POLYLINE: the browser's hairline (isk_stroke_polyline_hairline) */
 } isk_drawing_def;
 
+/* Probes: measuring tools for lessons and tests (iskra/probes.h reads
+ * them; docs/scene-format.md, "Probes").  Each is measured after every
+ * frame over the particles of its emitters; a definition without probes
+ * runs, draws and describes exactly as if probes did not exist. */
+typedef enum isk_probe_kind {
+    ISK_PROBE_GATE = 0,    /* a segment: crossings in each direction, per second over `window` */
+    ISK_PROBE_REGION,      /* a rectangle: count, mean speed, kinetic energy inside */
+    ISK_PROBE_HISTOGRAM,   /* of speed, angle or age: `bins` counts over `range` */
+    ISK_PROBE_TOTALS,      /* the scene's momentum, kinetic and potential energy */
+    ISK_PROBE_KIND_COUNT
+} isk_probe_kind;
+
+typedef enum isk_probe_of {
+    ISK_PROBE_OF_SPEED = 0, /* |v|, units/s */
+    ISK_PROBE_OF_ANGLE,     /* atan2(vy, vx) in degrees, -180..180 */
+    ISK_PROBE_OF_AGE,       /* seconds lived */
+    ISK_PROBE_OF_COUNT
+} isk_probe_of;
+
+#define ISK_PROBE_MAX_BINS 64
+
+typedef struct isk_probe_def {
+    char name[ISK_NAME_MAX];
+    int line;
+    isk_probe_kind kind;
+    double segment[4];         /* GATE: x0, y0, x1, y1 (world); forward crossings go from the left of
+                                  (x0, y0) -> (x1, y1) to its right */
+    double window;             /* GATE: the rates count the crossings of the last `window` seconds */
+    double rect[4];            /* REGION: xmin, xmax, ymin, ymax (world) */
+    isk_probe_of of;           /* HISTOGRAM */
+    int bins;                  /* HISTOGRAM: 1..ISK_PROBE_MAX_BINS */
+    double range[2];           /* HISTOGRAM: lo < hi; values outside are counted as under / over */
+    int show;                  /* 1 (default): drawn over the particles */
+    isk_color color;           /* of its drawing */
+    int emitters[ISK_EFFECT_MAX_EMITTERS]; /* the emitters it measures (indices into
+                                  isk_effect_def.emitters); nemitters 0: every emitter */
+    int nemitters;
+} isk_probe_def;
+
 typedef enum isk_view_def_kind { ISK_VIEWDEF_WINDOW = 0, ISK_VIEWDEF_CAMERA, ISK_VIEWDEF_COUNT } isk_view_def_kind;
 
 /* What a click does (isk_effect_click; `iskra play` calls it for a left
@@ -508,6 +549,8 @@ extern const char *const isk_drawing_kind_names[ISK_DRAWING_KIND_COUNT]; /* poly
 extern const char *const isk_units_names[2];                             /* world pixels (isk_drawing_def.pixels) */
 extern const char *const isk_view_kind_names[ISK_VIEWDEF_COUNT];         /* window camera */
 extern const char *const isk_align_names[ISK_ALIGN_COUNT];               /* none velocity */
+extern const char *const isk_probe_kind_names[ISK_PROBE_KIND_COUNT];     /* gate region histogram totals */
+extern const char *const isk_probe_of_names[ISK_PROBE_OF_COUNT];         /* speed angle age */
 
 typedef struct isk_effect_def {
     int width, height;         /* canvas, default 600x600 */
@@ -530,6 +573,7 @@ typedef struct isk_effect_def {
     isk_bounds bounds;         /* sides == 0: no walls */
     isk_emitter_def *emitters;     int nemitters;
     isk_drawing_def *drawings;     int ndrawings;
+    isk_probe_def *probes;         int nprobes;     /* measured after every frame (iskra/probes.h) */
     isk_texture_image *textures;   int ntextures;  /* not scene keys: the images the emitters'
                                                       `texture` names, read by the loader */
     isk_click_def click;
@@ -570,6 +614,7 @@ int isk_effect_def_add_force(isk_effect_def *d, const char *name, isk_force_kind
 int isk_effect_def_add_deflector(isk_effect_def *d, const char *name, isk_deflector seg);
 isk_emitter_def *isk_effect_def_add_emitter(isk_effect_def *d, const char *name);
 isk_drawing_def *isk_effect_def_add_drawing(isk_effect_def *d, const char *name, isk_drawing_kind kind);
+isk_probe_def *isk_effect_def_add_probe(isk_effect_def *d, const char *name, isk_probe_kind kind);
 /* The most memory the effect can take, in bytes: every emitter's pool full
  * (its capacity, the store's growth included, trails too), its scratch and
  * sprites, every image of the definition twice (its pixels and the

@@ -22,12 +22,12 @@
  * A row's `offset` is the field's offsetof in the section's item struct:
  * isk_effect_def for [scene] and [view], isk_force_def, isk_deflector_def,
  * isk_bounds, isk_emitter_def (a field of one of its parts:
- * offsetof(isk_emitter_def, born.rate) for `rate`), isk_drawing_def and
- * isk_click_def.
+ * offsetof(isk_emitter_def, born.rate) for `rate`), isk_drawing_def,
+ * isk_click_def and isk_probe_def.
  *
  * Kinds: some sections have a kind that decides which keys apply (a
- * force's `kind`, an emitter's `source`, a drawing's `kind`, the walls'
- * `mode`, the view's window or camera).  `applies`, `required` and `live`
+ * force's `kind`, an emitter's `source`, a drawing's or a probe's `kind`,
+ * the walls' `mode`, the view's window or camera).  `applies`, `required` and `live`
  * are bit sets over that kind's values (bit k: value k); 0 in `applies`
  * means every kind.
  */
@@ -49,6 +49,7 @@ typedef enum isk_section_kind {
     ISK_SECTION_EMITTER,   /* [emitter NAME] */
     ISK_SECTION_DRAWING,   /* [drawing NAME] */
     ISK_SECTION_CLICK,     /* [click] */
+    ISK_SECTION_PROBE,     /* [probe NAME] */
     ISK_SECTION_COUNT
 } isk_section_kind;
 
@@ -127,7 +128,7 @@ const isk_key *isk_key_find(isk_section_kind section, const char *name); /* NULL
 
 /* "scene", "view", "force", ... ; NULL when out of range. */
 const char *isk_section_name(isk_section_kind section);
-/* 1 for sections written [type NAME] (force, deflector, emitter, drawing). */
+/* 1 for sections written [type NAME] (force, deflector, emitter, drawing, probe). */
 int isk_section_named(isk_section_kind section);
 /* The section type of a name ("emitter" -> ISK_SECTION_EMITTER); -1 if none. */
 int isk_section_find(const char *type);

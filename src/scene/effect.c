@@ -110,6 +110,7 @@ static isk_status build_groups(isk_effect *e, isk_error *err)
         memset(g, 0, sizeof *g);
         g->index = gi;
         g->def = &d->emitters[gi];
+        g->keep_prev = isk__fx_probes_need_prev(d, gi);
         const isk_emitter_def *em = g->def;
         isk_status s = alloc_group(e, g);
         if (s != ISK_OK)
@@ -125,6 +126,8 @@ static isk_status build_groups(isk_effect *e, isk_error *err)
     if (ws != ISK_OK)
         return ws;
     isk__fx_start_clocks(e, d->dt / d->speed_divisor);
+    if (isk__fx_probes_reset(e) != ISK_OK)
+        return isk_error_set(err, ISK_ERR_NOMEM, "probes: out of memory");
     return ISK_OK;
 }
 
@@ -275,6 +278,7 @@ void isk_effect_destroy(isk_effect *e)
     isk_sprite_cache_destroy(e->sprites);
     isk_texture_cache_destroy(e->textures);
     isk__fx_bins_free(&e->bins);
+    isk__fx_probes_free(e);
     isk__workers_free(&e->workers);
     isk_effect_def_free(&e->def);
     free(e);
@@ -351,6 +355,7 @@ void isk_effect_describe(const isk_effect *e, FILE *out)
         fprintf(out, ", %s, %s%s\n", isk_blend_names[g->blend], isk_units_names[g->pixels ? 1 : 0],
                 g->pixels ? "" : " units");
     }
+    isk__fx_probes_describe(e, out);
     isk__fx_describe_settings(d, out);
 }
 

@@ -61,7 +61,7 @@ static void memory_parts(const isk_effect_def *d, fx_need_fn need, void *ctx)
     need(ctx, (double)(sizeof(isk_effect_def) + ((size_t)1 << 20)), "the effect's tables");
     for (int i = 0; d->emitters && i < d->nemitters; i++) {
         snprintf(what, sizeof what, "emitter '%.*s' (its pool full)", ISK_NAME_MAX - 1, d->emitters[i].name);
-        need(ctx, (double)isk__fx_emitter_memory(&d->emitters[i]), what);
+        need(ctx, (double)isk__fx_emitter_memory(&d->emitters[i], isk__fx_probes_need_prev(d, i)), what);
     }
     for (int i = 0; d->textures && i < d->ntextures && i < ISK_EFFECT_MAX_TEXTURES; i++) {
         const isk_canvas *c = &d->textures[i].pixels;

@@ -238,6 +238,21 @@ static isk_status check_drawing(ctx *c)
     return ISK_OK;
 }
 
+/* What spans a probe's keys: a gate's end points differ, a region and a
+ * histogram's range are not empty. */
+static isk_status check_probe(ctx *c)
+{
+    const isk_probe_def *q = &c->d->probes[c->index];
+    if (q->kind == ISK_PROBE_GATE && q->segment[0] == q->segment[2] && q->segment[1] == q->segment[3])
+        return bad_key(c, "segment", "the two end points are the same point");
+    if (q->kind == ISK_PROBE_REGION && !(q->rect[0] < q->rect[1] && q->rect[2] < q->rect[3]))
+        return bad_key(c, "rect", "needs xmin < xmax and ymin < ymax (got %.15g, %.15g, %.15g, %.15g)", q->rect[0],
+                       q->rect[1], q->rect[2], q->rect[3]);
+    if (q->kind == ISK_PROBE_HISTOGRAM && !(q->range[0] < q->range[1]))
+        return bad_key(c, "range", "needs lo < hi (got %.15g, %.15g)", q->range[0], q->range[1]);
+    return ISK_OK;
+}
+
 static isk_status check_click(ctx *c)
 {
     const isk_effect_def *d = c->d;
@@ -260,7 +275,7 @@ static const section_check section_checks[ISK_SECTION_COUNT] = {
     [ISK_SECTION_VIEW] = check_view,       [ISK_SECTION_FORCE] = check_force,
     [ISK_SECTION_DEFLECTOR] = check_deflector, [ISK_SECTION_BOUNDS] = check_bounds,
     [ISK_SECTION_EMITTER] = check_emitter, [ISK_SECTION_DRAWING] = check_drawing,
-    [ISK_SECTION_CLICK] = check_click,
+    [ISK_SECTION_CLICK] = check_click,     [ISK_SECTION_PROBE] = check_probe,
 };
 
 /* ---- the whole item, the whole definition ---------------------------------------- */
@@ -340,14 +355,16 @@ isk_status isk__fx_check_def(const isk_effect_def *d, fx_report *r)
 {
     if (d->nforces < 0 || d->nforces > ISK_EFFECT_MAX_FORCES || d->nemitters < 0 ||
         d->nemitters > ISK_EFFECT_MAX_EMITTERS || d->ndeflectors < 0 || d->ndeflectors > ISK_EFFECT_MAX_DEFLECTORS ||
-        d->ndrawings < 0 || d->ndrawings > ISK_EFFECT_MAX_DRAWINGS) {
+        d->ndrawings < 0 || d->ndrawings > ISK_EFFECT_MAX_DRAWINGS || d->nprobes < 0 ||
+        d->nprobes > ISK_EFFECT_MAX_PROBES) {
         char msg[160];
-        snprintf(msg, sizeof msg, "at most %d forces, %d deflectors, %d emitters and %d drawings",
-                 ISK_EFFECT_MAX_FORCES, ISK_EFFECT_MAX_DEFLECTORS, ISK_EFFECT_MAX_EMITTERS, ISK_EFFECT_MAX_DRAWINGS);
+        snprintf(msg, sizeof msg, "at most %d forces, %d deflectors, %d emitters, %d drawings and %d probes",
+                 ISK_EFFECT_MAX_FORCES, ISK_EFFECT_MAX_DEFLECTORS, ISK_EFFECT_MAX_EMITTERS, ISK_EFFECT_MAX_DRAWINGS,
+                 ISK_EFFECT_MAX_PROBES);
         return structure_fails(d, r, ISK_ERR_SIZE, msg);
     }
     if ((d->nforces && !d->forces) || (d->ndeflectors && !d->deflectors) || (d->nemitters && !d->emitters) ||
-        (d->ndrawings && !d->drawings))
+        (d->ndrawings && !d->drawings) || (d->nprobes && !d->probes))
         return structure_fails(d, r, ISK_ERR_NULL, "a count is set but its array is NULL");
     char why[sizeof(((isk_error *)0)->message)];
     isk_status ts = isk__fx_def_textures_check(d, why, sizeof why);

@@ -36,6 +36,7 @@ void isk_effect_def_free(isk_effect_def *d)
     free(d->deflectors);
     free(d->emitters);
     free(d->drawings);
+    free(d->probes);
     memset(d, 0, sizeof *d);
 }
 
@@ -99,6 +100,19 @@ isk_emitter_def *isk_effect_def_add_emitter(isk_effect_def *d, const char *name)
     return e;
 }
 
+isk_probe_def *isk_effect_def_add_probe(isk_effect_def *d, const char *name, isk_probe_kind kind)
+{
+    if (!d || (unsigned)kind >= ISK_PROBE_KIND_COUNT)
+        return NULL;
+    isk_probe_def *q = grow((void **)&d->probes, &d->nprobes, ISK_EFFECT_MAX_PROBES, sizeof *q);
+    if (!q)
+        return NULL;
+    isk__fx_section_defaults(ISK_SECTION_PROBE, q);
+    set_name(q->name, name);
+    q->kind = kind;
+    return q;
+}
+
 isk_drawing_def *isk_effect_def_add_drawing(isk_effect_def *d, const char *name, isk_drawing_kind kind)
 {
     if (!d || (unsigned)kind >= ISK_DRAWING_KIND_COUNT)
@@ -117,14 +131,15 @@ int isk__fx_emitter_oscillates(const isk_emitter_def *em)
     return em->motion.osc_amplitude_max > 0 && em->motion.osc_omega_max != 0;
 }
 
-/* What one emitter's pool takes at its fullest. */
-size_t isk__fx_emitter_memory(const isk_emitter_def *e)
+/* What one emitter's pool takes at its fullest (keep_prev: a gate probe
+ * makes it keep one trail point). */
+size_t isk__fx_emitter_memory(const isk_emitter_def *e, int keep_prev)
 {
+    const int points = e->look.trail > 0 && e->look.trail <= ISK_TRAIL_MAX ? e->look.trail : keep_prev ? 1 : 0;
     unsigned flags = (isk__fx_emitter_oscillates(e) ? ISK_PARTICLES_OSC : 0) | isk__fx_looks_columns(e);
     /* sub-emitters and trails: the hit and trail columns, a sub-emitter's waiting events */
-    flags |= (e->events.on_hit >= 0 ? ISK_PARTICLES_HIT : 0) | (e->look.trail > 0 ? ISK_PARTICLES_TRAIL : 0);
-    size_t b = isk_particles_bytes_trail(e->born.capacity, flags,
-                                         e->look.trail > 0 && e->look.trail <= ISK_TRAIL_MAX ? e->look.trail : 0);
+    flags |= (e->events.on_hit >= 0 ? ISK_PARTICLES_HIT : 0) | (points > 0 ? ISK_PARTICLES_TRAIL : 0);
+    size_t b = isk_particles_bytes_trail(e->born.capacity, flags, points);
     if (b && e->born.source == ISK_SOURCE_SUB) {
         size_t q = e->born.capacity <= SIZE_MAX / sizeof(fx_event) ? e->born.capacity * sizeof(fx_event) : SIZE_MAX;
         b = q > SIZE_MAX - b ? 0 : b + q;
@@ -213,6 +228,7 @@ isk_status isk__fx_def_copy(isk_effect_def *dst, const isk_effect_def *src)
     dst->deflectors = dup_array(src->deflectors, (size_t)src->ndeflectors, sizeof *src->deflectors, &ok);
     dst->emitters = dup_array(src->emitters, (size_t)src->nemitters, sizeof *src->emitters, &ok);
     dst->drawings = dup_array(src->drawings, (size_t)src->ndrawings, sizeof *src->drawings, &ok);
+    dst->probes = dup_array(src->probes, (size_t)src->nprobes, sizeof *src->probes, &ok);
     /* The drawings' points are copied one by one; until then (and if the
      * drawings themselves could not be copied) no copy shares the source's. */
     for (int i = 0; dst->drawings && i < dst->ndrawings; i++)
@@ -225,6 +241,8 @@ isk_status isk__fx_def_copy(isk_effect_def *dst, const isk_effect_def *src)
     if (!ok) {
         if (!dst->drawings)
             dst->ndrawings = 0;
+        if (!dst->probes)
+            dst->nprobes = 0;
         isk_effect_def_free(dst);
         return ISK_ERR_NOMEM;
     }

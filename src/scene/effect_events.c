@@ -48,8 +48,10 @@ isk_status isk__fx_events_columns(fx_group *g)
     isk_status s = ISK_OK;
     if (em->events.on_hit >= 0 && !p->hit)
         s = isk_particles_add_columns(p, ISK_PARTICLES_HIT);
-    if (s == ISK_OK && em->look.trail != p->trail_len)
-        s = isk_particles_set_trail(p, em->look.trail);
+    /* a gate probe needs the last positions: one trail point at least */
+    const int points = em->look.trail > 0 ? em->look.trail : g->keep_prev;
+    if (s == ISK_OK && points != p->trail_len)
+        s = isk_particles_set_trail(p, points);
     return s;
 }
 

@@ -5,7 +5,7 @@
  * frame-start stages, then `substeps` times the block runner over its
  * store (src/sim/stage.h) followed by its substep-end stages (births, the
  * cull).  Then, after every group: the children of sub-emitters' events,
- * the trails' newest points.  The block runner is the one isk_system_step
+ * the probes' measures, the trails' newest points.  The block runner is the one isk_system_step
  * uses, so a thesis scene and the C example that drives an isk_system give
  * identical bits by construction.  A prewarm runs the same frames before
  * frame 0.  The frame's entry points are here too: step, render, run and
@@ -181,6 +181,8 @@ static isk_status advance(isk_effect *e)
     isk_status se = isk__fx_events_release(e);
     if (se != ISK_OK)
         return se;
+    if (e->probes) /* before the trails' record: a gate reads where each particle was */
+        isk__fx_probes_measure(e, stepped);
     isk__fx_trail_record(e, stepped);
     if (d->click.at_start && d->click.after_frames > 0 && e->frame == d->click.after_frames)
         return isk__fx_click(e, d->click.x, d->click.y);

@@ -32,6 +32,7 @@
  *   effect_retain.c   a group at rest drawn from recorded blends (fast path)
  *   effect_trail.c    trails: recorded after each frame, drawn first
  *   effect_def.c      building and copying definitions
+ *   effect_probes.c   probes: measured after each frame, drawn last, read
  */
 #ifndef ISKRA_SCENE_EFFECT_INTERNAL_H
 #define ISKRA_SCENE_EFFECT_INTERNAL_H
@@ -39,6 +40,7 @@
 #include <stdio.h>
 
 #include "iskra/effect.h"
+#include "iskra/probes.h"
 #include "iskra/gradient.h"
 #include "iskra/sinlut.h"
 #include "sim/field.h"
@@ -226,7 +228,19 @@ struct fx_group {
     /* ---- sub-emitters and trails: effect_events.c, effect_trail.c ---- */
     fx_events pending;             /* a SUB group's events, born at the end of the frame */
     /* ---- end of sub-emitters and trails ---- */
+    int keep_prev;                 /* a gate measures it: the store keeps at least one trail point,
+                                      each particle's position at the end of the last frame */
 };
+
+/* A probe's state (effect_probes.c): its latest reading and, for a gate,
+ * the crossings of each of the last frames of its window. */
+typedef struct fx_probe {
+    isk_probe_reading r;
+    uint64_t emitters;             /* bit i: it measures emitter i (ISK_EFFECT_MAX_EMITTERS is 64) */
+    uint64_t *ring;                /* GATE: per frame, forward then backward crossings */
+    double *ring_t;                /* GATE: per frame, its length in seconds */
+    int ring_n, ring_head, ring_used;
+} fx_probe;
 
 struct isk_effect {
     isk_effect_def def;            /* deep copy, owned */
@@ -260,6 +274,7 @@ struct isk_effect {
     isk_sprite_cache *sprites;
     fx_bins bins;
     isk_texture_cache *textures;   /* made at the first emitter with a texture (effect_looks.c) */
+    fx_probe *probes;              /* one per def.probes (NULL without probes: nothing is measured) */
 };
 
 /* effect_live.c: the group of "emitter NAME" (messages start with fn);
@@ -283,8 +298,9 @@ isk_status isk__fx_check(const isk_effect_def *d, isk_error *err);
 isk_status isk__fx_def_copy(isk_effect_def *dst, const isk_effect_def *src);
 /* pot.P from the force's exponent and law. */
 void isk__fx_force_sync(isk_force_def *f);
-/* What one emitter's pool takes at its fullest (SIZE_MAX: more than can be). */
-size_t isk__fx_emitter_memory(const isk_emitter_def *e);
+/* What one emitter's pool takes at its fullest (SIZE_MAX: more than can be);
+ * keep_prev: the definition has a gate probe (one trail point at least). */
+size_t isk__fx_emitter_memory(const isk_emitter_def *e, int keep_prev);
 /* The emitter's particles sway (they need the store's oscillation columns). */
 int isk__fx_emitter_oscillates(const isk_emitter_def *em);
 
@@ -491,6 +507,17 @@ void isk__fx_trail_record(isk_effect *e, long stepped);
  * fill as isk__fx_draw_bands'. */
 isk_status isk__fx_trail_render(isk_effect *e, isk_canvas *c, fx_group *g, const isk_color *fill);
 /* ---- end of sub-emitters and trails ---- */
+
+/* effect_probes.c: whether a gate measures the emitter (its store then
+ * keeps its particles' last positions, fx_group.keep_prev); the probes'
+ * state made or cleared to zero (create and reset); their measure after
+ * frame `stepped`; their drawing; freed. */
+int isk__fx_probes_need_prev(const isk_effect_def *d, int emitter);
+isk_status isk__fx_probes_reset(isk_effect *e);
+void isk__fx_probes_measure(isk_effect *e, long stepped);
+void isk__fx_probes_render(isk_effect *e, isk_canvas *c);
+void isk__fx_probes_describe(const isk_effect *e, FILE *out);
+void isk__fx_probes_free(isk_effect *e);
 
 /* effect_retain.c: a group at rest drawn from its recorded blends.
  *   rt = isk__fx_retain_begin(e, c, g, threads)  NULL: draw as usual; else

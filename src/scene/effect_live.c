@@ -243,6 +243,7 @@ isk_status isk_effect_set(isk_effect *e, const char *section, const char *key, c
         isk_deflector_def deflector;
         isk_emitter_def emitter;
         isk_drawing_def drawing;
+        isk_probe_def probe;
     } old, copy;
     size_t size = w.section == ISK_SECTION_SCENE || w.section == ISK_SECTION_VIEW ? sizeof(isk_effect_def)
                   : w.section == ISK_SECTION_FORCE                                ? sizeof(isk_force_def)
@@ -250,6 +251,7 @@ isk_status isk_effect_set(isk_effect *e, const char *section, const char *key, c
                   : w.section == ISK_SECTION_BOUNDS                               ? sizeof(isk_bounds)
                   : w.section == ISK_SECTION_EMITTER                              ? sizeof(isk_emitter_def)
                   : w.section == ISK_SECTION_DRAWING                              ? sizeof(isk_drawing_def)
+                  : w.section == ISK_SECTION_PROBE                                ? sizeof(isk_probe_def)
                                                                                   : sizeof(isk_click_def);
     memcpy(&old, item, size);
     memcpy(&copy, item, size);

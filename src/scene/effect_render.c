@@ -2,7 +2,7 @@
 /* Drawing an effect: static drawings and the deflectors shown, then each
  * emitter in draw order (its trails, then its particles, each through the
  * band scheduler), then the potentials (as the thesis simulator draws
- * them). */
+ * them), then the probes (effect_probes.c). */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -108,7 +108,8 @@ static int any_deflector_shown(const isk_effect_def *d)
 static isk_status render_group(isk_effect *e, isk_canvas *c, fx_group *g, const isk_color *fill)
 {
     fx_band whole = isk__fx_band_whole(c, g);
-    if (g->store.trail) { /* trails under the particles (effect_trail.c) */
+    if (g->store.trail && g->def->look.trail > 0) { /* trails under the particles (effect_trail.c); a
+                                                      gate's last positions alone draw nothing */
         isk_status s = isk__fx_trail_render(e, c, g, fill);
         if (s != ISK_OK)
             return s;
@@ -159,5 +160,7 @@ isk_status isk__fx_render(isk_effect *e, isk_canvas *c)
         snprintf(id, sizeof id, "%d", pot->id);
         isk_world_text(c, &e->view, pot->r.x - 0.04, pot->r.y - 0.06, id, 1, ISK_WHITE, ISK_BLEND_OVER);
     }
+    if (e->probes) /* over everything: they measure what is drawn */
+        isk__fx_probes_render(e, c);
     return ISK_OK;
 }

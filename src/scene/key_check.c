@@ -135,7 +135,7 @@ isk_status isk__fx_key_check(const isk_key *k, const void *item, const isk_effec
     case ISK_KEY_REFS: {
         const int *idx = FX_AT_C(int, item, k->offset);
         int count = *FX_AT_C(int, item, k->aux);
-        const int cap = k->refers == ISK_SECTION_FORCE ? ISK_EFFECT_MAX_FORCES : ISK_EFFECT_MAX_DEFLECTORS;
+        const int cap = isk__fx_refs_cap(k->refers);
         int total = d ? isk__fx_section_items(d, k->refers) : 0;
         if (count < 0 || count > cap) {
             snprintf(why, n, "0..%d references expected, got %d", cap, count);

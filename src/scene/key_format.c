@@ -176,8 +176,8 @@ isk_status isk__fx_key_format(const isk_key *k, const void *item, const isk_effe
     case ISK_KEY_REFS: {
         const int *idx = FX_AT_C(int, item, k->offset);
         int count = *FX_AT_C(int, item, k->aux);
-        if (count <= 0)
-            return put(buf, n, "none");
+        if (count <= 0) /* a list of emitters: every emitter */
+            return put(buf, n, "%s", k->refers == ISK_SECTION_EMITTER ? "all" : "none");
         size_t used = 0;
         for (int i = 0; i < count; i++) {
             if (put(buf + used, n - used, "%s%s", i ? ", " : "", d ? isk__fx_item_name(d, k->refers, idx[i]) : "?"))

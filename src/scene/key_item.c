@@ -24,6 +24,7 @@ int isk__fx_section_items(const isk_effect_def *d, isk_section_kind s)
     case ISK_SECTION_DEFLECTOR: return d->ndeflectors;
     case ISK_SECTION_EMITTER: return d->nemitters;
     case ISK_SECTION_DRAWING: return d->ndrawings;
+    case ISK_SECTION_PROBE: return d->nprobes;
     default: return 1;
     }
 }
@@ -41,6 +42,7 @@ void *isk__fx_section_item(isk_effect_def *d, isk_section_kind s, int i)
     case ISK_SECTION_EMITTER: return &d->emitters[i];
     case ISK_SECTION_DRAWING: return &d->drawings[i];
     case ISK_SECTION_CLICK: return &d->click;
+    case ISK_SECTION_PROBE: return &d->probes[i];
     default: return NULL;
     }
 }
@@ -59,6 +61,7 @@ const char *isk__fx_item_name(const isk_effect_def *d, isk_section_kind s, int i
     case ISK_SECTION_DEFLECTOR: return d->deflectors[i].name;
     case ISK_SECTION_EMITTER: return d->emitters[i].name;
     case ISK_SECTION_DRAWING: return d->drawings[i].name;
+    case ISK_SECTION_PROBE: return d->probes[i].name;
     default: return "";
     }
 }
@@ -72,6 +75,7 @@ int isk__fx_item_line(const isk_effect_def *d, isk_section_kind s, int i)
     case ISK_SECTION_DEFLECTOR: return d->deflectors[i].line;
     case ISK_SECTION_EMITTER: return d->emitters[i].line;
     case ISK_SECTION_DRAWING: return d->drawings[i].line;
+    case ISK_SECTION_PROBE: return d->probes[i].line;
     default: return 0;
     }
 }
@@ -86,8 +90,16 @@ int isk__fx_item_kind(const isk_effect_def *d, isk_section_kind s, int i)
     case ISK_SECTION_BOUNDS: return (int)d->bounds.mode;
     case ISK_SECTION_EMITTER: return (int)d->emitters[i].born.source;
     case ISK_SECTION_DRAWING: return (int)d->drawings[i].kind;
+    case ISK_SECTION_PROBE: return (int)d->probes[i].kind;
     default: return -1;
     }
+}
+
+int isk__fx_refs_cap(isk_section_kind refers)
+{
+    return refers == ISK_SECTION_FORCE     ? ISK_EFFECT_MAX_FORCES
+           : refers == ISK_SECTION_EMITTER ? ISK_EFFECT_MAX_EMITTERS
+                                           : ISK_EFFECT_MAX_DEFLECTORS;
 }
 
 int isk__fx_key_applies(const isk_key *k, int kind)
@@ -119,6 +131,7 @@ void isk__fx_key_kind_message(const isk_key *k, int kind, char *buf, size_t n)
     static const char *const nouns[ISK_SECTION_COUNT] = {
         [ISK_SECTION_VIEW] = "[view]",       [ISK_SECTION_FORCE] = "force",     [ISK_SECTION_BOUNDS] = "[bounds]",
         [ISK_SECTION_EMITTER] = "emitter",   [ISK_SECTION_DRAWING] = "drawing",
+        [ISK_SECTION_PROBE] = "probe",
     };
     if (!names || !word) {
         snprintf(buf, n, "does not apply here");

@@ -214,9 +214,17 @@ static isk_status parse_refs(const isk_key *k, void *item, const char *text, con
     int *idx = FX_AT(int, item, k->offset);
     int *count = FX_AT(int, item, k->aux);
     const int total = d ? isk__fx_section_items(d, k->refers) : 0;
-    const int cap = k->refers == ISK_SECTION_FORCE ? ISK_EFFECT_MAX_FORCES : ISK_EFFECT_MAX_DEFLECTORS;
+    const int cap = isk__fx_refs_cap(k->refers);
     static const char *const words[] = {"all", "none"};
     int w = isk__scv_lookup(text, words, 2);
+    if (w >= 0 && k->refers == ISK_SECTION_EMITTER) { /* all: the empty list, every emitter */
+        if (w == 1) {
+            snprintf(why, n, "name one or more emitters, or all");
+            return ISK_ERR_RANGE;
+        }
+        *count = 0;
+        return ISK_OK;
+    }
     if (w >= 0) {
         int m = w == 0 ? (total < cap ? total : cap) : 0;
         for (int i = 0; i < m; i++)

@@ -39,6 +39,10 @@ const char *isk__fx_item_name(const isk_effect_def *d, isk_section_kind s, int i
 int isk__fx_item_line(const isk_effect_def *d, isk_section_kind s, int i);
 /* The item's kind (its force kind, source, ...); -1 for sections without. */
 int isk__fx_item_kind(const isk_effect_def *d, isk_section_kind s, int i);
+/* The most names a REFS list of that section holds (its array's size).  A
+ * list of emitters (a probe's) reads "all" as the empty list: every
+ * emitter. */
+int isk__fx_refs_cap(isk_section_kind refers);
 /* Whether a key applies to an item of that kind (-1: every key applies). */
 int isk__fx_key_applies(const isk_key *k, int kind);
 /* "only for source = stream (this emitter has source = particle)" */

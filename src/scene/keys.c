@@ -101,6 +101,17 @@ static const char *const align_notes[ISK_ALIGN_COUNT] = {
     [ISK_ALIGN_NONE] = "by its angle only",
     [ISK_ALIGN_VELOCITY] = "turned along the velocity (a sprite kind becomes a streak 4 sizes long)",
 };
+static const char *const probe_kind_notes[ISK_PROBE_KIND_COUNT] = {
+    [ISK_PROBE_GATE] = "crossings of a segment per second, in each direction",
+    [ISK_PROBE_REGION] = "count, mean speed and kinetic energy inside a rectangle",
+    [ISK_PROBE_HISTOGRAM] = "a histogram of every particle's speed, angle or age",
+    [ISK_PROBE_TOTALS] = "the scene's momentum, kinetic and potential energy",
+};
+static const char *const probe_of_notes[ISK_PROBE_OF_COUNT] = {
+    [ISK_PROBE_OF_SPEED] = "|v|, units/s",
+    [ISK_PROBE_OF_ANGLE] = "the velocity's direction, degrees -180..180",
+    [ISK_PROBE_OF_AGE] = "seconds lived",
+};
 static const char *const units_notes[2] = {
     [0] = "world units",
     [1] = "canvas pixels (y down)",
@@ -146,6 +157,14 @@ static const char *const units_notes[2] = {
 #define S_L BIT(ISK_SOURCE_LAYER)
 #define S_S BIT(ISK_SOURCE_STREAM)
 #define S_SUB BIT(ISK_SOURCE_SUB)
+
+/* ---- [probe NAME]: isk_probe_def ------------------------------------------- */
+
+#define PROBE(key) .section = ISK_SECTION_PROBE, .name = key
+#define PRB(f) .offset = offsetof(isk_probe_def, f)
+#define P_GATE BIT(ISK_PROBE_GATE)
+#define P_REGION BIT(ISK_PROBE_REGION)
+#define P_HIST BIT(ISK_PROBE_HISTOGRAM)
 
 /* ---- [drawing NAME]: isk_drawing_def --------------------------------------- */
 
@@ -557,6 +576,35 @@ static const isk_key keys[] = {
     {CLICK("after_frames"), .type = ISK_KEY_LONG, CLK(after_frames), IN(0, 1e8), .dflt = "0",
      .meaning = "with at_start: the click comes after this many frames (the thesis's scenes run one frame of "
                 "the layer alone: 1)"},
+
+    /* [probe NAME]: fixed when the effect is created (a probe's readings
+     * start with the effect) */
+    {PROBE("kind"), .type = ISK_KEY_ENUM, PRB(kind), NAMES(isk_probe_kind_names), NOTES(probe_kind_notes),
+     .dflt = "gate", .dflt_doc = "the NAME when it is a kind", .create_only = 1, .meaning = "what the probe measures"},
+    {PROBE("segment"), .type = ISK_KEY_NUMBERS4, PRB(segment), .applies = P_GATE, .required = P_GATE,
+     .what = "x0, y0, x1, y1", IN(-ISK_COORD_MAX, ISK_COORD_MAX), .dflt = "0, 0, 1, 0", .create_only = 1,
+     .meaning = "the gate's end points, which must differ; forward is from the left of x0, y0 -> x1, y1 to its "
+                "right"},
+    {PROBE("window"), .type = ISK_KEY_NUMBER, PRB(window), .applies = P_GATE, GT_LE(0, 3600), .dflt = "1",
+     .create_only = 1, .meaning = "seconds: the rates count the crossings of the last window (whole frames)"},
+    {PROBE("rect"), .type = ISK_KEY_NUMBERS4, PRB(rect), .applies = P_REGION, .required = P_REGION,
+     .what = "xmin, xmax, ymin, ymax", IN(-ISK_COORD_MAX, ISK_COORD_MAX), .dflt = "-1, 1, -1, 1", .create_only = 1,
+     .meaning = "the region, world units (xmin < xmax, ymin < ymax)"},
+    {PROBE("of"), .type = ISK_KEY_ENUM, PRB(of), .applies = P_HIST, NAMES(isk_probe_of_names), NOTES(probe_of_notes),
+     .dflt = "speed", .create_only = 1, .meaning = "what the histogram counts"},
+    {PROBE("bins"), .type = ISK_KEY_WHOLE, PRB(bins), .applies = P_HIST, IN(1, ISK_PROBE_MAX_BINS), .dflt = "20",
+     .create_only = 1, .meaning = "how many equal bins divide the range"},
+    {PROBE("range"), .type = ISK_KEY_PAIR, PRB(range), .applies = P_HIST, .required = P_HIST,
+     IN(-1e9, 1e9), .dflt = "0, 1", .create_only = 1,
+     .meaning = "lo, hi (lo < hi): the values the bins cover; those outside count as under or over"},
+    {PROBE("emitters"), .type = ISK_KEY_REFS, PRB(emitters), .aux = offsetof(isk_probe_def, nemitters),
+     .refers = ISK_SECTION_EMITTER, .dflt = "all", .create_only = 1,
+     .meaning = "the emitters whose particles it measures"},
+    {PROBE("show"), .type = ISK_KEY_BOOL, PRB(show), .dflt = "true", .create_only = 1,
+     .meaning = "draw it over the particles: a gate as its line and counts, a region as its outline, a "
+                "histogram as bars at the bottom left"},
+    {PROBE("color"), .type = ISK_KEY_COLOR, PRB(color), .dflt = "cyan", .create_only = 1,
+     .meaning = "the colour it is drawn in"},
 };
 
 int isk_key_count(void) { return N(keys); }
@@ -590,6 +638,7 @@ static const section_info sections[ISK_SECTION_COUNT] = {
     [ISK_SECTION_EMITTER] = {"emitter", 1, "source", isk_source_names, ISK_SOURCE_KIND_COUNT},
     [ISK_SECTION_DRAWING] = {"drawing", 1, "kind", isk_drawing_kind_names, ISK_DRAWING_KIND_COUNT},
     [ISK_SECTION_CLICK] = {"click", 0, NULL, NULL, 0},
+    [ISK_SECTION_PROBE] = {"probe", 1, "kind", isk_probe_kind_names, ISK_PROBE_KIND_COUNT},
 };
 
 const char *isk_section_name(isk_section_kind s)

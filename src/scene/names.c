@@ -21,6 +21,8 @@ const char *const isk_drawing_kind_names[ISK_DRAWING_KIND_COUNT] = {"polyline", 
 const char *const isk_units_names[2] = {"world", "pixels"};
 const char *const isk_view_kind_names[ISK_VIEWDEF_COUNT] = {"window", "camera"};
 const char *const isk_align_names[ISK_ALIGN_COUNT] = {"none", "velocity"};
+const char *const isk_probe_kind_names[ISK_PROBE_KIND_COUNT] = {"gate", "region", "histogram", "totals"};
+const char *const isk_probe_of_names[ISK_PROBE_OF_COUNT] = {"speed", "angle", "age"};
 
 #define PRESET_NAME(name) #name,
 const char *const isk__fx_preset_names[FX_PRESET_COUNT] = {FX_PRESETS(PRESET_NAME)};

@@ -35,7 +35,7 @@
 #include "scene_values.h"
 
 #define MAX_SECTIONS (ISK_EFFECT_MAX_FORCES + ISK_EFFECT_MAX_DEFLECTORS + ISK_EFFECT_MAX_EMITTERS + \
-                      ISK_EFFECT_MAX_DRAWINGS + 4)
+                      ISK_EFFECT_MAX_DRAWINGS + ISK_EFFECT_MAX_PROBES + 4)
 
 typedef struct section {
     isk_section_kind type;
@@ -145,6 +145,14 @@ static isk_status add_item(parser *P, section *s, const char *name, int line)
         what = "drawings", max = ISK_EFFECT_MAX_DRAWINGS;
         break;
     }
+    case ISK_SECTION_PROBE: {
+        isk_probe_def *q = isk_effect_def_add_probe(d, name, ISK_PROBE_GATE);
+        s->index = q ? d->nprobes - 1 : -1;
+        if (q)
+            q->line = line;
+        what = "probes", max = ISK_EFFECT_MAX_PROBES;
+        break;
+    }
     case ISK_SECTION_BOUNDS:
         s->index = 0;
         d->bounds.sides = ISK_SIDE_ALL; /* a [bounds] section means walls, unless `sides` says otherwise */
@@ -205,7 +213,7 @@ static isk_status on_section(void *user, const char *header, int line, isk_error
                                  *name ? " " : "", name, s, *name ? " " : "", name);
         return isk__ini_error(P->err, P->name, line,
                              "unknown section [%s]; sections are [scene], [view], [force NAME], "
-                             "[deflector NAME], [bounds], [emitter NAME], [drawing NAME] and [click]",
+                             "[deflector NAME], [bounds], [emitter NAME], [drawing NAME], [click] and [probe NAME]",
                              type);
     }
     const int named = isk_section_named((isk_section_kind)t);
@@ -376,7 +384,7 @@ static isk_status needs_kind(parser *P, section *s, const isk_key *kk)
 }
 
 /* The kind a section has when `kind` is not given: its name, if it is a
- * kind; for drawings, what its keys say. */
+ * kind; for drawings, what its keys say; for probes, nothing else. */
 static isk_status derive_kind(parser *P, section *s)
 {
     isk_effect_def *d = P->d;
@@ -391,6 +399,12 @@ static isk_status derive_kind(parser *P, section *s)
         return ISK_OK;
     }
     int k = isk__scv_lookup(s->name, kk->names, kk->nnames);
+    if (s->type == ISK_SECTION_PROBE) { /* a probe's kind: `kind`, or its name */
+        if (k < 0)
+            return needs_kind(P, s, kk);
+        d->probes[s->index].kind = (isk_probe_kind)k;
+        return ISK_OK;
+    }
     if (k < 0 && given(s, isk_key_find(s->type, "points")))
         k = ISK_DRAWING_POLYLINE;
     else if (k < 0 && given(s, isk_key_find(s->type, "radius")))

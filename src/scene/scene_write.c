@@ -125,7 +125,7 @@ isk_status isk_scene_write(const isk_effect_def *d, char **text, isk_error *err)
         return isk_error_set(err, ISK_ERR_NULL, "scene: NULL definition");
     static const isk_section_kind order[] = {ISK_SECTION_SCENE,     ISK_SECTION_VIEW,   ISK_SECTION_FORCE,
                                              ISK_SECTION_DEFLECTOR, ISK_SECTION_BOUNDS, ISK_SECTION_EMITTER,
-                                             ISK_SECTION_DRAWING,   ISK_SECTION_CLICK};
+                                             ISK_SECTION_DRAWING,   ISK_SECTION_CLICK,  ISK_SECTION_PROBE};
     out o = {NULL, 0, 0, 0};
     put(&o, "; an iskra scene: every key of every section, as the definition held them\n");
     for (size_t j = 0; j < sizeof order / sizeof order[0]; j++) {

@@ -11,6 +11,7 @@
 
 #include "iskra/contacts.h"
 #include "iskra/integrate.h"
+#include "sim/crossing.h"
 #include "sim/flight.h"
 #include "sim/rest_screen.h"  /* isk__rest_at_once */
 #include "sim/wall_contact.h"
@@ -989,4 +990,26 @@ isk_status isk_contacts_step(const isk_bounds *walls, const isk_deflector *defs,
     if (!mo)
         return ISK_ERR_NULL;
     return deflect(walls, defs, ndef, x, y, vx, vy, mo->x0, mo->y0, mo, redo, n, rng, killed, stats);
+}
+
+/* ---- gates: the same crossing test, counted (sim/crossing.h) -------------- */
+
+void isk__segment_crossings(const isk_deflector *gate, size_t n, const double *x, const double *y,
+                            const double *prev, size_t stride, uint64_t *forward, uint64_t *backward)
+{
+    const seg s = canon(gate);
+    /* canon may have swapped the end points: the given direction's left is
+     * then the canonical right */
+    const int swapped = !(gate->x0 < gate->x1 || (gate->x0 == gate->x1 && gate->y0 <= gate->y1));
+    uint64_t f = 0, b = 0;
+    for (size_t i = 0; i < n; i++) {
+        const double *p = prev + stride * i;
+        if (crossing(&s, p[0], p[1], x[i], y[i]) < 0.0)
+            continue;
+        const int from_left = (side(&s, p[0], p[1]) > 0.0) != swapped;
+        f += (uint64_t)from_left;
+        b += (uint64_t)!from_left;
+    }
+    *forward += f;
+    *backward += b;
 }

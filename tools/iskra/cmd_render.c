@@ -7,7 +7,8 @@
  * Renders frame N (frame 0 = the initial state, frame N = after N steps) to
  * a PNG, and/or frames 0, K, 2K, ... <= N as a numbered PNG sequence, an
  * animated GIF, a YUV4MPEG2 video or raw RGBA frames (render_out.h);
- * --state / --state-every write the particles as CSV (state_csv.h).
+ * --state / --state-every write the particles as CSV (state_csv.h),
+ * --probes the scene's probes, a row per frame (probes_csv.h).
  * Everything is validated before anything is written, and no output may
  * be an input (the scene, its textures) or another output (outpath.h); a
  * signal removes the temporaries and says what was written (cleanup.h). */
@@ -21,6 +22,7 @@
 #include "iskra/anim.h"
 #include "iskra/effect.h"
 #include "outpath.h"
+#include "probes_csv.h"
 #include "progress.h"
 #include "render_out.h"
 #include "render_strip.h"
@@ -58,6 +60,8 @@ static void help(FILE *f)
                "  --state FILE.csv every live particle at frame N: emitter,index,x,y,vx,vy,\n"
                "                   mass,age,life, values in round-trip precision (%%.17g)\n"
                "  --state-every K  with --out-dir: DIR/state_000000.csv ... every K frames\n"
+               "  --probes FILE.csv the scene's probes ([probe NAME]) after every frame 1..N:\n"
+               "                   frame,time, then PROBE.VALUE columns (%%.17g)\n"
                "  Missing directories of every output are created.  An output that is an\n"
                "  input (the scene, a texture) or another output is refused.  Particles\n"
                "  removed because their state went non-finite are reported.\n");
@@ -79,6 +83,7 @@ typedef struct render_args {
     int raw, have_every;
     render_out o;
     state_opts so;
+    probes_opts po;
 } render_args;
 
 /* 0, or 2 after printing the usage error. */
@@ -120,6 +125,9 @@ static int parse(render_args *r, int argc, char **argv)
         } else if ((k = state_args_take(&r->so, argc, argv, &i)) != 0) {
             if (k < 0)
                 return 2;
+        } else if ((k = probes_args_take(&r->po, argc, argv, &i)) != 0) {
+            if (k < 0)
+                return 2;
         } else if (scene_args_take(&r->scene, argc, argv, &i) < 0) {
             return 2;
         }
@@ -133,8 +141,9 @@ static int check(render_args *r)
     const char *why = NULL;
     if (!r->scene.scene)
         why = "which scene?";
-    else if (!r->out && !r->o.dir && !r->so.path && !r->strip)
-        why = "say where: --out FILE (.png, .gif, .y4m; --raw), --out-dir DIR, --strip FILE.png or --state FILE.csv";
+    else if (!r->out && !r->o.dir && !r->so.path && !r->strip && !r->po.path)
+        why = "say where: --out FILE (.png, .gif, .y4m; --raw), --out-dir DIR, --strip FILE.png, --state FILE.csv "
+              "or --probes FILE.csv";
     else if ((r->out && !*r->out) || (r->o.dir && !*r->o.dir) || (r->strip && !*r->strip))
         why = "empty output name";
     if (why) {
@@ -177,10 +186,15 @@ static int check(render_args *r)
  * the outputs are removed. */
 static int check_files(const render_args *r, const isk_effect_def *def, long frames)
 {
+    if (r->po.path && def->nprobes == 0) {
+        fprintf(stderr, "iskra render: --probes: %s has no [probe NAME] section to write\n", r->scene.scene);
+        return 2;
+    }
     outpath_plan plan = {.cmd = "render"};
     outpath_output(&plan, r->out, "--out");
     outpath_output(&plan, r->strip, "--strip");
     outpath_output(&plan, r->so.path, "--state");
+    outpath_output(&plan, r->po.path, "--probes");
     outpath_series(&plan, r->o.dir, RENDER_FRAME_PREFIX, RENDER_FRAME_SUFFIX, r->o.every, frames, "--out-dir");
     outpath_series(&plan, r->o.dir, STATE_PREFIX, STATE_SUFFIX, r->so.every, frames, "--state-every");
     if (outpath_clash(&plan) || outpath_refuse(&plan, r->scene.text ? NULL : r->scene.scene, "the scene"))
@@ -239,7 +253,7 @@ int cmd_render(int argc, char **argv)
         (r.strip && (rc = outpath_make_parents("render", r.strip)) != 0))
         goto done;
     cleanup_install("render");
-    if ((rc = render_out_begin(&r.o, def.width, def.height, fps)) != 0)
+    if ((rc = render_out_begin(&r.o, def.width, def.height, fps)) != 0 || (rc = probes_begin(&r.po, fx)) != 0)
         goto done;
 
     progress pg;
@@ -262,7 +276,7 @@ int cmd_render(int argc, char **argv)
                 goto done;
             }
         }
-        if (state_after_frame(&r.so, fx, r.o.dir, f)) {
+        if (state_after_frame(&r.so, fx, r.o.dir, f) || probes_after_frame(&r.po, fx, f)) {
             rc = 1;
             goto done;
         }
@@ -285,7 +299,10 @@ int cmd_render(int argc, char **argv)
         rc = 1;
     if (state_finish(&r.so, fx))
         rc = 1;
+    if (probes_finish(&r.po))
+        rc = 1;
 done:
+    probes_abort(&r.po);
     isk_canvas_free(&strip.out);
     render_out_abort(&r.o);
     isk_canvas_free(&canvas);

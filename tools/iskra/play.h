@@ -22,6 +22,7 @@
  *   play_charts.c   energy and particle count over time, the integrator
  *                   table with measured cost and energy drift
  *   play_energy.c   kinetic and potential energy of the state
+ *   play_probes.c   the scene's probes over time, beside the particle count
  *   play_hud.c      the thesis's FPS text and the HUD over the canvas
  *   play_files.c    reload (by hand and when the file changes), save,
  *                   screenshots
@@ -114,6 +115,17 @@ typedef struct play_chart_points {
     double t[120], v[4][120];
     size_t n;
 } play_chart_points;
+
+/* The probes' readings over time (play_probes.c): a series per number
+ * charted (a gate's two rates, a region's count). */
+#define PLAY_PROBE_SERIES 8
+typedef struct play_probe_history {
+    int n, nseries;
+    double t[PLAY_HISTORY];
+    double v[PLAY_PROBE_SERIES][PLAY_HISTORY];
+    char name[PLAY_PROBE_SERIES][48];
+    double chart_t[120], chart_v[PLAY_PROBE_SERIES][120]; /* thinned for drawing */
+} play_probe_history;
 
 /* Sizes of the window's parts (play_layout.c, play_panel.c), in units of the widget scale. */
 enum { CONSOLE_W = 190, SIDE_W = 230, BOTTOM_H = 150, CONSOLE_MIN_H = 300, MARGIN = 6, GAP = 4, LABEL_W = 86 };
@@ -210,6 +222,7 @@ typedef struct player {
     isk_canvas chart_cache;    /* the charts, drawn again every few frames */
     int chart_drawn_n;         /* samples when they were drawn (-1: draw them) */
     play_chart_points chart_points;
+    play_probe_history probe_hist; /* nseries 0: the scene has no probe to chart */
     play_integrator_stats stats[ISK_INTEGRATOR_COUNT];
     double energy_ref;         /* total energy when the current integrator's drift started */
     double energy_scale;       /* the size of the energies then (kinetic + |potential|) */
@@ -369,8 +382,18 @@ void play_charts_sample(player *p, double step_seconds, long steps);
 void play_charts_reset(player *p);
 /* The energy chart over the particle count's (side by side: beside it). */
 void play_charts_draw(player *p, isk_ui_rect r, int side_by_side);
+/* A chart in the charts' look into r of c, or a box saying `empty`. */
+struct isk_chart;
+void play_chart_look(struct isk_chart *ch, const player *p);
+void play_chart_into(player *p, isk_canvas *c, isk_ui_rect r, const struct isk_chart *ch, const char *empty);
 /* The integrator table (a radio group with cost and drift beside). */
 void play_integrators(player *p, isk_ui_rect r);
+
+/* play_probes.c: the probes' chart (only for a scene with probes: the
+ * particle count's chart then shares its place with it). */
+void play_probes_reset(player *p);
+void play_probes_sample(player *p);
+void play_probes_chart(player *p, isk_canvas *c, isk_ui_rect r);
 
 /* play_hud.c */
 void play_hud_draw(player *p);

@@ -19,6 +19,7 @@ void play_charts_reset(player *p)
     p->hist.n = 0;
     p->energy_ref_valid = 0;
     p->chart_drawn_n = -1;
+    play_probes_reset(p);
 }
 
 static void push(play_history *h, double t, double ke, double pe, double count)
@@ -53,6 +54,7 @@ void play_charts_sample(player *p, double seconds_per_particle_step, long partic
     const double pe = e.potential, total = e.kinetic + pe;
     const size_t count = isk_effect_particle_count(p->fx);
     push(&p->hist, isk_effect_time(p->fx), e.kinetic, pe, (double)count);
+    play_probes_sample(p);
     play_integrator_stats *st = &p->stats[d->integrator];
     if (!p->fixed_clock && particle_steps > 0) {
         double ns = seconds_per_particle_step * 1e9;
@@ -76,7 +78,7 @@ void play_charts_sample(player *p, double seconds_per_particle_step, long partic
     }
 }
 
-static void chart_look(isk_chart *ch, const player *p)
+void play_chart_look(isk_chart *ch, const player *p)
 {
     isk_chart_defaults(ch);
     ch->font = ISK_FONT_6X13; /* capitals 10 px tall, as the panel's: read from across a classroom */
@@ -119,7 +121,7 @@ static void thin(const play_history *h, play_chart_points *o)
     }
 }
 
-static void chart_into(player *p, isk_canvas *c, isk_ui_rect r, const isk_chart *ch, const char *empty)
+void play_chart_into(player *p, isk_canvas *c, isk_ui_rect r, const isk_chart *ch, const char *empty)
 {
     isk_canvas v;
     if (isk_canvas_view(&v, c, r.x, r.y, r.w, r.h) == ISK_OK && v.width >= 160 && v.height >= 120 &&
@@ -162,7 +164,7 @@ static void render_charts(player *p, isk_canvas *c, int side_by_side)
     else
         isk_ui_cut_top(&r, gap);
     isk_chart ch;
-    chart_look(&ch, p);
+    play_chart_look(&ch, p);
     static const isk_color colours[3] = {{0x56, 0xb4, 0xe9, 255}, {0xe6, 0x9f, 0x00, 255}, {0xf0, 0xf0, 0xf0, 255}};
     isk_chart_series s[3] = {
         {"kinetic", t->t, t->v[0], t->n, {colours[0], ISK_DASH_SOLID, ISK_MARKER_NONE}},
@@ -175,15 +177,23 @@ static void render_charts(player *p, isk_canvas *c, int side_by_side)
     ch.series = s;
     ch.nseries = 3;
     ch.legend = ISK_LEGEND_ABOVE;
-    chart_into(p, c, top, &ch, t->n ? "energy: no range yet" : "energy: when it runs");
-    chart_look(&ch, p);
+    play_chart_into(p, c, top, &ch, t->n ? "energy: no range yet" : "energy: when it runs");
+    if (p->probe_hist.nseries > 0) { /* the probes' chart beside (or under) the particle count's */
+        isk_ui_rect pr = side_by_side ? isk_ui_cut_bottom(&r, (r.h - gap) / 2) : isk_ui_cut_right(&r, (r.w - gap) / 2);
+        play_probes_chart(p, c, pr);
+        if (side_by_side)
+            isk_ui_cut_bottom(&r, gap);
+        else
+            isk_ui_cut_right(&r, gap);
+    }
+    play_chart_look(&ch, p);
     isk_chart_series n = {NULL, t->t, t->v[3], t->n, {colours[0], ISK_DASH_SOLID, ISK_MARKER_NONE}};
     ch.y_label = "particles";
     ch.x_label = seconds;
     ch.series = &n;
     ch.nseries = 1;
     ch.legend = ISK_LEGEND_NONE;
-    chart_into(p, c, r, &ch, "particles: when it runs");
+    play_chart_into(p, c, r, &ch, "particles: when it runs");
 }
 
 void play_charts_draw(player *p, isk_ui_rect r, int side_by_side)
