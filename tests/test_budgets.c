@@ -9,6 +9,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "iskra/anim.h"
 #include "iskra/effect.h"
 #include "iskra/png.h"
 #include "iskra/scene.h"
@@ -218,4 +219,62 @@ Test(budgets, max_work_option)
         cr_assert_not_null(strstr(e, "--max-work"), "%s: %s", a, e);
         free(e);
     }
+}
+
+/* ---- what `iskra render` holds beside the effect -------------------------------- */
+
+/* The writers' own memory: GIF's tables grow with the frame's pixels
+ * (hash slots, colours, each pixel's colour and index, the sort's copy),
+ * Y4M keeps a row, raw frames nothing; a PNG writer keeps rows. */
+Test(budgets, writers_say_what_they_hold)
+{
+    isk_anim_opts gif = {ISK_ANIM_GIF, 1000, 1000, 30}, y4m = {ISK_ANIM_Y4M, 1000, 1000, 30},
+                  raw = {ISK_ANIM_RAW, 1000, 1000, 0};
+    /* per pixel: an index (1), its colour (4), a colour entry (12), its sorted copy (24), two hash slots (8) */
+    cr_assert_geq(isk_anim_memory(&gif), (size_t)1000 * 1000 * (1 + 4 + 12 + 24 + 8));
+    cr_assert_lt(isk_anim_memory(&gif), (size_t)1000 * 1000 * (1 + 4 + 12 + 24 + 16) + ((size_t)1 << 20));
+    gif.width = 2000;
+    cr_assert_gt(isk_anim_memory(&gif), (size_t)2000 * 1000 * 49);
+    cr_assert_geq(isk_anim_memory(&y4m), 1000u);
+    cr_assert_lt(isk_anim_memory(&y4m), 4096u);
+    cr_assert_lt(isk_anim_memory(&raw), 1024u);
+    raw.width = 0;
+    cr_assert_eq(isk_anim_memory(&raw), 0u);
+    cr_assert_eq(isk_anim_memory(NULL), 0u);
+    cr_assert_gt(isk_png_write_memory(4000), isk_png_write_memory(1000) + 5 * 3000 * 4 - 1);
+    cr_assert_eq(isk_png_write_memory(0), 0u);
+}
+
+/* A GIF or a strip too big for --max-memory is refused before anything is
+ * written, exit 2, the message naming what needs the memory. */
+Test(budgets, render_counts_its_writers_and_strip)
+{
+    cli_fresh(DIR "/host");
+    /* 2000 x 2000 GIF frames: the writer's tables take about 190 MiB */
+    cr_assert_eq(cli_run(DIR "/host", "render preset_rain --size 2000x2000 --frames 2 --out " DIR "/host/x.gif "
+                                      "--max-memory 100M"), 2);
+    char *e = cli_slurp(DIR "/host/stderr.txt");
+    cr_assert_not_null(strstr(e, "more than the limit of 100 MiB (iskra render's GIF writer (2000 x 2000 frames) "
+                                 "188 MiB, the 2000 x 2000 canvas 15 MiB"), "%s", e);
+    cr_assert_not_null(strstr(e, "--max-memory"), "%s", e);
+    free(e);
+    cr_assert_not(cli_exists(DIR "/host/x.gif"));
+    /* six panels of 1000 x 1000: a 6020 x 1000 strip, 23 MiB */
+    cr_assert_eq(cli_run(DIR "/host", "render preset_rain --size 2000x2000 --frames 12 --every 2 --strip "
+                                      DIR "/host/s.png --max-memory 30M"), 2);
+    e = cli_slurp(DIR "/host/stderr.txt");
+    cr_assert_not_null(strstr(e, "iskra render's strip (6020 x 1000) 24 MiB"), "%s", e);
+    free(e);
+    cr_assert_not(cli_exists(DIR "/host/s.png"));
+    /* within the limit it is written */
+    cr_assert_eq(cli_run(DIR "/host", "render preset_rain --size 2000x2000 --frames 12 --every 2 --strip "
+                                      DIR "/host/s.png --max-memory 48M"), 0);
+    cr_assert(cli_exists(DIR "/host/s.png"));
+    /* a strip wider than a canvas can be: a usage error, not "out of memory" */
+    cr_assert_eq(cli_run(DIR "/host", "render preset_rain --size 4000x100 --frames 12 --every 1 --strip "
+                                      DIR "/host/w.png"), 2);
+    e = cli_slurp(DIR "/host/stderr.txt");
+    cr_assert_not_null(strstr(e, "--strip: 12 panels of 2000 pixels would be wider than 16384 pixels"), "%s", e);
+    free(e);
+    cr_assert_not(cli_exists(DIR "/host/w.png"));
 }
