@@ -5,6 +5,7 @@
  * a frame and of a prewarm (isk_effect_def.max_work, `--max-work`) is
  * estimated at create and refused above the budget, naming what needs it. */
 #include <criterion/criterion.h>
+#include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -277,4 +278,90 @@ Test(budgets, render_counts_its_writers_and_strip)
     cr_assert_not_null(strstr(e, "--strip: 12 panels of 2000 pixels would be wider than 16384 pixels"), "%s", e);
     free(e);
     cr_assert_not(cli_exists(DIR "/host/w.png"));
+}
+
+/* ---- a live change against the budgets --------------------------------------------- */
+
+static const char *const LIVE_SCENE =
+    "[scene]\nwidth = 200\nheight = 150\ndt = 1/60\nseed = 9\n"
+    "[view]\nxmin = -10\nxmax = 10\nymin = 0\nymax = 15\n"
+    "[force gravity]\ng = 9.81\n"
+    "[emitter sparks]\nsource = stream\nposition = 0, 1\nlaunch = cone\nangle = 90\nspread = 40\n"
+    "speed_min = 5\nspeed_max = 9\nrate = 300\nlife = 2\ncapacity = 4000\nforces = gravity\ndraw = disc\n"
+    "size = 0.1\n";
+
+static isk_effect *live_effect(double max_work, size_t max_memory)
+{
+    isk_effect_def d;
+    isk_error err = {0};
+    cr_assert_eq(isk_scene_load_string(&d, LIVE_SCENE, "live.ini", &err), ISK_OK, "%s", err.message);
+    d.max_work = max_work;
+    d.max_memory = max_memory;
+    isk_effect *fx;
+    cr_assert_eq(isk_effect_create(&fx, &d, &err), ISK_OK, "%s", err.message);
+    isk_effect_def_free(&d);
+    return fx;
+}
+
+/* Frames 0..frames of fx into one buffer (the canvas after each step). */
+static void run_frames(isk_effect *fx, int frames, uint8_t *out)
+{
+    isk_canvas c;
+    cr_assert_eq(isk_canvas_init(&c, 200, 150), ISK_OK);
+    for (int f = 0; f < frames; f++) {
+        cr_assert_eq(isk_effect_step_render(fx, &c), ISK_OK);
+        memcpy(out + (size_t)f * 200 * 150 * 4, c.pixels, (size_t)200 * 150 * 4);
+    }
+    isk_canvas_free(&c);
+}
+
+/* A change that would take the effect over its work budget (the estimate
+ * of create: here the discs' pixels, or the particles a longer life keeps)
+ * or its memory budget (a bigger pool) is refused with create's message
+ * and changes nothing: the frames after it are those of a twin never
+ * asked; a change within the budgets is taken. */
+Test(budgets, a_live_change_over_a_budget_changes_nothing)
+{
+    enum { FRAMES = 40 };
+    const size_t bytes = (size_t)FRAMES * 200 * 150 * 4;
+    uint8_t *want = malloc(bytes), *got = malloc(bytes);
+    cr_assert(want && got);
+    isk_effect *twin = live_effect(1e5, (size_t)64 << 20);
+    run_frames(twin, 10, want);
+    isk_effect *fx = live_effect(1e5, (size_t)64 << 20);
+    run_frames(fx, 10, got);
+    static const char *const refused[][3] = {
+        {"emitter sparks", "size", "2"},           /* 601 discs of 22 x 22 px: 3e5 pixels */
+        {"emitter sparks", "life", "60"},          /* 4000 particles alive */
+        {"emitter sparks", "rate", "3000"},        /* 4000 too */
+        {"emitter sparks", "trail", "64"},         /* 64 segments each */
+        {"scene", "substeps", "50"},
+        {"view", "xmax", "-9.9"},                  /* zoomed in: each disc 25 times wider */
+        {"emitter sparks", "capacity", "3000000"}, /* its pool: 64 MiB and more */
+    };
+    for (size_t i = 0; i < sizeof refused / sizeof refused[0]; i++) {
+        char before[64], after[64];
+        isk_error err = {0};
+        cr_assert_eq(isk_effect_get(fx, refused[i][0], refused[i][1], before, sizeof before, &err), ISK_OK);
+        cr_assert_eq(isk_effect_set(fx, refused[i][0], refused[i][1], refused[i][2], &err), ISK_ERR_SIZE,
+                     "[%s] %s = %s: taken", refused[i][0], refused[i][1], refused[i][2]);
+        const char *budget = strcmp(refused[i][1], "capacity") ? "--max-work" : "--max-memory";
+        cr_assert_not_null(strstr(err.message, budget), "[%s] %s: %s", refused[i][0], refused[i][1], err.message);
+        cr_assert_not_null(strstr(err.message, refused[i][1]), "%s", err.message);
+        cr_assert_eq(isk_effect_get(fx, refused[i][0], refused[i][1], after, sizeof after, &err), ISK_OK);
+        cr_assert_str_eq(after, before);
+    }
+    run_frames(twin, FRAMES, want);
+    run_frames(fx, FRAMES, got);
+    cr_assert(!memcmp(want, got, bytes), "a refused change changed the frames after it");
+    /* within the budget: taken, and the frames change */
+    isk_error err = {0};
+    cr_assert_eq(isk_effect_set(fx, "emitter sparks", "size", "0.3", &err), ISK_OK, "%s", err.message);
+    run_frames(fx, 2, got);
+    run_frames(twin, 2, want);
+    cr_assert(memcmp(want, got, (size_t)2 * 200 * 150 * 4));
+    isk_effect_destroy(fx);
+    isk_effect_destroy(twin);
+    free(want);
+    free(got);
 }
