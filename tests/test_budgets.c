@@ -15,6 +15,7 @@
 #include "iskra/png.h"
 #include "iskra/scene.h"
 #include "iskra/texture.h"
+#include "play_session.h"
 #include "tool_cli.h"
 
 #define DIR "out/test_budgets"
@@ -364,4 +365,34 @@ Test(budgets, a_live_change_over_a_budget_changes_nothing)
     isk_effect_destroy(twin);
     free(want);
     free(got);
+}
+
+/* The simulator's panel goes through isk_effect_set: a size typed into
+ * the inspector that would take a frame over --max-work is refused (the
+ * saved scene keeps the old one), one within it is taken. */
+Test(budgets, the_panel_refuses_a_change_over_the_work_budget)
+{
+    static const struct {
+        const char *typed, *saved;
+    } cases[] = {{"100", "0.09"}, {"0.2", "0.2"}};
+    for (int i = 0; i < 2; i++) {
+        char dir[64], args[600];
+        snprintf(dir, sizeof dir, DIR "/panel%d", i);
+        snprintf(args, sizeof args,
+                 "fire_campfire --max-work 1e7 --screen 1280x720 --frames 12 --save %s/s.ini --script "
+                 "'press:emitter-sparks/size wait:2 type:%s key:return wait:2 f2'",
+                 dir, cases[i].typed);
+        cr_assert_eq(play_session(dir, args), 0, "%s", play_stderr(dir));
+        char path[96];
+        snprintf(path, sizeof path, "%s/s.ini", dir);
+        isk_effect_def d;
+        isk_error err = {0};
+        cr_assert_eq(isk_scene_load_file(&d, path, &err), ISK_OK, "%s", err.message);
+        const int k = isk_effect_def_find_emitter(&d, "sparks");
+        cr_assert_geq(k, 0);
+        char want[32];
+        snprintf(want, sizeof want, "%.15g", d.emitters[k].look.size);
+        cr_assert_str_eq(want, cases[i].saved, "typed %s", cases[i].typed);
+        isk_effect_def_free(&d);
+    }
 }
