@@ -438,7 +438,8 @@ endif
 # `make fuzz-png [FUZZ_TIME=600]`: the PNG reader likewise, seeded with
 # tests/fuzz/png_corpus/; crashers go to tests/fuzz/png_regressions/.
 # `make fuzz-texture`: PNG bytes made into textures and drawn (seeds: the
-# PNG corpus and scenes/textures/); crashers to tests/fuzz/texture_regressions/.
+# PNG corpus, scenes/textures/ and tests/fuzz/texture_corpus/); crashers to
+# tests/fuzz/texture_regressions/.
 # `make fuzz-live`: a scene, live changes and steps, then saved and
 # reloaded to the same bytes (seeds: tests/fuzz/live_corpus/); crashers to
 # tests/fuzz/live_regressions/.  The scene target's seeds are scenes/*.ini
@@ -484,7 +485,7 @@ run_fuzzer = set +e; $(1) -max_total_time=$(5) -max_len=$(4) -timeout=10 -rss_li
 	     "exit status $$rc (full log: $(1).log)"; exit $$rc
 
 FUZZ_SCENE_SEEDS := scenes/*.ini tests/fuzz/scene_corpus/*.ini
-FUZZ_TEXTURE_SEEDS := tests/fuzz/png_corpus/* scenes/textures/*.png
+FUZZ_TEXTURE_SEEDS := tests/fuzz/png_corpus/* scenes/textures/*.png tests/fuzz/texture_corpus/*
 FUZZ_LIVE_SEEDS := tests/fuzz/live_corpus/*
 
 fuzz-run: $(FUZZ_BIN)

@@ -10,8 +10,9 @@
  *     rendered.
  * Built and run by `make fuzz-texture` (clang with
  * -fsanitize=fuzzer,address,undefined) and by `make fuzz-smoke`; seeds in
- * tests/fuzz/texture_corpus/ (and tests/fuzz/png_corpus/, scenes/textures/),
- * crashers kept in tests/fuzz/texture_regressions/.
+ * tests/fuzz/png_corpus/, scenes/textures/ and tests/fuzz/texture_corpus/
+ * (bytes that are no PNG make an image: image_of_bytes), crashers kept in
+ * tests/fuzz/texture_regressions/.
  *
  * The library's own limits bound what is accepted (a side up to
  * ISK_TEXTURE_MAX_DIM); the harness sets the budgets a program would, so
@@ -107,10 +108,40 @@ static void draw_in_an_effect(const isk_canvas *img)
     isk_effect_def_free(&d);
 }
 
+/* Input that is not a PNG: an image made of the bytes, written as a PNG
+ * (so it still goes PNG -> texture): bytes 0 and 1 the width and height
+ * less one (1..256 each), the rest its pixels, repeated to fill it.  The
+ * fuzzer reaches any size, grid and content without forging a CRC. */
+static int image_of_bytes(const uint8_t *data, size_t size, isk_canvas *img)
+{
+    static const uint8_t png_signature[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
+    if (size >= 8 && !memcmp(data, png_signature, 8))
+        return isk_png_read_memory(img, data, size, "fuzz.png", MAX_PIXELS, NULL) == ISK_OK;
+    if (size < 3)
+        return 0;
+    isk_canvas made;
+    if (isk_canvas_init(&made, data[0] + 1, data[1] + 1) != ISK_OK)
+        return 0;
+    const size_t row = (size_t)made.width * 4u;
+    for (size_t y = 0; y < (size_t)made.height; y++)
+        for (size_t x = 0; x < row; x++)
+            made.pixels[y * made.stride + x] = data[2 + (y * row + x) % (size - 2)];
+    char *buf = NULL;
+    size_t len = 0;
+    FILE *f = open_memstream(&buf, &len);
+    int ok = f && isk_png_write_stream(&made, f, "fuzz.png", NULL) == ISK_OK && fflush(f) == 0;
+    if (f)
+        fclose(f);
+    ok = ok && isk_png_read_memory(img, buf, len, "fuzz.png", MAX_PIXELS, NULL) == ISK_OK;
+    free(buf);
+    isk_canvas_free(&made);
+    return ok;
+}
+
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 {
     isk_canvas img;
-    if (isk_png_read_memory(&img, data, size, "fuzz.png", MAX_PIXELS, NULL) != ISK_OK)
+    if (!image_of_bytes(data, size, &img))
         return 0;
     isk_canvas c;
     if (isk_canvas_init(&c, 64, 48) == ISK_OK) {
