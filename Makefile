@@ -12,7 +12,7 @@
 #   make test M32=1        a 32-bit x86 build (build-m32/): same bits, and
 #                  every size and count checked where size_t has 32 bits
 #   make fuzz-smoke   every kept fuzz crasher and corpus file, then a short
-#                  fuzz run of each target (scene, png)
+#                  fuzz run of each target (scene, png, texture, live)
 #   make run        install missing packages, build the iskra tool, run the main demo
 #   make bench      run the benchmarks (ratios measured in one run)
 #   make install PREFIX=/usr/local DESTDIR=   headers, libraries, iskra.pc, iskra,
@@ -437,6 +437,13 @@ endif
 # $(BUILD)/fuzz/corpus); crashers are written to tests/fuzz/regressions/.
 # `make fuzz-png [FUZZ_TIME=600]`: the PNG reader likewise, seeded with
 # tests/fuzz/png_corpus/; crashers go to tests/fuzz/png_regressions/.
+# `make fuzz-texture`: PNG bytes made into textures and drawn (seeds: the
+# PNG corpus, scenes/textures/ and tests/fuzz/texture_corpus/); crashers to
+# tests/fuzz/texture_regressions/.
+# `make fuzz-live`: a scene, live changes and steps, then saved and
+# reloaded to the same bytes (seeds: tests/fuzz/live_corpus/); crashers to
+# tests/fuzz/live_regressions/.  The scene target's seeds are scenes/*.ini
+# and tests/fuzz/scene_corpus/*.ini (prewarm, sub-emitter chains, textures).
 FUZZ_TIME ?= 600
 FUZZ_CC   ?= clang
 FUZZ_DEPS := clang libclang-rt-14-dev
@@ -477,9 +484,13 @@ run_fuzzer = set +e; $(1) -max_total_time=$(5) -max_len=$(4) -timeout=10 -rss_li
 	echo "fuzz $(notdir $(1)): $$(sed -n 's/^stat::number_of_executed_units: *//p' $(1).log) executions," \
 	     "exit status $$rc (full log: $(1).log)"; exit $$rc
 
+FUZZ_SCENE_SEEDS := scenes/*.ini tests/fuzz/scene_corpus/*.ini
+FUZZ_TEXTURE_SEEDS := tests/fuzz/png_corpus/* scenes/textures/*.png tests/fuzz/texture_corpus/*
+FUZZ_LIVE_SEEDS := tests/fuzz/live_corpus/*
+
 fuzz-run: $(FUZZ_BIN)
 	@mkdir -p $(BUILD)/fuzz/corpus tests/fuzz/regressions
-	@cp scenes/*.ini $(BUILD)/fuzz/corpus/
+	@cp $(FUZZ_SCENE_SEEDS) $(BUILD)/fuzz/corpus/
 	@echo "fuzz: running for $(FUZZ_TIME) s (crashers go to tests/fuzz/regressions/)"
 	@$(call run_fuzzer,$(FUZZ_BIN),$(BUILD)/fuzz/corpus,tests/fuzz/regressions,8192,$(FUZZ_TIME))
 
@@ -494,6 +505,28 @@ fuzz-png-run: $(FUZZ_PNG_BIN)
 	@echo "fuzz: the PNG reader for $(FUZZ_TIME) s (crashers go to tests/fuzz/png_regressions/)"
 	@$(call run_fuzzer,$(FUZZ_PNG_BIN),$(BUILD)/fuzz/png-corpus,tests/fuzz/png_regressions,65536,$(FUZZ_TIME))
 
+FUZZ_TEXTURE_BIN := $(BUILD)/fuzz/fuzz_texture
+FUZZ_LIVE_BIN := $(BUILD)/fuzz/fuzz_live
+.PHONY: fuzz-texture fuzz-texture-run fuzz-live fuzz-live-run
+
+fuzz-texture: fuzz-deps
+	@$(MAKE) --no-print-directory fuzz-texture-run
+
+fuzz-texture-run: $(FUZZ_TEXTURE_BIN)
+	@mkdir -p $(BUILD)/fuzz/texture-corpus tests/fuzz/texture_regressions
+	@cp $(FUZZ_TEXTURE_SEEDS) $(BUILD)/fuzz/texture-corpus/
+	@echo "fuzz: textures for $(FUZZ_TIME) s (crashers go to tests/fuzz/texture_regressions/)"
+	@$(call run_fuzzer,$(FUZZ_TEXTURE_BIN),$(BUILD)/fuzz/texture-corpus,tests/fuzz/texture_regressions,65536,$(FUZZ_TIME))
+
+fuzz-live: fuzz-deps
+	@$(MAKE) --no-print-directory fuzz-live-run
+
+fuzz-live-run: $(FUZZ_LIVE_BIN)
+	@mkdir -p $(BUILD)/fuzz/live-corpus tests/fuzz/live_regressions
+	@cp $(FUZZ_LIVE_SEEDS) $(BUILD)/fuzz/live-corpus/
+	@echo "fuzz: live changes, save and reload for $(FUZZ_TIME) s (crashers go to tests/fuzz/live_regressions/)"
+	@$(call run_fuzzer,$(FUZZ_LIVE_BIN),$(BUILD)/fuzz/live-corpus,tests/fuzz/live_regressions,16384,$(FUZZ_TIME))
+
 # CI's smoke test: every kept crasher and seed once (each must pass), then
 # FUZZ_SMOKE_TIME seconds of fuzzing per target from the seeds; anything it
 # finds lands in $(BUILD)/fuzz/smoke/ (copy it to the target's crasher
@@ -502,16 +535,24 @@ FUZZ_SMOKE_TIME ?= 15
 fuzz-smoke: fuzz-deps
 	@$(MAKE) --no-print-directory fuzz-smoke-run
 
-fuzz-smoke-run: $(FUZZ_BIN) $(FUZZ_PNG_BIN)
-	@rm -rf $(BUILD)/fuzz/smoke && mkdir -p $(BUILD)/fuzz/smoke/scene $(BUILD)/fuzz/smoke/png
+# $(call replay,BINARY,NAME,FILES): each file once; the log's tail on failure.
+replay = $(1) -timeout=10 -rss_limit_mb=2048 $(3) > $(BUILD)/fuzz/smoke/replay-$(2).log 2>&1 || \
+	{ tail -n 30 $(BUILD)/fuzz/smoke/replay-$(2).log; exit 1; }
+
+fuzz-smoke-run: $(FUZZ_BIN) $(FUZZ_PNG_BIN) $(FUZZ_TEXTURE_BIN) $(FUZZ_LIVE_BIN)
+	@rm -rf $(BUILD)/fuzz/smoke && mkdir -p $(BUILD)/fuzz/smoke/scene $(BUILD)/fuzz/smoke/png \
+	    $(BUILD)/fuzz/smoke/texture $(BUILD)/fuzz/smoke/live
 	@echo "fuzz-smoke: replaying kept crashers and seeds"
-	@$(FUZZ_BIN) -timeout=10 -rss_limit_mb=2048 tests/fuzz/regressions/* scenes/*.ini \
-	    > $(BUILD)/fuzz/smoke/replay-scene.log 2>&1 || { tail -n 30 $(BUILD)/fuzz/smoke/replay-scene.log; exit 1; }
-	@$(FUZZ_PNG_BIN) -timeout=10 -rss_limit_mb=2048 tests/fuzz/png_regressions/* tests/fuzz/png_corpus/* \
-	    > $(BUILD)/fuzz/smoke/replay-png.log 2>&1 || { tail -n 30 $(BUILD)/fuzz/smoke/replay-png.log; exit 1; }
-	@cp scenes/*.ini $(BUILD)/fuzz/smoke/scene/ && cp tests/fuzz/png_corpus/* $(BUILD)/fuzz/smoke/png/
+	@$(call replay,$(FUZZ_BIN),scene,tests/fuzz/regressions/* $(FUZZ_SCENE_SEEDS))
+	@$(call replay,$(FUZZ_PNG_BIN),png,tests/fuzz/png_regressions/* tests/fuzz/png_corpus/*)
+	@$(call replay,$(FUZZ_TEXTURE_BIN),texture,tests/fuzz/texture_regressions/* $(FUZZ_TEXTURE_SEEDS))
+	@$(call replay,$(FUZZ_LIVE_BIN),live,tests/fuzz/live_regressions/* $(FUZZ_LIVE_SEEDS))
+	@cp $(FUZZ_SCENE_SEEDS) $(BUILD)/fuzz/smoke/scene/ && cp tests/fuzz/png_corpus/* $(BUILD)/fuzz/smoke/png/ && \
+	    cp $(FUZZ_TEXTURE_SEEDS) $(BUILD)/fuzz/smoke/texture/ && cp $(FUZZ_LIVE_SEEDS) $(BUILD)/fuzz/smoke/live/
 	@$(call run_fuzzer,$(FUZZ_BIN),$(BUILD)/fuzz/smoke/scene,$(BUILD)/fuzz/smoke,8192,$(FUZZ_SMOKE_TIME))
 	@$(call run_fuzzer,$(FUZZ_PNG_BIN),$(BUILD)/fuzz/smoke/png,$(BUILD)/fuzz/smoke,65536,$(FUZZ_SMOKE_TIME))
+	@$(call run_fuzzer,$(FUZZ_TEXTURE_BIN),$(BUILD)/fuzz/smoke/texture,$(BUILD)/fuzz/smoke,65536,$(FUZZ_SMOKE_TIME))
+	@$(call run_fuzzer,$(FUZZ_LIVE_BIN),$(BUILD)/fuzz/smoke/live,$(BUILD)/fuzz/smoke,16384,$(FUZZ_SMOKE_TIME))
 
 # ---- dependencies (Debian) -------------------------------------------------
 # M32=1: the multilib compiler (installed) and Debian's i386 libraries

@@ -5,14 +5,17 @@
  * a frame and of a prewarm (isk_effect_def.max_work, `--max-work`) is
  * estimated at create and refused above the budget, naming what needs it. */
 #include <criterion/criterion.h>
+#include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
+#include "iskra/anim.h"
 #include "iskra/effect.h"
 #include "iskra/png.h"
 #include "iskra/scene.h"
 #include "iskra/texture.h"
+#include "play_session.h"
 #include "tool_cli.h"
 
 #define DIR "out/test_budgets"
@@ -217,5 +220,179 @@ Test(budgets, max_work_option)
         e = cli_slurp(DIR "/mw/stderr.txt");
         cr_assert_not_null(strstr(e, "--max-work"), "%s: %s", a, e);
         free(e);
+    }
+}
+
+/* ---- what `iskra render` holds beside the effect -------------------------------- */
+
+/* The writers' own memory: GIF's tables grow with the frame's pixels
+ * (hash slots, colours, each pixel's colour and index, the sort's copy),
+ * Y4M keeps a row, raw frames nothing; a PNG writer keeps rows. */
+Test(budgets, writers_say_what_they_hold)
+{
+    isk_anim_opts gif = {ISK_ANIM_GIF, 1000, 1000, 30}, y4m = {ISK_ANIM_Y4M, 1000, 1000, 30},
+                  raw = {ISK_ANIM_RAW, 1000, 1000, 0};
+    /* per pixel: an index (1), its colour (4), a colour entry (12), its sorted copy (24), two hash slots (8) */
+    cr_assert_geq(isk_anim_memory(&gif), (size_t)1000 * 1000 * (1 + 4 + 12 + 24 + 8));
+    cr_assert_lt(isk_anim_memory(&gif), (size_t)1000 * 1000 * (1 + 4 + 12 + 24 + 16) + ((size_t)1 << 20));
+    gif.width = 2000;
+    cr_assert_gt(isk_anim_memory(&gif), (size_t)2000 * 1000 * 49);
+    cr_assert_geq(isk_anim_memory(&y4m), 1000u);
+    cr_assert_lt(isk_anim_memory(&y4m), 4096u);
+    cr_assert_lt(isk_anim_memory(&raw), 1024u);
+    raw.width = 0;
+    cr_assert_eq(isk_anim_memory(&raw), 0u);
+    cr_assert_eq(isk_anim_memory(NULL), 0u);
+    cr_assert_gt(isk_png_write_memory(4000), isk_png_write_memory(1000) + 5 * 3000 * 4 - 1);
+    cr_assert_eq(isk_png_write_memory(0), 0u);
+}
+
+/* A GIF or a strip too big for --max-memory is refused before anything is
+ * written, exit 2, the message naming what needs the memory. */
+Test(budgets, render_counts_its_writers_and_strip)
+{
+    cli_fresh(DIR "/host");
+    /* 2000 x 2000 GIF frames: the writer's tables take about 190 MiB */
+    cr_assert_eq(cli_run(DIR "/host", "render preset_rain --size 2000x2000 --frames 2 --out " DIR "/host/x.gif "
+                                      "--max-memory 100M"), 2);
+    char *e = cli_slurp(DIR "/host/stderr.txt");
+    cr_assert_not_null(strstr(e, "more than the limit of 100 MiB (iskra render's GIF writer (2000 x 2000 frames) "
+                                 "188 MiB, the 2000 x 2000 canvas 15 MiB"), "%s", e);
+    cr_assert_not_null(strstr(e, "--max-memory"), "%s", e);
+    free(e);
+    cr_assert_not(cli_exists(DIR "/host/x.gif"));
+    /* six panels of 1000 x 1000: a 6020 x 1000 strip, 23 MiB */
+    cr_assert_eq(cli_run(DIR "/host", "render preset_rain --size 2000x2000 --frames 12 --every 2 --strip "
+                                      DIR "/host/s.png --max-memory 30M"), 2);
+    e = cli_slurp(DIR "/host/stderr.txt");
+    cr_assert_not_null(strstr(e, "iskra render's strip (6020 x 1000) 24 MiB"), "%s", e);
+    free(e);
+    cr_assert_not(cli_exists(DIR "/host/s.png"));
+    /* within the limit it is written */
+    cr_assert_eq(cli_run(DIR "/host", "render preset_rain --size 2000x2000 --frames 12 --every 2 --strip "
+                                      DIR "/host/s.png --max-memory 48M"), 0);
+    cr_assert(cli_exists(DIR "/host/s.png"));
+    /* a strip wider than a canvas can be: a usage error, not "out of memory" */
+    cr_assert_eq(cli_run(DIR "/host", "render preset_rain --size 4000x100 --frames 12 --every 1 --strip "
+                                      DIR "/host/w.png"), 2);
+    e = cli_slurp(DIR "/host/stderr.txt");
+    cr_assert_not_null(strstr(e, "--strip: 12 panels of 2000 pixels would be wider than 16384 pixels"), "%s", e);
+    free(e);
+    cr_assert_not(cli_exists(DIR "/host/w.png"));
+}
+
+/* ---- a live change against the budgets --------------------------------------------- */
+
+static const char *const LIVE_SCENE =
+    "[scene]\nwidth = 200\nheight = 150\ndt = 1/60\nseed = 9\n"
+    "[view]\nxmin = -10\nxmax = 10\nymin = 0\nymax = 15\n"
+    "[force gravity]\ng = 9.81\n"
+    "[emitter sparks]\nsource = stream\nposition = 0, 1\nlaunch = cone\nangle = 90\nspread = 40\n"
+    "speed_min = 5\nspeed_max = 9\nrate = 300\nlife = 2\ncapacity = 4000\nforces = gravity\ndraw = disc\n"
+    "size = 0.1\n";
+
+static isk_effect *live_effect(double max_work, size_t max_memory)
+{
+    isk_effect_def d;
+    isk_error err = {0};
+    cr_assert_eq(isk_scene_load_string(&d, LIVE_SCENE, "live.ini", &err), ISK_OK, "%s", err.message);
+    d.max_work = max_work;
+    d.max_memory = max_memory;
+    isk_effect *fx;
+    cr_assert_eq(isk_effect_create(&fx, &d, &err), ISK_OK, "%s", err.message);
+    isk_effect_def_free(&d);
+    return fx;
+}
+
+/* Frames 0..frames of fx into one buffer (the canvas after each step). */
+static void run_frames(isk_effect *fx, int frames, uint8_t *out)
+{
+    isk_canvas c;
+    cr_assert_eq(isk_canvas_init(&c, 200, 150), ISK_OK);
+    for (int f = 0; f < frames; f++) {
+        cr_assert_eq(isk_effect_step_render(fx, &c), ISK_OK);
+        memcpy(out + (size_t)f * 200 * 150 * 4, c.pixels, (size_t)200 * 150 * 4);
+    }
+    isk_canvas_free(&c);
+}
+
+/* A change that would take the effect over its work budget (the estimate
+ * of create: here the discs' pixels, or the particles a longer life keeps)
+ * or its memory budget (a bigger pool) is refused with create's message
+ * and changes nothing: the frames after it are those of a twin never
+ * asked; a change within the budgets is taken. */
+Test(budgets, a_live_change_over_a_budget_changes_nothing)
+{
+    enum { FRAMES = 40 };
+    const size_t bytes = (size_t)FRAMES * 200 * 150 * 4;
+    uint8_t *want = malloc(bytes), *got = malloc(bytes);
+    cr_assert(want && got);
+    isk_effect *twin = live_effect(1e5, (size_t)64 << 20);
+    run_frames(twin, 10, want);
+    isk_effect *fx = live_effect(1e5, (size_t)64 << 20);
+    run_frames(fx, 10, got);
+    static const char *const refused[][3] = {
+        {"emitter sparks", "size", "2"},           /* 601 discs of 22 x 22 px: 3e5 pixels */
+        {"emitter sparks", "life", "60"},          /* 4000 particles alive */
+        {"emitter sparks", "rate", "3000"},        /* 4000 too */
+        {"emitter sparks", "trail", "64"},         /* 64 segments each */
+        {"scene", "substeps", "50"},
+        {"view", "xmax", "-9.9"},                  /* zoomed in: each disc 25 times wider */
+        {"emitter sparks", "capacity", "3000000"}, /* its pool: 64 MiB and more */
+    };
+    for (size_t i = 0; i < sizeof refused / sizeof refused[0]; i++) {
+        char before[64], after[64];
+        isk_error err = {0};
+        cr_assert_eq(isk_effect_get(fx, refused[i][0], refused[i][1], before, sizeof before, &err), ISK_OK);
+        cr_assert_eq(isk_effect_set(fx, refused[i][0], refused[i][1], refused[i][2], &err), ISK_ERR_SIZE,
+                     "[%s] %s = %s: taken", refused[i][0], refused[i][1], refused[i][2]);
+        const char *budget = strcmp(refused[i][1], "capacity") ? "--max-work" : "--max-memory";
+        cr_assert_not_null(strstr(err.message, budget), "[%s] %s: %s", refused[i][0], refused[i][1], err.message);
+        cr_assert_not_null(strstr(err.message, refused[i][1]), "%s", err.message);
+        cr_assert_eq(isk_effect_get(fx, refused[i][0], refused[i][1], after, sizeof after, &err), ISK_OK);
+        cr_assert_str_eq(after, before);
+    }
+    run_frames(twin, FRAMES, want);
+    run_frames(fx, FRAMES, got);
+    cr_assert(!memcmp(want, got, bytes), "a refused change changed the frames after it");
+    /* within the budget: taken, and the frames change */
+    isk_error err = {0};
+    cr_assert_eq(isk_effect_set(fx, "emitter sparks", "size", "0.3", &err), ISK_OK, "%s", err.message);
+    run_frames(fx, 2, got);
+    run_frames(twin, 2, want);
+    cr_assert(memcmp(want, got, (size_t)2 * 200 * 150 * 4));
+    isk_effect_destroy(fx);
+    isk_effect_destroy(twin);
+    free(want);
+    free(got);
+}
+
+/* The simulator's panel goes through isk_effect_set: a size typed into
+ * the inspector that would take a frame over --max-work is refused (the
+ * saved scene keeps the old one), one within it is taken. */
+Test(budgets, the_panel_refuses_a_change_over_the_work_budget)
+{
+    static const struct {
+        const char *typed, *saved;
+    } cases[] = {{"100", "0.09"}, {"0.2", "0.2"}};
+    for (int i = 0; i < 2; i++) {
+        char dir[64], args[600];
+        snprintf(dir, sizeof dir, DIR "/panel%d", i);
+        snprintf(args, sizeof args,
+                 "fire_campfire --max-work 1e7 --screen 1280x720 --frames 12 --save %s/s.ini --script "
+                 "'press:emitter-sparks/size wait:2 type:%s key:return wait:2 f2'",
+                 dir, cases[i].typed);
+        cr_assert_eq(play_session(dir, args), 0, "%s", play_stderr(dir));
+        char path[96];
+        snprintf(path, sizeof path, "%s/s.ini", dir);
+        isk_effect_def d;
+        isk_error err = {0};
+        cr_assert_eq(isk_scene_load_file(&d, path, &err), ISK_OK, "%s", err.message);
+        const int k = isk_effect_def_find_emitter(&d, "sparks");
+        cr_assert_geq(k, 0);
+        char want[32];
+        snprintf(want, sizeof want, "%.15g", d.emitters[k].look.size);
+        cr_assert_str_eq(want, cases[i].saved, "typed %s", cases[i].typed);
+        isk_effect_def_free(&d);
     }
 }

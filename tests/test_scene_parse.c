@@ -3,6 +3,7 @@
  * errors as exact FILE:LINE messages with did-you-mean, bounds. */
 #include <criterion/criterion.h>
 #include <math.h>
+#include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -483,11 +484,18 @@ Test(scene_errors, kinds_and_required_keys)
 
 Test(scene_bounds, line_too_long)
 {
-    char text[400];
+    static char text[70000];
     memset(text, 'a', sizeof text);
     memcpy(text, "[scene]\nx=", 10);
-    text[sizeof text - 1] = 0;
-    load_fails(text, "t.ini:2: line too long (at most 199 characters)");
+    text[8 + 65536] = 0; /* line 2: 65536 characters */
+    load_fails(text, "t.ini:2: line too long (at most 65535 characters)");
+    text[8 + 65535] = 0; /* one fewer is read, and x is no key of [scene] */
+    isk_effect_def d;
+    isk_error err = {0};
+    cr_assert_neq(isk_scene_load_string(&d, text, "t.ini", &err), ISK_OK);
+    cr_assert(!strncmp(err.message, "t.ini:2: ", 9) && strstr(err.message, "'x'") && !strstr(err.message, "too long"),
+              "%.200s", err.message);
+    isk_effect_def_free(&d);
 }
 
 Test(scene_bounds, too_many_emitters)
@@ -567,4 +575,71 @@ Test(scene_builtin, lookup_file_first_then_name)
     cr_assert_str_eq(err.message, "fig12_gravty: no such file or built-in scene; did you mean fig12_gravity?");
     cr_assert_eq(isk_scene_load(&d, "nothing/here.ini", &err), ISK_ERR_IO);
     isk_effect_def_free(&d);
+}
+
+/* ---- long lines: a 64-point polyline, a chain of every deflector ----------------------- */
+
+/* Appends to a growing text (aborts the test when it cannot). */
+static void add(char **text, size_t *len, const char *fmt, ...)
+{
+    va_list ap;
+    va_start(ap, fmt);
+    char piece[256];
+    int n = vsnprintf(piece, sizeof piece, fmt, ap);
+    va_end(ap);
+    cr_assert(n > 0 && n < (int)sizeof piece);
+    *text = realloc(*text, *len + (size_t)n + 1);
+    cr_assert_not_null(*text);
+    memcpy(*text + *len, piece, (size_t)n + 1);
+    *len += (size_t)n;
+}
+
+/* Lines of several thousand characters at full precision (%.17g) load,
+ * save and load again to the same definition and the same text. */
+Test(scene_bounds, long_lines_round_trip)
+{
+    char *text = NULL;
+    size_t len = 0;
+    add(&text, &len, "[scene]\nwidth = 64\nheight = 64\n[view]\nxmin = -1\nxmax = 1\nymin = -1\nymax = 1\n");
+    enum { DEFLECTORS = ISK_EFFECT_MAX_DEFLECTORS, POINTS = 64 };
+    double want[2 * POINTS];
+    for (int i = 0; i < DEFLECTORS; i++)
+        add(&text, &len, "[deflector a_long_deflector_name_%04d]\nsegment = %.17g, %.17g, %.17g, %.17g\n", i,
+            -0.1234567890123456789 * i, 1.0 / 3.0 + i, 2.0 / 7.0 - i, 1e-17 * i);
+    add(&text, &len, "[emitter e]\nsource = particle\ndeflectors = ");
+    for (int i = 0; i < DEFLECTORS; i++)
+        add(&text, &len, "%sa_long_deflector_name_%04d", i ? ", " : "", i);
+    add(&text, &len, "\n[drawing path]\nkind = polyline\npoints = ");
+    for (int i = 0; i < 2 * POINTS; i++) {
+        want[i] = (i % 2 ? -1.0 : 1.0) * (0.1 + i / 3.0) * 1.0000000000000002;
+        add(&text, &len, "%s%.17g", i ? ", " : "", want[i]);
+    }
+    add(&text, &len, "\n");
+    const char *chain = strstr(text, "deflectors = "), *pts = strstr(text, "points = ");
+    cr_assert_gt(strcspn(chain, "\n"), 7000);
+    cr_assert_gt(strcspn(pts, "\n"), 2500);
+
+    isk_effect_def d, again;
+    isk_error err = {0};
+    cr_assert_eq(isk_scene_load_string(&d, text, "long.ini", &err), ISK_OK, "%s", err.message);
+    cr_assert_eq(d.emitters[0].motion.ndeflectors, DEFLECTORS);
+    cr_assert_eq(d.emitters[0].motion.deflectors[DEFLECTORS - 1], DEFLECTORS - 1);
+    cr_assert_eq(d.drawings[0].npoints, POINTS);
+    cr_assert(!memcmp(d.drawings[0].points, want, sizeof want), "the points are not read exactly");
+    char *saved, *saved_again;
+    cr_assert_eq(isk_scene_write(&d, &saved, &err), ISK_OK, "%s", err.message);
+    cr_assert_eq(isk_scene_load_string(&again, saved, "saved.ini", &err), ISK_OK, "%s", err.message);
+    cr_assert_eq(again.drawings[0].npoints, POINTS);
+    cr_assert(!memcmp(again.drawings[0].points, want, sizeof want), "the points change on saving");
+    cr_assert_eq(again.emitters[0].motion.ndeflectors, DEFLECTORS);
+    for (int i = 0; i < DEFLECTORS; i++)
+        cr_assert(!memcmp(&again.deflectors[i].seg, &d.deflectors[i].seg, sizeof d.deflectors[i].seg),
+                  "deflector %d changes on saving", i);
+    cr_assert_eq(isk_scene_write(&again, &saved_again, &err), ISK_OK, "%s", err.message);
+    cr_assert_str_eq(saved, saved_again);
+    free(saved);
+    free(saved_again);
+    isk_effect_def_free(&d);
+    isk_effect_def_free(&again);
+    free(text);
 }

@@ -84,6 +84,14 @@ isk_status isk_anim_end(isk_anim *a, isk_error *err);
 /* Frees the writer without finishing the stream (after a failure). */
 void isk_anim_abort(isk_anim *a);
 
+/* The most memory a writer with these options holds at once, in bytes
+ * (isk_anim_begin's tables and every isk_anim_frame's scratch together:
+ * GIF's palette tables grow with the frame's pixels, Y4M keeps a row, raw
+ * nothing), so a program can count it in its budget before it writes
+ * anything (isk_effect_def.host_memory).  0 for NULL options or a frame
+ * size isk_anim_begin refuses. */
+size_t isk_anim_memory(const isk_anim_opts *o);
+
 /* Frames written so far (0 for NULL). */
 long isk_anim_count(const isk_anim *a);
 

@@ -597,8 +597,11 @@ typedef struct isk_effect_def {
      * 0: ISK_EFFECT_DEFAULT_MAX_WORK. */
     double max_work;
     /* Memory the program needs beside the effect (its encoders, another
-     * canvas), counted against max_memory with the effect's; 0: none. */
+     * canvas), counted against max_memory with the effect's; 0: none.
+     * host_memory_for names it in a refusal ("the GIF encoder (800 x 600
+     * frames)"); empty: "the program's own". */
     size_t host_memory;
+    char host_memory_for[96];
 } isk_effect_def;
 
 /* Defaults as documented on each field; no forces, emitters or drawings. */

@@ -62,6 +62,12 @@ isk_status isk_png_write(const isk_canvas *c, const char *path, isk_error *err);
 /* Writes the PNG to an open stream (left open); `name` labels messages. */
 isk_status isk_png_write_stream(const isk_canvas *c, FILE *f, const char *name, isk_error *err);
 
+/* The most memory isk_png_write holds at once for rows `width` pixels
+ * wide, in bytes: libpng's row buffers (one row at a time; the filters'
+ * trials) and zlib's compressor; the image itself is never copied.  For a
+ * program's memory budget (isk_effect_def.host_memory); 0 for width < 1. */
+size_t isk_png_write_memory(int width);
+
 /* What a PNG's header says, read without decoding any pixels. */
 typedef struct isk_png_info {
     int width, height;

@@ -28,8 +28,8 @@
  * key and what was expected, with a did-you-mean for misspelt sections, keys,
  * enum values and references.  Unknown sections and keys, duplicate keys and
  * sections, and references to undefined forces/deflectors/emitters are
- * errors.  Input is bounded: ISK_INI_MAX_BYTES of text, lines of at most 199
- * characters, and counts capped by the ISK_EFFECT_MAX_* limits of effect.h.
+ * errors.  Input is bounded: ISK_INI_MAX_BYTES of text, lines of at most
+ * 65535 characters, and counts capped by the ISK_EFFECT_MAX_* limits of effect.h.
  *
  * On success *out holds the definition (free with isk_effect_def_free).  On
  * failure *out is an initialised, empty definition (freeing it is harmless)

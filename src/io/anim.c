@@ -9,9 +9,11 @@
 #include "io/anim_internal.h"
 
 static const anim_format formats[ISK_ANIM_FORMAT_COUNT] = {
-    [ISK_ANIM_GIF] = {"gif", ".gif", 1, isk__gif_begin, isk__gif_frame, isk__gif_end, isk__gif_release},
-    [ISK_ANIM_Y4M] = {"y4m", ".y4m", 1, isk__y4m_begin, isk__y4m_frame, isk__stream_end, isk__stream_release},
-    [ISK_ANIM_RAW] = {"raw", NULL, 0, NULL, isk__raw_frame, isk__stream_end, isk__stream_release},
+    [ISK_ANIM_GIF] = {"gif", ".gif", 1, isk__gif_begin, isk__gif_frame, isk__gif_end, isk__gif_release,
+                      isk__gif_memory},
+    [ISK_ANIM_Y4M] = {"y4m", ".y4m", 1, isk__y4m_begin, isk__y4m_frame, isk__stream_end, isk__stream_release,
+                      isk__y4m_memory},
+    [ISK_ANIM_RAW] = {"raw", NULL, 0, NULL, isk__raw_frame, isk__stream_end, isk__stream_release, isk__raw_memory},
 };
 
 const char *isk_anim_format_name(isk_anim_format f)
@@ -95,6 +97,14 @@ void isk_anim_abort(isk_anim *a)
     if (a->fmt && a->fmt->release)
         a->fmt->release(a);
     free(a);
+}
+
+size_t isk_anim_memory(const isk_anim_opts *o)
+{
+    if (!o || (unsigned)o->format >= (unsigned)ISK_ANIM_FORMAT_COUNT || o->width < 1 || o->height < 1 ||
+        o->width > ISK_CANVAS_MAX_DIM || o->height > ISK_CANVAS_MAX_DIM)
+        return 0;
+    return sizeof(isk_anim) + formats[o->format].memory(o);
 }
 
 long isk_anim_count(const isk_anim *a)

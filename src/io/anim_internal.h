@@ -14,6 +14,7 @@ typedef struct anim_format {
     isk_status (*frame)(isk_anim *a, const isk_canvas *c, isk_error *err);
     isk_status (*end)(isk_anim *a, isk_error *err); /* finishes the stream */
     void (*release)(isk_anim *a);                   /* frees a->state */
+    size_t (*memory)(const isk_anim_opts *o);       /* the most it holds at once (isk_anim_memory) */
 } anim_format;
 
 struct isk_anim {
@@ -29,10 +30,13 @@ isk_status isk__gif_begin(isk_anim *a, isk_error *err);
 isk_status isk__gif_frame(isk_anim *a, const isk_canvas *c, isk_error *err);
 isk_status isk__gif_end(isk_anim *a, isk_error *err);
 void isk__gif_release(isk_anim *a);
+size_t isk__gif_memory(const isk_anim_opts *o);
 isk_status isk__y4m_begin(isk_anim *a, isk_error *err);
 isk_status isk__y4m_frame(isk_anim *a, const isk_canvas *c, isk_error *err);
 isk_status isk__raw_frame(isk_anim *a, const isk_canvas *c, isk_error *err);
 isk_status isk__stream_end(isk_anim *a, isk_error *err); /* fflush + error check */
 void isk__stream_release(isk_anim *a);
+size_t isk__y4m_memory(const isk_anim_opts *o);
+size_t isk__raw_memory(const isk_anim_opts *o);
 
 #endif

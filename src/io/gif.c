@@ -11,6 +11,9 @@
 #include "io/quantize.h"
 
 #define MIN_DELAY_CS 2 /* browsers play 0 and 1 as 10 */
+/* giflib's own while writing: its handle, the LZW hash table (8192 32-bit
+ * entries) and a colour map per frame, with room to spare. */
+#define GIFLIB_BYTES ((size_t)64 << 10)
 
 typedef struct gif_state {
     GifFileType *gif;
@@ -127,6 +130,12 @@ isk_status isk__gif_end(isk_anim *a, isk_error *err)
         return isk_error_set(err, ISK_ERR_IO, "gif: write failed: %s",
                              errno ? strerror(errno) : "disk full, or the reader went away?");
     return ISK_OK;
+}
+
+size_t isk__gif_memory(const isk_anim_opts *o)
+{
+    const size_t npix = (size_t)o->width * (size_t)o->height;
+    return sizeof(gif_state) + npix /* indices */ + isk__quant_bytes(npix) + GIFLIB_BYTES;
 }
 
 void isk__gif_release(isk_anim *a)

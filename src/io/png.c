@@ -89,6 +89,20 @@ static int write_rows(png_structp png, png_infop pi, const isk_canvas *c)
     return 1;
 }
 
+/* zlib's deflate at the default window and memLevel takes 256 KiB and an
+ * 8 KiB output buffer; libpng's handles are a few KiB: room to spare. */
+#define PNG_WRITER_BYTES ((size_t)512 << 10)
+/* libpng's row buffers while writing: the row, the previous row and the
+ * filters' trial rows, each a filter byte longer. */
+#define PNG_WRITER_ROWS 5
+
+size_t isk_png_write_memory(int width)
+{
+    if (width < 1)
+        return 0;
+    return PNG_WRITER_ROWS * ((size_t)width * 4u + 1u) + PNG_WRITER_BYTES;
+}
+
 isk_status isk_png_write_stream(const isk_canvas *c, FILE *f, const char *name, isk_error *err)
 {
     isk_status s = check_canvas(c, "write", err);

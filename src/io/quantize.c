@@ -8,6 +8,21 @@
 #define MAX_COLORS 256
 #define MAX_SLOTS ((size_t)1 << 25) /* > 2 x 2^24 distinct colours at most */
 
+/* The hash table's slots: a power of two, at least twice the pixels. */
+static size_t slots_for(size_t max_pixels)
+{
+    size_t slots = 1024;
+    while (slots < 2 * max_pixels && slots < MAX_SLOTS)
+        slots *= 2;
+    return slots;
+}
+
+/* At most one entry per pixel, and there are 2^24 colours. */
+static size_t entries_for(size_t max_pixels)
+{
+    return max_pixels < ((size_t)1 << 24) ? max_pixels : ((size_t)1 << 24);
+}
+
 isk_status isk__quant_init(isk__quant *q, size_t max_pixels)
 {
     if (!q)
@@ -15,10 +30,7 @@ isk_status isk__quant_init(isk__quant *q, size_t max_pixels)
     memset(q, 0, sizeof *q);
     if (max_pixels == 0 || max_pixels > (size_t)ISK_CANVAS_MAX_DIM * ISK_CANVAS_MAX_DIM)
         return ISK_ERR_SIZE;
-    size_t slots = 1024;
-    while (slots < 2 * max_pixels && slots < MAX_SLOTS)
-        slots *= 2;
-    size_t max_entries = max_pixels < ((size_t)1 << 24) ? max_pixels : ((size_t)1 << 24);
+    size_t slots = slots_for(max_pixels), max_entries = entries_for(max_pixels);
     q->slots = malloc(slots * sizeof *q->slots);
     q->entries = malloc(max_entries * sizeof *q->entries);
     q->rgb = malloc(max_pixels * sizeof *q->rgb);
@@ -71,6 +83,13 @@ typedef struct keyed {
     uint64_t key;
     isk__quant_entry e;
 } keyed;
+
+size_t isk__quant_bytes(size_t max_pixels)
+{
+    const size_t entries = entries_for(max_pixels);
+    return slots_for(max_pixels) * sizeof(uint32_t) + entries * sizeof(isk__quant_entry) +
+           max_pixels * sizeof(uint32_t) + entries * sizeof(keyed);
+}
 
 static int cmp_keyed(const void *a, const void *b)
 {

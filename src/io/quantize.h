@@ -50,6 +50,10 @@ typedef struct isk__quant {
 /* Room for frames of up to max_pixels pixels.  ISK_ERR_SIZE, ISK_ERR_NOMEM. */
 isk_status isk__quant_init(isk__quant *q, size_t max_pixels);
 void isk__quant_free(isk__quant *q);
+/* The most isk__quant_init and isk__quant_frame hold at once for frames of
+ * max_pixels pixels: the tables, and a frame's sort (its copy of the
+ * colours with their keys). */
+size_t isk__quant_bytes(size_t max_pixels);
 
 /* Palette (n RGB triples, 1 <= n <= 256) and one index per pixel, row by
  * row, for a canvas of at most max_pixels pixels. */

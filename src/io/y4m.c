@@ -29,6 +29,17 @@ static isk_status write_failed(const isk_anim *a, isk_error *err)
                          errno ? strerror(errno) : "disk full, or the reader went away?");
 }
 
+size_t isk__y4m_memory(const isk_anim_opts *o)
+{
+    return sizeof(y4m_state) + (size_t)o->width; /* one plane's row */
+}
+
+size_t isk__raw_memory(const isk_anim_opts *o)
+{
+    (void)o;
+    return 0; /* the rows go out as they are */
+}
+
 isk_status isk__y4m_begin(isk_anim *a, isk_error *err)
 {
     y4m_state *s = calloc(1, sizeof *s);

@@ -81,8 +81,11 @@ static void memory_parts(const isk_effect_def *d, fx_need_fn need, void *ctx)
     }
     snprintf(what, sizeof what, "the %d x %d canvas", d->width, d->height);
     need(ctx, 4.0 * (double)(d->width > 0 ? d->width : 0) * (double)(d->height > 0 ? d->height : 0), what);
-    if (d->host_memory)
-        need(ctx, (double)d->host_memory, "the program's own (its encoders)");
+    if (d->host_memory) {
+        const int named = d->host_memory_for[0] && memchr(d->host_memory_for, 0, sizeof d->host_memory_for);
+        snprintf(what, sizeof what, "%s", named ? d->host_memory_for : "the program's own");
+        need(ctx, (double)d->host_memory, what);
+    }
 }
 
 static void add_need(void *ctx, double amount, const char *what)
@@ -158,7 +161,8 @@ int isk__fx_memory_over(const isk_effect_def *d, char *msg, size_t n)
     char a[40], b[40];
     bytes_text(l.total, a, sizeof a);
     bytes_text((double)limit, b, sizeof b);
-    size_t used = (size_t)snprintf(msg, n, "the effect could need %s at its fullest, more than the limit of %s (", a, b);
+    size_t used = (size_t)snprintf(msg, n, "the effect could need %s at its fullest%s, more than the limit of %s (", a,
+                                   d->host_memory ? " with what the program holds beside it" : "", b);
     for (int k = 0; k < l.n; k++) {
         char e[40];
         bytes_text(l.amount[k], e, sizeof e);
@@ -166,9 +170,9 @@ int isk__fx_memory_over(const isk_effect_def *d, char *msg, size_t n)
                                  l.what[k], e);
     }
     snprintf(msg + (used < n ? used : n), used < n ? n - used : 0,
-             "%s): lower the capacities, sizes or grids, or raise the limit (--max-memory, "
+             "%s): lower the capacities, sizes or grids%s, or raise the limit (--max-memory, "
              "isk_effect_def.max_memory)",
-             l.n == FX_NEEDS_SHOWN ? ", ..." : "");
+             l.n == FX_NEEDS_SHOWN ? ", ..." : "", d->host_memory ? " or what is written" : "");
     return 1;
 }
 

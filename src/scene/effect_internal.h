@@ -460,8 +460,13 @@ void isk__fx_looks_adopt(fx_group *g, size_t from);
  * effect_texture.c; messages name the texture.  No file is read. */
 isk_status isk__fx_looks_prepare(isk_effect *e, fx_group *g, isk_error *err);
 void isk__fx_looks_free(fx_group *g);
-/* Adds the columns a live change needs; ISK_ERR_NOMEM. */
-isk_status isk__fx_looks_live(fx_group *g);
+/* After a live change: the streak a sprite kind is drawn through, made or
+ * unmade as the definition now says (from the definition alone, so it is
+ * redone from the old one when the change is refused)... */
+isk_status isk__fx_looks_streak(fx_group *g);
+/* ... and, once the change is accepted, the columns its looks now need
+ * (the particles there get the emitter's size and colour). */
+isk_status isk__fx_looks_columns_live(fx_group *g);
 /* What spans the looks' keys: NULL, or the key at fault with why. */
 const char *isk__fx_looks_check(const isk_emitter_def *em, char *why, size_t n);
 void isk__fx_looks_describe(const fx_group *g, FILE *out);

@@ -118,12 +118,18 @@ typedef struct live_report {
     fx_report r;
     const isk_effect_def *d;
     isk_error *err;
+    const char *label, *key; /* the change: "[emitter sparks]", "capacity" */
 } live_report;
 
 static void live_emit(fx_report *r, isk_status s, isk_section_kind section, int index, const char *key, int show_key,
                       const char *msg)
 {
     const live_report *lr = (const live_report *)r;
+    if (section == ISK_SECTION_SCENE && !key) {
+        /* the whole definition's (its memory): named by the change that did it */
+        isk_error_set(lr->err, s, "%s %s: %s", lr->label, lr->key, msg);
+        return;
+    }
     const char *name = isk__fx_item_name(lr->d, section, index);
     isk_error_set(lr->err, s, "[%s%s%s] %s%s%s", isk_section_name(section), *name ? " " : "", name,
                   key && show_key ? key : "", key && show_key ? ": " : "", msg);
@@ -171,7 +177,13 @@ static void rebase_stream(isk_effect *e, fx_group *g, double old_rate)
     g->emitted = 0;
 }
 
-static isk_status apply(isk_effect *e, const where *w, const isk_key *k, const void *old_item)
+/* What follows from the definition alone: the view, the draw order, a
+ * sprite kind's streak, the potentials' parameters and every group's
+ * lists.  Done before the work budget is counted (it reads them), and
+ * done again from the old definition when the change is refused, which
+ * leaves the effect as it was (only what rested is forgotten, and a
+ * resting particle gives the same bytes either way). */
+static isk_status derive(isk_effect *e, const where *w, const isk_key *k)
 {
     isk_effect_def *d = &e->def;
     isk_status s = ISK_OK;
@@ -185,37 +197,47 @@ static isk_status apply(isk_effect *e, const where *w, const isk_key *k, const v
         if (d->forces[w->index].kind == ISK_FORCE_POTENTIAL)
             update_potentials(e, w->index, k->name);
         break;
-    case ISK_SECTION_EMITTER: {
-        fx_group *g = &e->groups[w->index];
-        const isk_emitter_def *em = g->def, *old = old_item;
+    case ISK_SECTION_EMITTER:
         if (!strcmp(k->name, "order"))
             isk__fx_sort_draw_order(e);
-        if (k->type == ISK_KEY_COLOR_STOPS || k->type == ISK_KEY_SCALAR_STOPS) {
-            isk__fx_free_ramps(g);
-            s = isk__fx_bake_ramps(g, NULL);
-        }
-        if (isk__fx_emitter_oscillates(em) && !g->store.osc_amp)
-            s = isk_particles_add_columns(&g->store, ISK_PARTICLES_OSC);
-        if (s == ISK_OK)
-            s = isk__fx_looks_live(g);
-        if (s == ISK_OK)
-            s = isk__fx_events_columns(g); /* on_hit, trail */
-        if (!strcmp(k->name, "rate") && em->born.source == ISK_SOURCE_STREAM) {
-            rebase_stream(e, g, old->born.rate);
-            isk__fx_stream_rate_changed(e, g);
-        }
-        if ((!strcmp(k->name, "position") || !strcmp(k->name, "emitter_velocity")) &&
-            em->born.source == ISK_SOURCE_STREAM)
-            isk__fx_path_changed(e, g, old, k->name); /* births spread along the way: no gap */
-        /* started again: what fell due meanwhile is skipped, not caught up */
-        const int ran = old->born.active && !old->motion.paused, runs = em->born.active && !em->motion.paused;
-        if (!ran && runs && em->born.source == ISK_SOURCE_STREAM)
-            isk__fx_stream_resume(e, g);
+        s = isk__fx_looks_streak(&e->groups[w->index]);
         break;
-    }
     default:
         break;
     }
+    return s != ISK_OK ? s : isk__fx_compile_all(e);
+}
+
+/* What the running state keeps of an accepted change: an emitter's ramps,
+ * the columns its looks, sway, events and trails now need, a stream's
+ * next birth and a moved emitter's path. */
+static isk_status carry(isk_effect *e, const where *w, const isk_key *k, const void *old_item)
+{
+    if (w->section != ISK_SECTION_EMITTER)
+        return ISK_OK;
+    fx_group *g = &e->groups[w->index];
+    const isk_emitter_def *em = g->def, *old = old_item;
+    isk_status s = ISK_OK;
+    if (k->type == ISK_KEY_COLOR_STOPS || k->type == ISK_KEY_SCALAR_STOPS) {
+        isk__fx_free_ramps(g);
+        s = isk__fx_bake_ramps(g, NULL);
+    }
+    if (s == ISK_OK && isk__fx_emitter_oscillates(em) && !g->store.osc_amp)
+        s = isk_particles_add_columns(&g->store, ISK_PARTICLES_OSC);
+    if (s == ISK_OK)
+        s = isk__fx_looks_columns_live(g);
+    if (s == ISK_OK)
+        s = isk__fx_events_columns(g); /* on_hit, trail */
+    if (!strcmp(k->name, "rate") && em->born.source == ISK_SOURCE_STREAM) {
+        rebase_stream(e, g, old->born.rate);
+        isk__fx_stream_rate_changed(e, g);
+    }
+    if ((!strcmp(k->name, "position") || !strcmp(k->name, "emitter_velocity")) && em->born.source == ISK_SOURCE_STREAM)
+        isk__fx_path_changed(e, g, old, k->name); /* births spread along the way: no gap */
+    /* started again: what fell due meanwhile is skipped, not caught up */
+    const int ran = old->born.active && !old->motion.paused, runs = em->born.active && !em->motion.paused;
+    if (!ran && runs && em->born.source == ISK_SOURCE_STREAM)
+        isk__fx_stream_resume(e, g);
     return s != ISK_OK ? s : isk__fx_compile_all(e);
 }
 
@@ -261,17 +283,45 @@ isk_status isk_effect_set(isk_effect *e, const char *section, const char *key, c
     if ((s = isk__fx_key_parse(k, &copy, value, d, why, sizeof why)) != ISK_OK)
         return isk_error_set(err, s, "%s %s: %s", w.label, key, why);
     memcpy(item, &copy, size);
-    live_report lr = {{live_emit, NULL, ISK_OK}, d, err};
+    live_report lr = {{live_emit, NULL, ISK_OK}, d, err, w.label, key};
     if ((s = isk__fx_check_def(d, &lr.r)) != ISK_OK) {
         if (k->type == ISK_KEY_POINTS)
             free(copy.drawing.points);
         memcpy(item, &old, size);
         return s;
     }
+    /* The work it could then ask for, counted as at create: a change over
+     * the budget is refused and every derived thing made again from the
+     * old definition (the potentials' parameters too: kept aside). */
+    isk_potential *pots = NULL;
+    if (w.section == ISK_SECTION_FORCE && e->npots && !(pots = malloc(sizeof *pots * e->npots)))
+        s = ISK_ERR_NOMEM;
+    if (pots)
+        memcpy(pots, e->pots, sizeof *pots * e->npots);
+    if (s == ISK_OK && (s = derive(e, &w, k)) == ISK_OK)
+        s = isk__fx_work_fits(e, err);
+    else if (s != ISK_OK)
+        isk_error_set(err, s, "%s", isk_status_str(s));
+    if (s != ISK_OK) {
+        char why_refused[sizeof err->message];
+        snprintf(why_refused, sizeof why_refused, "%s", err ? err->message : "");
+        memcpy(item, &old, size);
+        if (pots)
+            memcpy(e->pots, pots, sizeof *pots * e->npots);
+        free(pots);
+        if (k->type == ISK_KEY_POINTS)
+            free(copy.drawing.points);
+        if (w.section == ISK_SECTION_FORCE)
+            isk__fx_compile_all(e); /* the potentials are back as they were, moved or not */
+        else
+            derive(e, &w, k);
+        return isk_error_set(err, s, "%s %s: %s", w.label, key, why_refused);
+    }
+    free(pots);
     if (k->type == ISK_KEY_POINTS)
         free(old.drawing.points);
     e->edits++;
-    s = apply(e, &w, k, &old);
+    s = carry(e, &w, k, &old);
     if (s != ISK_OK)
         return isk_error_set(err, s, "%s %s: %s", w.label, key, isk_status_str(s));
     return ISK_OK;

@@ -89,7 +89,7 @@ static int streaks(const isk_emitter_def *em)
         (em->look.align == ISK_ALIGN_VELOCITY || em->look.size_range > 0);
 }
 
-isk_status isk__fx_looks_live(fx_group *g)
+isk_status isk__fx_looks_streak(fx_group *g)
 {
     const isk_emitter_def *em = g->def;
     /* align, size_range, draw or sprite may have made a streak of a sprite
@@ -103,6 +103,12 @@ isk_status isk__fx_looks_live(fx_group *g)
             g->texture = &g->streak;
         }
     }
+    return ISK_OK;
+}
+
+isk_status isk__fx_looks_columns_live(fx_group *g)
+{
+    const isk_emitter_def *em = g->def;
     const unsigned want = isk__fx_looks_columns(em);
     if (!(want & ~g->store.flags))
         return ISK_OK;

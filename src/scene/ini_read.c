@@ -2,6 +2,7 @@
 /* INI reading with line numbers on top of libinih (see ini_read.h). */
 #include "ini_read.h"
 
+#include <ctype.h>
 #include <errno.h>
 #include <ini.h>
 #include <stdarg.h>
@@ -9,11 +10,18 @@
 #include <stdlib.h>
 #include <string.h>
 
+/* libinih keeps the current section name in a buffer of this size
+ * (MAX_SECTION in its ini.c): longer names reach the key callback cut. */
+#define INIH_SECTION_MAX 50
+
 typedef struct reader {
     const char *text;   /* remaining input */
     const char *name;
-    int line;           /* number of the line last handed to libinih */
-    isk_ini_section_fn section;
+    int line;           /* number of the line last read (libinih counts the same) */
+    size_t split_from;  /* a line longer than this is split here, not by libinih */
+    char section[INIH_SECTION_MAX]; /* libinih's name of the current section */
+    char *long_line;    /* room for one line the reader splits itself */
+    isk_ini_section_fn section_fn;
     isk_ini_key_fn fn;
     void *user;
     isk_error *err;
@@ -67,12 +75,18 @@ static const char *classify(reader *r, char *s, size_t len)
             after++;
         if (after < e && *after != ';' && *after != '#')
             return "unexpected text after ']' (a comment starts with ';')";
-        if (r->section) {
-            char header[ISK_INI_MAX_LINE + 1];
-            size_t n = (size_t)(close - s - 1);
-            memcpy(header, s + 1, n);
-            header[n] = 0;
-            if (r->section(r->user, header, r->line, r->err) != ISK_OK) {
+        /* the header, whole, to the section callback; libinih's copy of
+         * the name is cut (strncpy0 into INIH_SECTION_MAX bytes) */
+        const size_t n = (size_t)(close - s - 1);
+        const size_t kept = n < INIH_SECTION_MAX - 1 ? n : INIH_SECTION_MAX - 1;
+        memcpy(r->section, s + 1, kept);
+        r->section[kept] = 0;
+        if (r->section_fn) {
+            const char saved = s[1 + n];
+            s[1 + n] = 0;
+            isk_status st = r->section_fn(r->user, s + 1, r->line, r->err);
+            s[1 + n] = saved;
+            if (st != ISK_OK) {
                 r->failed = 1;
                 return NULL;
             }
@@ -90,8 +104,72 @@ static const char *classify(reader *r, char *s, size_t len)
     return NULL;
 }
 
+/* ---- the long route: a line split by libinih's own rules ------------------- */
+
+/* libinih's blanks are isspace's; its helpers, on a NUL-terminated line. */
+static char *inih_rstrip(char *s)
+{
+    char *p = s + strlen(s);
+    while (p > s && isspace((unsigned char)p[-1]))
+        *--p = 0;
+    return s;
+}
+
+static char *inih_lskip(char *s)
+{
+    while (*s && isspace((unsigned char)*s))
+        s++;
+    return s;
+}
+
+/* The first of `chars` (NULL: none) or an inline comment (';' after a
+ * blank), or the end. */
+static char *inih_find(char *s, const char *chars)
+{
+    int was_space = 0;
+    while (*s && (!chars || !strchr(chars, *s)) && !(was_space && *s == ';')) {
+        was_space = isspace((unsigned char)*s);
+        s++;
+    }
+    return s;
+}
+
+/* What libinih does with one line (ini_parse_stream, with inline comments
+ * and a byte order mark allowed): trimmed, a comment or blank line
+ * ignored, a header setting the section, "name = value" or "name: value"
+ * split, the value cut at an inline comment, both trimmed, then the key
+ * callback.  classify() has refused every line libinih would (and already
+ * noted a header's section), and leading blanks are gone, so a line is
+ * never a continuation. */
+static void split_line(reader *r, char *line)
+{
+    char *start = line;
+    if (r->line == 1 && (unsigned char)start[0] == 0xEF && (unsigned char)start[1] == 0xBB &&
+        (unsigned char)start[2] == 0xBF)
+        start += 3;
+    start = inih_lskip(inih_rstrip(start));
+    if (!*start || *start == ';' || *start == '#' || *start == '[')
+        return;
+    char *end = inih_find(start, "=:");
+    if (*end != '=' && *end != ':')
+        return;
+    *end = 0;
+    char *name = inih_rstrip(start), *value = end + 1;
+    end = inih_find(value, NULL);
+    *end = 0;
+    value = inih_lskip(value);
+    inih_rstrip(value);
+    if (r->fn(r->user, r->section, name, value, r->line, r->err) != ISK_OK)
+        r->failed = 1;
+}
+
+/* ---- the reader ----------------------------------------------------------------- */
+
 /* libinih's ini_reader: like fgets, one line per call, leading blanks
- * removed; NULL (the end, for libinih) at a line it must not see. */
+ * removed; NULL (the end, for libinih) at a line it must not see.  A line
+ * longer than libinih's buffer (or than split_from) is split here by the
+ * same rules (split_line), and libinih gets a stand-in that keeps its line
+ * count and its section: an empty line, or the header as it keeps it. */
 static char *read_line(char *buf, int size, void *stream)
 {
     reader *r = stream;
@@ -100,7 +178,7 @@ static char *read_line(char *buf, int size, void *stream)
     const char *nl = strchr(r->text, '\n');
     size_t len = nl ? (size_t)(nl - r->text) : strlen(r->text);
     r->line++;
-    if (len > (size_t)size - 2 || len > ISK_INI_MAX_LINE) {
+    if (len > ISK_INI_MAX_LINE) {
         r->stop_line = r->line;
         r->stop_msg = "line too long";
         return NULL;
@@ -116,15 +194,33 @@ static char *read_line(char *buf, int size, void *stream)
         s++;
         len--;
     }
-    memcpy(buf, s, len);
-    buf[len] = 0;
-    const char *bad = classify(r, buf, len);
+    const int split_here = len > r->split_from || len + 2 > (size_t)size;
+    char *line = buf;
+    if (split_here) {
+        if (!r->long_line && !(r->long_line = malloc(ISK_INI_MAX_LINE + 1))) {
+            r->stop_line = r->line;
+            r->stop_msg = "out of memory";
+            return NULL;
+        }
+        line = r->long_line;
+    }
+    memcpy(line, s, len);
+    line[len] = 0;
+    const char *bad = classify(r, line, len);
     if (r->failed)
         return NULL;
     if (bad) {
         r->stop_line = r->line;
         r->stop_msg = bad;
         return NULL;
+    }
+    if (split_here) {
+        const int header = *line == '[';
+        split_line(r, line);
+        if (r->failed)
+            return NULL;
+        snprintf(buf, (size_t)size, header ? "[%s]\n" : "\n", r->section);
+        return buf;
     }
     buf[len] = '\n';
     buf[len + 1] = 0;
@@ -143,18 +239,29 @@ static int on_pair(void *user, const char *section, const char *key, const char 
     return 1;
 }
 
-isk_status isk__ini_parse(const char *text, const char *name, isk_ini_section_fn section, isk_ini_key_fn fn,
-                         void *user, isk_error *err)
+isk_status isk__ini_parse_split_from(const char *text, const char *name, isk_ini_section_fn section,
+                                     isk_ini_key_fn fn, void *user, size_t split_from, isk_error *err)
 {
     if (!text || !fn)
         return isk_error_set(err, ISK_ERR_NULL, "scene: NULL text or callback");
     if (!name)
         name = "<string>";
-    reader r = {text, name, 0, section, fn, user, err, 0, NULL, 0};
+    reader r;
+    memset(&r, 0, sizeof r);
+    r.text = text;
+    r.name = name;
+    r.split_from = split_from;
+    r.section_fn = section;
+    r.fn = fn;
+    r.user = user;
+    r.err = err;
     int rc = ini_parse_stream(read_line, &r, on_pair, &r);
+    free(r.long_line);
     if (r.failed)
         return err ? err->status : ISK_ERR_FORMAT;
     if (r.stop_line) {
+        if (!strcmp(r.stop_msg, "out of memory"))
+            return isk_error_set(err, ISK_ERR_NOMEM, "%s:%d: out of memory for a long line", name, r.stop_line);
         if (!strcmp(r.stop_msg, "line too long"))
             isk__ini_error(err, name, r.stop_line, "line too long (at most %d characters)", ISK_INI_MAX_LINE);
         else
@@ -170,6 +277,12 @@ isk_status isk__ini_parse(const char *text, const char *name, isk_ini_section_fn
         return ISK_ERR_NOMEM;
     }
     return ISK_OK;
+}
+
+isk_status isk__ini_parse(const char *text, const char *name, isk_ini_section_fn section, isk_ini_key_fn fn,
+                         void *user, isk_error *err)
+{
+    return isk__ini_parse_split_from(text, name, section, fn, user, ISK_INI_MAX_LINE, err);
 }
 
 isk_status isk__ini_parse_string(const char *text, const char *name, isk_ini_key_fn fn, void *user,

@@ -15,8 +15,11 @@
  *     there, so errors always come in file order;
  *   - an indented line continues the previous value (INI_ALLOW_MULTILINE is
  *     on): the reader strips leading blanks, so indented keys are just keys;
- *   - a line longer than its buffer is silently split in two: the reader
- *     refuses it.
+ *   - its line buffer holds 199 characters (a longer line would be split
+ *     in two): the reader splits a longer line into key and value itself,
+ *     by the very rules libinih applies (trimming, inline comments), calls
+ *     back in order, and hands libinih a stand-in that keeps its line count
+ *     and section.  Lines are refused above ISK_INI_MAX_LINE.
  * Every callback gets its line; the first error stops the parse and is
  * reported as "FILE:LINE: message".
  *
@@ -34,8 +37,9 @@
 
 #include "iskra/status.h"
 
-/* Longest accepted line, in bytes without the newline (libinih's limit - 1). */
-#define ISK_INI_MAX_LINE 199
+/* Longest accepted line, in bytes without the newline: 64 KiB - 1, room
+ * for a 64-point polyline or a list of every deflector at full precision. */
+#define ISK_INI_MAX_LINE 65535
 /* Largest accepted input, so a scene can never make us read without bound. */
 #define ISK_INI_MAX_BYTES (4u * 1024u * 1024u)
 
@@ -52,6 +56,11 @@ isk_status isk__ini_parse_string(const char *text, const char *name, isk_ini_key
 /* The same with a callback for section headers too (`section` may be NULL). */
 isk_status isk__ini_parse(const char *text, const char *name, isk_ini_section_fn section, isk_ini_key_fn fn,
                          void *user, isk_error *err);
+/* isk__ini_parse, splitting itself every line longer than split_from
+ * bytes (isk__ini_parse: libinih's buffer, ISK_INI_MAX_LINE), so a test can
+ * check that both routes call back alike (split_from 0: every line). */
+isk_status isk__ini_parse_split_from(const char *text, const char *name, isk_ini_section_fn section,
+                                     isk_ini_key_fn fn, void *user, size_t split_from, isk_error *err);
 /* Reads a whole text file (at most ISK_INI_MAX_BYTES, no NUL bytes) into a
  * malloc'd NUL-terminated string for the caller to free. */
 isk_status isk__ini_read_file(const char *path, char **text, isk_error *err);

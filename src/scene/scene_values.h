@@ -20,10 +20,10 @@
 
 #include "iskra/color.h"
 
-/* Longest item of a list (a scene line is at most 199 characters). */
+/* Longest item of a list (one number, name or colour). */
 #define SCV_ITEM_MAX 200
-/* Most items in one list. */
-#define SCV_LIST_MAX 128
+/* Most items in one list: every deflector an emitter may name. */
+#define SCV_LIST_MAX 256
 
 int isk__scv_number(const char *s, double *out);
 /* Decimal digits only, 0..2^64-1. */

@@ -507,7 +507,11 @@ int cmd_play(int argc, char **argv)
     play_choose_layout(&p, (int)o.ui_scale);
     play_layout_compute(&p);
     const int w = p.lay.window.w, h = p.lay.window.h;
-    if (isk_canvas_init(&shown, w, h) != ISK_OK || isk_window_resize_canvas(win, w, h, &err) != ISK_OK) {
+    if (isk_canvas_init(&shown, w, h) != ISK_OK) {
+        fprintf(stderr, "iskra play: out of memory (a %dx%d window)\n", w, h);
+        goto out;
+    }
+    if (isk_window_resize_canvas(win, w, h, &err) != ISK_OK) {
         fprintf(stderr, "iskra play: cannot size the window: %s\n", err.message);
         goto out;
     }

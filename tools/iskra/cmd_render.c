@@ -12,6 +12,8 @@
  * Everything is validated before anything is written, and no output may
  * be an input (the scene, its textures) or another output (outpath.h); a
  * signal removes the temporaries and says what was written (cleanup.h). */
+#include <ctype.h>
+#include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -21,6 +23,7 @@
 #include "cmd.h"
 #include "iskra/anim.h"
 #include "iskra/effect.h"
+#include "iskra/png.h"
 #include "outpath.h"
 #include "probes_csv.h"
 #include "progress.h"
@@ -221,6 +224,46 @@ static int choose_fps(render_args *r, double dt, double *fps)
     return 0;
 }
 
+/* What this command holds beside the effect, counted in the memory budget
+ * before anything is written (scene_args.host_needs): the animation's
+ * encoder, the strip's canvas and the PNG writer of every PNG it writes. */
+static void host_needs(isk_effect_def *def, const void *ctx)
+{
+    const render_args *r = ctx;
+    const long frames = r->frames >= 0 ? r->frames : def->show.frames;
+    double bytes = 0;
+    char *what = def->host_memory_for;
+    const size_t n = sizeof def->host_memory_for;
+    size_t used = (size_t)snprintf(what, n, "iskra render's");
+    int parts = 0;
+    if (r->o.anim_path) {
+        isk_anim_opts ao = {r->o.anim_format, def->width, def->height, 1.0};
+        bytes += (double)isk_anim_memory(&ao);
+        char name[8];
+        snprintf(name, sizeof name, "%s", isk_anim_format_name(r->o.anim_format));
+        for (char *c = name; *c; c++)
+            *c = (char)toupper((unsigned char)*c);
+        used += (size_t)snprintf(what + used, used < n ? n - used : 0, " %s writer (%d x %d frames)", name,
+                                 def->width, def->height);
+        parts++;
+    }
+    int sw, sh;
+    if (r->strip && render_strip_size(def->width, def->height, frames, r->o.every, &sw, &sh)) {
+        bytes += 4.0 * (double)sw * (double)sh + (double)isk_png_write_memory(sw);
+        used += (size_t)snprintf(what + used, used < n ? n - used : 0, "%s strip (%d x %d)", parts ? "," : "", sw,
+                                 sh);
+        parts++;
+    }
+    if (r->o.png || r->o.dir) {
+        bytes += (double)isk_png_write_memory(def->width);
+        used += (size_t)snprintf(what + used, used < n ? n - used : 0, "%s PNG writer", parts ? "," : "");
+        parts++;
+    }
+    def->host_memory = parts ? (bytes < (double)SIZE_MAX ? (size_t)bytes : SIZE_MAX) : 0;
+    if (!parts)
+        what[0] = 0;
+}
+
 int cmd_render(int argc, char **argv)
 {
     render_args r;
@@ -236,6 +279,8 @@ int cmd_render(int argc, char **argv)
 
     isk_effect_def def;
     isk_effect *fx;
+    r.scene.host_needs = host_needs;
+    r.scene.host_ctx = &r;
     if ((rc = scene_args_open(&r.scene, &def, &fx)) != 0)
         return rc;
     long frames = r.frames >= 0 ? r.frames : def.show.frames;
@@ -294,13 +339,25 @@ int cmd_render(int argc, char **argv)
         goto done;
     }
     progress_end(&pg);
-    rc = render_out_end(&r.o, &canvas);
-    if (render_strip_end(&strip))
-        rc = 1;
-    if (state_finish(&r.so, fx))
-        rc = 1;
-    if (probes_finish(&r.po))
-        rc = 1;
+    /* The files last, each whole; one that cannot be written (a full
+     * disk, no memory) takes back those written before it, so a failed
+     * run leaves none of them. */
+    rc = render_strip_end(&strip);
+    const int strip_written = !rc && r.strip;
+    if (!rc)
+        rc = state_finish(&r.so, fx);
+    const int state_written = !rc && r.so.path;
+    if (!rc)
+        rc = probes_finish(&r.po);
+    const int probes_written = !rc && r.po.path;
+    if (!rc)
+        rc = render_out_end(&r.o, &canvas);
+    if (rc && strip_written)
+        remove(r.strip);
+    if (rc && state_written)
+        remove(r.so.path);
+    if (rc && probes_written)
+        remove(r.po.path);
 done:
     probes_abort(&r.po);
     isk_canvas_free(&strip.out);

@@ -10,6 +10,20 @@
 
 enum { GAP = 4 };
 
+int render_strip_size(int width, int height, long last, long every, int *w, int *h)
+{
+    const long panels = every > 0 ? last / every : 0;
+    if (panels < 1 || panels > RENDER_STRIP_MAX_PANELS)
+        return 0;
+    const int pw = width / 2 > 0 ? width / 2 : 1, ph = height / 2 > 0 ? height / 2 : 1;
+    const long sw = panels * pw + (panels - 1) * GAP;
+    if (sw > ISK_CANVAS_MAX_DIM)
+        return 0;
+    *w = (int)sw;
+    *h = ph;
+    return (int)panels;
+}
+
 int render_strip_begin(render_strip *s, const char *path, int width, int height, long last, long every)
 {
     memset(&s->out, 0, sizeof s->out);
@@ -17,7 +31,14 @@ int render_strip_begin(render_strip *s, const char *path, int width, int height,
     if (!path)
         return 0;
     const long panels = last / every;
-    if (panels < 1 || panels > RENDER_STRIP_MAX_PANELS) {
+    int sw, sh;
+    if (panels >= 1 && panels <= RENDER_STRIP_MAX_PANELS && !render_strip_size(width, height, last, every, &sw, &sh)) {
+        fprintf(stderr, "iskra render: --strip: %ld panels of %d pixels would be wider than %d pixels (fewer "
+                        "panels: a larger --every, or a smaller --size)\n",
+                panels, width / 2 > 0 ? width / 2 : 1, ISK_CANVAS_MAX_DIM);
+        return 2;
+    }
+    if (!render_strip_size(width, height, last, every, &sw, &sh)) {
         fprintf(stderr, "iskra render: --strip shows frames %ld, %ld, ... <= %ld: that is %ld panels, not 1..%d "
                         "(choose --every around %ld)\n",
                 every, 2 * every, last, panels, RENDER_STRIP_MAX_PANELS, last / 6 > 0 ? last / 6 : 1);
@@ -26,8 +47,8 @@ int render_strip_begin(render_strip *s, const char *path, int width, int height,
     s->every = every;
     s->panels = (int)panels;
     s->pw = width / 2 > 0 ? width / 2 : 1;
-    s->ph = height / 2 > 0 ? height / 2 : 1;
-    if (isk_canvas_init(&s->out, s->panels * s->pw + (s->panels - 1) * GAP, s->ph) != ISK_OK) {
+    s->ph = sh;
+    if (isk_canvas_init(&s->out, sw, sh) != ISK_OK) {
         fprintf(stderr, "iskra render: out of memory (a strip of %d panels)\n", s->panels);
         return 1;
     }

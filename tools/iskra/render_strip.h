@@ -24,6 +24,11 @@ typedef struct render_strip {
     isk_canvas out;
 } render_strip;
 
+/* The strip's size for frames every, 2 every, ... <= last of a width x
+ * height canvas: its panels (*w x *h set), or 0 when there would be none
+ * or too many, or it would be wider than a canvas can be
+ * (render_strip_begin says so). */
+int render_strip_size(int width, int height, long last, long every, int *w, int *h);
 /* 0, 1 (out of memory) or 2 (no frame or too many frames for a strip). */
 int render_strip_begin(render_strip *s, const char *path, int width, int height, long last, long every);
 int render_strip_wants(const render_strip *s, long f);

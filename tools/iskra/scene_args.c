@@ -180,7 +180,8 @@ void scene_args_help(FILE *f)
                "  --substeps N     substeps per frame, 1..1000 (default: the scene's)\n"
                "  --threads N      threads to step on, 1..256 (default: ISKRA_THREADS, else every core;\n"
                "                   the result is the same for every number)\n"
-               "  --max-memory B   the most memory the scene may take with every pool full, in bytes\n"
+               "  --max-memory B   the most memory the scene may take with every pool full, with what\n"
+               "                   the command holds to write it (a GIF's tables, a strip), in bytes\n"
                "                   or with K, M, G (default: the smaller of %juG and half the address\n"
                "                   space); a scene that could need more is refused\n"
                "  --max-work N     the most work a frame or the prewarm may ask for, in particle-steps and\n"
@@ -248,7 +249,8 @@ int scene_args_load(const scene_args *a, isk_effect_def *def, isk_effect **fx, c
         def->substeps = a->substeps;
     def->max_memory = a->max_memory;
     def->max_work = a->max_work;
-    def->host_memory = a->host_memory;
+    if (a->host_needs)
+        a->host_needs(def, a->host_ctx);
     def->threads = a->threads;
     s = isk_effect_create(fx, def, &err);
     if (s != ISK_OK) {

@@ -21,7 +21,12 @@ typedef struct scene_args {
     int substeps;         /* 0: the scene's */
     size_t max_memory;    /* 0: the library's default budget */
     double max_work;      /* 0: the library's default budget */
-    size_t host_memory;   /* what the command itself needs beside the effect (its encoders) */
+    /* What the command itself needs beside the effect (its encoders, a
+     * strip), once the definition is known with the overrides applied: sets
+     * def->host_memory and def->host_memory_for before the effect is
+     * created, so the budget counts it.  NULL: nothing. */
+    void (*host_needs)(isk_effect_def *def, const void *ctx);
+    const void *host_ctx;
     int threads;          /* 0: ISKRA_THREADS, else every core */
 } scene_args;
 
