@@ -12,6 +12,7 @@
 #include <string.h>
 
 #include "iskra/canvas.h"
+#include "iskra/probes.h"
 #include "iskra/effect.h"
 #include "iskra/scene.h"
 #include "iskra/snapshot.h"
@@ -354,6 +355,63 @@ Test(snapshot, a_file_resumes_the_run)
     isk_snapshot_free(snap);
     isk_snapshot_free(back);
     free(bytes);
+    isk_effect_destroy(a);
+    isk_effect_destroy(b);
+}
+
+/* Probes are part of the state: a gate's crossings (drawn beside it) and
+ * its window of rates come back with the frame, in memory and from bytes. */
+static isk_effect *probes_scene(void)
+{
+    isk_effect_def d;
+    isk_error err = {0};
+    cr_assert_eq(isk_scene_load_file(&d, "tests/data/probes_stream.ini", &err), ISK_OK, "%s", err.message);
+    d.threads = 1;
+    return scene_open_def(&d);
+}
+
+Test(snapshot, probes_come_back_with_their_counts)
+{
+    isk_effect *a = probes_scene(), *b = probes_scene();
+    isk_error err = {0};
+    for (int f = 0; f < 70; f++)
+        cr_assert_eq(isk_effect_step(a), ISK_OK);
+    isk_snapshot *snap, *back;
+    cr_assert_eq(isk_effect_snapshot(a, &snap, &err), ISK_OK);
+    unsigned char *bytes;
+    size_t n;
+    cr_assert_eq(isk_snapshot_encode(snap, &bytes, &n, &err), ISK_OK, "%s", err.message);
+    cr_assert_eq(isk_snapshot_decode(&back, bytes, n, "probes", &err), ISK_OK, "%s", err.message);
+    for (int f = 0; f < 40; f++)
+        cr_assert_eq(isk_effect_step(a), ISK_OK);
+    outcome oa;
+    look(a, &oa);
+    const isk_snapshot *from[2] = {snap, back};
+    for (int k = 0; k < 2; k++) {
+        cr_assert_eq(isk_effect_restore(b, from[k], &err), ISK_OK, "%s", err.message);
+        for (int f = 0; f < 40; f++)
+            cr_assert_eq(isk_effect_step(b), ISK_OK);
+        cr_assert_eq(isk_effect_probe_count(b), isk_effect_probe_count(a));
+        cr_assert_gt(isk_effect_probe_count(a), 2);
+        for (int i = 0; i < isk_effect_probe_count(a); i++) {
+            isk_probe_reading ra, rb;
+            cr_assert_eq(isk_effect_probe_read(a, i, &ra), ISK_OK);
+            cr_assert_eq(isk_effect_probe_read(b, i, &rb), ISK_OK);
+            cr_assert_str_eq(ra.name, rb.name);
+            cr_assert(ra.forward == rb.forward && ra.backward == rb.backward && ra.rate_forward == rb.rate_forward &&
+                          ra.count == rb.count && ra.kinetic == rb.kinetic && ra.frame == rb.frame &&
+                          !memcmp(ra.bin, rb.bin, sizeof ra.bin),
+                      "probe %s differs after a restore (%s)", ra.name, k ? "from bytes" : "in memory");
+        }
+        outcome ob;
+        look(b, &ob);
+        expect_same(&oa, &ob, k ? "probes, from bytes" : "probes, in memory");
+        outcome_free(&ob);
+    }
+    outcome_free(&oa);
+    free(bytes);
+    isk_snapshot_free(snap);
+    isk_snapshot_free(back);
     isk_effect_destroy(a);
     isk_effect_destroy(b);
 }

@@ -24,7 +24,8 @@
  * emitter's particles with every column and trail, its random stream and
  * the state of its births (the stream's schedule, bursts, cycles,
  * explosions under way, the emitter's path, sub-emitters' pending events),
- * the counts of dropped and removed particles, and the clocks.  Restoring
+ * the counts of dropped and removed particles, the probes' counts and
+ * windows (iskra/probes.h), and the clocks.  Restoring
  * the snapshot of frame k and stepping to frame n gives the bytes of a
  * straight run to n, on any number of threads.  What it does not hold is
  * what no result depends on: the threads (the effect keeps its own), the

@@ -33,9 +33,10 @@
 
 /* ---- the state, as rows ------------------------------------------------------------ */
 
-typedef enum { ROW_F64, ROW_U64, ROW_SIZE, ROW_INT, ROW_LONG, ROW_U32 } row_type;
-static const size_t row_bytes[] = {sizeof(double), sizeof(uint64_t), sizeof(size_t),
-                                   sizeof(int),    sizeof(long),     sizeof(uint32_t)};
+/* ROW_F64N: a double that may be NaN (a potential energy without a law) */
+typedef enum { ROW_F64, ROW_U64, ROW_SIZE, ROW_INT, ROW_LONG, ROW_U32, ROW_F64N } row_type;
+static const size_t row_bytes[] = {sizeof(double), sizeof(uint64_t), sizeof(size_t), sizeof(int),
+                                   sizeof(long),   sizeof(uint32_t), sizeof(double)};
 
 typedef struct state_row {
     const char *name;
@@ -90,7 +91,20 @@ static const state_row potential_rows[] = {
 
 _Static_assert(FX_STREAM_COUNT == 6, "a new attribute stream needs its STREAM_ROWS in group_rows");
 
+#define RROW(f, t) {#f, offsetof(isk_probe_reading, f), t}
+/* A probe's latest reading (its name, kind and bins come from the
+ * definition); a gate's window of crossings follows it. */
+static const state_row reading_rows[] = {
+    RROW(frame, ROW_LONG),       RROW(forward, ROW_U64),      RROW(backward, ROW_U64),
+    RROW(rate_forward, ROW_F64), RROW(rate_backward, ROW_F64), RROW(count, ROW_SIZE),
+    RROW(mean_speed, ROW_F64),   RROW(kinetic, ROW_F64),      RROW(under, ROW_SIZE),
+    RROW(over, ROW_SIZE),        RROW(px, ROW_F64),           RROW(py, ROW_F64),
+    RROW(potential, ROW_F64N),
+};
+#undef RROW
+
 enum {
+    NREADING_ROWS = sizeof reading_rows / sizeof reading_rows[0],
     NGROUP_ROWS = sizeof group_rows / sizeof group_rows[0],
     NEFFECT_ROWS = sizeof effect_rows / sizeof effect_rows[0],
     NPOT_ROWS = sizeof potential_rows / sizeof potential_rows[0],
@@ -128,8 +142,18 @@ typedef struct snap_group {
     size_t nevents;
 } snap_group;
 
+/* A probe: its reading (the name pointer is the effect's), a gate's window. */
+typedef struct snap_probe {
+    isk_probe_reading r;
+    int ring_n, ring_head, ring_used;
+    uint64_t *ring; /* 2 * ring_n: forward then backward crossings per frame */
+    double *ring_t; /* ring_n: each frame's length */
+} snap_probe;
+
 struct isk_snapshot {
     isk_effect_def def;
+    int nprobes;
+    snap_probe *probes;
     unsigned char *effect_state; /* effect_rows, packed */
     size_t npots;
     isk_potential *pots;
@@ -148,6 +172,11 @@ void isk_snapshot_free(isk_snapshot *snap)
         free(snap->groups[i].events);
     }
     free(snap->groups);
+    for (int i = 0; snap->probes && i < snap->nprobes; i++) {
+        free(snap->probes[i].ring);
+        free(snap->probes[i].ring_t);
+    }
+    free(snap->probes);
     free(snap->pots);
     free(snap->pot_force);
     free(snap->effect_state);
@@ -178,6 +207,71 @@ static isk_snapshot *snapshot_new(int ngroups, size_t npots)
     return s;
 }
 
+/* Room for n probes with rings of ring_n[i] frames (gates), all zero. */
+static isk_status probes_new(isk_snapshot *s, int n, const int *ring_n)
+{
+    s->nprobes = n;
+    if (n == 0)
+        return ISK_OK;
+    if (!(s->probes = calloc((size_t)n, sizeof *s->probes)))
+        return ISK_ERR_NOMEM;
+    for (int i = 0; i < n; i++) {
+        snap_probe *q = &s->probes[i];
+        q->ring_n = ring_n[i];
+        if (q->ring_n && (!(q->ring = calloc((size_t)q->ring_n * 2, sizeof *q->ring)) ||
+                          !(q->ring_t = calloc((size_t)q->ring_n, sizeof *q->ring_t))))
+            return ISK_ERR_NOMEM;
+    }
+    return ISK_OK;
+}
+
+static isk_status probes_out(const isk_effect *e, isk_snapshot *s)
+{
+    const int n = e->probes ? e->def.nprobes : 0;
+    int ring_n[ISK_EFFECT_MAX_PROBES] = {0};
+    for (int i = 0; i < n; i++)
+        ring_n[i] = e->probes[i].ring ? e->probes[i].ring_n : 0;
+    isk_status st = probes_new(s, n, ring_n);
+    for (int i = 0; st == ISK_OK && i < n; i++) {
+        const fx_probe *p = &e->probes[i];
+        snap_probe *q = &s->probes[i];
+        q->r = p->r;
+        q->ring_head = p->ring_head;
+        q->ring_used = p->ring_used;
+        if (q->ring_n) {
+            memcpy(q->ring, p->ring, sizeof *q->ring * 2 * (size_t)q->ring_n);
+            memcpy(q->ring_t, p->ring_t, sizeof *q->ring_t * (size_t)q->ring_n);
+        }
+    }
+    return st;
+}
+
+/* Into an effect built from the same definition (its probes made alike). */
+static isk_status probes_in(isk_effect *e, const isk_snapshot *s)
+{
+    const int n = e->probes ? e->def.nprobes : 0;
+    if (n != s->nprobes)
+        return ISK_ERR_FORMAT;
+    for (int i = 0; i < n; i++) {
+        fx_probe *p = &e->probes[i];
+        const snap_probe *q = &s->probes[i];
+        if ((p->ring ? p->ring_n : 0) != q->ring_n || q->r.kind != p->r.kind)
+            return ISK_ERR_FORMAT;
+        const char *name = p->r.name;
+        const int bins = p->r.bins;
+        p->r = q->r;
+        p->r.name = name;
+        p->r.bins = bins;
+        p->ring_head = q->ring_head;
+        p->ring_used = q->ring_used;
+        if (q->ring_n) {
+            memcpy(p->ring, q->ring, sizeof *q->ring * 2 * (size_t)q->ring_n);
+            memcpy(p->ring_t, q->ring_t, sizeof *q->ring_t * (size_t)q->ring_n);
+        }
+    }
+    return ISK_OK;
+}
+
 isk_status isk_effect_snapshot(const isk_effect *e, isk_snapshot **out, isk_error *err)
 {
     if (!e || !out)
@@ -199,6 +293,12 @@ isk_status isk_effect_snapshot(const isk_effect *e, isk_snapshot **out, isk_erro
             sg->nevents = g->pending.n;
         }
     }
+    if (st != ISK_OK) {
+        isk_snapshot_free(s);
+        return isk_error_set(err, st, "isk_effect_snapshot: out of memory");
+    }
+    if (st == ISK_OK)
+        st = probes_out(e, s);
     if (st != ISK_OK) {
         isk_snapshot_free(s);
         return isk_error_set(err, st, "isk_effect_snapshot: out of memory");
@@ -251,6 +351,8 @@ isk_status isk_effect_restore(isk_effect *e, const isk_snapshot *snap, isk_error
             g->pending.n = g->pending.cap = sg->nevents;
         }
     }
+    if (s == ISK_OK && probes_in(bare, snap) != ISK_OK)
+        s = isk_error_set(err, ISK_ERR_FORMAT, "isk_effect_restore: the snapshot's probes do not match its definition");
     if (s == ISK_ERR_FORMAT) {
         isk_effect_destroy(bare);
         return s;
@@ -337,7 +439,8 @@ static void put_f64(writer *w, double d)
 static void put_row(writer *w, row_type t, const unsigned char *p)
 {
     switch (t) {
-    case ROW_F64: { double d; memcpy(&d, p, sizeof d); put_f64(w, d); break; }
+    case ROW_F64:
+    case ROW_F64N: { double d; memcpy(&d, p, sizeof d); put_f64(w, d); break; }
     case ROW_U64: { uint64_t v; memcpy(&v, p, sizeof v); put_u64(w, v); break; }
     case ROW_SIZE: { size_t v; memcpy(&v, p, sizeof v); put_u64(w, (uint64_t)v); break; }
     case ROW_INT: { int v; memcpy(&v, p, sizeof v); put_u64(w, (uint64_t)(int64_t)v); break; }
@@ -429,6 +532,22 @@ isk_status isk_snapshot_encode(const isk_snapshot *snap, unsigned char **bytes, 
             put_f64(&w, ev->t);
         }
     }
+    put_u64(&w, (uint64_t)snap->nprobes);
+    for (int i = 0; i < snap->nprobes; i++) {
+        const snap_probe *q = &snap->probes[i];
+        put_u64(&w, (uint64_t)q->r.kind);
+        for (int k = 0; k < NREADING_ROWS; k++)
+            put_row(&w, reading_rows[k].type, (const unsigned char *)&q->r + reading_rows[k].offset);
+        for (int k = 0; k < ISK_PROBE_MAX_BINS; k++)
+            put_u64(&w, q->r.bin[k]);
+        put_u64(&w, (uint64_t)q->ring_n);
+        put_u64(&w, (uint64_t)q->ring_head);
+        put_u64(&w, (uint64_t)q->ring_used);
+        for (int k = 0; k < 2 * q->ring_n; k++)
+            put_u64(&w, q->ring[k]);
+        for (int k = 0; k < q->ring_n; k++)
+            put_f64(&w, q->ring_t[k]);
+    }
     if (!w.failed)
         put_u64(&w, fnv1a(w.b, w.n));
     if (w.failed) {
@@ -510,6 +629,11 @@ static void get_row(reader *r, row_type t, unsigned char *p)
     uint64_t v;
     switch (t) {
     case ROW_F64: { double d = get_f64(r, 1); memcpy(p, &d, sizeof d); break; }
+    case ROW_F64N: { /* any bits: a NaN means "no energy" */
+        v = get_u64(r);
+        memcpy(p, &v, sizeof v);
+        break;
+    }
     case ROW_U64: v = get_u64(r); memcpy(p, &v, sizeof v); break;
     case ROW_SIZE: { size_t z = (size_t)get_count(r, SIZE_MAX, "a count too large"); memcpy(p, &z, sizeof z); break; }
     case ROW_INT: {
@@ -620,6 +744,55 @@ static void check_potential(reader *r, const isk_potential *p)
         fail(r, "a potential's id or switch out of range");
 }
 
+/* The probes: as many as the scene has, each ring within the file. */
+static void get_probes(reader *r, isk_snapshot *snap, int nprobes)
+{
+    if (r->failed)
+        return;
+    if (get_u64(r) != (uint64_t)nprobes) {
+        fail(r, "its probes do not match its scene");
+        return;
+    }
+    int ring_n[ISK_EFFECT_MAX_PROBES] = {0};
+    isk_probe_reading reading[ISK_EFFECT_MAX_PROBES];
+    int head[ISK_EFFECT_MAX_PROBES], used[ISK_EFFECT_MAX_PROBES];
+    size_t ring_at[ISK_EFFECT_MAX_PROBES];
+    for (int i = 0; i < nprobes && !r->failed; i++) {
+        memset(&reading[i], 0, sizeof reading[i]);
+        reading[i].kind = (isk_probe_kind)get_count(r, ISK_PROBE_KIND_COUNT - 1, "a probe of no kind");
+        for (int k = 0; k < NREADING_ROWS; k++)
+            get_row(r, reading_rows[k].type, (unsigned char *)&reading[i] + reading_rows[k].offset);
+        for (int k = 0; k < ISK_PROBE_MAX_BINS; k++)
+            reading[i].bin[k] = (size_t)get_count(r, SIZE_MAX, "a count too large");
+        ring_n[i] = (int)get_count(r, (r->n - r->at) / 24, "a probe's window beyond the file");
+        head[i] = (int)get_count(r, ring_n[i] ? (uint64_t)ring_n[i] - 1 : 0, "a probe's window out of range");
+        used[i] = (int)get_count(r, (uint64_t)ring_n[i], "a probe's window out of range");
+        ring_at[i] = r->at;
+        r->at += (size_t)ring_n[i] * 24 <= r->n - r->at ? (size_t)ring_n[i] * 24 : 0;
+    }
+    if (r->failed || probes_new(snap, nprobes, ring_n) != ISK_OK) {
+        if (!r->failed) {
+            isk_error_set(r->err, ISK_ERR_NOMEM, "%s: out of memory", r->name);
+            r->failed = 1;
+        }
+        return;
+    }
+    const size_t end = r->at;
+    for (int i = 0; i < nprobes && !r->failed; i++) {
+        snap_probe *q = &snap->probes[i];
+        q->r = reading[i];
+        q->ring_head = head[i];
+        q->ring_used = used[i];
+        r->at = ring_at[i];
+        for (int k = 0; k < 2 * q->ring_n; k++)
+            q->ring[k] = get_u64(r);
+        for (int k = 0; k < q->ring_n && !r->failed; k++)
+            if (!((q->ring_t[k] = get_f64(r, 0)) >= 0))
+                fail(r, "a frame of negative length");
+    }
+    r->at = end;
+}
+
 isk_status isk_snapshot_decode(isk_snapshot **out, const unsigned char *bytes, size_t size, const char *name,
                                isk_error *err)
 {
@@ -701,6 +874,7 @@ isk_status isk_snapshot_decode(isk_snapshot **out, const unsigned char *bytes, s
             ev->t = get_f64(&r, 0);
         }
     }
+    get_probes(&r, snap, def.nprobes);
     long frame;
     memcpy(&frame, effect_state, sizeof frame);
     double time;
