@@ -431,8 +431,12 @@ int cmd_play(int argc, char **argv)
     lesson les = {0};
     lesson_recorder rec = {0};
     int *skip = calloc((size_t)argc + 1, sizeof *skip);
-    int rc = skip ? play_cli_options(&p, &o, argc, argv, skip) : 1;
-    int unpaced = o.fixed_clock;
+    if (!skip) {
+        fprintf(stderr, "iskra play: out of memory\n");
+        return 1;
+    }
+    int rc = play_cli_options(&p, &o, argc, argv, skip);
+    int unpaced = rc == 0 && o.fixed_clock;
     if (rc == 0 && o.replay) {
         memset(&p, 0, sizeof p);
         rc = replay_options(&p, &o, &les, argc, argv, &unpaced);
