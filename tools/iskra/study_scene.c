@@ -304,15 +304,16 @@ static int write_outputs(scene_study *ss, run_result res[NI][NSUB], int subs[NSU
     double fx[2] = {FRAME_MS, FRAME_MS}, fy[2] = {ylo, yhi};
     ser[2 * NI] = (isk_chart_series){"16.7 ms frame", fx, fy, 2,
                                      {{0x60, 0x60, 0x60, 0xff}, ISK_DASH_DASHED, ISK_MARKER_NONE}};
-    char title[256], ylab[128];
-    snprintf(title, sizeof title,
-             "%s, %ld frames of %.4g s: error against %s x%d (points: substeps x1 x2 x4 x8 of the scene's %d)",
-             ss->stem, ss->frames, dt, isk_integrator_name(ss->ref_method), ss->ref_substeps, ss->def.substeps);
+    char title[256], ylab[128], xlab[160];
+    snprintf(title, sizeof title, "%s, %ld frames of %.4g s: error against %s x%d", ss->stem, ss->frames, dt,
+             isk_integrator_name(ss->ref_method), ss->ref_substeps);
+    snprintf(xlab, sizeof xlab, "time per frame (ms, one thread, this machine); points: substeps x1 x2 x4 x8 of the "
+             "scene's %d", ss->def.substeps);
     snprintf(ylab, sizeof ylab, "error at frame %ld (px): median solid, p99 dotted", ss->frames);
     isk_chart ch;
     isk_chart_defaults(&ch);
     ch.title = title;
-    ch.x_label = "time per frame (ms, one thread, this machine)";
+    ch.x_label = xlab;
     ch.y_label = ylab;
     ch.x_log = ch.y_log = 1;
     ch.x_min = xlo;
@@ -404,6 +405,15 @@ int study_scene(const study_opts *o, const char *scene, long frames)
     double t;
     sweep_setting ref = {ss->ref_method, ss->ref_substeps, ss->def.dt};
     rc = run_once(ss, &ref, 1, NULL, &t);
+    size_t seen = 0;
+    for (int j = 0; rc == 0 && j < ss->nsamples; j++)
+        for (int e = 0; e < ss->nem; e++)
+            seen += ss->ref[j].count[e];
+    if (rc == 0 && seen == 0) {
+        fprintf(stderr, "iskra bench accuracy: %s has no particles in %ld frames (does it wait for a click?): "
+                        "nothing to measure\n", scene, ss->frames);
+        rc = 1;
+    }
     printf("  %-11s %9s %12s %12s %12s %10s %9s\n", "integrator", "substeps", "ms/frame", "median px", "p99 px",
            "compared", "removed");
     for (int m = 0; m < NI && rc == 0; m++)

@@ -100,7 +100,7 @@ static int slots_grow(slots *s, size_t n)
 }
 
 /* The reference's largest kinetic energy at any of its frames over T. */
-static int run_reference(isk_effect_def *def, double T, double *kmax)
+static int run_reference(isk_effect_def *def, double T, double *kmax, const char *scene)
 {
     const char *why;
     int sub = def->substeps * REF_FACTOR;
@@ -110,14 +110,21 @@ static int run_reference(isk_effect_def *def, double T, double *kmax)
     if (sweep_create("stability", def, &set, &fx))
         return 1;
     isk_status st = ISK_OK;
+    size_t seen = sweep_live(fx);
     *kmax = sweep_kinetic(fx);
     for (long f = 1; f <= frames && st == ISK_OK; f++) {
         st = isk_effect_step(fx);
         *kmax = fmax(*kmax, sweep_kinetic(fx));
+        seen += sweep_live(fx);
     }
     isk_effect_destroy(fx);
     if (st != ISK_OK) {
         fprintf(stderr, "iskra bench stability: the reference run: %s\n", isk_status_str(st));
+        return 1;
+    }
+    if (seen == 0) {
+        fprintf(stderr, "iskra bench stability: %s has no particles in %ld frames (does it wait for a click?): "
+                        "nothing to map\n", scene, frames);
         return 1;
     }
     printf("-- reference: %s x%d (%s) at dt %g for %ld frames; its largest kinetic energy %.6g\n",
@@ -293,7 +300,7 @@ int bench_stability(int argc, char **argv)
            def->dt);
     fflush(stdout);
     double kref = 0.0;
-    rc = run_reference(def, Tmax, &kref);
+    rc = run_reference(def, Tmax, &kref, scene);
     study_buf csv = {0};
     study_printf(&csv, "scene,integrator,substeps,dt,h,frames,class,removed_nonfinite,kinetic_ratio,"
                        "zigzag_particles,drag_ratio,drag_edge\n");
