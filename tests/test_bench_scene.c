@@ -21,7 +21,7 @@
 #define OUT "out/test_bench_scene"
 #define DATA "tests/data/accuracy/"
 
-enum { MAX_ROWS = 2048, MAX_COLS = 16 };
+enum { MAX_ROWS = 4096, MAX_COLS = 16 };
 
 typedef struct csv {
     char *text;
@@ -270,8 +270,54 @@ Test(bench_scene, usage_errors)
     usage_error("bench accuracy --frames 10", "--frames goes with --scene");
     usage_error("bench accuracy --scene", "--scene needs a value");
     cr_assert_not(cli_exists(OUT "/usage/none"), "nothing is written on a usage or scene error");
+    /* a scene that waits for a click has nothing to measure: a failure, said */
+    const char *empty[2] = {"bench accuracy --scene fig24_simulator_coulomb --frames 3 --out " OUT "/usage/e1",
+                            "bench stability fig24_simulator_coulomb --frames 1 --out " OUT "/usage/e2"};
+    for (int i = 0; i < 2; i++) {
+        cr_assert_eq(cli_run(OUT "/usage", empty[i]), 1, "%s", empty[i]);
+        char *err = cli_slurp(OUT "/usage/stderr.txt");
+        cr_assert_not_null(strstr(err, "has no particles in"), "%s", err);
+        free(err);
+    }
     cr_assert_eq(cli_run(OUT "/usage", "bench stability --help"), 0);
     char *out = cli_slurp(OUT "/usage/stdout.txt");
     cr_assert_not_null(strstr(out, "usage: iskra bench stability SCENE"));
     free(out);
+}
+
+Test(bench_scene, a_run_that_loses_other_particles_is_compared_until_then)
+{
+    /* semi-Euler's first-order error moves some impacts on the killing
+     * floor into other frames than the reference's: from the first frame
+     * where the counts differ the run is compared no more; RK4's impacts
+     * fall in the reference's frames to the end */
+    cli_fresh(OUT "/kill");
+    cr_assert_eq(cli_run(OUT "/kill", "bench accuracy --scene " DATA "kill_floor.ini --out " OUT "/kill/acc"), 0);
+    csv *c = csv_read(OUT "/kill/acc/scene_kill_floor.csv");
+    const int cm = col(c, "integrator"), cs = col(c, "substeps"), cf = col(c, "frames_compared");
+    long semi = -1, rk4 = -1;
+    for (int r = 0; r < c->nrows; r++) {
+        if (strcmp(c->cell[r][cs], "1") != 0)
+            continue;
+        if (!strcmp(c->cell[r][cm], "semi-euler"))
+            semi = (long)num(c->cell[r][cf]);
+        if (!strcmp(c->cell[r][cm], "rk4"))
+            rk4 = (long)num(c->cell[r][cf]);
+    }
+    cr_assert(semi > 0 && semi < 60, "semi-euler x1 compared until frame %ld", semi);
+    cr_assert_eq(rk4, 60);
+    csv_free(c);
+    /* the time CSV has the compared samples only (every frame is one here) */
+    c = csv_read(OUT "/kill/acc/scene_kill_floor_time.csv");
+    const int tm = col(c, "integrator"), ts = col(c, "substeps"), tt = col(c, "time");
+    long n = 0;
+    double last = 0;
+    for (int r = 0; r < c->nrows; r++)
+        if (!strcmp(c->cell[r][tm], "semi-euler") && !strcmp(c->cell[r][ts], "1")) {
+            n++;
+            last = num(c->cell[r][tt]);
+        }
+    cr_assert_eq(n, semi);
+    cr_assert_float_eq(last, semi / 30.0, 1e-9); /* the CSV has 10 digits */
+    csv_free(c);
 }

@@ -270,6 +270,7 @@ int bench_stability(int argc, char **argv)
     }
     int rc = sweep_load("stability", scene, 0, &map->def);
     if (rc) {
+        isk_effect_def_free(&map->def);
         free(map);
         return rc;
     }
