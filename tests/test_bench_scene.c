@@ -200,10 +200,14 @@ Test(bench_scene, the_spring_edges_are_where_the_theory_puts_them)
     /* omega = 120 * 2^(1/4); semi-implicit Euler is stable for omega h < 2, RK4 for omega h < 2 sqrt 2 */
     const double omega = 120 * pow(2, 0.25);
     csv *c = map_of(OUT "/spring", "spring.ini", "spring");
-    const int cm = col(c, "integrator"), ch = col(c, "h"), cc = col(c, "class");
+    const int cm = col(c, "integrator"), ch = col(c, "h"), cc = col(c, "class"), cw = col(c, "spring_ratio");
+    const int ce = col(c, "spring_edge");
     int checked[2][2] = {{0}};
     for (int r = 0; r < c->nrows; r++) {
         const char *m = c->cell[r][cm], *cls = c->cell[r][cc];
+        /* the line the map draws: w*h from the scene's definition */
+        cr_assert_float_eq(num(c->cell[r][cw]), omega * num(c->cell[r][ch]), 1e-12 * omega * num(c->cell[r][ch]));
+        cr_assert_eq(num(c->cell[r][ce]), isk_integrator_spring_edge((isk_integrator)method_of(m)));
         const int which = !strcmp(m, "semi-euler") ? 0 : !strcmp(m, "rk4") ? 1 : -1;
         if (which < 0)
             continue;

@@ -62,3 +62,20 @@ Test(play_stability, an_edit_that_crosses_nothing_says_nothing)
     cr_assert_null(strstr(err, "b*h/m"), "%s", err);
     free(err);
 }
+
+Test(play_stability, crossing_a_potential_cores_spring_edge_warns)
+{
+    /* a spring of w = 120 * 2^(1/4) (tests/data/accuracy/spring.ini): w*h = 1.19 at 2 substeps, 2.38 at 1 */
+    const char *dir = OUT "spring";
+    cli_fresh(dir);
+    cli_write_file(OUT "spring/spring.ini", "[scene]\ndt = 1/60\nsubsteps = 2\n[force spring]\nkind = potential\n"
+                                            "k = 20364.675298172568\nposition = 0, 0\nexponent = 0\n[emitter p]\nsource = particle\n"
+                                            "position = 1, 0\nmass = 1\nforces = spring\n");
+    /* a scene with a potential gets the thesis's console: its precision field is the substeps */
+    cr_assert_eq(cli_run(dir, "play --fixed-clock " OUT "spring/spring.ini --frames 40 --script 'wait:2 "
+                              "press:precision ctrl+a type:1 return wait:3'"),
+                 0);
+    char *err = cli_slurp(OUT "spring/stderr.txt");
+    cr_assert_not_null(strstr(err, "warning: w*h = 2.38 for 'p' is past semi-euler's spring edge 2:"), "%s", err);
+    free(err);
+}

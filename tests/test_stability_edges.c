@@ -5,6 +5,7 @@
  * definition. */
 #include <criterion/criterion.h>
 #include <math.h>
+#include <string.h>
 
 #include "iskra/effect.h"
 #include "iskra/integrate.h"
@@ -84,5 +85,80 @@ Test(stability_edges, a_scenes_drag_ratio_comes_from_its_definition)
     cr_assert_eq(isk_effect_def_drag_ratio(&d, 1), 0.0, "no such emitter");
     cr_assert_eq(isk_effect_def_emitter_integrator(&d, 1), ISK_INTEGRATE_INHERIT);
     cr_assert_eq(isk_effect_def_drag_ratio(NULL, 0), 0.0);
+    isk_effect_def_free(&d);
+}
+
+/* The 2x2 matrix of one leapfrog kick-drift-kick step of t on x'' = -x. */
+static void leapfrog(double t, double a[2][2])
+{
+    a[0][0] = 1 - t * t / 2;
+    a[0][1] = t;
+    a[1][0] = -t + t * t * t / 4;
+    a[1][1] = 1 - t * t / 2;
+}
+
+static void mul(double a[2][2], double b[2][2], double out[2][2])
+{
+    double r[2][2];
+    for (int i = 0; i < 2; i++)
+        for (int j = 0; j < 2; j++)
+            r[i][j] = a[i][0] * b[0][j] + a[i][1] * b[1][j];
+    memcpy(out, r, sizeof r);
+}
+
+static double yoshida_trace(double h)
+{
+    const double w1 = 1 / (2 - cbrt(2.0)), w0 = 1 - 2 * w1;
+    double a[2][2], b[2][2];
+    leapfrog(w1 * h, a);
+    leapfrog(w0 * h, b);
+    mul(a, b, b);
+    mul(b, a, b);
+    return b[0][0] + b[1][1];
+}
+
+Test(stability_edges, the_spring_edges_are_where_the_step_stops_being_bounded)
+{
+    cr_assert_eq(isk_integrator_spring_edge(ISK_INTEGRATE_SEMI_EULER), 2.0);
+    cr_assert_eq(isk_integrator_spring_edge(ISK_INTEGRATE_LEAPFROG), 2.0);
+    cr_assert_eq(isk_integrator_spring_edge(ISK_INTEGRATE_EULER), 0.0, "explicit Euler grows at any step");
+    cr_assert_eq(isk_integrator_spring_edge(ISK_INTEGRATE_EXACT_DRAG), 0.0);
+    /* RK4 on the imaginary axis: |R(iy)|^2 = 1 - y^6/72 + y^8/576 */
+    const double y = isk_integrator_spring_edge(ISK_INTEGRATE_RK4);
+    cr_assert_float_eq(1 - pow(y, 6) / 72 + pow(y, 8) / 576, 1.0, 1e-13);
+    cr_assert_float_eq(y, 2 * sqrt(2.0), 1e-15);
+    /* Yoshida: the composed step is bounded while |trace| <= 2 */
+    const double h = isk_integrator_spring_edge(ISK_INTEGRATE_YOSHIDA4);
+    cr_assert_float_eq(fabs(yoshida_trace(h)), 2.0, 1e-12, "%.17g", yoshida_trace(h));
+    for (double t = 0.01; t < h; t += 0.01)
+        cr_assert_leq(fabs(yoshida_trace(t)), 2.0, "bounded below the edge, at %g", t);
+    cr_assert_gt(fabs(yoshida_trace(h + 1e-6)), 2.0);
+    cr_assert(isnan(isk_integrator_spring_edge(ISK_INTEGRATOR_COUNT)));
+}
+
+Test(stability_edges, a_potentials_core_is_a_spring_of_known_stiffness)
+{
+    isk_effect_def d;
+    isk_effect_def_init(&d);
+    int c = isk_effect_def_add_force(&d, "core", ISK_FORCE_POTENTIAL);
+    int r = isk_effect_def_add_force(&d, "repels", ISK_FORCE_POTENTIAL);
+    isk_emitter_def *e = isk_effect_def_add_emitter(&d, "a");
+    cr_assert(c >= 0 && r >= 0 && e);
+    /* P = 9 inside min 2: w^2 = kQ / (m min^9) = 2^9 * 4 / (2^9 * 1) = 4 */
+    d.forces[c].pot.k = 2048;
+    d.forces[c].pot.charge = 1;
+    d.forces[c].exponent = 9;
+    d.forces[c].pot.min_dist = 2;
+    d.forces[r].pot.k = 1e9; /* repels: no spring, however stiff */
+    d.forces[r].pot.charge = -1;
+    d.forces[r].exponent = 0;
+    cr_assert_eq(isk_emitter_use_force(e, c), ISK_OK);
+    cr_assert_eq(isk_emitter_use_force(e, r), ISK_OK);
+    d.dt = 0.1;
+    cr_assert_float_eq(isk_effect_def_spring_ratio(&d, 0), 2 * 0.1, 1e-15, "w h = 2 * 0.1");
+    e->launch.mass = 4; /* w = 1 */
+    cr_assert_float_eq(isk_effect_def_spring_ratio(&d, 0), 0.1, 1e-15);
+    d.forces[c].pot.min_dist = -1; /* no core: singular, no spring */
+    cr_assert_eq(isk_effect_def_spring_ratio(&d, 0), 0.0);
     isk_effect_def_free(&d);
 }

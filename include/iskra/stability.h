@@ -19,6 +19,15 @@
  *   leapfrog            R = (1 - x/2)/(1 + x/2)          none (|R| < 1 for all x)
  *   exact-drag, strang  R = e^-x (the flight is solved)  none
  *
+ * A linear spring, F = -m w^2 r (a potential of code exponent P = 0
+ * everywhere, any potential inside its min distance: F = kQ (r_pot - r) /
+ * min^P, so w^2 = kQ/(m min^P)), is stable while w*h stays below the
+ * method's spring edge: 2 for semi-euler, verlet, leapfrog and strang
+ * (each is Stormer-Verlet there), 2 sqrt 2 for rk4 (where |R(i w h)| = 1),
+ * 1.5734019474345398 for yoshida4 (where its step's trace reaches 2),
+ * and 0 for euler and exact-drag (exact drag freezes the spring over the
+ * step): their energy grows at every step.
+ *
  * iskra itself caps the drag of every step at b*h/m = ISK_DRAG_SATURATION
  * (iskra/forces.h, iskra/limits.h): past it the explicit methods' drag
  * stops a particle within the step instead of reversing it, so no edge
@@ -59,6 +68,10 @@ extern "C" {
  * method has none, NAN for an unknown method. */
 double isk_integrator_drag_edge(isk_integrator method);
 
+/* The method's spring edge in w*h (see the top); 0 where every step
+ * grows, NAN for an unknown method. */
+double isk_integrator_spring_edge(isk_integrator method);
+
 /* The integrator emitter `i` of d steps with (its own, or the scene's),
  * and its substeps per frame; ISK_INTEGRATE_INHERIT / 0 for no such
  * emitter. */
@@ -69,6 +82,13 @@ int isk_effect_def_emitter_substeps(const isk_effect_def *d, int i);
  * step h = dt / substeps / speed_divisor, over its lightest particle's
  * mass (launch.mass); 0 without drag or for no such emitter. */
 double isk_effect_def_drag_ratio(const isk_effect_def *d, int i);
+
+/* w*h of emitter `i`'s stiffest linear spring: of the potentials it
+ * references that are enabled and attract (k*charge > 0), those linear
+ * somewhere (P = 0 everywhere, or inside a min distance > 0), w^2 =
+ * kQ max(1, |x_multiplier|) / (m min^P) (min^P = 1 for P = 0), m its
+ * launch.mass; 0 without one or for no such emitter. */
+double isk_effect_def_spring_ratio(const isk_effect_def *d, int i);
 
 #ifdef __cplusplus
 }

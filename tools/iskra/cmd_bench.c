@@ -56,7 +56,7 @@ static void help(FILE *f)
                "  --frames N    frames run (default: the scene's frames, else 120)\n"
                "  stability     a map over step x substeps x integrator, each cell\n"
                "                stable, oscillating, energy growing or removed as\n"
-               "                non-finite, with the drag edges iskra knows\n"
+               "                non-finite, with the drag and spring edges iskra knows\n"
                "                (stability_NAME.csv, .png; default --out out/stability)\n"
                "  Timings depend on the machine and its load; read the ratios.\n"
                "  exit status: 0 done, 1 a study failed, 2 usage error\n");

@@ -70,13 +70,13 @@ int sweep_create(const char *cmd, isk_effect_def *def, const sweep_setting *s, i
     return 0;
 }
 
-double sweep_drag_ratio(isk_effect_def *def, const sweep_setting *s)
+double sweep_ratio(isk_effect_def *def, const sweep_setting *s, double (*of_emitter)(const isk_effect_def *, int))
 {
     saved keep;
     apply(def, s, &keep);
     double x = 0.0;
     for (int i = 0; i < def->nemitters; i++)
-        x = fmax(x, isk_effect_def_drag_ratio(def, i));
+        x = fmax(x, of_emitter(def, i));
     restore(def, &keep);
     return x;
 }

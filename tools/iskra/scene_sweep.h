@@ -38,9 +38,10 @@ int sweep_load(const char *cmd, const char *scene, int threads, isk_effect_def *
  * call).  Returns 0, or 1 after printing "iskra bench CMD: why". */
 int sweep_create(const char *cmd, isk_effect_def *def, const sweep_setting *s, isk_effect **fx);
 
-/* The largest b*h/m of def's emitters under the setting
- * (isk_effect_def_drag_ratio); 0 without drag. */
-double sweep_drag_ratio(isk_effect_def *def, const sweep_setting *s);
+/* The largest of_emitter(def, i) over def's emitters under the setting:
+ * isk_effect_def_drag_ratio (b*h/m) or isk_effect_def_spring_ratio (w*h)
+ * of iskra/stability.h; 0 when no emitter has one. */
+double sweep_ratio(isk_effect_def *def, const sweep_setting *s, double (*of_emitter)(const isk_effect_def *, int));
 
 /* The reference method for def (see the top), and in *why the reason in a
  * few words ("smooth forces", "walls"). */

@@ -7,9 +7,11 @@
  * the scene's own setting has a black frame.  Where the scene has drag,
  * two lines cross the panel: grey where b*h/m reaches iskra's cap
  * (ISK_DRAG_SATURATION: beyond it drag stops particles within a step) and
- * dark red where it reaches the method's own drag edge.  h = dt/substeps,
- * so in these coordinates both are straight lines: one row up (twice the
- * substeps) moves them two columns right (twice the dt). */
+ * dark red where it reaches the method's own drag edge; where it has a
+ * linear spring (a potential's core), a blue line where w*h reaches the
+ * method's spring edge.  h = dt/substeps, so in these coordinates every
+ * edge is a straight line: one row up (twice the substeps) moves it two
+ * columns right (twice the dt). */
 #include <math.h>
 #include <stdio.h>
 
@@ -30,6 +32,7 @@ static const char *const CLASS_LABEL[STABILITY_CLASS_COUNT] = {
     "stable", "oscillating (zigzags frame to frame)", "energy growing", "particles removed as non-finite"};
 static const isk_color INK = {0, 0, 0, 0xff}, WHITE = {0xff, 0xff, 0xff, 0xff};
 static const isk_color CAP = {0x70, 0x70, 0x70, 0xff}, EDGE = {0xa0, 0x00, 0x20, 0xff};
+static const isk_color SPRING = {0x10, 0x40, 0xc0, 0xff};
 
 enum { W = 1600, H = 800, COLS = 4, SCALE = 1, CELL_W = 20, CELL_H = 44 };
 static const isk_font FONT = ISK_FONT_6X13;
@@ -46,12 +49,13 @@ static void thick_line(isk_canvas *c, double x0, double y0, double x1, double y1
         isk_stroke_line(c, x0 + d, y0, x1 + d, y1, col, ISK_BLEND_OVER);
 }
 
-/* The line where b*h/m = edge, in the panel whose cells start at (px, py):
- * column u (fractional, 0 = the first dt) at row k (0 = 1 substep). */
+/* The line where a ratio proportional to h (b*h/m, w*h) reaches edge, in
+ * the panel whose cells start at (px, py): column u (fractional, 0 = the
+ * first dt) at row k (0 = 1 substep). */
 static void edge_line(isk_canvas *c, int px, int py, double ratio1, double edge, isk_color col, const char *label)
 {
-    /* b*h/m at column u, row k: ratio1 * 2^(u/2) / 2^k, ratio1 at u = 0, k = 0 */
-    if (!(ratio1 > 0) || !isfinite(edge))
+    /* the ratio at column u, row k: ratio1 * 2^(u/2) / 2^k, ratio1 at u = 0, k = 0 */
+    if (!(ratio1 > 0) || !isfinite(edge) || !(edge > 0))
         return;
     const double u0 = 2 * log2(edge / ratio1); /* at row 0 */
     const double grid_w = STABILITY_NDT * CELL_W, grid_h = STABILITY_NSUB * CELL_H;
@@ -80,12 +84,19 @@ static void panel(isk_canvas *c, int x, int y, const stability_map *map, int m)
 {
     char buf[96];
     const int gx = x + 70, gy = y + 34, grid_h = STABILITY_NSUB * CELL_H;
-    double edge = isk_integrator_drag_edge((isk_integrator)m);
+    const double edge = isk_integrator_drag_edge((isk_integrator)m);
+    const double spring = isk_integrator_spring_edge((isk_integrator)m);
+    char d[24], w[32];
     if (isfinite(edge))
-        snprintf(buf, sizeof buf, "%s   drag edge b*h/m = %.4g", isk_integrator_name((isk_integrator)m), edge);
+        snprintf(d, sizeof d, "%.4g", edge);
     else
-        snprintf(buf, sizeof buf, "%s   no drag edge", isk_integrator_name((isk_integrator)m));
-    text(c, gx, y + 12, buf, INK);
+        snprintf(d, sizeof d, "none");
+    if (spring > 0)
+        snprintf(w, sizeof w, "%.4g", spring);
+    else
+        snprintf(w, sizeof w, "none (grows)");
+    snprintf(buf, sizeof buf, "%s   edges: b*h/m %s, w*h %s", isk_integrator_name((isk_integrator)m), d, w);
+    text(c, x + 10, y + 12, buf, INK);
     for (int k = 0; k < STABILITY_NSUB; k++) {
         snprintf(buf, sizeof buf, "x%d", map->substeps[k]);
         text(c, gx - 8 - isk_font_text_width(FONT, buf, SCALE), gy + grid_h - (k + 1) * CELL_H + CELL_H / 2 - 6, buf,
@@ -122,6 +133,7 @@ static void panel(isk_canvas *c, int x, int y, const stability_map *map, int m)
     const double r1 = map->cell[m][0][0].drag_ratio;
     edge_line(c, gx, gy, r1, ISK_DRAG_SATURATION, CAP, "cap");
     edge_line(c, gx, gy, r1, edge, EDGE, "edge");
+    edge_line(c, gx, gy, map->cell[m][0][0].spring_ratio, spring, SPRING, "core");
 }
 
 int stability_map_write(const study_opts *o, const char *name, const stability_map *map)
@@ -159,8 +171,12 @@ int stability_map_write(const study_opts *o, const char *name, const stability_m
     text(&c, 70, ly + 1, "edge: b*h/m where the textbook method's drag alone would grow (iskra/stability.h); "
                          "iskra's cap keeps every step left of it", INK);
     ly += 24;
-    text(&c, 20, ly + 1, "Lines only where the scene has drag.  h = dt / substeps; b*h/m of the lightest particle.",
-         INK);
+    thick_line(&c, 20, ly + 7, 60, ly + 7, SPRING);
+    text(&c, 70, ly + 1, "core: w*h at the method's spring edge, w of the stiffest linear spring (a potential's core "
+                         "inside its min distance, or P = 0)", INK);
+    ly += 24;
+    text(&c, 20, ly + 1, "Lines only where the scene has drag or such a spring.  h = dt / substeps; m of the lightest "
+                         "particle.", INK);
     char path[4096];
     snprintf(path, sizeof path, "%s/%s", o->out_dir, name);
     int rc = cleanup_png_write(&c, path);

@@ -3,7 +3,7 @@
  * the map drawn from them (study_stability.c runs the cells,
  * stability_map.c draws them): one panel per integrator, frame step dt
  * across (log), substeps up, each cell coloured by its class, the drag
- * edges of iskra/stability.h drawn as lines. */
+ * and spring edges of iskra/stability.h drawn as lines. */
 #ifndef ISKRA_TOOL_STABILITY_MAP_H
 #define ISKRA_TOOL_STABILITY_MAP_H
 
@@ -35,6 +35,7 @@ typedef struct stability_cell {
     size_t removed, zigzag;
     double kinetic_ratio; /* largest kinetic energy over the reference's up to then */
     double drag_ratio;    /* b*h/m, the largest of the emitters' */
+    double spring_ratio;  /* w*h of the stiffest linear spring, the largest of the emitters' */
 } stability_cell;
 
 typedef struct stability_map {

@@ -31,8 +31,8 @@
  * Kinetic energy, not the total: births, potentials that switch
  * themselves off and moving forces make a scene's total energy jump for
  * reasons that are not the integrator's, and the reference has the same
- * births and switches.  The analytic drag edges (iskra/stability.h) are
- * drawn on the map; the map is deterministic (same scene, same CSV and
+ * births and switches.  The analytic drag and spring edges
+ * (iskra/stability.h) are drawn on the map; the map is deterministic (same scene, same CSV and
  * PNG bytes), and no time is measured.  Output: stability_STEM.csv (one
  * row per cell) and stability_STEM.png. */
 #include <math.h>
@@ -222,8 +222,9 @@ static void help(FILE *f)
                "  zigzag frame to frame), growing (kinetic energy past twice the\n"
                "  reference's) or removed (particles went non-finite).  Writes\n"
                "  DIR/stability_NAME.csv and DIR/stability_NAME.png (default DIR\n"
-               "  out/stability; missing directories are created), with the drag edges\n"
-               "  iskra knows drawn on the map (docs/accuracy.md, \"Stability map\").\n"
+               "  out/stability; missing directories are created), with the drag and\n"
+               "  spring edges iskra knows drawn on the map (docs/accuracy.md,\n"
+               "  \"Stability map\").\n"
                "  --frames N  each cell simulates N frames of the scene's dt (default:\n"
                "              the scene's frames, else 120), at least %d of its own\n"
                "  exit status: 0 done, 1 a run failed, 2 usage or scene error\n",
@@ -304,7 +305,7 @@ int bench_stability(int argc, char **argv)
     rc = run_reference(def, Tmax, &kref, scene);
     study_buf csv = {0};
     study_printf(&csv, "scene,integrator,substeps,dt,h,frames,class,removed_nonfinite,kinetic_ratio,"
-                       "zigzag_particles,drag_ratio,drag_edge\n");
+                       "zigzag_particles,drag_ratio,drag_edge,spring_ratio,spring_edge\n");
     for (int m = 0; m < ISK_INTEGRATOR_COUNT && rc == 0; m++) {
         printf("  %-11s", isk_integrator_name((isk_integrator)m));
         for (int k = 0; k < STABILITY_NSUB && rc == 0; k++) {
@@ -315,15 +316,17 @@ int bench_stability(int argc, char **argv)
                 c->dt = map->dt[j];
                 c->frames = map->frames[j];
                 sweep_setting set = {c->method, c->substeps, c->dt};
-                c->drag_ratio = sweep_drag_ratio(def, &set);
+                c->drag_ratio = sweep_ratio(def, &set, isk_effect_def_drag_ratio);
+                c->spring_ratio = sweep_ratio(def, &set, isk_effect_def_spring_ratio);
                 rc = run_cell(def, kref, c);
                 if (rc)
                     break;
                 putchar("sogr"[c->cls]);
-                study_printf(&csv, "%s,%s,%d,%.17g,%.17g,%ld,%s,%zu,%.6e,%zu,%.17g,%.17g\n", map->stem,
-                             isk_integrator_name(c->method), c->substeps, c->dt, c->dt / c->substeps, c->frames,
-                             stability_class_names[c->cls], c->removed, c->kinetic_ratio, c->zigzag, c->drag_ratio,
-                             isk_integrator_drag_edge(c->method));
+                study_printf(&csv, "%s,%s,%d,%.17g,%.17g,%ld,%s,%zu,%.6e,%zu,%.17g,%.17g,%.17g,%.17g\n",
+                             map->stem, isk_integrator_name(c->method), c->substeps, c->dt, c->dt / c->substeps,
+                             c->frames, stability_class_names[c->cls], c->removed, c->kinetic_ratio, c->zigzag,
+                             c->drag_ratio, isk_integrator_drag_edge(c->method), c->spring_ratio,
+                             isk_integrator_spring_edge(c->method));
             }
             putchar(' ');
             fflush(stdout);
