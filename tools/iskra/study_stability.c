@@ -32,9 +32,9 @@
  * themselves off and moving forces make a scene's total energy jump for
  * reasons that are not the integrator's, and the reference has the same
  * births and switches.  The analytic drag and spring edges
- * (iskra/stability.h) are drawn on the map; the map is deterministic (same scene, same CSV and
- * PNG bytes), and no time is measured.  Output: stability_STEM.csv (one
- * row per cell) and stability_STEM.png. */
+ * (iskra/stability.h) are drawn on the map; the map is deterministic
+ * (same scene, same CSV and PNG bytes), and no time is measured.
+ * Output: stability_STEM.csv (one row per cell) and stability_STEM.png. */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -57,7 +57,9 @@ static const double ZIGZAG_SHARE = 0.01;
 const char *const stability_class_names[STABILITY_CLASS_COUNT] = {"stable", "oscillating", "growing", "removed"};
 
 /* Per particle slot of one emitter: its last velocity and its run of
- * reversals. */
+ * reversals.  Slots, not particles: a death that moves another particle
+ * into a slot can count one false reversal there, and a zigzag needs
+ * ZIGZAG in a row. */
 typedef struct slots {
     double *vx, *vy;
     int *run;
