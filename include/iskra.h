@@ -96,6 +96,7 @@
 #include "iskra/presets.h"
 #include "iskra/chart.h"
 #include "iskra/problems.h"
+#include "iskra/stability.h"
 #include "iskra/outfile.h"
 #include "iskra/refimg.h"
 #include "iskra/anim.h"

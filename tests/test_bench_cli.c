@@ -35,7 +35,7 @@ Test(bench_cli, usage_errors)
 {
     cli_fresh(USAGE);
     usage_error("bench", "expected 'accuracy'");
-    usage_error("bench speed", "expected 'accuracy', got 'speed'");
+    usage_error("bench speed", "expected 'accuracy' or 'stability', got 'speed'");
     usage_error("bench accuracy --bogus", "unknown option '--bogus'");
     usage_error("bench accuracy --only", "--only needs a value");
     usage_error("bench accuracy --out", "--out needs a value");

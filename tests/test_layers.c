@@ -59,7 +59,7 @@ static const struct {
     {"shape.h", "sim"},        {"problems.h", "sim"},      {"limits.h", "sim"},      {"tasks.h", "sim"},
     {"teach.h", "teach"},
     {"keys.h", "scene"},       {"effect.h", "scene"},      {"scene.h", "scene"},     {"presets.h", "scene"},
-    {"snapshot.h", "scene"},   {"timeline.h", "scene"},    {"probes.h", "scene"},
+    {"snapshot.h", "scene"},   {"timeline.h", "scene"},    {"probes.h", "scene"},    {"stability.h", "scene"},
     {"png.h", "io"},           {"texture_png.h", "io"},    {"anim.h", "io"},         {"outfile.h", "io"},
     {"refimg.h", "io"},        {"sdl.h", "io"},
     {"ui.h", "ui"},            {"ui_sdl.h", "ui_sdl"},

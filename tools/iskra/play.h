@@ -216,6 +216,8 @@ typedef struct player {
     char precision_text[64];   /* thesis: the precision as typed ("2.5"), "" when it is the substeps */
     char status[600];          /* the last message of an action, under the console */
     char reload_error[600];    /* "FILE:LINE: message" while the file does not load; "" when it does */
+    int drag_level;            /* play_stability.c: 1 + where the drag sits against the edges; 0: not seen */
+    int spring_level;          /* play_stability.c: the same for the stiffest potential core */
     play_inspector_state insp;
     /* charts */
     play_history hist;
@@ -285,6 +287,10 @@ void play_restarted(player *p);
  * slider, the click mode, the time step; a start_paused scene runs its
  * first frame and holds. */
 void play_begin_scene(player *p);
+/* Says so when this frame's edits moved the scene's drag across iskra's
+ * cap or its integrator's drag edge, or a potential's core across its
+ * spring edge (play_stability.c). */
+void play_stability_watch(player *p);
 void play_say(player *p, const char *fmt, ...)
 #if defined(__GNUC__)
     __attribute__((format(printf, 2, 3)))

@@ -37,6 +37,7 @@ int play_frame(player *p, double dt_seconds, const isk_event *ev, int nev)
     play_canvas(p);
     isk_ui_end(&p->ui);
     play_shortcuts(p);
+    play_stability_watch(p);
     if (p->quit || p->failed)
         return 1;
     play_rewind_watch(p); /* after this frame's edits, before its steps */

@@ -57,5 +57,8 @@ int study_knobs(const study_opts *o);       /* study_knobs.c */
 int study_invariants(const study_opts *o);   /* study_invariants.c */
 int study_budget(const study_opts *o);       /* study_budget.c */
 int study_spring_floor(const study_opts *o); /* study_spring_floor.c */
+/* `--scene SCENE [--frames N]` (study_scene.c): returns 0, 1 on a runtime
+ * failure, 2 on a scene error (printed). */
+int study_scene(const study_opts *o, const char *scene, long frames);
 
 #endif
