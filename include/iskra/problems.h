@@ -233,6 +233,14 @@ typedef struct isk_spring_floor {
 
 isk_status isk_problem_spring_floor(isk_integrator method, double dt, double seconds, int floor,
                                     isk_spring_floor *out);
+/* The same problem in your own system (an isk_system_init'ed one: its
+ * forces, walls, particles and clock are replaced): `count` particles
+ * all starting alike (more of them only make timings steadier), the floor
+ * or not; and particle i's energy per unit mass, the conserved E.
+ * ISK_ERR_NULL, ISK_ERR_RANGE (count 0 or over ISK_PARTICLES_MAX),
+ * ISK_ERR_NOMEM. */
+isk_status isk_problem_spring_floor_setup(isk_system *s, size_t count, int floor);
+double isk_problem_spring_floor_energy(const isk_particles *p, size_t i);
 
 #ifdef __cplusplus
 }
