@@ -364,6 +364,7 @@ int play_cli_open(player *p, const play_opts *o, outpath_plan *plan, const char 
 
 void play_cli_close(player *p)
 {
+    play_shadow_report(p, stderr); /* while the scene is there to say its frame */
     isk_canvas_free(&p->sim);
     isk_canvas_free(&p->chart_cache);
     isk_effect_destroy(p->fx);

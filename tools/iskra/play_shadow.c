@@ -163,6 +163,17 @@ void play_shadow_free(player *p)
     p->shadow = NULL;
 }
 
+void play_shadow_report(const player *p, FILE *f)
+{
+    const play_shadow *s = p->shadow;
+    if (!s)
+        return;
+    fprintf(f, "iskra play: shadow at frame %ld (%s at %dx the substeps): median %.9g px, p99 %.9g px, max %.9g px; "
+               "%zu of %zu particles compared from frame %ld\n",
+            isk_effect_frame(p->fx), isk_integrator_names[s->integrator], factor_of(p), s->last.median, s->last.p99,
+            s->last.max, s->last.compared, isk_effect_particle_count(p->fx), s->since);
+}
+
 void play_shadow_restart(player *p)
 {
     if (!p->shadow_wanted) {
@@ -487,18 +498,20 @@ void play_shadow_draw(player *p)
     /* At the canvas's top right: the text, the ghosts' legend, the chart. */
     const isk_font f = ISK_FONT_6X13;
     const int lh = isk_font_text_height(f, "X", 1) + 2, pad = 4;
-    int w = v.width / 2;
-    w = w < 240 ? 240 : w > 420 ? 420 : w;
-    if (w > v.width)
-        return; /* no room */
     char lines[SHADOW_LINES][160];
     const int n = text_lines(p, lines);
-    const int ch_h = w * 11 / 20 >= 120 ? w * 11 / 20 : 120;
+    /* Half the canvas's width at its top right; a narrow canvas gives all
+     * its width, at its foot (the HUD has the top left). */
+    int w = v.width / 2 < 240 ? v.width : v.width / 2 > 420 ? 420 : v.width / 2;
+    int ch_h = w * 11 / 20 >= 120 ? w * 11 / 20 : 120;
     const int x = v.width - w, text_h = n * lh + 2 * pad;
-    isk_fill_rect(&v, x, 0, w, text_h, isk_rgba(0, 0, 0, 200), ISK_BLEND_OVER);
+    if (text_h + ch_h > v.height)
+        ch_h = 0; /* no room for the chart */
+    const int y0 = w == v.width ? v.height - text_h - ch_h : 0;
+    isk_fill_rect(&v, x, y0, w, text_h, isk_rgba(0, 0, 0, 200), ISK_BLEND_OVER);
     for (int i = 0; i < n - 1; i++)
-        isk_font_draw_text(&v, f, x + pad, pad + i * lh, lines[i], 1, ISK_WHITE, ISK_BLEND_OVER);
-    int lx = x + pad, ly = pad + (n - 1) * lh;
+        isk_font_draw_text(&v, f, x + pad, y0 + pad + i * lh, lines[i], 1, ISK_WHITE, ISK_BLEND_OVER);
+    int lx = x + pad, ly = y0 + pad + (n - 1) * lh;
     isk_font_draw_text(&v, f, lx, ly, "ghosts:", 1, ISK_WHITE, ISK_BLEND_OVER);
     lx += isk_font_text_width(f, "ghosts: ", 1);
     for (int i = 0; i < NBANDS; i++) {
@@ -508,8 +521,8 @@ void play_shadow_draw(player *p)
         isk_font_draw_text(&v, f, lx + 10, ly, bands[i].label, 1, ISK_WHITE, ISK_BLEND_OVER);
         lx += 10 + isk_font_text_width(f, bands[i].label, 1) + 8;
     }
-    if (text_h + ch_h > v.height)
-        return;
+    if (ch_h < 120 || w < 160)
+        return; /* the chart needs 160 x 120 */
     if (s->chart.width != w || s->chart.height != ch_h) {
         isk_canvas_free(&s->chart);
         if (isk_canvas_init(&s->chart, w, ch_h) != ISK_OK)
@@ -524,5 +537,5 @@ void play_shadow_draw(player *p)
         s->chart_drawn_n = s->n;
     }
     for (int y = 0; y < ch_h; y++)
-        memcpy(isk_canvas_at(&v, x, text_h + y), isk_canvas_at(&s->chart, 0, y), (size_t)w * 4);
+        memcpy(isk_canvas_at(&v, x, y0 + text_h + y), isk_canvas_at(&s->chart, 0, y), (size_t)w * 4);
 }

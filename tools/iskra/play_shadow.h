@@ -31,6 +31,7 @@
 #define ISKRA_TOOL_PLAY_SHADOW_H
 
 #include <stddef.h>
+#include <stdio.h>
 
 #include "play.h"
 
@@ -61,6 +62,9 @@ void play_shadow_measure(player *p);
 /* The ghosts, the error's text and chart over the canvas in p->shown. */
 void play_shadow_draw(player *p);
 void play_shadow_free(player *p);
+/* One line for the end of a session (stderr): the reference, the last
+ * frame's error, how many were compared since which frame. */
+void play_shadow_report(const player *p, FILE *f);
 /* The last frame's error (zeros while off). */
 play_shadow_error play_shadow_last(const player *p);
 
