@@ -166,6 +166,26 @@ Test(shadow, fig29_the_median_falls_the_tail_does_not, .timeout = 120)
     cr_expect(fabs(s1.p99 - 27.0) < 0.05 && fabs(s4.p99 - 24.1) < 0.05, "%g %g", s1.p99, s4.p99);
 }
 
+/* A killing deflector takes a particle in one run and not in the other:
+ * from then on the slots pair different particles, so that emitter is not
+ * compared, and the canvas says so. */
+Test(shadow, an_emitter_whose_counts_differ_is_not_compared)
+{
+    scene_file(OUT "kill.ini", "[scene]\nwidth = 320\nheight = 240\nseed = 5\n[view]\nxmin = -8\nxmax = 8\n"
+                               "ymin = -6\nymax = 6\n[force gravity]\ng = 9.81\n[force well]\nkind = potential\n"
+                               "k = 30\nposition = 0, 0\n[deflector catch]\nsegment = -1, -3, 1, -3\n"
+                               "reaction = kill\n[emitter sparks]\nsource = stream\nrate = 400\nshape = disc\n"
+                               "shape_a = 2\nposition = 0, 4\nforces = gravity, well\ndeflectors = catch\n");
+    shadow_line s = session(OUT "kill", OUT "kill.ini --shadow --frames 90");
+    cr_expect_str_eq(s.method, "rk4"); /* a deflector: not smooth */
+    cr_expect_gt(s.total, 400);
+    cr_expect_eq(s.compared, 0);
+    cr_expect(s.max == 0, "%g", s.max);
+    /* before the first particle reaches the deflector, every one is compared */
+    shadow_line t = session(OUT "kill-40", OUT "kill.ini --shadow --frames 40");
+    cr_expect_eq(t.compared, t.total);
+}
+
 /* B goes back: the reference starts again from the frame the run went to. */
 Test(shadow, a_rewind_starts_it_again_there)
 {

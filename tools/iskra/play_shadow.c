@@ -317,7 +317,8 @@ void play_shadow_measure(player *p)
         }
     }
     s->last = play_shadow_error_of(s->px, n);
-    push(s, isk_effect_time(p->fx), s->last.median, s->last.p99);
+    if (n > 0) /* nothing compared is no error: a gap in the chart */
+        push(s, isk_effect_time(p->fx), s->last.median, s->last.p99);
 }
 
 /* ---- the edits, followed -------------------------------------------------------------------- */
@@ -467,8 +468,11 @@ static int text_lines(player *p, char lines[SHADOW_LINES][160])
     snprintf(lines[n++], 160, "shadow: %s at %dx the substeps%s", isk_integrator_names[s->integrator],
              factor_of(p), s->clamped ? " (at most)" : "");
     snprintf(lines[n++], 160, "  (%s)", s->why);
-    snprintf(lines[n++], 160, "median %.3g px, p99 %.3g px, max %.3g px", s->last.median, s->last.p99,
-             s->last.max);
+    if (s->last.compared)
+        snprintf(lines[n++], 160, "median %.3g px, p99 %.3g px, max %.3g px", s->last.median, s->last.p99,
+                 s->last.max);
+    else
+        snprintf(lines[n++], 160, "error: no particle to compare");
     snprintf(lines[n++], 160, "%zu of %zu compared, from frame %ld", s->last.compared,
              isk_effect_particle_count(p->fx), s->since);
     if (p->fixed_clock)
