@@ -52,11 +52,12 @@ static int read_shadow(const char *dir, shadow_line *o)
 {
     char *e = play_stderr(dir);
     const char *at = e ? strstr(e, "iskra play: shadow at frame ") : NULL;
-    int ok = at && sscanf(at,
-                          "iskra play: shadow at frame %ld (%15s at %dx the substeps): median %lf px, p99 %lf px, "
-                          "max %lf px; %zu of %zu particles compared from frame %ld",
-                          &o->frame, o->method, &o->factor, &o->median, &o->p99, &o->max, &o->compared, &o->total,
-                          &o->since) == 9;
+    const char *numbers = at ? strstr(at, "): median ") : NULL; /* after "the substeps" and a cap, if any */
+    int ok = numbers &&
+             sscanf(at, "iskra play: shadow at frame %ld (%15s at %dx the substeps", &o->frame, o->method,
+                    &o->factor) == 3 &&
+             sscanf(numbers, "): median %lf px, p99 %lf px, max %lf px; %zu of %zu particles compared from frame %ld",
+                    &o->median, &o->p99, &o->max, &o->compared, &o->total, &o->since) == 6;
     free(e);
     return ok;
 }
@@ -95,6 +96,11 @@ Test(shadow, identical_settings_give_an_error_of_exactly_zero)
     s = session(OUT "finer", OUT "smooth.ini --shadow --frames 60");
     cr_expect_eq(s.factor, 16);
     cr_expect(s.max > 0 && s.max < 1e-4, "%g", s.max);
+    /* 16 x 100 substeps passes the limit: the reference runs 1000 and says so */
+    cr_assert_eq(play_session(OUT "capped", OUT "smooth.ini --shadow --substeps 100 --frames 2"), 0);
+    char *e = play_stderr(OUT "capped");
+    cr_expect(strstr(e, "(yoshida4 at 16x the substeps, capped at 1000)"), "%s", e);
+    free(e);
 }
 
 /* A click, the drag, a potential's k, the substeps and a potential dragged

@@ -106,7 +106,8 @@ static void say_off(player *p, const char *what, const char *message)
 
 static int factor_of(const player *p) { return p->shadow_factor > 0 ? p->shadow_factor : PLAY_SHADOW_FACTOR; }
 
-/* factor x n substeps, at most `limit` (noted). */
+/* factor x n substeps, at most `limit` (noted; the scene's limit,
+ * ISK_SUBSTEPS_MAX, and an emitter's are both 1000). */
 static int finer(play_shadow *s, int factor, int n, int limit)
 {
     if ((long)factor * n <= limit)
@@ -168,10 +169,11 @@ void play_shadow_report(const player *p, FILE *f)
     const play_shadow *s = p->shadow;
     if (!s)
         return;
-    fprintf(f, "iskra play: shadow at frame %ld (%s at %dx the substeps): median %.9g px, p99 %.9g px, max %.9g px; "
-               "%zu of %zu particles compared from frame %ld\n",
-            isk_effect_frame(p->fx), isk_integrator_names[s->integrator], factor_of(p), s->last.median, s->last.p99,
-            s->last.max, s->last.compared, isk_effect_particle_count(p->fx), s->since);
+    fprintf(f, "iskra play: shadow at frame %ld (%s at %dx the substeps%s): median %.9g px, p99 %.9g px, "
+               "max %.9g px; %zu of %zu particles compared from frame %ld\n",
+            isk_effect_frame(p->fx), isk_integrator_names[s->integrator], factor_of(p),
+            s->clamped ? ", capped at 1000" : "", s->last.median, s->last.p99, s->last.max, s->last.compared,
+            isk_effect_particle_count(p->fx), s->since);
 }
 
 void play_shadow_restart(player *p)
@@ -257,6 +259,7 @@ double play_shadow_stepped(player *p, double main_seconds)
         say_off(p, "the reference's step", isk_status_str(st));
         return seconds;
     }
+    /* main_seconds is the scene's step (with its render when it keeps trails) */
     s->main_s = s->timed ? 0.9 * s->main_s + 0.1 * main_seconds : main_seconds;
     s->shadow_s = s->timed ? 0.9 * s->shadow_s + 0.1 * seconds : seconds;
     s->timed = 1;
@@ -466,7 +469,7 @@ static int text_lines(player *p, char lines[SHADOW_LINES][160])
     const isk_effect_def *d = isk_effect_definition(p->fx);
     int n = 0;
     snprintf(lines[n++], 160, "shadow: %s at %dx the substeps%s", isk_integrator_names[s->integrator],
-             factor_of(p), s->clamped ? " (at most)" : "");
+             factor_of(p), s->clamped ? ", capped" : "");
     snprintf(lines[n++], 160, "  (%s)", s->why);
     if (s->last.compared)
         snprintf(lines[n++], 160, "median %.3g px, p99 %.3g px, max %.3g px", s->last.median, s->last.p99,
