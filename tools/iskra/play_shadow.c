@@ -106,14 +106,13 @@ static void say_off(player *p, const char *what, const char *message)
 
 static int factor_of(const player *p) { return p->shadow_factor > 0 ? p->shadow_factor : PLAY_SHADOW_FACTOR; }
 
-/* factor x n substeps, at most `limit` (noted; the scene's limit,
- * ISK_SUBSTEPS_MAX, and an emitter's are both 1000). */
-static int finer(play_shadow *s, int factor, int n, int limit)
+/* factor x n substeps, at most ISK_SUBSTEPS_MAX (noted). */
+static int finer(play_shadow *s, int factor, int n)
 {
-    if ((long)factor * n <= limit)
+    if ((long)factor * n <= ISK_SUBSTEPS_MAX)
         return factor * n;
     s->clamped = 1;
-    return limit;
+    return ISK_SUBSTEPS_MAX;
 }
 
 /* The reference's integrator and substeps, from the running scene's:
@@ -128,7 +127,7 @@ static int apply_settings(player *p)
     s->integrator = rule_for(d, s->why, sizeof s->why);
     s->clamped = 0;
     const char *method = isk_integrator_names[s->integrator];
-    snprintf(v, sizeof v, "%d", finer(s, factor, d->substeps, ISK_SUBSTEPS_MAX));
+    snprintf(v, sizeof v, "%d", finer(s, factor, d->substeps));
     if (isk_effect_set(s->fx, "scene", "integrator", method, &err) != ISK_OK ||
         isk_effect_set(s->fx, "scene", "substeps", v, &err) != ISK_OK) {
         say_off(p, "the reference's integration", err.message);
@@ -138,7 +137,7 @@ static int apply_settings(player *p)
         const isk_emitter_motion *m = &d->emitters[i].motion;
         snprintf(sec, sizeof sec, "emitter %s", d->emitters[i].name);
         if (m->substeps > 0)
-            snprintf(v, sizeof v, "%d", finer(s, factor, m->substeps, 1000));
+            snprintf(v, sizeof v, "%d", finer(s, factor, m->substeps));
         else
             snprintf(v, sizeof v, "scene");
         if (isk_effect_set(s->fx, sec, "integrator", m->integrator == ISK_INTEGRATE_INHERIT ? "scene" : method,
@@ -169,10 +168,12 @@ void play_shadow_report(const player *p, FILE *f)
     const play_shadow *s = p->shadow;
     if (!s)
         return;
+    char cap[40] = "";
+    if (s->clamped)
+        snprintf(cap, sizeof cap, ", capped at %d", ISK_SUBSTEPS_MAX);
     fprintf(f, "iskra play: shadow at frame %ld (%s at %dx the substeps%s): median %.9g px, p99 %.9g px, "
                "max %.9g px; %zu of %zu particles compared from frame %ld\n",
-            isk_effect_frame(p->fx), isk_integrator_names[s->integrator], factor_of(p),
-            s->clamped ? ", capped at 1000" : "", s->last.median, s->last.p99, s->last.max, s->last.compared,
+            isk_effect_frame(p->fx), isk_integrator_names[s->integrator], factor_of(p), cap, s->last.median, s->last.p99, s->last.max, s->last.compared,
             isk_effect_particle_count(p->fx), s->since);
 }
 
