@@ -34,12 +34,14 @@
 #include <unistd.h>
 
 #include "cmd.h"
+#include "iskra/limits.h"
 #include "iskra/png.h"
 #include "iskra/sdl.h"
 #include "lesson.h"
 #include "outpath.h"
 #include "play.h"
 #include "play_cli.h"
+#include "play_shadow.h"
 #include "scene_args.h"
 
 void play_cli_help(FILE *f)
@@ -48,7 +50,7 @@ void play_cli_help(FILE *f)
                "                  [--ui-scale N] [--screen WxH] [--panel console|inspector] [--no-panel]\n"
                "                  [--save PATH] [--shots DIR] [--follow EMITTER] [--seed N] [--size WxH]\n"
                "                  [--dt S] [--substeps N] [--threads N] [--max-memory B]\n"
-               "                  [--max-work N] [--record LESSON]\n"
+               "                  [--max-work N] [--record LESSON] [--shadow] [--shadow-factor N]\n"
                "       iskra play --replay LESSON [--frames N] [--fixed-clock] [--shots DIR]\n"
                "  Runs the scene in a window with a panel beside it: the thesis's simulator console\n"
                "  for the explosion thesis's scenes, the inspector (every section's live keys) for\n"
@@ -82,7 +84,11 @@ void play_cli_help(FILE *f)
                "                   the end); one step per shown frame, as with --fixed-clock but at\n"
                "                   about 60 frames a second; F9 marks a checkpoint (shot:checkpoint-N)\n"
                "  --replay LESSON  show a recorded lesson again, frame by frame; its shots are\n"
-               "                   written as DIR/NAME.png with --shots DIR (iskra replay checks them)\n");
+               "                   written as DIR/NAME.png with --shots DIR (iskra replay checks them)\n"
+               "  --shadow         start with the shadow run on (G toggles it): a copy of the scene\n"
+               "                   stepped with yoshida4 (rk4 where forces are not smooth) at 16x the\n"
+               "                   substeps; each particle's error shows as a ghost, with a chart\n"
+               "  --shadow-factor N the shadow's substeps per the scene's, 1..1000 (default 16)\n");
     play_script_help(f);
     scene_args_help(f);
     fprintf(f, "  exit status: 0 success, 1 no window (no display) or runtime failure, 2 usage or scene error\n");
@@ -189,6 +195,13 @@ int play_cli_options(player *p, play_opts *o, int argc, char **argv, int *skip)
         if (!strcmp(argv[i], "--fixed-clock")) {
             o->fixed_clock = 1;
             skip_args(skip, at, i);
+        } else if (!strcmp(argv[i], "--shadow")) {
+            p->shadow_wanted = 1;
+        } else if ((r = arg_value("play", argc, argv, &i, "--shadow-factor", &v)) != 0) {
+            long factor;
+            if (r < 0 || !arg_long("play", "--shadow-factor", v, 1, ISK_SUBSTEPS_MAX, &factor))
+                return 2;
+            p->shadow_factor = (int)factor;
         } else if (!strcmp(argv[i], "--no-panel")) {
             o->no_panel = 1;
         } else if (!strcmp(argv[i], "--list-widgets")) {
@@ -351,6 +364,7 @@ int play_cli_open(player *p, const play_opts *o, outpath_plan *plan, const char 
 
 void play_cli_close(player *p)
 {
+    play_shadow_report(p, stderr); /* while the scene is there to say its frame */
     isk_canvas_free(&p->sim);
     isk_canvas_free(&p->chart_cache);
     isk_effect_destroy(p->fx);
@@ -358,6 +372,7 @@ void play_cli_close(player *p)
     play_script_free(&p->script);
     isk_timeline_destroy(p->timeline);
     p->timeline = NULL;
+    play_shadow_free(p);
 }
 
 /* --replay: a lesson's shot:NAME into --shots DIR as NAME.png, saying

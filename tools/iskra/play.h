@@ -27,6 +27,8 @@
  *   play_files.c    reload (by hand and when the file changes), save,
  *                   screenshots
  *   play_script.c   --script: events played at given frames (tests, demos)
+ *   play_shadow.c   --shadow, G: a reference copy stepped finer beside the
+ *                   scene, its error on the canvas (play_shadow.h)
  *
  * A frame: input into the widget layer; the panel (its actions change the
  * effect at once); shortcuts; the simulation steps of the frame; the
@@ -237,6 +239,10 @@ typedef struct player {
     int timeline_shown;        /* the bar along the canvas's foot is drawn */
     int timeline_held;         /* the bar took the button's press: the drag is its */
     isk_ui_rect timeline_bar;  /* where it is, in the window */
+    /* the shadow run (play_shadow.h): a reference copy stepped beside, NULL while off */
+    struct play_shadow *shadow;
+    int shadow_wanted;         /* --shadow or G: on (it starts with the scene, a reset, a seek) */
+    int shadow_factor;         /* --shadow-factor: its substeps per the scene's (0: PLAY_SHADOW_FACTOR) */
     /* files */
     const char *save_to;       /* --save PATH, or NULL: iskra-SCENE.ini */
     play_script script;
@@ -258,7 +264,7 @@ typedef enum play_action {
     PLAY_PLAY = 0, PLAY_PAUSE, PLAY_STOP, PLAY_RESET, PLAY_RELOAD, PLAY_STEP,
     PLAY_SLOWER, PLAY_FASTER, PLAY_MORE_PRECISION, PLAY_LESS_PRECISION,
     PLAY_SAVE, PLAY_SHOT, PLAY_SHOT_WINDOW, PLAY_PANEL, PLAY_HUD, PLAY_QUIT, PLAY_TOGGLE_PAUSE,
-    PLAY_BACK, PLAY_TIMELINE, PLAY_ACTION_COUNT
+    PLAY_BACK, PLAY_TIMELINE, PLAY_SHADOW, PLAY_ACTION_COUNT
 } play_action;
 typedef struct play_action_info {
     const char *id;            /* widget name, for scripts */

@@ -6,6 +6,7 @@
 #include <string.h>
 
 #include "play.h"
+#include "play_shadow.h"
 
 static const play_action_info actions[PLAY_ACTION_COUNT] = {
     [PLAY_PLAY] = {"play", "Play", "P", 'p', 0, "run"},
@@ -28,6 +29,7 @@ static const play_action_info actions[PLAY_ACTION_COUNT] = {
     [PLAY_QUIT] = {"quit", "Quit", "Esc", ISK_UI_KEY_ESCAPE, 0, "quit"},
     [PLAY_BACK] = {"back", "Back", "B", 'b', 0, "one frame back"},
     [PLAY_TIMELINE] = {"timeline", "Timeline", "T", 't', 0, "timeline (click it: go there)"},
+    [PLAY_SHADOW] = {"shadow", "Shadow", "G", 'g', 0, "shadow run: a finer reference, its error as ghosts"},
 };
 
 const play_action_info *play_action_at(play_action a)
@@ -122,6 +124,7 @@ void play_do(player *p, play_action a)
     case PLAY_QUIT: p->quit = 1; break;
     case PLAY_BACK: play_rewind_back(p); break;
     case PLAY_TIMELINE: p->timeline_shown = !p->timeline_shown; break;
+    case PLAY_SHADOW: play_shadow_toggle(p); break;
     default: break;
     }
 }

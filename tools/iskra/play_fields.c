@@ -13,6 +13,7 @@
 
 #include "iskra/keys.h"
 #include "play.h"
+#include "play_shadow.h"
 
 /* "force NAME" / "emitter NAME" of the first force of a kind or the first
  * emitter of a source, or NULL. */
@@ -47,6 +48,7 @@ int play_set(player *p, const char *section, const char *key, const char *value)
         play_say(p, "%s", err.message);
         return -1;
     }
+    play_shadow_set(p, section, key, value);
     return 0;
 }
 
@@ -105,12 +107,16 @@ static int apply(player *p, const char *id, const char *section, const char *key
         } else {
             snprintf(num, sizeof num, "%.17g", v);
         }
-        return isk_effect_set(p->fx, section, key, value, &err) == ISK_OK;
+        if (isk_effect_set(p->fx, section, key, value, &err) != ISK_OK)
+            return 0;
+        play_shadow_set(p, section, key, value);
+        return 1;
     }
     if (isk_effect_set(p->fx, section, key, typed, &err) != ISK_OK) {
         isk_ui_field_error(&p->ui, id, err.message);
         return 0;
     }
+    play_shadow_set(p, section, key, typed);
     return 1;
 }
 
@@ -195,6 +201,7 @@ int play_key_part_field(player *p, const char *id, isk_ui_rect r, const char *se
         isk_ui_field_error(&p->ui, id, err.message);
         return 0;
     }
+    play_shadow_set(p, section, key, whole);
     return 1;
 }
 
@@ -250,5 +257,6 @@ int play_precision_field(player *p, const char *id, isk_ui_rect r)
         isk_ui_field_error(&p->ui, id, err.message);
         return 0;
     }
+    play_shadow_set(p, "scene", "substeps", typed);
     return 1;
 }

@@ -8,6 +8,7 @@
 
 #include "iskra/ui_sdl.h"
 #include "play.h"
+#include "play_shadow.h"
 
 /* The canvas into the window, then what lies over it. */
 static void compose(player *p)
@@ -16,6 +17,7 @@ static void compose(player *p)
     for (int y = 0; y < l->canvas.h && y < p->shown->height; y++)
         memcpy(p->shown->pixels + (size_t)y * p->shown->stride, p->sim.pixels + (size_t)y * p->sim.stride,
                (size_t)(l->canvas.w < p->shown->width ? l->canvas.w : p->shown->width) * 4);
+    play_shadow_draw(p);
     play_hud_draw(p);
     play_rewind_draw(p);
 }

@@ -23,6 +23,7 @@
 
 #include "iskra/gradient.h"
 #include "play.h"
+#include "play_shadow.h"
 
 #define U(n) isk_ui_px(&p->ui, (n))
 
@@ -54,6 +55,8 @@ static void set(player *p, const char *id, const play_item *it, const isk_key *k
     isk_error err;
     if (isk_effect_set(p->fx, it->name, k->name, value, &err) != ISK_OK)
         isk_ui_field_error(&p->ui, id, err.message);
+    else
+        play_shadow_set(p, it->name, k->name, value);
 }
 
 /* The field showing `value`; what is typed goes to isk_effect_set. */

@@ -29,6 +29,7 @@
 #include "iskra/keys.h"
 #include "iskra/text.h"
 #include "play.h"
+#include "play_shadow.h"
 
 
 /* ---- small helpers -------------------------------------------------------------------- */
@@ -116,6 +117,7 @@ static void explosion_count(player *p, isk_ui_rect r)
         ISK_UI_FIELD_APPLY)
         return;
     if (isk_effect_set(p->fx, "click", "count", typed, &err) == ISK_OK) {
+        play_shadow_set(p, "click", "count", typed);
         p->count_refused = 0;
         return;
     }
@@ -282,10 +284,12 @@ static void potentials(player *p, isk_ui_rect box, int stacked)
         isk_error err;
         char name[ISK_NAME_MAX];
         snprintf(name, sizeof name, "%s", d->forces[f].name);
-        if (isk_effect_remove_force(p->fx, name, &err) != ISK_OK)
+        if (isk_effect_remove_force(p->fx, name, &err) != ISK_OK) {
             play_say(p, "%s", err.message);
-        else
+        } else {
             play_say(p, "potential %s removed", name);
+            play_shadow_remove_force(p, name);
+        }
     }
     isk_ui_set_disabled(ui, 0);
     /* the editor: two columns of label + field */
@@ -516,6 +520,8 @@ static void follow_mouse(player *p, double wx, double wy)
     snprintf(sec, sizeof sec, "emitter %s", p->follow);
     if (isk_effect_move(p->fx, sec, wx, wy, &err) != ISK_OK)
         play_say(p, "%s", err.message);
+    else
+        play_shadow_move(p, sec, wx, wy);
 }
 
 void play_canvas(player *p)
@@ -544,6 +550,8 @@ void play_canvas(player *p)
             isk_status s = isk_effect_click(p->fx, wx, wy);
             if (s != ISK_OK)
                 play_say(p, "click: %s", isk_status_str(s));
+            else
+                play_shadow_click(p, wx, wy);
             p->count_ref = (size_t)-1; /* new particles: the drift starts again */
         } else if (p->click_mode == PLAY_CLICK_ADD_POTENTIAL) {
             /* The thesis's new potential: k = 0 (no force until k is typed), charge 1, P 2. */
@@ -555,6 +563,7 @@ void play_canvas(player *p)
             if (isk_effect_add_potential(p->fx, name, &pot, &err) != ISK_OK) {
                 play_say(p, "%s", err.message);
             } else {
+                play_shadow_add_potential(p, name, &pot);
                 size_t n;
                 isk_effect_potentials(p->fx, &n);
                 p->selected = (int)n - 1;

@@ -10,6 +10,7 @@
 #include "iskra/draw.h"
 #include "iskra/text.h"
 #include "play.h"
+#include "play_shadow.h"
 
 static void timeline_failed(player *p, isk_status s)
 {
@@ -62,6 +63,7 @@ void play_rewind_to(player *p, long frame)
         return;
     }
     play_charts_reset(p); /* the charts follow a run forward */
+    play_shadow_restart(p); /* the reference starts again from here */
 }
 
 void play_rewind_back(player *p)

@@ -7,12 +7,14 @@
 #include <string.h>
 
 #include "play.h"
+#include "play_shadow.h"
 #include "progress.h"
 
 void play_restarted(player *p)
 {
     play_charts_reset(p);
     play_rewind_restart(p);
+    play_shadow_restart(p);
     p->dragging = 0;
     size_t n;
     isk_effect_potentials(p->fx, &n);
@@ -52,17 +54,21 @@ void play_simulate(player *p, int steps)
     const isk_effect_def *d = isk_effect_definition(p->fx);
     const int trails = !d->clear;
     size_t particles = isk_effect_particle_count(p->fx);
-    double t0 = progress_now();
+    double t0 = progress_now(), shadow_seconds = 0.0;
     for (int i = 0; i < steps; i++) {
+        const double t_step = p->shadow ? progress_now() : 0.0;
         isk_status s = trails ? isk_effect_step_render(p->fx, &p->sim) : isk_effect_step(p->fx);
         if (s != ISK_OK) {
             play_say(p, "frame %ld: %s", isk_effect_frame(p->fx), isk_status_str(s));
             p->failed = 1;
             return;
         }
+        if (p->shadow)
+            shadow_seconds += play_shadow_stepped(p, progress_now() - t_step);
         play_rewind_stepped(p);
     }
-    double seconds = progress_now() - t0;
+    double seconds = progress_now() - t0 - shadow_seconds; /* the scene's own */
+    play_shadow_measure(p);
     if (!trails && isk_effect_render(p->fx, &p->sim) != ISK_OK) {
         p->failed = 1;
         return;
