@@ -622,6 +622,17 @@ static uint64_t get_count(reader *r, uint64_t most, const char *what)
     return v;
 }
 
+/* A signed integer in [lo, hi] (0 after a failure). */
+static int64_t get_signed(reader *r, int64_t lo, int64_t hi)
+{
+    const int64_t x = (int64_t)get_u64(r);
+    if (x < lo || x > hi) {
+        fail(r, "an integer out of range");
+        return 0;
+    }
+    return x;
+}
+
 /* One row into packed memory at p (schedules may be infinite: a burst never
  * due, a path never moved). */
 static void get_row(reader *r, row_type t, unsigned char *p)
@@ -637,18 +648,12 @@ static void get_row(reader *r, row_type t, unsigned char *p)
     case ROW_U64: v = get_u64(r); memcpy(p, &v, sizeof v); break;
     case ROW_SIZE: { size_t z = (size_t)get_count(r, SIZE_MAX, "a count too large"); memcpy(p, &z, sizeof z); break; }
     case ROW_INT: {
-        int64_t x = (int64_t)get_u64(r);
-        if (x < INT_MIN || x > INT_MAX)
-            fail(r, "an integer out of range");
-        int i = (int)x;
+        int i = (int)get_signed(r, INT_MIN, INT_MAX);
         memcpy(p, &i, sizeof i);
         break;
     }
     case ROW_LONG: {
-        int64_t x = (int64_t)get_u64(r);
-        if (x < LONG_MIN || x > LONG_MAX)
-            fail(r, "a frame number out of range");
-        long l = (long)x;
+        long l = (long)get_signed(r, LONG_MIN, LONG_MAX);
         memcpy(p, &l, sizeof l);
         break;
     }

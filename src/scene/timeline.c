@@ -142,6 +142,15 @@ static isk_status take(isk_timeline *t, isk_effect *fx, const isk_canvas *canvas
     return ISK_OK;
 }
 
+/* The timeline goes on from now: what came after it was another future
+ * (forgotten by take), and now is a checkpoint of its own. */
+static isk_status go_on_from_now(isk_timeline *t, isk_effect *fx, const isk_canvas *canvas)
+{
+    t->newest = isk_effect_frame(fx);
+    t->edits = isk_effect_edits(fx);
+    return take(t, fx, canvas, 1);
+}
+
 isk_status isk_timeline_restart(isk_timeline *t, isk_effect *fx, const isk_canvas *canvas)
 {
     if (!t || !fx)
@@ -149,21 +158,14 @@ isk_status isk_timeline_restart(isk_timeline *t, isk_effect *fx, const isk_canva
     forget_from(t, 0);
     t->off = 0;
     t->every = ISK_TIMELINE_EVERY;
-    t->newest = isk_effect_frame(fx);
-    t->edits = isk_effect_edits(fx);
-    return take(t, fx, canvas, 1);
+    return go_on_from_now(t, fx, canvas);
 }
 
 isk_status isk_timeline_watch(isk_timeline *t, isk_effect *fx, const isk_canvas *canvas)
 {
     if (!t || !fx)
         return ISK_ERR_NULL;
-    if (isk_effect_edits(fx) == t->edits)
-        return ISK_OK;
-    t->edits = isk_effect_edits(fx);
-    /* what came after now was another future: forgotten, now kept */
-    t->newest = isk_effect_frame(fx);
-    return take(t, fx, canvas, 1);
+    return isk_effect_edits(fx) == t->edits ? ISK_OK : go_on_from_now(t, fx, canvas);
 }
 
 isk_status isk_timeline_stepped(isk_timeline *t, isk_effect *fx, const isk_canvas *canvas)
