@@ -23,7 +23,8 @@
  *   effect_clock.c    the time of a frame, a group's time
  *   effect_live.c     changes while running: isk_effect_set / get, potentials
  *   effect_control.c  driving an emitter by hand: emit, set_active, set_paused, move
- *   effect_snapshot.c snapshots: the running state kept, put back, as exact bytes
+ *   effect_snapshot.c snapshots: the running state kept and put back (its rows:
+ *                     snapshot_internal.h; as exact bytes: snapshot_bytes.c)
  *   effect_stream.c   when a stream's particles are born
  *   effect_events.c   sub-emitters: deaths and bounces as events, their children
  *   effect_render.c   a frame's drawing: drawings, deflectors, groups in order, potentials
