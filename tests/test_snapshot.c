@@ -7,13 +7,15 @@
  * hostile file is refused and leaves the effect as it was. */
 #include <criterion/criterion.h>
 #include <math.h>
+#include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
 #include "iskra/canvas.h"
-#include "iskra/probes.h"
 #include "iskra/effect.h"
+#include "iskra/outfile.h"
+#include "iskra/probes.h"
 #include "iskra/scene.h"
 #include "iskra/snapshot.h"
 #include "scene_text.h"
@@ -262,10 +264,10 @@ Test(snapshot, damaged_files_are_refused, .timeout = 300)
     /* resealed damage: refused by the checks, or accepted and then runnable */
     isk_effect *fx = scene_text_open("[emitter x]\nsource = stream\nrate = 5\n", 1);
     size_t accepted = 0;
-    size_t text = 0; /* the scene text's length, after the header line */
+    uint64_t text = 0; /* the scene text's length, after the header line */
     for (int i = 0; i < 8; i++)
-        text |= (size_t)bytes[17 + i] << (8 * i);
-    const size_t whole = 25 + text + 1200; /* the header, the scene, the rows: every byte; the particles sampled */
+        text |= (uint64_t)bytes[17 + i] << (8 * i);
+    const size_t whole = 25 + (size_t)text + 1200; /* the header, the scene, the rows: every byte; the particles sampled */
     for (size_t i = 0; i + 8 < n; i += i < whole ? 1 : 53)
         for (int bit = 0; bit < 8; bit += 3) {
             memcpy(copy, bytes, n);
@@ -283,7 +285,8 @@ Test(snapshot, damaged_files_are_refused, .timeout = 300)
             isk_snapshot_free(back);
             back = NULL;
         }
-    cr_assert_gt(accepted, 0, "no flip was a valid snapshot: the check saw nothing");
+    cr_assert_gt(accepted, 0, "no flip was a valid snapshot: the check saw nothing (the last refusal: %s)",
+                 err.message);
     free(copy);
     free(bytes);
     isk_snapshot_free(snap);
@@ -330,7 +333,7 @@ Test(snapshot, a_file_resumes_the_run)
     size_t n;
     isk_snapshot *snap = small_snapshot(&bytes, &n);
     isk_error err = {0};
-    cr_assert_eq(system("mkdir -p build/test-out/snapshot"), 0);
+    cr_assert_eq(isk_make_dirs("build/test-out/snapshot", &err), ISK_OK, "%s", err.message);
     const char *path = "build/test-out/snapshot/at20.snap";
     cr_assert_eq(isk_snapshot_save(snap, path, &err), ISK_OK, "%s", err.message);
     isk_snapshot *back;

@@ -149,7 +149,7 @@ Test(timeline, a_small_budget_thins_and_stays_exact)
     isk_effect *fx = open_scene("fire_campfire");
     isk_canvas c;
     start(fx, &c);
-    isk_timeline *probe = isk_timeline_create((size_t)1 << 40);
+    isk_timeline *probe = isk_timeline_create(SIZE_MAX / 2);
     cr_assert_eq(isk_timeline_restart(probe, fx, &c), ISK_OK);
     const size_t one = isk_timeline_bytes(probe);
     isk_timeline_destroy(probe);

@@ -2,6 +2,7 @@
 /* A snapshot's file (iskra/snapshot.h): its bytes written through
  * iskra/outfile.h (whole or not at all), and read back whole. */
 #include <errno.h>
+#include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -11,7 +12,7 @@
 
 /* Largest snapshot file read: a whole pool of 2^28 particles with every
  * column, and far beyond what the memory budget lets an effect hold. */
-#define SNAPSHOT_MAX_BYTES ((size_t)1 << 34 > SIZE_MAX / 2 ? SIZE_MAX / 2 : (size_t)1 << 34)
+#define SNAPSHOT_MAX_BYTES ((uint64_t)(SIZE_MAX / 2) < ((uint64_t)1 << 34) ? SIZE_MAX / 2 : (size_t)((uint64_t)1 << 34))
 
 isk_status isk_snapshot_save(const isk_snapshot *snap, const char *path, isk_error *err)
 {
