@@ -20,6 +20,7 @@
 #include "iskra/canvas.h"
 #include "play_session.h"
 #include "refimg.h"
+#include "sanitized.h"
 #include "tool_cli.h"
 
 #define OUT "out/test_shadow/"
@@ -158,18 +159,30 @@ Test(shadow, semi_euler_error_halves_as_substeps_double)
 
 /* The figure of docs/simulator.md, "The shadow run": fig 29 at 1 and 4
  * substeps, 60 frames after its start (frame 61): the median falls, the
- * 99th percentile of the jet's chaotic paths barely moves. */
+ * 99th percentile of the jet's chaotic paths barely moves.  Instrumented
+ * builds (sanitizers: ten times slower) check the same fall over 10
+ * frames; the figures are the plain build's. */
 Test(shadow, fig29_the_median_falls_the_tail_does_not, .timeout = 120)
 {
-    shadow_line s1 = session(OUT "fig29-1", "fig29_mushroom_four_potentials --shadow --frames 61 --script 'key:p'");
-    shadow_line s4 =
-        session(OUT "fig29-4", "fig29_mushroom_four_potentials --shadow --substeps 4 --frames 61 --script 'key:p'");
+#if TEST_SANITIZED
+#define FIG29_FRAMES "11"
+#else
+#define FIG29_FRAMES "61"
+#endif
+    shadow_line s1 =
+        session(OUT "fig29-1", "fig29_mushroom_four_potentials --shadow --frames " FIG29_FRAMES " --script 'key:p'");
+    shadow_line s4 = session(OUT "fig29-4", "fig29_mushroom_four_potentials --shadow --substeps 4 --frames " FIG29_FRAMES
+                                            " --script 'key:p'");
     cr_expect_str_eq(s1.method, "rk4");
-    cr_expect_eq(s1.frame, 61);
+    cr_expect_eq(s1.frame, atol(FIG29_FRAMES));
     cr_expect_eq(s1.compared, 16000);
     cr_expect_eq(s4.compared, 16000);
+    cr_expect_lt(s4.median, s1.median, "more substeps, a smaller median");
+#if !TEST_SANITIZED
     cr_expect(fabs(s1.median - 0.198) < 0.0005 && fabs(s4.median - 0.117) < 0.0005, "%g %g", s1.median, s4.median);
     cr_expect(fabs(s1.p99 - 27.0) < 0.05 && fabs(s4.p99 - 24.1) < 0.05, "%g %g", s1.p99, s4.p99);
+#endif
+#undef FIG29_FRAMES
 }
 
 /* A killing deflector takes a particle in one run and not in the other:
