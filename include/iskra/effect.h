@@ -206,6 +206,8 @@ typedef enum isk_align_mode {
 /* align = velocity without a texture draws the sprite kind as a streak this
  * many times its size long (and its size wide). */
 #define ISK_STREAK_STRETCH 4.0
+/* look.spin_end's "none": the angular speed stays what it was at birth. */
+#define ISK_SPIN_END_NONE INFINITY
 /* The longest texture path, terminator included. */
 #define ISK_TEXTURE_PATH_MAX 256
 
@@ -292,6 +294,10 @@ typedef struct isk_emitter_launch {
     double mass_range;         /* STREAM, SUB: mass = mass + U*mass_range */
     double inherit;            /* SUB: the fraction 0..1 of the parent's velocity its children keep,
                                   added to the velocity drawn above */
+    int outward;               /* STREAM, SUB (key launch_outward): the velocity drawn is turned by
+                                  the direction from the shape's centre to the birth place, so
+                                  angle 0 points straight outward (LÖVE's relative direction);
+                                  a birth exactly on the centre is not turned */
 } isk_emitter_launch;
 
 /* How long a particle lives: lifetime = seconds + U*range.  seconds is the
@@ -369,6 +375,10 @@ typedef struct isk_emitter_look {
                                         counter-clockwise in the world */
     double spin, spin_range;   /* angular speed + U*range, rad/s (keys in deg/s); angles wrap into
                                   [-pi, pi) */
+    double spin_end;           /* ISK_SPIN_END_NONE (default): the angular speed stays; else it
+                                  changes linearly over the life by spin_end - spin, so a particle
+                                  without spin_range ends its life turning at spin_end (LÖVE's
+                                  setSpin(start, end)); immortal particles keep their start */
     isk_align_mode align;      /* VELOCITY: turned along the velocity (textures, and sprites as
                                   streaks ISK_STREAK_STRETCH times longer than wide) */
     char texture[ISK_TEXTURE_PATH_MAX]; /* "": none; else the name of the definition's texture drawn
@@ -377,6 +387,9 @@ typedef struct isk_emitter_look {
     isk_vec2 texture_grid;     /* cols, rows of a sprite sheet (whole numbers 1..256; default 1, 1) */
     double texture_fps;        /* 0: the frames play once over the life, floor(t*frames); > 0: at this
                                   rate of age, wrapping */
+    isk_vec2 texture_origin;   /* the point of the frame (fractions of its width and height from its
+                                  top-left corner) placed on the particle and turned about: 0.5, 0.5
+                                  (default) its centre (LÖVE's setOffset, in fractions) */
     int trail;                 /* points of history, 0: no trail */
     double trail_width;        /* pixels, > 0 (default 1) */
     double trail_fade;         /* 0..1: alpha at the oldest point is colour alpha * (1 - trail_fade) */

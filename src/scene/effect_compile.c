@@ -217,10 +217,12 @@ isk_status isk__fx_compile(isk_effect *e, fx_group *g)
         st->u.deflect.hit = em->events.on_hit >= 0;
     }
     if (g->store.angle && isk__fx_looks_spins(em)) {
-        if (!ADD(isk__stage_spin))
+        const double change = isk__fx_looks_spin_change(em);
+        if (!(change != 0.0 ? ADD(isk__stage_spin_life) : ADD(isk__stage_spin)))
             return ISK_ERR_FULL;
         st->u.spin.spin = em->look.spin;
         st->u.spin.spin_range = em->look.spin_range;
+        st->u.spin.change = change;
     }
     /* What the stages need, folded: the start state (bounces at the time
      * of impact) kept by the motion stage's own pass, or by a stage of its

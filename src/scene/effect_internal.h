@@ -436,6 +436,9 @@ void isk__fx_free_ramps(fx_group *g);
 unsigned isk__fx_looks_columns(const isk_emitter_def *em);
 /* The emitter's particles turn by themselves (spin or spin_range): the spin stage. */
 int isk__fx_looks_spins(const isk_emitter_def *em);
+/* How much the angular speed changes over the life (spin_end - spin; 0
+ * without spin_end). */
+double isk__fx_looks_spin_change(const isk_emitter_def *em);
 /* New particles [from, count): angle, spin, size, colour (after every other
  * draw of their birth; a draw only where a range or color_pick asks). */
 void isk__fx_looks_adopt(fx_group *g, size_t from);

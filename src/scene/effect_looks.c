@@ -37,9 +37,14 @@ static int rotates(const isk_emitter_def *em)
     return angle_seen(em) && (em->look.rotation != 0 || em->look.rotation_range > 0 || isk__fx_looks_spins(em));
 }
 
+double isk__fx_looks_spin_change(const isk_emitter_def *em)
+{
+    return em->look.spin_end == ISK_SPIN_END_NONE ? 0.0 : em->look.spin_end - em->look.spin;
+}
+
 int isk__fx_looks_spins(const isk_emitter_def *em)
 {
-    return angle_seen(em) && (em->look.spin != 0 || em->look.spin_range > 0);
+    return angle_seen(em) && (em->look.spin != 0 || em->look.spin_range > 0 || isk__fx_looks_spin_change(em) != 0);
 }
 
 unsigned isk__fx_looks_columns(const isk_emitter_def *em)

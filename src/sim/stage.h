@@ -158,7 +158,8 @@ struct isk_stage {
             int hit;                                         /* count bounces into p->hit (on_hit) */
         } deflect;
         struct { const struct isk_field *f; } field;         /* isk__stage_field (src/sim/field.h) */
-        struct { double spin, spin_range; } spin;           /* isk__stage_spin: for describe only (rad/s) */
+        struct { double spin, spin_range, change; } spin;   /* isk__stage_spin: for describe only (rad/s);
+                                                               isk__stage_spin_life: change over the life */
     } u;
 };
 
@@ -236,6 +237,7 @@ extern const isk_stage_kind isk__stage_oscillate;  /* the fire thesis's horizont
 extern const isk_stage_kind isk__stage_walls;      /* isk_bounds_apply_step (after remember) */
 extern const isk_stage_kind isk__stage_deflect;    /* deflector segments */
 extern const isk_stage_kind isk__stage_spin;       /* angle += spin*h, wrapped (ISK_PARTICLES_ANGLE) */
+extern const isk_stage_kind isk__stage_spin_life;  /* the same with spin + change*t at normalised age t */
 extern const isk_stage_kind isk__stage_age;        /* age += h */
 
 #endif

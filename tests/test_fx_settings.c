@@ -1,0 +1,343 @@
+/* SPDX-License-Identifier: MIT */
+/* The everyday settings people know from LÖVE's ParticleSystem and Godot's
+ * CPUParticles2D: the gaussian and border emission areas, launch_outward,
+ * spin_end and texture_origin.  Each does what it says (a measured
+ * number), costs and changes nothing at its default (the same describe,
+ * the same bytes), gives the same bytes on 1, 2 and 3 threads, and has a
+ * reference image. */
+#include <criterion/criterion.h>
+#include <criterion/logging.h>
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "iskra/effect.h"
+#include "iskra/scene.h"
+#include "refimg_scene.h"
+#include "scene_text.h"
+
+#define PI 3.14159265358979323846
+
+static isk_effect *open_def(const char *text, int threads, int *w, int *h)
+{
+    isk_effect_def d;
+    isk_error err = {0};
+    cr_assert_eq(isk_scene_load_string(&d, text, "scenes/settings.ini", &err), ISK_OK, "%s", err.message);
+    d.threads = threads;
+    if (w)
+        *w = d.width, *h = d.height;
+    isk_effect *fx;
+    cr_assert_eq(isk_effect_create(&fx, &d, &err), ISK_OK, "%s", err.message);
+    isk_effect_def_free(&d);
+    return fx;
+}
+
+static isk_effect *open_scene(const char *text, int threads) { return open_def(text, threads, NULL, NULL); }
+
+static isk_canvas render(const char *text, int threads, long frames)
+{
+    int w, h;
+    isk_effect *fx = open_def(text, threads, &w, &h);
+    isk_canvas c = refimg_canvas(w, h, ISK_BLACK);
+    cr_assert_eq(isk_effect_run(fx, &c, frames), ISK_OK);
+    isk_effect_destroy(fx);
+    return c;
+}
+
+/* isk_effect_describe's text (free it). */
+static char *describe(const char *text)
+{
+    isk_effect *fx = open_scene(text, 1);
+    char *t = scene_text_lists(fx);
+    isk_effect_destroy(fx);
+    return t;
+}
+
+/* ---- the scenes of the reference images ---------------------------------- */
+
+/* Four streams side by side, no forces: a gaussian area (sigma 0.6, 0.3),
+ * the border of a rect turned 20 degrees, the border of an ellipse, and a
+ * circle launched outward (angle 0, speeds 1..3), drawn as streaks along
+ * their velocities: rays from its centre. */
+static const char areas_scene[] =
+    "[scene]\nwidth = 320\nheight = 96\nbackground = #101018\nseed = 5\n"
+    "[view]\nxmin = 0\nxmax = 20\nymin = 0\nymax = 6\n"
+    "[emitter gauss]\nsource = stream\nposition = 2.5, 3\nrate = 600\nlife = 1\nshape = gaussian\n"
+    "shape_a = 0.6\nshape_b = 0.3\ncolor = #ffd080\n"
+    "[emitter box]\nsource = stream\nposition = 7.5, 3\nrate = 600\nlife = 1\nshape = rect_border\n"
+    "shape_a = 1.6\nshape_b = 0.9\nshape_angle = 20\ncolor = #80ff80\n"
+    "[emitter oval]\nsource = stream\nposition = 12.5, 3\nrate = 600\nlife = 1\nshape = ellipse_border\n"
+    "shape_a = 2\nshape_b = 1\ncolor = #80c0ff\n"
+    "[emitter out]\nsource = stream\nposition = 17.5, 3\nrate = 300\nlife = 0.6\nshape = circle\nshape_a = 0.4\n"
+    "launch = direction\nangle = 0\nspeed_min = 1\nspeed_max = 3\nlaunch_outward = true\n"
+    "draw = sprite\nsprite = smooth\nsize = 0.15\nalign = velocity\nblend = add\ncolor = #ff80c0\n";
+
+/* Arrows (scenes/textures/arrows.png, frame 0 points right) of life 2 s
+ * born at rest: the top row with texture_origin 0, 0.5 (the arrow's tail)
+ * turning about it, the bottom row about their centres; each column an
+ * age: spin 0 rising to spin_end 180 deg/s at the end of the life, so at
+ * age a the angle is 45 a^2 degrees (ages 0, 0.45, 0.9, 1.35, 1.8: 0,
+ * 9.1, 36.5, 82 and 145.8 degrees). */
+static void spin_origin_scene(char *text, size_t size)
+{
+    int n = snprintf(text, size,
+                     "[scene]\nwidth = 320\nheight = 128\ndt = 1/4\nbackground = #202028\n"
+                     "[view]\nxmin = 0\nxmax = 20\nymin = 0\nymax = 8\n");
+    for (int row = 0; row < 2; row++)
+        for (int k = 0; k < 5; k++)
+            n += snprintf(text + n, size - (size_t)n,
+                          "[emitter a%d%d]\nsource = stream\nposition = %d, %d\nrate = 0\ncount = 1\nstart = %g\n"
+                          "life = 2\ndraw = sprite\nsize = 2\ntexture = textures/arrows.png\ntexture_grid = 4, 2\n"
+                          "texture_fps = 0.001\nspin = 0\nspin_end = 180\ntexture_origin = %s\ncolor = %s\n",
+                          row, k, 2 + 4 * k, row ? 2 : 6, 2.0 - 0.45 * k, row ? "0.5, 0.5" : "0, 0.5",
+                          row ? "#80c0ff" : "#ffc060");
+    cr_assert_lt((size_t)n, size);
+}
+
+Test(settings, refimg_areas)
+{
+    isk_canvas c = render(areas_scene, 1, 60);
+    refimg_expect("settings_areas", &c);
+}
+
+Test(settings, refimg_spin_origin)
+{
+    char text[8192];
+    spin_origin_scene(text, sizeof text);
+    isk_canvas c = render(text, 1, 8); /* 2 s */
+    refimg_expect("settings_spin_origin", &c);
+}
+
+/* The same bytes on 1, 2 and 3 threads, for both scenes. */
+Test(settings, threads_give_the_same_bytes)
+{
+    char text[8192];
+    spin_origin_scene(text, sizeof text);
+    const char *scenes[2] = {areas_scene, text};
+    for (int s = 0; s < 2; s++) {
+        isk_canvas one = render(scenes[s], 1, s ? 8 : 60);
+        for (int t = 2; t <= 3; t++) {
+            isk_canvas more = render(scenes[s], t, s ? 8 : 60);
+            cr_assert_eq(memcmp(one.pixels, more.pixels, one.stride * (size_t)one.height), 0,
+                         "scene %d on %d threads", s, t);
+            isk_canvas_free(&more);
+        }
+        isk_canvas_free(&one);
+    }
+}
+
+/* ---- what each does ----------------------------------------------------------- */
+
+/* launch_outward: a circle of radius 1 launching along angle 0 at speed 2
+ * sends every particle straight away from the centre: its velocity is
+ * parallel to its offset (cross product below 1e-9 of the product of
+ * lengths) and points outward, at speed 2.  Without the key, every
+ * velocity is (2, 0). */
+Test(settings, launch_outward_points_away_from_the_centre)
+{
+    static const char text[] = "[scene]\nseed = 9\n[emitter e]\nsource = stream\nposition = 3, -2\nrate = 600\n"
+                               "shape = circle\nshape_a = 1\nlaunch = direction\nangle = 0\nspeed_min = 2\n"
+                               "speed_max = 2\nlaunch_outward = true\n";
+    isk_effect *fx = open_scene(text, 1);
+    for (int i = 0; i < 20; i++)
+        cr_assert_eq(isk_effect_step(fx), ISK_OK);
+    const isk_particles *p = isk_effect_particles(fx, 0);
+    cr_assert_geq(p->count, 190u);
+    for (size_t i = 0; i < p->count; i++) {
+        const double dx = p->x[i] - 3, dy = p->y[i] + 2, r = hypot(dx, dy), v = hypot(p->vx[i], p->vy[i]);
+        cr_assert_lt(fabs(dx * p->vy[i] - dy * p->vx[i]), 1e-9 * r * v, "particle %zu", i);
+        cr_assert_gt(dx * p->vx[i] + dy * p->vy[i], 0.0);
+        cr_assert_lt(fabs(v - 2), 1e-12);
+    }
+    isk_effect_destroy(fx);
+}
+
+/* The angle at age a of a particle born at rest with angle 0, spin w and
+ * spin_end W over a life L: the speed w + (W - w) a/L integrated, w a +
+ * (W - w) a^2 / (2L), wrapped into [-pi, pi).  Its derivative at a = L is
+ * W: the particle ends its life turning at spin_end.  Measured at ages
+ * 0.25 .. 1.75 of a life of 2 with spin 30, spin_end 300 deg/s, to 1e-12,
+ * with 1 and with 7 substeps (the step size changes nothing). */
+Test(settings, spin_end_is_the_speed_at_the_end_of_the_life)
+{
+    const double w = 30 * PI / 180, W = 300 * PI / 180, L = 2;
+    for (int sub = 1; sub <= 7; sub += 6) {
+        char text[1024];
+        snprintf(text, sizeof text,
+                 "[scene]\ndt = 1/4\nsubsteps = %d\n[emitter e]\nsource = stream\nrate = 0\ncount = 1\nlife = 2\n"
+                 "draw = sprite\nalign = velocity\nspin = 30\nspin_end = 300\n",
+                 sub);
+        isk_effect *fx = open_scene(text, 1);
+        for (int f = 1; f <= 7; f++) {
+            cr_assert_eq(isk_effect_step(fx), ISK_OK);
+            const isk_particles *p = isk_effect_particles(fx, 0);
+            cr_assert_eq(p->count, 1u);
+            const double a = p->age[0];
+            cr_assert_lt(fabs(a - 0.25 * f), 1e-12);
+            double want = w * a + (W - w) * a * a / (2 * L);
+            want -= 2 * PI * floor((want + PI) / (2 * PI));
+            cr_assert_lt(fabs(p->angle[0] - want), 1e-12, "substeps %d age %g: %.17g, want %.17g", sub, a,
+                         p->angle[0], want);
+        }
+        isk_effect_destroy(fx);
+    }
+}
+
+/* spin_end changes only the speed's course: with spin_range each particle
+ * keeps its own start w_i (the same draws as without spin_end) and ends at
+ * w_i + spin_end - spin. */
+Test(settings, spin_end_keeps_each_particles_own_start)
+{
+    static const char base[] = "[scene]\ndt = 1/4\nseed = 3\n[emitter e]\nsource = stream\nrate = 0\ncount = 50\n"
+                               "life = 2\ndraw = sprite\nalign = velocity\nspin = 30\nspin_range = 90\n";
+    char with[1024];
+    snprintf(with, sizeof with, "%sspin_end = -60\n", base);
+    isk_effect *a = open_scene(base, 1), *b = open_scene(with, 1);
+    for (int f = 0; f < 4; f++) {
+        cr_assert_eq(isk_effect_step(a), ISK_OK);
+        cr_assert_eq(isk_effect_step(b), ISK_OK);
+    }
+    const isk_particles *pa = isk_effect_particles(a, 0), *pb = isk_effect_particles(b, 0);
+    cr_assert_eq(pa->count, 50u);
+    cr_assert_eq(pb->count, 50u);
+    const double change = -90 * PI / 180, age = 1.0;
+    for (size_t i = 0; i < 50; i++) {
+        cr_assert_eq(pa->spin[i], pb->spin[i], "the same start speed");
+        double want = pa->angle[i] + change * age * age / (2 * 2.0);
+        want -= 2 * PI * floor((want + PI) / (2 * PI));
+        double d = fabs(pb->angle[i] - want);
+        cr_assert(d < 1e-12 || fabs(d - 2 * PI) < 1e-12, "particle %zu: %.17g, want %.17g", i, pb->angle[i], want);
+    }
+    isk_effect_destroy(a);
+    isk_effect_destroy(b);
+}
+
+/* The box of the pixels that differ from the background. */
+static void drawn_box(const isk_canvas *c, int box[4])
+{
+    box[0] = c->width, box[1] = c->height, box[2] = -1, box[3] = -1;
+    for (int y = 0; y < c->height; y++)
+        for (int x = 0; x < c->width; x++) {
+            const uint8_t *px = c->pixels + (size_t)y * c->stride + 4 * (size_t)x;
+            if (px[0] || px[1] || px[2]) {
+                box[0] = x < box[0] ? x : box[0];
+                box[1] = y < box[1] ? y : box[1];
+                box[2] = x > box[2] ? x : box[2];
+                box[3] = y > box[3] ? y : box[3];
+            }
+        }
+}
+
+/* texture_origin: an 8 x 8 white texture drawn 32 pixels wide on a
+ * particle at the screen point (50, 40).  The default centres it there:
+ * the pixels it covers (2 more each way: the bilinear magnification's
+ * fringe) are centred on (50, 40).  Origin 0, 0 puts the image's top-left
+ * corner on the point: the same pixels moved by (+16, +16); origin 1, 1 by
+ * (-16, -16); turned by 90 degrees (counter-clockwise in the world) about
+ * the corner 0, 0 the square swings up, by (+16, -16). */
+Test(settings, texture_origin_is_the_point_placed_and_turned_about)
+{
+    static const struct {
+        isk_vec2 origin;
+        double degrees;
+        int dx, dy; /* the move from the centred box */
+    } cases[] = {
+        {{0.5, 0.5}, 0, 0, 0},
+        {{0, 0}, 0, 16, 16},
+        {{1, 1}, 0, -16, -16},
+        {{0, 0}, 90, 16, -16},
+    };
+    int centred[4] = {0};
+    isk_canvas square;
+    cr_assert_eq(isk_canvas_init(&square, 8, 8), ISK_OK);
+    isk_canvas_fill(&square, ISK_WHITE);
+    for (size_t k = 0; k < sizeof cases / sizeof cases[0]; k++) {
+        isk_effect_def d;
+        isk_effect_def_init(&d);
+        d.width = 100;
+        d.height = 80;
+        d.xmin = 0, d.xmax = 100, d.ymin = 0, d.ymax = 80;
+        isk_error err = {0};
+        cr_assert_eq(isk_effect_def_add_texture(&d, "square", &square, &err), ISK_OK, "%s", err.message);
+        isk_emitter_def *e = isk_effect_def_add_emitter(&d, "e");
+        cr_assert_not_null(e);
+        e->born.position = (isk_vec2){50, 40};
+        e->look.draw = ISK_DRAW_SPRITE;
+        e->look.size = 32;
+        snprintf(e->look.texture, sizeof e->look.texture, "square");
+        e->look.texture_origin = cases[k].origin;
+        e->look.rotation = cases[k].degrees * (PI / 180);
+        isk_effect *fx;
+        cr_assert_eq(isk_effect_create(&fx, &d, &err), ISK_OK, "%s", err.message);
+        isk_effect_def_free(&d);
+        isk_canvas c = refimg_canvas(100, 80, ISK_BLACK);
+        cr_assert_eq(isk_effect_render(fx, &c), ISK_OK);
+        int box[4];
+        drawn_box(&c, box);
+        cr_log_info("origin %g, %g rotation %g: box %d, %d .. %d, %d", cases[k].origin.x, cases[k].origin.y,
+                    cases[k].degrees, box[0], box[1], box[2], box[3]);
+        if (k == 0) {
+            memcpy(centred, box, sizeof centred);
+            cr_assert_eq(box[0] + box[2] + 1, 2 * 50, "centred on x = 50: %d .. %d", box[0], box[2]);
+            cr_assert_eq(box[1] + box[3] + 1, 2 * 40, "centred on y = 40: %d .. %d", box[1], box[3]);
+            cr_assert_eq(box[2] - box[0] + 1, 32 + 4);
+        }
+        for (int q = 0; q < 4; q++)
+            cr_assert_eq(box[q], centred[q] + (q & 1 ? cases[k].dy : cases[k].dx), "case %zu: box[%d] = %d", k, q,
+                         box[q]);
+        isk_canvas_free(&c);
+        isk_effect_destroy(fx);
+    }
+    isk_canvas_free(&square);
+}
+
+/* ---- unused, they cost and change nothing -------------------------------------- */
+
+/* Every new key written at its default gives the describe of the scene
+ * without them, and the same bytes. */
+Test(settings, defaults_change_nothing)
+{
+    static const char base[] =
+        "[scene]\nwidth = 160\nheight = 96\nseed = 4\n"
+        "[emitter e]\nsource = stream\nrate = 200\nlife = 1\nshape = ellipse\nshape_a = 1\nshape_b = 0.5\n"
+        "launch = cone\nangle = 90\nspread = 40\nspeed_min = 2\nspeed_max = 4\ndraw = sprite\nsize = 1\n"
+        "texture = textures/arrows.png\ntexture_grid = 4, 2\nspin = 90\nspin_range = 30\n";
+    char with[2048];
+    snprintf(with, sizeof with, "%slaunch_outward = false\nspin_end = none\ntexture_origin = 0.5, 0.5\n", base);
+    char *da = describe(base), *db = describe(with);
+    cr_assert_str_eq(da, db);
+    free(da);
+    free(db);
+    isk_canvas a = render(base, 1, 30), b = render(with, 1, 30);
+    cr_assert_eq(memcmp(a.pixels, b.pixels, a.stride * (size_t)a.height), 0);
+    isk_canvas_free(&a);
+    isk_canvas_free(&b);
+}
+
+/* ---- bad values: FILE:LINE and what is wrong ------------------------------------ */
+
+Test(settings, bad_values_are_refused_with_their_line)
+{
+    static const struct {
+        const char *line;
+        const char *says;
+    } bad[] = {
+        {"shape = gaussian_blur", "shape"},
+        {"spin_end = fast", "spin_end"},
+        {"spin_end = 1e9", "spin_end"},
+        {"texture_origin = 0.5", "texture_origin"},
+        {"texture_origin = 20, 0", "texture_origin"},
+        {"launch_outward = maybe", "launch_outward"},
+    };
+    for (size_t k = 0; k < sizeof bad / sizeof bad[0]; k++) {
+        char text[256];
+        snprintf(text, sizeof text, "[emitter e]\nsource = stream\n%s\n", bad[k].line);
+        isk_effect_def d;
+        isk_error err = {0};
+        cr_assert_neq(isk_scene_load_string(&d, text, "bad.ini", &err), ISK_OK, "%s", bad[k].line);
+        cr_assert_not_null(strstr(err.message, "bad.ini:3"), "%s: %s", bad[k].line, err.message);
+        cr_assert_not_null(strstr(err.message, bad[k].says), "%s: %s", bad[k].line, err.message);
+    }
+}
