@@ -107,6 +107,7 @@ static const part_field fields[] = {
     ROW(alpha_over_life, look, alpha_over_life, "alpha_over_life", FIELD),
     ROW(size_over_life, look, size_over_life, "size_over_life", FIELD),
     ROW(order, look, order, "order", FIELD),
+    NEW(look, draw_order, "draw_order"),
     ROW(rotation, look, rotation, "rotation", FIELD),
     ROW(rotation_range, look, rotation_range, "rotation_range", FIELD),
     ROW(spin, look, spin, "spin", FIELD),

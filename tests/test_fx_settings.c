@@ -1,7 +1,7 @@
 /* SPDX-License-Identifier: MIT */
 /* The everyday settings people know from LÖVE's ParticleSystem and Godot's
  * CPUParticles2D: the gaussian and border emission areas, launch_outward,
- * spin_end and texture_origin.  Each does what it says (a measured
+ * spin_end, texture_origin and draw_order.  Each does what it says (a measured
  * number), costs and changes nothing at its default (the same describe,
  * the same bytes), gives the same bytes on 1, 2 and 3 threads, and has a
  * reference image. */
@@ -96,6 +96,29 @@ static void spin_origin_scene(char *text, size_t size)
     cr_assert_lt((size_t)n, size);
 }
 
+/* Which particles are on top: three fans of the same stream, each
+ * particle turning from red (born) to blue (dying), discs with the newest
+ * on top (the default), sprites with the oldest on top, textures in a
+ * random order. */
+static const char order_scene[] =
+    "[scene]\nwidth = 240\nheight = 96\nbackground = #101018\nseed = 8\n"
+    "[view]\nxmin = 0\nxmax = 15\nymin = 0\nymax = 6\n"
+    "[emitter newest]\nsource = stream\nposition = 2.5, 1\nrate = 20\nlife = 1\nlaunch = cone\nangle = 90\n"
+    "spread = 60\nspeed_min = 3\nspeed_max = 4\ndraw = disc\nsize = 1.2\n"
+    "color_over_life = 0:#ff4040, 1:#4040ff\n"
+    "[emitter oldest]\nsource = stream\nposition = 7.5, 1\nrate = 20\nlife = 1\nlaunch = cone\nangle = 90\n"
+    "spread = 60\nspeed_min = 3\nspeed_max = 4\ndraw = sprite\nsprite = disc\nsize = 1.6\n"
+    "color_over_life = 0:#ff4040, 1:#4040ff\ndraw_order = oldest\n"
+    "[emitter random]\nsource = stream\nposition = 12.5, 1\nrate = 20\nlife = 1\nlaunch = cone\nangle = 90\n"
+    "spread = 60\nspeed_min = 3\nspeed_max = 4\ndraw = sprite\nsize = 2.6\ntexture = textures/sparkle.png\n"
+    "color_over_life = 0:#ff4040, 1:#4040ff\ndraw_order = random\n";
+
+Test(settings, refimg_draw_order)
+{
+    isk_canvas c = render(order_scene, 1, 50);
+    refimg_expect("settings_draw_order", &c);
+}
+
 Test(settings, refimg_areas)
 {
     isk_canvas c = render(areas_scene, 1, 60);
@@ -110,16 +133,17 @@ Test(settings, refimg_spin_origin)
     refimg_expect("settings_spin_origin", &c);
 }
 
-/* The same bytes on 1, 2 and 3 threads, for both scenes. */
+/* The same bytes on 1, 2 and 3 threads, for every scene. */
 Test(settings, threads_give_the_same_bytes)
 {
     char text[8192];
     spin_origin_scene(text, sizeof text);
-    const char *scenes[2] = {areas_scene, text};
-    for (int s = 0; s < 2; s++) {
-        isk_canvas one = render(scenes[s], 1, s ? 8 : 60);
+    const char *scenes[3] = {areas_scene, text, order_scene};
+    const long frames[3] = {60, 8, 50};
+    for (int s = 0; s < 3; s++) {
+        isk_canvas one = render(scenes[s], 1, frames[s]);
         for (int t = 2; t <= 3; t++) {
-            isk_canvas more = render(scenes[s], t, s ? 8 : 60);
+            isk_canvas more = render(scenes[s], t, frames[s]);
             cr_assert_eq(memcmp(one.pixels, more.pixels, one.stride * (size_t)one.height), 0,
                          "scene %d on %d threads", s, t);
             isk_canvas_free(&more);
@@ -293,6 +317,49 @@ Test(settings, texture_origin_is_the_point_placed_and_turned_about)
     isk_canvas_free(&square);
 }
 
+/* draw_order, pixel by pixel: opaque discs born 10 a second at one point,
+ * at rest, turning from red (born) to blue (at the end of their life of
+ * 1 s).  At 0.95 s the centre pixel is the newest particle's colour (red,
+ * with less than 1/8 blue) by default, the oldest's (more blue than red)
+ * with draw_order = oldest; random shows one of the particles, neither of
+ * those two in at least one of 8 frames, and the same bytes on 1, 2 and 3
+ * threads. */
+static isk_color centre_after(const char *order, long frames, int threads)
+{
+    char text[1024];
+    snprintf(text, sizeof text,
+             "[scene]\nwidth = 21\nheight = 21\ndt = 1/20\n[view]\nxmin = -1\nxmax = 1\nymin = -1\nymax = 1\n"
+             "[emitter e]\nsource = stream\nrate = 10\nlife = 1\ndraw = disc\nsize = 1\n"
+             "color_over_life = 0:#ff0000, 1:#0000ff\ndraw_order = %s\n",
+             order);
+    isk_canvas c = render(text, threads, frames);
+    const uint8_t *px = c.pixels + 10 * c.stride + 4 * 10;
+    isk_color col = isk_rgba(px[0], px[1], px[2], px[3]);
+    isk_canvas_free(&c);
+    return col;
+}
+
+Test(settings, draw_order_decides_which_particle_is_on_top)
+{
+    const isk_color newest = centre_after("newest", 19, 1), oldest = centre_after("oldest", 19, 1);
+    cr_log_info("centre: newest on top %d,%d,%d; oldest on top %d,%d,%d", newest.r, newest.g, newest.b, oldest.r,
+                oldest.g, oldest.b);
+    cr_assert_gt(newest.r, 200);
+    cr_assert_lt(newest.b, 32);
+    cr_assert_gt(oldest.b, oldest.r);
+    int other = 0;
+    for (long f = 12; f < 20; f++) {
+        const isk_color r1 = centre_after("random", f, 1);
+        for (int t = 2; t <= 3; t++) {
+            const isk_color rt = centre_after("random", f, t);
+            cr_assert(r1.r == rt.r && r1.g == rt.g && r1.b == rt.b && r1.a == rt.a, "frame %ld, %d threads", f, t);
+        }
+        const isk_color n = centre_after("newest", f, 1), o = centre_after("oldest", f, 1);
+        other += (r1.r != n.r || r1.b != n.b) && (r1.r != o.r || r1.b != o.b);
+    }
+    cr_assert_gt(other, 0, "random never differs from both fixed orders");
+}
+
 /* ---- unused, they cost and change nothing -------------------------------------- */
 
 /* Every new key written at its default gives the describe of the scene
@@ -305,7 +372,7 @@ Test(settings, defaults_change_nothing)
         "launch = cone\nangle = 90\nspread = 40\nspeed_min = 2\nspeed_max = 4\ndraw = sprite\nsize = 1\n"
         "texture = textures/arrows.png\ntexture_grid = 4, 2\nspin = 90\nspin_range = 30\n";
     char with[2048];
-    snprintf(with, sizeof with, "%slaunch_outward = false\nspin_end = none\ntexture_origin = 0.5, 0.5\n", base);
+    snprintf(with, sizeof with, "%slaunch_outward = false\nspin_end = none\ntexture_origin = 0.5, 0.5\ndraw_order = newest\n", base);
     char *da = describe(base), *db = describe(with);
     cr_assert_str_eq(da, db);
     free(da);
@@ -330,6 +397,7 @@ Test(settings, bad_values_are_refused_with_their_line)
         {"texture_origin = 0.5", "texture_origin"},
         {"texture_origin = 20, 0", "texture_origin"},
         {"launch_outward = maybe", "launch_outward"},
+        {"draw_order = lifetime", "draw_order"},
     };
     for (size_t k = 0; k < sizeof bad / sizeof bad[0]; k++) {
         char text[256];

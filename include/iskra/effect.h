@@ -203,6 +203,13 @@ typedef enum isk_align_mode {
     ISK_ALIGN_VELOCITY,      /* along its velocity on screen, atan2(vy, vx), plus its angle */
     ISK_ALIGN_COUNT
 } isk_align_mode;
+/* Which of an emitter's particles are on top (isk_emitter_def.look.draw_order). */
+typedef enum isk_draw_order {
+    ISK_DRAW_ORDER_NEWEST = 0, /* the newest on top: drawn oldest first, in store order (LÖVE's "top") */
+    ISK_DRAW_ORDER_OLDEST,     /* the oldest on top: drawn newest first (LÖVE's "bottom") */
+    ISK_DRAW_ORDER_RANDOM,     /* a random order, shuffled again every frame (LÖVE's "random") */
+    ISK_DRAW_ORDER_COUNT
+} isk_draw_order;
 /* align = velocity without a texture draws the sprite kind as a streak this
  * many times its size long (and its size wide). */
 #define ISK_STREAK_STRETCH 4.0
@@ -371,6 +378,8 @@ typedef struct isk_emitter_look {
     isk_scalar_ramp alpha_over_life;  /* multiplies colour alpha */
     isk_scalar_ramp size_over_life;   /* multiplies size */
     int order;                 /* draw order key (ties: definition order) */
+    isk_draw_order draw_order; /* which of its particles are on top (default the newest); oldest and
+                                  random draw the emitter whole on the calling thread */
     double rotation, rotation_range; /* initial angle + U*range, radians (keys in degrees),
                                         counter-clockwise in the world */
     double spin, spin_range;   /* angular speed + U*range, rad/s (keys in deg/s); angles wrap into
@@ -521,6 +530,7 @@ extern const char *const isk_drawing_kind_names[ISK_DRAWING_KIND_COUNT]; /* poly
 extern const char *const isk_units_names[2];                             /* world pixels (isk_drawing_def.pixels) */
 extern const char *const isk_view_kind_names[ISK_VIEWDEF_COUNT];         /* window camera */
 extern const char *const isk_align_names[ISK_ALIGN_COUNT];               /* none velocity */
+extern const char *const isk_draw_order_names[ISK_DRAW_ORDER_COUNT];     /* newest oldest random */
 
 typedef struct isk_effect_def {
     int width, height;         /* canvas, default 600x600 */

@@ -20,6 +20,7 @@ static void free_group(fx_group *g)
     isk__fx_retain_clear(&g->retained);
     free(g->pick);
     free(g->defl);
+    free(g->draw_list);
     isk__fx_free_ramps(g);
     isk__fx_looks_free(g);
     isk__fx_events_free(g);

@@ -309,9 +309,12 @@ void isk__fx_describe_group(const isk_effect *e, const fx_group *g, FILE *out)
         fprintf(out, "  %-9s one thread, in particle order (%s)\n", "order",
                 g->forces.npick ? "a potential may switch itself off" : "a deflector draws at random");
     if (em->look.draw != ISK_DRAW_NONE)
-        fprintf(out, "  draw      %s, %s%s%s%s\n", isk_draw_mode_names[em->look.draw], isk_blend_name(em->look.blend),
+        fprintf(out, "  draw      %s, %s%s%s%s%s\n", isk_draw_mode_names[em->look.draw], isk_blend_name(em->look.blend),
                 g->has_color_ramp ? ", colour over life" : "", g->has_alpha_ramp ? ", alpha over life" : "",
-                g->has_size_ramp ? ", size over life" : "");
+                g->has_size_ramp ? ", size over life" : "",
+                em->look.draw_order == ISK_DRAW_ORDER_OLDEST   ? ", the oldest on top (whole, on one thread)"
+                : em->look.draw_order == ISK_DRAW_ORDER_RANDOM ? ", in a random order each frame (whole, on one thread)"
+                                                               : "");
     isk__fx_looks_describe(g, out);
     if (em->look.trail > 0)
         fprintf(out, "  trail     the last %d positions, %g px wide, fade %g (drawn first)\n", em->look.trail,

@@ -186,6 +186,8 @@ struct fx_group {
     int keep_on_canvas;            /* reflect walls hold it: one on the far edge is drawn on it */
     const fx_draw_kind *draw;      /* its particles' draw kind (effect_draws.c) */
     fx_retained retained;          /* its batched dots' blends while it rests (effect_retain.c) */
+    uint32_t *draw_list;           /* draw_order oldest or random: the frame's order (effect_render.c) */
+    size_t draw_list_cap;
     long shared_updates;           /* substeps whose update was shared out among the workers (tests) */
 
     /* explosions (effect_group.c) */

@@ -66,7 +66,9 @@ isk_status isk__fx_draw_textures(isk_effect *e, isk_canvas *c, fx_group *g, cons
     const double stretch = streak ? ISK_STREAK_STRETCH : 1.0;
     const double ox = em->look.texture_origin.x - 0.5, oy = em->look.texture_origin.y - 0.5;
     const int offset = ox != 0.0 || oy != 0.0;
-    for (size_t i = b->first; i < b->end; i++) {
+    const size_t n = b->list ? b->nlist : b->end; /* a list: another order than the store's */
+    for (size_t k = b->list ? 0 : b->first; k < n; k++) {
+        const size_t i = b->list ? b->list[k] : k;
         double X, Y, mult;
         isk_view_to_screen(v, p->x[i], p->y[i], &X, &Y);
         isk_color col = fx_style(g, p, i, vary, &mult);

@@ -102,6 +102,11 @@ static const char *const align_notes[ISK_ALIGN_COUNT] = {
     [ISK_ALIGN_NONE] = "by its angle only",
     [ISK_ALIGN_VELOCITY] = "turned along the velocity (a sprite kind becomes a streak 4 sizes long)",
 };
+static const char *const draw_order_notes[ISK_DRAW_ORDER_COUNT] = {
+    [ISK_DRAW_ORDER_NEWEST] = "the newest on top: drawn oldest first (LÖVE's top)",
+    [ISK_DRAW_ORDER_OLDEST] = "the oldest on top: drawn newest first, on one thread (LÖVE's bottom)",
+    [ISK_DRAW_ORDER_RANDOM] = "shuffled again every frame, on one thread (LÖVE's random)",
+};
 static const char *const units_notes[2] = {
     [0] = "world units",
     [1] = "canvas pixels (y down)",
@@ -447,6 +452,9 @@ static const isk_key keys[] = {
     {EMITTER("order"), .type = ISK_KEY_WHOLE, EM(look.order), IN(-1000000, 1000000), .dflt = "0",
      .dflt_doc = "its definition index", .live = ALL,
      .meaning = "draw order (lower first; ties by definition order)"},
+    {EMITTER("draw_order"), .type = ISK_KEY_ENUM, EM(look.draw_order), NAMES(isk_draw_order_names),
+     NOTES(draw_order_notes), .dflt = "newest", .live = ALL,
+     .meaning = "which of the emitter's own particles are on top (its trails keep the store's order)"},
 
     /* [emitter NAME] motion (src/sim/stage_field.c, src/scene/effect_stream.c) */
     {EMITTER("radial_accel"), .type = ISK_KEY_NUMBER, EM(motion.radial_accel), STRENGTH, .dflt = "0", .live = ALL,

@@ -21,6 +21,7 @@ const char *const isk_drawing_kind_names[ISK_DRAWING_KIND_COUNT] = {"polyline", 
 const char *const isk_units_names[2] = {"world", "pixels"};
 const char *const isk_view_kind_names[ISK_VIEWDEF_COUNT] = {"window", "camera"};
 const char *const isk_align_names[ISK_ALIGN_COUNT] = {"none", "velocity"};
+const char *const isk_draw_order_names[ISK_DRAW_ORDER_COUNT] = {"newest", "oldest", "random"};
 
 #define PRESET_NAME(name) #name,
 const char *const isk__fx_preset_names[FX_PRESET_COUNT] = {FX_PRESETS(PRESET_NAME)};
