@@ -117,6 +117,7 @@ static const part_field fields[] = {
     ROW(texture, look, texture, "texture", FIELD),
     ROW(texture_grid, look, texture_grid, "texture_grid", FIELD),
     ROW(texture_fps, look, texture_fps, "texture_fps", FIELD),
+    NEW(look, flipbook_random_start, "flipbook_random_start"),
     NEW(look, texture_origin, "texture_origin"),
     ROW(trail, look, trail, "trail", FIELD),
     ROW(trail_width, look, trail_width, "trail_width", FIELD),

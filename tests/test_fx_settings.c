@@ -1,7 +1,7 @@
 /* SPDX-License-Identifier: MIT */
 /* The everyday settings people know from LÖVE's ParticleSystem and Godot's
  * CPUParticles2D: the gaussian and border emission areas, launch_outward,
- * spin_end, texture_origin and draw_order.  Each does what it says (a measured
+ * spin_end, texture_origin, draw_order and flipbook_random_start.  Each does what it says (a measured
  * number), costs and changes nothing at its default (the same describe,
  * the same bytes), gives the same bytes on 1, 2 and 3 threads, and has a
  * reference image. */
@@ -119,6 +119,61 @@ Test(settings, refimg_draw_order)
     refimg_expect("settings_draw_order", &c);
 }
 
+/* flipbook_random_start: a sheet of 8 frames drawn here, frame k a bar
+ * k + 1 texels high (a level meter), on sixteen single particles: the top
+ * row immortal, so each shows the frame it starts at; the bottom row plays
+ * on at 4 frames a second from its own first frame (one frame on at
+ * 3/8 s). */
+static void flipbook_scene(char *text, size_t size)
+{
+    int n = snprintf(text, size,
+                     "[scene]\nwidth = 256\nheight = 64\ndt = 1/8\nbackground = #202028\nseed = 12\n"
+                     "[view]\nxmin = 0\nxmax = 16\nymin = 0\nymax = 4\n");
+    for (int row = 0; row < 2; row++)
+        for (int k = 0; k < 8; k++)
+            n += snprintf(text + n, size - (size_t)n,
+                          "[emitter m%d%d]\nsource = particle\nposition = %d, %d\ndraw = sprite\nsize = 1.5\n"
+                          "flipbook_random_start = true\ntexture_fps = %d\ncolor = %s\n",
+                          row, k, 1 + 2 * k, row ? 1 : 3, row ? 4 : 0, row ? "#80c0ff" : "#ffc060");
+    cr_assert_lt((size_t)n, size);
+}
+
+/* The scene's emitters drawn as the level-meter sheet (texture_grid 8, 1),
+ * run for `frames` frames on `threads` threads. */
+static isk_canvas render_flipbook(int threads, long frames)
+{
+    char text[8192];
+    flipbook_scene(text, sizeof text);
+    isk_effect_def d;
+    isk_error err = {0};
+    cr_assert_eq(isk_scene_load_string(&d, text, "flipbook.ini", &err), ISK_OK, "%s", err.message);
+    isk_canvas sheet = refimg_canvas(64, 8, isk_rgba(0, 0, 0, 0));
+    for (int k = 0; k < 8; k++)
+        for (int y = 7 - k; y < 8; y++)
+            for (int x = 8 * k + 1; x < 8 * k + 7; x++)
+                memset(sheet.pixels + (size_t)y * sheet.stride + 4 * (size_t)x, 255, 4);
+    cr_assert_eq(isk_effect_def_add_texture(&d, "meter", &sheet, &err), ISK_OK, "%s", err.message);
+    isk_canvas_free(&sheet);
+    for (int i = 0; i < d.nemitters; i++) {
+        snprintf(d.emitters[i].look.texture, sizeof d.emitters[i].look.texture, "meter");
+        d.emitters[i].look.texture_grid = (isk_vec2){8, 1};
+    }
+    d.threads = threads;
+    isk_effect *fx;
+    cr_assert_eq(isk_effect_create(&fx, &d, &err), ISK_OK, "%s", err.message);
+    isk_canvas c = refimg_canvas(d.width, d.height, ISK_BLACK);
+    isk_effect_def_free(&d);
+    cr_assert_eq(isk_effect_run(fx, &c, frames), ISK_OK);
+    isk_effect_destroy(fx);
+    return c;
+}
+
+Test(settings, refimg_flipbook)
+{
+    isk_canvas c = render_flipbook(1, 3);
+    refimg_expect("settings_flipbook", &c);
+}
+
 Test(settings, refimg_areas)
 {
     isk_canvas c = render(areas_scene, 1, 60);
@@ -150,6 +205,13 @@ Test(settings, threads_give_the_same_bytes)
         }
         isk_canvas_free(&one);
     }
+    isk_canvas one = render_flipbook(1, 3);
+    for (int t = 2; t <= 3; t++) {
+        isk_canvas more = render_flipbook(t, 3);
+        cr_assert_eq(memcmp(one.pixels, more.pixels, one.stride * (size_t)one.height), 0, "flipbook, %d threads", t);
+        isk_canvas_free(&more);
+    }
+    isk_canvas_free(&one);
 }
 
 /* ---- what each does ----------------------------------------------------------- */
@@ -360,6 +422,33 @@ Test(settings, draw_order_decides_which_particle_is_on_top)
     cr_assert_gt(other, 0, "random never differs from both fixed orders");
 }
 
+/* flipbook_random_start: 8000 particles of an 8-frame flipbook start at
+ * each frame 1000 +- 100 times (a standard error of 3%); without the key
+ * every one starts at frame 0 and the store has no such column. */
+Test(settings, flipbook_random_start_spreads_the_first_frames)
+{
+    static const char base[] = "[scene]\nseed = 6\n[emitter e]\nsource = stream\nrate = 0\ncount = 8000\n"
+                               "draw = sprite\ntexture = textures/arrows.png\ntexture_grid = 4, 2\n";
+    char with[1024];
+    snprintf(with, sizeof with, "%sflipbook_random_start = true\n", base);
+    isk_effect *fx = open_scene(with, 1), *plain = open_scene(base, 1);
+    cr_assert_eq(isk_effect_step(fx), ISK_OK);
+    cr_assert_eq(isk_effect_step(plain), ISK_OK);
+    const isk_particles *p = isk_effect_particles(fx, 0);
+    cr_assert_eq(p->count, 8000u);
+    cr_assert_not_null(p->frame0);
+    long seen[8] = {0};
+    for (size_t i = 0; i < p->count; i++) {
+        cr_assert_lt(p->frame0[i], 8);
+        seen[p->frame0[i]]++;
+    }
+    for (int k = 0; k < 8; k++)
+        cr_assert(seen[k] > 900 && seen[k] < 1100, "frame %d: %ld", k, seen[k]);
+    cr_assert_null(isk_effect_particles(plain, 0)->frame0);
+    isk_effect_destroy(fx);
+    isk_effect_destroy(plain);
+}
+
 /* ---- unused, they cost and change nothing -------------------------------------- */
 
 /* Every new key written at its default gives the describe of the scene
@@ -372,7 +461,8 @@ Test(settings, defaults_change_nothing)
         "launch = cone\nangle = 90\nspread = 40\nspeed_min = 2\nspeed_max = 4\ndraw = sprite\nsize = 1\n"
         "texture = textures/arrows.png\ntexture_grid = 4, 2\nspin = 90\nspin_range = 30\n";
     char with[2048];
-    snprintf(with, sizeof with, "%slaunch_outward = false\nspin_end = none\ntexture_origin = 0.5, 0.5\ndraw_order = newest\n", base);
+    snprintf(with, sizeof with, "%slaunch_outward = false\nspin_end = none\ntexture_origin = 0.5, 0.5\ndraw_order = newest\n"
+             "flipbook_random_start = false\n", base);
     char *da = describe(base), *db = describe(with);
     cr_assert_str_eq(da, db);
     free(da);

@@ -396,6 +396,8 @@ typedef struct isk_emitter_look {
     isk_vec2 texture_grid;     /* cols, rows of a sprite sheet (whole numbers 1..256; default 1, 1) */
     double texture_fps;        /* 0: the frames play once over the life, floor(t*frames); > 0: at this
                                   rate of age, wrapping */
+    int flipbook_random_start; /* 1: each particle's flipbook starts at a frame drawn at birth and
+                                  plays on from it, wrapping (Godot's anim_offset) */
     isk_vec2 texture_origin;   /* the point of the frame (fractions of its width and height from its
                                   top-left corner) placed on the particle and turned about: 0.5, 0.5
                                   (default) its centre (LÖVE's setOffset, in fractions) */

@@ -154,6 +154,7 @@ typedef enum fx_stream {
     FX_STREAM_SIZE,     /* size_range */
     FX_STREAM_COLOR,    /* color_pick */
     FX_STREAM_CHANCE,   /* a deflector's probability */
+    FX_STREAM_FRAME,    /* flipbook_random_start */
     FX_STREAM_COUNT
 } fx_stream;
 

@@ -14,7 +14,8 @@
  *            A streak without align is round: its angle is not used.
  *   frame    flipbooks: floor(t * frames) at normalised age t (clamped
  *            to the last frame), or with texture_fps floor(age * fps)
- *            modulo frames.
+ *            modulo frames; with flipbook_random_start plus the
+ *            particle's first frame, modulo frames.
  *   tint     the particle's colour (ramps, color_pick); white leaves the
  *            image as it is.
  *   origin   texture_origin (ox, oy), fractions of the frame from its
@@ -46,6 +47,8 @@ static int frame_of(const isk_emitter_def *em, const isk_particles *p, size_t i,
         k = floor(t * frames);
         k = k >= frames ? frames - 1 : k > 0 ? k : 0; /* also maps NaN to 0 */
     }
+    if (p->frame0) /* flipbook_random_start: on from its own first frame */
+        return (int)(((unsigned)k + p->frame0[i]) % (unsigned)frames);
     return (int)k;
 }
 

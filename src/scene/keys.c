@@ -103,9 +103,9 @@ static const char *const align_notes[ISK_ALIGN_COUNT] = {
     [ISK_ALIGN_VELOCITY] = "turned along the velocity (a sprite kind becomes a streak 4 sizes long)",
 };
 static const char *const draw_order_notes[ISK_DRAW_ORDER_COUNT] = {
-    [ISK_DRAW_ORDER_NEWEST] = "the newest on top: drawn oldest first (LÖVE's top)",
-    [ISK_DRAW_ORDER_OLDEST] = "the oldest on top: drawn newest first, on one thread (LÖVE's bottom)",
-    [ISK_DRAW_ORDER_RANDOM] = "shuffled again every frame, on one thread (LÖVE's random)",
+    [ISK_DRAW_ORDER_NEWEST] = "the newest on top: drawn oldest first",
+    [ISK_DRAW_ORDER_OLDEST] = "the oldest on top: drawn newest first, on one thread",
+    [ISK_DRAW_ORDER_RANDOM] = "shuffled again every frame, on one thread",
 };
 static const char *const units_notes[2] = {
     [0] = "world units",
@@ -505,6 +505,10 @@ static const isk_key keys[] = {
      .meaning = "the texture is a sprite sheet of cols x rows frames, played over the life"},
     {EMITTER("texture_fps"), .type = ISK_KEY_NUMBER, EM(look.texture_fps), IN(0, 1e6), .dflt = "0", .live = ALL,
      .meaning = "frames per second of age, wrapping (0: once over the life)"},
+    {EMITTER("flipbook_random_start"), .type = ISK_KEY_BOOL, EM(look.flipbook_random_start), .dflt = "false",
+     .live = ALL,
+     .meaning = "each particle's flipbook starts at a random frame and plays on from it, wrapping (the particles "
+                "already there start at frame 0)"},
     {EMITTER("texture_origin"), .type = ISK_KEY_VECTOR, EM(look.texture_origin), IN(-16, 16), .what = "x, y",
      .dflt = "0.5, 0.5", .live = ALL,
      .meaning = "the point of the texture (fractions of a frame from its top-left corner) placed on the particle "

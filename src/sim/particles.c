@@ -50,6 +50,7 @@ static const column columns[] = {
     /* ---- sub-emitters and trails ---- */
     COL(hit, unsigned char, ISK_PARTICLES_HIT), {offsetof(isk_particles, trail), 0, ISK_PARTICLES_TRAIL},
     /* ---- end of sub-emitters and trails ---- */
+    COL(frame0, uint16_t, ISK_PARTICLES_FRAME),
 };
 #undef COL
 enum { NCOLUMNS = sizeof columns / sizeof columns[0], AGE_COLUMN = 5, LIFE_COLUMN = 6 };
@@ -272,6 +273,8 @@ size_t isk__store_push(isk_particles *p, double x, double y, double vx, double v
     }
     if (p->hit)
         p->hit[i] = 0;
+    if (p->frame0)
+        p->frame0[i] = 0;
     if (p->trail) {
         double *t = p->trail + 2 * (size_t)p->trail_len * i;
         for (int k = 0; k < p->trail_len; k++) {
