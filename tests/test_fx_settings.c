@@ -174,6 +174,30 @@ Test(settings, refimg_flipbook)
     refimg_expect("settings_flipbook", &c);
 }
 
+/* The motion's ranges: a swirl whose particles each orbit by their own
+ * radial and tangential accelerations (a band, not a line); a fountain
+ * blown by a wind force of (-3, 0) plus wind_range 6, 0 (LÖVE's linear
+ * acceleration from -3 to 3); a jet whose particles each stop at their own
+ * slowing (1 + U*3): 1.5 to 6 units from the nozzle. */
+static const char ranges_scene[] =
+    "[scene]\nwidth = 300\nheight = 120\nbackground = #101018\nseed = 3\n"
+    "[view]\nxmin = 0\nxmax = 25\nymin = 0\nymax = 10\n"
+    "[force gravity]\ng = 9.81\n[force wind]\nacceleration = -3, 0\n"
+    "[emitter swirl]\nsource = stream\nposition = 5, 5\nrate = 120\nlife = 2\nshape = circle\nshape_a = 2\n"
+    "launch = direction\nangle = 90\nspeed_min = 2\nspeed_max = 2\nlaunch_outward = true\n"
+    "radial_accel = -2\nradial_accel_range = 1\ntangential_accel = 0\ntangential_accel_range = 3\n"
+    "color = #80c0ff\n"
+    "[emitter fountain]\nsource = stream\nposition = 13, 1\nrate = 150\nlife = 1.5\nlaunch = cone\nangle = 90\n"
+    "spread = 10\nspeed_min = 9\nspeed_max = 10\nforces = gravity, wind\nwind_range = 6, 0\ncolor = #ffd080\n"
+    "[emitter jet]\nsource = stream\nposition = 17.5, 5\nrate = 150\nlife = 3\nlaunch = cone\nangle = 0\n"
+    "spread = 30\nspeed_min = 6\nspeed_max = 6\nslowing = 1\nslowing_range = 3\ncolor = #80ff80\n";
+
+Test(settings, refimg_ranges)
+{
+    isk_canvas c = render(ranges_scene, 1, 120);
+    refimg_expect("settings_ranges", &c);
+}
+
 Test(settings, refimg_areas)
 {
     isk_canvas c = render(areas_scene, 1, 60);
@@ -193,9 +217,9 @@ Test(settings, threads_give_the_same_bytes)
 {
     char text[8192];
     spin_origin_scene(text, sizeof text);
-    const char *scenes[3] = {areas_scene, text, order_scene};
-    const long frames[3] = {60, 8, 50};
-    for (int s = 0; s < 3; s++) {
+    const char *scenes[4] = {areas_scene, text, order_scene, ranges_scene};
+    const long frames[4] = {60, 8, 50, 120};
+    for (int s = 0; s < 4; s++) {
         isk_canvas one = render(scenes[s], 1, frames[s]);
         for (int t = 2; t <= 3; t++) {
             isk_canvas more = render(scenes[s], t, frames[s]);
@@ -449,6 +473,86 @@ Test(settings, flipbook_random_start_spreads_the_first_frames)
     isk_effect_destroy(plain);
 }
 
+/* The motion's ranges: 500 particles at rest on a circle of radius 1
+ * around (0, 0), born by a burst at t = 0 and advanced to the end of the
+ * first step h = 1/60 (the field kicks, then the particle moves), so each
+ * one's velocity is its own acceleration times h: radially outwards at
+ * (2 + its radial_extra) h; counter-clockwise along the circle at
+ * (1 + its tangential_extra) h; (wind_x, wind_y) h; and for particles
+ * launched at (2, 0), 2 (1 - (0.5 + slowing_extra) h).  All to 1e-12.
+ * Each part is U*range: in [0, range) with a mean of range/2 within 5%
+ * (a standard error of 1.3%). */
+static void check_part(const double *v, size_t n, double range, const char *what)
+{
+    cr_assert_not_null(v, "%s: no column", what);
+    double sum = 0;
+    for (size_t i = 0; i < n; i++) {
+        cr_assert(range > 0 ? v[i] >= 0 && v[i] < range : v[i] <= 0 && v[i] > range, "%s: %g", what, v[i]);
+        sum += v[i];
+    }
+    cr_log_info("%s: mean %.4f of range %g over %zu", what, sum / (double)n, range, n);
+    cr_assert_lt(fabs(sum / (double)n / range - 0.5), 0.05, "%s: mean %g", what, sum / (double)n);
+}
+
+Test(settings, each_particle_has_its_own_part_of_each_range)
+{
+    static const char text[] =
+        "[scene]\nseed = 21\ndt = 1/60\n"
+        "[emitter radial]\nsource = stream\ncount = 500\nshape = circle\nshape_a = 1\nradial_accel = 2\n"
+        "radial_accel_range = 6\n"
+        "[emitter swirl]\nsource = stream\ncount = 500\nshape = circle\nshape_a = 1\ntangential_accel = 1\n"
+        "tangential_accel_range = 6\n"
+        "[emitter wind]\nsource = stream\ncount = 500\nshape = circle\nshape_a = 1\nwind_range = 3, -5\n"
+        "[emitter slowed]\nsource = stream\ncount = 500\nvelocity = 2, 0\nslowing = 0.5\nslowing_range = 4\n";
+    isk_effect *fx = open_scene(text, 1);
+    cr_assert_eq(isk_effect_step(fx), ISK_OK);
+    const double h = 1.0 / 60;
+    const isk_particles *r = isk_effect_particles(fx, 0), *t = isk_effect_particles(fx, 1);
+    const isk_particles *w = isk_effect_particles(fx, 2), *s = isk_effect_particles(fx, 3);
+    cr_assert_eq(r->count, 500u);
+    check_part(r->radial_extra, r->count, 6, "radial_extra");
+    check_part(t->tangential_extra, t->count, 6, "tangential_extra");
+    check_part(w->wind_x, w->count, 3, "wind_x");
+    check_part(w->wind_y, w->count, -5, "wind_y");
+    check_part(s->slowing_extra, s->count, 4, "slowing_extra");
+    cr_assert_null(r->tangential_extra);
+    cr_assert_null(r->wind_x);
+    cr_assert_null(t->radial_extra);
+    for (size_t i = 0; i < 500; i++) {
+        /* the birth point: where the particle is now, less its step */
+        double x = r->x[i] - r->vx[i] * h, y = r->y[i] - r->vy[i] * h, d = hypot(x, y);
+        double a = (2 + r->radial_extra[i]) * h;
+        cr_assert_lt(hypot(r->vx[i] - a * x / d, r->vy[i] - a * y / d), 1e-12, "radial %zu", i);
+        x = t->x[i] - t->vx[i] * h, y = t->y[i] - t->vy[i] * h, d = hypot(x, y);
+        a = (1 + t->tangential_extra[i]) * h;
+        cr_assert_lt(hypot(t->vx[i] + a * y / d, t->vy[i] - a * x / d), 1e-12, "tangential %zu", i);
+        cr_assert_lt(hypot(w->vx[i] - w->wind_x[i] * h, w->vy[i] - w->wind_y[i] * h), 1e-12, "wind %zu", i);
+        cr_assert_lt(fabs(s->vx[i] - 2 * (1 - (0.5 + s->slowing_extra[i]) * h)), 1e-12, "slowing %zu", i);
+    }
+    isk_effect_destroy(fx);
+}
+
+/* A live change of the emitter's value reaches every particle at once:
+ * the parts are kept apart from it. */
+Test(settings, a_live_radial_accel_still_reaches_every_particle)
+{
+    static const char text[] = "[scene]\nseed = 2\n[emitter e]\nsource = stream\ncount = 50\nshape = circle\n"
+                               "shape_a = 1\nradial_accel_range = 1\n";
+    isk_effect *fx = open_scene(text, 1);
+    cr_assert_eq(isk_effect_step(fx), ISK_OK);
+    isk_error err = {0};
+    cr_assert_eq(isk_effect_set(fx, "emitter e", "radial_accel", "100", &err), ISK_OK, "%s", err.message);
+    const isk_particles *p = isk_effect_particles(fx, 0);
+    double before[50];
+    for (size_t i = 0; i < 50; i++)
+        before[i] = hypot(p->vx[i], p->vy[i]);
+    cr_assert_eq(isk_effect_step(fx), ISK_OK);
+    p = isk_effect_particles(fx, 0);
+    for (size_t i = 0; i < 50; i++) /* at least 100/60 faster: the new value, plus its own part */
+        cr_assert_gt(hypot(p->vx[i], p->vy[i]) - before[i], 100.0 / 60 - 1e-9, "particle %zu", i);
+    isk_effect_destroy(fx);
+}
+
 /* ---- unused, they cost and change nothing -------------------------------------- */
 
 /* Every new key written at its default gives the describe of the scene
@@ -462,7 +566,8 @@ Test(settings, defaults_change_nothing)
         "texture = textures/arrows.png\ntexture_grid = 4, 2\nspin = 90\nspin_range = 30\n";
     char with[2048];
     snprintf(with, sizeof with, "%slaunch_outward = false\nspin_end = none\ntexture_origin = 0.5, 0.5\ndraw_order = newest\n"
-             "flipbook_random_start = false\n", base);
+             "flipbook_random_start = false\nradial_accel_range = 0\ntangential_accel_range = 0\n"
+             "wind_range = 0, 0\nslowing_range = 0\n", base);
     char *da = describe(base), *db = describe(with);
     cr_assert_str_eq(da, db);
     free(da);
@@ -488,6 +593,10 @@ Test(settings, bad_values_are_refused_with_their_line)
         {"texture_origin = 20, 0", "texture_origin"},
         {"launch_outward = maybe", "launch_outward"},
         {"draw_order = lifetime", "draw_order"},
+        {"radial_accel_range = -1", "radial_accel_range"},
+        {"wind_range = 1", "wind_range"},
+        {"slowing_range = -2", "slowing_range"},
+        {"slowing_range = 2\nslowing = 1\nslow_faithful = true", "not with slow_faithful"},
     };
     for (size_t k = 0; k < sizeof bad / sizeof bad[0]; k++) {
         char text[256];

@@ -3,7 +3,8 @@
  * launch velocities, lives and the rest of what the theses' scenes draw
  * come from the emitter's main stream; each optional attribute (mass_range,
  * rotation_range, spin_range, size_range, color_pick, a deflector's
- * probability, flipbook_random_start) draws from a stream of its own.  So turning such a key on
+ * probability, flipbook_random_start, the motion's ranges) draws from a
+ * stream of its own.  So turning such a key on
  * for 20 frames changes the particles born then, and nothing else: once
  * they have died, the canvas is the one of the run that never had it. */
 #include <criterion/criterion.h>
@@ -37,6 +38,10 @@ static const toggle toggles[] = {
     {"emitter e", "size_range", "0.6", "0", NULL},
     {"emitter e", "color_pick", "0:red, 1:blue", "off", NULL},
     {"deflector wall", "probability", "0.5", "1", NULL},
+    {"emitter e", "radial_accel_range", "30", "0", NULL},
+    {"emitter e", "tangential_accel_range", "30", "0", NULL},
+    {"emitter e", "wind_range", "20, -20", "0, 0", NULL},
+    {"emitter e", "slowing_range", "8", "0", NULL},
     {"emitter e", "flipbook_random_start", "true", "false",
      "texture = scenes/textures/arrows.png\ntexture_grid = 4, 2\ntexture_fps = 3\n"},
 };

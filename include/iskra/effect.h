@@ -339,6 +339,13 @@ typedef struct isk_emitter_motion {
     double radial_accel;       /* units/s^2 away from the emitter's current position (negative:
                                   towards it); none exactly at the position */
     double tangential_accel;   /* units/s^2 perpendicular to that, counter-clockwise for positive */
+    /* Per-particle ranges: each particle adds its own U*range, drawn at its birth from a
+     * random stream of its own, to the value above (0: none; no column, no draw). */
+    double radial_accel_range;     /* radial = radial_accel + U*radial_accel_range */
+    double tangential_accel_range; /* tangential = tangential_accel + U*tangential_accel_range */
+    isk_vec2 wind_range;           /* its own constant acceleration (U1*x, U2*y), units/s^2 (LÖVE's
+                                      linear acceleration between a wind force's and that plus this) */
+    double slowing_range;          /* slowing = slowing + U*slowing_range (not with slow_faithful) */
     double osc_omega_min, osc_omega_max;         /* oscillation angular speed range, rad/s (0,0 = off) */
     double osc_amplitude_min, osc_amplitude_max; /* initial amplitude range, world units */
     double osc_decay;          /* amplitude *= max(0, 1 - decay*dt) */

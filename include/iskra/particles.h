@@ -9,7 +9,9 @@
  * the fire thesis's horizontal oscillation (ISK_PARTICLES_OSC: amplitude,
  * phase, angular speed and the offset already applied), the sprite's angle
  * and angular speed (ISK_PARTICLES_ANGLE), the first frame of a flipbook
- * (ISK_PARTICLES_FRAME).  Every column moves
+ * (ISK_PARTICLES_FRAME), and each particle's own part of the emitter's
+ * accelerations and slowing (ISK_PARTICLES_RADIAL, _TANGENTIAL, _WIND,
+ * _SLOWING).  Every column moves
  * with its particle: growth, removal and culling treat them all alike.
  *
  * Example:
@@ -59,7 +61,13 @@ enum {
     ISK_PARTICLES_TRAIL = 1u << 5, /* in flags while the trail column is there (isk_particles_set_trail
                                       adds it with its length; init and add_columns refuse it) */
     ISK_PARTICLES_FRAME = 1u << 6, /* allocate frame0: a flipbook's first frame per particle */
-    ISK_PARTICLES_FLAGS = 31u | ISK_PARTICLES_FRAME /* every flag init and add_columns take */
+    /* ---- per-particle ranges of the motion ---- */
+    ISK_PARTICLES_RADIAL = 1u << 7,     /* allocate radial_extra */
+    ISK_PARTICLES_TANGENTIAL = 1u << 8, /* allocate tangential_extra */
+    ISK_PARTICLES_WIND = 1u << 9,       /* allocate wind_x, wind_y */
+    ISK_PARTICLES_SLOWING = 1u << 10,   /* allocate slowing_extra */
+    ISK_PARTICLES_FLAGS = 31u | ISK_PARTICLES_FRAME | ISK_PARTICLES_RADIAL | ISK_PARTICLES_TANGENTIAL |
+                          ISK_PARTICLES_WIND | ISK_PARTICLES_SLOWING /* every flag init and add_columns take */
 };
 
 /* ---- sub-emitters and trails: the bits of isk_particles.hit ---- */
@@ -98,6 +106,11 @@ typedef struct isk_particles {
     /* ---- end of sub-emitters and trails ---- */
     uint16_t *frame0;    /* NULL unless ISK_PARTICLES_FRAME: the frame a flipbook starts at
                             (new particles: 0) */
+    /* each particle's own part, added to its emitter's value (new particles: 0) */
+    double *radial_extra;     /* NULL unless ISK_PARTICLES_RADIAL: units/s^2 */
+    double *tangential_extra; /* NULL unless ISK_PARTICLES_TANGENTIAL: units/s^2 */
+    double *wind_x, *wind_y;  /* NULL unless ISK_PARTICLES_WIND: an acceleration, units/s^2 */
+    double *slowing_extra;    /* NULL unless ISK_PARTICLES_SLOWING: per second */
     unsigned flags;
     isk_color default_color; /* given to new particles when color != NULL (yellow) */
     double default_size;     /* given to new particles when size != NULL (0.1) */

@@ -70,6 +70,7 @@ static int gather_field(isk_effect *e, fx_group *g)
     isk_field *f = &g->field;
     f->radial = em->motion.radial_accel;
     f->tangential = em->motion.tangential_accel;
+    f->own = (isk__fx_ranges_columns(em) & (ISK_PARTICLES_RADIAL | ISK_PARTICLES_TANGENTIAL | ISK_PARTICLES_WIND)) != 0;
     f->nturb = 0;
     for (int i = 0; i < em->motion.nforces && f->nturb < ISK_FIELD_MAX_TURB; i++) {
         const isk_force_def *fd = &d->forces[em->motion.forces[i]];
@@ -77,7 +78,7 @@ static int gather_field(isk_effect *e, fx_group *g)
             f->turb[f->nturb++] =
                 isk__field_turbulence(fd->strength, fd->scale, fd->speed, isk__noise_key(d->seed, em->motion.forces[i]));
     }
-    return f->radial != 0 || f->tangential != 0 || f->nturb > 0;
+    return f->radial != 0 || f->tangential != 0 || f->nturb > 0 || f->own;
 }
 
 /* The sway's parameters, for the oscillate stage or the drift+sway one. */
@@ -155,7 +156,10 @@ isk_status isk__fx_compile(isk_effect *e, fx_group *g)
     g->const_ay = f->ay - f->gravity;
     /* The sway right after the drift (no stage between them but the sound
      * order's slow): both in one pass, one stage that stands for them all. */
-    const int sway = g->store.osc_amp != NULL, drift_sway = ISK__FAST_FUSED && fast && sway;
+    /* slowing_range: a slow stage of its own, after the drift (the fused
+     * drift+sway slows every particle alike) */
+    const int slow_each = em->motion.slowing_range > 0;
+    const int sway = g->store.osc_amp != NULL, drift_sway = ISK__FAST_FUSED && fast && sway && !slow_each;
     if (drift_sway) {
         if (!ADD(isk__stage_drift_sway))
             return ISK_ERR_FULL;
@@ -184,8 +188,8 @@ isk_status isk__fx_compile(isk_effect *e, fx_group *g)
             return ISK_ERR_FULL;
         isk__stage_motion_init(st, g->integrator, f);
     }
-    if (em->motion.slowing > 0 && !fused_slow && !drift_sway) {
-        if (!ADD(isk__stage_slow))
+    if ((em->motion.slowing > 0 || slow_each) && !fused_slow && !drift_sway) {
+        if (!(slow_each ? ADD(isk__stage_slow_each) : ADD(isk__stage_slow)))
             return ISK_ERR_FULL;
         st->u.slow.slowing = em->motion.slowing;
     }

@@ -155,6 +155,10 @@ typedef enum fx_stream {
     FX_STREAM_COLOR,    /* color_pick */
     FX_STREAM_CHANCE,   /* a deflector's probability */
     FX_STREAM_FRAME,    /* flipbook_random_start */
+    FX_STREAM_RADIAL,   /* radial_accel_range */
+    FX_STREAM_TANGENTIAL, /* tangential_accel_range */
+    FX_STREAM_WIND,     /* wind_range */
+    FX_STREAM_SLOWING,  /* slowing_range */
     FX_STREAM_COUNT
 } fx_stream;
 
@@ -437,6 +441,15 @@ void isk__fx_free_ramps(fx_group *g);
 /* effect_looks.c: rotation, spin, size and colour variation, textures. */
 /* The optional store columns the emitter's looks need (ISK_PARTICLES_*). */
 unsigned isk__fx_looks_columns(const isk_emitter_def *em);
+
+/* effect_ranges.c: the per-particle ranges of the motion (radial_accel_range,
+ * tangential_accel_range, wind_range, slowing_range).  The store columns
+ * they need (ISK_PARTICLES_*); the draws of new particles [from, count)
+ * (after the looks', each range from its own stream); the columns a live
+ * change asks for. */
+unsigned isk__fx_ranges_columns(const isk_emitter_def *em);
+void isk__fx_ranges_adopt(fx_group *g, size_t from);
+isk_status isk__fx_ranges_live(fx_group *g);
 /* The emitter's particles turn by themselves (spin or spin_range): the spin stage. */
 int isk__fx_looks_spins(const isk_emitter_def *em);
 /* How much the angular speed changes over the life (spin_end - spin; 0

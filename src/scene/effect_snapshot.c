@@ -55,7 +55,8 @@ static const state_row group_rows[] = {
         GROW(streams[k].z4, ROW_U32)
     STREAM_ROWS(FX_STREAM_MASS),     STREAM_ROWS(FX_STREAM_ROTATION), STREAM_ROWS(FX_STREAM_SPIN),
     STREAM_ROWS(FX_STREAM_SIZE),     STREAM_ROWS(FX_STREAM_COLOR),    STREAM_ROWS(FX_STREAM_CHANCE),
-    STREAM_ROWS(FX_STREAM_FRAME),
+    STREAM_ROWS(FX_STREAM_FRAME),    STREAM_ROWS(FX_STREAM_RADIAL),   STREAM_ROWS(FX_STREAM_TANGENTIAL),
+    STREAM_ROWS(FX_STREAM_WIND),     STREAM_ROWS(FX_STREAM_SLOWING),
 #undef STREAM_ROWS
     GROW(origin, ROW_F64),           GROW(emitted, ROW_U64),
     GROW(next_burst, ROW_F64),       GROW(dropped, ROW_U64),        GROW(removed_nonfinite, ROW_SIZE),
@@ -89,7 +90,7 @@ static const state_row potential_rows[] = {
 };
 #undef PROW
 
-_Static_assert(FX_STREAM_COUNT == 7, "a new attribute stream needs its STREAM_ROWS in group_rows");
+_Static_assert(FX_STREAM_COUNT == 11, "a new attribute stream needs its STREAM_ROWS in group_rows");
 
 enum {
     NGROUP_ROWS = sizeof group_rows / sizeof group_rows[0],

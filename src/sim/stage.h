@@ -233,6 +233,7 @@ extern const isk_stage_kind isk__stage_motion;
  * that act in them now (so its blocks need not work them out). */
 void isk__stage_motion_init(isk_stage *st, isk_integrator method, isk_forces *f);     /* forces + an integrator (isk_integrate_block) */
 extern const isk_stage_kind isk__stage_slow;       /* v *= max(0, 1 - slowing*h) */
+extern const isk_stage_kind isk__stage_slow_each;  /* the same with slowing + the particle's slowing_extra */
 extern const isk_stage_kind isk__stage_oscillate;  /* the fire thesis's horizontal sway (ISK_PARTICLES_OSC) */
 extern const isk_stage_kind isk__stage_walls;      /* isk_bounds_apply_step (after remember) */
 extern const isk_stage_kind isk__stage_deflect;    /* deflector segments */
