@@ -113,7 +113,7 @@ static const char order_scene[] =
     "spread = 60\nspeed_min = 3\nspeed_max = 4\ndraw = sprite\nsize = 2.6\ntexture = textures/sparkle.png\n"
     "color_over_life = 0:#ff4040, 1:#4040ff\ndraw_order = random\n";
 
-Test(settings, refimg_draw_order)
+Test(refimg, settings_draw_order)
 {
     isk_canvas c = render(order_scene, 1, 50);
     refimg_expect("settings_draw_order", &c);
@@ -168,7 +168,7 @@ static isk_canvas render_flipbook(int threads, long frames)
     return c;
 }
 
-Test(settings, refimg_flipbook)
+Test(refimg, settings_flipbook)
 {
     isk_canvas c = render_flipbook(1, 3);
     refimg_expect("settings_flipbook", &c);
@@ -192,19 +192,19 @@ static const char ranges_scene[] =
     "[emitter jet]\nsource = stream\nposition = 17.5, 5\nrate = 150\nlife = 3\nlaunch = cone\nangle = 0\n"
     "spread = 30\nspeed_min = 6\nspeed_max = 6\nslowing = 1\nslowing_range = 3\ncolor = #80ff80\n";
 
-Test(settings, refimg_ranges)
+Test(refimg, settings_ranges)
 {
     isk_canvas c = render(ranges_scene, 1, 120);
     refimg_expect("settings_ranges", &c);
 }
 
-Test(settings, refimg_areas)
+Test(refimg, settings_areas)
 {
     isk_canvas c = render(areas_scene, 1, 60);
     refimg_expect("settings_areas", &c);
 }
 
-Test(settings, refimg_spin_origin)
+Test(refimg, settings_spin_origin)
 {
     char text[8192];
     spin_origin_scene(text, sizeof text);
