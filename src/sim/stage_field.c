@@ -124,7 +124,7 @@ static void describe_field(const isk_stage *st, FILE *out)
     if (f->tangential != 0)
         fprintf(out, "%stangential %g (counter-clockwise)", any++ ? ", " : "", f->tangential);
     if (f->own)
-        fprintf(out, "%seach particle's own part of them (ranges)", any++ ? ", " : "");
+        fprintf(out, "%seach particle's own radial, tangential and wind parts (the ranges)", any++ ? ", " : "");
     for (int k = 0; k < f->nturb; k++)
         fprintf(out, "%sturbulence strength %g scale %g speed %g", any++ ? ", " : "", f->turb[k].strength,
                 1.0 / f->turb[k].inv_scale, f->turb[k].speed);
