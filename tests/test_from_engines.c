@@ -5,7 +5,8 @@
  * up within the whole opening `spread`, rotation 90 is +pi/2, positive
  * tangential accelerations turn counter-clockwise, the radial origin is
  * the emitter's current position, the damping laws' figures, pixel
- * units, and draw order by `order`. */
+ * units, draw order by `order`, and the everyday settings (a gaussian
+ * area's spread, a launch outward from the centre). */
 #include <criterion/criterion.h>
 #include <dirent.h>
 #include <math.h>
@@ -48,7 +49,7 @@ Test(from_engines, every_file_loads_runs_and_draws)
         files++;
     }
     closedir(d);
-    cr_assert_eq(files, 6, "expected the page's six scene files, found %d", files);
+    cr_assert_eq(files, 7, "expected the page's seven scene files, found %d", files);
 }
 
 /* angle = 90 is up; spread = 45 is the whole opening: directions fill
@@ -188,5 +189,35 @@ Test(from_engines, order_puts_the_fire_over_the_smoke)
     cr_expect(px.r == 128 && px.g == 128 && px.b == 128, "swapped, the centre is %d %d %d, not the smoke's gray", px.r,
               px.g, px.b);
     isk_canvas_free(&c);
+    isk_effect_destroy(fx);
+}
+
+/* settings.ini: the gaussian area's particles (at rest where they were
+ * born) spread with standard deviations 1.5 and 0.5 (within 15%: about
+ * 200 births, a standard error of 5%); the border ellipse's launch
+ * outward moves every particle straight away from its centre (4, 4). */
+Test(from_engines, everyday_settings)
+{
+    isk_effect *fx = open_file("settings.ini");
+    scene_steps(fx, 60);
+    const isk_particles *mist = isk_effect_particles(fx, 0);
+    cr_assert_gt(mist->count, 150u);
+    double sx = 0, sy = 0;
+    for (size_t i = 0; i < mist->count; i++) {
+        sx += (mist->x[i] + 5) * (mist->x[i] + 5);
+        sy += mist->y[i] * mist->y[i];
+    }
+    sx = sqrt(sx / (double)mist->count);
+    sy = sqrt(sy / (double)mist->count);
+    cr_log_info("gaussian area: standard deviations %.3f, %.3f over %zu births", sx, sy, mist->count);
+    cr_assert_lt(fabs(sx / 1.5 - 1), 0.15);
+    cr_assert_lt(fabs(sy / 0.5 - 1), 0.15);
+    const isk_particles *halo = isk_effect_particles(fx, 1);
+    cr_assert_gt(halo->count, 30u);
+    for (size_t i = 0; i < halo->count; i++) {
+        const double dx = halo->x[i] - 4, dy = halo->y[i] - 4;
+        cr_assert_lt(fabs(dx * halo->vy[i] - dy * halo->vx[i]), 1e-9 * hypot(dx, dy) * 2);
+        cr_assert_gt(dx * halo->vx[i] + dy * halo->vy[i], 0.0);
+    }
     isk_effect_destroy(fx);
 }

@@ -3,7 +3,8 @@
  * launch velocities, lives and the rest of what the theses' scenes draw
  * come from the emitter's main stream; each optional attribute (mass_range,
  * rotation_range, spin_range, size_range, color_pick, a deflector's
- * probability) draws from a stream of its own.  So turning such a key on
+ * probability, flipbook_random_start, the motion's ranges) draws from a
+ * stream of its own.  So turning such a key on
  * for 20 frames changes the particles born then, and nothing else: once
  * they have died, the canvas is the one of the run that never had it. */
 #include <criterion/criterion.h>
@@ -27,15 +28,22 @@ static const char base[] = "[scene]\nwidth = 64\nheight = 48\nseed = 5\n[view]\n
 
 typedef struct toggle {
     const char *section, *key, *on, *off;
+    const char *extra; /* lines added to base's emitter, or NULL */
 } toggle;
 
 static const toggle toggles[] = {
-    {"emitter e", "mass_range", "3", "0"},
-    {"emitter e", "rotation_range", "360", "0"},
-    {"emitter e", "spin_range", "720", "0"},
-    {"emitter e", "size_range", "0.6", "0"},
-    {"emitter e", "color_pick", "0:red, 1:blue", "off"},
-    {"deflector wall", "probability", "0.5", "1"},
+    {"emitter e", "mass_range", "3", "0", NULL},
+    {"emitter e", "rotation_range", "360", "0", NULL},
+    {"emitter e", "spin_range", "720", "0", NULL},
+    {"emitter e", "size_range", "0.6", "0", NULL},
+    {"emitter e", "color_pick", "0:red, 1:blue", "off", NULL},
+    {"deflector wall", "probability", "0.5", "1", NULL},
+    {"emitter e", "radial_accel_range", "30", "0", NULL},
+    {"emitter e", "tangential_accel_range", "30", "0", NULL},
+    {"emitter e", "wind_range", "20, -20", "0, 0", NULL},
+    {"emitter e", "slowing_range", "8", "0", NULL},
+    {"emitter e", "flipbook_random_start", "true", "false",
+     "texture = scenes/textures/arrows.png\ntexture_grid = 4, 2\ntexture_fps = 3\n"},
 };
 
 static void step_frames(isk_effect *fx, int n)
@@ -54,7 +62,9 @@ Test(fx_streams, an_attribute_on_for_20_frames_leaves_no_trace)
 {
     for (size_t k = 0; k < sizeof toggles / sizeof toggles[0]; k++) {
         const toggle *t = &toggles[k];
-        isk_effect *plain = scene_text_open(base, 1), *tried = scene_text_open(base, 1);
+        char text[2048];
+        snprintf(text, sizeof text, "%s%s", base, t->extra ? t->extra : "");
+        isk_effect *plain = scene_text_open(text, 1), *tried = scene_text_open(text, 1);
         isk_error err;
         step_frames(plain, 10);
         step_frames(tried, 10);

@@ -44,6 +44,9 @@ Test(shape, every_sample_satisfies_its_shape)
             isk_shape_rect(-3, 2, 2, 0.5),
             isk_shape_ellipse(2, 2, 2, 1, ISK_ELLIPSE_UNIFORM),
             isk_shape_ellipse(2, 2, 2, 1, ISK_ELLIPSE_THESIS),
+            isk_shape_gaussian(1, -1, 0.5, 2),
+            isk_shape_rect_border(-3, 2, 2, 0.5),
+            isk_shape_ellipse_border(2, 2, 2, 1),
         };
         for (size_t k = 0; k < sizeof shapes / sizeof shapes[0]; k++) {
             isk_shape *s = &shapes[k];
@@ -83,6 +86,18 @@ Test(shape, every_sample_satisfies_its_shape)
                     break;
                 case ISK_SHAPE_ELLIPSE:
                     cr_assert_leq((u / s->a) * (u / s->a) + (v / s->b) * (v / s->b), 1 + 1e-9);
+                    break;
+                case ISK_SHAPE_GAUSSIAN: /* unbounded: finite, and within 9 sigma (p < 1e-17) */
+                    cr_assert(fabs(u) <= 9 * s->a && fabs(v) <= 9 * s->b, "(%g, %g)", u, v);
+                    break;
+                case ISK_SHAPE_RECT_BORDER: { /* inside the rect, on one of its sides */
+                    const double tol = 1e-12 * (1 + s->a + s->b);
+                    cr_assert(fabs(u) <= s->a + tol && fabs(v) <= s->b + tol);
+                    cr_assert(fabs(fabs(u) - s->a) <= tol || fabs(fabs(v) - s->b) <= tol, "(%g, %g)", u, v);
+                    break;
+                }
+                case ISK_SHAPE_ELLIPSE_BORDER:
+                    cr_assert_leq(fabs((u / s->a) * (u / s->a) + (v / s->b) * (v / s->b) - 1), 1e-9);
                     break;
                 default:
                     cr_assert_fail("a shape kind without a test");
@@ -168,6 +183,8 @@ Test(shape, draw_counts)
         {isk_shape_segment(0, 0, 1, 1), 1}, {isk_shape_rect(0, 0, 1, 1), 2},
         {isk_shape_ellipse(0, 0, 2, 1, ISK_ELLIPSE_UNIFORM), 2},
         {isk_shape_ellipse(0, 0, 2, 1, ISK_ELLIPSE_THESIS), 2},
+        {isk_shape_gaussian(0, 0, 2, 1), 2}, {isk_shape_rect_border(0, 0, 2, 1), 1},
+        {isk_shape_ellipse_border(0, 0, 2, 1), 1},
     };
     for (size_t k = 0; k < sizeof shapes / sizeof shapes[0]; k++) {
         isk_rng r, twin;
@@ -318,4 +335,80 @@ Test(shape, validation)
     cr_expect_eq(isk_shape_sample_n(&ok, &r, 0, NULL, NULL), ISK_OK);
     cr_expect_eq(isk_velgen_sample_n(&vb[0], &r, 2, x, y), ISK_ERR_RANGE);
     cr_expect_eq(isk_velgen_sample_n(NULL, &r, 2, x, y), ISK_ERR_NULL);
+}
+
+/* The gaussian area (LÖVE's `normal`): over 10^5 births the sample
+ * standard deviations are a and b within 1.5% (the standard error of a
+ * standard deviation is sigma/sqrt(2N) = 0.22%), the means 0 within
+ * 0.02 sigma (standard error 0.0032 sigma), x and y uncorrelated (|r| <
+ * 0.02), and 68.3% +- 1% of the x offsets within one sigma. */
+Test(shape, gaussian_spread)
+{
+    isk_shape s = isk_shape_gaussian(3, -1, 0.5, 2.0);
+    sample(&s, 11);
+    double mx = 0, my = 0;
+    for (int i = 0; i < N; i++) {
+        mx += xs[i] - 3;
+        my += ys[i] + 1;
+    }
+    mx /= N;
+    my /= N;
+    double vx = 0, vy = 0, cxy = 0;
+    long within = 0;
+    for (int i = 0; i < N; i++) {
+        const double dx = xs[i] - 3 - mx, dy = ys[i] + 1 - my;
+        vx += dx * dx;
+        vy += dy * dy;
+        cxy += dx * dy;
+        within += fabs(xs[i] - 3) < 0.5;
+    }
+    const double sx = sqrt(vx / (N - 1)), sy = sqrt(vy / (N - 1)), r = cxy / sqrt(vx * vy);
+    cr_log_info("gaussian 0.5, 2: sd %.4f, %.4f; means %.4f, %.4f; r %.4f; within 1 sd %.4f", sx, sy, mx, my, r,
+                (double)within / N);
+    cr_assert_lt(fabs(sx / 0.5 - 1), 0.015, "sd x %g", sx);
+    cr_assert_lt(fabs(sy / 2.0 - 1), 0.015, "sd y %g", sy);
+    cr_assert_lt(fabs(mx), 0.02 * 0.5);
+    cr_assert_lt(fabs(my), 0.02 * 2.0);
+    cr_assert_lt(fabs(r), 0.02);
+    cr_assert_lt(fabs((double)within / N - 0.6827), 0.01);
+}
+
+/* The rectangle's border is covered uniformly along its length: with
+ * half sizes 3 and 1 the long sides (12 of the 16 units) get 75% of the
+ * births, each side its share within 1% (standard error 0.14%). */
+Test(shape, rect_border_uniform_along_the_outline)
+{
+    isk_shape s = isk_shape_rect_border(0, 0, 3, 1);
+    sample(&s, 12);
+    long side[4] = {0};
+    for (int i = 0; i < N; i++) {
+        if (xs[i] == 3 && fabs(ys[i]) < 1)
+            side[0]++;
+        else if (ys[i] == 1)
+            side[1]++;
+        else if (xs[i] == -3)
+            side[2]++;
+        else if (ys[i] == -1)
+            side[3]++;
+    }
+    cr_assert_eq(side[0] + side[1] + side[2] + side[3], N, "every birth on a side");
+    const double want[4] = {2.0 / 16, 6.0 / 16, 2.0 / 16, 6.0 / 16};
+    for (int k = 0; k < 4; k++)
+        cr_assert_lt(fabs((double)side[k] / N - want[k]), 0.01, "side %d: %g", k, (double)side[k] / N);
+}
+
+/* The ellipse's border at a uniform parameter (LÖVE's borderellipse):
+ * the parameter angle atan2(y/b, x/a) falls in each quarter turn 25% +- 1%
+ * of the time. */
+Test(shape, ellipse_border_uniform_parameter)
+{
+    isk_shape s = isk_shape_ellipse_border(0, 0, 4, 1);
+    sample(&s, 13);
+    long q[4] = {0};
+    for (int i = 0; i < N; i++) {
+        double phi = atan2(ys[i] / 1.0, xs[i] / 4.0);
+        q[(int)floor((phi + PI) / (PI / 2)) & 3]++;
+    }
+    for (int k = 0; k < 4; k++)
+        cr_assert_lt(fabs((double)q[k] / N - 0.25), 0.01, "quarter %d: %g", k, (double)q[k] / N);
 }

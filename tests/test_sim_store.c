@@ -46,7 +46,7 @@ Test(sim_store, optional_arrays_only_when_asked)
     cr_assert_eq(p.color[0].g, 255);
     cr_assert_eq(p.color[0].b, 0);
     isk_particles_free(&p);
-    cr_assert_eq(isk_particles_init(&p, 3, 1u << 7), ISK_ERR_SIZE);
+    cr_assert_eq(isk_particles_init(&p, 3, 1u << 11), ISK_ERR_SIZE); /* a bit no column takes */
     isk_particles_free(&p);
 }
 

@@ -205,9 +205,18 @@ typedef enum isk_align_mode {
     ISK_ALIGN_VELOCITY,      /* along its velocity on screen, atan2(vy, vx), plus its angle */
     ISK_ALIGN_COUNT
 } isk_align_mode;
+/* Which of an emitter's particles are on top (isk_emitter_def.look.draw_order). */
+typedef enum isk_draw_order {
+    ISK_DRAW_ORDER_NEWEST = 0, /* the newest on top: drawn oldest first, in store order (LÖVE's "top") */
+    ISK_DRAW_ORDER_OLDEST,     /* the oldest on top: drawn newest first (LÖVE's "bottom") */
+    ISK_DRAW_ORDER_RANDOM,     /* a random order, shuffled again every frame (LÖVE's "random") */
+    ISK_DRAW_ORDER_COUNT
+} isk_draw_order;
 /* align = velocity without a texture draws the sprite kind as a streak this
  * many times its size long (and its size wide). */
 #define ISK_STREAK_STRETCH 4.0
+/* look.spin_end's "none": the angular speed stays what it was at birth. */
+#define ISK_SPIN_END_NONE INFINITY
 /* The longest texture path, terminator included. */
 #define ISK_TEXTURE_PATH_MAX 256
 
@@ -294,6 +303,10 @@ typedef struct isk_emitter_launch {
     double mass_range;         /* STREAM, SUB: mass = mass + U*mass_range */
     double inherit;            /* SUB: the fraction 0..1 of the parent's velocity its children keep,
                                   added to the velocity drawn above */
+    int outward;               /* STREAM, SUB (key launch_outward): the velocity drawn is turned by
+                                  the direction from the shape's centre to the birth place, so
+                                  angle 0 points straight outward (LÖVE's relative direction);
+                                  a birth exactly on the centre is not turned */
 } isk_emitter_launch;
 
 /* How long a particle lives: lifetime = seconds + U*range.  seconds is the
@@ -328,6 +341,13 @@ typedef struct isk_emitter_motion {
     double radial_accel;       /* units/s^2 away from the emitter's current position (negative:
                                   towards it); none exactly at the position */
     double tangential_accel;   /* units/s^2 perpendicular to that, counter-clockwise for positive */
+    /* Per-particle ranges: each particle adds its own U*range, drawn at its birth from a
+     * random stream of its own, to the value above (0: none; no column, no draw). */
+    double radial_accel_range;     /* radial = radial_accel + U*radial_accel_range */
+    double tangential_accel_range; /* tangential = tangential_accel + U*tangential_accel_range */
+    isk_vec2 wind_range;           /* its own constant acceleration (U1*x, U2*y), units/s^2 (LÖVE's
+                                      linear acceleration between a wind force's and that plus this) */
+    double slowing_range;          /* slowing = slowing + U*slowing_range (not with slow_faithful) */
     double osc_omega_min, osc_omega_max;         /* oscillation angular speed range, rad/s (0,0 = off) */
     double osc_amplitude_min, osc_amplitude_max; /* initial amplitude range, world units */
     double osc_decay;          /* amplitude *= max(0, 1 - decay*dt) */
@@ -367,10 +387,16 @@ typedef struct isk_emitter_look {
     isk_scalar_ramp alpha_over_life;  /* multiplies colour alpha */
     isk_scalar_ramp size_over_life;   /* multiplies size */
     int order;                 /* draw order key (ties: definition order) */
+    isk_draw_order draw_order; /* which of its particles are on top (default the newest); oldest and
+                                  random draw the emitter whole on the calling thread */
     double rotation, rotation_range; /* initial angle + U*range, radians (keys in degrees),
                                         counter-clockwise in the world */
     double spin, spin_range;   /* angular speed + U*range, rad/s (keys in deg/s); angles wrap into
                                   [-pi, pi) */
+    double spin_end;           /* ISK_SPIN_END_NONE (default): the angular speed stays; else it
+                                  changes linearly over the life by spin_end - spin, so a particle
+                                  without spin_range ends its life turning at spin_end (LÖVE's
+                                  setSpin(start, end)); immortal particles keep their start */
     isk_align_mode align;      /* VELOCITY: turned along the velocity (textures, and sprites as
                                   streaks ISK_STREAK_STRETCH times longer than wide) */
     char texture[ISK_TEXTURE_PATH_MAX]; /* "": none; else the name of the definition's texture drawn
@@ -379,6 +405,11 @@ typedef struct isk_emitter_look {
     isk_vec2 texture_grid;     /* cols, rows of a sprite sheet (whole numbers 1..256; default 1, 1) */
     double texture_fps;        /* 0: the frames play once over the life, floor(t*frames); > 0: at this
                                   rate of age, wrapping */
+    int flipbook_random_start; /* 1: each particle's flipbook starts at a frame drawn at birth and
+                                  plays on from it, wrapping (Godot's anim_offset) */
+    isk_vec2 texture_origin;   /* the point of the frame (fractions of its width and height from its
+                                  top-left corner) placed on the particle and turned about: 0.5, 0.5
+                                  (default) its centre (LÖVE's setOffset, in fractions) */
     int trail;                 /* points of history, 0: no trail */
     double trail_width;        /* pixels, > 0 (default 1) */
     double trail_fade;         /* 0..1: alpha at the oldest point is colour alpha * (1 - trail_fade) */
@@ -551,6 +582,7 @@ extern const char *const isk_view_kind_names[ISK_VIEWDEF_COUNT];         /* wind
 extern const char *const isk_align_names[ISK_ALIGN_COUNT];               /* none velocity */
 extern const char *const isk_probe_kind_names[ISK_PROBE_KIND_COUNT];     /* gate region histogram totals */
 extern const char *const isk_probe_of_names[ISK_PROBE_OF_COUNT];         /* speed angle age */
+extern const char *const isk_draw_order_names[ISK_DRAW_ORDER_COUNT];     /* newest oldest random */
 
 typedef struct isk_effect_def {
     int width, height;         /* canvas, default 600x600 */

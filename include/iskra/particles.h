@@ -8,7 +8,10 @@
  * per-particle colour (ISK_PARTICLES_COLOR), size (ISK_PARTICLES_SIZE) and
  * the fire thesis's horizontal oscillation (ISK_PARTICLES_OSC: amplitude,
  * phase, angular speed and the offset already applied), the sprite's angle
- * and angular speed (ISK_PARTICLES_ANGLE).  Every column moves
+ * and angular speed (ISK_PARTICLES_ANGLE), the first frame of a flipbook
+ * (ISK_PARTICLES_FRAME), and each particle's own part of the emitter's
+ * accelerations and slowing (ISK_PARTICLES_RADIAL, _TANGENTIAL, _WIND,
+ * _SLOWING).  Every column moves
  * with its particle: growth, removal and culling treat them all alike.
  *
  * Example:
@@ -37,6 +40,7 @@
 #define ISKRA_PARTICLES_H
 
 #include <stddef.h>
+#include <stdint.h>
 
 #include "iskra/color.h"
 #include "iskra/status.h"
@@ -54,9 +58,16 @@ enum {
     /* ---- sub-emitters and trails ---- */
     ISK_PARTICLES_HIT = 1u << 4,   /* allocate hit: bounces in the current substep */
     /* ---- end of sub-emitters and trails ---- */
-    ISK_PARTICLES_FLAGS = 31u,     /* every flag init and add_columns take */
-    ISK_PARTICLES_TRAIL = 1u << 5  /* in flags while the trail column is there (isk_particles_set_trail
+    ISK_PARTICLES_TRAIL = 1u << 5, /* in flags while the trail column is there (isk_particles_set_trail
                                       adds it with its length; init and add_columns refuse it) */
+    ISK_PARTICLES_FRAME = 1u << 6, /* allocate frame0: a flipbook's first frame per particle */
+    /* ---- per-particle ranges of the motion ---- */
+    ISK_PARTICLES_RADIAL = 1u << 7,     /* allocate radial_extra */
+    ISK_PARTICLES_TANGENTIAL = 1u << 8, /* allocate tangential_extra */
+    ISK_PARTICLES_WIND = 1u << 9,       /* allocate wind_x, wind_y */
+    ISK_PARTICLES_SLOWING = 1u << 10,   /* allocate slowing_extra */
+    ISK_PARTICLES_FLAGS = 31u | ISK_PARTICLES_FRAME | ISK_PARTICLES_RADIAL | ISK_PARTICLES_TANGENTIAL |
+                          ISK_PARTICLES_WIND | ISK_PARTICLES_SLOWING /* every flag init and add_columns take */
 };
 
 /* ---- sub-emitters and trails: the bits of isk_particles.hit ---- */
@@ -93,6 +104,13 @@ typedef struct isk_particles {
     int trail_len;       /* points per particle (1..ISK_TRAIL_MAX; 0 without the column) */
     int trail_head;      /* the ring's newest slot, the same for every particle */
     /* ---- end of sub-emitters and trails ---- */
+    uint16_t *frame0;    /* NULL unless ISK_PARTICLES_FRAME: the frame a flipbook starts at
+                            (new particles: 0) */
+    /* each particle's own part, added to its emitter's value (new particles: 0) */
+    double *radial_extra;     /* NULL unless ISK_PARTICLES_RADIAL: units/s^2 */
+    double *tangential_extra; /* NULL unless ISK_PARTICLES_TANGENTIAL: units/s^2 */
+    double *wind_x, *wind_y;  /* NULL unless ISK_PARTICLES_WIND: an acceleration, units/s^2 */
+    double *slowing_extra;    /* NULL unless ISK_PARTICLES_SLOWING: per second */
     unsigned flags;
     isk_color default_color; /* given to new particles when color != NULL (yellow) */
     double default_size;     /* given to new particles when size != NULL (0.1) */

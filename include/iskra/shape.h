@@ -40,6 +40,17 @@
  *            thesis's method x = a (2 u1 - 1), y = b (2 u2 - 1) sqrt(1 - (x/a)^2):
  *            inside, but crowded towards the ends of the major axis (the
  *            fraction with |x| > 0.9a is 0.100 instead of 0.0374).
+ *   GAUSSIAN standard deviations a (x) and b (y), a normal   2 draws
+ *            distribution by Box-Muller (LÖVE's `normal` area):
+ *            rho = sqrt(-2 ln(1 - u1)), phi = 2 pi u2,
+ *            (a rho cos phi, b rho sin phi); unbounded, 99.7% within 3a, 3b
+ *   RECT_BORDER the outline of the RECT, uniform along it:   1 draw
+ *            s = u1 * 4 (a + b) walked counter-clockwise from (a, -b):
+ *            right side up, top leftwards, left side down, bottom rightwards
+ *   ELLIPSE_BORDER the outline of the ELLIPSE at a uniform    1 draw
+ *            parameter: phi = 2 pi u1, (a cos phi, b sin phi) (LÖVE's
+ *            `borderellipse`: denser per unit length towards the ends of
+ *            the major axis; a circle when a = b)
  * Then the offset is rotated by `angle` (skipped when angle is 0, so
  * unrotated samples are exact) and added to (cx, cy).  Polar samples use
  * libm sqrt (exact), cos and sin.
@@ -76,6 +87,9 @@ typedef enum isk_shape_kind {
     ISK_SHAPE_SEGMENT,
     ISK_SHAPE_RECT,
     ISK_SHAPE_ELLIPSE,
+    ISK_SHAPE_GAUSSIAN,
+    ISK_SHAPE_RECT_BORDER,
+    ISK_SHAPE_ELLIPSE_BORDER,
     ISK_SHAPE_COUNT
 } isk_shape_kind;
 
@@ -84,6 +98,10 @@ typedef enum isk_ellipse_mode {
     ISK_ELLIPSE_THESIS = 1,  /* particle-engine thesis, eq. 5.1 (faithful) */
     ISK_ELLIPSE_MODE_COUNT
 } isk_ellipse_mode;
+
+/* The kinds whose b is used (RING's r_out, SEGMENT's dy, RECT, ELLIPSE,
+ * GAUSSIAN and the borders' second size). */
+int isk_shape_uses_b(isk_shape_kind kind);
 
 typedef struct isk_shape {
     isk_shape_kind kind;
@@ -102,7 +120,8 @@ typedef enum isk_velgen_kind {
 } isk_velgen_kind;
 
 /* Names as scene files spell them (`shape`, `launch`), indexed by kind. */
-extern const char *const isk_shape_names[ISK_SHAPE_COUNT];   /* point disc circle ring segment rect ellipse */
+extern const char *const isk_shape_names[ISK_SHAPE_COUNT];   /* point disc circle ring segment rect ellipse
+                                                                gaussian rect_border ellipse_border */
 extern const char *const isk_velgen_names[ISK_VELGEN_COUNT]; /* constant disc direction cone */
 
 typedef struct isk_velgen {
@@ -120,6 +139,9 @@ isk_shape isk_shape_ring(double cx, double cy, double r_in, double r_out);
 isk_shape isk_shape_segment(double x0, double y0, double dx, double dy);
 isk_shape isk_shape_rect(double cx, double cy, double half_w, double half_h);
 isk_shape isk_shape_ellipse(double cx, double cy, double a, double b, isk_ellipse_mode mode);
+isk_shape isk_shape_gaussian(double cx, double cy, double sigma_x, double sigma_y);
+isk_shape isk_shape_rect_border(double cx, double cy, double half_w, double half_h);
+isk_shape isk_shape_ellipse_border(double cx, double cy, double a, double b);
 
 isk_velgen isk_velgen_constant(double vx, double vy);
 isk_velgen isk_velgen_disc(double radius);

@@ -20,6 +20,7 @@ static void free_group(fx_group *g)
     isk__fx_retain_clear(&g->retained);
     free(g->pick);
     free(g->defl);
+    free(g->draw_list);
     isk__fx_free_ramps(g);
     isk__fx_looks_free(g);
     isk__fx_events_free(g);
@@ -29,7 +30,8 @@ static void free_group(fx_group *g)
 static isk_status alloc_group(isk_effect *e, fx_group *g)
 {
     isk_status s = isk_particles_init(&g->store, 0,
-                                      (isk__fx_emitter_oscillates(g->def) ? ISK_PARTICLES_OSC : 0) | isk__fx_looks_columns(g->def));
+                                      (isk__fx_emitter_oscillates(g->def) ? ISK_PARTICLES_OSC : 0) | isk__fx_looks_columns(g->def) |
+                                          isk__fx_ranges_columns(g->def));
     if (s != ISK_OK || (s = isk__fx_events_columns(g)) != ISK_OK)
         return s;
     g->pick_cap = e->pots_cap;

@@ -30,6 +30,8 @@ void isk__fx_adopt(isk_effect *e, fx_group *g, size_t from)
             p->osc_offset[i] = p->osc_amp[i] * isk_sinlut_eval(&e->sin_table, em->motion.osc_table, ph);
         }
     }
-    /* last: the looks' draws come after every draw above (effect_looks.c) */
+    /* last: the looks' draws come after every draw above (effect_looks.c),
+     * then the motion's ranges (effect_ranges.c), each from its own stream */
     isk__fx_looks_adopt(g, from);
+    isk__fx_ranges_adopt(g, from);
 }

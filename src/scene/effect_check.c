@@ -213,6 +213,9 @@ static isk_status check_emitter(ctx *c)
     isk_status se = check_sub_emitters(c, e);
     if (se != ISK_OK)
         return se;
+    if (e->motion.slow_faithful && e->motion.slowing_range > 0)
+        return bad_key(c, "slowing_range", "not with slow_faithful (the fire thesis's order slows every particle "
+                                           "alike, in one fused step)");
     if (e->motion.slow_faithful && e->motion.slowing > 0) {
         /* The thesis order is a fused constant-acceleration kernel. */
         isk_integrator m = e->motion.integrator == ISK_INTEGRATE_INHERIT ? d->integrator : e->motion.integrator;

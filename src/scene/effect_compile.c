@@ -70,6 +70,7 @@ static int gather_field(isk_effect *e, fx_group *g)
     isk_field *f = &g->field;
     f->radial = em->motion.radial_accel;
     f->tangential = em->motion.tangential_accel;
+    f->own = (isk__fx_ranges_columns(em) & (ISK_PARTICLES_RADIAL | ISK_PARTICLES_TANGENTIAL | ISK_PARTICLES_WIND)) != 0;
     f->nturb = 0;
     for (int i = 0; i < em->motion.nforces && f->nturb < ISK_FIELD_MAX_TURB; i++) {
         const isk_force_def *fd = &d->forces[em->motion.forces[i]];
@@ -77,7 +78,7 @@ static int gather_field(isk_effect *e, fx_group *g)
             f->turb[f->nturb++] =
                 isk__field_turbulence(fd->strength, fd->scale, fd->speed, isk__noise_key(d->seed, em->motion.forces[i]));
     }
-    return f->radial != 0 || f->tangential != 0 || f->nturb > 0;
+    return f->radial != 0 || f->tangential != 0 || f->nturb > 0 || f->own;
 }
 
 /* The sway's parameters, for the oscillate stage or the drift+sway one. */
@@ -155,7 +156,10 @@ isk_status isk__fx_compile(isk_effect *e, fx_group *g)
     g->const_ay = f->ay - f->gravity;
     /* The sway right after the drift (no stage between them but the sound
      * order's slow): both in one pass, one stage that stands for them all. */
-    const int sway = g->store.osc_amp != NULL, drift_sway = ISK__FAST_FUSED && fast && sway;
+    /* slowing_range: a slow stage of its own, after the drift (the fused
+     * drift+sway slows every particle alike) */
+    const int slow_each = em->motion.slowing_range > 0;
+    const int sway = g->store.osc_amp != NULL, drift_sway = ISK__FAST_FUSED && fast && sway && !slow_each;
     if (drift_sway) {
         if (!ADD(isk__stage_drift_sway))
             return ISK_ERR_FULL;
@@ -184,8 +188,8 @@ isk_status isk__fx_compile(isk_effect *e, fx_group *g)
             return ISK_ERR_FULL;
         isk__stage_motion_init(st, g->integrator, f);
     }
-    if (em->motion.slowing > 0 && !fused_slow && !drift_sway) {
-        if (!ADD(isk__stage_slow))
+    if ((em->motion.slowing > 0 || slow_each) && !fused_slow && !drift_sway) {
+        if (!(slow_each ? ADD(isk__stage_slow_each) : ADD(isk__stage_slow)))
             return ISK_ERR_FULL;
         st->u.slow.slowing = em->motion.slowing;
     }
@@ -227,10 +231,12 @@ isk_status isk__fx_compile(isk_effect *e, fx_group *g)
         st->u.deflect.redo_on = redo;
     }
     if (g->store.angle && isk__fx_looks_spins(em)) {
-        if (!ADD(isk__stage_spin))
+        const double change = isk__fx_looks_spin_change(em);
+        if (!(change != 0.0 ? ADD(isk__stage_spin_life) : ADD(isk__stage_spin)))
             return ISK_ERR_FULL;
         st->u.spin.spin = em->look.spin;
         st->u.spin.spin_range = em->look.spin_range;
+        st->u.spin.change = change;
     }
     /* What the stages need, folded: the start state (bounces at the time
      * of impact) kept by the motion stage's own pass, or by a stage of its
@@ -317,9 +323,12 @@ void isk__fx_describe_group(const isk_effect *e, const fx_group *g, FILE *out)
         fprintf(out, "  %-9s one thread, in particle order (%s)\n", "order",
                 g->forces.npick ? "a potential may switch itself off" : "a deflector draws at random");
     if (em->look.draw != ISK_DRAW_NONE)
-        fprintf(out, "  draw      %s, %s%s%s%s\n", isk_draw_mode_names[em->look.draw], isk_blend_name(em->look.blend),
+        fprintf(out, "  draw      %s, %s%s%s%s%s\n", isk_draw_mode_names[em->look.draw], isk_blend_name(em->look.blend),
                 g->has_color_ramp ? ", colour over life" : "", g->has_alpha_ramp ? ", alpha over life" : "",
-                g->has_size_ramp ? ", size over life" : "");
+                g->has_size_ramp ? ", size over life" : "",
+                em->look.draw_order == ISK_DRAW_ORDER_OLDEST   ? ", the oldest on top (whole, on one thread)"
+                : em->look.draw_order == ISK_DRAW_ORDER_RANDOM ? ", in a random order each frame (whole, on one thread)"
+                                                               : "");
     isk__fx_looks_describe(g, out);
     if (em->look.trail > 0)
         fprintf(out, "  trail     the last %d positions, %g px wide, fade %g (drawn first)\n", em->look.trail,

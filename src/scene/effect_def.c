@@ -136,7 +136,8 @@ int isk__fx_emitter_oscillates(const isk_emitter_def *em)
 size_t isk__fx_emitter_memory(const isk_emitter_def *e, int keep_prev)
 {
     const int points = e->look.trail > 0 && e->look.trail <= ISK_TRAIL_MAX ? e->look.trail : keep_prev ? 1 : 0;
-    unsigned flags = (isk__fx_emitter_oscillates(e) ? ISK_PARTICLES_OSC : 0) | isk__fx_looks_columns(e);
+    unsigned flags = (isk__fx_emitter_oscillates(e) ? ISK_PARTICLES_OSC : 0) | isk__fx_looks_columns(e) |
+                     isk__fx_ranges_columns(e);
     /* sub-emitters and trails: the hit and trail columns, a sub-emitter's waiting events */
     flags |= (e->events.on_hit >= 0 ? ISK_PARTICLES_HIT : 0) | (points > 0 ? ISK_PARTICLES_TRAIL : 0);
     size_t b = isk_particles_bytes_trail(e->born.capacity, flags, points);

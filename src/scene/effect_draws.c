@@ -143,7 +143,9 @@ static isk_status draw_discs(isk_effect *e, isk_canvas *c, fx_group *g, const fx
     const isk_particles *p = &g->store;
     const int vary = fx_varies(g);
     const double scale = fabs(e->view.sx);
-    for (size_t i = b->first; i < b->end; i++) {
+    const size_t n = b->list ? b->nlist : b->end;
+    for (size_t k = b->list ? 0 : b->first; k < n; k++) {
+        const size_t i = b->list ? b->list[k] : k;
         double X, Y, mult;
         isk_view_to_screen(&e->view, p->x[i], p->y[i], &X, &Y);
         isk_color col = fx_style(g, p, i, vary, &mult);
@@ -214,6 +216,18 @@ static isk_status draw_sprites(isk_effect *e, isk_canvas *c, fx_group *g, const 
      * bands of a shuffled store, a quarter of the threaded sprite draw.
      * The reach is a row wider than a sprite can touch, so the select's
      * strict bounds drop nothing the band would draw. */
+    if (b->list) { /* another order than the store's (draw_order): drawn whole, one by one */
+        for (size_t k = 0; k < b->nlist; k++) {
+            const size_t i = b->list[k];
+            double X, Y, mult;
+            isk_view_to_screen(&e->view, p->x[i], p->y[i], &X, &Y);
+            isk_color col = fx_style(g, p, i, vary, &mult);
+            const isk_sprite *spr = b->sprite[sprite_px(g, scale, mult)];
+            if (spr)
+                isk__draw_sprite_rows(c, spr, X, Y, tinted ? &col : NULL, g->def->look.blend, b->r0, b->r1);
+        }
+        return ISK_OK;
+    }
     enum { CHUNK = 256 };
     double ys[CHUNK];
     int32_t in_reach[CHUNK];

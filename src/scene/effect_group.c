@@ -27,6 +27,11 @@ static const uint64_t stream_salt[FX_STREAM_COUNT] = {
     [FX_STREAM_SIZE] = 0x73697a65u,     /* "size" */
     [FX_STREAM_COLOR] = 0x636f6c6fu,    /* "colo" */
     [FX_STREAM_CHANCE] = 0x6368616eu,   /* "chan" */
+    [FX_STREAM_FRAME] = 0x6672616du,    /* "fram" */
+    [FX_STREAM_RADIAL] = 0x72616469u,   /* "radi" */
+    [FX_STREAM_TANGENTIAL] = 0x74616e67u, /* "tang" */
+    [FX_STREAM_WIND] = 0x77696e64u,     /* "wind" */
+    [FX_STREAM_SLOWING] = 0x736c6f77u,  /* "slow" */
 };
 
 void isk__fx_seed_streams(fx_group *g, uint64_t seed)

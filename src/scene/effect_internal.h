@@ -157,6 +157,11 @@ typedef enum fx_stream {
     FX_STREAM_SIZE,     /* size_range */
     FX_STREAM_COLOR,    /* color_pick */
     FX_STREAM_CHANCE,   /* a deflector's probability */
+    FX_STREAM_FRAME,    /* flipbook_random_start */
+    FX_STREAM_RADIAL,   /* radial_accel_range */
+    FX_STREAM_TANGENTIAL, /* tangential_accel_range */
+    FX_STREAM_WIND,     /* wind_range */
+    FX_STREAM_SLOWING,  /* slowing_range */
     FX_STREAM_COUNT
 } fx_stream;
 
@@ -189,6 +194,8 @@ struct fx_group {
     int keep_on_canvas;            /* reflect walls hold it: one on the far edge is drawn on it */
     const fx_draw_kind *draw;      /* its particles' draw kind (effect_draws.c) */
     fx_retained retained;          /* its batched dots' blends while it rests (effect_retain.c) */
+    uint32_t *draw_list;           /* draw_order oldest or random: the frame's order (effect_render.c) */
+    size_t draw_list_cap;
     long shared_updates;           /* substeps whose update was shared out among the workers (tests) */
 
     /* explosions (effect_group.c) */
@@ -451,8 +458,20 @@ void isk__fx_free_ramps(fx_group *g);
 /* effect_looks.c: rotation, spin, size and colour variation, textures. */
 /* The optional store columns the emitter's looks need (ISK_PARTICLES_*). */
 unsigned isk__fx_looks_columns(const isk_emitter_def *em);
+
+/* effect_ranges.c: the per-particle ranges of the motion (radial_accel_range,
+ * tangential_accel_range, wind_range, slowing_range).  The store columns
+ * they need (ISK_PARTICLES_*); the draws of new particles [from, count)
+ * (after the looks', each range from its own stream); the columns a live
+ * change asks for. */
+unsigned isk__fx_ranges_columns(const isk_emitter_def *em);
+void isk__fx_ranges_adopt(fx_group *g, size_t from);
+isk_status isk__fx_ranges_live(fx_group *g);
 /* The emitter's particles turn by themselves (spin or spin_range): the spin stage. */
 int isk__fx_looks_spins(const isk_emitter_def *em);
+/* How much the angular speed changes over the life (spin_end - spin; 0
+ * without spin_end). */
+double isk__fx_looks_spin_change(const isk_emitter_def *em);
 /* New particles [from, count): angle, spin, size, colour (after every other
  * draw of their birth; a draw only where a range or color_pick asks). */
 void isk__fx_looks_adopt(fx_group *g, size_t from);

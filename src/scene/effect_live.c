@@ -227,6 +227,8 @@ static isk_status carry(isk_effect *e, const where *w, const isk_key *k, const v
     if (s == ISK_OK)
         s = isk__fx_looks_columns_live(g);
     if (s == ISK_OK)
+        s = isk__fx_ranges_live(g);
+    if (s == ISK_OK)
         s = isk__fx_events_columns(g); /* on_hit, trail */
     if (!strcmp(k->name, "rate") && em->born.source == ISK_SOURCE_STREAM) {
         rebase_stream(e, g, old->born.rate);

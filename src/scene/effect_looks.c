@@ -5,7 +5,8 @@
  * What an emitter does not use costs nothing and changes nothing: the angle
  * column (and the spin stage, effect_compile.c) exist only with a rotation
  * or a spin, the size column only with size_range, the colour column only
- * with color_pick; every random draw here happens only when its range or
+ * with color_pick, the first-frame column only with flipbook_random_start
+ * on a flipbook; every random draw here happens only when its range or
  * color_pick asks, each from the attribute's own stream (fx_stream), so
  * turning one on or off never changes another particle's draws.  The drawing is
  * effect_texture.c's.  A texture is made from the pixels the definition
@@ -37,15 +38,32 @@ static int rotates(const isk_emitter_def *em)
     return angle_seen(em) && (em->look.rotation != 0 || em->look.rotation_range > 0 || isk__fx_looks_spins(em));
 }
 
+double isk__fx_looks_spin_change(const isk_emitter_def *em)
+{
+    return em->look.spin_end == ISK_SPIN_END_NONE ? 0.0 : em->look.spin_end - em->look.spin;
+}
+
 int isk__fx_looks_spins(const isk_emitter_def *em)
 {
-    return angle_seen(em) && (em->look.spin != 0 || em->look.spin_range > 0);
+    return angle_seen(em) && (em->look.spin != 0 || em->look.spin_range > 0 || isk__fx_looks_spin_change(em) != 0);
+}
+
+/* The frames of the emitter's flipbook (1: a single image, or none). */
+static int flipbook_frames(const isk_emitter_def *em)
+{
+    return em->look.texture[0] ? (int)em->look.texture_grid.x * (int)em->look.texture_grid.y : 1;
+}
+
+/* A random first frame is seen only on a flipbook of several frames. */
+static int random_start(const isk_emitter_def *em)
+{
+    return em->look.flipbook_random_start && flipbook_frames(em) > 1 && em->look.draw != ISK_DRAW_NONE;
 }
 
 unsigned isk__fx_looks_columns(const isk_emitter_def *em)
 {
     return (rotates(em) ? ISK_PARTICLES_ANGLE : 0u) | (em->look.size_range > 0 ? ISK_PARTICLES_SIZE : 0u) |
-           (em->look.color_pick.n > 0 ? ISK_PARTICLES_COLOR : 0u);
+           (em->look.color_pick.n > 0 ? ISK_PARTICLES_COLOR : 0u) | (random_start(em) ? ISK_PARTICLES_FRAME : 0u);
 }
 
 static double wrap(double a)
@@ -79,6 +97,12 @@ void isk__fx_looks_adopt(fx_group *g, size_t from)
             p->color[i] = em->look.color_pick.n
                 ? isk_color_gradient_eval(em->look.color_pick.stops, em->look.color_pick.n, isk_rng_uniform(color))
                 : em->look.color;
+    if (p->frame0) { /* frames <= ISK_TEXTURE_MAX_GRID^2 = 65536: a frame number fits 16 bits */
+        isk_rng *frame = &g->streams[FX_STREAM_FRAME];
+        const int frames = flipbook_frames(em);
+        for (size_t i = from; i < p->count; i++)
+            p->frame0[i] = random_start(em) ? (uint16_t)isk_rng_below(frame, (uint32_t)frames) : 0;
+    }
 }
 
 /* A sprite kind drawn through a texture: turned along the velocity (a

@@ -101,6 +101,41 @@ static int any_deflector_shown(const isk_effect_def *d)
     return 0;
 }
 
+/* draw_order oldest or random: the frame's order of g's particles, in
+ * g->draw_list (oldest: the store's order reversed, newest first).  Random is a shuffle (Fisher-Yates) by a generator seeded
+ * from the scene's seed, the emitter's index and the frame number alone:
+ * the same order for the same frame on any number of threads, and no
+ * draw from the emitter's own streams, so the simulation never sees it. */
+static isk_status order_particles(const isk_effect *e, fx_group *g)
+{
+    const size_t n = g->store.count;
+    if (n > g->draw_list_cap) {
+        size_t cap = g->draw_list_cap ? g->draw_list_cap : 64;
+        while (cap < n)
+            cap *= 2;
+        uint32_t *list = realloc(g->draw_list, cap * sizeof *list);
+        if (!list)
+            return ISK_ERR_NOMEM;
+        g->draw_list = list;
+        g->draw_list_cap = cap;
+    }
+    uint32_t *list = g->draw_list;
+    for (size_t i = 0; i < n; i++) /* the store holds at most 2^28 (ISK_PARTICLES_MAX) */
+        list[i] = (uint32_t)(g->def->look.draw_order == ISK_DRAW_ORDER_OLDEST ? n - 1 - i : i);
+    if (g->def->look.draw_order == ISK_DRAW_ORDER_RANDOM && n > 1) {
+        isk_rng r;
+        isk_rng_seed(&r, isk__fx_group_seed(e->def.seed, g->index) ^ 0x64726177u /* "draw" */ ^
+                             (uint64_t)e->frame * 0xD1B54A32D192ED03ull);
+        for (size_t i = n - 1; i > 0; i--) {
+            const size_t j = isk_rng_below(&r, (uint32_t)(i + 1));
+            const uint32_t t = list[i];
+            list[i] = list[j];
+            list[j] = t;
+        }
+    }
+    return ISK_OK;
+}
+
 /* A group's draw: its trails, then its particles, each on the workers in
  * bands where its kind allows (effect_bands.c).  fill: NULL, or the
  * background the canvas is cleared to first, by the bands of the group's
@@ -120,6 +155,19 @@ static isk_status render_group(isk_effect *e, isk_canvas *c, fx_group *g, const 
         isk_status s = k->prepare(e, g, &whole);
         if (s != ISK_OK)
             return s;
+    }
+    if (g->def->look.draw_order != ISK_DRAW_ORDER_NEWEST && g->def->look.draw != ISK_DRAW_NONE) {
+        /* Another order than the store's: the whole list on this thread
+         * (bands and replays at rest keep the store's order). */
+        isk_status s = order_particles(e, g);
+        if (s != ISK_OK)
+            return s;
+        if (fill)
+            isk_canvas_fill(c, *fill);
+        isk__fx_retain_clear(&g->retained);
+        whole.list = g->draw_list;
+        whole.nlist = g->store.count;
+        return k->draw(e, c, g, &whole);
     }
     return isk__fx_draw_bands(e, c, g, k, &whole, 1.0, fill);
 }

@@ -40,6 +40,8 @@ const state_row isk__snap_group_rows[] = {
         GROW(streams[k].z4, ROW_U32)
     STREAM_ROWS(FX_STREAM_MASS),     STREAM_ROWS(FX_STREAM_ROTATION), STREAM_ROWS(FX_STREAM_SPIN),
     STREAM_ROWS(FX_STREAM_SIZE),     STREAM_ROWS(FX_STREAM_COLOR),    STREAM_ROWS(FX_STREAM_CHANCE),
+    STREAM_ROWS(FX_STREAM_FRAME),    STREAM_ROWS(FX_STREAM_RADIAL),   STREAM_ROWS(FX_STREAM_TANGENTIAL),
+    STREAM_ROWS(FX_STREAM_WIND),     STREAM_ROWS(FX_STREAM_SLOWING),
 #undef STREAM_ROWS
     GROW(origin, ROW_F64),           GROW(emitted, ROW_U64),
     GROW(next_burst, ROW_F64),       GROW(dropped, ROW_U64),        GROW(removed_nonfinite, ROW_SIZE),
@@ -73,7 +75,7 @@ const state_row isk__snap_potential_rows[] = {
 };
 #undef PROW
 
-_Static_assert(FX_STREAM_COUNT == 6, "a new attribute stream needs its STREAM_ROWS in isk__snap_group_rows");
+_Static_assert(FX_STREAM_COUNT == 11, "a new attribute stream needs its STREAM_ROWS in isk__snap_group_rows");
 
 #define RROW(f, t) {#f, offsetof(isk_probe_reading, f), t}
 /* A probe's latest reading (its name, kind and bins come from the

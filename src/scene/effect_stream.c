@@ -228,6 +228,20 @@ void isk__fx_prewarm_offsets(const isk_effect_def *d, double *frames)
     }
 }
 
+/* launch_outward: (vx, vy) turned by the direction of (dx, dy), the birth
+ * place seen from the shape's centre: a launch along +x then points
+ * straight outward.  The turn is by the unit vector itself (no angle, no
+ * trigonometry); exactly on the centre there is no direction and no turn. */
+static void turn_outward(double dx, double dy, double *vx, double *vy)
+{
+    const double r = hypot(dx, dy);
+    if (!(r > 0.0 && r < INFINITY))
+        return;
+    const double c = dx / r, s = dy / r, x = *vx, y = *vy;
+    *vx = c * x - s * y;
+    *vy = s * x + c * y;
+}
+
 /* Where and how fast new particles start: built once per spawn call. */
 fx_launcher isk__fx_launcher_of(const isk_emitter_def *em)
 {
@@ -247,14 +261,14 @@ isk_status isk__fx_birth(isk_effect *e, fx_group *g, const fx_launcher *l, doubl
         g->dropped++;
         return ISK_OK;
     }
-    double x, y, vx, vy;
+    double x, y, vx, vy, cx = l->shape.cx, cy = l->shape.cy;
     if (l->moving) {
         isk_shape s = l->shape;
         /* birth = frame: born, and so placed, at the end of the step */
         const double at = !isnan(l->place) ? l->place : em->born.birth == ISK_BIRTH_FRAME ? l->t1 : tb;
         const isk_vec2 c = isk__fx_emitter_pos(g, em, at);
-        s.cx = c.x;
-        s.cy = c.y;
+        s.cx = cx = c.x;
+        s.cy = cy = c.y;
         isk_shape_sample(&s, &g->rng, &x, &y);
     } else {
         isk_shape_sample(&l->shape, &g->rng, &x, &y);
@@ -264,6 +278,8 @@ isk_status isk__fx_birth(isk_effect *e, fx_group *g, const fx_launcher *l, doubl
         vx += em->launch.velocity.x;
         vy += em->launch.velocity.y;
     }
+    if (em->launch.outward)
+        turn_outward(x - cx, y - cy, &vx, &vy);
     if (dv) { /* a sub-emitter's inherited velocity (only there: a stream's bits are untouched) */
         vx += dv[0];
         vy += dv[1];

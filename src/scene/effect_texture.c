@@ -14,9 +14,15 @@
  *            A streak without align is round: its angle is not used.
  *   frame    flipbooks: floor(t * frames) at normalised age t (clamped
  *            to the last frame), or with texture_fps floor(age * fps)
- *            modulo frames.
+ *            modulo frames; with flipbook_random_start plus the
+ *            particle's first frame, modulo frames.
  *   tint     the particle's colour (ramps, color_pick); white leaves the
  *            image as it is.
+ *   origin   texture_origin (ox, oy), fractions of the frame from its
+ *            top-left corner: that point of the image sits on the screen
+ *            point and the image turns about it.  The image's centre is
+ *            then the point minus R(angle) ((ox - 1/2) w, (oy - 1/2) h);
+ *            at the default (1/2, 1/2) nothing is computed.
  * The band form (isk__draw_texture_rows) blends only the band's rows of a
  * sprite placed on the whole canvas, so the bands give the bytes of the
  * whole call. */
@@ -41,6 +47,8 @@ static int frame_of(const isk_emitter_def *em, const isk_particles *p, size_t i,
         k = floor(t * frames);
         k = k >= frames ? frames - 1 : k > 0 ? k : 0; /* also maps NaN to 0 */
     }
+    if (p->frame0) /* flipbook_random_start: on from its own first frame */
+        return (int)(((unsigned)k + p->frame0[i]) % (unsigned)frames);
     return (int)k;
 }
 
@@ -59,7 +67,11 @@ isk_status isk__fx_draw_textures(isk_effect *e, isk_canvas *c, fx_group *g, cons
     const double scale = fabs(v->sx);
     const double aspect = (double)t->frame_h / (double)t->frame_w;
     const double stretch = streak ? ISK_STREAK_STRETCH : 1.0;
-    for (size_t i = b->first; i < b->end; i++) {
+    const double ox = em->look.texture_origin.x - 0.5, oy = em->look.texture_origin.y - 0.5;
+    const int offset = ox != 0.0 || oy != 0.0;
+    const size_t n = b->list ? b->nlist : b->end; /* a list: another order than the store's */
+    for (size_t k = b->list ? 0 : b->first; k < n; k++) {
+        const size_t i = b->list ? b->list[k] : k;
         double X, Y, mult;
         isk_view_to_screen(v, p->x[i], p->y[i], &X, &Y);
         isk_color col = fx_style(g, p, i, vary, &mult);
@@ -67,6 +79,12 @@ isk_status isk__fx_draw_textures(isk_effect *e, isk_canvas *c, fx_group *g, cons
         double angle = turn ? turn_sign * p->angle[i] : 0.0;
         if (align)
             angle += atan2(p->vy[i] * v->sy, p->vx[i] * v->sx);
+        if (offset) {
+            const double dx = ox * w * stretch, dy = oy * w * aspect;
+            const double c = angle != 0.0 ? cos(angle) : 1.0, s = angle != 0.0 ? sin(angle) : 0.0;
+            X -= c * dx - s * dy;
+            Y -= s * dx + c * dy;
+        }
         isk__draw_texture_rows(c, t, frame_of(em, p, i, t->frames), X, Y, w * stretch, w * aspect, angle, col,
                                em->look.blend, b->r0, b->r1, 0);
     }

@@ -72,7 +72,8 @@ isk_status isk__fx_key_check(const isk_key *k, const void *item, const isk_effec
         isk_key r = *k;
         r.min = k->min * (PI / 180.0);
         r.max = k->max * (PI / 180.0);
-        return isfinite(v) && isk__fx_in_range(&r, v) ? ISK_OK : refused(k, item, d, why, n);
+        return isk__fx_word_of(k, v) || (isfinite(v) && isk__fx_in_range(&r, v)) ? ISK_OK
+                                                                                   : refused(k, item, d, why, n);
     }
     case ISK_KEY_PAIR: {
         const double *v = FX_AT_C(double, item, k->offset);

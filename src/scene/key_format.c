@@ -117,6 +117,9 @@ isk_status isk__fx_key_format(const isk_key *k, const void *item, const isk_effe
     case ISK_KEY_ANGLE: {
         /* Degrees when they read back to the same radians, else radians. */
         double r = *FX_AT_C(double, item, k->offset);
+        const char *w = isk__fx_word_of(k, r);
+        if (w)
+            return put(buf, n, "%s", w);
         double deg = r * (180.0 / PI);
         char dt[40];
         num(dt, sizeof dt, deg);

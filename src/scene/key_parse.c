@@ -278,6 +278,11 @@ static isk_status parse_angle(const isk_key *k, void *item, const char *text, ch
     double *field = FX_AT(double, item, k->offset);
     size_t len = strlen(text);
     double v;
+    int w = isk__fx_word_index(k, text); /* spin_end's none */
+    if (w >= 0) {
+        *field = k->words[w].value;
+        return ISK_OK;
+    }
     if (len > 3 && !strcmp(text + len - 3, "rad")) {
         char buf[64];
         size_t m = len - 3;

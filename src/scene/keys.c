@@ -33,6 +33,7 @@ static const isk_key_word forever_words[] = {{"forever", INFINITY}, {"inf", INFI
 static const isk_key_word off_words[] = {{"off", ISK_DIST_OFF}, {"none", ISK_DIST_OFF}, {NULL, 0}};
 static const isk_key_word scene_words[] = {{"scene", 0}, {NULL, 0}};
 static const isk_key_word inherit_words[] = {{"scene", ISK_INTEGRATE_INHERIT}, {NULL, 0}};
+static const isk_key_word spin_end_words[] = {{"none", ISK_SPIN_END_NONE}, {NULL, 0}};
 static const isk_key_word table_words[] = {{"true", ISK_SINLUT_FLOOR}, {"false", ISK_SINLUT_LIBM}, {NULL, 0}};
 
 /* ---- what each name of an enum means (a row's `notes`) ---------------------
@@ -111,6 +112,11 @@ static const char *const probe_of_notes[ISK_PROBE_OF_COUNT] = {
     [ISK_PROBE_OF_SPEED] = "|v|, units/s",
     [ISK_PROBE_OF_ANGLE] = "the velocity's direction, degrees -180..180",
     [ISK_PROBE_OF_AGE] = "seconds lived",
+};
+static const char *const draw_order_notes[ISK_DRAW_ORDER_COUNT] = {
+    [ISK_DRAW_ORDER_NEWEST] = "the newest on top: drawn oldest first",
+    [ISK_DRAW_ORDER_OLDEST] = "the oldest on top: drawn newest first, on one thread",
+    [ISK_DRAW_ORDER_RANDOM] = "shuffled again every frame, on one thread",
 };
 static const char *const units_notes[2] = {
     [0] = "world units",
@@ -359,17 +365,22 @@ static const isk_key keys[] = {
      .dflt = "point", .live = S_S | S_SUB, .meaning = "where new particles appear around position"},
     {EMITTER("shape_a"), .type = ISK_KEY_NUMBER, EM(born.shape_a), .applies = S_S | S_SUB, COORD, .dflt = "0",
      .live = S_S | S_SUB,
-     .meaning = "radius (disc, circle); inner radius (ring); x offset (segment); half-width (rect); semi-axis "
-                "(ellipse)"},
+     .meaning = "radius (disc, circle); inner radius (ring); x offset (segment); half-width (rect, rect_border); "
+                "semi-axis (ellipse, ellipse_border); standard deviation along x (gaussian)"},
     {EMITTER("shape_b"), .type = ISK_KEY_NUMBER, EM(born.shape_b), .applies = S_S | S_SUB, COORD, .dflt = "0",
      .live = S_S | S_SUB,
-     .meaning = "outer radius (ring); y offset (segment); half-height (rect); semi-axis (ellipse)"},
+     .meaning = "outer radius (ring); y offset (segment); half-height (rect, rect_border); semi-axis (ellipse, "
+                "ellipse_border); standard deviation along y (gaussian)"},
     {EMITTER("shape_angle"), .type = ISK_KEY_ANGLE, EM(born.shape_angle), .applies = S_S | S_SUB, IN(-3600, 3600),
      .dflt = "0", .live = S_S | S_SUB, .meaning = "rotation of the shape"},
     {EMITTER("shape_faithful"), .type = ISK_KEY_BOOL, EM(born.shape_faithful), .applies = S_S | S_SUB, .dflt = "false",
      .live = S_S | S_SUB, .meaning = "ellipse: the particle-engine thesis's (non-uniform) sampler"},
     {EMITTER("launch"), .type = ISK_KEY_ENUM, EM(launch.kind), .applies = S_S | S_SUB, NAMES(isk_velgen_names),
      .dflt = "constant", .live = S_S | S_SUB, .meaning = "how initial velocities are drawn"},
+    {EMITTER("launch_outward"), .type = ISK_KEY_BOOL, EM(launch.outward), .applies = S_S | S_SUB, .dflt = "false",
+     .live = S_S | S_SUB,
+     .meaning = "turn each launch velocity by the direction from the shape's centre to the birth place, so angle 0 "
+                "points outward (not turned exactly on the centre)"},
     {EMITTER("angle"), .type = ISK_KEY_ANGLE, EM(launch.angle), .applies = S_S | S_SUB, IN(-3600, 3600), .dflt = "0",
      .live = S_S | S_SUB,
      .meaning = "direction of direction/cone launches"},
@@ -460,6 +471,9 @@ static const isk_key keys[] = {
     {EMITTER("order"), .type = ISK_KEY_WHOLE, EM(look.order), IN(-1000000, 1000000), .dflt = "0",
      .dflt_doc = "its definition index", .live = ALL,
      .meaning = "draw order (lower first; ties by definition order)"},
+    {EMITTER("draw_order"), .type = ISK_KEY_ENUM, EM(look.draw_order), NAMES(isk_draw_order_names),
+     NOTES(draw_order_notes), .dflt = "newest", .live = ALL,
+     .meaning = "which of the emitter's own particles are on top (its trails keep the store's order)"},
 
     /* [emitter NAME] motion (src/sim/stage_field.c, src/scene/effect_stream.c) */
     {EMITTER("radial_accel"), .type = ISK_KEY_NUMBER, EM(motion.radial_accel), STRENGTH, .dflt = "0", .live = ALL,
@@ -468,6 +482,15 @@ static const isk_key keys[] = {
     {EMITTER("tangential_accel"), .type = ISK_KEY_NUMBER, EM(motion.tangential_accel), STRENGTH, .dflt = "0",
      .live = ALL,
      .meaning = "units/s^2 perpendicular to the radial direction, counter-clockwise for positive (orbits)"},
+    {EMITTER("radial_accel_range"), .type = ISK_KEY_NUMBER, EM(motion.radial_accel_range), IN(0, ISK_STRENGTH_MAX),
+     .dflt = "0", .live = ALL, .meaning = "radial = radial_accel + U*radial_accel_range, each particle its own"},
+    {EMITTER("tangential_accel_range"), .type = ISK_KEY_NUMBER, EM(motion.tangential_accel_range),
+     IN(0, ISK_STRENGTH_MAX), .dflt = "0", .live = ALL,
+     .meaning = "tangential = tangential_accel + U*tangential_accel_range, each particle its own"},
+    {EMITTER("wind_range"), .type = ISK_KEY_VECTOR, EM(motion.wind_range), STRENGTH, .dflt = "0, 0", .live = ALL,
+     .meaning = "each particle's own constant acceleration (U1*x, U2*y), units/s^2, on top of its forces"},
+    {EMITTER("slowing_range"), .type = ISK_KEY_NUMBER, EM(motion.slowing_range), GE(0), .dflt = "0", .live = ALL,
+     .meaning = "slowing = slowing + U*slowing_range, each particle its own (not with slow_faithful)"},
     {EMITTER("emitter_velocity"), .type = ISK_KEY_VECTOR, EM(born.emitter_velocity), .applies = S_S, SPEED,
      .dflt = "0, 0", .live = S_S,
      .meaning = "the emitter moves: position(t) = position + v*t, births placed on the path at their exact times"},
@@ -491,6 +514,10 @@ static const isk_key keys[] = {
      .what = "degrees per second", .meaning = "angular speed, degrees per second (counter-clockwise)"},
     {EMITTER("spin_range"), .type = ISK_KEY_ANGLE, EM(look.spin_range), IN(0, ISK_SPIN_MAX), .dflt = "0", .live = ALL,
      .what = "degrees per second", .meaning = "angular speed = spin + U*spin_range"},
+    {EMITTER("spin_end"), .type = ISK_KEY_ANGLE, EM(look.spin_end), IN(-ISK_SPIN_MAX, ISK_SPIN_MAX),
+     .words = spin_end_words, .dflt = "none", .live = ALL, .what = "degrees per second",
+     .meaning = "the angular speed changes linearly over the life by spin_end - spin, ending at spin_end (plus "
+                "its U*spin_range); none: it stays"},
     {EMITTER("align"), .type = ISK_KEY_ENUM, EM(look.align), NAMES(isk_align_names), NOTES(align_notes), .dflt = "none",
      .live = ALL, .meaning = "how a particle is turned"},
     {EMITTER("size_range"), .type = ISK_KEY_NUMBER, EM(look.size_range), IN(0, 1e6), .dflt = "0", .live = ALL,
@@ -506,6 +533,14 @@ static const isk_key keys[] = {
      .meaning = "the texture is a sprite sheet of cols x rows frames, played over the life"},
     {EMITTER("texture_fps"), .type = ISK_KEY_NUMBER, EM(look.texture_fps), IN(0, 1e6), .dflt = "0", .live = ALL,
      .meaning = "frames per second of age, wrapping (0: once over the life)"},
+    {EMITTER("flipbook_random_start"), .type = ISK_KEY_BOOL, EM(look.flipbook_random_start), .dflt = "false",
+     .live = ALL,
+     .meaning = "each particle's flipbook starts at a random frame and plays on from it, wrapping (the particles "
+                "already there start at frame 0)"},
+    {EMITTER("texture_origin"), .type = ISK_KEY_VECTOR, EM(look.texture_origin), IN(-16, 16), .what = "x, y",
+     .dflt = "0.5, 0.5", .live = ALL,
+     .meaning = "the point of the texture (fractions of a frame from its top-left corner) placed on the particle "
+                "and turned about (0.5, 0.5: its centre)"},
     /* [emitter NAME]: sub-emitters and trails */
     {EMITTER("on_death"), .type = ISK_KEY_REF, EM(events.on_death), .refers = ISK_SECTION_EMITTER, .dflt = "",
      .dflt_doc = "none", .live = ALL,

@@ -23,6 +23,7 @@ const char *const isk_view_kind_names[ISK_VIEWDEF_COUNT] = {"window", "camera"};
 const char *const isk_align_names[ISK_ALIGN_COUNT] = {"none", "velocity"};
 const char *const isk_probe_kind_names[ISK_PROBE_KIND_COUNT] = {"gate", "region", "histogram", "totals"};
 const char *const isk_probe_of_names[ISK_PROBE_OF_COUNT] = {"speed", "angle", "age"};
+const char *const isk_draw_order_names[ISK_DRAW_ORDER_COUNT] = {"newest", "oldest", "random"};
 
 #define PRESET_NAME(name) #name,
 const char *const isk__fx_preset_names[FX_PRESET_COUNT] = {FX_PRESETS(PRESET_NAME)};

@@ -3,6 +3,10 @@
  * (internal): the emitter-centred radial and tangential accelerations and
  * turbulence, the curl of a seeded gradient noise.
  *
+ * With `own` set, each particle adds its own columns (radial_extra,
+ * tangential_extra, and a constant acceleration wind_x, wind_y: the
+ * per-particle ranges) where the store has them.
+ *
  * The owner (an effect's group) fills an isk_field once per compile, keeps
  * its clock (the simulated time and the emitter's position at the start of
  * the step) up to date before every run, and puts isk__stage_field in the
@@ -34,6 +38,8 @@ typedef struct isk_field_turb {
 
 typedef struct isk_field {
     double radial, tangential; /* units/s^2 away from (cx, cy), and counter-clockwise around it */
+    int own;                   /* the particles' own parts (radial_extra, tangential_extra, wind_x/y
+                                  of iskra/particles.h) are added where their columns exist */
     int nturb;
     isk_field_turb turb[ISK_FIELD_MAX_TURB];
     /* the clock: the time and the emitter's position at the start of the step */

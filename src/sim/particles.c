@@ -50,6 +50,11 @@ static const column columns[] = {
     /* ---- sub-emitters and trails ---- */
     COL(hit, unsigned char, ISK_PARTICLES_HIT), {offsetof(isk_particles, trail), 0, ISK_PARTICLES_TRAIL},
     /* ---- end of sub-emitters and trails ---- */
+    COL(frame0, uint16_t, ISK_PARTICLES_FRAME),
+    /* per-particle ranges of the motion */
+    COL(radial_extra, double, ISK_PARTICLES_RADIAL), COL(tangential_extra, double, ISK_PARTICLES_TANGENTIAL),
+    COL(wind_x, double, ISK_PARTICLES_WIND),         COL(wind_y, double, ISK_PARTICLES_WIND),
+    COL(slowing_extra, double, ISK_PARTICLES_SLOWING),
 };
 #undef COL
 enum { NCOLUMNS = sizeof columns / sizeof columns[0], AGE_COLUMN = 5, LIFE_COLUMN = 6 };
@@ -272,6 +277,18 @@ size_t isk__store_push(isk_particles *p, double x, double y, double vx, double v
     }
     if (p->hit)
         p->hit[i] = 0;
+    if (p->frame0)
+        p->frame0[i] = 0;
+    if (p->radial_extra)
+        p->radial_extra[i] = 0.0;
+    if (p->tangential_extra)
+        p->tangential_extra[i] = 0.0;
+    if (p->wind_x) {
+        p->wind_x[i] = 0.0;
+        p->wind_y[i] = 0.0;
+    }
+    if (p->slowing_extra)
+        p->slowing_extra[i] = 0.0;
     if (p->trail) {
         double *t = p->trail + 2 * (size_t)p->trail_len * i;
         for (int k = 0; k < p->trail_len; k++) {

@@ -8,8 +8,8 @@ static const double TWO_PI = 6.283185307179586;
 
 /* ---- constructors --------------------------------------------------------- */
 
-const char *const isk_shape_names[ISK_SHAPE_COUNT] = {"point",   "disc", "circle", "ring",
-                                                       "segment", "rect", "ellipse"};
+const char *const isk_shape_names[ISK_SHAPE_COUNT] = {
+    "point", "disc", "circle", "ring", "segment", "rect", "ellipse", "gaussian", "rect_border", "ellipse_border"};
 const char *const isk_velgen_names[ISK_VELGEN_COUNT] = {"constant", "disc", "direction", "cone"};
 
 static isk_shape shape(isk_shape_kind k, double cx, double cy, double a, double b)
@@ -38,6 +38,25 @@ isk_shape isk_shape_ellipse(double cx, double cy, double a, double b, isk_ellips
     isk_shape s = shape(ISK_SHAPE_ELLIPSE, cx, cy, a, b);
     s.ellipse_mode = mode;
     return s;
+}
+
+isk_shape isk_shape_gaussian(double cx, double cy, double sigma_x, double sigma_y)
+{
+    return shape(ISK_SHAPE_GAUSSIAN, cx, cy, sigma_x, sigma_y);
+}
+isk_shape isk_shape_rect_border(double cx, double cy, double half_w, double half_h)
+{
+    return shape(ISK_SHAPE_RECT_BORDER, cx, cy, half_w, half_h);
+}
+isk_shape isk_shape_ellipse_border(double cx, double cy, double a, double b)
+{
+    return shape(ISK_SHAPE_ELLIPSE_BORDER, cx, cy, a, b);
+}
+
+int isk_shape_uses_b(isk_shape_kind k)
+{
+    return k == ISK_SHAPE_RING || k == ISK_SHAPE_SEGMENT || k == ISK_SHAPE_RECT || k == ISK_SHAPE_ELLIPSE ||
+           k == ISK_SHAPE_GAUSSIAN || k == ISK_SHAPE_RECT_BORDER || k == ISK_SHAPE_ELLIPSE_BORDER;
 }
 
 static isk_velgen velgen(isk_velgen_kind k)
@@ -87,8 +106,7 @@ isk_status isk_shape_check(const isk_shape *s)
     if (!isfinite(s->cx) || !isfinite(s->cy) || !isfinite(s->angle))
         return ISK_ERR_NAN;
     int uses_a = s->kind != ISK_SHAPE_POINT;
-    int uses_b = s->kind == ISK_SHAPE_RING || s->kind == ISK_SHAPE_SEGMENT || s->kind == ISK_SHAPE_RECT ||
-                 s->kind == ISK_SHAPE_ELLIPSE;
+    int uses_b = isk_shape_uses_b(s->kind);
     if ((uses_a && !isfinite(s->a)) || (uses_b && !isfinite(s->b)))
         return ISK_ERR_NAN;
     switch (s->kind) {
@@ -101,6 +119,9 @@ isk_status isk_shape_check(const isk_shape *s)
     case ISK_SHAPE_RING:
         return (s->a >= 0.0 && s->a <= s->b) ? ISK_OK : ISK_ERR_RANGE;
     case ISK_SHAPE_RECT:
+    case ISK_SHAPE_GAUSSIAN:
+    case ISK_SHAPE_RECT_BORDER:
+    case ISK_SHAPE_ELLIPSE_BORDER:
         return (s->a >= 0.0 && s->b >= 0.0) ? ISK_OK : ISK_ERR_RANGE;
     case ISK_SHAPE_ELLIPSE:
         if (s->ellipse_mode != ISK_ELLIPSE_UNIFORM && s->ellipse_mode != ISK_ELLIPSE_THESIS)
@@ -146,6 +167,30 @@ static inline void unit_disc(isk_rng *r, double *x, double *y)
     double phi = TWO_PI * isk_rng_uniform(r);
     *x = rho * cos(phi);
     *y = rho * sin(phi);
+}
+
+/* The point at fraction u of the way round the outline of the rectangle of
+ * half sizes a, b, counter-clockwise from its bottom-right corner: the
+ * right side up, the top leftwards, the left side down, the bottom
+ * rightwards.  Each side is clamped to its own length, so rounding never
+ * leaves the outline. */
+static inline void rect_border(double a, double b, double u, double *lx, double *ly)
+{
+    double d = u * 4.0 * (a + b); /* the distance walked */
+    if (d < 2.0 * b) {
+        *lx = a;
+        *ly = -b + d;
+    } else if ((d -= 2.0 * b) < 2.0 * a) {
+        *lx = a - d;
+        *ly = b;
+    } else if ((d -= 2.0 * a) < 2.0 * b) {
+        *lx = -a;
+        *ly = b - d;
+    } else {
+        d -= 2.0 * b;
+        *lx = -a + (d < 2.0 * a ? d : 2.0 * a);
+        *ly = -b;
+    }
 }
 
 /* The local offset of one sample, before rotation.  `kind` is passed apart
@@ -200,6 +245,22 @@ static inline void local_sample(const isk_shape *s, isk_shape_kind kind, isk_rng
             *ly *= s->b;
         }
         break;
+    case ISK_SHAPE_GAUSSIAN: { /* Box-Muller; 1 - u1 is in (0, 1], so the log is finite */
+        double rho = sqrt(-2.0 * log(1.0 - isk_rng_uniform(r)));
+        double phi = TWO_PI * isk_rng_uniform(r);
+        *lx = s->a * rho * cos(phi);
+        *ly = s->b * rho * sin(phi);
+        break;
+    }
+    case ISK_SHAPE_RECT_BORDER:
+        rect_border(s->a, s->b, isk_rng_uniform(r), lx, ly);
+        break;
+    case ISK_SHAPE_ELLIPSE_BORDER: {
+        double phi = TWO_PI * isk_rng_uniform(r);
+        *lx = s->a * cos(phi);
+        *ly = s->b * sin(phi);
+        break;
+    }
     default: /* checked by the callers */
         *lx = *ly = 0.0;
         break;
@@ -266,6 +327,9 @@ isk_status isk_shape_sample_n(const isk_shape *s, isk_rng *r, size_t n, double *
     case ISK_SHAPE_SEGMENT: fill(s, ISK_SHAPE_SEGMENT, r, n, x, y, c, sn); break;
     case ISK_SHAPE_RECT: fill(s, ISK_SHAPE_RECT, r, n, x, y, c, sn); break;
     case ISK_SHAPE_ELLIPSE: fill(s, ISK_SHAPE_ELLIPSE, r, n, x, y, c, sn); break;
+    case ISK_SHAPE_GAUSSIAN: fill(s, ISK_SHAPE_GAUSSIAN, r, n, x, y, c, sn); break;
+    case ISK_SHAPE_RECT_BORDER: fill(s, ISK_SHAPE_RECT_BORDER, r, n, x, y, c, sn); break;
+    case ISK_SHAPE_ELLIPSE_BORDER: fill(s, ISK_SHAPE_ELLIPSE_BORDER, r, n, x, y, c, sn); break;
     default: break; /* checked above */
     }
     return ISK_OK;

@@ -164,7 +164,8 @@ struct isk_stage {
             int redo_on;                                     /* 0: the fitted flight does (iskra/contacts.h) */
         } deflect;
         struct { const struct isk_field *f; } field;         /* isk__stage_field (src/sim/field.h) */
-        struct { double spin, spin_range; } spin;           /* isk__stage_spin: for describe only (rad/s) */
+        struct { double spin, spin_range, change; } spin;   /* isk__stage_spin: for describe only (rad/s);
+                                                               isk__stage_spin_life: change over the life */
     } u;
 };
 
@@ -238,6 +239,7 @@ extern const isk_stage_kind isk__stage_motion;
  * that act in them now (so its blocks need not work them out). */
 void isk__stage_motion_init(isk_stage *st, isk_integrator method, isk_forces *f);     /* forces + an integrator (isk_integrate_block) */
 extern const isk_stage_kind isk__stage_slow;       /* v *= max(0, 1 - slowing*h) */
+extern const isk_stage_kind isk__stage_slow_each;  /* the same with slowing + the particle's slowing_extra */
 extern const isk_stage_kind isk__stage_oscillate;  /* the fire thesis's horizontal sway (ISK_PARTICLES_OSC) */
 extern const isk_stage_kind isk__stage_walls;      /* isk_bounds_apply_step (after remember) */
 extern const isk_stage_kind isk__stage_deflect;    /* deflector segments, and the walls with them or
@@ -250,6 +252,7 @@ extern const isk_stage_kind isk__stage_deflect;    /* deflector segments, and th
  * first order either way). */
 int isk__contacts_redo(const isk_forces *f, isk_integrator method);
 extern const isk_stage_kind isk__stage_spin;       /* angle += spin*h, wrapped (ISK_PARTICLES_ANGLE) */
+extern const isk_stage_kind isk__stage_spin_life;  /* the same with spin + change*t at normalised age t */
 extern const isk_stage_kind isk__stage_age;        /* age += h */
 
 #endif

@@ -45,14 +45,17 @@ static void from_centre(const isk_field *f, double x, double y, double vx, doubl
         direction(x - f->cx, y - f->cy, ux, uy);
 }
 
-static void accel(const isk_field *f, double x, double y, double vx, double vy, double *ax, double *ay)
+/* The acceleration at (x, y) with radial and tangential parts of these
+ * sizes (the field's, or a particle's own). */
+static void accel_with(const isk_field *f, double radial, double tangential, double x, double y, double vx,
+                       double vy, double *ax, double *ay)
 {
     double a = 0.0, b = 0.0;
-    if (f->radial != 0.0 || f->tangential != 0.0) {
+    if (radial != 0.0 || tangential != 0.0) {
         double ux, uy;
         from_centre(f, x, y, vx, vy, &ux, &uy);
-        a = f->radial * ux - f->tangential * uy;
-        b = f->radial * uy + f->tangential * ux;
+        a = radial * ux - tangential * uy;
+        b = radial * uy + tangential * ux;
     }
     for (int k = 0; k < f->nturb; k++) {
         const isk_field_turb *t = &f->turb[k];
@@ -66,14 +69,44 @@ static void accel(const isk_field *f, double x, double y, double vx, double vy, 
     *ay = b;
 }
 
+static void accel(const isk_field *f, double x, double y, double vx, double vy, double *ax, double *ay)
+{
+    accel_with(f, f->radial, f->tangential, x, y, vx, vy, ax, ay);
+}
+
 void isk__field_accel(const isk_field *f, double x, double y, double vx, double vy, double *ax, double *ay)
 {
     accel(f, x, y, vx, vy, ax, ay);
 }
 
+/* The per-particle ranges: each particle's own parts added to the field's
+ * (a column that is not there adds nothing). */
+static void run_field_own(const isk_field *f, isk_block *b, double h)
+{
+    const isk_particles *p = b->p;
+    const double *rad = p->radial_extra ? p->radial_extra + b->first : NULL;
+    const double *tng = p->tangential_extra ? p->tangential_extra + b->first : NULL;
+    const double *wx = p->wind_x ? p->wind_x + b->first : NULL, *wy = p->wind_y ? p->wind_y + b->first : NULL;
+    for (size_t i = 0; i < b->n; i++) {
+        double ax, ay;
+        accel_with(f, f->radial + (rad ? rad[i] : 0.0), f->tangential + (tng ? tng[i] : 0.0), b->x[i], b->y[i],
+                   b->vx[i], b->vy[i], &ax, &ay);
+        if (wx) {
+            ax += wx[i];
+            ay += wy[i];
+        }
+        b->vx[i] += ax * h;
+        b->vy[i] += ay * h;
+    }
+}
+
 static void run_field(const isk_stage *st, isk_block *b, double h)
 {
     const isk_field *f = st->u.field.f;
+    if (f->own) {
+        run_field_own(f, b, h);
+        return;
+    }
     for (size_t i = 0; i < b->n; i++) {
         double ax, ay;
         accel(f, b->x[i], b->y[i], b->vx[i], b->vy[i], &ax, &ay);
@@ -90,6 +123,8 @@ static void describe_field(const isk_stage *st, FILE *out)
         fprintf(out, "%sradial %g", any++ ? ", " : "", f->radial);
     if (f->tangential != 0)
         fprintf(out, "%stangential %g (counter-clockwise)", any++ ? ", " : "", f->tangential);
+    if (f->own)
+        fprintf(out, "%seach particle's own radial, tangential and wind parts (the ranges)", any++ ? ", " : "");
     for (int k = 0; k < f->nturb; k++)
         fprintf(out, "%sturbulence strength %g scale %g speed %g", any++ ? ", " : "", f->turb[k].strength,
                 1.0 / f->turb[k].inv_scale, f->turb[k].speed);

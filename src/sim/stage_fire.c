@@ -26,6 +26,26 @@ static void run_slow(const isk_stage *st, isk_block *b, double h)
     }
 }
 
+/* slowing_range: each particle's own slowing, slowing + slowing_extra. */
+static void run_slow_each(const isk_stage *st, isk_block *b, double h)
+{
+    const double *restrict extra = b->p->slowing_extra + b->first;
+    double *restrict vx = b->vx, *restrict vy = b->vy;
+    for (size_t i = 0; i < b->n; i++) {
+        const double f = slow_factor(st->u.slow.slowing + extra[i], h);
+        vx[i] = isk_k_flush(vx[i] * f);
+        vy[i] = isk_k_flush(vy[i] * f);
+    }
+}
+
+static void describe_slow_each(const isk_stage *st, FILE *out)
+{
+    fprintf(out, "v *= max(0, 1 - (%g + its own U*range)*dt)", st->u.slow.slowing);
+}
+
+const isk_stage_kind isk__stage_slow_each = {
+    .name = "slow", .run = run_slow_each, .describe = describe_slow_each, .rest = isk__rest_skipped};
+
 static void describe_slow(const isk_stage *st, FILE *out)
 {
     fprintf(out, "v *= max(0, 1 - %g*dt)", st->u.slow.slowing);
