@@ -418,3 +418,53 @@ Test(snapshot, probes_come_back_with_their_counts)
     isk_effect_destroy(a);
     isk_effect_destroy(b);
 }
+
+/* The everyday settings' per-particle values (their columns), random
+ * streams and draw orders come back too. */
+static const char everyday[] =
+    "[scene]\nwidth = 200\nheight = 120\nseed = 3\n[view]\nxmin = 0\nxmax = 25\nymin = 0\nymax = 10\n"
+    "[force gravity]\ng = 9.81\n[force wind]\nacceleration = -3, 0\n"
+    "[emitter swirl]\nsource = stream\nposition = 5, 5\nrate = 120\nlife = 2\nshape = gaussian\nshape_a = 1\n"
+    "shape_b = 0.5\nlaunch = direction\nangle = 90\nspeed_min = 2\nspeed_max = 2\nlaunch_outward = true\n"
+    "radial_accel = -2\nradial_accel_range = 1\ntangential_accel_range = 3\nspin = 90\nspin_end = -90\n"
+    "draw = sprite\nsize = 0.6\ndraw_order = random\n"
+    "[emitter fountain]\nsource = stream\nposition = 13, 1\nrate = 150\nlife = 1.5\nshape = rect_border\n"
+    "shape_a = 1\nshape_b = 0.5\nlaunch = cone\nangle = 90\nspread = 10\nspeed_min = 9\nspeed_max = 10\n"
+    "forces = gravity, wind\nwind_range = 6, 0\ndraw_order = oldest\ndraw = disc\nsize = 0.3\n"
+    "[emitter jet]\nsource = stream\nposition = 17.5, 5\nrate = 150\nlife = 3\nshape = ellipse_border\n"
+    "shape_a = 1\nshape_b = 0.5\nlaunch = cone\nangle = 0\nspread = 30\nspeed_min = 6\nspeed_max = 6\n"
+    "slowing = 1\nslowing_range = 3\n";
+
+Test(snapshot, everyday_settings_come_back)
+{
+    isk_effect *a = scene_text_open(everyday, 1), *b = scene_text_open(everyday, 2);
+    isk_error err = {0};
+    for (int f = 0; f < 40; f++)
+        cr_assert_eq(isk_effect_step(a), ISK_OK);
+    isk_snapshot *snap, *back;
+    cr_assert_eq(isk_effect_snapshot(a, &snap, &err), ISK_OK);
+    unsigned char *bytes;
+    size_t n;
+    cr_assert_eq(isk_snapshot_encode(snap, &bytes, &n, &err), ISK_OK, "%s", err.message);
+    cr_assert_eq(isk_snapshot_decode(&back, bytes, n, "everyday", &err), ISK_OK, "%s", err.message);
+    for (int f = 0; f < 40; f++)
+        cr_assert_eq(isk_effect_step(a), ISK_OK);
+    outcome oa;
+    look(a, &oa);
+    const isk_snapshot *from[2] = {snap, back};
+    for (int k = 0; k < 2; k++) {
+        cr_assert_eq(isk_effect_restore(b, from[k], &err), ISK_OK, "%s", err.message);
+        for (int f = 0; f < 40; f++)
+            cr_assert_eq(isk_effect_step(b), ISK_OK);
+        outcome ob;
+        look(b, &ob);
+        expect_same(&oa, &ob, k ? "everyday settings, from bytes" : "everyday settings, in memory");
+        outcome_free(&ob);
+    }
+    outcome_free(&oa);
+    free(bytes);
+    isk_snapshot_free(snap);
+    isk_snapshot_free(back);
+    isk_effect_destroy(a);
+    isk_effect_destroy(b);
+}
