@@ -48,7 +48,7 @@ typedef struct pass {
 typedef struct particle {
     size_t i;
     double sx, sy, ex, ey; /* the current path S -> E: E is where the step ends so far */
-    double ux, uy;         /* the velocity at E (before the flight's say) */
+    double ux, uy;         /* the velocity at E (once it bounced: see finish_particle) */
     isk__flight f;         /* the flight from S, once fitted */
     int fitted;            /* f has been fitted to the step */
     int linear;            /* no usable flight: straight paths (the segments' path rule, the walls' end rule) */
@@ -133,18 +133,18 @@ enum next {
 };
 
 /* With the walls, the flight is needed once the path ends outside the box
- * or crosses a segment.  Fitted here the first time; a flight that starts
- * pressed into a wall rests on it at once.  Returns NEXT_AGAIN when the
- * path changed (no usable flight, or it rested), else NEXT_NONE. */
-static enum next fit_for_walls(const pass *ps, particle *p, int k)
+ * or crosses a segment (segment k, -1: none).  Fitted here the first time;
+ * a flight that starts pressed into a wall rests on it at once.  Returns 1
+ * when the path changed (no usable flight, or it rested): look again. */
+static int fit_for_walls(const pass *ps, particle *p, int k)
 {
     if (p->fitted || (k < 0 && isk__walls_inside(&ps->wb, p->ex, p->ey)))
-        return NEXT_NONE;
+        return 0;
     p->fitted = 1;
     if (!fit_flight(&p->f, ps->mo, p->i, p->sx, p->sy, p->ex, p->ey, p->ux, p->uy) ||
         !(isfinite(p->f.delx) && isfinite(p->f.dely))) {
         p->linear = 1; /* no usable motion: the segments' path rule, the walls' end rule */
-        return NEXT_AGAIN;
+        return 1;
     }
     if (isk__walls_rest_at_start(&p->f, &ps->wb, ps->mo->h, p->skip)) { /* the flight changed: its new end */
         double wvx, wvy;
@@ -153,9 +153,9 @@ static enum next fit_for_walls(const pass *ps, particle *p, int k)
         p->sy = p->f.sy;
         p->bounced = 1;
         p->redo_on = 0;
-        return NEXT_AGAIN;
+        return 1;
     }
-    return NEXT_NONE;
+    return 0;
 }
 
 /* The walls and the segments in the order the path meets them. */
@@ -167,7 +167,7 @@ static enum next find_next_contact(const pass *ps, particle *p, contact *ct)
     ct->side = 0;
     ct->tw = INFINITY;
     if (ps->walls && !p->linear) {
-        if (fit_for_walls(ps, p, ct->k) == NEXT_AGAIN)
+        if (fit_for_walls(ps, p, ct->k))
             return NEXT_AGAIN;
         ct->tw = p->fitted ? isk__walls_first(&p->f, &ps->wb, p->skip, &ct->axis, &ct->side) : INFINITY;
         if (ct->axis >= 0 && ct->k >= 0) {
