@@ -98,8 +98,8 @@ int isk__walls_rest_at_start(isk__flight *f, const isk__wall_box *w, double h, i
  * one), and the flight starts afresh from there; pressed back into the
  * wall with all further hops fitting in the rest of the step, it rests on
  * it (returns 1). */
-int isk__walls_bounce(isk__flight *f, const isk__wall_box *w, int a, int side, double tau, double hx, double hy, double ux,
-                       double uy, int skip[2])
+int isk__walls_bounce(isk__flight *f, const isk__wall_box *w, int a, int side, double tau, double hx, double hy,
+                      double ux, double uy, int skip[2])
 {
     const double W = side < 0 ? w->lo[a] : w->hi[a], sigma = side < 0 ? 1.0 : -1.0; /* sigma: into the box */
     double *un = a ? &uy : &ux;
@@ -115,7 +115,8 @@ int isk__walls_bounce(isk__flight *f, const isk__wall_box *w, int a, int side, d
     f->ux = ux;
     f->uy = uy;
     const double U = *un, acc = a ? f->ay : f->ax, c = w->c;
-    if (sigma * acc < 0.0 && (!(sigma * U > 0.0) || (c < 1.0 && 2.0 * sigma * U <= -sigma * acc * (1.0 - c) * f->s * (1.0 + 1e-9)))) {
+    if (sigma * acc < 0.0 &&
+        (!(sigma * U > 0.0) || (c < 1.0 && 2.0 * sigma * U <= -sigma * acc * (1.0 - c) * f->s * (1.0 + 1e-9)))) {
         rest_on_wall(f, a, W, skip);
         return 1;
     }
