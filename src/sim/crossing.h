@@ -1,6 +1,7 @@
 /* SPDX-License-Identifier: MIT */
 /* src/sim/crossing.h — counting paths that cross a segment (internal): the
- * deflectors' exact crossing test (deflector.c) put to the probes' gates.
+ * deflectors' exact crossing test (src/sim/segment_exact.h) put to the
+ * probes' gates, in crossing.c.
  *
  * Particle i moved from prev[stride*i], prev[stride*i + 1] to x[i], y[i];
  * each path that crosses the gate (x0, y0) -> (x1, y1) adds one to
