@@ -15,6 +15,7 @@
 #include "iskra/problems.h"
 #include "refimg.h"
 #include "tool_cli.h"
+#include "csv_table.h"
 
 /* Criterion runs tests in parallel: each test has its own directory. */
 #define OUT "out/test_bench_cli"
@@ -58,75 +59,6 @@ Test(bench_cli, help)
 
 /* ---- the quick run's files -------------------------------------------------- */
 
-enum { MAX_ROWS = 4096, MAX_COLS = 16 };
-
-typedef struct csv {
-    char *text;
-    int ncols, nrows;
-    char *head[MAX_COLS];
-    char *cell[MAX_ROWS][MAX_COLS];
-} csv;
-
-/* Splits the file in place into header and rows; every row must have the
- * header's number of fields. */
-static void csv_read(csv *c, const char *path)
-{
-    memset(c, 0, sizeof *c);
-    c->text = cli_slurp(path);
-    char *line = c->text, *next;
-    int row = -1;
-    for (; *line; line = next) {
-        next = strchr(line, '\n');
-        cr_assert_not_null(next, "%s: the last line is not terminated", path);
-        *next++ = 0;
-        char **dst = row < 0 ? c->head : c->cell[row];
-        int n = 0;
-        for (char *f = line;; n++) {
-            cr_assert_lt(n, MAX_COLS, "%s: too many fields", path);
-            dst[n] = f;
-            char *comma = strchr(f, ',');
-            if (!comma) {
-                n++;
-                break;
-            }
-            *comma = 0;
-            f = comma + 1;
-        }
-        if (row < 0)
-            c->ncols = n;
-        else
-            cr_assert_eq(n, c->ncols, "%s row %d: %d fields, the header has %d", path, row + 1, n, c->ncols);
-        row++;
-        cr_assert_lt(row, MAX_ROWS);
-    }
-    c->nrows = row;
-}
-
-static int col(const csv *c, const char *name)
-{
-    for (int i = 0; i < c->ncols; i++)
-        if (!strcmp(c->head[i], name))
-            return i;
-    cr_assert_fail("no column %s", name);
-    return -1;
-}
-
-static double num(const char *s)
-{
-    char *end;
-    double v = strtod(s, &end);
-    cr_assert(end != s && *end == 0, "not a number: '%s'", s);
-    return v;
-}
-
-static int integrator_index(const char *name)
-{
-    for (int m = 0; m < ISK_INTEGRATOR_COUNT; m++)
-        if (!strcmp(name, isk_integrator_name((isk_integrator)m)))
-            return m;
-    cr_assert_fail("unknown integrator '%s'", name);
-    return -1;
-}
 
 static void check_csv(isk_problem_kind kind, const char *errors, int nsub)
 {
@@ -144,38 +76,38 @@ static void check_csv(isk_problem_kind kind, const char *errors, int nsub)
     cr_assert_str_eq(joined, header);
 
     const double T = isk_problem_defaults(kind).T;
-    const int ci = col(c, "integrator"), cs = col(c, "substeps"), cdt = col(c, "dt"), cn = col(c, "steps"),
-              cdv = col(c, "diverged"), cps = col(c, "ns_per_particle_step"), cpr = col(c, "ns_per_particle_run");
+    const int ci = csv_col(c, "integrator"), cs = csv_col(c, "substeps"), cdt = csv_col(c, "dt"), cn = csv_col(c, "steps"),
+              cdv = csv_col(c, "diverged"), cps = csv_col(c, "ns_per_particle_step"), cpr = csv_col(c, "ns_per_particle_run");
     /* steps seen per (integrator, substeps): every group sweeps the same steps */
     long seen[ISK_INTEGRATOR_COUNT][3][64];
     int nseen[ISK_INTEGRATOR_COUNT][3] = {{0}};
     for (int r = 0; r < c->nrows; r++) {
         char **row = c->cell[r];
         cr_assert_str_eq(row[0], isk_problem_name(kind));
-        int m = integrator_index(row[ci]);
-        int sub = (int)num(row[cs]);
+        int m = csv_integrator(row[ci]);
+        int sub = (int)csv_num(row[cs]);
         cr_assert(sub == 1 || (nsub == 3 && (sub == 2 || sub == 4)), "substeps %d", sub);
         int j = sub == 1 ? 0 : sub == 2 ? 1 : 2;
-        double dt = num(row[cdt]), steps = num(row[cn]);
+        double dt = csv_num(row[cdt]), steps = csv_num(row[cn]);
         cr_assert(steps >= 1 && steps == floor(steps));
         cr_assert(fabs(dt * steps - T) < 1e-12 * T, "%s row %d: dt %g x %g steps != T %g", path, r + 1, dt, steps, T);
         for (int k = 0; k < nseen[m][j]; k++)
             cr_assert_neq(seen[m][j][k], (long)steps, "%s row %d repeats a setting", path, r + 1);
         cr_assert_lt(nseen[m][j], 64);
         seen[m][j][nseen[m][j]++] = (long)steps;
-        int diverged = (int)num(row[cdv]);
+        int diverged = (int)csv_num(row[cdv]);
         cr_assert(diverged == 0 || diverged == 1);
         for (int e = 5; e < cdv; e++) {
-            double v = num(row[e]); /* strtod reads "inf" and "nan" too */
+            double v = csv_num(row[e]); /* strtod reads "inf" and "nan" too */
             if (!diverged)
                 cr_assert(isfinite(v) && v >= 0, "%s row %d: %s = %s", path, r + 1, c->head[e], row[e]);
         }
-        double ps = num(row[cps]), pr = num(row[cpr]);
+        double ps = csv_num(row[cps]), pr = csv_num(row[cpr]);
         cr_assert(isfinite(ps) && ps > 0 && isfinite(pr) && pr > 0, "%s row %d: timings %g %g", path, r + 1, ps, pr);
         /* the run's cost is the step's cost times the integrator steps (CSV rounding aside) */
         cr_assert(fabs(pr / (ps * steps * sub) - 1) < 0.01, "%s row %d", path, r + 1);
         if (kind == ISK_PROBLEM_PROJECTILE && m == ISK_INTEGRATE_EXACT_DRAG)
-            cr_assert_lt(num(row[col(c, "position_error")]), 1e-10, "exact drag is exact");
+            cr_assert_lt(csv_num(row[csv_col(c, "position_error")]), 1e-10, "exact drag is exact");
     }
     int per = nseen[0][0];
     cr_assert_geq(per, 6, "%s: %d step sizes", path, per);
@@ -231,11 +163,11 @@ Test(bench_cli, quick_long_run_shows_bounded_against_drifting, .timeout = 120)
     cr_assert_eq(cli_run(OUT "/longrun", "bench accuracy --quick --only longrun --out " OUT "/longrun/acc"), 0);
     csv *c = malloc(sizeof *c);
     csv_read(c, OUT "/longrun/acc/longrun.csv");
-    const int ci = col(c, "integrator"), cp = col(c, "periods"), ce = col(c, "max_relative_energy_error");
+    const int ci = csv_col(c, "integrator"), cp = csv_col(c, "periods"), ce = csv_col(c, "max_relative_energy_error");
     double first[ISK_INTEGRATOR_COUNT] = {0}, last[ISK_INTEGRATOR_COUNT] = {0};
     for (int r = 0; r < c->nrows; r++) {
-        int m = integrator_index(c->cell[r][ci]);
-        double p = num(c->cell[r][cp]), e = num(c->cell[r][ce]);
+        int m = csv_integrator(c->cell[r][ci]);
+        double p = csv_num(c->cell[r][cp]), e = csv_num(c->cell[r][ce]);
         if (p == 10)
             first[m] = e;
         if (p == 1000)
@@ -265,16 +197,16 @@ Test(bench_cli, quick_thesis_scene_study, .timeout = 300)
     csv *c = malloc(sizeof *c);
     csv_read(c, OUT "/thesis/acc/thesis_fig29.csv");
     cr_assert_eq(c->nrows, 5, "4 substep settings and the reference");
-    const int cf = col(c, "fraction_over_1px"), cs = col(c, "substeps");
+    const int cf = csv_col(c, "fraction_over_1px"), cs = csv_col(c, "substeps");
     for (int r = 0; r < 4; r++) {
-        double f = num(c->cell[r][cf]);
+        double f = csv_num(c->cell[r][cf]);
         cr_assert(f >= 0 && f <= 1, "row %d: %g", r, f);
     }
-    cr_assert_eq(num(c->cell[4][cs]), 32);
+    cr_assert_eq(csv_num(c->cell[4][cs]), 32);
     for (int k = 0; k < c->ncols; k++)
         if (strstr(c->head[k], "switch_off_frame"))
             for (int r = 0; r < c->nrows; r++) {
-                double v = num(c->cell[r][k]);
+                double v = csv_num(c->cell[r][k]);
                 cr_assert(v == -2 || v == -1 || (v >= 1 && v <= 121), "%s = %g", c->head[k], v);
             }
     free(c->text);
@@ -292,10 +224,10 @@ Test(bench_cli, quick_thesis_scene_study, .timeout = 300)
 /* One row of invariants_kepler.csv: the column `what` of (integrator, steps). */
 static double kepler_cell(const csv *c, const char *integrator, int steps, const char *what)
 {
-    const int ci = col(c, "integrator"), cn = col(c, "steps_per_period"), cw = col(c, what);
+    const int ci = csv_col(c, "integrator"), cn = csv_col(c, "steps_per_period"), cw = csv_col(c, what);
     for (int r = 0; r < c->nrows; r++)
-        if (!strcmp(c->cell[r][ci], integrator) && (int)num(c->cell[r][cn]) == steps)
-            return num(c->cell[r][cw]);
+        if (!strcmp(c->cell[r][ci], integrator) && (int)csv_num(c->cell[r][cn]) == steps)
+            return csv_num(c->cell[r][cw]);
     cr_assert_fail("invariants_kepler.csv: no row %s, %d", integrator, steps);
     return NAN;
 }
@@ -346,9 +278,9 @@ Test(bench_cli, quick_invariants_modified_energy_period_and_euler_invariant, .ti
 
     csv_read(c, OUT "/invariants/acc/invariants_euler.csv");
     cr_assert_eq(c->nrows, 3);
-    const int cs = col(c, "energy_swing"), ck = col(c, "invariant_swing");
+    const int cs = csv_col(c, "energy_swing"), ck = csv_col(c, "invariant_swing");
     for (int r = 0; r < 3; r++) {
-        double swing = num(c->cell[r][cs]), kept_ = num(c->cell[r][ck]);
+        double swing = csv_num(c->cell[r][cs]), kept_ = csv_num(c->cell[r][ck]);
         cr_expect(swing > 0.01, "%s %s: energy swing %.3e", c->cell[r][0], c->cell[r][1], swing);
         cr_expect(kept_ < 1e-13, "%s %s: invariant swing %.3e", c->cell[r][0], c->cell[r][1], kept_);
     }
@@ -375,17 +307,17 @@ Test(bench_cli, quick_budget_curves, .timeout = 120)
         char path[256];
         snprintf(path, sizeof path, OUT "/budget/acc/budget_%s.csv", names[p]);
         csv_read(c, path);
-        const int ci = col(c, "integrator"), cs = col(c, "substeps"), cf = col(c, "budget_fraction"),
-                  ct = col(c, "time"), ce = col(c, p == 2 ? "energy_error" : "position_error");
+        const int ci = csv_col(c, "integrator"), cs = csv_col(c, "substeps"), cf = csv_col(c, "budget_fraction"),
+                  ct = csv_col(c, "time"), ce = csv_col(c, p == 2 ? "energy_error" : "position_error");
         int rows[ISK_INTEGRATOR_COUNT] = {0};
         double last_t[ISK_INTEGRATOR_COUNT] = {0};
         for (int r = 0; r < c->nrows; r++) {
             cr_assert_str_eq(c->cell[r][0], names[p]);
-            int m = integrator_index(c->cell[r][ci]);
-            int sub = (int)num(c->cell[r][cs]);
-            double t = num(c->cell[r][ct]), e = num(c->cell[r][ce]);
+            int m = csv_integrator(c->cell[r][ci]);
+            int sub = (int)csv_num(c->cell[r][cs]);
+            double t = csv_num(c->cell[r][ct]), e = csv_num(c->cell[r][ce]);
             cr_assert(sub >= 1);
-            cr_assert(sub == 1 || num(c->cell[r][cf]) <= 1.0, "%s row %d: over the budget", path, r + 1);
+            cr_assert(sub == 1 || csv_num(c->cell[r][cf]) <= 1.0, "%s row %d: over the budget", path, r + 1);
             cr_assert_gt(t, last_t[m], "%s row %d: time goes forward", path, r + 1);
             last_t[m] = t;
             cr_assert(e >= 0, "%s row %d", path, r + 1);

@@ -17,81 +17,11 @@
 #include "iskra/stability.h"
 #include "iskra/system.h"
 #include "tool_cli.h"
+#include "csv_table.h"
 
 #define OUT "out/test_bench_scene"
 #define DATA "tests/data/accuracy/"
 
-enum { MAX_ROWS = 4096, MAX_COLS = 16 };
-
-typedef struct csv {
-    char *text;
-    int ncols, nrows;
-    char *head[MAX_COLS];
-    char *cell[MAX_ROWS][MAX_COLS];
-} csv;
-
-/* Splits the file in place; every row must have the header's fields. */
-static csv *csv_read(const char *path)
-{
-    csv *c = calloc(1, sizeof *c);
-    cr_assert_not_null(c);
-    c->text = cli_slurp(path);
-    int row = -1;
-    for (char *line = c->text, *next; *line; line = next) {
-        next = strchr(line, '\n');
-        cr_assert_not_null(next, "%s: the last line is not terminated", path);
-        *next++ = 0;
-        char **dst = row < 0 ? c->head : c->cell[row];
-        int n = 0;
-        for (char *f = line;; f = strchr(f, 0) + 1) {
-            cr_assert_lt(n, MAX_COLS, "%s: too many fields", path);
-            dst[n++] = f;
-            char *comma = strchr(f, ',');
-            if (!comma)
-                break;
-            *comma = 0;
-        }
-        if (row < 0)
-            c->ncols = n;
-        else
-            cr_assert_eq(n, c->ncols, "%s row %d: %d fields, the header has %d", path, row + 1, n, c->ncols);
-        cr_assert_lt(++row, MAX_ROWS);
-    }
-    c->nrows = row;
-    return c;
-}
-
-static void csv_free(csv *c)
-{
-    free(c->text);
-    free(c);
-}
-
-static int col(const csv *c, const char *name)
-{
-    for (int i = 0; i < c->ncols; i++)
-        if (!strcmp(c->head[i], name))
-            return i;
-    cr_assert_fail("no column %s", name);
-    return -1;
-}
-
-static double num(const char *s)
-{
-    char *end;
-    double v = strtod(s, &end);
-    cr_assert(end != s && *end == 0, "not a number: '%s'", s);
-    return v;
-}
-
-static int method_of(const char *name)
-{
-    for (int m = 0; m < ISK_INTEGRATOR_COUNT; m++)
-        if (!strcmp(name, isk_integrator_name((isk_integrator)m)))
-            return m;
-    cr_assert_fail("unknown integrator '%s'", name);
-    return -1;
-}
 
 /* The accuracy study's figure: the projectile problem with one particle,
  * `steps` steps of h under `m`, its position error at the end. */
@@ -117,9 +47,9 @@ Test(bench_scene, the_projectile_scene_finds_the_studys_error_at_each_step)
     cr_assert_eq(cli_run(OUT "/projectile",
                          "bench accuracy --scene " DATA "projectile.ini --out " OUT "/projectile/acc"),
                  0, "%s", cli_slurp(OUT "/projectile/stderr.txt"));
-    csv *c = csv_read(OUT "/projectile/acc/scene_projectile.csv");
-    const int cm = col(c, "integrator"), cs = col(c, "substeps"), cw = col(c, "max_world");
-    const int cmed = col(c, "median_px"), cp = col(c, "p99_px"), cf = col(c, "frames_compared");
+    csv *c = csv_load(OUT "/projectile/acc/scene_projectile.csv");
+    const int cm = csv_col(c, "integrator"), cs = csv_col(c, "substeps"), cw = csv_col(c, "max_world");
+    const int cmed = csv_col(c, "median_px"), cp = csv_col(c, "p99_px"), cf = csv_col(c, "frames_compared");
     cr_assert_eq(c->nrows, ISK_INTEGRATOR_COUNT * 4, "every integrator at substeps 1, 2, 4, 8");
     /* The reference (Yoshida 4 at 16 substeps) has an error of its own:
      * exact drag is exact on this problem up to rounding, so its row
@@ -129,22 +59,22 @@ Test(bench_scene, the_projectile_scene_finds_the_studys_error_at_each_step)
     double ref_error = NAN;
     for (int r = 0; r < c->nrows; r++)
         if (!strcmp(c->cell[r][cm], "exact-drag") && !strcmp(c->cell[r][cs], "1"))
-            ref_error = num(c->cell[r][cw]);
+            ref_error = csv_num(c->cell[r][cw]);
     cr_assert(ref_error < 1e-9, "the reference is far better than any swept run: %g", ref_error);
     for (int r = 0; r < c->nrows; r++) {
-        const int m = method_of(c->cell[r][cm]), sub = (int)num(c->cell[r][cs]);
-        const double mine = num(c->cell[r][cw]);
+        const int m = csv_integrator(c->cell[r][cm]), sub = (int)csv_num(c->cell[r][cs]);
+        const double mine = csv_num(c->cell[r][cw]);
         const double study = study_figure((isk_integrator)m, 0.05 / sub, 40 * sub);
-        cr_assert_eq(num(c->cell[r][cf]), 40, "%s x%d compared to the end", c->cell[r][cm], sub);
+        cr_assert_eq(csv_num(c->cell[r][cf]), 40, "%s x%d compared to the end", c->cell[r][cm], sub);
         cr_assert_leq(fabs(mine - study), 2 * ref_error + 1e-6 * study, "%s x%d: scene %.9e, study %.9e",
                       c->cell[r][cm], sub, mine, study);
         /* one particle: median = p99 = max; one pixel is one metre */
-        cr_assert_eq(num(c->cell[r][cmed]), num(c->cell[r][cp]));
-        cr_assert_leq(fabs(num(c->cell[r][cmed]) - mine), 1e-9 * (1 + mine), "%s x%d: pixels are metres",
+        cr_assert_eq(csv_num(c->cell[r][cmed]), csv_num(c->cell[r][cp]));
+        cr_assert_leq(fabs(csv_num(c->cell[r][cmed]) - mine), 1e-9 * (1 + mine), "%s x%d: pixels are metres",
                       c->cell[r][cm], sub);
     }
     csv_free(c);
-    c = csv_read(OUT "/projectile/acc/scene_projectile_time.csv");
+    c = csv_load(OUT "/projectile/acc/scene_projectile_time.csv");
     cr_assert_eq(c->nrows, ISK_INTEGRATOR_COUNT * 4 * 40, "40 samples (every frame) of every run");
     csv_free(c);
     cli_check_chart(OUT "/projectile/acc/scene_projectile.png", 1400, 900);
@@ -161,7 +91,7 @@ static csv *map_of(const char *dir, const char *scene, const char *stem)
     snprintf(path, sizeof path, "%s/map/stability_%s.png", dir, stem);
     cli_check_chart(path, 1600, 800);
     snprintf(path, sizeof path, "%s/map/stability_%s.csv", dir, stem);
-    csv *c = csv_read(path);
+    csv *c = csv_load(path);
     cr_assert_eq(c->nrows, ISK_INTEGRATOR_COUNT * 4 * 15, "8 integrators x 4 substeps x 15 steps");
     return c;
 }
@@ -169,18 +99,18 @@ static csv *map_of(const char *dir, const char *scene, const char *stem)
 Test(bench_scene, explicit_eulers_drag_edge_is_exactly_two_and_iskras_cap_keeps_it_stable)
 {
     csv *c = map_of(OUT "/drag", "drag_alone.ini", "drag_alone");
-    const int cm = col(c, "integrator"), cs = col(c, "substeps"), cd = col(c, "dt"), ch = col(c, "h");
-    const int cc = col(c, "class"), cr = col(c, "drag_ratio"), ce = col(c, "drag_edge");
+    const int cm = csv_col(c, "integrator"), cs = csv_col(c, "substeps"), cd = csv_col(c, "dt"), ch = csv_col(c, "h");
+    const int cc = csv_col(c, "class"), cr = csv_col(c, "drag_ratio"), ce = csv_col(c, "drag_edge");
     int below = 0, above = 0, at = 0;
     for (int r = 0; r < c->nrows; r++) {
         if (strcmp(c->cell[r][cm], "euler") != 0)
             continue;
-        const double h = num(c->cell[r][ch]), x = num(c->cell[r][cr]);
-        cr_assert_eq(num(c->cell[r][ce]), 2.0, "explicit Euler's drag edge is b*h/m = 2 exactly");
-        cr_assert_eq(h, num(c->cell[r][cd]) / num(c->cell[r][cs]));
+        const double h = csv_num(c->cell[r][ch]), x = csv_num(c->cell[r][cr]);
+        cr_assert_eq(csv_num(c->cell[r][ce]), 2.0, "explicit Euler's drag edge is b*h/m = 2 exactly");
+        cr_assert_eq(h, csv_num(c->cell[r][cd]) / csv_num(c->cell[r][cs]));
         cr_assert_leq(fabs(x - 120 * h), 1e-13 * x, "b*h/m = 120 h for b = 120, m = 1");
         /* the scene's own cell: b*dt/m = 2, the edge through its middle */
-        if (num(c->cell[r][cs]) == 1 && fabs(num(c->cell[r][cd]) - 1.0 / 60) < 1e-15)
+        if (csv_num(c->cell[r][cs]) == 1 && fabs(csv_num(c->cell[r][cd]) - 1.0 / 60) < 1e-15)
             at += fabs(x - 2) < 1e-15;
         below += x < 2 && x > 1.4;
         above += x > 2 && x < 2.9;
@@ -200,18 +130,18 @@ Test(bench_scene, the_spring_edges_are_where_the_theory_puts_them)
     /* omega = 120 * 2^(1/4); semi-implicit Euler is stable for omega h < 2, RK4 for omega h < 2 sqrt 2 */
     const double omega = 120 * pow(2, 0.25);
     csv *c = map_of(OUT "/spring", "spring.ini", "spring");
-    const int cm = col(c, "integrator"), ch = col(c, "h"), cc = col(c, "class"), cw = col(c, "spring_ratio");
-    const int ce = col(c, "spring_edge");
+    const int cm = csv_col(c, "integrator"), ch = csv_col(c, "h"), cc = csv_col(c, "class"), cw = csv_col(c, "spring_ratio");
+    const int ce = csv_col(c, "spring_edge");
     int checked[2][2] = {{0}};
     for (int r = 0; r < c->nrows; r++) {
         const char *m = c->cell[r][cm], *cls = c->cell[r][cc];
         /* the line the map draws: w*h from the scene's definition */
-        cr_assert_float_eq(num(c->cell[r][cw]), omega * num(c->cell[r][ch]), 1e-12 * omega * num(c->cell[r][ch]));
-        cr_assert_eq(num(c->cell[r][ce]), isk_integrator_spring_edge((isk_integrator)method_of(m)));
+        cr_assert_float_eq(csv_num(c->cell[r][cw]), omega * csv_num(c->cell[r][ch]), 1e-12 * omega * csv_num(c->cell[r][ch]));
+        cr_assert_eq(csv_num(c->cell[r][ce]), isk_integrator_spring_edge((isk_integrator)csv_integrator(m)));
         const int which = !strcmp(m, "semi-euler") ? 0 : !strcmp(m, "rk4") ? 1 : -1;
         if (which < 0)
             continue;
-        const double edge = which == 0 ? 2 : 2 * sqrt(2), wh = omega * num(c->cell[r][ch]);
+        const double edge = which == 0 ? 2 : 2 * sqrt(2), wh = omega * csv_num(c->cell[r][ch]);
         const int bad = !strcmp(cls, "growing") || !strcmp(cls, "removed");
         if (wh < 0.97 * edge) {
             cr_assert_not(bad, "%s at omega h = %.3f < %.3f: %s", m, wh, edge, cls);
@@ -297,29 +227,29 @@ Test(bench_scene, a_run_that_loses_other_particles_is_compared_until_then)
      * fall in the reference's frames to the end */
     cli_fresh(OUT "/kill");
     cr_assert_eq(cli_run(OUT "/kill", "bench accuracy --scene " DATA "kill_floor.ini --out " OUT "/kill/acc"), 0);
-    csv *c = csv_read(OUT "/kill/acc/scene_kill_floor.csv");
-    const int cm = col(c, "integrator"), cs = col(c, "substeps"), cf = col(c, "frames_compared");
+    csv *c = csv_load(OUT "/kill/acc/scene_kill_floor.csv");
+    const int cm = csv_col(c, "integrator"), cs = csv_col(c, "substeps"), cf = csv_col(c, "frames_compared");
     long semi = -1, rk4 = -1;
     for (int r = 0; r < c->nrows; r++) {
         if (strcmp(c->cell[r][cs], "1") != 0)
             continue;
         if (!strcmp(c->cell[r][cm], "semi-euler"))
-            semi = (long)num(c->cell[r][cf]);
+            semi = (long)csv_num(c->cell[r][cf]);
         if (!strcmp(c->cell[r][cm], "rk4"))
-            rk4 = (long)num(c->cell[r][cf]);
+            rk4 = (long)csv_num(c->cell[r][cf]);
     }
     cr_assert(semi > 0 && semi < 60, "semi-euler x1 compared until frame %ld", semi);
     cr_assert_eq(rk4, 60);
     csv_free(c);
     /* the time CSV has the compared samples only (every frame is one here) */
-    c = csv_read(OUT "/kill/acc/scene_kill_floor_time.csv");
-    const int tm = col(c, "integrator"), ts = col(c, "substeps"), tt = col(c, "time");
+    c = csv_load(OUT "/kill/acc/scene_kill_floor_time.csv");
+    const int tm = csv_col(c, "integrator"), ts = csv_col(c, "substeps"), tt = csv_col(c, "time");
     long n = 0;
     double last = 0;
     for (int r = 0; r < c->nrows; r++)
         if (!strcmp(c->cell[r][tm], "semi-euler") && !strcmp(c->cell[r][ts], "1")) {
             n++;
-            last = num(c->cell[r][tt]);
+            last = csv_num(c->cell[r][tt]);
         }
     cr_assert_eq(n, semi);
     cr_assert_float_eq(last, semi / 30.0, 1e-9); /* the CSV has 10 digits */

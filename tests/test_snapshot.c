@@ -362,8 +362,55 @@ Test(snapshot, a_file_resumes_the_run)
     isk_effect_destroy(b);
 }
 
+/* a runs `before` frames and is kept; it runs `after` more.  b (another
+ * effect) restored from the snapshot, in memory and then from its bytes,
+ * runs `after` frames: it ends as a did, its probes reading alike. */
+static void restored_goes_on_alike(isk_effect *a, isk_effect *b, int before, int after, const char *what)
+{
+    isk_error err = {0};
+    for (int f = 0; f < before; f++)
+        cr_assert_eq(isk_effect_step(a), ISK_OK);
+    isk_snapshot *snap, *back;
+    cr_assert_eq(isk_effect_snapshot(a, &snap, &err), ISK_OK);
+    unsigned char *bytes;
+    size_t n;
+    cr_assert_eq(isk_snapshot_encode(snap, &bytes, &n, &err), ISK_OK, "%s", err.message);
+    cr_assert_eq(isk_snapshot_decode(&back, bytes, n, what, &err), ISK_OK, "%s", err.message);
+    for (int f = 0; f < after; f++)
+        cr_assert_eq(isk_effect_step(a), ISK_OK);
+    outcome oa;
+    look(a, &oa);
+    const isk_snapshot *from[2] = {snap, back};
+    for (int k = 0; k < 2; k++) {
+        char where[160];
+        snprintf(where, sizeof where, "%s, %s", what, k ? "from bytes" : "in memory");
+        cr_assert_eq(isk_effect_restore(b, from[k], &err), ISK_OK, "%s", err.message);
+        for (int f = 0; f < after; f++)
+            cr_assert_eq(isk_effect_step(b), ISK_OK);
+        cr_assert_eq(isk_effect_probe_count(b), isk_effect_probe_count(a));
+        for (int i = 0; i < isk_effect_probe_count(a); i++) {
+            isk_probe_reading ra, rb;
+            cr_assert_eq(isk_effect_probe_read(a, i, &ra), ISK_OK);
+            cr_assert_eq(isk_effect_probe_read(b, i, &rb), ISK_OK);
+            cr_assert_str_eq(ra.name, rb.name);
+            cr_assert(ra.forward == rb.forward && ra.backward == rb.backward && ra.rate_forward == rb.rate_forward &&
+                          ra.count == rb.count && ra.kinetic == rb.kinetic && ra.frame == rb.frame &&
+                          !memcmp(ra.bin, rb.bin, sizeof ra.bin),
+                      "probe %s differs after a restore (%s)", ra.name, where);
+        }
+        outcome ob;
+        look(b, &ob);
+        expect_same(&oa, &ob, where);
+        outcome_free(&ob);
+    }
+    outcome_free(&oa);
+    free(bytes);
+    isk_snapshot_free(snap);
+    isk_snapshot_free(back);
+}
+
 /* Probes are part of the state: a gate's crossings (drawn beside it) and
- * its window of rates come back with the frame, in memory and from bytes. */
+ * its window of rates come back with the frame. */
 static isk_effect *probes_scene(void)
 {
     isk_effect_def d;
@@ -376,45 +423,8 @@ static isk_effect *probes_scene(void)
 Test(snapshot, probes_come_back_with_their_counts)
 {
     isk_effect *a = probes_scene(), *b = probes_scene();
-    isk_error err = {0};
-    for (int f = 0; f < 70; f++)
-        cr_assert_eq(isk_effect_step(a), ISK_OK);
-    isk_snapshot *snap, *back;
-    cr_assert_eq(isk_effect_snapshot(a, &snap, &err), ISK_OK);
-    unsigned char *bytes;
-    size_t n;
-    cr_assert_eq(isk_snapshot_encode(snap, &bytes, &n, &err), ISK_OK, "%s", err.message);
-    cr_assert_eq(isk_snapshot_decode(&back, bytes, n, "probes", &err), ISK_OK, "%s", err.message);
-    for (int f = 0; f < 40; f++)
-        cr_assert_eq(isk_effect_step(a), ISK_OK);
-    outcome oa;
-    look(a, &oa);
-    const isk_snapshot *from[2] = {snap, back};
-    for (int k = 0; k < 2; k++) {
-        cr_assert_eq(isk_effect_restore(b, from[k], &err), ISK_OK, "%s", err.message);
-        for (int f = 0; f < 40; f++)
-            cr_assert_eq(isk_effect_step(b), ISK_OK);
-        cr_assert_eq(isk_effect_probe_count(b), isk_effect_probe_count(a));
-        cr_assert_gt(isk_effect_probe_count(a), 2);
-        for (int i = 0; i < isk_effect_probe_count(a); i++) {
-            isk_probe_reading ra, rb;
-            cr_assert_eq(isk_effect_probe_read(a, i, &ra), ISK_OK);
-            cr_assert_eq(isk_effect_probe_read(b, i, &rb), ISK_OK);
-            cr_assert_str_eq(ra.name, rb.name);
-            cr_assert(ra.forward == rb.forward && ra.backward == rb.backward && ra.rate_forward == rb.rate_forward &&
-                          ra.count == rb.count && ra.kinetic == rb.kinetic && ra.frame == rb.frame &&
-                          !memcmp(ra.bin, rb.bin, sizeof ra.bin),
-                      "probe %s differs after a restore (%s)", ra.name, k ? "from bytes" : "in memory");
-        }
-        outcome ob;
-        look(b, &ob);
-        expect_same(&oa, &ob, k ? "probes, from bytes" : "probes, in memory");
-        outcome_free(&ob);
-    }
-    outcome_free(&oa);
-    free(bytes);
-    isk_snapshot_free(snap);
-    isk_snapshot_free(back);
+    cr_assert_gt(isk_effect_probe_count(a), 2);
+    restored_goes_on_alike(a, b, 70, 40, "probes");
     isk_effect_destroy(a);
     isk_effect_destroy(b);
 }
@@ -438,33 +448,7 @@ static const char everyday[] =
 Test(snapshot, everyday_settings_come_back)
 {
     isk_effect *a = scene_text_open(everyday, 1), *b = scene_text_open(everyday, 2);
-    isk_error err = {0};
-    for (int f = 0; f < 40; f++)
-        cr_assert_eq(isk_effect_step(a), ISK_OK);
-    isk_snapshot *snap, *back;
-    cr_assert_eq(isk_effect_snapshot(a, &snap, &err), ISK_OK);
-    unsigned char *bytes;
-    size_t n;
-    cr_assert_eq(isk_snapshot_encode(snap, &bytes, &n, &err), ISK_OK, "%s", err.message);
-    cr_assert_eq(isk_snapshot_decode(&back, bytes, n, "everyday", &err), ISK_OK, "%s", err.message);
-    for (int f = 0; f < 40; f++)
-        cr_assert_eq(isk_effect_step(a), ISK_OK);
-    outcome oa;
-    look(a, &oa);
-    const isk_snapshot *from[2] = {snap, back};
-    for (int k = 0; k < 2; k++) {
-        cr_assert_eq(isk_effect_restore(b, from[k], &err), ISK_OK, "%s", err.message);
-        for (int f = 0; f < 40; f++)
-            cr_assert_eq(isk_effect_step(b), ISK_OK);
-        outcome ob;
-        look(b, &ob);
-        expect_same(&oa, &ob, k ? "everyday settings, from bytes" : "everyday settings, in memory");
-        outcome_free(&ob);
-    }
-    outcome_free(&oa);
-    free(bytes);
-    isk_snapshot_free(snap);
-    isk_snapshot_free(back);
+    restored_goes_on_alike(a, b, 40, 40, "everyday settings");
     isk_effect_destroy(a);
     isk_effect_destroy(b);
 }

@@ -197,6 +197,19 @@ static isk_status prepare_sprites(isk_effect *e, fx_group *g, fx_band *b)
     return ISK_ERR_FULL;
 }
 
+/* Particle i's sprite, of its size and in its colour, over the band's rows. */
+static inline void draw_one_sprite(const isk_effect *e, isk_canvas *c, const fx_group *g, const fx_band *b,
+                                   size_t i, int vary, int tinted, double scale)
+{
+    const isk_particles *p = &g->store;
+    double X, Y, mult;
+    isk_view_to_screen(&e->view, p->x[i], p->y[i], &X, &Y);
+    isk_color col = fx_style(g, p, i, vary, &mult);
+    const isk_sprite *spr = b->sprite[sprite_px(g, scale, mult)];
+    if (spr)
+        isk__draw_sprite_rows(c, spr, X, Y, tinted ? &col : NULL, g->def->look.blend, b->r0, b->r1);
+}
+
 /* Sprites: with a constant colour, one sprite baked in that colour (its
  * blend table makes drawing cheapest); when the colour or alpha varies per
  * particle (ramps), one mask per size baked in white and drawn tinted, so a
@@ -217,15 +230,8 @@ static isk_status draw_sprites(isk_effect *e, isk_canvas *c, fx_group *g, const 
      * The reach is a row wider than a sprite can touch, so the select's
      * strict bounds drop nothing the band would draw. */
     if (b->list) { /* another order than the store's (draw_order): drawn whole, one by one */
-        for (size_t k = 0; k < b->nlist; k++) {
-            const size_t i = b->list[k];
-            double X, Y, mult;
-            isk_view_to_screen(&e->view, p->x[i], p->y[i], &X, &Y);
-            isk_color col = fx_style(g, p, i, vary, &mult);
-            const isk_sprite *spr = b->sprite[sprite_px(g, scale, mult)];
-            if (spr)
-                isk__draw_sprite_rows(c, spr, X, Y, tinted ? &col : NULL, g->def->look.blend, b->r0, b->r1);
-        }
+        for (size_t k = 0; k < b->nlist; k++)
+            draw_one_sprite(e, c, g, b, b->list[k], vary, tinted, scale);
         return ISK_OK;
     }
     enum { CHUNK = 256 };
@@ -235,15 +241,8 @@ static isk_status draw_sprites(isk_effect *e, isk_canvas *c, fx_group *g, const 
     for (size_t o = b->first; o < b->end; o += CHUNK) {
         const int m = b->end - o < CHUNK ? (int)(b->end - o) : CHUNK;
         const int k = isk__batch_select_rows(&e->view, p->y + o, m, lo, hi, ys, in_reach);
-        for (int q = 0; q < k; q++) {
-            const size_t i = o + (size_t)in_reach[q];
-            double X, Y, mult;
-            isk_view_to_screen(&e->view, p->x[i], p->y[i], &X, &Y);
-            isk_color col = fx_style(g, p, i, vary, &mult);
-            const isk_sprite *spr = b->sprite[sprite_px(g, scale, mult)];
-            if (spr)
-                isk__draw_sprite_rows(c, spr, X, Y, tinted ? &col : NULL, g->def->look.blend, b->r0, b->r1);
-        }
+        for (int q = 0; q < k; q++)
+            draw_one_sprite(e, c, g, b, o + (size_t)in_reach[q], vary, tinted, scale);
     }
     return ISK_OK;
 }
