@@ -232,11 +232,12 @@ Test(budgets, writers_say_what_they_hold)
 {
     isk_anim_opts gif = {ISK_ANIM_GIF, 1000, 1000, 30}, y4m = {ISK_ANIM_Y4M, 1000, 1000, 30},
                   raw = {ISK_ANIM_RAW, 1000, 1000, 0};
-    /* per pixel: an index (1), its colour (4), a colour entry (12), its sorted copy (24), two hash slots (8) */
-    cr_assert_geq(isk_anim_memory(&gif), (size_t)1000 * 1000 * (1 + 4 + 12 + 24 + 8));
+    /* per pixel: an index (1), its colour (4), a colour entry (12), its sorted copy (24 where a
+     * 64-bit key is aligned to 8, 20 on i386, where it is aligned to 4), two hash slots (8) */
+    cr_assert_geq(isk_anim_memory(&gif), (size_t)1000 * 1000 * (1 + 4 + 12 + 20 + 8));
     cr_assert_lt(isk_anim_memory(&gif), (size_t)1000 * 1000 * (1 + 4 + 12 + 24 + 16) + ((size_t)1 << 20));
     gif.width = 2000;
-    cr_assert_gt(isk_anim_memory(&gif), (size_t)2000 * 1000 * 49);
+    cr_assert_gt(isk_anim_memory(&gif), (size_t)2000 * 1000 * 45);
     cr_assert_geq(isk_anim_memory(&y4m), 1000u);
     cr_assert_lt(isk_anim_memory(&y4m), 4096u);
     cr_assert_lt(isk_anim_memory(&raw), 1024u);
@@ -256,8 +257,10 @@ Test(budgets, render_counts_its_writers_and_strip)
     cr_assert_eq(cli_run(DIR "/host", "render preset_rain --size 2000x2000 --frames 2 --out " DIR "/host/x.gif "
                                       "--max-memory 100M"), 2);
     char *e = cli_slurp(DIR "/host/stderr.txt");
-    cr_assert_not_null(strstr(e, "more than the limit of 100 MiB (iskra render's GIF writer (2000 x 2000 frames) "
-                                 "188 MiB, the 2000 x 2000 canvas 15 MiB"), "%s", e);
+    /* (188 MiB where size_t has 64 bits, 173 on i386: the tables' entries are smaller there) */
+    cr_assert_not_null(strstr(e, "more than the limit of 100 MiB (iskra render's GIF writer (2000 x 2000 frames) "),
+                       "%s", e);
+    cr_assert_not_null(strstr(e, " MiB, the 2000 x 2000 canvas 15 MiB"), "%s", e);
     cr_assert_not_null(strstr(e, "--max-memory"), "%s", e);
     free(e);
     cr_assert_not(cli_exists(DIR "/host/x.gif"));
