@@ -10,17 +10,7 @@
 #include <string.h>
 
 #include "iskra.h"
-
-static isk_effect *scene(const char *text)
-{
-    isk_effect_def d;
-    isk_error err;
-    isk_effect *fx = NULL;
-    cr_assert_eq(isk_scene_load_string(&d, text, "test", &err), ISK_OK, "%s", err.message);
-    cr_assert_eq(isk_effect_create(&fx, &d, &err), ISK_OK, "%s", err.message);
-    isk_effect_def_free(&d);
-    return fx;
-}
+#include "scene_text.h"
 
 static size_t outside_box(const isk_particles *p, double lo, double hi)
 {
@@ -44,7 +34,7 @@ static void box_with(const char *deflectors, const char *names, const char *dt, 
              "[emitter fast]\nsource = stream\nposition = 0.3, 0.2\ncount = 1200\nlaunch = cone\nspread = 360\n"
              "speed_min = 300\nspeed_max = 300\nbounded = true\ndeflectors = %s\ndraw = none\n",
              dt, integrator, deflectors, names);
-    isk_effect *fx = scene(text);
+    isk_effect *fx = scene_text_open(text, 0);
     const isk_particles *p = isk_effect_particles(fx, 0);
     size_t worst = 0;
     for (int f = 0; f < frames; f++) {
@@ -127,7 +117,7 @@ static double spring_on_floor(const char *integrator, const char *dt, double sec
              "[force spring]\nkind = potential\nk = 4\nposition = 0, 0\nexponent = 0\n"
              "[emitter ball]\nsource = particle\nposition = 0.6, 2\n%s\nforces = spring\ndraw = none\n",
              dt, integrator, segment ? "deflectors = floor" : "bounded = true");
-    isk_effect *fx = scene(text);
+    isk_effect *fx = scene_text_open(text, 0);
     const isk_particles *p = isk_effect_particles(fx, 0);
     cr_assert_eq(isk_effect_step(fx), ISK_OK); /* born in the first frame */
     cr_assert_eq(p->count, 1);
@@ -204,7 +194,7 @@ static double coulomb_gas(const char *integrator, int frames, int walls, long *b
              "[emitter gas]\nsource = stream\nposition = 3, 3\ncount = 300\nlaunch = cone\nspread = 360\n"
              "speed_min = 2\nspeed_max = 6\nbounded = %s\nforces = centre\ndraw = none\n",
              integrator, walls ? "true" : "false");
-    isk_effect *fx = scene(text);
+    isk_effect *fx = scene_text_open(text, 0);
     const isk_particles *p = isk_effect_particles(fx, 0);
     cr_assert_eq(isk_effect_step(fx), ISK_OK);
     cr_assert_eq(p->count, 300);
@@ -318,7 +308,7 @@ Test(contacts, semi_implicit_euler_at_1000_s_is_its_own_first_order_error, .time
                  "[emitter box]\nsource = explosion\nexplosion = gauss\nposition = 0, 5\ncount = 500\n"
                  "forces = gravity\ndraw = none\nbounded = true\n",
                  methods[m]);
-        isk_effect *fx = scene(text);
+        isk_effect *fx = scene_text_open(text, 0);
         const isk_particles *p = isk_effect_particles(fx, 0);
         cr_assert_eq(isk_effect_step(fx), ISK_OK);
         cr_assert_eq(p->count, 500);
@@ -372,7 +362,7 @@ Test(contacts, the_contact_pass_gives_the_same_bytes_on_any_number_of_threads, .
                      "[emitter fast]\nsource = stream\nposition = 3, 2\ncount = 4000\nlaunch = cone\nspread = 360\n"
                      "speed_min = 20\nspeed_max = 300\nbounded = true\n%sdraw = none\n",
                      extras[v], uses[v]);
-            isk_effect *fx = scene(text);
+            isk_effect *fx = scene_text_open(text, 0);
             cr_assert_eq(isk_effect_set_threads(fx, threads), ISK_OK);
             for (int f = 0; f < 120; f++)
                 cr_assert_eq(isk_effect_step(fx), ISK_OK);
@@ -405,12 +395,14 @@ Test(contacts, the_contact_pass_gives_the_same_bytes_on_any_number_of_threads, .
  * header's example) fires two events in that step, one for each. */
 Test(contacts, on_hit_fires_for_the_wall_and_the_segment_of_one_step)
 {
-    isk_effect *fx = scene("[scene]\ndt = 1/60\nintegrator = verlet\n[view]\nxmin = -10\nxmax = 10\nymin = -10\n"
-                           "ymax = 10\n[bounds]\nmode = reflect\nrestitution = 1\n"
-                           "[deflector slant]\nsegment = -6, -4, 5, 7\n"
-                           "[emitter ball]\nsource = particle\nposition = 9, 6\nvelocity = 600, 0\nbounded = true\n"
-                           "deflectors = slant\non_hit = spark\ndraw = none\n"
-                           "[emitter spark]\nsource = sub\ncount = 1\nlife = 10\ndraw = none\n");
+    isk_effect *fx = scene_text_open("[scene]\ndt = 1/60\nintegrator = verlet\n"
+                                     "[view]\nxmin = -10\nxmax = 10\nymin = -10\nymax = 10\n"
+                                     "[bounds]\nmode = reflect\nrestitution = 1\n"
+                                     "[deflector slant]\nsegment = -6, -4, 5, 7\n"
+                                     "[emitter ball]\nsource = particle\nposition = 9, 6\n"
+                                     "velocity = 600, 0\nbounded = true\n"
+                                     "deflectors = slant\non_hit = spark\ndraw = none\n"
+                                     "[emitter spark]\nsource = sub\ncount = 1\nlife = 10\ndraw = none\n", 0);
     const isk_effect_def *d = isk_effect_definition(fx);
     const isk_particles *ball = isk_effect_particles(fx, isk_effect_def_find_emitter(d, "ball"));
     const isk_particles *spark = isk_effect_particles(fx, isk_effect_def_find_emitter(d, "spark"));

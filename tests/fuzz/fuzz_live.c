@@ -17,11 +17,10 @@
  *
  * What a scene or a change may ask for is the library's budgets' to bound
  * (a change over them is refused, as at create); the harness sets them as
- * a program would, a tenth of the default work and 256 MiB, and one
- * thread (the bytes are the same for every number), since the sanitizers
- * make each run several times slower.  A step command runs at most
- * MAX_STEPS steps: how long the harness runs an input, not a limit of the
- * library's. */
+ * a program would (fuzz_budgets.h), and one thread (the bytes are the
+ * same for every number), since the sanitizers make each run several
+ * times slower.  A step command runs at most MAX_STEPS steps: how long
+ * the harness runs an input, not a limit of the library's. */
 #include <stddef.h>
 #include <stdint.h>
 #include <stdio.h>
@@ -30,17 +29,15 @@
 
 #include "iskra/effect.h"
 #include "iskra/scene.h"
+#include "fuzz_budgets.h"
 #include "scene_mutator.h"
 
-#define FUZZ_MAX_WORK (ISK_EFFECT_DEFAULT_MAX_WORK / 10)
-#define FUZZ_MAX_MEMORY ((size_t)256 << 20)
 #define MAX_STEPS 30
 #define COMPARED_FRAMES 3
 
 static void set_budgets(isk_effect_def *d)
 {
-    d->max_work = FUZZ_MAX_WORK;
-    d->max_memory = FUZZ_MAX_MEMORY;
+    fuzz_set_budgets(d);
     d->threads = 1;
 }
 

@@ -3,24 +3,19 @@
  * -> a few steps and renders.  Built and run by `make fuzz` (clang with
  * -fsanitize=fuzzer,address,undefined); crashers land in
  * tests/fuzz/regressions/ and tests/test_scene_fuzz_regressions.c replays
- * them.  What a definition may ask for is the library's budgets' to
- * bound, not the harness's: every scene is created as written, with
- * budgets of a tenth of the default work and 256 MiB of memory, since
- * the fuzzer runs under the sanitizers (several times slower) and wants
- * its inputs quick.  A scene over them is refused at create, as the tool
- * refuses it; one accepted and still slow is a gap in the estimate
- * (src/scene/effect_budget.c) for the fuzzer to find. */
+ * them.  Every scene is created as written, within the budgets of
+ * fuzz_budgets.h: what a definition may ask for is the library's budgets'
+ * to bound, not the harness's. */
 #include <stddef.h>
 #include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
 
 #include "iskra/scene.h"
+#include "fuzz_budgets.h"
 #include "scene_mutator.h"
 
 #define FRAMES 3
-#define FUZZ_MAX_WORK (ISK_EFFECT_DEFAULT_MAX_WORK / 10)
-#define FUZZ_MAX_MEMORY ((size_t)256 << 20)
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 {
@@ -32,8 +27,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     isk_effect_def d;
     isk_error err;
     if (isk_scene_load_string(&d, text, "fuzz.ini", &err) == ISK_OK) {
-        d.max_work = FUZZ_MAX_WORK;
-        d.max_memory = FUZZ_MAX_MEMORY;
+        fuzz_set_budgets(&d);
         isk_effect *fx;
         if (isk_effect_create(&fx, &d, &err) == ISK_OK) {
             isk_canvas c;

@@ -18,8 +18,8 @@
  * ISK_TEXTURE_MAX_DIM); the harness sets the budgets a program would, so
  * each input stays quick under the sanitizers: the PNG reader's pixel cap
  * (a megapixel: a header may declare any size, only the cap is decoded)
- * and the effect's memory and work budgets (isk_effect_def.max_memory,
- * max_work), which refuse at create what would be slow. */
+ * and the effect's memory and work budgets (fuzz_budgets.h), which refuse
+ * at create what would be slow. */
 #include <stddef.h>
 #include <stdint.h>
 #include <stdio.h>
@@ -29,10 +29,9 @@
 #include "iskra/effect.h"
 #include "iskra/png.h"
 #include "iskra/texture.h"
+#include "fuzz_budgets.h"
 
 #define MAX_PIXELS (1024 * 1024)
-#define FUZZ_MAX_MEMORY ((size_t)256 << 20)
-#define FUZZ_MAX_WORK (ISK_EFFECT_DEFAULT_MAX_WORK / 10)
 
 static void draw_directly(isk_canvas *c, const isk_canvas *img)
 {
@@ -84,8 +83,7 @@ static void draw_in_an_effect(const isk_canvas *img)
     isk_effect_def_init(&d);
     d.width = 64;
     d.height = 48;
-    d.max_memory = FUZZ_MAX_MEMORY;
-    d.max_work = FUZZ_MAX_WORK;
+    fuzz_set_budgets(&d);
     if (isk_effect_def_add_texture(&d, "fuzz.png", img, NULL) == ISK_OK) {
         add_emitter(&d, "fuzz.png", 1, 1, 0.3);
         if (img->width % 2 == 0)
