@@ -182,8 +182,8 @@ Test(outputs, no_output_replaces_an_input_or_another_output, .timeout = 120)
     const char *scene = OUT "/clash/preset_magic.ini ";
     const char *tex = OUT "/clash/textures/sparkle.png";
     char args[1024];
-    const char *as_input[] = {"--out", "--strip", "--state"};
-    for (int k = 0; k < 3; k++) {
+    const char *as_input[] = {"--out", "--strip", "--state", "--snapshot"};
+    for (int k = 0; k < 4; k++) {
         snprintf(args, sizeof args, "render %s--frames 6 %s%s %s", scene, k == 1 ? "--every 2 " : "", as_input[k], tex);
         refused(d, args, "refusing to overwrite the input " OUT "/clash/textures/sparkle.png (a texture of the scene)");
     }
@@ -280,8 +280,8 @@ Test(outputs, a_file_size_limit_is_reported_and_cleaned_up, .timeout = 120)
 {
     const char *d = OUT "/fsize";
     const char *outs[][2] = {{"--out", OUT "/fsize/a.gif"}, {"--state", OUT "/fsize/s.csv"},
-                             {"--out", OUT "/fsize/a.png"}};
-    for (int k = 0; k < 3; k++) {
+                             {"--out", OUT "/fsize/a.png"}, {"--snapshot", OUT "/fsize/a.snap"}};
+    for (int k = 0; k < 4; k++) {
         cli_fresh(d);
         const char *args[] = {"render", "fire_campfire", "--frames", "40", outs[k][0], outs[k][1], NULL};
         pid_t pid = cli_start(d, -1, 2048, args);

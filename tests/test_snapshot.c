@@ -326,7 +326,8 @@ Test(snapshot, refusals_name_the_problem)
     isk_effect_destroy(fx);
 }
 
-/* A file written by one process and read by another: save, load, run. */
+/* A file written and read back: save, load, run (two processes:
+ * tests/test_snapshot_cli.c). */
 Test(snapshot, a_file_resumes_the_run)
 {
     unsigned char *bytes;

@@ -48,7 +48,7 @@
  * refused with a message (ISK_ERR_FORMAT), never half-loaded, and its
  * numbers are checked as a scene's are (no NaN, counts within the pools).
  * `iskra render --state` writes what an analysis wants (CSV); this is what
- * a run needs to go on.
+ * a run needs to go on (`iskra render --snapshot FILE`, then `--from FILE`).
  */
 #ifndef ISKRA_SNAPSHOT_H
 #define ISKRA_SNAPSHOT_H

@@ -4,15 +4,20 @@
  * iskra render SCENE [--frames N] [--every K] --raw --out FILE|-
  * iskra render SCENE [--frames N] [--every K] --out-dir DIR [--resume]
  * iskra render SCENE --frames N --every K --strip FILE.png
+ * iskra render SCENE --frames N --snapshot FILE.snap, then
+ * iskra render SCENE --from FILE.snap --frames M ...
  * Renders frame N (frame 0 = the initial state, frame N = after N steps) to
  * a PNG, and/or frames 0, K, 2K, ... <= N as a numbered PNG sequence, an
  * animated GIF, a YUV4MPEG2 video or raw RGBA frames (render_out.h);
  * --state / --state-every write the particles as CSV (state_csv.h),
- * --probes the scene's probes, a row per frame (probes_csv.h).
+ * --probes the scene's probes, a row per frame (probes_csv.h);
+ * --snapshot the exact state of frame N (iskra/snapshot.h), which --from
+ * goes on from in another run: the same bytes as one run.
  * Everything is validated before anything is written, and no output may
  * be an input (the scene, its textures) or another output (outpath.h); a
  * signal removes the temporaries and says what was written (cleanup.h). */
 #include <ctype.h>
+#include <errno.h>
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -24,6 +29,8 @@
 #include "iskra/anim.h"
 #include "iskra/effect.h"
 #include "iskra/png.h"
+#include "iskra/scene.h"
+#include "iskra/snapshot.h"
 #include "outpath.h"
 #include "probes_csv.h"
 #include "progress.h"
@@ -40,6 +47,8 @@ static void help(FILE *f)
                "       iskra render SCENE [--frames N] [--every K] --raw --out FILE|-\n"
                "       iskra render SCENE [--frames N] [--every K] --out-dir DIR [--resume]\n"
                "       iskra render SCENE --frames N --every K --strip FILE.png\n"
+               "       iskra render SCENE --frames N --snapshot FILE.snap\n"
+               "       iskra render SCENE --from FILE.snap [--frames M] (any output above)\n"
                "  Renders frame N of the scene (0 = the initial state; N steps of dt).\n"
                "  --frames N       the last frame, 0..100000000 (default: the scene's\n"
                "                   [scene] frames, else 0)\n"
@@ -65,6 +74,11 @@ static void help(FILE *f)
                "  --state-every K  with --out-dir: DIR/state_000000.csv ... every K frames\n"
                "  --probes FILE.csv the scene's probes ([probe NAME]) after every frame 1..N:\n"
                "                   frame,time, then PROBE.VALUE columns (%%.17g)\n"
+               "  --snapshot FILE.snap  the whole running state at frame N, exact\n"
+               "  --from FILE.snap the run goes on from a snapshot of the same SCENE and\n"
+               "                   overrides (--snapshot) instead of frame 0: every output\n"
+               "                   from its frame on has the bytes of one run (not with\n"
+               "                   --strip, nor a scene that draws over its last frame)\n"
                "  Missing directories of every output are created.  An output that is an\n"
                "  input (the scene, a texture) or another output is refused.  Particles\n"
                "  removed because their state went non-finite are reported.\n");
@@ -81,6 +95,8 @@ typedef struct render_args {
     scene_args scene;
     const char *out;
     const char *strip;
+    const char *snap_out; /* --snapshot */
+    const char *from;     /* --from */
     long frames;     /* -1: the scene's */
     double fps;      /* 0: 1 / (dt * every) */
     int raw, have_every;
@@ -121,6 +137,14 @@ static int parse(render_args *r, int argc, char **argv)
             if (k < 0)
                 return 2;
             r->strip = v;
+        } else if ((k = arg_value("render", argc, argv, &i, "--snapshot", &v)) != 0) {
+            if (k < 0)
+                return 2;
+            r->snap_out = v;
+        } else if ((k = arg_value("render", argc, argv, &i, "--from", &v)) != 0) {
+            if (k < 0)
+                return 2;
+            r->from = v;
         } else if ((k = arg_value("render", argc, argv, &i, "--out", &v)) != 0) {
             if (k < 0)
                 return 2;
@@ -144,11 +168,12 @@ static int check(render_args *r)
     const char *why = NULL;
     if (!r->scene.scene)
         why = "which scene?";
-    else if (!r->out && !r->o.dir && !r->so.path && !r->strip && !r->po.path)
-        why = "say where: --out FILE (.png, .gif, .y4m; --raw), --out-dir DIR, --strip FILE.png, --state FILE.csv "
-              "or --probes FILE.csv";
-    else if ((r->out && !*r->out) || (r->o.dir && !*r->o.dir) || (r->strip && !*r->strip))
-        why = "empty output name";
+    else if (!r->out && !r->o.dir && !r->so.path && !r->strip && !r->po.path && !r->snap_out)
+        why = "say where: --out FILE (.png, .gif, .y4m; --raw), --out-dir DIR, --strip FILE.png, --state FILE.csv, "
+              "--probes FILE.csv or --snapshot FILE.snap";
+    else if ((r->out && !*r->out) || (r->o.dir && !*r->o.dir) || (r->strip && !*r->strip) ||
+             (r->snap_out && !*r->snap_out) || (r->from && !*r->from))
+        why = "empty file name";
     if (why) {
         fprintf(stderr, "iskra render: %s\n", why);
         help(stderr);
@@ -164,7 +189,9 @@ static int check(render_args *r)
     } else {
         r->o.png = r->out;
     }
-    if (!why && r->raw && !r->out)
+    if (!why && ((r->snap_out && !strcmp(r->snap_out, "-")) || (r->from && !strcmp(r->from, "-"))))
+        why = "a snapshot is a file (--snapshot, --from), not standard input or output";
+    else if (!why && r->raw && !r->out)
         why = "--raw needs --out FILE or --out -";
     else if (!why && r->have_every && !r->o.dir && !r->o.anim_path && !r->strip)
         why = "--every needs --out-dir, an animation (--out FILE.gif, FILE.y4m), --raw or --strip";
@@ -172,6 +199,8 @@ static int check(render_args *r)
         why = "--fps is for --out FILE.gif or FILE.y4m (raw frames carry no rate)";
     else if (!why && r->o.resume && !r->o.dir)
         why = "--resume needs --out-dir";
+    else if (!why && r->from && r->strip)
+        why = "--from: a strip's panels start at frame 0; render the strip without --from";
     else if (!why && r->o.anim_path && !strcmp(r->o.anim_path, "-") && isatty(STDOUT_FILENO))
         why = "refusing to write raw frames to a terminal (pipe them, or --out FILE)";
     if (why) {
@@ -198,9 +227,11 @@ static int check_files(const render_args *r, const isk_effect_def *def, long fra
     outpath_output(&plan, r->strip, "--strip");
     outpath_output(&plan, r->so.path, "--state");
     outpath_output(&plan, r->po.path, "--probes");
+    outpath_output(&plan, r->snap_out, "--snapshot");
     outpath_series(&plan, r->o.dir, RENDER_FRAME_PREFIX, RENDER_FRAME_SUFFIX, r->o.every, frames, "--out-dir");
     outpath_series(&plan, r->o.dir, STATE_PREFIX, STATE_SUFFIX, r->so.every, frames, "--state-every");
-    if (outpath_clash(&plan) || outpath_refuse(&plan, r->scene.text ? NULL : r->scene.scene, "the scene"))
+    if (outpath_clash(&plan) || outpath_refuse(&plan, r->scene.text ? NULL : r->scene.scene, "the scene") ||
+        outpath_refuse(&plan, r->from, "the snapshot (--from)"))
         return 2;
     for (int i = 0; i < def->ntextures; i++)
         if (outpath_refuse(&plan, def->textures[i].name, "a texture of the scene"))
@@ -236,6 +267,14 @@ static void host_needs(isk_effect_def *def, const void *ctx)
     const size_t n = sizeof def->host_memory_for;
     size_t used = (size_t)snprintf(what, n, "iskra render's");
     int parts = 0;
+    if (r->snap_out) {
+        /* a copy of the state and its file's bytes: at most twice what
+         * the effect holds */
+        def->host_memory = 0;
+        bytes += 2.0 * (double)isk_effect_def_memory(def);
+        used += (size_t)snprintf(what + used, used < n ? n - used : 0, " snapshot");
+        parts++;
+    }
     if (r->o.anim_path) {
         isk_anim_opts ao = {r->o.anim_format, def->width, def->height, 1.0};
         bytes += (double)isk_anim_memory(&ao);
@@ -243,8 +282,8 @@ static void host_needs(isk_effect_def *def, const void *ctx)
         snprintf(name, sizeof name, "%s", isk_anim_format_name(r->o.anim_format));
         for (char *c = name; *c; c++)
             *c = (char)toupper((unsigned char)*c);
-        used += (size_t)snprintf(what + used, used < n ? n - used : 0, " %s writer (%d x %d frames)", name,
-                                 def->width, def->height);
+        used += (size_t)snprintf(what + used, used < n ? n - used : 0, "%s %s writer (%d x %d frames)",
+                                 parts ? "," : "", name, def->width, def->height);
         parts++;
     }
     int sw, sh;
@@ -262,6 +301,93 @@ static void host_needs(isk_effect_def *def, const void *ctx)
     def->host_memory = parts ? (bytes < (double)SIZE_MAX ? (size_t)bytes : SIZE_MAX) : 0;
     if (!parts)
         what[0] = 0;
+}
+
+/* The scene as text (free it), or NULL after printing why. */
+static char *scene_text(const isk_effect_def *d)
+{
+    isk_error err = {0};
+    char *text = NULL;
+    if (isk_scene_write(d, &text, &err) != ISK_OK)
+        fprintf(stderr, "iskra render: --from: %s\n", err.message);
+    return text;
+}
+
+/* --from: the effect goes on from the snapshot, which must be of this
+ * scene with these overrides (the definition it holds, written as scene
+ * text, is the one SCENE gives): its frame becomes the first.  0, or the
+ * exit status after printing why. */
+static int resume_from(const render_args *r, const isk_effect_def *def, isk_effect *fx, long frames, long *first)
+{
+    *first = 0;
+    if (!r->from)
+        return 0;
+    if (!def->clear) {
+        fprintf(stderr, "iskra render: --from: %s draws each frame over the last (clear = false), and a snapshot "
+                        "holds no canvas: render it from frame 0\n", r->scene.scene);
+        return 2;
+    }
+    isk_error err = {0};
+    isk_snapshot *snap = NULL;
+    isk_status s = isk_snapshot_load(&snap, r->from, &err);
+    if (s != ISK_OK) {
+        fprintf(stderr, "iskra render: --from: %s\n", err.message);
+        return s == ISK_ERR_NOMEM ? 1 : 2;
+    }
+    char *ours = scene_text(def), *theirs = NULL;
+    int rc = ours ? 0 : 1;
+    if (!rc && (s = isk_effect_restore(fx, snap, &err)) != ISK_OK) {
+        fprintf(stderr, "iskra render: --from: %s: %s\n", r->from, err.message);
+        rc = s == ISK_ERR_NOMEM ? 1 : 2;
+    }
+    if (!rc && !(theirs = scene_text(isk_effect_definition(fx))))
+        rc = 1;
+    if (!rc && strcmp(ours, theirs) != 0) {
+        fprintf(stderr, "iskra render: --from: %s is a snapshot of another scene, or of other overrides (--seed, "
+                        "--size, --dt, --substeps), than %s gives\n", r->from, r->scene.scene);
+        rc = 2;
+    }
+    if (!rc && isk_snapshot_frame(snap) > frames) {
+        fprintf(stderr, "iskra render: --from: %s is at frame %ld, after the last frame %ld (--frames)\n", r->from,
+                isk_snapshot_frame(snap), frames);
+        rc = 2;
+    }
+    if (!rc)
+        *first = isk_snapshot_frame(snap);
+    free(ours);
+    free(theirs);
+    isk_snapshot_free(snap);
+    return rc;
+}
+
+/* --snapshot: the state of the last frame, whole or not at all.  0, or 1
+ * after printing why. */
+static int snapshot_write(const char *path, const isk_effect *fx)
+{
+    if (!path)
+        return 0;
+    isk_error err = {0};
+    isk_snapshot *snap = NULL;
+    unsigned char *bytes = NULL;
+    size_t n = 0;
+    if (isk_effect_snapshot(fx, &snap, &err) != ISK_OK || isk_snapshot_encode(snap, &bytes, &n, &err) != ISK_OK) {
+        fprintf(stderr, "iskra render: --snapshot %s: %s\n", path, err.message);
+        isk_snapshot_free(snap);
+        return 1;
+    }
+    isk_snapshot_free(snap);
+    isk_outfile o;
+    int rc = outpath_make_parents("render", path) || cleanup_outfile_open(&o, path);
+    if (!rc && fwrite(bytes, 1, n, o.f) != n) {
+        const int e = errno ? errno : EIO;
+        cleanup_outfile_abort(&o);
+        fprintf(stderr, "iskra render: %s: write failed: %s\n", path, strerror(e));
+        rc = 1;
+    } else if (!rc) {
+        rc = cleanup_outfile_commit(&o);
+    }
+    free(bytes);
+    return rc;
 }
 
 int cmd_render(int argc, char **argv)
@@ -284,10 +410,12 @@ int cmd_render(int argc, char **argv)
     if ((rc = scene_args_open(&r.scene, &def, &fx)) != 0)
         return rc;
     long frames = r.frames >= 0 ? r.frames : def.show.frames;
+    long first = 0;
     double fps;
     isk_canvas canvas = {0};
     render_strip strip = {0};
-    if ((rc = check_files(&r, &def, frames)) != 0 || (rc = choose_fps(&r, def.dt, &fps)) != 0)
+    if ((rc = check_files(&r, &def, frames)) != 0 || (rc = choose_fps(&r, def.dt, &fps)) != 0 ||
+        (rc = resume_from(&r, &def, fx, frames, &first)) != 0)
         goto done;
     if (isk_canvas_init(&canvas, def.width, def.height) != ISK_OK) {
         fprintf(stderr, "iskra render: out of memory (a %dx%d canvas)\n", def.width, def.height);
@@ -303,13 +431,14 @@ int cmd_render(int argc, char **argv)
 
     progress pg;
     progress_start(&pg, frames);
-    /* Frame 0 is the initial state (with trails: the bare background).  A
-     * scene that clears is drawn only when a frame is written; a trail scene
-     * is drawn after every step, as isk_effect_run does. */
+    /* Frame 0 is the initial state (with trails: the bare background); with
+     * --from the snapshot's frame is the first.  A scene that clears is
+     * drawn only when a frame is written; a trail scene is drawn after
+     * every step, as isk_effect_run does. */
     int trails = !def.clear;
     isk_status s = isk_effect_run(fx, &canvas, 0);
     int drawn = 1;
-    for (long f = 0; s == ISK_OK; f++) {
+    for (long f = first; s == ISK_OK; f++) {
         if (render_out_wants(&r.o, f) || render_strip_wants(&strip, f)) {
             if (!drawn && (s = isk_effect_render(fx, &canvas)) != ISK_OK)
                 break;
@@ -351,6 +480,9 @@ int cmd_render(int argc, char **argv)
         rc = probes_finish(&r.po);
     const int probes_written = !rc && r.po.path;
     if (!rc)
+        rc = snapshot_write(r.snap_out, fx);
+    const int snapshot_written = !rc && r.snap_out;
+    if (!rc)
         rc = render_out_end(&r.o, &canvas);
     if (rc && strip_written)
         remove(r.strip);
@@ -358,6 +490,8 @@ int cmd_render(int argc, char **argv)
         remove(r.so.path);
     if (rc && probes_written)
         remove(r.po.path);
+    if (rc && snapshot_written)
+        remove(r.snap_out);
 done:
     probes_abort(&r.po);
     isk_canvas_free(&strip.out);
