@@ -370,6 +370,55 @@ Test(budgets, a_live_change_over_a_budget_changes_nothing)
     free(got);
 }
 
+/* Each potential adds to every particle-step's cost: the one that would
+ * take a frame over --max-work is refused with create's message and
+ * changes nothing (not the forces, not isk_effect_edits, not the frames
+ * after it: those of a twin given only the accepted ones). */
+Test(budgets, a_potential_added_over_the_work_budget_changes_nothing)
+{
+    enum { FRAMES = 20 };
+    const size_t bytes = (size_t)FRAMES * 200 * 150 * 4;
+    uint8_t *want = malloc(bytes), *got = malloc(bytes);
+    cr_assert(want && got);
+    isk_effect *fx = live_effect(1e5, (size_t)64 << 20);
+    isk_effect *twin = live_effect(1e5, (size_t)64 << 20);
+    run_frames(fx, 5, got);
+    run_frames(twin, 5, want);
+    isk_potential pot;
+    isk_potential_init(&pot, 2.0, (isk_vec2){1.0, 5.0}, 1.0);
+    isk_error err = {0};
+    int taken = 0;
+    isk_status s = ISK_OK;
+    char name[16];
+    for (; taken < ISK_EFFECT_MAX_FORCES; taken++) {
+        snprintf(name, sizeof name, "p%d", taken);
+        const unsigned long edits = isk_effect_edits(fx);
+        if ((s = isk_effect_add_potential(fx, name, &pot, &err)) != ISK_OK) {
+            cr_assert_eq(isk_effect_edits(fx), edits, "a refused potential counts as an edit");
+            break;
+        }
+        cr_assert_eq(isk_effect_add_potential(twin, name, &pot, &err), ISK_OK, "%s", err.message);
+    }
+    cr_assert_eq(s, ISK_ERR_SIZE, "no potential was refused (%d taken)", taken);
+    cr_assert_gt(taken, 0);
+    cr_assert_not_null(strstr(err.message, "--max-work"), "%s", err.message);
+    cr_assert_not_null(strstr(err.message, name), "%s", err.message);
+    size_t n = 0;
+    isk_effect_potentials(fx, &n);
+    cr_assert_eq(n, (size_t)taken);
+    cr_assert_lt(isk_effect_def_find_force(isk_effect_definition(fx), name), 0, "%s stayed", name);
+    run_frames(fx, FRAMES, got);
+    run_frames(twin, FRAMES, want);
+    cr_assert(!memcmp(want, got, bytes), "a refused potential changed the frames after it");
+    /* one taken out makes room again */
+    cr_assert_eq(isk_effect_remove_force(fx, "p0", &err), ISK_OK, "%s", err.message);
+    cr_assert_eq(isk_effect_add_potential(fx, name, &pot, &err), ISK_OK, "%s", err.message);
+    isk_effect_destroy(fx);
+    isk_effect_destroy(twin);
+    free(want);
+    free(got);
+}
+
 /* The simulator's panel goes through isk_effect_set: a size typed into
  * the inspector that would take a frame over --max-work is refused (the
  * saved scene keeps the old one), one within it is taken. */

@@ -766,7 +766,9 @@ isk_status isk_effect_get(const isk_effect *e, const char *section, const char *
  * code's P), acting on every emitter from the next step, with the next free
  * id.  Removing a force takes it out of the definition and of every emitter
  * that referenced it.  Errors: ISK_ERR_NULL, ISK_ERR_RANGE (a name in use or
- * not a valid name, a bad field, no such force), ISK_ERR_FULL, ISK_ERR_NOMEM. */
+ * not a valid name, a bad field, no such force), ISK_ERR_FULL, ISK_ERR_NOMEM,
+ * ISK_ERR_SIZE (a frame could then take more than def.max_work: nothing is
+ * added, as a refused isk_effect_set changes nothing). */
 isk_status isk_effect_add_potential(isk_effect *e, const char *name, const isk_potential *pot, isk_error *err);
 isk_status isk_effect_remove_force(isk_effect *e, const char *name, isk_error *err);
 

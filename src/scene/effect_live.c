@@ -423,8 +423,24 @@ isk_status isk_effect_add_potential(isk_effect *e, const char *name, const isk_p
     e->pots[e->npots].id = id + 1;
     e->pot_force[e->npots] = f;
     e->npots++;
-    e->edits++;
-    return isk__fx_compile_all(e);
+    /* The work it could then ask for, counted as at create: over the
+     * budget, the potential is taken out again and the effect is as it
+     * was (its edits too). */
+    const unsigned long edits = e->edits;
+    isk_status s2 = isk__fx_compile_all(e);
+    if (s2 == ISK_OK)
+        s2 = isk__fx_work_fits(e, err);
+    else
+        isk_error_set(err, s2, "%s", isk_status_str(s2));
+    if (s2 != ISK_OK) {
+        char why[sizeof err->message];
+        snprintf(why, sizeof why, "%s", err ? err->message : "");
+        isk_effect_remove_force(e, name, NULL);
+        e->edits = edits;
+        return isk_error_set(err, s2, "[force %s]: %s", name, why);
+    }
+    e->edits = edits + 1;
+    return ISK_OK;
 }
 
 isk_status isk_effect_remove_force(isk_effect *e, const char *name, isk_error *err)
